@@ -2,6 +2,7 @@
 //! Horizontal Plane", as executable and checkable mathematics.
 
 pub mod disk;
+pub mod model;
 pub mod solve;
 
 pub use disk::Disk;

@@ -1,0 +1,136 @@
+//! Frictionless contact: the equations of motion 60-62.
+//!
+//! $$\dot\omega_1 = 0 \qquad (60)$$
+//! $$(k\Omega^2 + \dot\alpha^2)\sin\alpha\cos\alpha + 2k\omega_1\Omega\sin\alpha - (k + \cos^2\alpha)\ddot\alpha = \frac{g}{a}\cos\alpha \qquad (61)$$
+//! $$\dot\Omega\sin\alpha + 2\dot\alpha\Omega\cos\alpha + 2\omega_1\dot\alpha = 0 \qquad (62)$$
+//!
+//! By eq 60 the spin $\omega_1$ is constant, so it is a parameter here, not a state; the centre of
+//! mass moves only vertically (eq 59), so its horizontal position is a constant too.
+
+use crate::disk::Disk;
+use crate::model::rolling::{extras_rhs, lz, record_common};
+use crate::model::{Extras, Layout, Model, Motion, Quantity};
+use crate::solve::{Dynamics, State};
+
+/// Eqs 61-62 solved for $(\ddot\alpha, \dot\Omega)$ at spin $\omega_1$.
+pub fn accelerations(disk: &Disk, m: &Motion) -> (f64, f64) {
+    let k = disk.k;
+    let (s, c) = m.alpha.sin_cos();
+    let (w, ad, om) = (m.spin, m.alpha_dot, m.precession);
+    let alpha_ddot =
+        ((k * om * om + ad * ad) * s * c + 2.0 * k * w * om * s - disk.g_over_a() * c) / (k + c * c);
+    let precession_dot = -(2.0 * ad * om * c + 2.0 * w * ad) / s;
+    (alpha_ddot, precession_dot)
+}
+
+/// The total energy without friction: the centre of mass moves vertically at
+/// $a\dot\alpha\cos\alpha$ (eq 59), so
+/// $E = \frac{m a^2}{2}\left[2k\omega_1^2 + (k + \cos^2\alpha)\dot\alpha^2 + k\Omega^2\sin^2\alpha + \frac{2g}{a}\sin\alpha\right]$.
+pub fn energy(disk: &Disk, m: &Motion) -> f64 {
+    let k = disk.k;
+    let (s, c) = m.alpha.sin_cos();
+    0.5 * disk.m
+        * disk.a
+        * disk.a
+        * (2.0 * k * m.spin * m.spin
+            + (k + c * c) * m.alpha_dot * m.alpha_dot
+            + k * m.precession * m.precession * s * s
+            + 2.0 * disk.g_over_a() * s)
+}
+
+/// The vertical contact force, the only one without friction:
+/// $F_z = m g + m\,\frac{d^2}{dt^2}(a\sin\alpha)$.
+pub fn normal_force(disk: &Disk, m: &Motion, alpha_ddot: f64) -> f64 {
+    let (s, c) = m.alpha.sin_cos();
+    disk.m * disk.g + disk.m * disk.a * (alpha_ddot * c - m.alpha_dot * m.alpha_dot * s)
+}
+
+/// The frictionless disk of eqs 60-62, states $(\alpha, \dot\alpha, \Omega)$ plus extras.
+#[derive(Debug, Clone)]
+pub struct Frictionless<const N: usize> {
+    /// The disk.
+    pub disk: Disk,
+    /// The constant spin $\omega_1$ (eq 60).
+    pub spin: f64,
+    layout: Layout,
+}
+
+impl<const N: usize> Frictionless<N> {
+    /// A frictionless model with constant spin `spin`. The path needs no state here (the centre
+    /// stays at the origin), so `extras.path` adds nothing but the heading is not needed for it.
+    /// Panics if `N` is not the number of states (see [`Frictionless::states`]).
+    pub fn new(disk: Disk, spin: f64, extras: Extras) -> Self {
+        let layout = Self::layout_for(extras);
+        assert_eq!(layout.len, N, "frictionless model with {extras:?} has {} states", layout.len);
+        Self { disk, spin, layout }
+    }
+
+    fn layout_for(extras: Extras) -> Layout {
+        Layout::new(
+            3,
+            Extras {
+                path: false,
+                ..extras
+            },
+        )
+    }
+
+    /// The number of states for these extras.
+    pub fn states(extras: Extras) -> usize {
+        Self::layout_for(extras).len
+    }
+}
+
+impl<const N: usize> Dynamics<N> for Frictionless<N> {
+    fn rhs(&self, y: &State<N>, dy: &mut State<N>) {
+        let m = self.motion(y);
+        let (alpha_ddot, precession_dot) = accelerations(&self.disk, &m);
+        dy[0] = m.alpha_dot;
+        dy[1] = alpha_ddot;
+        dy[2] = precession_dot;
+        extras_rhs(&self.layout, &self.disk, &m, y, dy);
+    }
+}
+
+impl<const N: usize> Model<N> for Frictionless<N> {
+    fn layout(&self) -> &Layout {
+        &self.layout
+    }
+
+    fn motion(&self, y: &State<N>) -> Motion {
+        Motion {
+            alpha: y[0],
+            alpha_dot: y[1],
+            precession: y[2],
+            spin: self.spin,
+        }
+    }
+
+    fn energy(&self, y: &State<N>) -> f64 {
+        energy(&self.disk, &self.motion(y))
+    }
+
+    fn record(&self, y: &State<N>, q: Quantity, out: &mut Vec<f64>) -> bool {
+        let m = self.motion(y);
+        match q {
+            Quantity::Energy => out.push(self.energy(y)),
+            Quantity::Lz => out.push(lz(&self.disk, &m)),
+            Quantity::NormalForce => {
+                let (alpha_ddot, _) = accelerations(&self.disk, &m);
+                out.push(normal_force(&self.disk, &m, alpha_ddot));
+            }
+            Quantity::Friction => out.extend_from_slice(&[0.0, 0.0]),
+            Quantity::Path => out.extend_from_slice(&[0.0, 0.0]),
+            _ => return record_common(&self.layout, &m, y, q, out),
+        }
+        true
+    }
+
+    fn state(&self, m: &Motion) -> State<N> {
+        let mut y = State::<N>::zeros();
+        y[0] = m.alpha;
+        y[1] = m.alpha_dot;
+        y[2] = m.precession;
+        y
+    }
+}

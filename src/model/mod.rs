@@ -1,0 +1,128 @@
+//! Equations of motion, one file per set, each a [`Dynamics`] that carries only the states its
+//! scene needs.
+//!
+//! The core rolling state is the paper's $(\alpha, \dot\alpha, \Omega, \omega_1)$; the heading of
+//! the triad, the centre of mass in the plane and the face angle are added only when a scene
+//! records them (see [`Layout`]).
+
+pub mod adiabatic;
+pub mod dissipation;
+pub mod frictionless;
+pub mod lab_frame;
+pub mod layout;
+pub mod rolling;
+pub mod steady;
+
+pub use layout::{Extras, Layout};
+
+use crate::solve::{Dynamics, State};
+use serde::{Deserialize, Serialize};
+
+/// The paper's four variables of motion at one instant.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+pub struct Motion {
+    /// $\alpha$: angle of the symmetry axis $\hat{\mathbf 1}$ to the vertical, equal to the angle
+    /// of the disk's plane to the table (rad).
+    pub alpha: f64,
+    /// $\dot\alpha$ (rad/s).
+    pub alpha_dot: f64,
+    /// $\Omega$: rate at which the triad turns about the vertical, the precession (rad/s).
+    pub precession: f64,
+    /// $\omega_1$: the component of the disk's angular velocity along its symmetry axis (rad/s).
+    pub spin: f64,
+}
+
+/// Something a scene can record, one column of a trajectory.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Quantity {
+    /// $\alpha$ (rad).
+    Alpha,
+    /// $\dot\alpha$ (rad/s).
+    AlphaDot,
+    /// $\Omega$ (rad/s).
+    Precession,
+    /// $\omega_1$ (rad/s).
+    Spin,
+    /// Heading of the triad: the angle of $\hat{\mathbf 2}$ from the lab's x axis, $\int\Omega\,dt$ (rad).
+    Heading,
+    /// The centre of mass in the plane: x and y (m).
+    Path,
+    /// Angle of a mark on the face relative to the triad, $\int(\omega_1 + \Omega\cos\alpha)\,dt$ (rad).
+    Face,
+    /// Total energy (J): eq 26 when rolling; its frictionless counterpart otherwise.
+    Energy,
+    /// Vertical angular momentum about the centre of mass, eq 63 (kg m^2/s).
+    Lz,
+    /// Vertical contact force $F_z$ (N).
+    NormalForce,
+    /// Horizontal contact (friction) force along $\hat{\mathbf r}$ and $\hat{\mathbf 2}$ (N).
+    Friction,
+}
+
+impl Quantity {
+    /// Every quantity, in column order.
+    pub const ALL: [Quantity; 11] = [
+        Quantity::Alpha,
+        Quantity::AlphaDot,
+        Quantity::Precession,
+        Quantity::Spin,
+        Quantity::Heading,
+        Quantity::Path,
+        Quantity::Face,
+        Quantity::Energy,
+        Quantity::Lz,
+        Quantity::NormalForce,
+        Quantity::Friction,
+    ];
+
+    /// CSV column headers (with units) that this quantity produces.
+    pub fn columns(self) -> &'static [&'static str] {
+        match self {
+            Quantity::Alpha => &["alpha_rad"],
+            Quantity::AlphaDot => &["alpha_dot_rad_per_s"],
+            Quantity::Precession => &["precession_rad_per_s"],
+            Quantity::Spin => &["spin_rad_per_s"],
+            Quantity::Heading => &["heading_rad"],
+            Quantity::Path => &["x_m", "y_m"],
+            Quantity::Face => &["face_rad"],
+            Quantity::Energy => &["energy_J"],
+            Quantity::Lz => &["lz_kg_m2_per_s"],
+            Quantity::NormalForce => &["normal_force_N"],
+            Quantity::Friction => &["friction_r_N", "friction_2_N"],
+        }
+    }
+
+    /// The name used in scene files.
+    pub fn name(self) -> &'static str {
+        match self {
+            Quantity::Alpha => "alpha",
+            Quantity::AlphaDot => "alpha_dot",
+            Quantity::Precession => "precession",
+            Quantity::Spin => "spin",
+            Quantity::Heading => "heading",
+            Quantity::Path => "path",
+            Quantity::Face => "face",
+            Quantity::Energy => "energy",
+            Quantity::Lz => "lz",
+            Quantity::NormalForce => "normal_force",
+            Quantity::Friction => "friction",
+        }
+    }
+}
+
+/// A model of the disk: a [`Dynamics`] whose states can be read back as the paper's variables
+/// and as recordable quantities.
+pub trait Model<const N: usize>: Dynamics<N> {
+    /// Where each optional state sits.
+    fn layout(&self) -> &Layout;
+    /// The paper's variables in state `y`.
+    fn motion(&self, y: &State<N>) -> Motion;
+    /// The total energy in state `y` (J).
+    fn energy(&self, y: &State<N>) -> f64;
+    /// Appends the columns of quantity `q` in state `y` to `out`; false when this model cannot
+    /// provide it.
+    fn record(&self, y: &State<N>, q: Quantity, out: &mut Vec<f64>) -> bool;
+    /// The start state of this model for the paper's variables (extras start at zero).
+    fn state(&self, m: &Motion) -> State<N>;
+}
