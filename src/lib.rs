@@ -1,8 +1,15 @@
 //! `rolling-disk`: the equations of McDonald & McDonald (2001), "The Rolling Motion of a Disk on a
 //! Horizontal Plane", as executable and checkable mathematics.
+//!
+//! Data flows one way: a [`scene::Scene`] (YAML) is validated, [`run::run`] builds the model with
+//! only the states the scene needs and integrates it through [`solve`], the only door to
+//! `ode_solvers`.
 
 pub mod disk;
 pub mod model;
+pub mod output;
+pub mod run;
+pub mod scene;
 pub mod solve;
 
 pub use disk::Disk;

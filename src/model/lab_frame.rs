@@ -1,1 +1,0 @@
-//! Placeholder: the independent lab-frame Newton-Euler model (issue 4) lands here.

@@ -1,0 +1,175 @@
+//! An independent reference: the disk as a rigid body in lab coordinates, by Newton-Euler, with
+//! the contact force solved from the contact condition at every evaluation. Nothing here uses the
+//! paper's equations of motion (23-25, 60-62); it is their referee.
+//!
+//! **State** (13): the attitude quaternion $q = (w, i, j, k)$ (body to lab), the angular velocity
+//! $\boldsymbol\omega_b$ in BODY axes ($\mathbf e_x$ = symmetry axis), the centre of mass
+//! $\mathbf x$ and its velocity $\mathbf v$ in the lab ($\hat{\mathbf z}$ up).
+//!
+//! **Equations.** With $I = \mathrm{diag}(2kma^2, kma^2, kma^2)$, the contact force $\mathbf F$ at
+//! $\boldsymbol\rho = a\hat{\mathbf 3}$ (centre to the lowest rim point) and $R = R(q/|q|)$:
+//! $$ m\dot{\mathbf v} = \mathbf F - mg\hat{\mathbf z}, \qquad
+//!    I\dot{\boldsymbol\omega}_b + \boldsymbol\omega_b\times I\boldsymbol\omega_b = R^T(\boldsymbol\rho\times\mathbf F), $$
+//! $$ \dot q = \tfrac12\, q\otimes(0, \boldsymbol\omega_b) - \lambda\,(|q|^2 - 1)\,q, \qquad \dot{\mathbf x} = \mathbf v. $$
+//!
+//! **Contact force.** The contact point's material velocity is
+//! $\mathbf v_c = \mathbf v + \boldsymbol\omega\times\boldsymbol\rho$ and, since $\boldsymbol\rho$
+//! is the LOWEST rim point (any motion of it round the rim is horizontal), the contact height
+//! $h = z_{cm} + \hat{\mathbf z}\cdot\boldsymbol\rho$ has $\dot h = \hat{\mathbf z}\cdot\mathbf v_c$.
+//! Differentiating with the geometric rate $\dot{\boldsymbol\rho}$ (see [`Snapshot::of`]) and
+//! $\dot{\boldsymbol\omega} = J(\boldsymbol\rho\times\mathbf F) + \dot{\boldsymbol\omega}_0$,
+//! $J = RI^{-1}R^T$, $\dot{\boldsymbol\omega}_0 = -RI^{-1}(\boldsymbol\omega_b\times I\boldsymbol\omega_b)$:
+//! $$ \dot{\mathbf v}_c = A\mathbf F - \mathbf b,\quad A = \tfrac1m\mathbb 1 - [\boldsymbol\rho]_\times J[\boldsymbol\rho]_\times,\quad
+//!    \mathbf b = g\hat{\mathbf z} - \dot{\boldsymbol\omega}_0\times\boldsymbol\rho - \boldsymbol\omega\times\dot{\boldsymbol\rho}. $$
+//! $A$ is symmetric positive definite (Cholesky, on the stack).
+//! - [`Contact::Rolling`]: $\dot{\mathbf v}_c = -2\lambda\mathbf v_c - \lambda^2 h\hat{\mathbf z}$, so
+//!   $\mathbf F = A^{-1}(\mathbf b - 2\lambda\mathbf v_c - \lambda^2 h\hat{\mathbf z})$.
+//! - [`Contact::Frictionless`]: $\mathbf F = F_z\hat{\mathbf z}$ with $\ddot h = -2\lambda\dot h - \lambda^2 h$:
+//!   $F_z = (b_z - 2\lambda\dot h - \lambda^2 h)/A_{zz}$.
+//!
+//! **Drift control.** Both $\lambda$ terms vanish on the constraint manifold
+//! ($|q| = 1$, $h = 0$, $\mathbf v_c = 0$ resp. $\dot h = 0$), so exact solutions are untouched;
+//! off it they make the constraint errors decay critically damped at rate $\lambda$ instead of
+//! accumulating (an acceleration-level constraint alone lets $h$ drift like $t^2$). The
+//! quaternion term is radial: it changes $|q|$ only, never $q/|q|$, and $R$ is built from
+//! $q/|q|$, so it cannot touch the attitude dynamics. $\lambda = \sqrt{g/a}$ (16 s⁻¹ for the toy
+//! disk), the problem's own rate, stays far from making DOP853 stiff. Measured over 10 s, DOP853 at
+//! rtol 1e-12, atol 1e-14, a = 37.5 mm (test `drift_is_controlled` in `tests/lab_frame.rs`):
+//! DRIFT_TABLE
+
+mod contact;
+mod geometry;
+
+pub use geometry::Snapshot;
+
+use crate::disk::Disk;
+use crate::model::{Extras, Layout, Model, Motion, Quantity};
+use crate::solve::{Dynamics, State};
+use geometry::{inertia, Q, V, W, X};
+use nalgebra::{Quaternion, Vector3};
+
+/// What the table does at the contact point.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Contact {
+    /// No slipping: the material point in contact is at rest (a 3-component force).
+    Rolling,
+    /// No friction: a vertical force only, keeping the lowest rim point on the table.
+    Frictionless,
+}
+
+/// The disk in lab coordinates (see the module documentation).
+#[derive(Debug, Clone)]
+pub struct LabFrame {
+    /// The disk.
+    pub disk: Disk,
+    /// The contact condition.
+    pub contact: Contact,
+    /// The stabilisation rate $\lambda$ (1/s) of the quaternion norm and the contact constraint;
+    /// 0 switches it off.
+    pub stabilisation: f64,
+    layout: Layout,
+}
+
+impl LabFrame {
+    /// The lab-frame model with the default stabilisation $\lambda = \sqrt{g/a}$.
+    pub fn new(disk: Disk, contact: Contact) -> Self {
+        Self {
+            disk,
+            contact,
+            stabilisation: disk.g_over_a().sqrt(),
+            layout: Layout::new(13, Extras::default()),
+        }
+    }
+
+    /// The same model with stabilisation rate `rate` (1/s; 0 for none).
+    pub fn with_stabilisation(mut self, rate: f64) -> Self {
+        self.stabilisation = rate;
+        self
+    }
+
+    /// The contact force $\mathbf F$ on the disk in state `y`, lab components (N).
+    pub fn contact_force(&self, y: &State<13>) -> Vector3<f64> {
+        self.force(&self.snapshot(y))
+    }
+
+    /// Total energy computed in the lab: $\frac12 m|\mathbf v|^2 + \frac12\boldsymbol\omega_b\cdot I\boldsymbol\omega_b + mg z_{cm}$ (J).
+    pub fn energy(&self, y: &State<13>) -> f64 {
+        let s = self.snapshot(y);
+        let i = inertia(&self.disk);
+        let w = s.omega_body;
+        0.5 * self.disk.m * s.velocity.norm_squared()
+            + 0.5 * w.dot(&i.component_mul(&w))
+            + self.disk.m * self.disk.g * s.centre.z
+    }
+
+    /// Vertical angular momentum about the centre of mass, $\hat{\mathbf z}\cdot R\,I\boldsymbol\omega_b$ (kg m²/s).
+    pub fn lz(&self, y: &State<13>) -> f64 {
+        let s = self.snapshot(y);
+        (s.rotation * inertia(&self.disk).component_mul(&s.omega_body)).z
+    }
+}
+
+impl Dynamics<13> for LabFrame {
+    fn rhs(&self, y: &State<13>, dy: &mut State<13>) {
+        let s = self.snapshot(y);
+        let d = &self.disk;
+        let f = self.force(&s);
+        let i = inertia(d);
+        let torque_body = s.rotation.inverse() * s.rho.cross(&f);
+        let w = s.omega_body;
+        let w_dot = (torque_body - w.cross(&i.component_mul(&w))).component_div(&i);
+        let q = Quaternion::new(y[Q], y[Q + 1], y[Q + 2], y[Q + 3]);
+        let q_dot = q * Quaternion::from_imag(w) * 0.5
+            - q * (self.stabilisation * (q.norm_squared() - 1.0));
+        let acc = f / d.m - d.g * Vector3::z();
+        dy[Q] = q_dot.w;
+        dy[Q + 1] = q_dot.i;
+        dy[Q + 2] = q_dot.j;
+        dy[Q + 3] = q_dot.k;
+        dy.fixed_rows_mut::<3>(W).copy_from(&w_dot);
+        dy.fixed_rows_mut::<3>(X).copy_from(&s.velocity);
+        dy.fixed_rows_mut::<3>(V).copy_from(&acc);
+    }
+}
+
+impl Model<13> for LabFrame {
+    /// Thirteen core states; heading, path and face are read from the geometry, not stored.
+    fn layout(&self) -> &Layout {
+        &self.layout
+    }
+
+    fn motion(&self, y: &State<13>) -> Motion {
+        self.snapshot(y).motion()
+    }
+
+    fn energy(&self, y: &State<13>) -> f64 {
+        LabFrame::energy(self, y)
+    }
+
+    fn record(&self, y: &State<13>, q: Quantity, out: &mut Vec<f64>) -> bool {
+        let s = self.snapshot(y);
+        let m = s.motion();
+        match q {
+            Quantity::Alpha => out.push(m.alpha),
+            Quantity::AlphaDot => out.push(m.alpha_dot),
+            Quantity::Precession => out.push(m.precession),
+            Quantity::Spin => out.push(m.spin),
+            Quantity::Heading => out.push(s.heading()),
+            Quantity::Path => out.extend_from_slice(&[s.centre.x, s.centre.y]),
+            Quantity::Face => out.push(s.face()),
+            Quantity::Energy => out.push(LabFrame::energy(self, y)),
+            Quantity::Lz => out.push(self.lz(y)),
+            Quantity::NormalForce => out.push(self.force(&s).z),
+            Quantity::Friction => {
+                let f = self.force(&s);
+                out.extend_from_slice(&[f.dot(&s.r), f.dot(&s.e2)]);
+            }
+        }
+        true
+    }
+
+    /// The lab state for `m` with heading 0, the centre above the origin and face angle 0.
+    fn state(&self, m: &Motion) -> State<13> {
+        self.state_from(m, 0.0, [0.0, 0.0], 0.0)
+    }
+}

@@ -1,0 +1,141 @@
+//! Running a scene: build the model with only the states it needs, integrate, record.
+
+use crate::model::adiabatic::Adiabatic;
+use crate::model::frictionless::Frictionless;
+use crate::model::rolling::Rolling;
+use crate::model::{Layout, Model, Motion, Quantity};
+use crate::scene::{ModelKind, Scene};
+use crate::solve::{solve, Ending, Event, Problem, SettingsError, State, Stats};
+use serde::Serialize;
+
+/// What a run of a scene produced.
+#[derive(Debug, Clone, Serialize)]
+pub struct Run {
+    /// The scene's name.
+    pub scene: String,
+    /// The model integrated.
+    pub model: ModelKind,
+    /// How many states were integrated.
+    pub states: usize,
+    /// Column names, with units; the first is the time.
+    pub columns: Vec<String>,
+    /// One row per recorded time: the time then the recorded quantities.
+    pub rows: Vec<Vec<f64>>,
+    /// The solver's work.
+    pub stats: Stats,
+    /// Why the run ended.
+    pub ending: Ending,
+    /// The paper's variables at the end.
+    pub last: Motion,
+    /// Energy at the start and at the end (J).
+    pub energy: (f64, f64),
+    /// Largest $|E(t) - E(0)| / |E(0)|$ over the recorded times (a drift for conservative
+    /// models, the energy lost for dissipative ones).
+    pub energy_change: f64,
+}
+
+/// Runs a scene. `progress` receives the simulated time now and then.
+pub fn run(scene: &Scene, progress: Option<&dyn Fn(f64)>) -> Result<Run, SettingsError> {
+    let extras = scene.extras();
+    let d = scene.disk;
+    macro_rules! rolling {
+        ($($n:literal),*) => {
+            match Layout::new(4, extras).len {
+                $($n => integrate(&Rolling::<$n>::new(d, extras, scene.dissipation), scene, progress),)*
+                n => unreachable!("a rolling layout has 4 to 8 states, not {n}"),
+            }
+        };
+    }
+    macro_rules! frictionless {
+        ($($n:literal),*) => {
+            match Frictionless::<3>::states(extras) {
+                $($n => integrate(&Frictionless::<$n>::new(d, scene.start.spin, extras), scene, progress),)*
+                n => unreachable!("a frictionless layout has 3 to 5 states, not {n}"),
+            }
+        };
+    }
+    match scene.model {
+        ModelKind::Rolling | ModelKind::Dissipative => rolling!(4, 5, 6, 7, 8),
+        ModelKind::Frictionless => frictionless!(3, 4, 5),
+        ModelKind::Adiabatic => {
+            let law = scene.dissipation.expect("validated: adiabatic has a law");
+            integrate(&Adiabatic::new(d, law), scene, progress)
+        }
+    }
+}
+
+fn integrate<M: Model<N>, const N: usize>(
+    model: &M,
+    scene: &Scene,
+    progress: Option<&dyn Fn(f64)>,
+) -> Result<Run, SettingsError> {
+    let y0 = model.state(&scene.start);
+    let mut problem = Problem::new(model, 0.0, y0, scene.stop.time);
+    problem.progress = progress;
+    problem.sample = scene.sample;
+    if let Some(bound) = scene.stop.alpha_below {
+        problem = problem.stop_when(Event::new(format!("alpha fell below {bound} rad"), move |y: &State<N>| {
+            model.motion(y).alpha - bound
+        }));
+    }
+    if scene.stop.lift_off {
+        problem = problem.stop_when(Event::new("the disk left the table (F_z = 0)", |y: &State<N>| {
+            let mut f = Vec::with_capacity(1);
+            model.record(y, Quantity::NormalForce, &mut f);
+            f[0]
+        }));
+    }
+    let sol = solve(problem, &scene.settings)?;
+
+    let mut columns = vec!["t_s".to_string()];
+    for q in &scene.record {
+        columns.extend(q.columns().iter().map(|c| c.to_string()));
+    }
+    let mut rows = Vec::with_capacity(sol.t.len());
+    let e0 = model.energy(&y0);
+    let mut energy_change: f64 = 0.0;
+    for (t, y) in sol.t.iter().zip(&sol.y) {
+        let mut row = Vec::with_capacity(columns.len());
+        row.push(*t);
+        for &q in &scene.record {
+            let ok = model.record(y, q, &mut row);
+            debug_assert!(ok, "validated scenes only record what their model provides");
+        }
+        rows.push(row);
+        energy_change = energy_change.max(((model.energy(y) - e0) / e0).abs());
+    }
+    let (_, y_end) = sol.last();
+    Ok(Run {
+        scene: scene.name.clone(),
+        model: scene.model,
+        states: N,
+        columns,
+        rows,
+        stats: sol.stats,
+        ending: sol.ending,
+        last: model.motion(&y_end),
+        energy: (e0, model.energy(&y_end)),
+        energy_change,
+    })
+}
+
+impl Run {
+    /// The run as CSV: a header of column names with units, then one row per recorded time.
+    /// Numbers are printed with 17 significant digits so that they read back exactly.
+    pub fn to_csv(&self) -> String {
+        let mut s = self.columns.join(",");
+        s.push('\n');
+        for row in &self.rows {
+            let cells: Vec<String> = row.iter().map(|v| format!("{v:.16e}")).collect();
+            s.push_str(&cells.join(","));
+            s.push('\n');
+        }
+        s
+    }
+
+    /// The values of one column.
+    pub fn column(&self, name: &str) -> Option<Vec<f64>> {
+        let i = self.columns.iter().position(|c| c == name)?;
+        Some(self.rows.iter().map(|r| r[i]).collect())
+    }
+}
