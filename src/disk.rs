@@ -30,7 +30,9 @@ pub enum DiskError {
     #[error("the radius must be a positive number of metres, got {0}")]
     Radius(f64),
     /// The inertia factor is zero, negative or not finite.
-    #[error("the inertia factor k must be positive (1/4 for a uniform disk, 1/2 for a hoop), got {0}")]
+    #[error(
+        "the inertia factor k must be positive (1/4 for a uniform disk, 1/2 for a hoop), got {0}"
+    )]
     InertiaFactor(f64),
     /// The mass is zero, negative or not finite.
     #[error("the mass must be a positive number of kilograms, got {0}")]
@@ -94,10 +96,19 @@ mod tests {
 
     #[test]
     fn refuses_unphysical_parameters() {
-        assert_eq!(Disk::new(-1.0, 0.25, 1.0, 9.81), Err(DiskError::Radius(-1.0)));
+        assert_eq!(
+            Disk::new(-1.0, 0.25, 1.0, 9.81),
+            Err(DiskError::Radius(-1.0))
+        );
         assert_eq!(Disk::new(0.0, 0.25, 1.0, 9.81), Err(DiskError::Radius(0.0)));
-        assert_eq!(Disk::new(1.0, 0.0, 1.0, 9.81), Err(DiskError::InertiaFactor(0.0)));
-        assert!(matches!(Disk::new(1.0, f64::NAN, 1.0, 9.81), Err(DiskError::InertiaFactor(_))));
+        assert_eq!(
+            Disk::new(1.0, 0.0, 1.0, 9.81),
+            Err(DiskError::InertiaFactor(0.0))
+        );
+        assert!(matches!(
+            Disk::new(1.0, f64::NAN, 1.0, 9.81),
+            Err(DiskError::InertiaFactor(_))
+        ));
         assert_eq!(Disk::new(1.0, 0.25, -2.0, 9.81), Err(DiskError::Mass(-2.0)));
         assert_eq!(Disk::new(1.0, 0.25, 1.0, 0.0), Err(DiskError::Gravity(0.0)));
         assert!(Disk::new(0.0375, 0.25, 0.4, 9.81).is_ok());

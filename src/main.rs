@@ -83,7 +83,11 @@ fn simulate(name: &str, csv: Option<PathBuf>) -> Result<(), String> {
     if let Some(path) = csv {
         write_atomically(&path, result.to_csv().as_bytes())
             .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
-        println!("trajectory: {} rows written to {}", result.rows.len(), path.display());
+        println!(
+            "trajectory: {} rows written to {}",
+            result.rows.len(),
+            path.display()
+        );
     }
     if result.ending.is_complete() {
         Ok(())

@@ -74,16 +74,20 @@ fn integrate<M: Model<N>, const N: usize>(
     problem.progress = progress;
     problem.sample = scene.sample;
     if let Some(bound) = scene.stop.alpha_below {
-        problem = problem.stop_when(Event::new(format!("alpha fell below {bound} rad"), move |y: &State<N>| {
-            model.motion(y).alpha - bound
-        }));
+        problem = problem.stop_when(Event::new(
+            format!("alpha fell below {bound} rad"),
+            move |y: &State<N>| model.motion(y).alpha - bound,
+        ));
     }
     if scene.stop.lift_off {
-        problem = problem.stop_when(Event::new("the disk left the table (F_z = 0)", |y: &State<N>| {
-            let mut f = Vec::with_capacity(1);
-            model.record(y, Quantity::NormalForce, &mut f);
-            f[0]
-        }));
+        problem = problem.stop_when(Event::new(
+            "the disk left the table (F_z = 0)",
+            |y: &State<N>| {
+                let mut f = Vec::with_capacity(1);
+                model.record(y, Quantity::NormalForce, &mut f);
+                f[0]
+            },
+        ));
     }
     let sol = solve(problem, &scene.settings)?;
 

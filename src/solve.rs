@@ -116,8 +116,12 @@ impl Settings {
         let ok = |x: f64| x.is_finite() && x > 0.0;
         match self.method {
             Method::Rk4 if !ok(self.step) => Err(SettingsError::Step(self.step)),
-            Method::Dopri5 | Method::Dop853 if !ok(self.rtol) => Err(SettingsError::Rtol(self.rtol)),
-            Method::Dopri5 | Method::Dop853 if !ok(self.atol) => Err(SettingsError::Atol(self.atol)),
+            Method::Dopri5 | Method::Dop853 if !ok(self.rtol) => {
+                Err(SettingsError::Rtol(self.rtol))
+            }
+            Method::Dopri5 | Method::Dop853 if !ok(self.atol) => {
+                Err(SettingsError::Atol(self.atol))
+            }
             _ => Ok(()),
         }
     }
@@ -335,7 +339,7 @@ impl<D: Dynamics<N>, const N: usize> System<f64, State<N>> for &mut Bridge<'_, '
     fn solout(&mut self, t: f64, y: &State<N>, _dy: &State<N>) -> bool {
         self.steps += 1;
         if let Some(p) = self.progress {
-            if self.steps % 256 == 0 {
+            if self.steps.is_multiple_of(256) {
                 p(t);
             }
         }
@@ -380,22 +384,54 @@ fn raw_run<D: Dynamics<N>, const N: usize>(
     match settings.method {
         Method::Dop853 => {
             let mut s = Dop853::from_param(
-                bridge, t0, t_end, span, y0, settings.rtol, settings.atol, 0.9, 0.0, 0.333, 6.0,
-                span, first_step, n_max, 1000, OutputType::Sparse,
+                bridge,
+                t0,
+                t_end,
+                span,
+                y0,
+                settings.rtol,
+                settings.atol,
+                0.9,
+                0.0,
+                0.333,
+                6.0,
+                span,
+                first_step,
+                n_max,
+                1000,
+                OutputType::Sparse,
             );
             finish!(s)
         }
         Method::Dopri5 => {
             let mut s = Dopri5::from_param(
-                bridge, t0, t_end, span, y0, settings.rtol, settings.atol, 0.9, 0.04, 0.2, 10.0,
-                span, first_step, n_max, 1000, OutputType::Sparse,
+                bridge,
+                t0,
+                t_end,
+                span,
+                y0,
+                settings.rtol,
+                settings.atol,
+                0.9,
+                0.04,
+                0.2,
+                10.0,
+                span,
+                first_step,
+                n_max,
+                1000,
+                OutputType::Sparse,
             );
             finish!(s)
         }
         Method::Rk4 => {
             // ode_solvers takes ceil(span / step) steps of the full step and so overshoots
             // t_end: shorten the step so that a whole number of steps ends exactly there.
-            let h = if first_step > 0.0 { first_step } else { settings.step };
+            let h = if first_step > 0.0 {
+                first_step
+            } else {
+                settings.step
+            };
             let n = (span / h).ceil().max(1.0);
             let mut s = Rk4::new(bridge, t0, y0, t_end, span / n);
             finish!(s)
@@ -417,11 +453,7 @@ fn advance<D: Dynamics<N>, const N: usize>(
         return y0;
     }
     let mut bridge = Bridge::new(dynamics, &[], t0, y0);
-    let first = match settings.method {
-        Method::Rk4 => tau,
-        _ => tau,
-    };
-    let (r, _, y) = raw_run(&mut bridge, settings, t0, y0, t0 + tau, first);
+    let (r, _, y) = raw_run(&mut bridge, settings, t0, y0, t0 + tau, tau);
     if let Ok(s) = r {
         stats.extra_evaluations += u64::from(s.num_eval);
     }
@@ -488,9 +520,10 @@ pub fn solve<D: Dynamics<N>, const N: usize>(
         Err(e) => {
             ending = match e {
                 IntegrationError::StepSizeUnderflow { x } => Ending::StepCollapse { t: x },
-                IntegrationError::MaxNumStepReached { x, n_step } => {
-                    Ending::TooManySteps { t: x, steps: n_step }
-                }
+                IntegrationError::MaxNumStepReached { x, n_step } => Ending::TooManySteps {
+                    t: x,
+                    steps: n_step,
+                },
                 IntegrationError::StiffnessDetected { x } => Ending::Stiff { t: x },
             };
             stats.accepted = ts.len().saturating_sub(1) as u64;
@@ -503,7 +536,15 @@ pub fn solve<D: Dynamics<N>, const N: usize>(
     } else if crossed {
         let (t_a, y_a) = prev;
         let t_b = *ts.last().expect("a crossing needs a step");
-        let (index, t_e, y_e) = locate(problem.dynamics, settings, &problem.events, t_a, y_a, t_b, &mut stats);
+        let (index, t_e, y_e) = locate(
+            problem.dynamics,
+            settings,
+            &problem.events,
+            t_a,
+            y_a,
+            t_b,
+            &mut stats,
+        );
         ts.pop();
         ys.pop();
         ts.push(t_e);
@@ -522,7 +563,12 @@ pub fn solve<D: Dynamics<N>, const N: usize>(
         None => (ts, ys),
         Some(dt) => resample(problem.dynamics, settings, &ts, &ys, t0, dt, &mut stats),
     };
-    Ok(Solution { t, y, stats, ending })
+    Ok(Solution {
+        t,
+        y,
+        stats,
+        ending,
+    })
 }
 
 /// The earliest event that crossed in the step from `(t_a, y_a)` to `t_b`, located by bisection

@@ -17,8 +17,8 @@ pub fn accelerations(disk: &Disk, m: &Motion) -> (f64, f64) {
     let k = disk.k;
     let (s, c) = m.alpha.sin_cos();
     let (w, ad, om) = (m.spin, m.alpha_dot, m.precession);
-    let alpha_ddot =
-        ((k * om * om + ad * ad) * s * c + 2.0 * k * w * om * s - disk.g_over_a() * c) / (k + c * c);
+    let alpha_ddot = ((k * om * om + ad * ad) * s * c + 2.0 * k * w * om * s - disk.g_over_a() * c)
+        / (k + c * c);
     let precession_dot = -(2.0 * ad * om * c + 2.0 * w * ad) / s;
     (alpha_ddot, precession_dot)
 }
@@ -61,7 +61,11 @@ impl<const N: usize> Frictionless<N> {
     /// Panics if `N` is not the number of states (see [`Frictionless::states`]).
     pub fn new(disk: Disk, spin: f64, extras: Extras) -> Self {
         let layout = Self::layout_for(extras);
-        assert_eq!(layout.len, N, "frictionless model with {extras:?} has {} states", layout.len);
+        assert_eq!(
+            layout.len, N,
+            "frictionless model with {extras:?} has {} states",
+            layout.len
+        );
         Self { disk, spin, layout }
     }
 

@@ -68,8 +68,17 @@ mod tests {
                 heading: false,
             },
         );
-        assert_eq!((l.heading, l.path, l.face, l.len), (Some(4), Some(5), Some(7), 8));
-        let l = Layout::new(3, Extras { face: true, ..Extras::default() });
+        assert_eq!(
+            (l.heading, l.path, l.face, l.len),
+            (Some(4), Some(5), Some(7), 8)
+        );
+        let l = Layout::new(
+            3,
+            Extras {
+                face: true,
+                ..Extras::default()
+            },
+        );
         assert_eq!((l.heading, l.path, l.face, l.len), (None, None, Some(3), 4));
     }
 }

@@ -123,7 +123,11 @@ impl<const N: usize> Rolling<N> {
     /// (a programming error: [`Layout::new`]`(4, extras).len` is the right `N`).
     pub fn new(disk: Disk, extras: Extras, dissipation: Option<PowerLaw>) -> Self {
         let layout = Layout::new(4, extras);
-        assert_eq!(layout.len, N, "rolling model with {extras:?} has {} states", layout.len);
+        assert_eq!(
+            layout.len, N,
+            "rolling model with {extras:?} has {} states",
+            layout.len
+        );
         Self {
             disk,
             dissipation,

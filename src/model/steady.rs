@@ -17,7 +17,7 @@ pub enum SteadyError {
     Angle(f64),
     /// $b$ is at or below eq 30's bound.
     #[error(
-        "steady motion with b = {b} m does not exist at alpha0 = {alpha0}: eq 30 needs b > -a k cos(alpha0)/(2k+1) = {bound} m"
+        "steady motion with b = {b} m does not exist at alpha0 = {alpha0}: eq 30 needs b > -a k cos(alpha0)/(2k+1) = {bound:.6} m: raise b"
     )]
     Radius {
         /// The b asked for.

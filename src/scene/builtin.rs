@@ -3,19 +3,46 @@
 
 /// (name, YAML source) of every built-in scene, in the order they are listed.
 pub const BUILTIN: &[(&str, &str)] = &[
-    ("spinning-coin", include_str!("../../paper/scenes/spinning-coin.yaml")),
-    ("nutating-coin", include_str!("../../paper/scenes/nutating-coin.yaml")),
-    ("rolling-circle", include_str!("../../paper/scenes/rolling-circle.yaml")),
-    ("negative-b", include_str!("../../paper/scenes/negative-b.yaml")),
-    ("wheel-straight", include_str!("../../paper/scenes/wheel-straight.yaml")),
-    ("vertical-spin", include_str!("../../paper/scenes/vertical-spin.yaml")),
+    (
+        "spinning-coin",
+        include_str!("../../paper/scenes/spinning-coin.yaml"),
+    ),
+    (
+        "nutating-coin",
+        include_str!("../../paper/scenes/nutating-coin.yaml"),
+    ),
+    (
+        "rolling-circle",
+        include_str!("../../paper/scenes/rolling-circle.yaml"),
+    ),
+    (
+        "negative-b",
+        include_str!("../../paper/scenes/negative-b.yaml"),
+    ),
+    (
+        "wheel-straight",
+        include_str!("../../paper/scenes/wheel-straight.yaml"),
+    ),
+    (
+        "vertical-spin",
+        include_str!("../../paper/scenes/vertical-spin.yaml"),
+    ),
     (
         "vertical-spin-frictionless",
         include_str!("../../paper/scenes/vertical-spin-frictionless.yaml"),
     ),
-    ("spin-down", include_str!("../../paper/scenes/spin-down.yaml")),
-    ("spin-down-adiabatic", include_str!("../../paper/scenes/spin-down-adiabatic.yaml")),
-    ("benchmark", include_str!("../../paper/scenes/benchmark.yaml")),
+    (
+        "spin-down",
+        include_str!("../../paper/scenes/spin-down.yaml"),
+    ),
+    (
+        "spin-down-adiabatic",
+        include_str!("../../paper/scenes/spin-down-adiabatic.yaml"),
+    ),
+    (
+        "benchmark",
+        include_str!("../../paper/scenes/benchmark.yaml"),
+    ),
 ];
 
 /// The source of the built-in scene `name`.

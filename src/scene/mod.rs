@@ -522,10 +522,7 @@ impl Validator<'_> {
         };
         for &q in list {
             if out.contains(&q) {
-                return Err(self.err(
-                    &["record"],
-                    format!("record: {} is listed twice", q.name()),
-                ));
+                return Err(self.err(&["record"], format!("record: {} is listed twice", q.name())));
             }
             let adiabatic_ok = matches!(
                 q,

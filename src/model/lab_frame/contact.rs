@@ -17,20 +17,27 @@ impl LabFrame {
         let rho_x = s.rho.cross_matrix();
         let a = Matrix3::identity() / d.m - rho_x * j * rho_x;
         let w = s.omega_body;
-        let w_dot_free = s.rotation * (-w.cross(&inertia(d).component_mul(&w))).component_mul(&inv_i);
+        let w_dot_free =
+            s.rotation * (-w.cross(&inertia(d).component_mul(&w))).component_mul(&inv_i);
         let b = d.g * z - w_dot_free.cross(&s.rho) - s.omega.cross(&s.rho_dot);
-        let lambda = self.stabilisation;
         match self.contact {
-            Contact::Rolling => {
-                let target = -2.0 * lambda * s.contact_velocity - lambda * lambda * s.height * z;
-                a.cholesky()
-                    .map_or(Vector3::repeat(f64::NAN), |c| c.solve(&(b + target)))
-            }
-            Contact::Frictionless => {
-                let h_dot = s.contact_velocity.z;
-                let target = -2.0 * lambda * h_dot - lambda * lambda * s.height;
-                Vector3::new(0.0, 0.0, (b.z + target) / a[(2, 2)])
-            }
+            Contact::Rolling => a
+                .cholesky()
+                .map_or(Vector3::repeat(f64::NAN), |c| c.solve(&b)),
+            Contact::Frictionless => Vector3::new(0.0, 0.0, b.z / a[(2, 2)]),
         }
+    }
+
+    /// The stabilisation added to $\dot{\mathbf v}$: $-2\lambda\mathbf v_c - \lambda^2 h\hat{\mathbf z}$
+    /// when rolling, its vertical part $-(2\lambda\dot h + \lambda^2 h)\hat{\mathbf z}$ without
+    /// friction. Zero on the constraint manifold.
+    pub(super) fn drift_correction(&self, s: &Snapshot) -> Vector3<f64> {
+        let lambda = self.stabilisation;
+        let z = Vector3::z();
+        let v = match self.contact {
+            Contact::Rolling => s.contact_velocity,
+            Contact::Frictionless => s.contact_velocity.z * z,
+        };
+        -2.0 * lambda * v - lambda * lambda * s.height * z
     }
 }

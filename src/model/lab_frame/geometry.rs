@@ -174,7 +174,8 @@ impl LabFrame {
         y[Q + 2] = qc.y;
         y[Q + 3] = qc.z;
         y.fixed_rows_mut::<3>(W).copy_from(&omega_body);
-        y.fixed_rows_mut::<3>(X).copy_from(&Vector3::new(centre[0], centre[1], a * s));
+        y.fixed_rows_mut::<3>(X)
+            .copy_from(&Vector3::new(centre[0], centre[1], a * s));
         y.fixed_rows_mut::<3>(V).copy_from(&velocity);
         y
     }

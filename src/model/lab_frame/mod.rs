@@ -121,7 +121,7 @@ impl Dynamics<13> for LabFrame {
         let q = Quaternion::new(y[Q], y[Q + 1], y[Q + 2], y[Q + 3]);
         let q_dot = q * Quaternion::from_imag(w) * 0.5
             - q * (self.stabilisation * (q.norm_squared() - 1.0));
-        let acc = f / d.m - d.g * Vector3::z();
+        let acc = f / d.m - d.g * Vector3::z() + self.drift_correction(&s);
         dy[Q] = q_dot.w;
         dy[Q + 1] = q_dot.i;
         dy[Q + 2] = q_dot.j;

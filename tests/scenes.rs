@@ -1,0 +1,209 @@
+//! Scene files: the built-in ones, the states they integrate, and every kind of bad file.
+
+use rolling_disk::run::run;
+use rolling_disk::scene::{builtin::BUILTIN, Scene};
+use rolling_disk::solve::Ending;
+
+const GOOD: &str = "name: t
+disk: { radius: 0.0375, k: 0.25, mass: 0.4, g: 9.81 }
+model: rolling
+start: { steady: { alpha0: 0.3, b: 0.0 } }
+stop: { time: 1.0 }
+record: [alpha]
+";
+
+#[test]
+fn every_scene_file_is_built_in_and_every_built_in_scene_runs() {
+    let mut files: Vec<String> = std::fs::read_dir("paper/scenes")
+        .unwrap()
+        .map(|e| {
+            e.unwrap()
+                .file_name()
+                .to_string_lossy()
+                .trim_end_matches(".yaml")
+                .to_string()
+        })
+        .collect();
+    files.sort();
+    let mut names: Vec<String> = BUILTIN.iter().map(|(n, _)| n.to_string()).collect();
+    names.sort();
+    assert_eq!(files, names, "paper/scenes and the built-in list differ");
+    for (name, src) in BUILTIN {
+        let scene = Scene::parse(src, name).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(&scene.name, name, "a scene's name is its file name");
+        let r = run(&scene, None).unwrap();
+        assert!(r.ending.is_complete(), "{name}: {}", r.ending);
+    }
+}
+
+#[test]
+fn a_scene_integrates_only_the_states_it_records() {
+    let alpha_only = Scene::parse(GOOD, "t.yaml").unwrap();
+    assert_eq!(run(&alpha_only, None).unwrap().states, 4);
+    let path = Scene::parse(&GOOD.replace("[alpha]", "[alpha, path]"), "t.yaml").unwrap();
+    let r = run(&path, None).unwrap();
+    assert_eq!(r.states, 7, "alpha + heading + x + y");
+    assert_eq!(r.columns, ["t_s", "alpha_rad", "x_m", "y_m"]);
+    let all = Scene::parse(&GOOD.replace("[alpha]", "[alpha, path, face]"), "t.yaml").unwrap();
+    assert_eq!(run(&all, None).unwrap().states, 8);
+    let frictionless = GOOD
+        .replace("model: rolling", "model: frictionless")
+        .replace("[alpha]", "[alpha, lz]");
+    let r = run(&Scene::parse(&frictionless, "t.yaml").unwrap(), None).unwrap();
+    assert_eq!(r.states, 3, "omega_1 is a parameter without friction");
+}
+
+#[test]
+fn a_stop_event_in_a_scene_is_located_to_1e_9_s() {
+    // A disk falls from near vertical; stop when alpha < 0.6 rad. Independent runs ending at
+    // t_e - 1e-9 s and t_e + 1e-9 s (no events) must straddle the bound.
+    let src = "name: fall
+disk: { radius: 0.0375, k: 0.25, mass: 0.4 }
+model: rolling
+start: { explicit: { alpha: 1.5, precession: 2.0 } }
+stop: { time: 5.0, alpha_below: 0.6 }
+record: [alpha]
+solver: { rtol: 1.0e-12, atol: 1.0e-14 }
+";
+    let scene = Scene::parse(src, "fall.yaml").unwrap();
+    let r = run(&scene, None).unwrap();
+    let Ending::Event { t: t_e, .. } = r.ending else {
+        panic!("no event: {:?}", r.ending)
+    };
+    let alpha_at = |t: f64| {
+        let s = Scene::parse(
+            &src.replace("time: 5.0, alpha_below: 0.6", &format!("time: {t:.17e}")),
+            "x",
+        )
+        .unwrap();
+        run(&s, None).unwrap().last.alpha
+    };
+    let (before, after) = (alpha_at(t_e - 1e-9), alpha_at(t_e + 1e-9));
+    eprintln!(
+        "event at {t_e:.12} s; alpha - 0.6 = {:.2e} before, {:.2e} after",
+        before - 0.6,
+        after - 0.6
+    );
+    assert!(before > 0.6 && after < 0.6);
+}
+
+/// Parses `src` and returns the error's text; panics if it parses.
+fn error_of(src: &str) -> String {
+    match Scene::parse(src, "bad.yaml") {
+        Ok(_) => panic!("accepted:\n{src}"),
+        Err(e) => e.to_string(),
+    }
+}
+
+#[test]
+fn every_kind_of_bad_scene_gets_a_located_actionable_error() {
+    let cases: Vec<(String, &str, &[&str])> = vec![
+        ("name: [unclosed\n".into(), "bad.yaml:1", &[]),
+        (
+            GOOD.replace("record: [alpha]", "record: [alpha]\ncolour: red"),
+            "bad.yaml:7",
+            &["unknown field `colour`", "remove"],
+        ),
+        (
+            GOOD.replace("k: 0.25", "k: 0.0"),
+            "bad.yaml:2",
+            &["inertia factor k must be positive"],
+        ),
+        (
+            GOOD.replace("k: 0.25", "k: -1"),
+            "bad.yaml:2",
+            &["k must be positive"],
+        ),
+        (
+            GOOD.replace("radius: 0.0375", "radius: -0.0375"),
+            "bad.yaml:2",
+            &["radius must be a positive"],
+        ),
+        (
+            GOOD.replace("radius: 0.0375", "radius: 0"),
+            "bad.yaml:2",
+            &["radius"],
+        ),
+        (
+            GOOD.replace("alpha0: 0.3", "alpha0: 1.7"),
+            "bad.yaml:4",
+            &["0 < alpha0 < pi/2", "vertical_spin"],
+        ),
+        (
+            GOOD.replace("alpha0: 0.3", "alpha0: 0.0"),
+            "bad.yaml:4",
+            &["does not exist"],
+        ),
+        (
+            GOOD.replace("b: 0.0", "b: -0.01"),
+            "bad.yaml:4",
+            &["eq 30 needs b >", "-0.005971 m"],
+        ),
+        (
+            GOOD.replace("record: [alpha]", "record: [alpha]\nsolver: { rtol: 0 }"),
+            "bad.yaml:7",
+            &["rtol must be a positive"],
+        ),
+        (
+            GOOD.replace(
+                "record: [alpha]",
+                "record: [alpha]\nsolver: { rtol: -1e-9 }",
+            ),
+            "bad.yaml:7",
+            &["rtol"],
+        ),
+        (
+            GOOD.replace("stop: { time: 1.0 }", "stop: { alpha_below: 0.1 }"),
+            "bad.yaml:5",
+            &["time bound", "add `time"],
+        ),
+        (
+            GOOD.replace("model: rolling", "model: sliding"),
+            "bad.yaml:3",
+            &["unknown variant `sliding`", "rolling"],
+        ),
+        (
+            GOOD.replace("record: [alpha]", "record: [alpah]"),
+            "bad.yaml:6",
+            &["unknown variant `alpah`"],
+        ),
+        (
+            GOOD.replace("mass: 0.4, ", ""),
+            "bad.yaml:2",
+            &["missing field `mass`", "add it"],
+        ),
+        (
+            GOOD.replace(
+                "stop: { time: 1.0 }",
+                "stop: { time: 1.0, alpha_below: 0.5 }",
+            ),
+            "bad.yaml:5",
+            &["already holds at the start"],
+        ),
+        (
+            GOOD.replace("model: rolling", "model: dissipative"),
+            "bad.yaml:3",
+            &["needs a dissipation law"],
+        ),
+        (
+            GOOD.replace(
+                "start: { steady: { alpha0: 0.3, b: 0.0 } }",
+                "start: { perturb: { alpha: 0.1 } }",
+            ),
+            "bad.yaml:4",
+            &["exactly one of"],
+        ),
+        (
+            GOOD.replace("record: [alpha]", "record: [alpha]\nsample: -1"),
+            "bad.yaml:7",
+            &["sample must be a positive"],
+        ),
+    ];
+    for (src, at, words) in cases {
+        let e = error_of(&src);
+        assert!(e.starts_with(at), "expected the error at {at}, got: {e}");
+        for w in words {
+            assert!(e.contains(w), "expected {w:?} in: {e}");
+        }
+    }
+}
