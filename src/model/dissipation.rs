@@ -11,6 +11,7 @@
 
 use crate::disk::Disk;
 use crate::model::Motion;
+use num_dual::DualNum;
 use serde::{Deserialize, Serialize};
 
 /// The power law of eq 75 (eq 74 is the case $\beta = 1$).
@@ -33,14 +34,14 @@ impl PowerLaw {
     /// The torque about the centre of mass divided by $m a^2$, in the triad
     /// $(\hat{\mathbf 1}, \hat{\mathbf 2}, \hat{\mathbf 3})$, whose power is eq 75.
     /// Zero when the disk does not rotate.
-    pub fn torque_per_ma2(&self, disk: &Disk, m: &Motion) -> [f64; 3] {
-        let w = [m.spin, m.alpha_dot, -m.precession * m.alpha.sin()];
+    pub fn torque_per_ma2<T: DualNum<f64> + Copy>(&self, disk: &Disk, m: &Motion<T>) -> [T; 3] {
+        let w = [m.spin, m.alpha_dot, -(m.precession * m.alpha.sin())];
         let w2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
-        if w2 == 0.0 {
-            return [0.0; 3];
+        if w2.re() == 0.0 {
+            return [T::zero(); 3];
         }
         // |P| / (m a^2 |w|^2)
-        let c = self.epsilon * disk.g_over_a() * m.precession.abs().powf(self.beta) / w2;
-        [-c * w[0], -c * w[1], -c * w[2]]
+        let c = m.precession.abs().powf(self.beta) * (self.epsilon * disk.g_over_a()) / w2;
+        [-(c * w[0]), -(c * w[1]), -(c * w[2])]
     }
 }

@@ -11,15 +11,17 @@ use crate::disk::Disk;
 use crate::model::rolling::{extras_rhs, lz, record_common};
 use crate::model::{Extras, Layout, Model, Motion, Quantity};
 use crate::solve::{Dynamics, State};
+use num_dual::DualNum;
 
 /// Eqs 61-62 solved for $(\ddot\alpha, \dot\Omega)$ at spin $\omega_1$.
-pub fn accelerations(disk: &Disk, m: &Motion) -> (f64, f64) {
+pub fn accelerations<T: DualNum<f64> + Copy>(disk: &Disk, m: &Motion<T>) -> (T, T) {
     let k = disk.k;
     let (s, c) = m.alpha.sin_cos();
     let (w, ad, om) = (m.spin, m.alpha_dot, m.precession);
-    let alpha_ddot = ((k * om * om + ad * ad) * s * c + 2.0 * k * w * om * s - disk.g_over_a() * c)
-        / (k + c * c);
-    let precession_dot = -(2.0 * ad * om * c + 2.0 * w * ad) / s;
+    let alpha_ddot = ((om * om * k + ad * ad) * s * c + w * om * s * (2.0 * k)
+        - c * disk.g_over_a())
+        / (c * c + k);
+    let precession_dot = -(ad * om * c * 2.0 + w * ad * 2.0) / s;
     (alpha_ddot, precession_dot)
 }
 

@@ -18,18 +18,19 @@ pub use layout::{Extras, Layout};
 use crate::solve::{Dynamics, State};
 use serde::{Deserialize, Serialize};
 
-/// The paper's four variables of motion at one instant.
+/// The paper's four variables of motion at one instant. The scalar is `f64`, or a dual number
+/// when a check differentiates the equations of motion exactly.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
-pub struct Motion {
+pub struct Motion<T = f64> {
     /// $\alpha$: angle of the symmetry axis $\hat{\mathbf 1}$ to the vertical, equal to the angle
     /// of the disk's plane to the table (rad).
-    pub alpha: f64,
+    pub alpha: T,
     /// $\dot\alpha$ (rad/s).
-    pub alpha_dot: f64,
+    pub alpha_dot: T,
     /// $\Omega$: rate at which the triad turns about the vertical, the precession (rad/s).
-    pub precession: f64,
+    pub precession: T,
     /// $\omega_1$: the component of the disk's angular velocity along its symmetry axis (rad/s).
-    pub spin: f64,
+    pub spin: T,
 }
 
 /// Something a scene can record, one column of a trajectory.

@@ -13,30 +13,35 @@ use crate::disk::Disk;
 use crate::model::dissipation::PowerLaw;
 use crate::model::{Extras, Layout, Model, Motion, Quantity};
 use crate::solve::{Dynamics, State};
+use num_dual::DualNum;
 
 /// Time derivatives of the paper's variables.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Rates {
+pub struct Rates<T = f64> {
     /// $\ddot\alpha$.
-    pub alpha_ddot: f64,
+    pub alpha_ddot: T,
     /// $\dot\Omega$.
-    pub precession_dot: f64,
+    pub precession_dot: T,
     /// $\dot\omega_1$.
-    pub spin_dot: f64,
+    pub spin_dot: T,
 }
 
 /// Eqs 23-25 solved for the accelerations, with an optional torque $\mathbf N / m a^2$ in the
 /// triad. $\dot\Omega$ is singular at $\alpha = 0$ (the disk flat on the table).
-pub fn rates(disk: &Disk, m: &Motion, torque_per_ma2: [f64; 3]) -> Rates {
+pub fn rates<T: DualNum<f64> + Copy>(
+    disk: &Disk,
+    m: &Motion<T>,
+    torque_per_ma2: [T; 3],
+) -> Rates<T> {
     let k = disk.k;
     let (s, c) = m.alpha.sin_cos();
     let [n1, n2, n3] = torque_per_ma2;
     let (w, ad, om) = (m.spin, m.alpha_dot, m.precession);
     Rates {
-        spin_dot: (n1 - ad * om * s) / (2.0 * k + 1.0),
-        alpha_ddot: (k * om * om * s * c + (2.0 * k + 1.0) * w * om * s - disk.g_over_a() * c + n2)
-            / (k + 1.0),
-        precession_dot: -(2.0 * ad * om * c + 2.0 * w * ad + n3 / k) / s,
+        spin_dot: (n1 - ad * om * s) * (1.0 / (2.0 * k + 1.0)),
+        alpha_ddot: (om * om * s * c * k + w * om * s * (2.0 * k + 1.0) - c * disk.g_over_a() + n2)
+            * (1.0 / (k + 1.0)),
+        precession_dot: -(ad * om * c * 2.0 + w * ad * 2.0 + n3 * (1.0 / k)) / s,
     }
 }
 
