@@ -6,7 +6,10 @@
 //! `ode_solvers`.
 
 pub mod disk;
+pub mod equations;
+pub mod finding;
 pub mod model;
+pub mod numerics;
 pub mod output;
 pub mod run;
 pub mod scene;

@@ -1,0 +1,104 @@
+//! The registry of checks: one per numbered equation of the paper (1-85) and one per prose claim
+//! (`paper/claims.yaml`), each comparing the paper's CLAIM with a REFERENCE that does not depend
+//! on it.
+//!
+//! Every check reads the claimed side through [`Bench::claim`], so that the mutation test can
+//! perturb it (by a relative 1e-3) and see the check fail: a check that cannot fail is no check.
+
+pub mod claims;
+pub mod friction;
+pub mod frictionless;
+pub mod kinematics;
+pub mod motion;
+pub mod oscillation;
+pub mod slippage;
+pub mod steady;
+
+use crate::finding::Finding;
+use crate::solve::{Method, Settings};
+
+/// What a check runs with.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Bench {
+    /// Relative perturbation applied to every claimed value (0 in normal runs, 1e-3 in the
+    /// mutation test).
+    pub perturbation: f64,
+    /// The solver's relative tolerance for integrations.
+    pub rtol: f64,
+}
+
+impl Default for Bench {
+    fn default() -> Self {
+        Self {
+            perturbation: 0.0,
+            rtol: 1e-12,
+        }
+    }
+}
+
+impl Bench {
+    /// The same bench with the claimed side perturbed by relative `p`.
+    pub fn perturbed(p: f64) -> Self {
+        Self {
+            perturbation: p,
+            ..Self::default()
+        }
+    }
+
+    /// A claimed value, as the check must see it: multiplied by (1 + perturbation). For an
+    /// inequality, pass its bound.
+    pub fn claim(&self, x: f64) -> f64 {
+        x * (1.0 + self.perturbation)
+    }
+
+    /// Solver settings for the integrations of a check (DOP853 at this bench's rtol).
+    pub fn settings(&self) -> Settings {
+        Settings {
+            method: Method::Dop853,
+            rtol: self.rtol,
+            atol: self.rtol * 1e-2,
+            ..Settings::default()
+        }
+    }
+}
+
+/// One numbered equation and its check.
+#[derive(Debug, Clone, Copy)]
+pub struct Equation {
+    /// The printed number (1-85).
+    pub number: u32,
+    /// The LaTeX label in the paper's source.
+    pub label: &'static str,
+    /// The check.
+    pub check: fn(&Bench) -> Finding,
+}
+
+/// One prose claim (an entry of `paper/claims.yaml`) and its check.
+#[derive(Debug, Clone, Copy)]
+pub struct Claim {
+    /// The claim's id in `paper/claims.yaml`.
+    pub id: &'static str,
+    /// The check.
+    pub check: fn(&Bench) -> Finding,
+}
+
+/// Every registered equation check, by number.
+pub fn equations() -> Vec<Equation> {
+    let mut all: Vec<Equation> = [
+        kinematics::EQUATIONS,
+        motion::EQUATIONS,
+        steady::EQUATIONS,
+        slippage::EQUATIONS,
+        oscillation::EQUATIONS,
+        frictionless::EQUATIONS,
+        friction::EQUATIONS,
+    ]
+    .concat();
+    all.sort_by_key(|e| e.number);
+    all
+}
+
+/// Every registered claim check.
+pub fn claims() -> Vec<Claim> {
+    claims::CLAIMS.to_vec()
+}

@@ -1,0 +1,282 @@
+//! What a check finds: the paper's claim against an independent reference, the error, the
+//! tolerance and the rule it came from, and a verdict.
+
+use serde::Serialize;
+use std::fmt;
+
+/// How the reference was obtained (DESIGN.md's table, strongest first).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Method {
+    /// Against the lab-frame Newton-Euler model.
+    IndependentModel,
+    /// A quantity measured on integrations of the equations of motion.
+    Integration,
+    /// Jacobian at an equilibrium (dual numbers) and its eigenvalues.
+    Linearization,
+    /// A threshold located by bisection on the outcome of integrations.
+    Threshold,
+    /// The claim's premises solved numerically.
+    Derivation,
+    /// Both sides at many random points, derivatives exact (dual numbers).
+    Identity,
+    /// The error of an approximation at shrinking values of its small parameter.
+    Asymptotic,
+    /// The drift of an invariant along an integration.
+    Conservation,
+}
+
+impl fmt::Display for Method {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Method::IndependentModel => "independent model",
+            Method::Integration => "integration",
+            Method::Linearization => "linearization",
+            Method::Threshold => "threshold",
+            Method::Derivation => "derivation",
+            Method::Identity => "identity",
+            Method::Asymptotic => "asymptotic",
+            Method::Conservation => "conservation",
+        })
+    }
+}
+
+/// The verdict on one equation or claim.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Verdict {
+    /// Within tolerance over its whole domain.
+    Holds,
+    /// An approximation whose error falls at the claimed order as its small parameter shrinks.
+    HoldsApproximately {
+        /// The order fitted to the measured errors.
+        measured_order: f64,
+        /// The order the approximation claims.
+        claimed_order: f64,
+    },
+    /// Outside tolerance: see the finding's `at`, `claimed`, `reference` and `error`.
+    Fails,
+    /// A convention, consistent with the rest of the paper.
+    Definition,
+}
+
+impl Verdict {
+    /// True for every verdict but [`Verdict::Fails`].
+    pub fn passes(&self) -> bool {
+        !matches!(self, Verdict::Fails)
+    }
+}
+
+impl fmt::Display for Verdict {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Verdict::Holds => write!(f, "holds"),
+            Verdict::HoldsApproximately { measured_order, .. } => {
+                write!(f, "holds approximately (order {measured_order:.2})")
+            }
+            Verdict::Fails => write!(f, "FAILS"),
+            Verdict::Definition => write!(f, "definition"),
+        }
+    }
+}
+
+/// A tolerance and the rule that fixed it (never a number tuned until green).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Tolerance {
+    /// The largest error accepted.
+    pub value: f64,
+    /// Why this value.
+    pub rule: String,
+}
+
+impl Tolerance {
+    /// Expressions of a few dozen floating-point operations evaluated at O(1) arguments: their
+    /// relative round-off stays far below 1e-12 (about 4500 ulp) unless something is wrong.
+    pub fn roundoff() -> Self {
+        Self {
+            value: 1e-12,
+            rule: "round-off: 1e-12 relative (about 4500 ulp) for closed-form expressions".into(),
+        }
+    }
+
+    /// Quantities measured on integrations at relative tolerance `rtol`: DOP853's global error
+    /// over the runs used here stays within 100 x rtol, and measuring (interpolating a crossing,
+    /// a period) adds no more than as much again.
+    pub fn solver(rtol: f64) -> Self {
+        Self {
+            value: 1e3 * rtol,
+            rule: format!("integration: 1000 x the solver's rtol ({rtol:e})"),
+        }
+    }
+
+    /// A threshold bracketed by bisection to relative width `width`.
+    pub fn bisection(width: f64) -> Self {
+        Self {
+            value: 2.0 * width,
+            rule: format!("bisection: twice the final bracket's relative width ({width:e})"),
+        }
+    }
+
+    /// An approximation's fitted order must match the claimed order within 0.25 (an order fitted
+    /// over two decades of the small parameter, with the next order's contamination).
+    pub fn order() -> Self {
+        Self {
+            value: 0.25,
+            rule: "asymptotic: fitted order within 0.25 of the claimed order".into(),
+        }
+    }
+}
+
+/// The worst disagreement seen while sweeping a check over its domain.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Worst {
+    /// Largest error seen (|claimed - reference| / scale); infinite if a value was NaN.
+    pub error: f64,
+    /// The claimed value there.
+    pub claimed: f64,
+    /// The reference value there.
+    pub reference: f64,
+    /// Where (a point of the domain, in words).
+    pub at: String,
+    /// How many points were compared.
+    pub points: usize,
+}
+
+impl Default for Worst {
+    fn default() -> Self {
+        Self {
+            error: 0.0,
+            claimed: f64::NAN,
+            reference: f64::NAN,
+            at: String::new(),
+            points: 0,
+        }
+    }
+}
+
+impl Worst {
+    /// Records one comparison; `scale` turns the difference into a relative error (pass
+    /// `reference.abs()` for a plain relative error, or a characteristic size of the quantity).
+    pub fn add(&mut self, claimed: f64, reference: f64, scale: f64, at: impl FnOnce() -> String) {
+        self.points += 1;
+        let mut e = (claimed - reference).abs() / scale;
+        if !e.is_finite() {
+            e = f64::INFINITY;
+        }
+        if e > self.error || self.points == 1 {
+            self.error = e;
+            self.claimed = claimed;
+            self.reference = reference;
+            self.at = at();
+        }
+    }
+}
+
+/// One check's result.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Finding {
+    /// How the reference was obtained.
+    pub method: Method,
+    /// What was compared, in words.
+    pub compared: String,
+    /// The claimed value at the worst point.
+    pub claimed: f64,
+    /// The reference value at the worst point.
+    pub reference: f64,
+    /// The error there (relative unless `compared` says otherwise).
+    pub error: f64,
+    /// The tolerance and its rule.
+    pub tolerance: Tolerance,
+    /// The verdict.
+    pub verdict: Verdict,
+    /// Where the worst error was, and over how many points.
+    pub at: String,
+    /// A scene or figure that shows it, if any.
+    pub shown_by: Option<String>,
+}
+
+impl Finding {
+    /// A finding from a sweep: holds (or, for a definition, `Definition`) when the worst error
+    /// is within tolerance, fails otherwise.
+    pub fn from_worst(
+        method: Method,
+        compared: impl Into<String>,
+        worst: Worst,
+        tolerance: Tolerance,
+        definition: bool,
+    ) -> Self {
+        let ok = worst.points > 0 && worst.error <= tolerance.value;
+        let verdict = match (ok, definition) {
+            (false, _) => Verdict::Fails,
+            (true, true) => Verdict::Definition,
+            (true, false) => Verdict::Holds,
+        };
+        Self {
+            method,
+            compared: compared.into(),
+            claimed: worst.claimed,
+            reference: worst.reference,
+            error: worst.error,
+            at: format!("{} (worst of {} points)", worst.at, worst.points),
+            tolerance,
+            verdict,
+            shown_by: None,
+        }
+    }
+
+    /// A finding for an approximation: the errors `errors[i]` measured at small-parameter values
+    /// `small[i]` are fitted to a power law; it holds approximately when the fitted order is
+    /// within [`Tolerance::order`] of `claimed_order` and the error at the smallest parameter is
+    /// below the largest one's (it really shrinks).
+    pub fn from_order(
+        compared: impl Into<String>,
+        small: &[f64],
+        errors: &[f64],
+        claimed_order: f64,
+    ) -> Self {
+        let measured = crate::numerics::fit::log_log_slope(small, errors);
+        let tolerance = Tolerance::order();
+        let err = (measured - claimed_order).abs();
+        let shrinking = errors.first().zip(errors.last()).is_some_and(|(a, b)| {
+            let (first_p, last_p) = (small[0], small[small.len() - 1]);
+            if last_p < first_p {
+                b < a
+            } else {
+                a < b
+            }
+        });
+        let ok = err.is_finite() && err <= tolerance.value && shrinking;
+        let i_min = (0..small.len())
+            .min_by(|&i, &j| small[i].total_cmp(&small[j]))
+            .unwrap_or(0);
+        Self {
+            method: Method::Asymptotic,
+            compared: compared.into(),
+            claimed: claimed_order,
+            reference: measured,
+            error: err,
+            at: format!(
+                "small parameter from {:.3e} to {:.3e}; error {:.3e} at the smallest",
+                small.iter().copied().fold(f64::INFINITY, f64::min),
+                small.iter().copied().fold(0.0, f64::max),
+                errors.get(i_min).copied().unwrap_or(f64::NAN)
+            ),
+            tolerance,
+            verdict: if ok {
+                Verdict::HoldsApproximately {
+                    measured_order: measured,
+                    claimed_order,
+                }
+            } else {
+                Verdict::Fails
+            },
+            shown_by: None,
+        }
+    }
+
+    /// Names a scene or figure that shows this finding.
+    pub fn shown_by(mut self, what: impl Into<String>) -> Self {
+        self.shown_by = Some(what.into());
+        self
+    }
+}

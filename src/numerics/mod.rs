@@ -1,0 +1,7 @@
+//! Small numerical tools shared by the checks: a seeded random source, fits, linearization,
+//! oscillation frequencies measured on trajectories, bisection.
+
+pub mod fit;
+pub mod linearize;
+pub mod oscillation;
+pub mod rng;
