@@ -5,6 +5,8 @@
 //! only the states the scene needs and integrates it through [`solve`], the only door to
 //! `ode_solvers`.
 
+pub mod catalogue;
+pub mod check;
 pub mod disk;
 pub mod equations;
 pub mod finding;

@@ -2,6 +2,8 @@
 
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use rolling_disk::check::{run_checks, Checked, Selection, Tally};
+use rolling_disk::equations::Bench;
 use rolling_disk::output::write_atomically;
 use rolling_disk::run::{run, Run};
 use rolling_disk::scene::{builtin::BUILTIN, Scene};
@@ -31,6 +33,15 @@ enum Command {
     },
     /// Lists the built-in scenes.
     Scenes,
+    /// Checks the paper's equations and prose claims, each against an independent reference.
+    Check {
+        /// Only these: equation numbers, ranges and claim ids, comma-separated (e.g. 23-25,50).
+        #[arg(long, value_name = "LIST")]
+        only: Option<String>,
+        /// Print the findings as JSON instead of a table.
+        #[arg(long)]
+        json: bool,
+    },
 }
 
 fn main() -> ExitCode {
@@ -38,6 +49,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Simulate { scene, csv } => simulate(&scene, csv),
         Command::Scenes => scenes(),
+        Command::Check { only, json } => check(only.as_deref(), json),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -122,5 +134,98 @@ fn print_summary(scene: &Scene, r: &Run) {
     println!(
         "work        {} right-hand-side evaluations ({} more to locate events and sample), {} accepted and {} rejected steps",
         r.stats.evaluations, r.stats.extra_evaluations, r.stats.accepted, r.stats.rejected
+    );
+}
+
+fn check(only: Option<&str>, json: bool) -> Result<(), String> {
+    let selection = match only {
+        Some(text) => Selection::parse(text)?,
+        None => Selection::default(),
+    };
+    let bar = ProgressBar::with_draw_target(None, ProgressDrawTarget::stderr());
+    bar.set_style(
+        ProgressStyle::with_template("{spinner} checking [{bar:30}] {pos}/{len} {elapsed}")
+            .expect("a valid template")
+            .progress_chars("=> "),
+    );
+    let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
+    let progress = |done: usize, total: usize| {
+        bar.set_length(total as u64);
+        bar.set_position(done as u64);
+    };
+    let checked = run_checks(&Bench::default(), &selection, threads, &progress)?;
+    bar.finish_and_clear();
+    if json {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&checked)
+                .map_err(|e| format!("cannot write JSON: {e}"))?
+        );
+    } else {
+        print_table(&checked);
+    }
+    let tally = Tally::of(&checked);
+    if tally.not_run > 0 {
+        return Err(format!(
+            "{} check(s) could not run (see above)",
+            tally.not_run
+        ));
+    }
+    Ok(())
+}
+
+fn print_table(checked: &[Checked]) {
+    println!(
+        "{:<34} {:>3}  {:<17} {:>10} {:>10}  verdict",
+        "checked", "sec", "method", "error", "tolerance"
+    );
+    for c in checked {
+        match &c.finding {
+            Ok(f) => println!(
+                "{:<34} {:>3}  {:<17} {:>10.3e} {:>10.3e}  {}",
+                c.subject.name(),
+                c.section,
+                f.method.to_string(),
+                f.error,
+                f.tolerance.value,
+                f.verdict
+            ),
+            Err(e) => println!("{:<34} {:>3}  {e}", c.subject.name(), c.section),
+        }
+    }
+    for c in checked {
+        if let Ok(f) = &c.finding {
+            if !f.verdict.passes() {
+                println!(
+                    "\n{} FAILS: {}\n  claimed {:.9e}, reference {:.9e}, error {:.3e} > {:.3e} ({})\n  at {}",
+                    c.subject.name(),
+                    f.compared,
+                    f.claimed,
+                    f.reference,
+                    f.error,
+                    f.tolerance.value,
+                    f.tolerance.rule,
+                    f.at
+                );
+            }
+        }
+    }
+    let (eqs, claims): (Vec<&Checked>, Vec<&Checked>) = checked
+        .iter()
+        .partition(|c| matches!(c.subject, rolling_disk::check::Subject::Equation { .. }));
+    let line = |what: &str, t: Tally, n: usize| {
+        format!(
+            "{n} {what}: {} hold, {} hold approximately, {} definitions, {} fail, {} could not run",
+            t.holds, t.approximately, t.definitions, t.fails, t.not_run
+        )
+    };
+    println!();
+    println!(
+        "{}",
+        line("equations", Tally::of(eqs.iter().copied()), eqs.len())
+    );
+    println!(
+        "{}",
+        line("claims", Tally::of(claims.iter().copied()), claims.len())
     );
 }

@@ -1,0 +1,226 @@
+//! Running the checks: in parallel, each isolated (a check that panics is reported as one that
+//! could not run, the others go on), results in registry order whatever the scheduling.
+
+use crate::catalogue;
+use crate::equations::{self, Bench};
+use crate::finding::Finding;
+use serde::Serialize;
+use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
+
+/// What was checked.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Subject {
+    /// A numbered equation.
+    Equation {
+        /// Printed number.
+        number: u32,
+        /// LaTeX label.
+        label: &'static str,
+    },
+    /// A prose claim.
+    Claim {
+        /// Its id in paper/claims.yaml.
+        id: &'static str,
+    },
+}
+
+impl Subject {
+    /// "eq 29" or the claim's id.
+    pub fn name(&self) -> String {
+        match self {
+            Subject::Equation { number, .. } => format!("eq {number}"),
+            Subject::Claim { id } => id.to_string(),
+        }
+    }
+}
+
+/// One check's outcome.
+#[derive(Debug, Clone, Serialize)]
+pub struct Checked {
+    /// What was checked.
+    pub subject: Subject,
+    /// The paper's section.
+    pub section: u32,
+    /// The finding, or why the check could not run.
+    pub finding: Result<Finding, String>,
+}
+
+/// Which checks to run.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Selection {
+    /// Equation numbers; `None` for all.
+    pub numbers: Option<Vec<u32>>,
+    /// Claim ids; `None` for all (when no numbers are given) .
+    pub claims: Option<Vec<String>>,
+}
+
+impl Selection {
+    /// Parses `--only` text: numbers, ranges (`23-25`) and claim ids, comma-separated.
+    pub fn parse(text: &str) -> Result<Self, String> {
+        let (mut numbers, mut claims) = (Vec::new(), Vec::new());
+        for part in text.split(',').map(str::trim).filter(|p| !p.is_empty()) {
+            let range: Vec<&str> = part.splitn(2, '-').collect();
+            let num = |s: &str| s.parse::<u32>().ok().filter(|n| (1..=85).contains(n));
+            match range.as_slice() {
+                [a] if num(a).is_some() => numbers.push(num(a).unwrap_or(0)),
+                [a, b] if num(a).is_some() && num(b).is_some() => {
+                    let (a, b) = (num(a).unwrap_or(0), num(b).unwrap_or(0));
+                    if a > b {
+                        return Err(format!("--only: the range {part} runs backwards; write {b}-{a}"));
+                    }
+                    numbers.extend(a..=b);
+                }
+                _ if part.chars().next().is_some_and(|c| c.is_ascii_digit()) => {
+                    return Err(format!(
+                        "--only: {part} is not an equation number from 1 to 85 or a range like 23-25"
+                    ))
+                }
+                _ => claims.push(part.to_string()),
+            }
+        }
+        Ok(Self {
+            numbers: Some(numbers),
+            claims: Some(claims),
+        })
+    }
+}
+
+type Job = (Subject, u32, fn(&Bench) -> Finding);
+
+fn jobs(selection: &Selection) -> Result<Vec<Job>, String> {
+    let sections: Vec<u32> = catalogue::equations().iter().map(|e| e.section).collect();
+    let claim_sections = catalogue::claims();
+    let mut out: Vec<Job> = Vec::new();
+    let registered = equations::equations();
+    if let Some(numbers) = &selection.numbers {
+        for n in numbers {
+            if !registered.iter().any(|e| e.number == *n) {
+                return Err(format!("--only: equation {n} has no check yet"));
+            }
+        }
+    }
+    for e in registered {
+        let wanted = selection
+            .numbers
+            .as_ref()
+            .is_none_or(|ns| ns.contains(&e.number));
+        if wanted {
+            let section = sections.get(e.number as usize - 1).copied().unwrap_or(0);
+            out.push((
+                Subject::Equation {
+                    number: e.number,
+                    label: e.label,
+                },
+                section,
+                e.check,
+            ));
+        }
+    }
+    let all_claims = equations::claims();
+    if let Some(ids) = &selection.claims {
+        for id in ids {
+            if !all_claims.iter().any(|c| c.id == id) {
+                return Err(format!(
+                    "--only: {id} is neither an equation number nor the id of a checked claim"
+                ));
+            }
+        }
+    }
+    for c in all_claims {
+        let wanted = selection
+            .claims
+            .as_ref()
+            .is_none_or(|ids| ids.iter().any(|i| i == c.id));
+        if wanted {
+            let section = claim_sections
+                .iter()
+                .find(|e| e.id == c.id)
+                .map_or(0, |e| e.section);
+            out.push((Subject::Claim { id: c.id }, section, c.check));
+        }
+    }
+    Ok(out)
+}
+
+/// Runs the selected checks on `threads` threads; `progress(done, total)` after each.
+pub fn run_checks(
+    bench: &Bench,
+    selection: &Selection,
+    threads: usize,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<Vec<Checked>, String> {
+    let jobs = jobs(selection)?;
+    let total = jobs.len();
+    let next = AtomicUsize::new(0);
+    let done = AtomicUsize::new(0);
+    let results: Mutex<Vec<Option<Checked>>> = Mutex::new(vec![None; total]);
+    std::thread::scope(|scope| {
+        for _ in 0..threads.max(1) {
+            scope.spawn(|| loop {
+                let i = next.fetch_add(1, Ordering::Relaxed);
+                let Some((subject, section, check)) = jobs.get(i).cloned() else {
+                    break;
+                };
+                let finding = catch_unwind(AssertUnwindSafe(|| check(bench))).map_err(|e| {
+                    let msg = e
+                        .downcast_ref::<String>()
+                        .cloned()
+                        .or_else(|| e.downcast_ref::<&str>().map(|s| s.to_string()))
+                        .unwrap_or_else(|| "unknown panic".into());
+                    format!("the check could not run: {msg}")
+                });
+                let checked = Checked {
+                    subject,
+                    section,
+                    finding,
+                };
+                results.lock().unwrap_or_else(|p| p.into_inner())[i] = Some(checked);
+                progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
+            });
+        }
+    });
+    Ok(results
+        .into_inner()
+        .unwrap_or_else(|p| p.into_inner())
+        .into_iter()
+        .flatten()
+        .collect())
+}
+
+/// Counts of verdicts, for the summary line.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize)]
+pub struct Tally {
+    /// Hold.
+    pub holds: usize,
+    /// Hold approximately.
+    pub approximately: usize,
+    /// Definitions.
+    pub definitions: usize,
+    /// Fail.
+    pub fails: usize,
+    /// Could not run.
+    pub not_run: usize,
+}
+
+impl Tally {
+    /// Counts the outcomes.
+    pub fn of<'a>(checked: impl IntoIterator<Item = &'a Checked>) -> Self {
+        use crate::finding::Verdict;
+        let mut t = Tally::default();
+        for c in checked {
+            match &c.finding {
+                Err(_) => t.not_run += 1,
+                Ok(f) => match f.verdict {
+                    Verdict::Holds => t.holds += 1,
+                    Verdict::HoldsApproximately { .. } => t.approximately += 1,
+                    Verdict::Definition => t.definitions += 1,
+                    Verdict::Fails => t.fails += 1,
+                },
+            }
+        }
+        t
+    }
+}

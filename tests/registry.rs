@@ -1,0 +1,62 @@
+//! The registry of checks against the catalogue, and the mutation sweep: every check must fail
+//! when the paper's claimed side is perturbed by a relative 1e-3, in either direction.
+
+use rolling_disk::catalogue;
+use rolling_disk::equations::{claims, equations, Bench};
+use rolling_disk::finding::Verdict;
+
+#[test]
+fn registered_checks_match_the_catalogue() {
+    let cat = catalogue::equations();
+    let eqs = equations();
+    let mut numbers: Vec<u32> = eqs.iter().map(|e| e.number).collect();
+    numbers.dedup();
+    assert_eq!(numbers.len(), eqs.len(), "an equation has two checks");
+    for e in &eqs {
+        let entry = &cat[e.number as usize - 1];
+        assert_eq!(entry.label, e.label, "eq {}: label", e.number);
+    }
+    let ids: Vec<String> = catalogue::claims().into_iter().map(|c| c.id).collect();
+    let checked = claims();
+    for c in &checked {
+        assert!(
+            ids.iter().any(|i| i == c.id),
+            "claim {} is not in paper/claims.yaml",
+            c.id
+        );
+    }
+    eprintln!(
+        "{} of 85 equations and {} of {} claims have checks",
+        eqs.len(),
+        checked.len(),
+        ids.len()
+    );
+}
+
+#[test]
+fn every_check_fails_when_its_claim_is_perturbed() {
+    let mut survivors = Vec::new();
+    for p in [1e-3, -1e-3] {
+        let bench = Bench::perturbed(p);
+        for e in equations() {
+            let f = (e.check)(&bench);
+            if f.verdict != Verdict::Fails {
+                survivors.push(format!(
+                    "eq {} under {p:+e}: {} ({})",
+                    e.number, f.verdict, f.at
+                ));
+            }
+        }
+        for c in claims() {
+            let f = (c.check)(&bench);
+            if f.verdict != Verdict::Fails {
+                survivors.push(format!("{} under {p:+e}: {}", c.id, f.verdict));
+            }
+        }
+    }
+    assert!(
+        survivors.is_empty(),
+        "checks that cannot fail:\n{}",
+        survivors.join("\n")
+    );
+}
