@@ -1,30 +1,45 @@
-//! The contact force from the contact condition (see the module documentation of
-//! [`super`]): $A\mathbf F = \mathbf b + $ stabilisation, solved without allocating.
+//! The contact force from the contact condition $A\mathbf F = \mathbf b$ (see [`super`]).
+//!
+//! $A$ is diagonal in the triad $(\hat{\mathbf 1}, \hat{\mathbf 2}, \hat{\mathbf 3})$: those are
+//! principal axes of the disk ($I_{22} = I_{33}$) and $\boldsymbol\rho = a\hat{\mathbf 3}$, so
+//! $-[\boldsymbol\rho]_\times J[\boldsymbol\rho]_\times\mathbf F =
+//! a^2\left(F_1\hat{\mathbf 1}/I_{22} + F_2\hat{\mathbf 2}/I_{11}\right)$ (a push across the disk
+//! turns it about a diameter, a push along the rim's tangent turns it about its axis, a push to
+//! the centre does not turn it):
+//! $$ A = \mathrm{diag}\left(\tfrac1m + \tfrac{a^2}{I_{22}},\ \tfrac1m + \tfrac{a^2}{I_{11}},\ \tfrac1m\right). $$
+//! The free angular acceleration needs no matrix either: with
+//! $I = I_{22}\mathbb 1 + (I_{11} - I_{22})\hat{\mathbf 1}\hat{\mathbf 1}^T$,
+//! $\boldsymbol\omega\times I\boldsymbol\omega = (I_{11} - I_{22})\,\omega_1\,\boldsymbol\omega\times\hat{\mathbf 1}$,
+//! which is perpendicular to $\hat{\mathbf 1}$, so
+//! $\dot{\boldsymbol\omega}_0 = -\frac{I_{11} - I_{22}}{I_{22}}\,\omega_1\,\boldsymbol\omega\times\hat{\mathbf 1}$.
 
-use super::geometry::{inertia, Snapshot};
+use super::geometry::Snapshot;
 use super::{Contact, LabFrame};
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::Vector3;
 
 impl LabFrame {
-    /// $\mathbf F$ in the lab for the geometry `s`. A NaN state gives a NaN force (the solver
-    /// then reports it) rather than a panic.
+    /// $\mathbf F$ in the lab for the geometry `s`, from the exact contact condition (the
+    /// stabilisation acts on the translation only, see [`LabFrame::drift_correction`]).
     pub(super) fn force(&self, s: &Snapshot) -> Vector3<f64> {
         let d = &self.disk;
-        let z = Vector3::z();
-        let inv_i = inertia(d).map(|v| 1.0 / v);
-        let r = s.rotation.matrix();
-        let j = r * Matrix3::from_diagonal(&inv_i) * r.transpose();
-        let rho_x = s.rho.cross_matrix();
-        let a = Matrix3::identity() / d.m - rho_x * j * rho_x;
-        let w = s.omega_body;
-        let w_dot_free =
-            s.rotation * (-w.cross(&inertia(d).component_mul(&w))).component_mul(&inv_i);
-        let b = d.g * z - w_dot_free.cross(&s.rho) - s.omega.cross(&s.rho_dot);
+        let (i1, i2) = (d.i11(), d.i22());
+        let spin = s.omega.dot(&s.e1);
+        let w_dot_free = -(i1 - i2) / i2 * spin * s.omega.cross(&s.e1);
+        let b = d.g * Vector3::z() - w_dot_free.cross(&s.rho) - s.omega.cross(&s.rho_dot);
+        let a2 = d.a * d.a;
+        let inv_m = 1.0 / d.m;
+        let (a1, a22, a3) = (inv_m + a2 / i2, inv_m + a2 / i1, inv_m);
         match self.contact {
-            Contact::Rolling => a
-                .cholesky()
-                .map_or(Vector3::repeat(f64::NAN), |c| c.solve(&b)),
-            Contact::Frictionless => Vector3::new(0.0, 0.0, b.z / a[(2, 2)]),
+            Contact::Rolling => {
+                s.e1 * (b.dot(&s.e1) / a1)
+                    + s.e2 * (b.dot(&s.e2) / a22)
+                    + s.e3 * (b.dot(&s.e3) / a3)
+            }
+            Contact::Frictionless => {
+                // A_zz, with z = -cos(alpha) 1 - sin(alpha) 3.
+                let azz = a1 * s.cos_alpha * s.cos_alpha + a3 * s.sin_alpha * s.sin_alpha;
+                Vector3::new(0.0, 0.0, b.z / azz)
+            }
         }
     }
 
