@@ -13,6 +13,7 @@ pub mod finding;
 pub mod model;
 pub mod numerics;
 pub mod output;
+pub mod precision;
 pub mod run;
 pub mod scene;
 pub mod solve;

@@ -1,0 +1,23 @@
+//! Criterion benchmarks of every built-in scene, run end to end through
+//! [`rolling_disk::run::run`] (model, integration with the scene's own settings, recording).
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use rolling_disk::run::run;
+use rolling_disk::scene::builtin::BUILTIN;
+use rolling_disk::scene::Scene;
+use std::hint::black_box;
+
+fn scenes(c: &mut Criterion) {
+    let mut group = c.benchmark_group("scene");
+    group.sample_size(10);
+    for (name, _) in BUILTIN {
+        let scene = Scene::load(name).expect("built-in scenes are valid");
+        group.bench_function(*name, |b| {
+            b.iter(|| black_box(run(black_box(&scene), None).expect("runs")))
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, scenes);
+criterion_main!(benches);

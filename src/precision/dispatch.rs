@@ -1,0 +1,74 @@
+//! Builds a scene's model with only the states it needs and hands it to a generic visitor, the
+//! same way [`crate::run::run`] does, so that measurements time the solver and nothing else.
+
+use crate::model::adiabatic::Adiabatic;
+use crate::model::frictionless::Frictionless;
+use crate::model::rolling::Rolling;
+use crate::model::{Layout, Model, Quantity};
+use crate::scene::{ModelKind, Scene};
+use crate::solve::{Event, Problem, State};
+
+/// Something done with a scene's model, whatever its number of states.
+pub(crate) trait Visit {
+    /// What it returns.
+    type Out;
+    /// Does it with `model`.
+    fn visit<M: Model<N>, const N: usize>(self, model: &M, scene: &Scene) -> Self::Out;
+}
+
+/// Calls `v` with the scene's model.
+pub(crate) fn dispatch<V: Visit>(scene: &Scene, v: V) -> V::Out {
+    let extras = scene.extras();
+    let d = scene.disk;
+    macro_rules! rolling {
+        ($($n:literal),*) => {
+            match Layout::new(4, extras).len {
+                $($n => v.visit(&Rolling::<$n>::new(d, extras, scene.dissipation), scene),)*
+                n => unreachable!("a rolling layout has 4 to 8 states, not {n}"),
+            }
+        };
+    }
+    macro_rules! frictionless {
+        ($($n:literal),*) => {
+            match Frictionless::<3>::states(extras) {
+                $($n => v.visit(&Frictionless::<$n>::new(d, scene.start.spin, extras), scene),)*
+                n => unreachable!("a frictionless layout has 3 to 5 states, not {n}"),
+            }
+        };
+    }
+    match scene.model {
+        ModelKind::Rolling | ModelKind::Dissipative => rolling!(4, 5, 6, 7, 8),
+        ModelKind::Frictionless => frictionless!(3, 4, 5),
+        ModelKind::Adiabatic => {
+            let law = scene.dissipation.expect("validated: adiabatic has a law");
+            v.visit(&Adiabatic::new(d, law), scene)
+        }
+    }
+}
+
+/// The scene's problem from `t0` = 0 and state `y0` to `t_end`, with its stop events.
+pub(crate) fn problem<'a, M: Model<N>, const N: usize>(
+    model: &'a M,
+    scene: &Scene,
+    y0: State<N>,
+    t_end: f64,
+) -> Problem<'a, M, N> {
+    let mut p = Problem::new(model, 0.0, y0, t_end);
+    if let Some(bound) = scene.stop.alpha_below {
+        p = p.stop_when(Event::new(
+            format!("alpha fell below {bound} rad"),
+            move |y: &State<N>| model.motion(y).alpha - bound,
+        ));
+    }
+    if scene.stop.lift_off {
+        p = p.stop_when(Event::new(
+            "the disk left the table (F_z = 0)",
+            |y: &State<N>| {
+                let mut f = Vec::with_capacity(1);
+                model.record(y, Quantity::NormalForce, &mut f);
+                f[0]
+            },
+        ));
+    }
+    p
+}
