@@ -9,6 +9,7 @@ pub mod catalogue;
 pub mod check;
 pub mod disk;
 pub mod equations;
+pub mod experiment;
 pub mod finding;
 pub mod model;
 pub mod numerics;

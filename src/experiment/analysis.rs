@@ -1,0 +1,411 @@
+//! The analysis of a trace, the paper's method plus fits: peaks, $\Omega_i$, $d\Omega_i/dt$, the
+//! fitting window, the fits of eqs 84 and 85, and (for a synthetic trace) how far they land
+//! from the truth.
+
+use crate::experiment::error::ExperimentError;
+use crate::experiment::fit::{fit_eq84, fit_eq85, Eq84Fit, Eq85Fit};
+use crate::experiment::peaks::{find_peaks, noise_level, Peak, PeakSettings};
+use crate::experiment::rates::{accelerations, cycles, Acceleration, Cycle};
+use crate::experiment::trace::{Trace, Truth};
+use crate::output::write_atomically;
+use serde::{Deserialize, Serialize};
+use std::fmt;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+/// How to analyse.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct AnalysisSettings {
+    /// Peak finding.
+    pub peaks: PeakSettings,
+    /// Cycles shorter than this many samples are left out of the fits (timing by interpolation
+    /// between samples degrades as the period nears the sample interval).
+    pub min_samples_per_period: f64,
+    /// The last peaks before the signal ends are left out: there the law breaks (the disk
+    /// leaves the table, or its tilt is too small to modulate the light).
+    pub drop_last: usize,
+    /// Cycles whose pulses span less than this many noise deviations are left out: timing
+    /// from faint edges is biased by quantisation and by the nonlinearity of the crossing.
+    pub min_snr: f64,
+    /// Fit only cycles whose middle is at or after this time (s).
+    pub t_from: Option<f64>,
+    /// Fit only cycles whose middle is at or before this time (s).
+    pub t_to: Option<f64>,
+}
+
+impl Default for AnalysisSettings {
+    fn default() -> Self {
+        Self {
+            peaks: PeakSettings::default(),
+            min_samples_per_period: 10.0,
+            drop_last: 3,
+            min_snr: 20.0,
+            t_from: None,
+            t_to: None,
+        }
+    }
+}
+
+/// Which cycles were fitted, and why the others were not.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Window {
+    /// The rule, in words.
+    pub rule: String,
+    /// First peak used.
+    pub first_peak: usize,
+    /// Last peak used.
+    pub last_peak: usize,
+    /// Its time span (s).
+    pub t_first: f64,
+    /// (s)
+    pub t_last: f64,
+    /// Indices of the cycles fitted by eq 84.
+    pub cycles: Vec<usize>,
+    /// Indices of the accelerations fitted by eq 85.
+    pub accelerations: Vec<usize>,
+    /// Cycles left out as anomalous (missed or stray peak).
+    pub anomalous: usize,
+    /// Cycles left out as too short.
+    pub too_short: usize,
+    /// Cycles left out as too faint.
+    pub faint: usize,
+    /// The fastest cycle fitted (rad/s): the paper's "last analyzable cycle" was 680.
+    pub omega_last: f64,
+}
+
+/// How far the fits land from a synthetic trace's truth, in their own uncertainties.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Score {
+    /// (beta_84 - beta) / sigma.
+    pub beta84_pull: f64,
+    /// (t0_84 - t0) / sigma.
+    pub t0_pull: f64,
+    /// t0_84 - t0 in sample periods.
+    pub t0_error_samples: f64,
+    /// (beta_85 - beta) / sigma.
+    pub beta85_pull: f64,
+}
+
+/// Everything the analysis found.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Analysis {
+    /// The trace's source.
+    pub source: String,
+    /// Samples.
+    pub samples: usize,
+    /// Median sample interval (s).
+    pub sample_interval: f64,
+    /// Estimated noise (V rms).
+    pub noise: f64,
+    /// The settings used.
+    pub settings: AnalysisSettings,
+    /// Peaks found.
+    pub peaks: Vec<Peak>,
+    /// $\Omega_i$.
+    pub cycles: Vec<Cycle>,
+    /// $d\Omega_i/dt$.
+    pub accelerations: Vec<Acceleration>,
+    /// The fitting window.
+    pub window: Window,
+    /// Eq 84's fit.
+    pub eq84: Eq84Fit,
+    /// Eq 85's fit.
+    pub eq85: Eq85Fit,
+    /// The truth, if the trace carries one.
+    pub truth: Option<Truth>,
+    /// The fits against the truth.
+    pub score: Option<Score>,
+}
+
+/// Analyses a trace.
+pub fn analyze(trace: &Trace, s: &AnalysisSettings) -> Result<Analysis, ExperimentError> {
+    let file = trace.source.clone();
+    let n = trace.len();
+    if trace.v.len() != n {
+        return Err(ExperimentError::Setting(format!(
+            "{file}: {n} times but {} signal values",
+            trace.v.len()
+        )));
+    }
+    if !(s.min_samples_per_period.is_finite() && s.min_samples_per_period >= 2.0) {
+        return Err(ExperimentError::Setting(format!(
+            "min_samples_per_period must be at least 2, got {}",
+            s.min_samples_per_period
+        )));
+    }
+    let p = &s.peaks;
+    let ok = |x: f64| x.is_finite() && x > 0.0;
+    if !(ok(p.initial_window)
+        && ok(p.window_periods)
+        && p.hysteresis >= 0.0
+        && p.hysteresis < 0.5
+        && ok(p.min_span_sigmas))
+    {
+        return Err(ExperimentError::Setting(format!(
+            "peak settings out of range: {p:?} (window > 0, 0 <= hysteresis < 0.5)"
+        )));
+    }
+    let dt = trace.sample_interval();
+    let noise = noise_level(&trace.v);
+    let (vmin, vmax) = trace
+        .v
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
+            (a.min(v), b.max(v))
+        });
+    let span = vmax - vmin;
+    if n < 8 || span.is_nan() || span <= p.min_span_sigmas * noise || span == 0.0 {
+        return Err(ExperimentError::FlatSignal {
+            file,
+            span: if span.is_finite() { span } else { 0.0 },
+            noise,
+        });
+    }
+    let peaks = find_peaks(&trace.t, &trace.v, dt, noise, p);
+    let too_few =
+        |what: &str, found: usize, needed: usize, hint: &str| ExperimentError::TooFewPeaks {
+            file: trace.source.clone(),
+            what: what.into(),
+            found,
+            needed,
+            hint: hint.into(),
+        };
+    let needed = 6 + s.drop_last;
+    if peaks.len() < needed {
+        return Err(too_few(
+            "peaks found",
+            peaks.len(),
+            needed,
+            "record more cycles, or check that the signal has one pulse per turn",
+        ));
+    }
+    let tp: Vec<f64> = peaks.iter().map(|p| p.t).collect();
+    let w: Vec<f64> = peaks.iter().map(|p| p.sigma * p.sigma).collect();
+    let cyc = cycles(&tp);
+    let acc = accelerations(&tp);
+
+    let last_usable = peaks.len() - 1 - s.drop_last;
+    let min_period = s.min_samples_per_period * dt;
+    let (mut anomalous, mut too_short, mut faint) = (0, 0, 0);
+    let min_span = s.min_snr * noise;
+    let mut in_window = vec![false; cyc.len()];
+    for c in &cyc {
+        if c.i + 1 > last_usable
+            || s.t_from.is_some_and(|a| c.t < a)
+            || s.t_to.is_some_and(|b| c.t > b)
+        {
+            continue;
+        }
+        if c.anomalous {
+            anomalous += 1;
+        } else if c.period < min_period {
+            too_short += 1;
+        } else if peaks[c.i].span < min_span || peaks[c.i + 1].span < min_span {
+            faint += 1;
+        } else {
+            in_window[c.i] = true;
+        }
+    }
+    let cyc_idx: Vec<usize> = (0..cyc.len()).filter(|&i| in_window[i]).collect();
+    let acc_idx: Vec<usize> = (0..acc.len())
+        .filter(|&i| in_window[i] && in_window[i + 1])
+        .collect();
+    if cyc_idx.len() < 5 {
+        return Err(too_few(
+            "cycles in the fitting window",
+            cyc_idx.len(),
+            5,
+            "widen the window (t_from, t_to), lower drop_last or min_samples_per_period",
+        ));
+    }
+    let first_peak = cyc_idx[0];
+    let last_peak = cyc_idx[cyc_idx.len() - 1] + 1;
+    let ta: Vec<f64> = cyc_idx.iter().map(|&i| tp[i]).collect();
+    let tb: Vec<f64> = cyc_idx.iter().map(|&i| tp[i + 1]).collect();
+    let fit_err = |what: &str, message: String| ExperimentError::Fit {
+        file: trace.source.clone(),
+        what: what.into(),
+        message,
+    };
+    let eq84 = fit_eq84(&ta, &tb, &cyc_idx, &w).map_err(|m| fit_err("eq 84", m))?;
+    let eq85 = fit_eq85(&tp, &acc_idx, &w).map_err(|m| fit_err("eq 85", m))?;
+    let window = Window {
+        rule: format!(
+            "cycles between peaks {first_peak} and {last_peak}: all but the last {} peaks, \
+             periods of at least {} samples, pulses spanning at least {} noise deviations, \
+             no anomalous period{}{}",
+            s.drop_last,
+            s.min_samples_per_period,
+            s.min_snr,
+            s.t_from
+                .map_or(String::new(), |a| format!(", middle at or after {a} s")),
+            s.t_to
+                .map_or(String::new(), |b| format!(", middle at or before {b} s")),
+        ),
+        first_peak,
+        last_peak,
+        t_first: tp[first_peak],
+        t_last: tp[last_peak],
+        omega_last: cyc[cyc_idx[cyc_idx.len() - 1]].omega,
+        cycles: cyc_idx,
+        accelerations: acc_idx,
+        anomalous,
+        too_short,
+        faint,
+    };
+    let score = trace.truth.as_ref().map(|tr| Score {
+        beta84_pull: (eq84.beta - tr.beta) / eq84.beta_sigma,
+        t0_pull: (eq84.t0 - tr.t0) / eq84.t0_sigma,
+        t0_error_samples: (eq84.t0 - tr.t0) / dt,
+        beta85_pull: (eq85.beta - tr.beta) / eq85.beta_sigma,
+    });
+    Ok(Analysis {
+        source: trace.source.clone(),
+        samples: n,
+        sample_interval: dt,
+        noise,
+        settings: *s,
+        peaks,
+        cycles: cyc,
+        accelerations: acc,
+        window,
+        eq84,
+        eq85,
+        truth: trace.truth.clone(),
+        score,
+    })
+}
+
+impl fmt::Display for Analysis {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let (a, b, w) = (&self.eq84, &self.eq85, &self.window);
+        writeln!(f, "experiment: {}", self.source)?;
+        writeln!(
+            f,
+            "  {} samples every {:.3e} s; noise {:.2e} V rms; {} peaks, {} cycles",
+            self.samples,
+            self.sample_interval,
+            self.noise,
+            self.peaks.len(),
+            self.cycles.len()
+        )?;
+        writeln!(f, "  window: {}", w.rule)?;
+        writeln!(
+            f,
+            "          t = {:.4} .. {:.4} s, {} cycles ({} anomalous, {} too short, {} too faint left out); \
+             fastest fitted Omega = {:.0} rad/s",
+            w.t_first,
+            w.t_last,
+            w.cycles.len(),
+            w.anomalous,
+            w.too_short,
+            w.faint,
+            w.omega_last
+        )?;
+        writeln!(
+            f,
+            "  eq 84: beta = {:.4} +- {:.4}, t0 = {:.6} +- {:.6} s, C^(-1/(beta+2)) = {:.5} +- {:.5} s \
+             (reduced chi2 {:.2}, n = {})",
+            a.beta, a.beta_sigma, a.t0, a.t0_sigma, a.inv_omega_1s, a.inv_omega_1s_sigma, a.reduced_chi2, a.n
+        )?;
+        writeln!(
+            f,
+            "  eq 85: slope = {:.4} +- {:.4}, so beta = {:.4} +- {:.4} (reduced chi2 {:.2}, n = {})",
+            b.slope, b.slope_sigma, b.beta, b.beta_sigma, b.reduced_chi2, b.n
+        )?;
+        if let (Some(t), Some(s)) = (&self.truth, &self.score) {
+            writeln!(
+                f,
+                "  truth: beta = {}, t0 = {:.6} s ({}); pulls: beta84 {:+.2}, t0 {:+.2} \
+                 ({:+.2} samples), beta85 {:+.2}",
+                t.beta, t.t0, t.origin, s.beta84_pull, s.t0_pull, s.t0_error_samples, s.beta85_pull
+            )?;
+        }
+        Ok(())
+    }
+}
+
+impl Analysis {
+    /// The analysis as pretty JSON.
+    pub fn to_json(&self) -> String {
+        serde_json::to_string_pretty(self).unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))
+    }
+
+    /// The peaks as CSV.
+    pub fn peaks_csv(&self) -> String {
+        let mut s = String::from("i,t_s,sigma_s,rise_s,fall_s,span_V\n");
+        for (i, p) in self.peaks.iter().enumerate() {
+            let _ = writeln!(
+                s,
+                "{i},{},{},{},{},{}",
+                p.t, p.sigma, p.rise, p.fall, p.span
+            );
+        }
+        s
+    }
+
+    /// $\Omega_i$, with eq 84's curve and residuals where fitted, as CSV.
+    pub fn omega_csv(&self) -> String {
+        let mut s = String::from(
+            "i,t_mid_s,period_s,omega_rad_per_s,anomalous,fitted,fit_inv_omega_s,residual_s,normalized\n",
+        );
+        let mut k = 0;
+        for c in &self.cycles {
+            let _ = write!(
+                s,
+                "{},{},{},{},{}",
+                c.i, c.t, c.period, c.omega, c.anomalous
+            );
+            if self.window.cycles.get(k) == Some(&c.i) {
+                let p = &self.eq84.points[k];
+                let _ = writeln!(s, ",true,{},{},{}", p.model, p.residual, p.normalized);
+                k += 1;
+            } else {
+                s.push_str(",false,,,\n");
+            }
+        }
+        s
+    }
+
+    /// $d\Omega_i/dt$, with eq 85's curve and residuals where fitted, as CSV.
+    pub fn omega_dot_csv(&self) -> String {
+        let mut s = String::from(
+            "i,t_s,omega_rad_per_s,omega_dot_rad_per_s2,fitted,fit_omega_dot,residual,normalized\n",
+        );
+        let mut k = 0;
+        for a in &self.accelerations {
+            let _ = write!(s, "{},{},{},{}", a.i, a.t, a.omega, a.omega_dot);
+            if self.window.accelerations.get(k) == Some(&a.i) {
+                let p = &self.eq85.points[k];
+                let _ = writeln!(s, ",true,{},{},{}", p.model, p.residual, p.normalized);
+                k += 1;
+            } else {
+                s.push_str(",false,,,\n");
+            }
+        }
+        s
+    }
+}
+
+/// Writes `analysis.json`, `peaks.csv`, `omega.csv` and `omega_dot.csv` into `dir` (created if
+/// needed), each atomically. Returns the paths written.
+pub fn write_analysis(a: &Analysis, dir: &Path) -> Result<Vec<PathBuf>, ExperimentError> {
+    let io = |p: &Path, e: std::io::Error| ExperimentError::Io {
+        file: p.display().to_string(),
+        message: format!("cannot write ({e})"),
+    };
+    std::fs::create_dir_all(dir).map_err(|e| io(dir, e))?;
+    let files = [
+        ("analysis.json", a.to_json()),
+        ("peaks.csv", a.peaks_csv()),
+        ("omega.csv", a.omega_csv()),
+        ("omega_dot.csv", a.omega_dot_csv()),
+    ];
+    let mut out = Vec::new();
+    for (name, text) in files {
+        let p = dir.join(name);
+        write_atomically(&p, text.as_bytes()).map_err(|e| io(&p, e))?;
+        out.push(p);
+    }
+    Ok(out)
+}
