@@ -4,9 +4,12 @@ use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rolling_disk::check::{run_checks, Checked, Selection, Tally};
 use rolling_disk::equations::Bench;
+use rolling_disk::experiment;
 use rolling_disk::output::write_atomically;
+use rolling_disk::precision::{self, Accuracy};
 use rolling_disk::run::{run, Run};
 use rolling_disk::scene::{builtin::BUILTIN, Scene};
+use std::path::Path;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -41,6 +44,54 @@ enum Command {
         /// Print the findings as JSON instead of a table.
         #[arg(long)]
         json: bool,
+        /// Integration accuracy of the checks (DOP853 at rtol 1e-6, 1e-10, 1e-13); without it,
+        /// rtol 1e-12, the accuracy the tolerances were designed at.
+        #[arg(long, value_enum)]
+        accuracy: Option<Accuracy>,
+    },
+    /// Measures speed against accuracy for a scene (default: the benchmark scene): error
+    /// against a validated reference, right-hand-side evaluations and wall time, per method.
+    Precision {
+        /// A scene file or built-in scene name.
+        #[arg(default_value = "benchmark")]
+        scene: String,
+        /// Print the study as JSON.
+        #[arg(long)]
+        json: bool,
+        /// A coarse sweep timed once (seconds instead of a minute).
+        #[arg(long)]
+        quick: bool,
+        /// Also name the cheapest method and tolerance reaching this accuracy (e.g. 1e-8).
+        #[arg(long, value_name = "ERROR")]
+        target: Option<f64>,
+    },
+    /// The paper's experiment (section 11): a simulated light signal, and the analysis of a
+    /// scope CSV (synthetic or real).
+    #[command(subcommand)]
+    Experiment(ExperimentCommand),
+}
+
+#[derive(Subcommand)]
+enum ExperimentCommand {
+    /// Simulates the light signal of a spin-down scene, as a scope CSV (time in s, signal in V).
+    Simulate {
+        /// A dissipative scene (file or built-in name), e.g. spin-down.
+        #[arg(default_value = "spin-down")]
+        scene: String,
+        /// Where to write the CSV.
+        #[arg(long, value_name = "FILE")]
+        csv: PathBuf,
+    },
+    /// Times the peaks of a scope CSV and fits beta, t0 and C (eqs 84-85) with uncertainties.
+    Analyze {
+        /// The CSV: a header, then time (s) and signal (V) columns.
+        csv: PathBuf,
+        /// Also write analysis.json, peaks.csv, omega.csv and omega_dot.csv here.
+        #[arg(long, value_name = "DIR")]
+        out: Option<PathBuf>,
+        /// Print the analysis as JSON.
+        #[arg(long)]
+        json: bool,
     },
 }
 
@@ -49,7 +100,23 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Simulate { scene, csv } => simulate(&scene, csv),
         Command::Scenes => scenes(),
-        Command::Check { only, json } => check(only.as_deref(), json),
+        Command::Check {
+            only,
+            json,
+            accuracy,
+        } => check(only.as_deref(), json, accuracy),
+        Command::Precision {
+            scene,
+            json,
+            quick,
+            target,
+        } => precision(&scene, json, quick, target),
+        Command::Experiment(ExperimentCommand::Simulate { scene, csv }) => {
+            experiment_simulate(&scene, &csv)
+        }
+        Command::Experiment(ExperimentCommand::Analyze { csv, out, json }) => {
+            experiment_analyze(&csv, out.as_deref(), json)
+        }
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -137,7 +204,15 @@ fn print_summary(scene: &Scene, r: &Run) {
     );
 }
 
-fn check(only: Option<&str>, json: bool) -> Result<(), String> {
+fn check(only: Option<&str>, json: bool, accuracy: Option<Accuracy>) -> Result<(), String> {
+    let bench = match accuracy {
+        Some(a) => Bench {
+            rtol: a.settings().rtol,
+            ..Bench::default()
+        },
+        None => Bench::default(),
+    };
+    let started = std::time::Instant::now();
     let selection = match only {
         Some(text) => Selection::parse(text)?,
         None => Selection::default(),
@@ -153,8 +228,9 @@ fn check(only: Option<&str>, json: bool) -> Result<(), String> {
         bar.set_length(total as u64);
         bar.set_position(done as u64);
     };
-    let checked = run_checks(&Bench::default(), &selection, threads, &progress)?;
+    let checked = run_checks(&bench, &selection, threads, &progress)?;
     bar.finish_and_clear();
+    let elapsed = started.elapsed().as_secs_f64();
     if json {
         println!(
             "{}",
@@ -163,6 +239,14 @@ fn check(only: Option<&str>, json: bool) -> Result<(), String> {
         );
     } else {
         print_table(&checked);
+        println!(
+            "integrations: DOP853 at rtol {:e}; {} checks in {elapsed:.2} s on {threads} threads",
+            bench.rtol,
+            checked.len()
+        );
+        if let Some(a) = accuracy {
+            print_preset_accuracy(a)?;
+        }
     }
     let tally = Tally::of(&checked);
     if tally.not_run > 0 {
@@ -228,4 +312,112 @@ fn print_table(checked: &[Checked]) {
         "{}",
         line("claims", Tally::of(claims.iter().copied()), claims.len())
     );
+}
+
+/// States what a preset actually reaches, measured on the benchmark scene against the validated
+/// reference, and what it costs.
+fn print_preset_accuracy(a: Accuracy) -> Result<(), String> {
+    let scene = Scene::load("benchmark").map_err(|e| e.to_string())?;
+    let reference = precision::Reference::compute(&scene, &precision::ReferenceOptions::default())
+        .map_err(|e| e.to_string())?;
+    let m = precision::measure_preset(&scene, a, &reference, &precision::Timing::default())
+        .map_err(|e| e.to_string())?;
+    println!(
+        "accuracy {a}: on the benchmark scene this preset reaches {:.1e} over the trajectory \
+         ({:.1e} at the end; reference uncertainty {:.1e}) in {:.2e} s and {} evaluations",
+        m.trajectory_error, m.final_error, m.reference_uncertainty, m.wall_seconds, m.evaluations
+    );
+    Ok(())
+}
+
+fn precision(name: &str, json: bool, quick: bool, target: Option<f64>) -> Result<(), String> {
+    let scene = Scene::load(name).map_err(|e| e.to_string())?;
+    let opts = if quick {
+        precision::StudyOptions::quick()
+    } else {
+        precision::StudyOptions::default()
+    };
+    eprintln!(
+        "measuring {} (this takes {})...",
+        scene.name,
+        if quick { "seconds" } else { "about a minute" }
+    );
+    let study = precision::study(&scene, &opts).map_err(|e| format!("{}: {e}", scene.source))?;
+    if json {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&study).map_err(|e| e.to_string())?
+        );
+        return Ok(());
+    }
+    let r = &study.reference;
+    println!(
+        "scene {}: reference {} (uncertainty {:.1e})",
+        study.scene,
+        precision::reference::label(&r.trace.settings),
+        r.uncertainty
+    );
+    println!(
+        "{:<22} {:>11} {:>11} {:>12} {:>12}  ending",
+        "method", "evaluations", "wall (s)", "final error", "trajectory"
+    );
+    for s in &study.series {
+        for p in &s.points {
+            println!(
+                "{:<22} {:>11} {:>11.3e} {:>12.2e} {:>12.2e}  {}",
+                p.label, p.evaluations, p.wall_seconds, p.final_error, p.trajectory_error, p.ending
+            );
+        }
+        match s.observed_order {
+            Some(o) => println!(
+                "  {}: observed order {o:.2} (nominal {})",
+                s.method, s.nominal_order
+            ),
+            None => println!("  {}: too few resolved points to fit an order", s.method),
+        }
+    }
+    if let Some(target) = target {
+        match precision::cheapest(&study, target, precision::Cost::Evaluations) {
+            Some(p) => println!(
+                "cheapest to reach {target:e}: {} ({} evaluations, {:.2e} s)",
+                p.label, p.evaluations, p.wall_seconds
+            ),
+            None => println!(
+                "no setting reaches {target:e} resolvably (the reference's own uncertainty is {:.1e})",
+                r.uncertainty
+            ),
+        }
+    }
+    Ok(())
+}
+
+fn experiment_simulate(name: &str, csv: &Path) -> Result<(), String> {
+    let scene = Scene::load(name).map_err(|e| e.to_string())?;
+    eprintln!("simulating the light signal of {}...", scene.name);
+    let trace = experiment::simulate_trace(&scene, &experiment::LightModel::default())
+        .map_err(|e| e.to_string())?;
+    write_atomically(csv, trace.to_csv().as_bytes())
+        .map_err(|e| format!("cannot write {}: {e}", csv.display()))?;
+    println!("{} samples written to {}", trace.t.len(), csv.display());
+    Ok(())
+}
+
+fn experiment_analyze(csv: &Path, out: Option<&Path>, json: bool) -> Result<(), String> {
+    let trace = experiment::read_trace(csv).map_err(|e| e.to_string())?;
+    let analysis = experiment::analyze(&trace, &experiment::AnalysisSettings::default())
+        .map_err(|e| e.to_string())?;
+    if json {
+        println!("{}", analysis.to_json());
+    } else {
+        println!("{analysis}");
+    }
+    if let Some(dir) = out {
+        std::fs::create_dir_all(dir)
+            .map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+        let written = experiment::write_analysis(&analysis, dir).map_err(|e| e.to_string())?;
+        for p in written {
+            eprintln!("wrote {}", p.display());
+        }
+    }
+    Ok(())
 }

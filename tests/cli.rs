@@ -111,3 +111,52 @@ fn an_unwritable_csv_is_an_error_not_a_panic() {
     assert!(!ok);
     assert!(err.contains("cannot write /nonexistent-dir/x.csv"), "{err}");
 }
+
+#[test]
+fn check_runs_the_selected_checks_and_refuses_unknown_ones() {
+    let (ok, out, err) = cli(&["check", "--only", "23-25,29"]);
+    assert!(ok, "{err}");
+    for eq in ["eq 23", "eq 24", "eq 25", "eq 29"] {
+        assert!(out.contains(eq), "{eq} missing:\n{out}");
+    }
+    assert!(out.contains("4 equations:"), "{out}");
+    let (ok, _, err) = cli(&["check", "--only", "99"]);
+    assert!(!ok && err.contains("1 to 85"), "{err}");
+    let (ok, _, err) = cli(&["check", "--only", "no-such-claim"]);
+    assert!(!ok && err.contains("no-such-claim"), "{err}");
+}
+
+#[test]
+fn check_json_is_parseable_data() {
+    let (ok, out, err) = cli(&["check", "--only", "26", "--json"]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v[0]["subject"]["number"], 26);
+    assert!(
+        v[0]["finding"]["Ok"]["verdict"]["kind"].is_string(),
+        "{out}"
+    );
+}
+
+#[test]
+fn experiment_simulate_then_analyze_round_trips_and_bad_csvs_are_refused() {
+    let dir = temp_dir("experiment");
+    let csv = dir.join("trace.csv");
+    let (ok, _, err) = cli(&[
+        "experiment",
+        "simulate",
+        "spin-down",
+        "--csv",
+        csv.to_str().unwrap(),
+    ]);
+    assert!(ok, "{err}");
+    let (ok, out, err) = cli(&["experiment", "analyze", csv.to_str().unwrap()]);
+    assert!(ok, "{err}");
+    assert!(out.contains("beta"), "{out}");
+    let bad = dir.join("bad.csv");
+    std::fs::write(&bad, "t,v\n0.0,1.0\n0.1,nan\n").unwrap();
+    let (ok, _, err) = cli(&["experiment", "analyze", bad.to_str().unwrap()]);
+    assert!(!ok);
+    assert!(err.contains("bad.csv") && err.contains('3'), "{err}");
+    assert!(!err.contains("panicked"), "{err}");
+}

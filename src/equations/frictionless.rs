@@ -606,6 +606,8 @@ pub fn eq64(b: &Bench) -> Finding {
 /// shifts the located threshold by $(\mathrm{arccosh}\,2/T)^2/2\Omega^2$ relative (the
 /// run's resolution): the tolerance is the bisection's plus twice that resolution.
 pub fn eq65(b: &Bench) -> Finding {
+    // Resolving this claim needs tight integrations whatever the preset (see Bench::resolving).
+    let b = &b.resolving(1e-12);
     let mut worst = Worst::default();
     let width = 1e-5;
     let mut resolution: f64 = 0.0;
@@ -685,6 +687,8 @@ fn oscillate(
 /// Eqs 66-67: the residual of the ansatz on small-amplitude integrations, relative to its
 /// amplitude, at shrinking amplitudes; `which` = 0 for alpha (66), 2 for Omega (67).
 fn ansatz(b: &Bench, which: usize) -> Finding {
+    // Resolving this claim needs tight integrations whatever the preset (see Bench::resolving).
+    let b = &b.resolving(1e-12);
     let fractions = [1e-2, 3e-3, 1e-3, 3e-4];
     let mut errors = vec![0.0f64; fractions.len()];
     for &k in &[0.25, 0.5] {
@@ -839,6 +843,8 @@ pub fn eq70(b: &Bench) -> Finding {
 /// the amplitude's shift is even in $\epsilon$), divided by the steady $\Omega_0$. Smaller
 /// amplitudes drown in the solver's error on $\alpha$, which is relative to $\alpha_0$.
 pub fn eq71(b: &Bench) -> Finding {
+    // Resolving this claim needs tight integrations whatever the preset (see Bench::resolving).
+    let b = &b.resolving(1e-12);
     let worst = sweep_linear(|d, alpha0, lin, worst| {
         let k = d.k;
         let c = alpha0.cos();

@@ -51,6 +51,16 @@ impl Bench {
         x * (1.0 + self.perturbation)
     }
 
+    /// The same bench with integrations at least as accurate as rtol `finest`, for a check that
+    /// cannot resolve its claim otherwise (a residual's order of convergence, a growth test
+    /// under bisection), whatever accuracy preset the user chose.
+    pub fn resolving(&self, finest: f64) -> Self {
+        Self {
+            rtol: self.rtol.min(finest),
+            ..*self
+        }
+    }
+
     /// Solver settings for the integrations of a check (DOP853 at this bench's rtol).
     pub fn settings(&self) -> Settings {
         Settings {
