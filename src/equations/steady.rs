@@ -9,17 +9,24 @@
 //! that carries the heading and the centre of mass in the plane (the circle's centre is the mean
 //! of the path sampled evenly over one precession period).
 //!
+//! Section 5's vector relations (eqs 33-37) are checked against the independent lab-frame
+//! Newton-Euler model (`model::lab_frame`): the $b = 0$ steady state found as above is started in
+//! the lab model, integrated over one precession period (its steadiness measured there), and
+//! $\mathbf L$, $d\mathbf L/dt$, the contact torque, $\boldsymbol\omega$, the precession and
+//! relative-spin rates are all computed or measured in the lab.
+//!
 //! The helpers here are shared with `slippage.rs` and `oscillation.rs`.
 
 use super::{Bench, Equation};
 use crate::disk::Disk;
 use crate::finding::{Finding, Method, Tolerance, Worst};
+use crate::model::lab_frame::{Contact, LabFrame, Snapshot};
 use crate::model::rolling::{contact_force, rates, Rolling};
 use crate::model::{Extras, Model, Motion};
 use crate::numerics::linearize::jacobian;
 use crate::numerics::oscillation::bisect;
 use crate::solve::{solve, Problem, State};
-use nalgebra::SMatrix;
+use nalgebra::{SMatrix, Vector3};
 use num_dual::{Dual64, DualNum};
 use std::f64::consts::PI;
 
@@ -54,6 +61,31 @@ pub const EQUATIONS: &[Equation] = &[
         number: 32,
         label: "e25",
         check: eq32,
+    },
+    Equation {
+        number: 33,
+        label: "e26",
+        check: eq33,
+    },
+    Equation {
+        number: 34,
+        label: "e27",
+        check: eq34,
+    },
+    Equation {
+        number: 35,
+        label: "e28",
+        check: eq35,
+    },
+    Equation {
+        number: 36,
+        label: "e29",
+        check: eq36,
+    },
+    Equation {
+        number: 37,
+        label: "e30",
+        check: eq37,
     },
     Equation {
         number: 38,
@@ -558,6 +590,388 @@ fn eq40(b: &Bench) -> Finding {
     )
 }
 
+// ------------------------------------------------------------------------------------------
+// Section 5, against the lab-frame model
+// ------------------------------------------------------------------------------------------
+
+/// Tilts of the section 5 checks.
+const LAB_ALPHAS: [f64; 3] = [0.1, 0.8, 1.4];
+
+/// Samples per precession period of a lab run: $\Omega_0 h = 2\pi/320 \approx 0.02$, so the
+/// seven-point derivative's truncation, $(\Omega_0 h)^6/140 \approx 4\times10^{-13}$ of
+/// $|\dot{\mathbf L}|$ ($\mathbf L$ turns uniformly at $\Omega_0$), and its round-off,
+/// about $2\epsilon/(\Omega_0 h\cos\alpha_0) \approx 10^{-13}$ at $\alpha_0 = 1.4$, both stay far
+/// below [`Tolerance::solver`] at the default rtol (measured: 5e-13 worst).
+const LAB_SAMPLES: usize = 320;
+
+/// Every how many samples a lab run's state is compared with a claim (32 points per run).
+const LAB_STRIDE: usize = 10;
+
+/// A $b = 0$ steady motion integrated by the lab-frame Newton-Euler model over one precession
+/// period, with what is measured on it.
+struct LabSteady {
+    k: f64,
+    alpha0: f64,
+    disk: Disk,
+    lab: LabFrame,
+    /// Sample times (uniform).
+    t: Vec<f64>,
+    /// The lab states sampled.
+    y: Vec<State<13>>,
+    /// The geometry of each sample.
+    snaps: Vec<Snapshot>,
+    /// The angular momentum about the centre of mass, $R\,I\boldsymbol\omega_b$ (lab components).
+    l: Vec<Vector3<f64>>,
+    /// The precession rate: the heading's (unwrapped) advance over the run divided by its time.
+    precession: f64,
+    /// The relative spin: the face angle's (unwrapped) advance over the run divided by its time.
+    rel_spin: f64,
+    /// The largest departure from a steady $b = 0$ motion along the run: $|\alpha - \alpha_0|/\alpha_0$
+    /// and the centre's speed over $a|\Omega_0|$.
+    unsteadiness: f64,
+}
+
+/// The advance per unit time of an angle sampled in $(-\pi, \pi]$, unwrapped sample to sample.
+fn angle_rate(t: &[f64], angles: &[f64]) -> f64 {
+    let advance: f64 = angles
+        .windows(2)
+        .map(|w| (w[1] - w[0] + PI).rem_euclid(2.0 * PI) - PI)
+        .sum();
+    advance / (t[t.len() - 1] - t[0])
+}
+
+impl LabSteady {
+    /// The $b = 0$ steady motion of the rolling model (Newton on eq 24 at $\omega_{10} = 0$, not
+    /// the paper's eq 31), precessing with the sign `sign`, started in the lab model (heading
+    /// 0.3, centre at (0.01, -0.02) m, face angle 0.7: nothing special) and integrated over one
+    /// precession period. Its steadiness is measured on the lab run itself.
+    fn run(bench: &Bench, k: f64, alpha0: f64, sign: f64) -> Option<Self> {
+        let d = disk(k);
+        let mut m = steady_ref(&d, alpha0, 0.0)?;
+        m.precession *= sign;
+        let lab = LabFrame::new(d, Contact::Rolling);
+        let y0 = lab.state_from(&m, 0.3, [0.01, -0.02], 0.7);
+        let period = 2.0 * PI / m.precession.abs();
+        let sol = solve(
+            Problem::new(&lab, 0.0, y0, period).sampled(period / LAB_SAMPLES as f64),
+            &bench.settings(),
+        )
+        .ok()?;
+        if !sol.ending.is_complete() {
+            return None;
+        }
+        let snaps: Vec<Snapshot> = sol.y.iter().map(|y| lab.snapshot(y)).collect();
+        let inertia = Vector3::new(d.i11(), d.i22(), d.i22());
+        let l = snaps
+            .iter()
+            .map(|s| s.rotation * inertia.component_mul(&s.omega_body))
+            .collect();
+        let headings: Vec<f64> = snaps.iter().map(Snapshot::heading).collect();
+        let faces: Vec<f64> = snaps.iter().map(Snapshot::face).collect();
+        let unsteadiness = snaps
+            .iter()
+            .map(|s| {
+                ((s.alpha() - alpha0).abs() / alpha0)
+                    .max(s.velocity.norm() / (d.a * m.precession.abs()))
+            })
+            .fold(0.0, f64::max);
+        Some(Self {
+            k,
+            alpha0,
+            disk: d,
+            precession: angle_rate(&sol.t, &headings),
+            rel_spin: angle_rate(&sol.t, &faces),
+            t: sol.t,
+            y: sol.y,
+            lab,
+            snaps,
+            l,
+            unsteadiness,
+        })
+    }
+
+    /// Every lab run of the section 5 checks: the inertia factors [`KS`], tilts
+    /// [`LAB_ALPHAS`], both senses of precession.
+    fn all(bench: &Bench) -> Vec<Self> {
+        let mut out = Vec::new();
+        for k in KS {
+            for alpha0 in LAB_ALPHAS {
+                for sign in [1.0, -1.0] {
+                    if let Some(run) = Self::run(bench, k, alpha0, sign) {
+                        out.push(run);
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// The indices compared: every [`LAB_STRIDE`]-th sample, three in from either end (room
+    /// for the seven-point derivative).
+    fn points(&self) -> impl Iterator<Item = usize> {
+        (3..self.t.len() - 3).step_by(LAB_STRIDE)
+    }
+
+    /// $d\mathbf L/dt$ at sample `i`, by the seven-point central difference (error
+    /// $h^6 L^{(7)}/140$) of the sampled angular momentum.
+    fn l_dot(&self, i: usize) -> Vector3<f64> {
+        let h = (self.t[i + 3] - self.t[i - 3]) / 6.0;
+        let l = &self.l;
+        (45.0 * (l[i + 1] - l[i - 1]) - 9.0 * (l[i + 2] - l[i - 2]) + (l[i + 3] - l[i - 3]))
+            / (60.0 * h)
+    }
+
+    /// The rate $\omega$ about axis 3 measured at sample `i`: $|\boldsymbol\omega|$ with the sign
+    /// of $\boldsymbol\omega\cdot\hat{\mathbf 3}$.
+    fn omega3(&self, i: usize) -> f64 {
+        let s = &self.snaps[i];
+        s.omega.norm().copysign(s.omega.dot(&s.e3))
+    }
+
+    /// Where, in words.
+    fn at(&self, i: usize, what: &str) -> String {
+        format!(
+            "k = {}, alpha0 = {}, Omega_0 = {:.4} rad/s (b = 0, lab frame), t = {:.5} s: {what}",
+            self.k, self.alpha0, self.precession, self.t[i]
+        )
+    }
+
+    /// Records the run's departure from steadiness (the premise of every section 5 claim).
+    fn add_steadiness(&self, w: &mut Worst) {
+        w.add(self.unsteadiness, 0.0, 1.0, || {
+            self.at(
+                self.t.len() - 1,
+                "largest departure of the lab run from steady b = 0 motion (premise)",
+            )
+        });
+    }
+}
+
+/// Compares the claimed vector `claimed` (each component read through [`Bench::claim`]) with
+/// `reference`, component by component, relative to `scale`.
+fn add_vector(
+    b: &Bench,
+    w: &mut Worst,
+    claimed: Vector3<f64>,
+    reference: Vector3<f64>,
+    scale: f64,
+    at: impl Fn(usize) -> String,
+) {
+    for c in 0..3 {
+        w.add(b.claim(claimed[c]), reference[c], scale, || at(c));
+    }
+}
+
+const AXES: [&str; 3] = ["x", "y", "z"];
+
+/// Eq 33, $\mathbf L = I_{33}\omega\hat{\mathbf 3} = k m a^2\omega\hat{\mathbf 3}$ at $b = 0$.
+///
+/// Independent model: the $b = 0$ steady motion (solved by Newton on the rolling model, its
+/// steadiness measured on the lab run) integrated by the lab-frame Newton-Euler model over one
+/// precession period; at 32 samples the angular momentum computed in the lab,
+/// $R\,I\boldsymbol\omega_b$, is compared component by component with both claimed forms, with
+/// $\omega$ measured ($|\boldsymbol\omega|$ with the sign of $\boldsymbol\omega\cdot\hat{\mathbf 3}$),
+/// $\hat{\mathbf 3}$ the lab's direction to the lowest rim point, and $I_{33} =
+/// \hat{\mathbf 3}\cdot R I R^T\hat{\mathbf 3}$ from the lab's inertia tensor.
+fn eq33(b: &Bench) -> Finding {
+    let mut w = Worst::default();
+    for run in LabSteady::all(b) {
+        run.add_steadiness(&mut w);
+        let d = &run.disk;
+        let inertia = Vector3::new(d.i11(), d.i22(), d.i22());
+        for i in run.points() {
+            let s = &run.snaps[i];
+            let omega = run.omega3(i);
+            let e3_body = s.rotation.inverse() * s.e3;
+            let i33 = e3_body.dot(&inertia.component_mul(&e3_body));
+            let forms = [i33, d.k * d.m * d.a * d.a];
+            for (f, moment) in forms.into_iter().enumerate() {
+                add_vector(
+                    b,
+                    &mut w,
+                    moment * omega * s.e3,
+                    run.l[i],
+                    run.l[i].norm(),
+                    |c| {
+                        run.at(
+                            i,
+                            &format!(
+                                "L_{} ({} form) against R I omega_b, relative to |L|",
+                                AXES[c],
+                                ["I33", "k m a^2"][f]
+                            ),
+                        )
+                    },
+                );
+            }
+        }
+    }
+    Finding::from_worst(
+        Method::IndependentModel,
+        "L = I33 omega 3 = k m a^2 omega 3 against R I omega_b along lab-frame b = 0 steady runs, relative to |L|",
+        w,
+        Tolerance::solver(b.rtol),
+        false,
+    )
+}
+
+/// Eq 34, $\mathbf N = a\hat{\mathbf 3}\times m g\hat{\mathbf z} = \dfrac{d\mathbf L}{dt}$ at $b = 0$.
+///
+/// Independent model: along the lab runs of eq 33's check, the claimed torque is compared,
+/// component by component, with (i) the torque about the centre of the contact force the lab
+/// model solves from the rolling condition, $\boldsymbol\rho\times\mathbf F$, and (ii) the rate
+/// of the lab's angular momentum measured by a seven-point central difference of the sampled
+/// $\mathbf L(t)$; relative to $|\mathbf N| = m g a\cos\alpha_0$.
+fn eq34(b: &Bench) -> Finding {
+    let mut w = Worst::default();
+    for run in LabSteady::all(b) {
+        run.add_steadiness(&mut w);
+        let d = &run.disk;
+        for i in run.points() {
+            let s = &run.snaps[i];
+            let claimed = (d.a * s.e3).cross(&(d.m * d.g * Vector3::z()));
+            let torque = s.rho.cross(&run.lab.contact_force(&run.y[i]));
+            let l_dot = run.l_dot(i);
+            for (j, reference) in [torque, l_dot].into_iter().enumerate() {
+                add_vector(b, &mut w, claimed, reference, reference.norm(), |c| {
+                    run.at(
+                        i,
+                        &format!(
+                            "N_{} against {}, relative to its norm",
+                            AXES[c],
+                            ["rho x F of the lab's contact force", "dL/dt of the lab run"][j]
+                        ),
+                    )
+                });
+            }
+        }
+    }
+    Finding::from_worst(
+        Method::IndependentModel,
+        "a 3 x m g z against the lab's contact torque rho x F and the lab run's dL/dt (seven-point difference), relative to |N|",
+        w,
+        Tolerance::solver(b.rtol),
+        false,
+    )
+}
+
+/// Eq 35, $\dfrac{d\mathbf L}{dt} = \vec\Omega_0\times\mathbf L$ at $b = 0$.
+///
+/// Independent model: along the lab runs of eq 33's check, with $\vec\Omega_0 = \Omega_0\hat{\mathbf z}$
+/// and $\Omega_0$ MEASURED as the precession rate of the lab run (the heading's advance over one
+/// period divided by its time), $\vec\Omega_0\times\mathbf L$ (the lab's $\mathbf L$) is compared,
+/// component by component, with the lab run's $d\mathbf L/dt$ (seven-point central difference),
+/// relative to its norm.
+fn eq35(b: &Bench) -> Finding {
+    let mut w = Worst::default();
+    for run in LabSteady::all(b) {
+        run.add_steadiness(&mut w);
+        let precession = run.precession * Vector3::z();
+        for i in run.points() {
+            let claimed = precession.cross(&run.l[i]);
+            let l_dot = run.l_dot(i);
+            add_vector(b, &mut w, claimed, l_dot, l_dot.norm(), |c| {
+                run.at(
+                    i,
+                    &format!(
+                        "(Omega_0 x L)_{} against the lab run's dL/dt, relative to |dL/dt|",
+                        AXES[c]
+                    ),
+                )
+            });
+        }
+    }
+    Finding::from_worst(
+        Method::IndependentModel,
+        "Omega_0 z x L (Omega_0 the lab run's precession rate) against the lab run's dL/dt, relative to |dL/dt|",
+        w,
+        Tolerance::solver(b.rtol),
+        false,
+    )
+}
+
+/// Eq 36, $\vec\Omega_0 = -\dfrac{g}{a k\omega}\hat{\mathbf z}$ at $b = 0$.
+///
+/// Independent model: along the lab runs of eq 33's check, the claimed vector, with $\omega$
+/// measured in the lab ($|\boldsymbol\omega|$ with the sign of $\boldsymbol\omega\cdot\hat{\mathbf 3}$)
+/// at each sample, is compared component by component with the precession vector measured on the
+/// run: vertical part the heading's advance over one period divided by its time, horizontal part
+/// the triad's rate about $\hat{\mathbf 2}$, $\dot\alpha\hat{\mathbf 2}$, read from the lab
+/// state ($\vec\omega_{123} = \Omega\hat{\mathbf z} + \dot\alpha\hat{\mathbf 2}$, eq 2);
+/// relative to the measured $|\Omega_0|$. Both senses of precession.
+fn eq36(b: &Bench) -> Finding {
+    let mut w = Worst::default();
+    for run in LabSteady::all(b) {
+        run.add_steadiness(&mut w);
+        let d = &run.disk;
+        for i in run.points() {
+            let s = &run.snaps[i];
+            let claimed = -d.g / (d.a * d.k * run.omega3(i)) * Vector3::z();
+            let reference = s.motion().alpha_dot * s.e2 + run.precession * Vector3::z();
+            add_vector(b, &mut w, claimed, reference, run.precession.abs(), |c| {
+                run.at(
+                    i,
+                    &format!(
+                        "Omega_0 {} component against the lab run's precession, relative to |Omega_0|",
+                        AXES[c]
+                    ),
+                )
+            });
+        }
+    }
+    Finding::from_worst(
+        Method::IndependentModel,
+        "-g/(a k omega) z (omega measured in the lab) against the lab run's measured precession vector, relative to |Omega_0|",
+        w,
+        Tolerance::solver(b.rtol),
+        false,
+    )
+}
+
+/// Eq 37, $\vec\omega = (-\Omega_0\cos\alpha_0 + \omega_{rel})\hat{\mathbf 1} -
+/// \Omega_0\sin\alpha_0\hat{\mathbf 3} = \omega\hat{\mathbf 3}$ at $b = 0$.
+///
+/// Independent model: along the lab runs of eq 33's check, the lab's angular velocity
+/// $R\boldsymbol\omega_b$ is compared, component by component, with both claimed forms: the
+/// first with $\Omega_0$ the run's measured precession rate (heading), $\omega_{rel}$ its
+/// measured face-angle rate, $\alpha_0$ and $\hat{\mathbf 1}, \hat{\mathbf 3}$ read from the
+/// lab state at the sample; the second with $\omega$ measured ($|\boldsymbol\omega|$ with the
+/// sign of $\boldsymbol\omega\cdot\hat{\mathbf 3}$); relative to $|\boldsymbol\omega|$.
+fn eq37(b: &Bench) -> Finding {
+    let mut w = Worst::default();
+    for run in LabSteady::all(b) {
+        run.add_steadiness(&mut w);
+        let om = run.precession;
+        for i in run.points() {
+            let s = &run.snaps[i];
+            let (sa, ca) = s.alpha().sin_cos();
+            let forms = [
+                (-om * ca + run.rel_spin) * s.e1 - om * sa * s.e3,
+                run.omega3(i) * s.e3,
+            ];
+            for (f, claimed) in forms.into_iter().enumerate() {
+                add_vector(b, &mut w, claimed, s.omega, s.omega.norm(), |c| {
+                    run.at(
+                        i,
+                        &format!(
+                            "omega_{} ({} form) against R omega_b, relative to |omega|",
+                            AXES[c],
+                            ["triad + relative spin", "omega 3"][f]
+                        ),
+                    )
+                });
+            }
+        }
+    }
+    Finding::from_worst(
+        Method::IndependentModel,
+        "both forms of the angular velocity (Omega_0, omega_rel measured) against the lab's R omega_b, relative to |omega|",
+        w,
+        Tolerance::solver(b.rtol),
+        false,
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -581,6 +995,40 @@ mod tests {
             );
             assert_eq!(ok.verdict, Verdict::Holds, "eq {}: {ok:?}", e.number);
             assert_eq!(bad.verdict, Verdict::Fails, "eq {} perturbed", e.number);
+        }
+    }
+
+    /// Eqs 33-37 against the lab-frame model: hold, and fail under either sign of perturbation.
+    #[test]
+    fn section_5_holds_in_the_lab_frame_and_fails_when_perturbed() {
+        for number in 33..=37 {
+            let e = EQUATIONS.iter().find(|e| e.number == number).unwrap();
+            let ok = (e.check)(&Bench::default());
+            eprintln!(
+                "eq {number}: {} err {:.3e} tol {:.1e} at {}",
+                ok.verdict, ok.error, ok.tolerance.value, ok.at
+            );
+            assert_eq!(ok.verdict, Verdict::Holds, "eq {number}: {ok:?}");
+            for p in [1e-3, -1e-3] {
+                let bad = (e.check)(&Bench::perturbed(p));
+                eprintln!(
+                    "eq {number} under {p}: {} err {:.3e}",
+                    bad.verdict, bad.error
+                );
+                assert_eq!(bad.verdict, Verdict::Fails, "eq {number} under {p}");
+            }
+        }
+    }
+
+    /// The lab runs really are steady b = 0 motions of both senses, with the rates measured.
+    #[test]
+    fn lab_runs_are_steady() {
+        let runs = LabSteady::all(&Bench::default());
+        assert_eq!(runs.len(), KS.len() * LAB_ALPHAS.len() * 2);
+        for run in &runs {
+            assert!(run.unsteadiness < 1e-9, "{}", run.unsteadiness);
+            let m = steady_ref(&run.disk, run.alpha0, 0.0).unwrap();
+            assert!((run.precession.abs() - m.precession).abs() < 1e-9 * m.precession);
         }
     }
 }
