@@ -60,3 +60,27 @@ fn every_check_fails_when_its_claim_is_perturbed() {
         survivors.join("\n")
     );
 }
+
+#[test]
+fn every_equation_and_claim_is_checked_or_says_why_not() {
+    use rolling_disk::equations::{UNCHECKABLE_CLAIMS, UNCHECKABLE_EQUATIONS};
+    let eqs = equations();
+    for n in 1..=85u32 {
+        let checked = eqs.iter().filter(|e| e.number == n).count();
+        let excused = UNCHECKABLE_EQUATIONS.iter().any(|(m, _)| *m == n);
+        assert!(
+            (checked == 1) != excused,
+            "eq {n}: {checked} check(s), excused: {excused} (exactly one of the two)"
+        );
+    }
+    let checked = claims();
+    for c in catalogue::claims() {
+        let has = checked.iter().filter(|k| k.id == c.id).count();
+        let excused = UNCHECKABLE_CLAIMS.iter().any(|(id, _)| *id == c.id);
+        assert!(
+            (has == 1) != excused,
+            "claim {}: {has} check(s), excused: {excused}",
+            c.id
+        );
+    }
+}
