@@ -34,6 +34,30 @@ enum Command {
         #[arg(long, value_name = "FILE")]
         csv: Option<PathBuf>,
     },
+    /// Writes the reproduction report (HTML, LaTeX and/or JSON) from the built-in scenes.
+    Report {
+        /// Which formats to write.
+        #[arg(long, value_enum, default_value = "all")]
+        format: ReportFormat,
+        /// The directory to write to.
+        #[arg(long, value_name = "DIR", default_value = "report")]
+        out: PathBuf,
+        /// Integration accuracy of the checks (default: rtol 1e-12).
+        #[arg(long, value_enum)]
+        accuracy: Option<Accuracy>,
+    },
+    /// Regenerates figures alone, by the paper's names (see `--only`).
+    Figures {
+        /// Only these figures, comma-separated (default: all).
+        #[arg(long, value_name = "NAMES")]
+        only: Option<String>,
+        /// The directory to write to.
+        #[arg(long, value_name = "DIR", default_value = "figures")]
+        out: PathBuf,
+        /// File format.
+        #[arg(long, value_enum, default_value = "svg")]
+        format: FigureFormat,
+    },
     /// Lists the built-in scenes.
     Scenes,
     /// Checks the paper's equations and prose claims, each against an independent reference.
@@ -71,6 +95,20 @@ enum Command {
     Experiment(ExperimentCommand),
 }
 
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum ReportFormat {
+    Html,
+    Latex,
+    Json,
+    All,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum FigureFormat {
+    Svg,
+    Png,
+}
+
 #[derive(Subcommand)]
 enum ExperimentCommand {
     /// Simulates the light signal of a spin-down scene, as a scope CSV (time in s, signal in V).
@@ -100,6 +138,12 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Simulate { scene, csv } => simulate(&scene, csv),
         Command::Scenes => scenes(),
+        Command::Report {
+            format,
+            out,
+            accuracy,
+        } => report(format, &out, accuracy),
+        Command::Figures { only, out, format } => figures(only.as_deref(), &out, format),
         Command::Check {
             only,
             json,
@@ -204,14 +248,107 @@ fn print_summary(scene: &Scene, r: &Run) {
     );
 }
 
-fn check(only: Option<&str>, json: bool, accuracy: Option<Accuracy>) -> Result<(), String> {
-    let bench = match accuracy {
+fn bench_for(accuracy: Option<Accuracy>) -> Bench {
+    match accuracy {
         Some(a) => Bench {
             rtol: a.settings().rtol,
             ..Bench::default()
         },
         None => Bench::default(),
+    }
+}
+
+fn report(format: ReportFormat, out: &Path, accuracy: Option<Accuracy>) -> Result<(), String> {
+    use rolling_disk::report::{build::build, render};
+    let bench = bench_for(accuracy);
+    let status = |s: &str| eprintln!("report: {s}...");
+    let (report, figures) = build(&bench, &status)?;
+    let formats = match format {
+        ReportFormat::Html => vec![render::Format::Html],
+        ReportFormat::Latex => vec![render::Format::Latex],
+        ReportFormat::Json => vec![render::Format::Json],
+        ReportFormat::All => vec![
+            render::Format::Html,
+            render::Format::Latex,
+            render::Format::Json,
+        ],
     };
+    status("writing");
+    let written = render::write(&report, &figures, out, &formats)?;
+    let t = &report.summary.equations;
+    println!(
+        "{} equations checked: {} hold, {} hold approximately, {} definitions, {} fail; {} claims fail",
+        t.holds + t.approximately + t.definitions + t.fails + t.not_run,
+        t.holds,
+        t.approximately,
+        t.definitions,
+        t.fails,
+        report.summary.claims.fails
+    );
+    for p in written
+        .iter()
+        .filter(|p| p.extension().is_some_and(|e| e != "png"))
+    {
+        println!("wrote {}", p.display());
+    }
+    let pngs = written
+        .iter()
+        .filter(|p| p.extension().is_some_and(|e| e == "png"))
+        .count();
+    if pngs > 0 {
+        println!(
+            "wrote {pngs} figures under {}",
+            out.join("figures").display()
+        );
+    }
+    Ok(())
+}
+
+fn figures(only: Option<&str>, out: &Path, format: FigureFormat) -> Result<(), String> {
+    let all = rolling_disk::figures::all()?;
+    let names: Vec<&str> = all.iter().map(|f| f.name).collect();
+    let wanted: Vec<&str> = match only {
+        Some(list) => list
+            .split(',')
+            .map(str::trim)
+            .filter(|s| !s.is_empty())
+            .collect(),
+        None => names.clone(),
+    };
+    for w in &wanted {
+        if !names.contains(w) {
+            return Err(format!(
+                "--only: no figure is called {w}; the figures are: {}",
+                names.join(", ")
+            ));
+        }
+    }
+    std::fs::create_dir_all(out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
+    for f in all.iter().filter(|f| wanted.contains(&f.name)) {
+        let path = match format {
+            FigureFormat::Svg => {
+                let path = out.join(format!("{}.svg", f.name));
+                let svg = f.drawing.to_svg(760, 480)?;
+                write_atomically(&path, svg.as_bytes())
+                    .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+                path
+            }
+            FigureFormat::Png => {
+                let path = out.join(format!("{}.png", f.name));
+                let tmp = out.join(format!(".{}.{}.png", f.name, std::process::id()));
+                f.drawing.to_png(&tmp)?;
+                std::fs::rename(&tmp, &path)
+                    .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+                path
+            }
+        };
+        println!("wrote {}", path.display());
+    }
+    Ok(())
+}
+
+fn check(only: Option<&str>, json: bool, accuracy: Option<Accuracy>) -> Result<(), String> {
+    let bench = bench_for(accuracy);
     let started = std::time::Instant::now();
     let selection = match only {
         Some(text) => Selection::parse(text)?,

@@ -1,0 +1,856 @@
+//! Charts as plain data, and one drawing routine for every backend: the same code makes the SVG
+//! of the HTML report and the print-resolution PNG of the LaTeX report.
+//!
+//! A [`Chart`] is axes (linear or logarithmic, automatic or fixed ranges), [`Series`] drawn in one
+//! of several [`Style`]s, reference lines across the plot ([`Mark`]) and text placed in data
+//! coordinates ([`Note`]). Build one with a struct literal (`..Default::default()` for what you do
+//! not set) or with [`Chart::new`] and its builder methods.
+
+use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+use serde::Serialize;
+use std::sync::Once;
+
+/// How a series is drawn.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum Style {
+    /// A solid line.
+    Line,
+    /// A dashed line (predictions, references).
+    Dashed,
+    /// A dotted line (secondary references).
+    Dotted,
+    /// Filled circles only (measurements).
+    Points,
+    /// Open squares.
+    Squares,
+    /// Filled triangles.
+    Triangles,
+    /// Crosses (x).
+    Crosses,
+    /// Filled rectangular cells centred on the points, as large as the smallest spacing of the
+    /// points in x and in y (a map on a regular grid), drawn translucent.
+    Cells,
+}
+
+/// One curve or point set.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Series {
+    /// Legend text; empty for no legend entry.
+    pub label: String,
+    /// The points.
+    pub points: Vec<(f64, f64)>,
+    /// How it is drawn.
+    pub style: Style,
+}
+
+impl Series {
+    /// A series from a label, points and a style, coloured by its position in the chart.
+    pub fn new(label: impl Into<String>, points: Vec<(f64, f64)>, style: Style) -> Self {
+        Self {
+            label: label.into(),
+            points,
+            style,
+        }
+    }
+}
+
+/// Where the legend goes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
+pub enum Legend {
+    /// Upper right corner (the default).
+    #[default]
+    UpperRight,
+    /// Upper left corner.
+    UpperLeft,
+    /// Lower right corner.
+    LowerRight,
+    /// Lower left corner.
+    LowerLeft,
+    /// Middle of the right side.
+    MiddleRight,
+    /// No legend.
+    Hidden,
+}
+
+/// Which axis a [`Mark`] is a value of.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum Axis {
+    /// A vertical line at an x value.
+    X,
+    /// A horizontal line at a y value.
+    Y,
+}
+
+/// A reference line across the whole plot, with a short label at its end.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Mark {
+    /// Vertical (`X`) or horizontal (`Y`).
+    pub axis: Axis,
+    /// Where, in data units.
+    pub at: f64,
+    /// Its label (may be empty).
+    pub label: String,
+}
+
+/// A text placed at a point of the plot, in data coordinates (its upper left corner).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Note {
+    /// x (data units).
+    pub x: f64,
+    /// y (data units).
+    pub y: f64,
+    /// The text.
+    pub text: String,
+}
+
+/// A chart: axes with quantities and units, linear or logarithmic, and series. What else a
+/// figure needs (fixed ranges, colours, reference lines, text) is in [`Options`]; a [`Plot`] is
+/// the two together.
+#[derive(Debug, Clone, PartialEq, Default, Serialize)]
+pub struct Chart {
+    /// Title drawn above the plot.
+    pub title: String,
+    /// x-axis label: quantity and unit.
+    pub x_label: String,
+    /// y-axis label: quantity and unit.
+    pub y_label: String,
+    /// Logarithmic x axis.
+    pub x_log: bool,
+    /// Logarithmic y axis.
+    pub y_log: bool,
+    /// The series, drawn in order.
+    pub series: Vec<Series>,
+}
+
+/// How a chart is drawn beyond its series: ranges, colours, reference lines, text, legend.
+#[derive(Debug, Clone, PartialEq, Default, Serialize)]
+pub struct Options {
+    /// A fixed x range; `None` fits the data (5 % margins).
+    pub x_range: Option<(f64, f64)>,
+    /// A fixed y range; `None` fits the data (5 % margins).
+    pub y_range: Option<(f64, f64)>,
+    /// Where the legend goes.
+    pub legend: Legend,
+    /// Reference lines, drawn under the series.
+    pub marks: Vec<Mark>,
+    /// Text in the plot.
+    pub notes: Vec<Note>,
+    /// Colour of series `i` (RGB); missing or `None` takes the palette's colour `i`.
+    pub colors: Vec<Option<[u8; 3]>>,
+    /// One unit as long on both (linear) axes: a circle looks round. One range is widened.
+    pub equal_aspect: bool,
+}
+
+/// A chart with its [`Options`]: what the figures build.
+#[derive(Debug, Clone, PartialEq, Default, Serialize)]
+pub struct Plot {
+    /// The axes and series.
+    pub chart: Chart,
+    /// Everything else.
+    pub options: Options,
+}
+
+impl Plot {
+    /// An empty plot with a title and axis labels (linear axes, automatic ranges).
+    pub fn new(
+        title: impl Into<String>,
+        x_label: impl Into<String>,
+        y_label: impl Into<String>,
+    ) -> Self {
+        Self {
+            chart: Chart {
+                title: title.into(),
+                x_label: x_label.into(),
+                y_label: y_label.into(),
+                ..Chart::default()
+            },
+            options: Options::default(),
+        }
+    }
+
+    /// Logarithmic axes.
+    pub fn log(mut self, x: bool, y: bool) -> Self {
+        self.chart.x_log = x;
+        self.chart.y_log = y;
+        self
+    }
+
+    /// Adds a series in the palette's colour for its position.
+    pub fn with(mut self, s: Series) -> Self {
+        self.chart.series.push(s);
+        self
+    }
+
+    /// Adds a series in colour `rgb`.
+    pub fn with_colored(mut self, s: Series, rgb: [u8; 3]) -> Self {
+        let i = self.chart.series.len();
+        self.chart.series.push(s);
+        if self.options.colors.len() <= i {
+            self.options.colors.resize(i + 1, None);
+        }
+        self.options.colors[i] = Some(rgb);
+        self
+    }
+
+    /// Fixes the x range.
+    pub fn x_range(mut self, lo: f64, hi: f64) -> Self {
+        self.options.x_range = Some((lo, hi));
+        self
+    }
+
+    /// Fixes the y range.
+    pub fn y_range(mut self, lo: f64, hi: f64) -> Self {
+        self.options.y_range = Some((lo, hi));
+        self
+    }
+
+    /// Makes a unit as long on both axes.
+    pub fn equal_aspect(mut self) -> Self {
+        self.options.equal_aspect = true;
+        self
+    }
+
+    /// Places the legend.
+    pub fn legend_at(mut self, legend: Legend) -> Self {
+        self.options.legend = legend;
+        self
+    }
+
+    /// Adds a reference line.
+    pub fn mark(mut self, axis: Axis, at: f64, label: impl Into<String>) -> Self {
+        self.options.marks.push(Mark {
+            axis,
+            at,
+            label: label.into(),
+        });
+        self
+    }
+
+    /// Adds a text at (x, y), data coordinates (its upper left corner; lines split at `\n`).
+    pub fn note(mut self, x: f64, y: f64, text: impl Into<String>) -> Self {
+        self.options.notes.push(Note {
+            x,
+            y,
+            text: text.into(),
+        });
+        self
+    }
+
+    /// Draws the plot on any plotters backend (see [`Chart::draw`]).
+    pub fn draw<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, plotters::coord::Shift>,
+        scale: f64,
+    ) -> Result<(), DrawError> {
+        self.chart.draw_with(root, scale, &self.options)
+    }
+
+    /// The plot as an SVG document, `width` x `height` px.
+    pub fn to_svg(&self, width: u32, height: u32) -> Result<String, DrawError> {
+        let mut out = String::new();
+        {
+            let root = SVGBackend::with_string(&mut out, (width, height)).into_drawing_area();
+            self.draw(&root, 1.0)?;
+        }
+        Ok(out)
+    }
+
+    /// The plot as a PNG file at `path`, 6 x 4 inches at 300 dpi.
+    pub fn to_png(&self, path: &std::path::Path) -> Result<(), DrawError> {
+        let root = BitMapBackend::new(path, (1800, 1200)).into_drawing_area();
+        self.draw(&root, 3.0)
+    }
+}
+
+/// The Okabe-Ito palette: distinguishable with colour-vision deficiencies and in grey print.
+pub const PALETTE: [[u8; 3]; 7] = [
+    [0, 114, 178],
+    [213, 94, 0],
+    [0, 158, 115],
+    [204, 121, 167],
+    [230, 159, 0],
+    [86, 180, 233],
+    [0, 0, 0],
+];
+
+static FONT: Once = Once::new();
+
+/// Registers the font shipped with the crate (DejaVu Sans) as plotters' "sans-serif", so that
+/// figures never depend on the fonts of the machine and are identical everywhere.
+pub(crate) fn register_font() {
+    FONT.call_once(|| {
+        let bytes: &'static [u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
+        // The font is part of the crate; failing to parse it is a build defect caught by the tests.
+        let _ = plotters::style::register_font("sans-serif", FontStyle::Normal, bytes);
+    });
+}
+
+/// Errors drawing a chart.
+pub type DrawError = String;
+
+/// A tick label: plain decimals between 1e-3 and 1e4, otherwise `2e-5` style; at most four
+/// significant digits, no trailing zeros.
+pub fn tick_label(v: f64) -> String {
+    if !v.is_finite() {
+        return String::new();
+    }
+    let a = v.abs();
+    if a < 1e-12 * 1e-3 || a == 0.0 {
+        return "0".into();
+    }
+    if !(1e-3..1e4).contains(&a) {
+        let s = format!("{v:.3e}");
+        let (m, e) = s.split_once('e').unwrap_or((&s, "0"));
+        let m = trim_zeros(m);
+        return format!("{m}e{e}");
+    }
+    let decimals = (3 - a.log10().floor() as i32).clamp(0, 8) as usize;
+    trim_zeros(&format!("{v:.decimals$}"))
+}
+
+fn trim_zeros(s: &str) -> String {
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s.to_string()
+    }
+}
+
+fn bounds(values: impl Iterator<Item = f64>, log: bool) -> (f64, f64) {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for v in values.filter(|v| v.is_finite() && (!log || *v > 0.0)) {
+        lo = lo.min(v);
+        hi = hi.max(v);
+    }
+    if !lo.is_finite() {
+        return if log { (0.1, 10.0) } else { (-1.0, 1.0) };
+    }
+    if log {
+        let (l, h) = (lo.log10(), hi.log10());
+        let pad = ((h - l) * 0.05).max(0.05);
+        (10f64.powf(l - pad), 10f64.powf(h + pad))
+    } else {
+        let span = hi - lo;
+        let pad = if span > 0.0 {
+            0.05 * span
+        } else {
+            0.5 * lo.abs().max(1e-12)
+        };
+        (lo - pad, hi + pad)
+    }
+}
+
+/// The smallest positive spacing between distinct sorted values (the size of a grid's cell).
+fn grid_step(mut v: Vec<f64>) -> f64 {
+    v.retain(|x| x.is_finite());
+    v.sort_by(f64::total_cmp);
+    let span = v.last().copied().unwrap_or(0.0) - v.first().copied().unwrap_or(0.0);
+    v.windows(2)
+        .map(|w| w[1] - w[0])
+        .filter(|d| *d > 1e-12 * span.abs().max(1e-300))
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// Cells in columns: runs of cells with the same x and consecutive y (spacing `2 hy`) merged
+/// into (x, first y, last y), so that a map draws as few rectangles as it has runs.
+fn merge_cells(mut pts: Vec<(f64, f64)>, hy: f64) -> Vec<(f64, f64, f64)> {
+    pts.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    let mut out: Vec<(f64, f64, f64)> = Vec::new();
+    for (x, y) in pts {
+        match out.last_mut() {
+            Some(last) if last.0 == x && (y - last.2) <= 2.0 * hy * 1.001 => last.2 = y,
+            _ => out.push((x, y, y)),
+        }
+    }
+    out
+}
+
+fn rgb(c: [u8; 3]) -> RGBColor {
+    RGBColor(c[0], c[1], c[2])
+}
+
+fn checked(r: (f64, f64), log: bool, what: &str) -> Result<(f64, f64), DrawError> {
+    let ok = r.0.is_finite() && r.1.is_finite() && r.1 > r.0 && (!log || r.0 > 0.0);
+    if ok {
+        Ok(r)
+    } else {
+        Err(format!(
+            "the {what} range {:?} cannot be drawn (it must be finite, increasing, and positive on a log axis)",
+            r
+        ))
+    }
+}
+
+impl Chart {
+    fn x_bounds(&self, o: &Options) -> (f64, f64) {
+        o.x_range.unwrap_or_else(|| {
+            bounds(
+                self.series
+                    .iter()
+                    .flat_map(|s| s.points.iter().map(|p| p.0)),
+                self.x_log,
+            )
+        })
+    }
+
+    fn y_bounds(&self, o: &Options) -> (f64, f64) {
+        o.y_range.unwrap_or_else(|| {
+            bounds(
+                self.series
+                    .iter()
+                    .flat_map(|s| s.points.iter().map(|p| p.1)),
+                self.y_log,
+            )
+        })
+    }
+
+    /// Draws the chart on any plotters backend; `scale` multiplies font sizes and line widths
+    /// (1 for the screen's SVG, about 3 for a 300-dpi PNG).
+    pub fn draw<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, plotters::coord::Shift>,
+        scale: f64,
+    ) -> Result<(), DrawError> {
+        self.draw_with(root, scale, &Options::default())
+    }
+
+    /// Draws the chart with `options` on any plotters backend.
+    pub fn draw_with<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, plotters::coord::Shift>,
+        scale: f64,
+        o: &Options,
+    ) -> Result<(), DrawError> {
+        register_font();
+        root.fill(&WHITE).map_err(|e| e.to_string())?;
+        let (mut x0, mut x1) = checked(self.x_bounds(o), self.x_log, "x")?;
+        let (mut y0, mut y1) = checked(self.y_bounds(o), self.y_log, "y")?;
+        // plotters labels a short log axis only from its first power of ten up: an automatic
+        // range that starts well below one is extended down to the power below.
+        let extend = |lo: f64, hi: f64, log: bool, fixed: bool| {
+            let next = 10f64.powf(lo.log10().ceil());
+            if log && !fixed && (hi / lo).log10() < 1.3 && next / lo > 2.0 {
+                10f64.powf(lo.log10().floor())
+            } else {
+                lo
+            }
+        };
+        x0 = extend(x0, x1, self.x_log, o.x_range.is_some());
+        y0 = extend(y0, y1, self.y_log, o.y_range.is_some());
+        if o.equal_aspect && !self.x_log && !self.y_log {
+            // Widen one range so that a unit is as long on both axes.
+            let (pw, ph) = self.plot_area(root.dim_in_pixel(), scale)?;
+            let (sx, sy) = ((x1 - x0) / pw, (y1 - y0) / ph);
+            if sx > sy {
+                let (c, h) = (0.5 * (y0 + y1), 0.5 * sx * ph);
+                (y0, y1) = (c - h, c + h);
+            } else {
+                let (c, h) = (0.5 * (x0 + x1), 0.5 * sy * pw);
+                (x0, x1) = (c - h, c + h);
+            }
+        }
+        match (self.x_log, self.y_log) {
+            (false, false) => self.draw_in(root, scale, o, x0..x1, y0..y1, (x0, x1), (y0, y1)),
+            (true, false) => self.draw_in(
+                root,
+                scale,
+                o,
+                (x0..x1).log_scale(),
+                y0..y1,
+                (x0, x1),
+                (y0, y1),
+            ),
+            (false, true) => self.draw_in(
+                root,
+                scale,
+                o,
+                x0..x1,
+                (y0..y1).log_scale(),
+                (x0, x1),
+                (y0, y1),
+            ),
+            (true, true) => self.draw_in(
+                root,
+                scale,
+                o,
+                (x0..x1).log_scale(),
+                (y0..y1).log_scale(),
+                (x0, x1),
+                (y0, y1),
+            ),
+        }
+    }
+
+    /// The chart's frame: title, margins and label areas.
+    fn builder<'a, 'b, DB: DrawingBackend>(
+        &self,
+        root: &'a DrawingArea<DB, plotters::coord::Shift>,
+        scale: f64,
+    ) -> ChartBuilder<'a, 'b, DB> {
+        let px = |v: f64| (v * scale).round() as u32;
+        let mut b = ChartBuilder::on(root);
+        b.caption(&self.title, ("sans-serif", 17.0 * scale).into_font())
+            .margin(px(12.0))
+            .margin_right(px(22.0))
+            .x_label_area_size(px(48.0))
+            .y_label_area_size(px(72.0));
+        b
+    }
+
+    /// The size in pixels of the plotting area inside a drawing of `dim` pixels, measured on a
+    /// scratch canvas (the layout depends only on the size, the scale and the font).
+    fn plot_area(&self, dim: (u32, u32), scale: f64) -> Result<(f64, f64), DrawError> {
+        let mut scratch = String::new();
+        let root = SVGBackend::with_string(&mut scratch, dim).into_drawing_area();
+        let chart = self
+            .builder(&root, scale)
+            .build_cartesian_2d(0.0..1.0, 0.0..1.0)
+            .map_err(|e| e.to_string())?;
+        let (w, h) = chart.plotting_area().dim_in_pixel();
+        Ok((w.max(1) as f64, h.max(1) as f64))
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn draw_in<DB, X, Y>(
+        &self,
+        root: &DrawingArea<DB, plotters::coord::Shift>,
+        scale: f64,
+        o: &Options,
+        x: X,
+        y: Y,
+        xr: (f64, f64),
+        yr: (f64, f64),
+    ) -> Result<(), DrawError>
+    where
+        DB: DrawingBackend,
+        X: AsRangedCoord<Value = f64>,
+        Y: AsRangedCoord<Value = f64>,
+        X::CoordDescType: ValueFormatter<f64>,
+        Y::CoordDescType: ValueFormatter<f64>,
+    {
+        let px = |v: f64| (v * scale).round() as u32;
+        let font = |size: f64| ("sans-serif", size * scale).into_font();
+        let mut chart = self
+            .builder(root, scale)
+            .build_cartesian_2d(x, y)
+            .map_err(|e| e.to_string())?;
+        // As many tick labels as fit: about one per 60 px across, one per 40 px up.
+        let (pw, ph) = chart.plotting_area().dim_in_pixel();
+        let fit = |len: u32, per: f64| ((len as f64 / (per * scale)) as usize).clamp(4, 8);
+        let (nx, ny) = (fit(pw, 60.0), fit(ph, 40.0));
+        // A log axis over less than about a decade and a half gets ticks at 1..9 times the
+        // powers of ten, labelled at 1, 2, 3 and 5 only; plain powers of ten otherwise.
+        let short = |r: (f64, f64), log: bool| log && (r.1 / r.0).log10() < 1.3;
+        let (x_short, y_short) = (short(xr, self.x_log), short(yr, self.y_log));
+        let log_fmt = |v: &f64| {
+            let m = *v / 10f64.powf(v.log10().floor());
+            if [1.0, 2.0, 3.0, 5.0].iter().any(|k| (m - k).abs() < 1e-6) {
+                tick_label(*v)
+            } else {
+                String::new()
+            }
+        };
+        let plain = |v: &f64| tick_label(*v);
+        let x_fmt: &dyn Fn(&f64) -> String = if x_short { &log_fmt } else { &plain };
+        let y_fmt: &dyn Fn(&f64) -> String = if y_short { &log_fmt } else { &plain };
+        chart
+            .configure_mesh()
+            .x_desc(&self.x_label)
+            .y_desc(&self.y_label)
+            .label_style(font(12.0))
+            .axis_desc_style(font(14.0))
+            .light_line_style(RGBColor(235, 235, 235))
+            .bold_line_style(RGBColor(215, 215, 215))
+            .x_labels(if x_short { 10 } else { nx })
+            .y_labels(if y_short { 10 } else { ny })
+            .x_label_formatter(x_fmt)
+            .y_label_formatter(y_fmt)
+            .draw()
+            .map_err(|e| e.to_string())?;
+        let inside = |(a, b): (f64, f64)| {
+            a.is_finite() && b.is_finite() && (!self.x_log || a > 0.0) && (!self.y_log || b > 0.0)
+        };
+        let width = px(1.6).max(1);
+        let grey = RGBColor(110, 110, 110);
+        // Reference lines first, under the data.
+        for m in &o.marks {
+            if !m.at.is_finite() {
+                continue;
+            }
+            let pts = match m.axis {
+                Axis::X => vec![(m.at, yr.0), (m.at, yr.1)],
+                Axis::Y => vec![(xr.0, m.at), (xr.1, m.at)],
+            };
+            chart
+                .draw_series(DashedLineSeries::new(
+                    pts,
+                    px(4.0),
+                    px(3.0),
+                    grey.stroke_width(px(1.2).max(1)),
+                ))
+                .map_err(|e| e.to_string())?;
+            if !m.label.is_empty() {
+                // The label just inside the plot, at the top of a vertical line or the right end
+                // of a horizontal one.
+                let at = match m.axis {
+                    Axis::X => (m.at, yr.1),
+                    Axis::Y => (xr.0, m.at),
+                };
+                // A vertical line in the right part of the plot has its label on its left.
+                let frac = if self.x_log {
+                    (m.at.ln() - xr.0.ln()) / (xr.1.ln() - xr.0.ln())
+                } else {
+                    (m.at - xr.0) / (xr.1 - xr.0)
+                };
+                let left = m.axis == Axis::X && frac > 0.6;
+                let (dx, dy) = match m.axis {
+                    Axis::X if left => (-(px(4.0) as i32), px(4.0) as i32),
+                    Axis::X => (px(4.0) as i32, px(4.0) as i32),
+                    Axis::Y => (px(6.0) as i32, -(px(16.0) as i32)),
+                };
+                let hpos = if left { HPos::Right } else { HPos::Left };
+                chart
+                    .draw_series(std::iter::once(
+                        EmptyElement::at(at)
+                            + Text::new(
+                                m.label.clone(),
+                                (dx, dy),
+                                font(11.0).color(&grey).pos(Pos::new(hpos, VPos::Top)),
+                            ),
+                    ))
+                    .map_err(|e| e.to_string())?;
+            }
+        }
+        for (i, s) in self.series.iter().enumerate() {
+            let color = rgb(o
+                .colors
+                .get(i)
+                .copied()
+                .flatten()
+                .unwrap_or(PALETTE[i % PALETTE.len()]));
+            let pts: Vec<(f64, f64)> = s.points.iter().copied().filter(|p| inside(*p)).collect();
+            let r = px(2.6).max(1) as i32;
+            let lw = px(20.0) as i32;
+            let anno = match s.style {
+                // plotters turns a thick polyline into one polygon whose inner corners spike
+                // at sharp reversals (a min/max envelope); at print scale each segment is drawn
+                // alone, with round joins.
+                Style::Line if scale >= 1.5 && pts.len() > 2 => {
+                    let joins: Vec<(f64, f64)> = pts[1..pts.len() - 1].to_vec();
+                    let half = (width / 2).max(1);
+                    chart
+                        .draw_series(
+                            joins
+                                .into_iter()
+                                .map(|p| Circle::new(p, half, color.filled())),
+                        )
+                        .map_err(|e| e.to_string())?;
+                    chart
+                        .draw_series(
+                            pts.windows(2).map(|w| {
+                                PathElement::new(vec![w[0], w[1]], color.stroke_width(width))
+                            }),
+                        )
+                        .map_err(|e| e.to_string())?
+                }
+                Style::Line => chart
+                    .draw_series(LineSeries::new(pts, color.stroke_width(width)))
+                    .map_err(|e| e.to_string())?,
+                Style::Dashed => chart
+                    .draw_series(DashedLineSeries::new(
+                        pts,
+                        px(6.0),
+                        px(4.0),
+                        color.stroke_width(width),
+                    ))
+                    .map_err(|e| e.to_string())?,
+                Style::Dotted => chart
+                    .draw_series(DashedLineSeries::new(
+                        pts,
+                        px(1.6),
+                        px(3.0),
+                        color.stroke_width(width),
+                    ))
+                    .map_err(|e| e.to_string())?,
+                Style::Points => chart
+                    .draw_series(pts.into_iter().map(|p| Circle::new(p, r, color.filled())))
+                    .map_err(|e| e.to_string())?,
+                Style::Squares => chart
+                    .draw_series(pts.into_iter().map(|p| {
+                        EmptyElement::at(p)
+                            + Rectangle::new([(-r, -r), (r, r)], color.stroke_width(px(1.3).max(1)))
+                    }))
+                    .map_err(|e| e.to_string())?,
+                Style::Triangles => chart
+                    .draw_series(pts.into_iter().map(|p| {
+                        EmptyElement::at(p)
+                            + Polygon::new(
+                                vec![(0, -r - 1), (r + 1, r), (-r - 1, r)],
+                                color.filled(),
+                            )
+                    }))
+                    .map_err(|e| e.to_string())?,
+                Style::Crosses => chart
+                    .draw_series(pts.into_iter().map(|p| {
+                        EmptyElement::at(p)
+                            + PathElement::new(
+                                vec![(-r, -r), (r, r)],
+                                color.stroke_width(px(1.3).max(1)),
+                            )
+                            + PathElement::new(
+                                vec![(-r, r), (r, -r)],
+                                color.stroke_width(px(1.3).max(1)),
+                            )
+                    }))
+                    .map_err(|e| e.to_string())?,
+                Style::Cells => {
+                    let hx = 0.5 * grid_step(pts.iter().map(|p| p.0).collect());
+                    let hy = 0.5 * grid_step(pts.iter().map(|p| p.1).collect());
+                    let (hx, hy) = (
+                        if hx.is_finite() { hx } else { 0.0 },
+                        if hy.is_finite() { hy } else { 0.0 },
+                    );
+                    let fill = color.mix(0.45).filled();
+                    chart
+                        .draw_series(merge_cells(pts, hy).into_iter().map(|(a, b0, b1)| {
+                            Rectangle::new([(a - hx, b0 - hy), (a + hx, b1 + hy)], fill)
+                        }))
+                        .map_err(|e| e.to_string())?
+                }
+            };
+            if s.label.is_empty() {
+                continue;
+            }
+            let glyph = Glyph::of(s.style, lw, r);
+            let stroke = color.stroke_width(width);
+            let fill = if s.style == Style::Cells {
+                color.mix(0.45).filled()
+            } else {
+                color.filled()
+            };
+            anno.label(s.label.clone()).legend(move |(x, y)| {
+                let p = |i: usize| PathElement::new(glyph.paths[i].clone(), stroke);
+                EmptyElement::at((x, y))
+                    + p(0)
+                    + p(1)
+                    + p(2)
+                    + p(3)
+                    + Polygon::new(glyph.fill.clone(), fill)
+            });
+        }
+        for n in &o.notes {
+            if !inside((n.x, n.y)) {
+                continue;
+            }
+            let lines: Vec<String> = n.text.lines().map(str::to_string).collect();
+            let step = px(14.0) as i32;
+            chart
+                .draw_series(lines.into_iter().enumerate().map(|(i, l)| {
+                    EmptyElement::at((n.x, n.y))
+                        + Text::new(l, (0, i as i32 * step), font(11.5).color(&BLACK))
+                }))
+                .map_err(|e| e.to_string())?;
+        }
+        let labelled = self.series.iter().any(|s| !s.label.is_empty());
+        let position = match o.legend {
+            Legend::UpperRight => Some(SeriesLabelPosition::UpperRight),
+            Legend::UpperLeft => Some(SeriesLabelPosition::UpperLeft),
+            Legend::LowerRight => Some(SeriesLabelPosition::LowerRight),
+            Legend::LowerLeft => Some(SeriesLabelPosition::LowerLeft),
+            Legend::MiddleRight => Some(SeriesLabelPosition::MiddleRight),
+            Legend::Hidden => None,
+        };
+        if let (true, Some(position)) = (labelled, position) {
+            chart
+                .configure_series_labels()
+                .legend_area_size(px(28.0))
+                .margin(px(8.0))
+                .label_font(font(12.0))
+                .background_style(WHITE.mix(0.88))
+                .border_style(RGBColor(180, 180, 180))
+                .position(position)
+                .draw()
+                .map_err(|e| e.to_string())?;
+        }
+        root.present().map_err(|e| e.to_string())
+    }
+
+    /// The chart as an SVG document (for the HTML report), `width` x `height` px.
+    pub fn to_svg(&self, width: u32, height: u32) -> Result<String, DrawError> {
+        let mut out = String::new();
+        {
+            let root = SVGBackend::with_string(&mut out, (width, height)).into_drawing_area();
+            self.draw(&root, 1.0)?;
+        }
+        Ok(out)
+    }
+
+    /// The chart as a PNG file at `path` (for the LaTeX report), 6 x 4 inches at 300 dpi.
+    pub fn to_png(&self, path: &std::path::Path) -> Result<(), DrawError> {
+        let root = BitMapBackend::new(path, (1800, 1200)).into_drawing_area();
+        self.draw(&root, 3.0)
+    }
+}
+
+/// A legend glyph in pixels relative to the legend's anchor: four polylines (unused ones empty)
+/// and one filled polygon (possibly empty), one fixed shape for every style.
+#[derive(Clone)]
+struct Glyph {
+    paths: [Vec<(i32, i32)>; 4],
+    fill: Vec<(i32, i32)>,
+}
+
+impl Glyph {
+    /// The glyph of `style`, `len` px long, markers of radius `r` px.
+    fn of(style: Style, len: i32, r: i32) -> Self {
+        let c = len / 2;
+        let mut paths: [Vec<(i32, i32)>; 4] = Default::default();
+        let mut fill = Vec::new();
+        let seg = |a: i32, b: i32| vec![(a, 0), (b, 0)];
+        match style {
+            Style::Line => paths[0] = seg(0, len),
+            Style::Dashed => {
+                let d = len / 4;
+                paths[0] = seg(0, d);
+                paths[1] = seg(3 * d / 2, 5 * d / 2);
+                paths[2] = seg(3 * d, len);
+            }
+            Style::Dotted => {
+                let d = len / 7;
+                for (i, p) in paths.iter_mut().enumerate() {
+                    let a = 2 * d * i as i32;
+                    *p = seg(a, a + d);
+                }
+            }
+            Style::Points => {
+                fill = (0..12)
+                    .map(|i| {
+                        let t = std::f64::consts::TAU * i as f64 / 12.0;
+                        (
+                            c + (r as f64 * t.cos()).round() as i32,
+                            (r as f64 * t.sin()).round() as i32,
+                        )
+                    })
+                    .collect()
+            }
+            Style::Squares => {
+                paths[0] = vec![
+                    (c - r, -r),
+                    (c + r, -r),
+                    (c + r, r),
+                    (c - r, r),
+                    (c - r, -r),
+                ]
+            }
+            Style::Triangles => fill = vec![(c, -r - 1), (c + r + 1, r), (c - r - 1, r)],
+            Style::Crosses => {
+                paths[0] = vec![(c - r, -r), (c + r, r)];
+                paths[1] = vec![(c - r, r), (c + r, -r)];
+            }
+            Style::Cells => fill = vec![(0, -r - 1), (len, -r - 1), (len, r + 1), (0, r + 1)],
+        }
+        Self { paths, fill }
+    }
+}

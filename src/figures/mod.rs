@@ -1,0 +1,381 @@
+//! Figures: the paper's (regenerated from the models) and new ones, each a function that returns
+//! a [`Figure`] as data. The report renders them as inline SVG (HTML) or PNG (LaTeX).
+//!
+//! | name | what | file |
+//! |---|---|---|
+//! | `fig1` | the geometry, from the triad and a steady motion (eqs 1-9, 28-29) | `geometry.rs` |
+//! | `tek04`, `tek01`, `tek02` | the synthetic light signal: 10 s, last 0.25 s, last 0.06 s | `experiment.rs` |
+//! | `Omega` | $\Omega_i$ against $t$ | `experiment.rs` |
+//! | `tek726`, `tek728` | $1/\Omega$ against $t_0 - t$ for two $t_0$, lines of eq 84 | `experiment.rs` |
+//! | `Odot` | $d\Omega/dt$ against $\Omega$, lines of eq 85 | `experiment.rs` |
+//! | `stability-map` | where eq 54 gives $\varpi^2 < 0$, against the paper's boundary | `stability.rs` |
+//! | `frequency` | measured against predicted $\varpi/\Omega_0$ (eqs 54, 55, 71) | `frequency.rs` |
+//! | `energy-drift` | energy drift of each method on the benchmark scene | `energy.rs` |
+//! | `path` | the centre of mass in the plane | `path.rs` |
+//! | `spin-down-alpha` | $\alpha$ against $t_0 - t$, eq 78 with 2/5 and with 2/3 | `spin_down.rs` |
+//! | `lab-frame-difference` | eqs 23-25 against the lab-frame model | `lab_frame.rs` |
+//!
+//! Everything is deterministic: the same build gives the same bytes.
+
+pub mod chart;
+pub mod energy;
+pub mod experiment;
+pub mod frequency;
+pub mod geometry;
+pub mod lab_frame;
+pub mod path;
+pub mod spin_down;
+pub mod stability;
+
+pub use chart::{Axis, Chart, Legend, Mark, Note, Options, Plot, Series, Style};
+pub use geometry::Geometry;
+
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+use serde::Serialize;
+
+/// A figure of the report.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Figure {
+    /// Its name: the paper's label for the paper's figures (`fig1`, `tek04`, ...), a short
+    /// slug for new ones. Also the file name of its PNG.
+    pub name: &'static str,
+    /// A short title.
+    pub title: String,
+    /// What it shows and what to look for.
+    pub caption: String,
+    /// What to draw.
+    pub drawing: Drawing,
+}
+
+/// Side-by-side plots under one title.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Panels {
+    /// The overall title.
+    pub title: String,
+    /// The plots, left to right.
+    pub plots: Vec<Plot>,
+}
+
+/// What a figure draws.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub enum Drawing {
+    /// A chart with default options.
+    Chart(Chart),
+    /// A chart with options (ranges, colours, reference lines, notes).
+    Plot(Plot),
+    /// Several plots side by side.
+    Panels(Panels),
+    /// Figure 1's geometry.
+    Geometry(Geometry),
+}
+
+impl Drawing {
+    /// Draws on any plotters backend; `scale` multiplies fonts and line widths.
+    pub fn draw<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, plotters::coord::Shift>,
+        scale: f64,
+    ) -> Result<(), String> {
+        match self {
+            Drawing::Chart(c) => c.draw(root, scale),
+            Drawing::Plot(p) => p.draw(root, scale),
+            Drawing::Geometry(g) => g.draw(root, scale),
+            Drawing::Panels(p) => {
+                chart::register_font();
+                root.fill(&WHITE).map_err(|e| e.to_string())?;
+                let band = (36.0 * scale).round() as u32;
+                let (top, inner) = root.split_vertically(band);
+                let (w, _) = top.dim_in_pixel();
+                top.draw(&Text::new(
+                    p.title.clone(),
+                    ((w / 2) as i32, (band / 2) as i32),
+                    ("sans-serif", 17.0 * scale)
+                        .into_font()
+                        .color(&BLACK)
+                        .pos(Pos::new(HPos::Center, VPos::Center)),
+                ))
+                .map_err(|e| e.to_string())?;
+                let n = p.plots.len().max(1);
+                for (area, plot) in inner.split_evenly((1, n)).iter().zip(&p.plots) {
+                    plot.draw(area, scale)?;
+                }
+                root.present().map_err(|e| e.to_string())
+            }
+        }
+    }
+
+    /// The drawing as an SVG document, `width` x `height` px.
+    pub fn to_svg(&self, width: u32, height: u32) -> Result<String, String> {
+        let mut out = String::new();
+        {
+            let root = SVGBackend::with_string(&mut out, (width, height)).into_drawing_area();
+            self.draw(&root, 1.0)?;
+        }
+        Ok(out)
+    }
+
+    /// The drawing as a PNG file at `path`: 1800 x 1200 px (6 x 4 in at 300 dpi), scale 3.
+    pub fn to_png(&self, path: &std::path::Path) -> Result<(), String> {
+        {
+            let root = BitMapBackend::new(path, (1800, 1200)).into_drawing_area();
+            self.draw(&root, 3.0)?;
+        }
+        Ok(())
+    }
+}
+
+/// Every figure's name, in the report's order.
+pub const NAMES: [&str; 14] = [
+    "fig1",
+    "tek04",
+    "tek01",
+    "tek02",
+    "Omega",
+    "tek726",
+    "tek728",
+    "Odot",
+    "stability-map",
+    "frequency",
+    "energy-drift",
+    "path",
+    "spin-down-alpha",
+    "lab-frame-difference",
+];
+
+/// Every figure's name, in the report's order.
+pub fn names() -> &'static [&'static str] {
+    &NAMES
+}
+
+/// Families of figures built together (the experiment's seven share one simulation).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Family {
+    Geometry,
+    Experiment,
+    Stability,
+    Frequency,
+    Energy,
+    Path,
+    SpinDown,
+    LabFrame,
+}
+
+fn family(name: &str) -> Option<Family> {
+    Some(match name {
+        "fig1" => Family::Geometry,
+        "tek04" | "tek01" | "tek02" | "Omega" | "tek726" | "tek728" | "Odot" => Family::Experiment,
+        "stability-map" => Family::Stability,
+        "frequency" => Family::Frequency,
+        "energy-drift" => Family::Energy,
+        "path" => Family::Path,
+        "spin-down-alpha" => Family::SpinDown,
+        "lab-frame-difference" => Family::LabFrame,
+        _ => return None,
+    })
+}
+
+fn build_family(f: Family) -> Result<Vec<Figure>, String> {
+    match f {
+        Family::Geometry => Ok(vec![geometry_figure()?]),
+        Family::Experiment => experiment::figures(),
+        Family::Stability => Ok(vec![stability::figure()?]),
+        Family::Frequency => Ok(vec![frequency::figure()?]),
+        Family::Energy => Ok(vec![energy::figure()?]),
+        Family::Path => Ok(vec![path::figure()?]),
+        Family::SpinDown => Ok(vec![spin_down::figure()?]),
+        Family::LabFrame => Ok(vec![lab_frame::figure()?]),
+    }
+}
+
+/// Figure 1: the geometry of a uniform disk (the toy's a = 37.5 mm) in the steady motion at
+/// alpha0 = 1 rad with b = 0.6 a.
+pub fn geometry_figure() -> Result<Figure, String> {
+    let disk = crate::Disk::uniform(0.0375);
+    let view = geometry::View {
+        azimuth: -0.95,
+        elevation: 0.45,
+    };
+    let g = Geometry::steady(&disk, 1.0, 0.6 * disk.a, std::f64::consts::FRAC_PI_2, view)?;
+    Ok(Figure {
+        name: "fig1",
+        title: "The disk, its triad and its lengths".into(),
+        caption: format!(
+            "Figure 1 of the paper, drawn from the model's definitions. A uniform disk of radius \
+             a = {:.1} mm (blue rim) rolls in the steady motion at alpha0 = {:.2} rad with \
+             b = {:.2} a: eq 29 gives Omega0 = {:.2} rad/s and eq 28 omega10 = b Omega0 / a = \
+             {:.2} rad/s, and b = r - a cos(alpha) places the contact point on a circle of radius \
+             r = {:.2} a (dashed) about the vertical axis of the motion (grey), the centre of mass \
+             on a circle of radius b (dotted) at height a sin(alpha). The unit vectors are drawn at \
+             the centre of mass: 3 points from the centre to the contact point, alpha below the \
+             horizontal r; 1 (the symmetry axis) makes the same angle alpha with the downward \
+             vertical; 2 = 3 x 1 is horizontal and lies in the disk's plane, along the contact \
+             point's velocity; r = 2 x z is horizontal and points away from the axis (eqs 1-9). \
+             The tests check that every drawn arrow is the triad's vector.",
+            g.a * 1e3,
+            g.alpha,
+            g.b / g.a,
+            g.precession,
+            g.spin,
+            g.r / g.a
+        ),
+        drawing: Drawing::Geometry(g),
+    })
+}
+
+/// The figures named (each once, in the order given); an unknown name is an error that lists
+/// the known ones. Families run on parallel threads; the result does not depend on that.
+pub fn some(names: &[&str]) -> Result<Vec<Figure>, String> {
+    let mut families: Vec<Family> = Vec::new();
+    for n in names {
+        let f = family(n).ok_or_else(|| {
+            format!(
+                "no figure named {n:?}; the figures are: {}",
+                NAMES.join(", ")
+            )
+        })?;
+        if !families.contains(&f) {
+            families.push(f);
+        }
+    }
+    let built: Vec<Result<Vec<Figure>, String>> = std::thread::scope(|s| {
+        let handles: Vec<_> = families
+            .iter()
+            .map(|&f| s.spawn(move || build_family(f)))
+            .collect();
+        handles
+            .into_iter()
+            .map(|h| {
+                h.join()
+                    .unwrap_or_else(|_| Err("a figure's thread panicked".into()))
+            })
+            .collect()
+    });
+    let mut pool = Vec::new();
+    for b in built {
+        pool.extend(b?);
+    }
+    let mut out = Vec::new();
+    for n in names {
+        if out.iter().any(|f: &Figure| f.name == *n) {
+            continue;
+        }
+        if let Some(i) = pool.iter().position(|f| f.name == *n) {
+            out.push(pool.swap_remove(i));
+        }
+    }
+    Ok(out)
+}
+
+/// Every figure, in the report's order.
+pub fn all() -> Result<Vec<Figure>, String> {
+    some(&NAMES)
+}
+
+/// One figure by name; `None` when there is no such figure.
+pub fn by_name(name: &str) -> Option<Result<Figure, String>> {
+    family(name)?;
+    Some(some(&[name]).and_then(|mut v| v.pop().ok_or_else(|| format!("{name} was not built"))))
+}
+
+/// Keeps at most about `bins` points of a long series for drawing, honestly: the samples are
+/// cut into `bins` runs of consecutive points and each run contributes its minimum and its
+/// maximum (in time order), so that the drawn envelope is the data's.
+pub fn min_max_decimate(points: &[(f64, f64)], bins: usize) -> Vec<(f64, f64)> {
+    if points.len() <= 2 * bins || bins == 0 {
+        return points.to_vec();
+    }
+    let per = points.len().div_ceil(bins);
+    let mut out = Vec::with_capacity(2 * bins);
+    for run in points.chunks(per) {
+        let (mut lo, mut hi) = (0, 0);
+        for (i, p) in run.iter().enumerate() {
+            if p.1 < run[lo].1 {
+                lo = i;
+            }
+            if p.1 > run[hi].1 {
+                hi = i;
+            }
+        }
+        let (a, b) = if lo <= hi { (lo, hi) } else { (hi, lo) };
+        out.push(run[a]);
+        if b != a {
+            out.push(run[b]);
+        }
+    }
+    out
+}
+
+/// The largest value of each of `bins` runs of consecutive points, at the run's middle time:
+/// the upper envelope of a drift, drawable on a log axis (exact zeros have no logarithm).
+pub fn max_per_bin(points: &[(f64, f64)], bins: usize) -> Vec<(f64, f64)> {
+    if points.is_empty() || bins == 0 {
+        return Vec::new();
+    }
+    let per = points.len().div_ceil(bins);
+    points
+        .chunks(per)
+        .filter_map(|run| {
+            let y = run.iter().map(|p| p.1).fold(0.0, f64::max);
+            let t = 0.5 * (run[0].0 + run[run.len() - 1].0);
+            (y > 0.0).then_some((t, y))
+        })
+        .collect()
+}
+
+/// Keeps about `n` points spread evenly in log x (for log-log plots of long runs): the first
+/// point of each logarithmic bin of x > 0.
+pub fn log_thin(points: &[(f64, f64)], n: usize) -> Vec<(f64, f64)> {
+    let xs: Vec<f64> = points
+        .iter()
+        .map(|p| p.0)
+        .filter(|x| *x > 0.0 && x.is_finite())
+        .collect();
+    if xs.len() <= n || n == 0 {
+        return points.to_vec();
+    }
+    let lo = xs.iter().copied().fold(f64::INFINITY, f64::min).ln();
+    let hi = xs.iter().copied().fold(f64::NEG_INFINITY, f64::max).ln();
+    let width = (hi - lo) / n as f64;
+    let mut last_bin = None;
+    let mut out = Vec::new();
+    for p in points {
+        if !(p.0 > 0.0 && p.0.is_finite()) {
+            continue;
+        }
+        let bin = (((p.0.ln() - lo) / width).floor() as i64).min(n as i64 - 1);
+        if last_bin != Some(bin) {
+            out.push(*p);
+            last_bin = Some(bin);
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn decimation_keeps_the_envelope() {
+        let pts: Vec<(f64, f64)> = (0..10_000)
+            .map(|i| (i as f64, ((i * 7919) % 1000) as f64))
+            .collect();
+        let d = min_max_decimate(&pts, 100);
+        assert!(d.len() <= 200);
+        let max = d.iter().map(|p| p.1).fold(f64::MIN, f64::max);
+        let min = d.iter().map(|p| p.1).fold(f64::MAX, f64::min);
+        assert_eq!((min, max), (0.0, 999.0));
+        assert!(d.windows(2).all(|w| w[1].0 > w[0].0));
+    }
+
+    #[test]
+    fn unknown_names_are_errors_that_list_the_figures() {
+        let e = some(&["nope"]).unwrap_err();
+        assert!(
+            e.contains("fig1") && e.contains("lab-frame-difference"),
+            "{e}"
+        );
+        assert!(by_name("nope").is_none());
+    }
+}

@@ -1,0 +1,332 @@
+//! Building the report: run every check, render every equation's MathML, make the figures, run
+//! a quick speed/accuracy study and the synthetic experiment. Everything here is deterministic:
+//! seeded randomness, no clocks, no wall times.
+
+use super::mathml::display_math;
+use super::{
+    fmt_num, ClaimView, EquationView, FailureView, FigureView, FindingView, PrecisionRow, Report,
+    RunSettings, SceneView, SectionView, Summary,
+};
+use crate::catalogue;
+use crate::check::{run_checks, Checked, Selection, Subject, Tally};
+use crate::equations::{Bench, UNCHECKABLE_CLAIMS, UNCHECKABLE_EQUATIONS};
+use crate::experiment;
+use crate::figures::{self, Chart, Drawing, Figure, Series, Style};
+use crate::finding::{Finding, Verdict};
+use crate::precision;
+use crate::scene::{builtin::BUILTIN, Scene};
+
+/// The subject of each section of the paper, in our words.
+const SECTIONS: [(u32, &str); 10] = [
+    (
+        3,
+        "The equations of motion of a disk rolling without slipping",
+    ),
+    (4, "Steady motion"),
+    (
+        5,
+        "Steady motion with the centre of mass at rest, derived directly",
+    ),
+    (6, "Friction needed in steady motion, and radial slip"),
+    (7, "Small oscillations about steady motion"),
+    (
+        8,
+        "A disk spinning about a vertical diameter, without friction",
+    ),
+    (9, "Small oscillations about steady motion without friction"),
+    (10, "Rising of a nearly upright disk"),
+    (11, "Dissipation at small tilt, and the experiment"),
+    (12, "Summary of the motion"),
+];
+
+/// Claimed and reference values as a reader should see them: for an approximation these are
+/// the claimed and the fitted orders.
+fn values(f: &Finding) -> (String, String) {
+    if f.method == crate::finding::Method::Asymptotic {
+        (
+            format!("order {}", fmt_num(f.claimed)),
+            format!("order {:.2}", f.reference),
+        )
+    } else {
+        (fmt_num(f.claimed), fmt_num(f.reference))
+    }
+}
+
+fn view(f: &Finding) -> FindingView {
+    let (claimed, reference) = values(f);
+    let class = match f.verdict {
+        Verdict::Holds => "holds",
+        Verdict::HoldsApproximately { .. } => "approx",
+        Verdict::Definition => "definition",
+        Verdict::Fails => "fails",
+    };
+    FindingView {
+        method: f.method.to_string(),
+        compared: f.compared.clone(),
+        claimed,
+        reference,
+        error: format!("{:.2e}", f.error),
+        tolerance: format!("{:.1e}", f.tolerance.value),
+        rule: f.tolerance.rule.clone(),
+        verdict: f.verdict.to_string(),
+        class: class.into(),
+        at: f.at.clone(),
+        figure: f
+            .shown_by
+            .as_deref()
+            .map(|s| s.trim_start_matches("figure ").to_string()),
+    }
+}
+
+fn error_view(message: &str) -> FindingView {
+    FindingView {
+        method: "-".into(),
+        compared: "-".into(),
+        claimed: "-".into(),
+        reference: "-".into(),
+        error: "-".into(),
+        tolerance: "-".into(),
+        rule: "-".into(),
+        verdict: "could not run".into(),
+        class: "error".into(),
+        at: message.into(),
+        figure: None,
+    }
+}
+
+fn finding_of(c: &Checked) -> FindingView {
+    match &c.finding {
+        Ok(f) => view(f),
+        Err(e) => error_view(e),
+    }
+}
+
+/// The work-precision figure of the speed/accuracy study, and its table.
+fn precision_part() -> Result<(Vec<PrecisionRow>, Figure), String> {
+    let scene = Scene::load("benchmark").map_err(|e| e.to_string())?;
+    let mut opts = precision::StudyOptions::quick();
+    opts.timing = precision::Timing::ONCE;
+    let study = precision::study(&scene, &opts).map_err(|e| e.to_string())?;
+    let mut rows = Vec::new();
+    let mut series = Vec::new();
+    for s in &study.series {
+        let mut pts = Vec::new();
+        for p in &s.points {
+            rows.push(PrecisionRow {
+                label: p.label.clone(),
+                evaluations: p.evaluations,
+                final_error: format!("{:.2e}", p.final_error),
+                trajectory_error: format!("{:.2e}", p.trajectory_error),
+            });
+            if p.ending.is_complete() && p.trajectory_error > 0.0 {
+                pts.push((p.evaluations as f64, p.trajectory_error));
+            }
+        }
+        series.push(Series::new(s.method.to_string(), pts, Style::Line));
+    }
+    let floor = study.reference.uncertainty;
+    let (x0, x1) = (3e2, 3e5);
+    series.push(Series::new(
+        format!("reference uncertainty {floor:.1e}"),
+        vec![(x0, floor), (x1, floor)],
+        Style::Dashed,
+    ));
+    let chart = Chart {
+        title: "Work against precision, benchmark scene (10 s)".into(),
+        x_label: "right-hand-side evaluations".into(),
+        y_label: "largest relative error over the run".into(),
+        x_log: true,
+        y_log: true,
+        series,
+    };
+    let figure = Figure {
+        name: "work-precision",
+        title: "Speed against accuracy".into(),
+        caption: format!(
+            "Error of each method against the reference ({}), versus the number of right-hand-side \
+             evaluations, on the benchmark scene. RK4 runs at fixed steps; DOPRI5 and DOP853 over \
+             tolerances from 1e-3 to 1e-13. Below the dashed line the reference cannot resolve the error.",
+            precision::reference::label(&study.reference.trace.settings)
+        ),
+        drawing: Drawing::Chart(chart),
+    };
+    Ok((rows, figure))
+}
+
+fn experiment_part() -> Result<String, String> {
+    let scene = Scene::load("spin-down").map_err(|e| e.to_string())?;
+    let trace = experiment::simulate_trace(&scene, &experiment::LightModel::default())
+        .map_err(|e| e.to_string())?;
+    let analysis = experiment::analyze(&trace, &experiment::AnalysisSettings::default())
+        .map_err(|e| e.to_string())?;
+    Ok(analysis.to_string())
+}
+
+/// Builds the report at the bench's accuracy. `progress` receives short status lines.
+pub fn build(
+    bench: &Bench,
+    progress: &(dyn Fn(&str) + Sync),
+) -> Result<(Report, Vec<Figure>), String> {
+    progress("checking the equations and claims");
+    let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
+    let checked = run_checks(bench, &Selection::default(), threads, &|_, _| {})?;
+
+    let cat = catalogue::equations();
+    let mut sections: Vec<SectionView> = SECTIONS
+        .iter()
+        .map(|(n, t)| SectionView {
+            number: *n,
+            title: (*t).to_string(),
+            equations: Vec::new(),
+        })
+        .collect();
+    let mut unchecked = Vec::new();
+    for e in &cat {
+        let found = checked
+            .iter()
+            .find(|c| matches!(c.subject, Subject::Equation { number, .. } if number == e.number));
+        let why = UNCHECKABLE_EQUATIONS
+            .iter()
+            .find(|(n, _)| *n == e.number)
+            .map(|(_, why)| why.to_string());
+        if found.is_none() {
+            unchecked.push((
+                e.number,
+                why.clone().unwrap_or_else(|| "no check yet".into()),
+            ));
+        }
+        let v = EquationView {
+            number: e.number,
+            label: e.label.clone(),
+            anchor: format!("eq-{}", e.number),
+            latex: e.latex.clone(),
+            mathml: display_math(&e.latex),
+            says: e.says.clone(),
+            kind: e.kind.clone(),
+            premises: e.premises.clone(),
+            finding: found.map(finding_of),
+            uncheckable: why,
+        };
+        match sections.iter_mut().find(|s| s.number == e.section) {
+            Some(s) => s.equations.push(v),
+            None => {
+                return Err(format!(
+                    "eq {} is in section {}, which the report does not know",
+                    e.number, e.section
+                ))
+            }
+        }
+    }
+    sections.retain(|s| !s.equations.is_empty());
+
+    let mut claims = Vec::new();
+    let mut unchecked_claims = Vec::new();
+    for c in catalogue::claims() {
+        let found = checked
+            .iter()
+            .find(|k| matches!(k.subject, Subject::Claim { id } if id == c.id));
+        let why = UNCHECKABLE_CLAIMS
+            .iter()
+            .find(|(id, _)| *id == c.id)
+            .map(|(_, why)| why.to_string());
+        if found.is_none() {
+            unchecked_claims.push((
+                c.id.clone(),
+                why.clone().unwrap_or_else(|| "no check yet".into()),
+            ));
+        }
+        claims.push(ClaimView {
+            anchor: format!("claim-{}", c.id),
+            id: c.id.clone(),
+            section: c.section,
+            near_equation: c.near_equation,
+            claim: c.claim.clone(),
+            printed: match c.claimed_value {
+                Some(v) => format!("{} {}", fmt_num(v), c.unit),
+                None => "(qualitative)".into(),
+            },
+            how: c.how.clone(),
+            finding: found.map(finding_of),
+            uncheckable: why,
+        });
+    }
+
+    let failures = checked
+        .iter()
+        .filter_map(|c| {
+            let f = c.finding.as_ref().ok()?;
+            let (claimed, reference) = values(f);
+            (f.verdict == Verdict::Fails).then(|| FailureView {
+                name: c.subject.name(),
+                at: f.at.clone(),
+                anchor: match &c.subject {
+                    Subject::Equation { number, .. } => format!("eq-{number}"),
+                    Subject::Claim { id } => format!("claim-{id}"),
+                },
+                compared: f.compared.clone(),
+                claimed,
+                reference,
+                error: format!("{:.2e}", f.error),
+            })
+        })
+        .collect();
+    let (eqs, cls): (Vec<&Checked>, Vec<&Checked>) = checked
+        .iter()
+        .partition(|c| matches!(c.subject, Subject::Equation { .. }));
+
+    progress("drawing the figures");
+    let mut figures = figures::all()?;
+    progress("measuring speed against accuracy");
+    let (precision_rows, wp) = precision_part()?;
+    figures.push(wp);
+    progress("simulating and analysing the experiment");
+    let experiment = experiment_part()?;
+
+    let figure_views = figures
+        .iter()
+        .map(|f| {
+            Ok(FigureView {
+                name: f.name.to_string(),
+                title: f.title.clone(),
+                caption: f.caption.clone(),
+                svg: f.drawing.to_svg(760, 480)?,
+                file: format!("figures/{}.png", f.name),
+            })
+        })
+        .collect::<Result<Vec<_>, String>>()?;
+
+    let scenes = BUILTIN
+        .iter()
+        .filter_map(|(name, src)| Scene::parse(src, name).ok())
+        .map(|s| SceneView {
+            name: s.name,
+            model: s.model.to_string(),
+            description: s.description,
+        })
+        .collect();
+
+    let report = Report {
+        paper: "A. J. McDonald and K. T. McDonald, The Rolling Motion of a Disk on a Horizontal Plane (2001)".into(),
+        version: env!("CARGO_PKG_VERSION").into(),
+        settings: RunSettings {
+            method: "DOP853".into(),
+            rtol: bench.rtol,
+            command: "rolling-disk report".into(),
+        },
+        summary: Summary {
+            equations: Tally::of(eqs.iter().copied()),
+            claims: Tally::of(cls.iter().copied()),
+            unchecked,
+            unchecked_claims,
+            failures,
+        },
+        sections,
+        claims,
+        figures: figure_views,
+        precision: precision_rows,
+        experiment,
+        paper_numbers: experiment::numbers::paper_numbers().to_string(),
+        scenes,
+    };
+    Ok((report, figures))
+}

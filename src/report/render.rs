@@ -1,0 +1,116 @@
+//! Rendering the report through tera templates (templates/, compiled into the binary), and
+//! writing it atomically: every file goes to a temporary name first, then is renamed.
+
+use super::Report;
+use crate::figures::Figure;
+use crate::output::write_atomically;
+use std::path::{Path, PathBuf};
+use tera::{Context, Tera};
+
+/// The output formats.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Format {
+    /// One self-contained HTML file.
+    Html,
+    /// A LaTeX document and its PNG figures.
+    Latex,
+    /// The report's data.
+    Json,
+}
+
+fn templates() -> Result<Tera, String> {
+    let mut t = Tera::default();
+    t.add_raw_templates(vec![
+        (
+            "report.html",
+            include_str!("../../templates/report.html.tera"),
+        ),
+        (
+            "partials/finding.html",
+            include_str!("../../templates/partials/finding.html.tera"),
+        ),
+        (
+            "report.tex",
+            include_str!("../../templates/report.tex.tera"),
+        ),
+        (
+            "partials/finding.tex",
+            include_str!("../../templates/partials/finding.tex.tera"),
+        ),
+    ])
+    .map_err(|e| format!("a report template is broken: {e:?}"))?;
+    t.register_filter("tex", super::tex::filter);
+    t.autoescape_on(vec![".html"]);
+    Ok(t)
+}
+
+fn render(report: &Report, template: &str) -> Result<String, String> {
+    let t = templates()?;
+    let ctx = Context::from_serialize(report).map_err(|e| e.to_string())?;
+    let mut ctx = ctx;
+    let svgs: Vec<&str> = report.figures.iter().map(|f| f.svg.as_str()).collect();
+    ctx.insert("svgs", &svgs);
+    t.render(template, &ctx).map_err(|e| {
+        let mut msg = format!("cannot render {template}: {e}");
+        let mut source = std::error::Error::source(&e);
+        while let Some(s) = source {
+            msg.push_str(&format!(": {s}"));
+            source = s.source();
+        }
+        msg
+    })
+}
+
+/// The HTML report: one file, math as MathML, figures as inline SVG, nothing fetched.
+pub fn html(report: &Report) -> Result<String, String> {
+    render(report, "report.html")
+}
+
+/// The LaTeX report (figures are PNG files under `figures/`).
+pub fn latex(report: &Report) -> Result<String, String> {
+    render(report, "report.tex")
+}
+
+/// The report's data as JSON.
+pub fn json(report: &Report) -> Result<String, String> {
+    serde_json::to_string_pretty(report).map_err(|e| e.to_string())
+}
+
+/// Writes the report in `formats` to `dir`, each file atomically; returns the paths written.
+pub fn write(
+    report: &Report,
+    figures: &[Figure],
+    dir: &Path,
+    formats: &[Format],
+) -> Result<Vec<PathBuf>, String> {
+    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+    let mut written = Vec::new();
+    let put = |name: &str, text: String, written: &mut Vec<PathBuf>| -> Result<(), String> {
+        let path = dir.join(name);
+        write_atomically(&path, text.as_bytes())
+            .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        written.push(path);
+        Ok(())
+    };
+    for f in formats {
+        match f {
+            Format::Html => put("report.html", html(report)?, &mut written)?,
+            Format::Json => put("report.json", json(report)?, &mut written)?,
+            Format::Latex => {
+                let fig_dir = dir.join("figures");
+                std::fs::create_dir_all(&fig_dir)
+                    .map_err(|e| format!("cannot create {}: {e}", fig_dir.display()))?;
+                for fig in figures {
+                    let path = fig_dir.join(format!("{}.png", fig.name));
+                    let tmp = fig_dir.join(format!(".{}.{}.png", fig.name, std::process::id()));
+                    fig.drawing.to_png(&tmp)?;
+                    std::fs::rename(&tmp, &path)
+                        .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+                    written.push(path);
+                }
+                put("report.tex", latex(report)?, &mut written)?;
+            }
+        }
+    }
+    Ok(written)
+}
