@@ -7,7 +7,9 @@
 
 pub mod catalogue;
 pub mod check;
+pub mod compare;
 pub mod disk;
+pub mod dispatch;
 pub mod equations;
 pub mod experiment;
 pub mod figures;

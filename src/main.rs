@@ -33,6 +33,10 @@ enum Command {
         /// Also write the recorded trajectory as CSV to this file.
         #[arg(long, value_name = "FILE")]
         csv: Option<PathBuf>,
+        /// Also run the scene in another model and print the largest differences
+        /// (`lab-frame`: the independent Newton-Euler model).
+        #[arg(long, value_name = "MODEL")]
+        compare: Option<String>,
     },
     /// Writes the reproduction report (HTML, LaTeX and/or JSON) from the built-in scenes.
     Report {
@@ -136,7 +140,11 @@ enum ExperimentCommand {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        Command::Simulate { scene, csv } => simulate(&scene, csv),
+        Command::Simulate {
+            scene,
+            csv,
+            compare,
+        } => simulate(&scene, csv, compare.as_deref()),
         Command::Scenes => scenes(),
         Command::Report {
             format,
@@ -191,8 +199,34 @@ fn progress_bar(t_end: f64) -> ProgressBar {
     bar
 }
 
-fn simulate(name: &str, csv: Option<PathBuf>) -> Result<(), String> {
+fn simulate(name: &str, csv: Option<PathBuf>, compare: Option<&str>) -> Result<(), String> {
     let scene = Scene::load(name).map_err(|e| e.to_string())?;
+    if let Some(other) = compare {
+        let other = match other {
+            "lab-frame" => rolling_disk::compare::lab_frame_for(scene.model)?,
+            _ => {
+                return Err(format!(
+                    "--compare: {other} is not a model to compare with; use lab-frame"
+                ))
+            }
+        };
+        let c = rolling_disk::compare::compare(&scene, other)?;
+        println!("scene {}: {} against {}", c.scene, c.model, c.other);
+        println!(
+            "{:<24} {:>14} {:>14} {:>10}",
+            "quantity", "largest diff", "of its range", "at t (s)"
+        );
+        for d in &c.differences {
+            let relative = d
+                .relative
+                .map_or("- (zero)".to_string(), |r| format!("{r:.3e}"));
+            println!(
+                "{:<24} {:>14.3e} {:>14} {:>10.4}",
+                d.column, d.largest, relative, d.at_time
+            );
+        }
+        return Ok(());
+    }
     let bar = progress_bar(scene.stop.time);
     let t_end = scene.stop.time;
     let report = |t: f64| {

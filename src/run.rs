@@ -1,11 +1,9 @@
 //! Running a scene: build the model with only the states it needs, integrate, record.
 
-use crate::model::adiabatic::Adiabatic;
-use crate::model::frictionless::Frictionless;
-use crate::model::rolling::Rolling;
-use crate::model::{Layout, Model, Motion, Quantity};
+use crate::dispatch::{dispatch, problem, Visit};
+use crate::model::{Model, Motion};
 use crate::scene::{ModelKind, Scene};
-use crate::solve::{solve, Ending, Event, Problem, SettingsError, State, Stats};
+use crate::solve::{solve, Ending, SettingsError, Solution, State, Stats};
 use serde::Serialize;
 
 /// What a run of a scene produced.
@@ -36,67 +34,39 @@ pub struct Run {
 
 /// Runs a scene. `progress` receives the simulated time now and then.
 pub fn run(scene: &Scene, progress: Option<&dyn Fn(f64)>) -> Result<Run, SettingsError> {
-    let extras = scene.extras();
-    let d = scene.disk;
-    macro_rules! rolling {
-        ($($n:literal),*) => {
-            match Layout::new(4, extras).len {
-                $($n => integrate(&Rolling::<$n>::new(d, extras, scene.dissipation), scene, progress),)*
-                n => unreachable!("a rolling layout has 4 to 8 states, not {n}"),
-            }
-        };
-    }
-    macro_rules! frictionless {
-        ($($n:literal),*) => {
-            match Frictionless::<3>::states(extras) {
-                $($n => integrate(&Frictionless::<$n>::new(d, scene.start.spin, extras), scene, progress),)*
-                n => unreachable!("a frictionless layout has 3 to 5 states, not {n}"),
-            }
-        };
-    }
-    match scene.model {
-        ModelKind::Rolling | ModelKind::Dissipative => rolling!(4, 5, 6, 7, 8),
-        ModelKind::Frictionless => frictionless!(3, 4, 5),
-        ModelKind::Adiabatic => {
-            let law = scene.dissipation.expect("validated: adiabatic has a law");
-            integrate(&Adiabatic::new(d, law), scene, progress)
-        }
+    dispatch(scene, Integrate { progress })
+}
+
+/// Integrates and records whatever model the scene builds.
+struct Integrate<'p> {
+    progress: Option<&'p dyn Fn(f64)>,
+}
+
+impl Visit for Integrate<'_> {
+    type Out = Result<Run, SettingsError>;
+
+    fn visit<M: Model<N>, const N: usize>(self, model: &M, scene: &Scene) -> Self::Out {
+        let y0 = model.state(&scene.start);
+        let mut p = problem(model, scene, y0, scene.stop.time);
+        p.progress = self.progress;
+        p.sample = scene.sample;
+        let sol = solve(p, &scene.settings)?;
+        Ok(record(model, scene, &y0, &sol))
     }
 }
 
-fn integrate<M: Model<N>, const N: usize>(
+fn record<M: Model<N>, const N: usize>(
     model: &M,
     scene: &Scene,
-    progress: Option<&dyn Fn(f64)>,
-) -> Result<Run, SettingsError> {
-    let y0 = model.state(&scene.start);
-    let mut problem = Problem::new(model, 0.0, y0, scene.stop.time);
-    problem.progress = progress;
-    problem.sample = scene.sample;
-    if let Some(bound) = scene.stop.alpha_below {
-        problem = problem.stop_when(Event::new(
-            format!("alpha fell below {bound} rad"),
-            move |y: &State<N>| model.motion(y).alpha - bound,
-        ));
-    }
-    if scene.stop.lift_off {
-        problem = problem.stop_when(Event::new(
-            "the disk left the table (F_z = 0)",
-            |y: &State<N>| {
-                let mut f = Vec::with_capacity(1);
-                model.record(y, Quantity::NormalForce, &mut f);
-                f[0]
-            },
-        ));
-    }
-    let sol = solve(problem, &scene.settings)?;
-
+    y0: &State<N>,
+    sol: &Solution<N>,
+) -> Run {
     let mut columns = vec!["t_s".to_string()];
     for q in &scene.record {
         columns.extend(q.columns().iter().map(|c| c.to_string()));
     }
     let mut rows = Vec::with_capacity(sol.t.len());
-    let e0 = model.energy(&y0);
+    let e0 = model.energy(y0);
     let mut energy_change: f64 = 0.0;
     for (t, y) in sol.t.iter().zip(&sol.y) {
         let mut row = Vec::with_capacity(columns.len());
@@ -109,18 +79,18 @@ fn integrate<M: Model<N>, const N: usize>(
         energy_change = energy_change.max(((model.energy(y) - e0) / e0).abs());
     }
     let (_, y_end) = sol.last();
-    Ok(Run {
+    Run {
         scene: scene.name.clone(),
         model: scene.model,
         states: N,
         columns,
         rows,
         stats: sol.stats,
-        ending: sol.ending,
+        ending: sol.ending.clone(),
         last: model.motion(&y_end),
         energy: (e0, model.energy(&y_end)),
         energy_change,
-    })
+    }
 }
 
 impl Run {

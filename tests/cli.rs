@@ -160,3 +160,21 @@ fn experiment_simulate_then_analyze_round_trips_and_bad_csvs_are_refused() {
     assert!(err.contains("bad.csv") && err.contains('3'), "{err}");
     assert!(!err.contains("panicked"), "{err}");
 }
+
+#[test]
+fn simulate_compares_a_scene_with_the_lab_frame_model() {
+    let (ok, out, err) = cli(&["simulate", "nutating-coin", "--compare", "lab-frame"]);
+    assert!(ok, "{err}");
+    assert!(out.contains("rolling against lab-frame"), "{out}");
+    // Every recorded quantity agrees to better than 1e-8 of its range.
+    for line in out
+        .lines()
+        .filter(|l| l.contains("_rad") || l.contains("_J"))
+    {
+        let cols: Vec<&str> = line.split_whitespace().collect();
+        let relative: f64 = cols[2].parse().unwrap();
+        assert!(relative < 1e-8, "{line}");
+    }
+    let (ok, _, err) = cli(&["simulate", "spin-down", "--compare", "lab-frame"]);
+    assert!(!ok && err.contains("no dissipation"), "{err}");
+}

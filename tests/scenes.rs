@@ -46,6 +46,14 @@ fn a_scene_integrates_only_the_states_it_records() {
     assert_eq!(r.columns, ["t_s", "alpha_rad", "x_m", "y_m"]);
     let all = Scene::parse(&GOOD.replace("[alpha]", "[alpha, path, face]"), "t.yaml").unwrap();
     assert_eq!(run(&all, None).unwrap().states, 8);
+    let lab = GOOD
+        .replace("model: rolling", "model: lab-frame")
+        .replace("[alpha]", "[alpha, path, face]");
+    let r = run(&Scene::parse(&lab, "t.yaml").unwrap(), None).unwrap();
+    assert_eq!(
+        r.states, 13,
+        "the lab frame always integrates its whole rigid-body state"
+    );
     let frictionless = GOOD
         .replace("model: rolling", "model: frictionless")
         .replace("[alpha]", "[alpha, lz]");

@@ -11,9 +11,9 @@
 //! linearly in time. [`energy_drift`] measures $|E(t) - E(0)|/|E(0)|$ at checkpoints and fits its
 //! growth exponent $\gamma$ in $|\Delta E| \propto t^\gamma$ ($\frac12$: random walk, 1: linear).
 
-use super::dispatch::{dispatch, Visit};
 use super::measure::median;
 use super::PrecisionError;
+use crate::dispatch::{dispatch, Visit};
 use crate::model::Model;
 use crate::numerics::fit::log_log_slope;
 use crate::scene::{ModelKind, Scene};

@@ -1,7 +1,7 @@
 //! One integration of a scene, measured: the solver's work, the median wall time of repeated
 //! runs, the final state and (optionally) the state at fixed sample times.
 
-use super::dispatch::{dispatch, problem, Visit};
+use crate::dispatch::{dispatch, problem, Visit};
 use crate::model::Model;
 use crate::scene::Scene;
 use crate::solve::{solve, Ending, Settings, SettingsError, Stats};

@@ -24,7 +24,6 @@
 //! error of the event time, $|t - t^{\rm ref}| / t^{\rm ref}$, joins the maximum.
 
 pub mod cost;
-mod dispatch;
 pub mod measure;
 pub mod preset;
 pub mod reference;

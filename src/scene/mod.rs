@@ -4,7 +4,7 @@
 //! ```yaml
 //! name: nutating-coin
 //! disk: { radius: 0.0375, k: 0.25, mass: 0.4, g: 9.81 }
-//! model: rolling            # rolling | frictionless | dissipative | adiabatic
+//! model: rolling            # rolling | frictionless | dissipative | adiabatic | lab-frame | lab-frame-frictionless
 //! start: { steady: { alpha0: 0.3, b: 0.0 }, perturb: { alpha: 1.0e-4 } }
 //! stop: { time: 10.0 }      # plus, optionally, alpha_below: 0.01 and/or lift_off: true
 //! record: [alpha, precession, spin]
@@ -60,6 +60,10 @@ pub enum ModelKind {
     Dissipative,
     /// The paper's one-state spin-down law, eq 76.
     Adiabatic,
+    /// The independent Newton-Euler model in lab coordinates, rolling without slipping.
+    LabFrame,
+    /// The independent Newton-Euler model in lab coordinates, without friction.
+    LabFrameFrictionless,
 }
 
 impl fmt::Display for ModelKind {
@@ -69,6 +73,8 @@ impl fmt::Display for ModelKind {
             ModelKind::Frictionless => "frictionless",
             ModelKind::Dissipative => "dissipative",
             ModelKind::Adiabatic => "adiabatic",
+            ModelKind::LabFrame => "lab-frame",
+            ModelKind::LabFrameFrictionless => "lab-frame-frictionless",
         })
     }
 }

@@ -1,8 +1,10 @@
-//! Builds a scene's model with only the states it needs and hands it to a generic visitor, the
-//! same way [`crate::run::run`] does, so that measurements time the solver and nothing else.
+//! Builds a scene's model with only the states it needs and hands it to a generic visitor: the
+//! one place that turns a [`Scene`] into a concrete model with a concrete number of states, used
+//! by [`crate::run::run`] and by the speed/accuracy measurements.
 
 use crate::model::adiabatic::Adiabatic;
 use crate::model::frictionless::Frictionless;
+use crate::model::lab_frame::{Contact, LabFrame};
 use crate::model::rolling::Rolling;
 use crate::model::{Layout, Model, Quantity};
 use crate::scene::{ModelKind, Scene};
@@ -43,6 +45,8 @@ pub(crate) fn dispatch<V: Visit>(scene: &Scene, v: V) -> V::Out {
             let law = scene.dissipation.expect("validated: adiabatic has a law");
             v.visit(&Adiabatic::new(d, law), scene)
         }
+        ModelKind::LabFrame => v.visit(&LabFrame::new(d, Contact::Rolling), scene),
+        ModelKind::LabFrameFrictionless => v.visit(&LabFrame::new(d, Contact::Frictionless), scene),
     }
 }
 

@@ -1,0 +1,106 @@
+//! Running one scene in two models and measuring how far apart they end up: above all, the
+//! paper's reduced equations against the independent lab-frame Newton-Euler model.
+
+use crate::run::{run, Run};
+use crate::scene::{ModelKind, Scene};
+use serde::Serialize;
+
+/// The largest difference of one recorded quantity between two runs.
+#[derive(Debug, Clone, Serialize)]
+pub struct Difference {
+    /// The column (with its unit).
+    pub column: String,
+    /// Largest absolute difference over the common sample times.
+    pub largest: f64,
+    /// The same relative to the quantity's range in the second run (with a floor of 1e-3 of
+    /// its largest magnitude, for a quantity that barely moves); `None` when the quantity is
+    /// zero throughout the second run, so that no scale exists.
+    pub relative: Option<f64>,
+    /// Where.
+    pub at_time: f64,
+}
+
+/// Two runs of one scene compared.
+#[derive(Debug, Clone, Serialize)]
+pub struct Comparison {
+    /// The scene.
+    pub scene: String,
+    /// Its own model.
+    pub model: ModelKind,
+    /// The model it was compared with.
+    pub other: ModelKind,
+    /// One entry per recorded column.
+    pub differences: Vec<Difference>,
+}
+
+/// The lab-frame model that referees a scene's model.
+pub fn lab_frame_for(model: ModelKind) -> Result<ModelKind, String> {
+    match model {
+        ModelKind::Rolling | ModelKind::LabFrame => Ok(ModelKind::LabFrame),
+        ModelKind::Frictionless | ModelKind::LabFrameFrictionless => {
+            Ok(ModelKind::LabFrameFrictionless)
+        }
+        ModelKind::Dissipative | ModelKind::Adiabatic => Err(format!(
+            "the lab-frame model has no dissipation, so a {model} scene cannot be compared with it: \
+             compare a rolling or frictionless scene"
+        )),
+    }
+}
+
+/// Runs `scene` in its own model and in `other`, both sampled at the same times (the scene's
+/// `sample`, or 1000 samples over its duration), and measures the differences of what it records.
+pub fn compare(scene: &Scene, other: ModelKind) -> Result<Comparison, String> {
+    let mut mine = scene.clone();
+    if mine.sample.is_none() {
+        mine.sample = Some(mine.stop.time / 1000.0);
+    }
+    let theirs = Scene {
+        model: other,
+        ..mine.clone()
+    };
+    let a = run(&mine, None).map_err(|e| format!("{}: {e}", scene.source))?;
+    let b =
+        run(&theirs, None).map_err(|e| format!("{} in the {other} model: {e}", scene.source))?;
+    if !a.ending.is_complete() || !b.ending.is_complete() {
+        return Err(format!(
+            "a run did not finish ({}: {}; {other}: {})",
+            scene.model, a.ending, b.ending
+        ));
+    }
+    Ok(Comparison {
+        scene: scene.name.clone(),
+        model: scene.model,
+        other,
+        differences: differences(&a, &b),
+    })
+}
+
+fn differences(a: &Run, b: &Run) -> Vec<Difference> {
+    let n = a.rows.len().min(b.rows.len());
+    let mut out = Vec::new();
+    // Angles that the lab model reports wrapped to (-pi, pi] are not compared.
+    for (j, column) in a.columns.iter().enumerate().skip(1) {
+        if column == "heading_rad" || column == "face_rad" {
+            continue;
+        }
+        let values: Vec<f64> = b.rows[..n].iter().map(|r| r[j]).collect();
+        let hi = values.iter().copied().fold(f64::MIN, f64::max);
+        let lo = values.iter().copied().fold(f64::MAX, f64::min);
+        let scale = (hi - lo).max(1e-3 * hi.abs().max(lo.abs()));
+        let (mut largest, mut at_time) = (0.0f64, 0.0);
+        for i in 0..n {
+            let d = (a.rows[i][j] - values[i]).abs();
+            if d > largest || d.is_nan() {
+                largest = d;
+                at_time = a.rows[i][0];
+            }
+        }
+        out.push(Difference {
+            column: column.clone(),
+            largest,
+            relative: (scale > 0.0).then_some(largest / scale),
+            at_time,
+        });
+    }
+    out
+}
