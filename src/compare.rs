@@ -88,11 +88,11 @@ fn differences(a: &Run, b: &Run) -> Vec<Difference> {
         let lo = values.iter().copied().fold(f64::MAX, f64::min);
         let scale = (hi - lo).max(1e-3 * hi.abs().max(lo.abs()));
         let (mut largest, mut at_time) = (0.0f64, 0.0);
-        for i in 0..n {
-            let d = (a.rows[i][j] - values[i]).abs();
+        for (row, v) in a.rows[..n].iter().zip(&values) {
+            let d = (row[j] - v).abs();
             if d > largest || d.is_nan() {
                 largest = d;
-                at_time = a.rows[i][0];
+                at_time = row[0];
             }
         }
         out.push(Difference {
