@@ -167,14 +167,14 @@ fn tek_zoom(e: &Experiment, name: &'static str, span: f64) -> Result<Figure, Str
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), (v, _)| {
             (a.min(*v), b.max(*v))
         });
-    let span = vmax - vmin;
-    plot = plot.y_range(vmin - 0.05 * span, vmax + 0.45 * span);
+    let v_span = vmax - vmin;
+    plot = plot.y_range(vmin - 0.05 * v_span, vmax + 0.45 * v_span);
     let paper = if name == "tek01" { "tek01" } else { "tek02" };
     Ok(Figure {
         name,
         title: format!("The last {span} s of the light signal (the paper's {paper})"),
         caption: format!(
-            "{SYNTHETIC} The last {span} s before the disk leaves the table at {t_end:.4} s \
+            "{SYNTHETIC} The last {span} s before the spin-down ends at {t_end:.4} s \
              (record time), every sample drawn; triangles mark the {n_peaks} peak times t_i of \
              the analysis (mean of the rising and falling half-height crossings, as in the paper, \
              corrected for the chirp within a pulse). The pulses shorten and fade as alpha \
@@ -247,7 +247,7 @@ fn omega(e: &Experiment) -> Result<Figure, String> {
             "{SYNTHETIC} The mean angular rate of each cycle, Omega_i = 2 pi/(t_(i+1) - t_i), \
              placed at the cycle's middle, in rad/s (the paper labels its axis Hz but computes \
              2 pi/period, an angular frequency). {} cycles; the last {} peaks are left out of the \
-             fits, where the law breaks as the disk leaves the table. The fastest fitted cycle is \
+             fits, where the law breaks as the spin-down ends. The fastest fitted cycle is \
              {:.0} rad/s (the paper's last analysable cycle: 680). The dashed curve is eq 79 with \
              the parameters fitted to eq 84: beta = {:.3} +- {:.3}, t0 = {:.4} +- {:.4} s.",
             a.cycles.len(),
