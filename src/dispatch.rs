@@ -57,7 +57,17 @@ pub(crate) fn problem<'a, M: Model<N>, const N: usize>(
     y0: State<N>,
     t_end: f64,
 ) -> Problem<'a, M, N> {
-    let mut p = Problem::new(model, 0.0, y0, t_end);
+    // The paper's alpha lies in (0, pi): at 0 or pi the disk lies flat on the table and the
+    // equations of motion (eq 25 divides by sin alpha) no longer describe it.
+    let mut p = Problem::new(model, 0.0, y0, t_end)
+        .stop_when(Event::new(
+            "the disk fell flat on the table (alpha reached 0)",
+            move |y: &State<N>| model.motion(y).alpha,
+        ))
+        .stop_when(Event::new(
+            "the disk fell flat on the table (alpha reached pi)",
+            move |y: &State<N>| std::f64::consts::PI - model.motion(y).alpha,
+        ));
     if let Some(bound) = scene.stop.alpha_below {
         p = p.stop_when(Event::new(
             format!("alpha fell below {bound} rad"),

@@ -215,3 +215,24 @@ fn every_kind_of_bad_scene_gets_a_located_actionable_error() {
         }
     }
 }
+
+#[test]
+fn a_disk_that_falls_flat_stops_there_instead_of_passing_through_the_table() {
+    let src = "name: fall-flat
+disk: { radius: 0.0375, k: 0.25, mass: 0.4 }
+model: rolling
+start: { explicit: { alpha: 0.01 } }
+stop: { time: 10.0 }
+record: [alpha]
+";
+    let r = run(&Scene::parse(src, "fall.yaml").unwrap(), None).unwrap();
+    let Ending::Event { name, t, .. } = &r.ending else {
+        panic!("{:?}", r.ending)
+    };
+    assert!(name.contains("fell flat"), "{name}");
+    assert!(
+        *t < 1.0 && r.last.alpha.abs() < 1e-9,
+        "t = {t}, alpha = {}",
+        r.last.alpha
+    );
+}
