@@ -12,7 +12,7 @@
 use super::steady::{disk, jac, rho_edge, state, steady_ref, KS};
 use super::{Bench, Equation};
 use crate::disk::Disk;
-use crate::finding::{Finding, Method, Tolerance, Verdict, Worst};
+use crate::finding::{Finding, Method, Tolerance, Worst};
 use crate::model::rolling::Rolling;
 use crate::model::{Extras, Model, Motion};
 use crate::numerics::oscillation::{angular_frequency, bisect};
@@ -541,26 +541,6 @@ fn ratio_ref(d: &Disk, alpha0: f64, rho: f64) -> f64 {
     varpi2(d, &state(&m)).sqrt() / m.precession.abs()
 }
 
-/// The worst of several order fits: the first failing, else the largest order error.
-fn worst_order(findings: Vec<(String, Finding)>) -> Finding {
-    let mut best: Option<Finding> = None;
-    for (label, mut f) in findings {
-        f.at = format!("{label}: {}", f.at);
-        best = Some(match best {
-            None => f,
-            Some(b) => {
-                let bad = |x: &Finding| matches!(x.verdict, Verdict::Fails);
-                if (bad(&f) && !bad(&b)) || (bad(&f) == bad(&b) && f.error > b.error) {
-                    f
-                } else {
-                    b
-                }
-            }
-        });
-    }
-    best.expect("at least one fit")
-}
-
 /// Eq 55, $\dfrac{\varpi}{\Omega_0} = \sqrt{\dfrac{3k\cos^2\alpha_0 + \sin^2\alpha_0}{k+1}}$ for
 /// $b \ll a$.
 ///
@@ -591,7 +571,7 @@ fn eq55(b: &Bench) -> Finding {
             }
         }
     }
-    worst_order(fits)
+    super::worst_order(fits)
 }
 
 /// Eq 56, $\dfrac{\varpi}{\Omega_0} \approx \sqrt{\dfrac{3k}{k+1}}$ at small tilt ($b = 0$).
@@ -616,7 +596,7 @@ fn eq56(b: &Bench) -> Finding {
             Finding::from_order("varpi/Omega_0 at small tilt, b = 0", &small, &errs, 2.0),
         ));
     }
-    worst_order(fits)
+    super::worst_order(fits)
 }
 
 /// Shared by eqs 57-58: $\varpi/\Omega_0$ at $b = \alpha_0 a$ against `claim(k, alpha0)`, over
@@ -645,7 +625,7 @@ fn small_tilt_b(b: &Bench, ks: &[f64], claim: impl Fn(f64, f64) -> f64) -> Findi
             ),
         ));
     }
-    worst_order(fits)
+    super::worst_order(fits)
 }
 
 /// Eq 57, $\varpi \approx \Omega_0\sqrt{\dfrac{3k + (6k+1)\alpha_0}{k+1}}$ with $b = \alpha_0 a$.
@@ -757,6 +737,7 @@ fn eq46(b: &Bench) -> Finding {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::finding::Verdict;
 
     #[test]
     fn every_check_passes_and_fails_when_perturbed() {

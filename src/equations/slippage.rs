@@ -9,7 +9,7 @@
 use super::steady::{disk, rho_edge, steady_ref};
 use super::{Bench, Equation};
 use crate::disk::Disk;
-use crate::finding::{Finding, Method, Tolerance, Verdict, Worst};
+use crate::finding::{Finding, Method, Tolerance, Worst};
 use crate::model::rolling::{contact_force, rates};
 
 /// The checks of this part of the paper.
@@ -42,26 +42,6 @@ fn force(d: &Disk, alpha0: f64, rho: f64) -> [f64; 3] {
 fn needed_mu(d: &Disk, alpha0: f64, rho: f64) -> f64 {
     let [fz, fr, f2] = force(d, alpha0, rho);
     (fr * fr + f2 * f2).sqrt() / fz
-}
-
-/// The worst of several order fits: the first failing, else the largest order error.
-fn worst_order(findings: Vec<(String, Finding)>) -> Finding {
-    let mut best: Option<Finding> = None;
-    for (label, mut f) in findings {
-        f.at = format!("{label}: {}", f.at);
-        best = Some(match best {
-            None => f,
-            Some(b) => {
-                let bad = |x: &Finding| matches!(x.verdict, Verdict::Fails);
-                if (bad(&f) && !bad(&b)) || (bad(&f) == bad(&b) && f.error > b.error) {
-                    f
-                } else {
-                    b
-                }
-            }
-        });
-    }
-    best.expect("at least one fit")
 }
 
 /// $b/a$ from $10^{-2}$ to $10^{-6}$.
@@ -105,7 +85,7 @@ fn eq41(b: &Bench) -> Finding {
             }
         }
     }
-    worst_order(fits)
+    super::worst_order(fits)
 }
 
 /// Eq 42, $\mu \ge \dfrac{|b|}{a k\sin\alpha_0}$.
@@ -143,7 +123,7 @@ fn eq42(b: &Bench) -> Finding {
             }
         }
     }
-    worst_order(fits)
+    super::worst_order(fits)
 }
 
 /// Eq 43, $\mu \ge \dfrac{\cot\alpha_0}{2k+1}$ for negative $b$.
@@ -201,6 +181,7 @@ fn edge_tolerance() -> Tolerance {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::finding::Verdict;
 
     #[test]
     fn checks_give_the_expected_verdicts() {

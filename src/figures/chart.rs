@@ -246,22 +246,6 @@ impl Plot {
     ) -> Result<(), DrawError> {
         self.chart.draw_with(root, scale, &self.options)
     }
-
-    /// The plot as an SVG document, `width` x `height` px.
-    pub fn to_svg(&self, width: u32, height: u32) -> Result<String, DrawError> {
-        let mut out = String::new();
-        {
-            let root = SVGBackend::with_string(&mut out, (width, height)).into_drawing_area();
-            self.draw(&root, 1.0)?;
-        }
-        Ok(out)
-    }
-
-    /// The plot as a PNG file at `path`, 6 x 4 inches at 300 dpi.
-    pub fn to_png(&self, path: &std::path::Path) -> Result<(), DrawError> {
-        let root = BitMapBackend::new(path, (1800, 1200)).into_drawing_area();
-        self.draw(&root, 3.0)
-    }
 }
 
 /// The Okabe-Ito palette: distinguishable with colour-vision deficiencies and in grey print.
@@ -775,22 +759,6 @@ impl Chart {
                 .map_err(|e| e.to_string())?;
         }
         root.present().map_err(|e| e.to_string())
-    }
-
-    /// The chart as an SVG document (for the HTML report), `width` x `height` px.
-    pub fn to_svg(&self, width: u32, height: u32) -> Result<String, DrawError> {
-        let mut out = String::new();
-        {
-            let root = SVGBackend::with_string(&mut out, (width, height)).into_drawing_area();
-            self.draw(&root, 1.0)?;
-        }
-        Ok(out)
-    }
-
-    /// The chart as a PNG file at `path` (for the LaTeX report), 6 x 4 inches at 300 dpi.
-    pub fn to_png(&self, path: &std::path::Path) -> Result<(), DrawError> {
-        let root = BitMapBackend::new(path, (1800, 1200)).into_drawing_area();
-        self.draw(&root, 3.0)
     }
 }
 

@@ -613,22 +613,6 @@ impl Geometry {
         .map_err(err)?;
         root.present().map_err(err)
     }
-
-    /// The figure as an SVG document, `width` x `height` px.
-    pub fn to_svg(&self, width: u32, height: u32) -> Result<String, DrawError> {
-        let mut out = String::new();
-        {
-            let root = SVGBackend::with_string(&mut out, (width, height)).into_drawing_area();
-            self.draw(&root, 1.0)?;
-        }
-        Ok(out)
-    }
-
-    /// The figure as a PNG file, 1800 x 1200 px at scale 3.
-    pub fn to_png(&self, path: &std::path::Path) -> Result<(), DrawError> {
-        let root = BitMapBackend::new(path, (1800, 1200)).into_drawing_area();
-        self.draw(&root, 3.0)
-    }
 }
 
 /// Splits a screen polyline into dashes of length `on` separated by gaps `off` (px).
