@@ -25,6 +25,22 @@ pub struct EquationEntry {
     pub small_parameter: Option<String>,
     /// For approximations: the claimed order of the relative error.
     pub claimed_order: Option<f64>,
+    /// Symbols whose meaning in this equation differs from paper/symbols.yaml (LaTeX -> what it
+    /// stands for).
+    #[serde(default, skip_serializing_if = "std::collections::BTreeMap::is_empty")]
+    pub symbols: std::collections::BTreeMap<String, SymbolInfo>,
+}
+
+/// What a symbol of the paper stands for (paper/symbols.yaml, or an equation's `symbols`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SymbolInfo {
+    /// The quantity a check binds to it.
+    pub quantity: String,
+    /// What it means, in words.
+    pub means: String,
+    /// Its unit.
+    pub unit: String,
 }
 
 /// One claim of the paper's prose.

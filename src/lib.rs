@@ -17,6 +17,7 @@ pub mod finding;
 pub mod model;
 pub mod numerics;
 pub mod output;
+pub mod paper;
 pub mod precision;
 pub mod report;
 pub mod run;

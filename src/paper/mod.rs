@@ -1,0 +1,429 @@
+//! The paper as the input: `paper/equations.yaml`, `paper/symbols.yaml` and `paper/claims.yaml`
+//! read (from the built-in copy or from a directory a user edited), every printed equation parsed
+//! into relations ([`expr::Chain`]), and every symbol resolved to the quantity a check binds.
+//!
+//! The checks take their CLAIMED side from here, so an author can correct an equation and re-check
+//! it with `rolling-disk check --paper DIR`, without touching Rust. The references (models,
+//! integration, linearization) never import this module; `tests/architecture.rs` enforces it.
+
+pub mod eval;
+pub mod expr;
+pub mod parse;
+
+pub use eval::{EvalError, Value};
+pub use expr::{Chain, Expr, Rel, Symbol};
+
+use crate::catalogue::{ClaimEntry, EquationEntry, SymbolInfo};
+use nalgebra::{RealField, Vector3};
+use std::collections::{BTreeMap, HashMap};
+use std::path::{Path, PathBuf};
+
+/// Where the paper was read from.
+#[derive(Debug, Clone, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PaperSource {
+    /// The copy compiled into the binary.
+    BuiltIn,
+    /// A directory given with `--paper`.
+    Dir(PathBuf),
+}
+
+/// Why the paper could not be read.
+#[derive(Debug, thiserror::Error)]
+pub enum PaperError {
+    /// A file could not be read.
+    #[error("{path}: {source}")]
+    Read {
+        /// The file.
+        path: String,
+        /// Why.
+        source: std::io::Error,
+    },
+    /// A file is not the YAML the schema asks for.
+    #[error("{path}: {message}")]
+    Yaml {
+        /// The file.
+        path: String,
+        /// serde's message with its line.
+        message: String,
+    },
+    /// An equation's LaTeX could not be read.
+    #[error("{file}: eq {number}: column {column} of its latex: {message}\n  {latex}\n  {caret}")]
+    Latex {
+        /// The file.
+        file: String,
+        /// The printed number.
+        number: u32,
+        /// 1-based column.
+        column: usize,
+        /// What was expected.
+        message: String,
+        /// The LaTeX.
+        latex: String,
+        /// A caret under the column.
+        caret: String,
+    },
+    /// A symbol in an equation that no symbol table lists.
+    #[error("{file}: eq {number}: column {column} of its latex: the symbol {symbol} is in neither paper/symbols.yaml nor the equation's `symbols` map: add it to one of them with the quantity it stands for")]
+    UnknownSymbol {
+        /// The file.
+        file: String,
+        /// The printed number.
+        number: u32,
+        /// 1-based column.
+        column: usize,
+        /// The symbol, canonical.
+        symbol: String,
+    },
+    /// The equations are not the 85 of the paper, in order.
+    #[error("{file}: {message}")]
+    Structure {
+        /// The file.
+        file: String,
+        /// What is wrong.
+        message: String,
+    },
+}
+
+/// A parsed equation: its entry, its relations and its resolved symbols.
+#[derive(Debug, Clone)]
+pub struct Equation {
+    /// The entry of equations.yaml.
+    pub entry: EquationEntry,
+    /// The printed relations.
+    pub chains: Vec<Chain>,
+    /// Every symbol it uses, with what it stands for.
+    pub symbols: BTreeMap<Symbol, SymbolInfo>,
+}
+
+/// One printed relation: `lhs rel rhs`, adjacent sides of a chain.
+#[derive(Debug, Clone, Copy)]
+pub struct Relation<'a> {
+    /// Which chain (0 unless the equation prints several, like eq 18).
+    pub chain: usize,
+    /// Which relation of the chain (0 for the first `=`).
+    pub index: usize,
+    /// The relation.
+    pub rel: Rel,
+    /// Its left side.
+    pub lhs: &'a Expr,
+    /// Its right side.
+    pub rhs: &'a Expr,
+}
+
+impl Relation<'_> {
+    /// A short name for findings: "form 2" of a chain, "relation 1 of 2".
+    pub fn name(&self) -> String {
+        format!(
+            "relation {} ({} {} {})",
+            self.index + 1,
+            self.lhs.to_latex(),
+            self.rel.latex(),
+            self.rhs.to_latex()
+        )
+    }
+}
+
+/// Values of the quantities a check knows at one point.
+#[derive(Debug, Clone, Default)]
+pub struct Bindings<T: RealField + Copy> {
+    map: HashMap<String, Value<T>>,
+}
+
+impl<T: RealField + Copy> Bindings<T> {
+    /// No values.
+    pub fn new() -> Self {
+        Self {
+            map: HashMap::new(),
+        }
+    }
+
+    /// Binds a scalar quantity.
+    pub fn scalar(mut self, quantity: &str, x: T) -> Self {
+        self.map.insert(quantity.to_string(), Value::Scalar(x));
+        self
+    }
+
+    /// Binds a vector quantity.
+    pub fn vector(mut self, quantity: &str, v: Vector3<T>) -> Self {
+        self.map.insert(quantity.to_string(), Value::Vector(v));
+        self
+    }
+
+    /// Binds any value.
+    pub fn value(mut self, quantity: &str, v: Value<T>) -> Self {
+        self.map.insert(quantity.to_string(), v);
+        self
+    }
+
+    /// Binds in place.
+    pub fn set(&mut self, quantity: &str, v: Value<T>) {
+        self.map.insert(quantity.to_string(), v);
+    }
+
+    /// The value of a quantity, if bound.
+    pub fn get(&self, quantity: &str) -> Option<Value<T>> {
+        self.map.get(quantity).copied()
+    }
+}
+
+impl Equation {
+    /// The printed number.
+    pub fn number(&self) -> u32 {
+        self.entry.number
+    }
+
+    /// Every relation, chain by chain, left to right.
+    pub fn relations(&self) -> Vec<Relation<'_>> {
+        let mut out = Vec::new();
+        for (ci, c) in self.chains.iter().enumerate() {
+            for (i, rel) in c.rels.iter().enumerate() {
+                out.push(Relation {
+                    chain: ci,
+                    index: i,
+                    rel: *rel,
+                    lhs: &c.sides[i],
+                    rhs: &c.sides[i + 1],
+                });
+            }
+        }
+        out
+    }
+
+    /// Evaluates an expression of this equation with the quantities of `b`.
+    pub fn eval<T: RealField + Copy>(
+        &self,
+        e: &Expr,
+        b: &Bindings<T>,
+    ) -> Result<Value<T>, EvalError> {
+        let lookup = |s: &Symbol| -> Result<Value<T>, EvalError> {
+            let info = self
+                .symbols
+                .get(s)
+                .ok_or_else(|| EvalError::Unbound(format!("{s} (not in any symbol table)")))?;
+            b.get(&info.quantity).ok_or_else(|| {
+                EvalError::Unbound(format!(
+                    "{s} (quantity {}, {})",
+                    info.quantity, info.means
+                ))
+            })
+        };
+        eval::eval(e, &lookup)
+    }
+
+    /// Evaluates a scalar expression.
+    pub fn scalar<T: RealField + Copy>(&self, e: &Expr, b: &Bindings<T>) -> Result<T, EvalError> {
+        self.eval(e, b)?.scalar()
+    }
+}
+
+/// The paper, read and parsed.
+#[derive(Debug, Clone)]
+pub struct Paper {
+    /// Where it came from.
+    pub source: PaperSource,
+    /// The 85 equations, in order.
+    pub equations: Vec<Equation>,
+    /// The prose claims.
+    pub claims: Vec<ClaimEntry>,
+    /// A hash of the three files' bytes (FNV-1a, 64 bits, hex), to tell two papers apart.
+    pub hash: String,
+}
+
+const EQUATIONS: &str = include_str!("../../paper/equations.yaml");
+const SYMBOLS: &str = include_str!("../../paper/symbols.yaml");
+const CLAIMS: &str = include_str!("../../paper/claims.yaml");
+
+impl Paper {
+    /// The built-in paper.
+    pub fn built_in() -> Result<Paper, PaperError> {
+        Self::from_texts(PaperSource::BuiltIn, EQUATIONS, SYMBOLS, CLAIMS)
+    }
+
+    /// The paper of a directory holding equations.yaml, symbols.yaml (optional: the built-in
+    /// table otherwise) and claims.yaml (optional: the built-in claims otherwise).
+    pub fn from_dir(dir: &Path) -> Result<Paper, PaperError> {
+        let read = |name: &str, fallback: Option<&str>| -> Result<String, PaperError> {
+            let path = dir.join(name);
+            match (std::fs::read_to_string(&path), fallback) {
+                (Ok(s), _) => Ok(s),
+                (Err(e), Some(f)) if e.kind() == std::io::ErrorKind::NotFound => Ok(f.to_string()),
+                (Err(source), _) => Err(PaperError::Read {
+                    path: path.display().to_string(),
+                    source,
+                }),
+            }
+        };
+        let eqs = read("equations.yaml", None)?;
+        let syms = read("symbols.yaml", Some(SYMBOLS))?;
+        let claims = read("claims.yaml", Some(CLAIMS))?;
+        Self::from_texts(PaperSource::Dir(dir.to_path_buf()), &eqs, &syms, &claims)
+    }
+
+    /// Parses the three texts.
+    pub fn from_texts(
+        source: PaperSource,
+        equations: &str,
+        symbols: &str,
+        claims: &str,
+    ) -> Result<Paper, PaperError> {
+        let file = |name: &str| match &source {
+            PaperSource::BuiltIn => format!("paper/{name} (built in)"),
+            PaperSource::Dir(d) => d.join(name).display().to_string(),
+        };
+        let yaml = |name: &str, e: serde_yaml::Error| PaperError::Yaml {
+            path: file(name),
+            message: e.to_string(),
+        };
+        let entries: Vec<EquationEntry> =
+            serde_yaml::from_str(equations).map_err(|e| yaml("equations.yaml", e))?;
+        let table: BTreeMap<String, SymbolInfo> =
+            serde_yaml::from_str(symbols).map_err(|e| yaml("symbols.yaml", e))?;
+        let claim_entries: Vec<ClaimEntry> =
+            serde_yaml::from_str(claims).map_err(|e| yaml("claims.yaml", e))?;
+        if entries.len() != 85 || entries.iter().enumerate().any(|(i, e)| e.number as usize != i + 1)
+        {
+            return Err(PaperError::Structure {
+                file: file("equations.yaml"),
+                message: "the entries must be the paper's 85 numbered equations, numbers 1 to 85 in order".into(),
+            });
+        }
+        let global = resolve_table(&table, &file("symbols.yaml"), 0)?;
+        let mut parsed = Vec::with_capacity(entries.len());
+        for entry in entries {
+            let eqfile = file("equations.yaml");
+            let latex_error = |column: usize, message: String| PaperError::Latex {
+                file: eqfile.clone(),
+                number: entry.number,
+                column,
+                message,
+                latex: entry.latex.clone(),
+                caret: format!("{}^", " ".repeat(column.saturating_sub(1))),
+            };
+            let (chains, seen) =
+                parse::parse(&entry.latex).map_err(|e| latex_error(e.column, e.message))?;
+            let local = resolve_table(&entry.symbols, &eqfile, entry.number)?;
+            let mut symbols = BTreeMap::new();
+            for (s, col) in seen {
+                let info = local
+                    .get(&s)
+                    .or_else(|| global.get(&s))
+                    .ok_or_else(|| PaperError::UnknownSymbol {
+                        file: eqfile.clone(),
+                        number: entry.number,
+                        column: col,
+                        symbol: s.to_string(),
+                    })?;
+                symbols.insert(s, info.clone());
+            }
+            parsed.push(Equation {
+                entry,
+                chains,
+                symbols,
+            });
+        }
+        Ok(Paper {
+            hash: fnv(&[equations, symbols, claims]),
+            source,
+            equations: parsed,
+            claims: claim_entries,
+        })
+    }
+
+    /// Equation `n` (1-85).
+    pub fn equation(&self, n: u32) -> &Equation {
+        &self.equations[(n.clamp(1, 85) - 1) as usize]
+    }
+}
+
+/// A symbol table's LaTeX keys, read by the equation reader into canonical symbols.
+fn resolve_table(
+    table: &BTreeMap<String, SymbolInfo>,
+    file: &str,
+    number: u32,
+) -> Result<BTreeMap<Symbol, SymbolInfo>, PaperError> {
+    let mut out = BTreeMap::new();
+    for (key, info) in table {
+        let bad = |message: String| PaperError::Structure {
+            file: file.to_string(),
+            message: if number == 0 {
+                format!("the key '{key}' is not one symbol: {message}")
+            } else {
+                format!("eq {number}: the symbols key '{key}' is not one symbol: {message}")
+            },
+        };
+        let (chains, _) = parse::parse(key).map_err(|e| bad(e.message))?;
+        match chains.as_slice() {
+            [c] if c.rels.is_empty() => match &c.sides[0] {
+                Expr::Sym(s) => {
+                    out.insert(s.clone(), info.clone());
+                }
+                other => return Err(bad(format!("it reads as {}", other.to_latex()))),
+            },
+            _ => return Err(bad("it holds a relation".into())),
+        }
+    }
+    Ok(out)
+}
+
+/// FNV-1a over the texts, each followed by a zero byte.
+fn fnv(texts: &[&str]) -> String {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for t in texts {
+        for &b in t.as_bytes().iter().chain(std::iter::once(&0u8)) {
+            h ^= u64::from(b);
+            h = h.wrapping_mul(0x0000_0100_0000_01b3);
+        }
+    }
+    format!("{h:016x}")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_built_in_paper_reads_whole() {
+        let p = Paper::built_in().unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(p.equations.len(), 85);
+        let total: usize = p.equations.iter().map(|e| e.relations().len()).sum();
+        assert!(total >= 100, "{total} relations");
+        // eq 3 prints two equalities, eq 18 two chains.
+        assert_eq!(p.equation(3).relations().len(), 2);
+        assert_eq!(p.equation(18).chains.len(), 2);
+    }
+
+    #[test]
+    fn an_unknown_symbol_names_the_equation_and_column() {
+        let eqs = EQUATIONS.replacen(r"'\mathbf{a} = a \hat{\mathbf{3}}'", r"'\mathbf{a} = q \hat{\mathbf{3}}'", 1);
+        let err = Paper::from_texts(PaperSource::BuiltIn, &eqs, SYMBOLS, CLAIMS).unwrap_err();
+        let msg = err.to_string();
+        assert!(msg.contains("eq 1: column 14") && msg.contains("symbol q"), "{msg}");
+    }
+
+    #[test]
+    fn bad_latex_names_the_equation_and_column() {
+        let eqs = EQUATIONS.replacen(r"'\mathbf{a} = a \hat{\mathbf{3}}'", r"'\mathbf{a} = \frac{a}{'", 1);
+        let err = Paper::from_texts(PaperSource::BuiltIn, &eqs, SYMBOLS, CLAIMS).unwrap_err();
+        let msg = err.to_string();
+        assert!(msg.contains("eq 1: column"), "{msg}");
+    }
+
+    #[test]
+    fn evaluation_follows_the_symbol_tables() {
+        let p = Paper::built_in().unwrap_or_else(|e| panic!("{e}"));
+        // eq 31: Omega_0^2 = g / (a k sin alpha_0).
+        let eq = p.equation(31);
+        let r = eq.relations()[0];
+        let b = Bindings::new()
+            .scalar("g", 9.81)
+            .scalar("a", 0.0375)
+            .scalar("k", 0.25)
+            .scalar("alpha_0", 0.3);
+        let rhs = eq.scalar(r.rhs, &b).unwrap();
+        let want = 9.81 / (0.0375 * 0.25 * 0.3_f64.sin());
+        assert!((rhs - want).abs() < 1e-12 * want);
+        let err = eq.scalar(r.lhs, &b).unwrap_err();
+        assert!(err.to_string().contains("Omega_0"), "{err}");
+    }
+}
