@@ -3,9 +3,10 @@
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rolling_disk::check::{run_checks, Checked, Selection, Tally};
-use rolling_disk::equations::Bench;
+use rolling_disk::equations::{built_in_paper, Bench};
 use rolling_disk::experiment;
 use rolling_disk::output::write_atomically;
+use rolling_disk::paper::Paper;
 use rolling_disk::precision::{self, Accuracy};
 use rolling_disk::run::{run, Run};
 use rolling_disk::scene::{builtin::BUILTIN, Scene};
@@ -49,6 +50,10 @@ enum Command {
         /// Integration accuracy of the checks (default: rtol 1e-12).
         #[arg(long, value_enum)]
         accuracy: Option<Accuracy>,
+        /// Read the paper's equations from DIR/equations.yaml (and DIR/symbols.yaml,
+        /// DIR/claims.yaml when present) instead of the built-in copy.
+        #[arg(long, value_name = "DIR")]
+        paper: Option<PathBuf>,
     },
     /// Regenerates figures alone, by the paper's names (see `--only`).
     Figures {
@@ -76,6 +81,11 @@ enum Command {
         /// rtol 1e-12, the accuracy the tolerances were designed at.
         #[arg(long, value_enum)]
         accuracy: Option<Accuracy>,
+        /// Check the equations of DIR/equations.yaml (and DIR/symbols.yaml, DIR/claims.yaml
+        /// when present) instead of the built-in copy of the paper: an edited equation is
+        /// re-checked without rebuilding.
+        #[arg(long, value_name = "DIR")]
+        paper: Option<PathBuf>,
     },
     /// Measures speed against accuracy for a scene (default: the benchmark scene): error
     /// against a validated reference, right-hand-side evaluations and wall time, per method.
@@ -150,13 +160,15 @@ fn main() -> ExitCode {
             format,
             out,
             accuracy,
-        } => report(format, &out, accuracy),
+            paper,
+        } => report(format, &out, accuracy, paper.as_deref()),
         Command::Figures { only, out, format } => figures(only.as_deref(), &out, format),
         Command::Check {
             only,
             json,
             accuracy,
-        } => check(only.as_deref(), json, accuracy),
+            paper,
+        } => check(only.as_deref(), json, accuracy, paper.as_deref()),
         Command::Precision {
             scene,
             json,
@@ -282,19 +294,36 @@ fn print_summary(scene: &Scene, r: &Run) {
     );
 }
 
-fn bench_for(accuracy: Option<Accuracy>) -> Bench {
-    match accuracy {
-        Some(a) => Bench {
-            rtol: a.settings().rtol,
-            ..Bench::default()
+/// The paper to check: the built-in copy, or the one in `dir` (read once for the whole run).
+fn load_paper(dir: Option<&Path>) -> Result<&'static Paper, String> {
+    match dir {
+        None => Ok(built_in_paper()),
+        Some(d) => match Paper::from_dir(d) {
+            Ok(p) => Ok(Box::leak(Box::new(p))),
+            Err(e) => Err(format!("--paper {}: {e}", d.display())),
         },
-        None => Bench::default(),
     }
 }
 
-fn report(format: ReportFormat, out: &Path, accuracy: Option<Accuracy>) -> Result<(), String> {
+fn bench_for(accuracy: Option<Accuracy>, paper: &'static Paper) -> Bench<'static> {
+    let bench = Bench::with_paper(paper);
+    match accuracy {
+        Some(a) => Bench {
+            rtol: a.settings().rtol,
+            ..bench
+        },
+        None => bench,
+    }
+}
+
+fn report(
+    format: ReportFormat,
+    out: &Path,
+    accuracy: Option<Accuracy>,
+    paper: Option<&Path>,
+) -> Result<(), String> {
     use rolling_disk::report::{build::build, render};
-    let bench = bench_for(accuracy);
+    let bench = bench_for(accuracy, load_paper(paper)?);
     let status = |s: &str| eprintln!("report: {s}...");
     let (report, figures) = build(&bench, &status)?;
     let formats = match format {
@@ -381,8 +410,13 @@ fn figures(only: Option<&str>, out: &Path, format: FigureFormat) -> Result<(), S
     Ok(())
 }
 
-fn check(only: Option<&str>, json: bool, accuracy: Option<Accuracy>) -> Result<(), String> {
-    let bench = bench_for(accuracy);
+fn check(
+    only: Option<&str>,
+    json: bool,
+    accuracy: Option<Accuracy>,
+    paper: Option<&Path>,
+) -> Result<(), String> {
+    let bench = bench_for(accuracy, load_paper(paper)?);
     let started = std::time::Instant::now();
     let selection = match only {
         Some(text) => Selection::parse(text)?,

@@ -30,9 +30,11 @@
 //! that makes angle $\alpha$ with $\hat{\mathbf z}$ (axis 1 points below the horizontal for
 //! $\alpha < \pi/2$). The checks adopt the equations' convention.
 
-use super::{Bench, Equation};
+use super::{printed_relations, Bench, Equation};
 use crate::finding::{Finding, Method, Tolerance, Worst};
 use crate::numerics::rng::Rng;
+use crate::paper::{Bindings, Value};
+use nalgebra::Vector3;
 use num_dual::{Dual, Dual64, DualNum};
 
 /// The checks of this part of the paper.
@@ -447,41 +449,83 @@ fn identity(compared: &str, w: Worst, definition: bool) -> Finding {
 // Eqs 1-11: the triad and the angular velocities
 // ------------------------------------------------------------------------------------------
 
-/// Eq 1, $\mathbf a = a\hat{\mathbf 3}$ (definition): the offset of the contact point from the
-/// centre. Reference: the lowest point of the rim, found in BODY coordinates (the rim point
-/// $aR(\cos\vartheta, \sin\vartheta, 0)$ whose height is least), compared with $a\hat{\mathbf 3}$
-/// of the triad constructed in the lab.
-fn eq1(b: &Bench) -> Finding {
-    let a = 0.0375;
+/// The offset of the rim's lowest point from the centre, found in BODY coordinates (the rim
+/// point $aR(\cos\vartheta, \sin\vartheta, 0)$ whose height is least): the reference for
+/// $\mathbf a$.
+fn lowest_rim_point(k: &Kin<f64>) -> V<f64> {
+    let angle = (-k.rot[2][1]).atan2(-k.rot[2][0]);
+    scale(A, &mat_vec(&k.rot, &[angle.cos(), angle.sin(), 0.0]))
+}
+
+fn v3(v: &V<f64>) -> Vector3<f64> {
+    Vector3::new(v[0], v[1], v[2])
+}
+
+/// Every kinematic quantity of the paper's sec. 3, MEASURED on the constructed motion (see the
+/// module's documentation), bound to the quantities of paper/symbols.yaml. The disk is rolled
+/// along its rim, so the contact point is at rest and $\mathbf v_{cm}$ comes from the rim's
+/// geometry, never from $\vec\omega\times\mathbf a$.
+fn kin_bindings(k: &Kin<f64>) -> Bindings<f64> {
+    let v_cm = v_cm_rolling(k);
+    Bindings::new()
+        .scalar("alpha", k.alpha)
+        .scalar("alpha_dot", k.alpha_dot)
+        .scalar("Omega", k.precession)
+        .scalar("omega_rel", k.omega_rel)
+        .scalar("omega_1", dot(&k.omega, &k.axes[ONE]))
+        .scalar("a", A)
+        .vector("e1", v3(&k.axes[ONE]))
+        .vector("e2", v3(&k.axes[TWO]))
+        .vector("e3", v3(&k.axes[THREE]))
+        .vector("r_hat", v3(&k.axes[R_HAT]))
+        .vector("z_hat", Vector3::z())
+        .vector("e1_rate", v3(&k.rates[ONE]))
+        .vector("e2_rate", v3(&k.rates[TWO]))
+        .vector("e3_rate", v3(&k.rates[THREE]))
+        .vector("r_hat_rate", v3(&k.rates[R_HAT]))
+        .vector("omega_vec", v3(&k.omega))
+        .vector("omega_123", v3(&k.omega_123))
+        .vector("a_vec", v3(&lowest_rim_point(k)))
+        .vector("v_cm", v3(&v_cm))
+        .vector("v_contact", Vector3::zeros())
+}
+
+/// Eqs 1-13 share this: every printed relation of eq `n` at random points of random motions,
+/// differences relative to `scale(k)`.
+fn printed_kinematics(
+    b: &Bench,
+    n: u32,
+    seed: u64,
+    scale: impl Fn(&Kin<f64>) -> f64,
+    what: &str,
+) -> Worst {
     let mut w = Worst::default();
-    for (h, t) in sample(1, POINTS, RATE) {
+    for (h, t) in sample(seed, POINTS, RATE) {
         let k = kin1(&h, t);
-        let angle = (-k.rot[2][1]).atan2(-k.rot[2][0]);
-        let lowest = scale(a, &mat_vec(&k.rot, &[angle.cos(), angle.sin(), 0.0]));
-        let claimed = scale(a, &k.axes[THREE]);
-        add_vec(&mut w, b, &claimed, &lowest, a, || at(&k, "a"));
+        printed_relations(b, n, &kin_bindings(&k), scale(&k), &mut w, &|| at(&k, what));
     }
+    w
+}
+
+/// Eq 1, $\mathbf a = a\hat{\mathbf 3}$ (definition): the offset of the contact point from the
+/// centre. Reference: the lowest point of the rim, found in body coordinates, against $a$ times
+/// the constructed $\hat{\mathbf 3}$.
+fn eq1(b: &Bench) -> Finding {
+    let w = printed_kinematics(b, 1, 1, |_| A, "a");
     identity(
-        "a 3-hat against the offset of the rim's lowest point (body coordinates)",
+        "the printed a against the offset of the rim's lowest point (body coordinates)",
         w,
         true,
     )
 }
 
 /// Eq 2, $\vec\omega = \vec\omega_{123} + \omega_{rel}\hat{\mathbf 1}$ (definition). Reference:
-/// the disk's angular velocity from $\dot R R^T$; claimed: the triad's (from $\dot T T^T$) plus
-/// the measured rate of a face mark relative to the triad along $\hat{\mathbf 1}$.
+/// the disk's angular velocity from $\dot R R^T$, the triad's from $\dot T T^T$, and the measured
+/// rate of a face mark relative to the triad.
 fn eq2(b: &Bench) -> Finding {
-    let mut w = Worst::default();
-    for (h, t) in sample(2, POINTS, RATE) {
-        let k = kin1(&h, t);
-        let claimed = add(&k.omega_123, &scale(k.omega_rel, &k.axes[ONE]));
-        add_vec(&mut w, b, &claimed, &k.omega, rate_scale(&k), || {
-            at(&k, "omega")
-        });
-    }
+    let w = printed_kinematics(b, 2, 2, rate_scale, "omega");
     identity(
-        "omega_123 + omega_rel 1-hat against the axial vector of dR/dt R^T",
+        "the printed composition of omega against the axial vector of dR/dt R^T",
         w,
         true,
     )
@@ -489,25 +533,11 @@ fn eq2(b: &Bench) -> Finding {
 
 /// Eq 3, $\vec\omega_{123} = \Omega\hat{\mathbf z} + \dot\alpha\hat{\mathbf 2} =
 /// -\Omega\cos\alpha\hat{\mathbf 1} + \dot\alpha\hat{\mathbf 2} - \Omega\sin\alpha\hat{\mathbf 3}$.
-/// Reference: the triad's angular velocity from $\dot T T^T$; both printed forms compared.
+/// Reference: the triad's angular velocity from $\dot T T^T$; each printed equality in turn.
 fn eq3(b: &Bench) -> Finding {
-    let mut w = Worst::default();
-    for (h, t) in sample(3, POINTS, RATE) {
-        let k = kin1(&h, t);
-        let (s, co) = k.alpha.sin_cos();
-        let lab = add(
-            &scale(k.precession, &up()),
-            &scale(k.alpha_dot, &k.axes[TWO]),
-        );
-        let tri = in_triad(&k, [-k.precession * co, k.alpha_dot, -k.precession * s]);
-        let sc = rate_scale(&k);
-        add_vec(&mut w, b, &lab, &k.omega_123, sc, || {
-            at(&k, "Omega z + alpha_dot 2")
-        });
-        add_vec(&mut w, b, &tri, &k.omega_123, sc, || at(&k, "triad form"));
-    }
+    let w = printed_kinematics(b, 3, 3, rate_scale, "omega_123");
     identity(
-        "both printed forms of omega_123 against the axial vector of dT/dt T^T",
+        "both printed equalities for omega_123 against the axial vector of dT/dt T^T",
         w,
         false,
     )
@@ -516,49 +546,17 @@ fn eq3(b: &Bench) -> Finding {
 /// Eq 4, $\hat{\mathbf z} = -\cos\alpha\hat{\mathbf 1} - \sin\alpha\hat{\mathbf 3}$. Reference:
 /// the lab's vertical; $\alpha$ is the disk plane's tilt (the nutation angle).
 fn eq4(b: &Bench) -> Finding {
-    let mut w = Worst::default();
-    for (h, t) in sample(4, POINTS, RATE) {
-        let k = kin1(&h, t);
-        let (s, co) = k.alpha.sin_cos();
-        let claimed = in_triad(&k, [-co, 0.0, -s]);
-        add_vec(&mut w, b, &claimed, &up(), 1.0, || at(&k, "z"));
-    }
-    identity("-cos(alpha) 1 - sin(alpha) 3 against z", w, false)
-}
-
-/// Eqs 5-7 share this: the claimed rate of triad axis `axis` against its exact derivative.
-fn axis_rate(
-    b: &Bench,
-    seed: u64,
-    axis: usize,
-    claimed: impl Fn(&Kin<f64>) -> Vec<V<f64>>,
-) -> Worst {
-    let mut w = Worst::default();
-    for (h, t) in sample(seed, POINTS, RATE) {
-        let k = kin1(&h, t);
-        for form in claimed(&k) {
-            add_vec(&mut w, b, &form, &k.rates[axis], rate_scale(&k), || {
-                at(&k, "the axis' rate")
-            });
-        }
-    }
-    w
+    let w = printed_kinematics(b, 4, 4, |_| 1.0, "z");
+    identity("the printed z against the lab's vertical", w, false)
 }
 
 /// Eq 5, $d\hat{\mathbf 1}/dt = \vec\omega_{123}\times\hat{\mathbf 1} = -\Omega\sin\alpha
 /// \hat{\mathbf 2} - \dot\alpha\hat{\mathbf 3}$. Reference: the exact derivative of the
-/// constructed axis; $\vec\omega_{123}$ in the middle form from eq 3's triad form.
+/// constructed axis and the measured $\vec\omega_{123}$.
 fn eq5(b: &Bench) -> Finding {
-    let w = axis_rate(b, 5, ONE, |k| {
-        let (s, co) = k.alpha.sin_cos();
-        let om = in_triad(k, [-k.precession * co, k.alpha_dot, -k.precession * s]);
-        vec![
-            cross(&om, &k.axes[ONE]),
-            in_triad(k, [0.0, -k.precession * s, -k.alpha_dot]),
-        ]
-    });
+    let w = printed_kinematics(b, 5, 5, rate_scale, "the axis' rate");
     identity(
-        "d1/dt, both printed forms, against the exact derivative",
+        "d1/dt, both printed equalities, against the exact derivative",
         w,
         false,
     )
@@ -568,17 +566,9 @@ fn eq5(b: &Bench) -> Finding {
 /// \hat{\mathbf 1} - \Omega\cos\alpha\hat{\mathbf 3} = -\Omega\hat{\mathbf r}$ (the printed stray
 /// comma dropped). Reference: the exact derivative of the constructed axis.
 fn eq6(b: &Bench) -> Finding {
-    let w = axis_rate(b, 6, TWO, |k| {
-        let (s, co) = k.alpha.sin_cos();
-        let om = in_triad(k, [-k.precession * co, k.alpha_dot, -k.precession * s]);
-        vec![
-            cross(&om, &k.axes[TWO]),
-            in_triad(k, [k.precession * s, 0.0, -k.precession * co]),
-            scale(-k.precession, &k.axes[R_HAT]),
-        ]
-    });
+    let w = printed_kinematics(b, 6, 6, rate_scale, "the axis' rate");
     identity(
-        "d2/dt, all three printed forms, against the exact derivative",
+        "d2/dt, all three printed equalities, against the exact derivative",
         w,
         false,
     )
@@ -587,44 +577,34 @@ fn eq6(b: &Bench) -> Finding {
 /// Eq 7, $d\hat{\mathbf 3}/dt = \vec\omega_{123}\times\hat{\mathbf 3} = \dot\alpha\hat{\mathbf 1}
 /// + \Omega\cos\alpha\hat{\mathbf 2}$. Reference: the exact derivative of the constructed axis.
 fn eq7(b: &Bench) -> Finding {
-    let w = axis_rate(b, 7, THREE, |k| {
-        let (s, co) = k.alpha.sin_cos();
-        let om = in_triad(k, [-k.precession * co, k.alpha_dot, -k.precession * s]);
-        vec![
-            cross(&om, &k.axes[THREE]),
-            in_triad(k, [k.alpha_dot, k.precession * co, 0.0]),
-        ]
-    });
+    let w = printed_kinematics(b, 7, 7, rate_scale, "the axis' rate");
     identity(
-        "d3/dt, both printed forms, against the exact derivative",
+        "d3/dt, both printed equalities, against the exact derivative",
         w,
         false,
     )
 }
 
 /// Eq 8, $\hat{\mathbf r} = \hat{\mathbf 2}\times\hat{\mathbf z} = -\sin\alpha\hat{\mathbf 1} +
-/// \cos\alpha\hat{\mathbf 3}$ (definition). Reference: $\hat{\mathbf 2}\times\hat{\mathbf z}$
-/// of the constructed triad, and, where the disk leans with axis 1 below the horizontal
-/// ($\cos\alpha > 0.1$), the horizontal direction of $\hat{\mathbf 3}$: figure 1's
-/// $\hat{\mathbf r}$ points from the centre's vertical towards the contact point.
+/// \cos\alpha\hat{\mathbf 3}$ (definition). Reference: where the disk leans with axis 1 below the
+/// horizontal ($\cos\alpha > 0.1$), $\hat{\mathbf r}$ is bound to the horizontal direction of
+/// $\hat{\mathbf 3}$ (figure 1's $\hat{\mathbf r}$ points from the centre's vertical towards the
+/// contact point); elsewhere to the constructed $\hat{\mathbf 2}\times\hat{\mathbf z}$.
 fn eq8(b: &Bench) -> Finding {
     let mut w = Worst::default();
     for (h, t) in sample(8, POINTS, RATE) {
         let k = kin1(&h, t);
-        let (s, co) = k.alpha.sin_cos();
-        let claimed = in_triad(&k, [-s, 0.0, co]);
-        add_vec(&mut w, b, &claimed, &k.axes[R_HAT], 1.0, || at(&k, "r-hat"));
+        let mut bind = kin_bindings(&k);
         let t3 = k.axes[THREE];
         let horizontal = [t3[0], t3[1], 0.0];
-        if co > 0.1 {
+        if k.alpha.cos() > 0.1 {
             let dir = scale(1.0 / norm_f(&horizontal), &horizontal);
-            add_vec(&mut w, b, &claimed, &dir, 1.0, || {
-                at(&k, "r-hat against 3's horizontal direction")
-            });
+            bind.set("r_hat", Value::Vector(v3(&dir)));
         }
+        printed_relations(b, 8, &bind, 1.0, &mut w, &|| at(&k, "r-hat"));
     }
     identity(
-        "-sin(alpha) 1 + cos(alpha) 3 against 2 x z and 3's horizontal direction",
+        "the printed r-hat against 3's horizontal direction and 2 x z",
         w,
         true,
     )
@@ -633,40 +613,33 @@ fn eq8(b: &Bench) -> Finding {
 /// Eq 9, $d\hat{\mathbf r}/dt = \Omega\hat{\mathbf 2}$. Reference: the exact derivative of the
 /// constructed $\hat{\mathbf r}$.
 fn eq9(b: &Bench) -> Finding {
-    let w = axis_rate(b, 9, R_HAT, |k| vec![scale(k.precession, &k.axes[TWO])]);
-    identity("Omega 2 against the exact derivative of r-hat", w, false)
+    let w = printed_kinematics(b, 9, 9, rate_scale, "r-hat's rate");
+    identity(
+        "the printed rate of r-hat against its exact derivative",
+        w,
+        false,
+    )
 }
 
 /// Eq 10, $\vec\omega = \omega_1\hat{\mathbf 1} + \dot\alpha\hat{\mathbf 2} -
 /// \Omega\sin\alpha\hat{\mathbf 3}$, with $\omega_1 = \vec\omega\cdot\hat{\mathbf 1}$. Reference:
 /// the axial vector of $\dot R R^T$ (the 2 and 3 components are the content).
 fn eq10(b: &Bench) -> Finding {
-    let mut w = Worst::default();
-    for (h, t) in sample(10, POINTS, RATE) {
-        let k = kin1(&h, t);
-        let w1 = dot(&k.omega, &k.axes[ONE]);
-        let claimed = in_triad(&k, [w1, k.alpha_dot, -k.precession * k.alpha.sin()]);
-        add_vec(&mut w, b, &claimed, &k.omega, rate_scale(&k), || {
-            at(&k, "omega")
-        });
-    }
-    identity("the triad form of omega against dR/dt R^T", w, false)
+    let w = printed_kinematics(b, 10, 10, rate_scale, "omega");
+    identity(
+        "the printed triad form of omega against dR/dt R^T",
+        w,
+        false,
+    )
 }
 
 /// Eq 11, $\omega_1 = \omega_{rel} - \Omega\cos\alpha$ (definition). Reference: $\vec\omega\cdot
-/// \hat{\mathbf 1}$ from $\dot R R^T$; claimed: the measured rate of a face mark relative to the
-/// triad and the measured precession.
+/// \hat{\mathbf 1}$ from $\dot R R^T$, the measured rate of a face mark relative to the triad and
+/// the measured precession.
 fn eq11(b: &Bench) -> Finding {
-    let mut w = Worst::default();
-    for (h, t) in sample(11, POINTS, RATE) {
-        let k = kin1(&h, t);
-        let claimed = b.claim(k.omega_rel - k.precession * k.alpha.cos());
-        w.add(claimed, dot(&k.omega, &k.axes[ONE]), rate_scale(&k), || {
-            at(&k, "omega_1")
-        });
-    }
+    let w = printed_kinematics(b, 11, 11, rate_scale, "omega_1");
     identity(
-        "omega_rel - Omega cos(alpha) against omega . 1 from dR/dt R^T",
+        "the printed omega_1 against omega . 1 from dR/dt R^T",
         w,
         true,
     )
@@ -686,47 +659,24 @@ fn v_cm_rolling(k: &Kin<f64>) -> V<f64> {
 }
 
 /// Eq 12, $\mathbf v_{contact} = \mathbf v_{cm} + \vec\omega\times\mathbf a = 0$. Reference: a disk
-/// rolling without slipping built from the rim's geometry (no cross product); claimed:
-/// $\vec\omega\times\mathbf a$ against $-\mathbf v_{cm}$.
+/// rolling without slipping built from the rim's geometry (no cross product): its contact point
+/// is at rest and its $\mathbf v_{cm}$ measured.
 fn eq12(b: &Bench) -> Finding {
-    let mut w = Worst::default();
-    for (h, t) in sample(12, POINTS, RATE) {
-        let k = kin1(&h, t);
-        let v = v_cm_rolling(&k);
-        let claimed = cross(&k.omega, &scale(A, &k.axes[THREE]));
-        add_vec(
-            &mut w,
-            b,
-            &claimed,
-            &scale(-1.0, &v),
-            A * rate_scale(&k),
-            || at(&k, "omega x a = -v_cm"),
-        );
-    }
+    let w = printed_kinematics(b, 12, 12, |k| A * rate_scale(k), "v_contact");
     identity(
-        "omega x a against -v_cm of a disk rolled along its rim",
+        "the printed contact velocity against a disk rolled along its rim",
         w,
         false,
     )
 }
 
-/// Eq 13, $\mathbf v_{cm} = a\hat{\mathbf 3}\times\vec\omega = -a\dot\alpha\hat{\mathbf 1} +
-/// a\omega_1\hat{\mathbf 2}$. Reference: the velocity of the centre of a disk rolled along its
-/// rim; both printed forms compared.
+/// Eq 13, $\mathbf v_{cm} = d\mathbf r_{cm}/dt = a\hat{\mathbf 3}\times\vec\omega =
+/// -a\dot\alpha\hat{\mathbf 1} + a\omega_1\hat{\mathbf 2}$. Reference: the velocity of the centre
+/// of a disk rolled along its rim; every printed equality.
 fn eq13(b: &Bench) -> Finding {
-    let mut w = Worst::default();
-    for (h, t) in sample(13, POINTS, RATE) {
-        let k = kin1(&h, t);
-        let v = v_cm_rolling(&k);
-        let w1 = dot(&k.omega, &k.axes[ONE]);
-        let sc = A * rate_scale(&k);
-        let cross_form = cross(&scale(A, &k.axes[THREE]), &k.omega);
-        let triad_form = in_triad(&k, [-A * k.alpha_dot, A * w1, 0.0]);
-        add_vec(&mut w, b, &cross_form, &v, sc, || at(&k, "a 3 x omega"));
-        add_vec(&mut w, b, &triad_form, &v, sc, || at(&k, "triad form"));
-    }
+    let w = printed_kinematics(b, 13, 13, |k| A * rate_scale(k), "v_cm");
     identity(
-        "both printed forms of v_cm against a disk rolled along its rim",
+        "the printed forms of v_cm against a disk rolled along its rim",
         w,
         false,
     )

@@ -14,12 +14,26 @@ pub mod oscillation;
 pub mod slippage;
 pub mod steady;
 
-use crate::finding::Finding;
+use crate::finding::{Finding, Worst};
+use crate::paper::Paper;
 use crate::solve::{Method, Settings};
+use std::sync::OnceLock;
+
+/// The paper compiled into the binary, read once. Its three files are checked by the tests, so
+/// failing to read them is a defect of this build, not of any input.
+pub fn built_in_paper() -> &'static Paper {
+    static PAPER: OnceLock<Paper> = OnceLock::new();
+    PAPER.get_or_init(|| match Paper::built_in() {
+        Ok(p) => p,
+        Err(e) => panic!("the built-in paper does not read (a defect of this build): {e}"),
+    })
+}
 
 /// What a check runs with.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Bench {
+#[derive(Debug, Clone, Copy)]
+pub struct Bench<'p> {
+    /// The paper whose claims are checked: the built-in one, or one read with `--paper DIR`.
+    pub paper: &'p Paper,
     /// Relative perturbation applied to every claimed value (0 in normal runs, 1e-3 in the
     /// mutation test).
     pub perturbation: f64,
@@ -27,21 +41,30 @@ pub struct Bench {
     pub rtol: f64,
 }
 
-impl Default for Bench {
+impl Default for Bench<'static> {
     fn default() -> Self {
         Self {
+            paper: built_in_paper(),
             perturbation: 0.0,
             rtol: 1e-12,
         }
     }
 }
 
-impl Bench {
-    /// The same bench with the claimed side perturbed by relative `p`.
-    pub fn perturbed(p: f64) -> Self {
+impl<'p> Bench<'p> {
+    /// The default bench on another paper.
+    pub fn with_paper(paper: &'p Paper) -> Self {
         Self {
+            paper,
+            ..Bench::default()
+        }
+    }
+
+    /// The same bench with the claimed side perturbed by relative `p`.
+    pub fn perturbed(p: f64) -> Bench<'static> {
+        Bench {
             perturbation: p,
-            ..Self::default()
+            ..Bench::default()
         }
     }
 
@@ -177,4 +200,51 @@ pub(crate) fn worst_order(findings: Vec<(String, Finding)>) -> Finding {
         });
     }
     best.expect("at least one fit")
+}
+
+/// Compares the two sides of every printed relation of eq `n` at one point, the symbols bound
+/// to the reference's values by `bind`: the claimed side (the right one) is read through
+/// [`Bench::claim`], vectors component by component, `scale` turns differences into relative
+/// errors. A relation that cannot be evaluated (a symbol this check does not provide, say after
+/// an author's edit) is recorded as an infinite error with the reason, so the check fails and
+/// says why. Inequalities are not compared here (their checks locate the threshold).
+pub(crate) fn printed_relations(
+    b: &Bench,
+    n: u32,
+    bind: &crate::paper::Bindings<f64>,
+    scale: f64,
+    w: &mut Worst,
+    at: &dyn Fn() -> String,
+) {
+    use crate::paper::Value;
+    let eq = b.paper.equation(n);
+    for r in eq.relations() {
+        if r.rel.is_inequality() {
+            continue;
+        }
+        let sides = eq
+            .eval(r.lhs, bind)
+            .and_then(|l| eq.eval(r.rhs, bind).map(|rr| (l, rr)));
+        let name = || format!("eq {n} {}", r.name());
+        match sides {
+            Ok((Value::Scalar(l), Value::Scalar(rr))) => {
+                w.add(b.claim(rr), l, scale, || format!("{}: {}", name(), at()))
+            }
+            Ok((l, rr)) => match (l.vector(), rr.vector()) {
+                (Ok(l), Ok(rr)) => {
+                    for i in 0..3 {
+                        w.add(b.claim(rr[i]), l[i], scale, || {
+                            format!("{}, lab component {}: {}", name(), ["x", "y", "z"][i], at())
+                        });
+                    }
+                }
+                (Err(e), _) | (_, Err(e)) => {
+                    w.add(f64::NAN, 0.0, 1.0, || format!("{}: {e}", name()))
+                }
+            },
+            Err(e) => w.add(f64::NAN, 0.0, 1.0, || {
+                format!("{}: cannot be evaluated: {e}", name())
+            }),
+        }
+    }
 }

@@ -92,9 +92,9 @@ pub fn eval<T: RealField + Copy>(
             if let (Func::Abs, V(v)) = (f, x) {
                 return Ok(S(v.norm()));
             }
-            let x = x.scalar().map_err(|_| {
-                EvalError::Kind(format!("{} of a {}", f.latex(), x.kind()))
-            })?;
+            let x = x
+                .scalar()
+                .map_err(|_| EvalError::Kind(format!("{} of a {}", f.latex(), x.kind())))?;
             S(match f {
                 Func::Sin => x.sin(),
                 Func::Cos => x.cos(),

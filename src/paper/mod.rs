@@ -202,10 +202,7 @@ impl Equation {
                 .get(s)
                 .ok_or_else(|| EvalError::Unbound(format!("{s} (not in any symbol table)")))?;
             b.get(&info.quantity).ok_or_else(|| {
-                EvalError::Unbound(format!(
-                    "{s} (quantity {}, {})",
-                    info.quantity, info.means
-                ))
+                EvalError::Unbound(format!("{s} (quantity {}, {})", info.quantity, info.means))
             })
         };
         eval::eval(e, &lookup)
@@ -281,7 +278,11 @@ impl Paper {
             serde_yaml::from_str(symbols).map_err(|e| yaml("symbols.yaml", e))?;
         let claim_entries: Vec<ClaimEntry> =
             serde_yaml::from_str(claims).map_err(|e| yaml("claims.yaml", e))?;
-        if entries.len() != 85 || entries.iter().enumerate().any(|(i, e)| e.number as usize != i + 1)
+        if entries.len() != 85
+            || entries
+                .iter()
+                .enumerate()
+                .any(|(i, e)| e.number as usize != i + 1)
         {
             return Err(PaperError::Structure {
                 file: file("equations.yaml"),
@@ -305,15 +306,14 @@ impl Paper {
             let local = resolve_table(&entry.symbols, &eqfile, entry.number)?;
             let mut symbols = BTreeMap::new();
             for (s, col) in seen {
-                let info = local
-                    .get(&s)
-                    .or_else(|| global.get(&s))
-                    .ok_or_else(|| PaperError::UnknownSymbol {
+                let info = local.get(&s).or_else(|| global.get(&s)).ok_or_else(|| {
+                    PaperError::UnknownSymbol {
                         file: eqfile.clone(),
                         number: entry.number,
                         column: col,
                         symbol: s.to_string(),
-                    })?;
+                    }
+                })?;
                 symbols.insert(s, info.clone());
             }
             parsed.push(Equation {
@@ -395,15 +395,26 @@ mod tests {
 
     #[test]
     fn an_unknown_symbol_names_the_equation_and_column() {
-        let eqs = EQUATIONS.replacen(r"'\mathbf{a} = a \hat{\mathbf{3}}'", r"'\mathbf{a} = q \hat{\mathbf{3}}'", 1);
+        let eqs = EQUATIONS.replacen(
+            r"'\mathbf{a} = a \hat{\mathbf{3}}'",
+            r"'\mathbf{a} = q \hat{\mathbf{3}}'",
+            1,
+        );
         let err = Paper::from_texts(PaperSource::BuiltIn, &eqs, SYMBOLS, CLAIMS).unwrap_err();
         let msg = err.to_string();
-        assert!(msg.contains("eq 1: column 14") && msg.contains("symbol q"), "{msg}");
+        assert!(
+            msg.contains("eq 1: column 14") && msg.contains("symbol q"),
+            "{msg}"
+        );
     }
 
     #[test]
     fn bad_latex_names_the_equation_and_column() {
-        let eqs = EQUATIONS.replacen(r"'\mathbf{a} = a \hat{\mathbf{3}}'", r"'\mathbf{a} = \frac{a}{'", 1);
+        let eqs = EQUATIONS.replacen(
+            r"'\mathbf{a} = a \hat{\mathbf{3}}'",
+            r"'\mathbf{a} = \frac{a}{'",
+            1,
+        );
         let err = Paper::from_texts(PaperSource::BuiltIn, &eqs, SYMBOLS, CLAIMS).unwrap_err();
         let msg = err.to_string();
         assert!(msg.contains("eq 1: column"), "{msg}");
