@@ -15,6 +15,7 @@ pub mod experiment;
 pub mod figures;
 pub mod finding;
 pub mod model;
+pub mod mutation;
 pub mod numerics;
 pub mod output;
 pub mod paper;

@@ -8,6 +8,7 @@
 
 pub mod eval;
 pub mod expr;
+pub mod mutate;
 pub mod parse;
 
 pub use eval::{EvalError, Value};
@@ -333,6 +334,13 @@ impl Paper {
     /// Equation `n` (1-85).
     pub fn equation(&self, n: u32) -> &Equation {
         &self.equations[(n.clamp(1, 85) - 1) as usize]
+    }
+
+    /// The same paper with eq `n`'s relations replaced (a mutant, or an author's correction).
+    pub fn with_chains(&self, n: u32, chains: Vec<Chain>) -> Paper {
+        let mut p = self.clone();
+        p.equations[(n.clamp(1, 85) - 1) as usize].chains = chains;
+        p
     }
 }
 

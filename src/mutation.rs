@@ -1,0 +1,60 @@
+//! The mutation suite: mutants of each equation's printed LaTeX ([`crate::paper::mutate`]) run
+//! through the checks. A mutant is killed when the check of ITS equation fails; a survivor is
+//! listed with what was changed, for a reader to judge (mathematically equivalent, outside the
+//! checked domain, or a weak check to fix).
+
+use crate::equations::{equations, Bench};
+use crate::finding::Verdict;
+use crate::paper::mutate::mutants;
+use serde::Serialize;
+
+/// The score of one equation.
+#[derive(Debug, Clone, Serialize)]
+pub struct Score {
+    /// The printed number.
+    pub equation: u32,
+    /// How many mutants were made.
+    pub mutants: usize,
+    /// How many its check failed on.
+    pub killed: usize,
+    /// What was changed in each survivor.
+    pub survivors: Vec<String>,
+}
+
+/// Runs the mutants of the equations `numbers` through their checks (on `bench`'s paper).
+/// `progress(done, total)` is called after each equation.
+pub fn mutation_scores(
+    bench: &Bench,
+    numbers: &[u32],
+    progress: &dyn Fn(usize, usize),
+) -> Vec<Score> {
+    let all = equations();
+    let mut out = Vec::new();
+    for (i, &n) in numbers.iter().enumerate() {
+        let Some(check) = all.iter().find(|e| e.number == n).map(|e| e.check) else {
+            continue;
+        };
+        let ms = mutants(&bench.paper.equation(n).chains);
+        let mut score = Score {
+            equation: n,
+            mutants: ms.len(),
+            killed: 0,
+            survivors: Vec::new(),
+        };
+        for m in ms {
+            let paper = bench.paper.with_chains(n, m.chains);
+            let b = Bench {
+                paper: &paper,
+                ..*bench
+            };
+            if check(&b).verdict == Verdict::Fails {
+                score.killed += 1;
+            } else {
+                score.survivors.push(m.change);
+            }
+        }
+        out.push(score);
+        progress(i + 1, numbers.len());
+    }
+    out
+}

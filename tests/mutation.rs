@@ -1,0 +1,32 @@
+//! The mutation suite over the equations whose claims are evaluated from the paper's LaTeX:
+//! every mutant of an equation's printed text must be killed by the check of that equation,
+//! except the survivors listed here with the reason each cannot be told apart.
+
+use rolling_disk::equations::{Bench, FROM_LATEX};
+use rolling_disk::mutation::mutation_scores;
+
+/// Survivors that are not weaknesses: (equation, change, why).
+const EXPLAINED: &[(u32, &str, &str)] = &[];
+
+#[test]
+fn every_mutant_of_the_printed_equations_is_killed() {
+    let scores = mutation_scores(&Bench::default(), FROM_LATEX, &|_, _| {});
+    let mut unexplained = Vec::new();
+    let (mut made, mut killed) = (0, 0);
+    for s in &scores {
+        made += s.mutants;
+        killed += s.killed;
+        eprintln!("eq {:2}: {}/{} killed", s.equation, s.killed, s.mutants);
+        for change in &s.survivors {
+            let explained = EXPLAINED
+                .iter()
+                .any(|(n, c, _)| *n == s.equation && change.starts_with(c));
+            if !explained {
+                unexplained.push(format!("eq {}: {change}", s.equation));
+            }
+        }
+    }
+    eprintln!("{killed}/{made} mutants killed");
+    assert!(made > 0);
+    assert!(unexplained.is_empty(), "survivors: {unexplained:#?}");
+}
