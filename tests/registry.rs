@@ -2,7 +2,7 @@
 //! when the paper's claimed side is perturbed by a relative 1e-3, in either direction.
 
 use rolling_disk::catalogue;
-use rolling_disk::equations::{claims, equations, Bench};
+use rolling_disk::equations::{claims, equations, Bench, FROM_LATEX};
 use rolling_disk::finding::Verdict;
 
 #[test]
@@ -38,7 +38,11 @@ fn every_check_fails_when_its_claim_is_perturbed() {
     let mut survivors = Vec::new();
     for p in [1e-3, -1e-3] {
         let bench = Bench::perturbed(p);
-        for e in equations() {
+        // Equations read from the LaTeX are mutated in their text instead (tests/mutation.rs).
+        for e in equations()
+            .into_iter()
+            .filter(|e| !FROM_LATEX.contains(&e.number))
+        {
             let f = (e.check)(&bench);
             if f.verdict != Verdict::Fails {
                 survivors.push(format!(

@@ -31,7 +31,7 @@ pub fn built_in_paper() -> &'static Paper {
 
 /// The equations whose checks take their claimed side from the paper's LaTeX (the others still
 /// carry a Rust transcription, checked by the ±1e-3 sweep of tests/registry.rs).
-pub const FROM_LATEX: &[u32] = &[1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13];
+pub const FROM_LATEX: &[u32] = &[1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 23, 24, 25];
 
 /// What a check runs with.
 #[derive(Debug, Clone, Copy)]
@@ -204,6 +204,28 @@ pub(crate) fn worst_order(findings: Vec<(String, Finding)>) -> Finding {
         });
     }
     best.expect("at least one fit")
+}
+
+/// The size of an expression's terms: the sum of the magnitudes of the terms of its top-level
+/// sums (vectors by their norms), so that a relation whose sides nearly cancel (`... = 0`) is
+/// measured against the size of what cancels.
+pub(crate) fn term_scale(
+    eq: &crate::paper::Equation,
+    e: &crate::paper::Expr,
+    bind: &crate::paper::Bindings<f64>,
+) -> f64 {
+    use crate::paper::expr::Op;
+    use crate::paper::{Expr, Value};
+    match e {
+        Expr::Bin(Op::Add | Op::Sub, a, b) => term_scale(eq, a, bind) + term_scale(eq, b, bind),
+        Expr::Neg(a) => term_scale(eq, a, bind),
+        _ => match eq.eval(e, bind) {
+            Ok(Value::Scalar(x)) => x.abs(),
+            Ok(Value::Vector(v)) => v.norm(),
+            Ok(Value::Tensor(m)) => m.norm(),
+            Err(_) => 0.0,
+        },
+    }
 }
 
 /// Compares the two sides of every printed relation of eq `n` at one point, the symbols bound
