@@ -1,7 +1,8 @@
 //! The mutation suite: mutants of each equation's printed LaTeX ([`crate::paper::mutate`]) run
 //! through the checks. A mutant is killed when the check of ITS equation fails; a survivor is
 //! listed with what was changed, for a reader to judge (mathematically equivalent, outside the
-//! checked domain, or a weak check to fix).
+//! checked domain, or a weak check to fix). An equation whose printed form already fails has no
+//! score: its check would "kill" every mutant without telling anything.
 
 use crate::equations::{equations, Bench};
 use crate::finding::Verdict;
@@ -19,6 +20,9 @@ pub struct Score {
     pub killed: usize,
     /// What was changed in each survivor.
     pub survivors: Vec<String>,
+    /// The printed equation itself fails its check: its mutants say nothing (a check that
+    /// already fails "kills" everything), so none are run.
+    pub printed_fails: bool,
 }
 
 /// Runs the mutants of the equations `numbers` through their checks (on `bench`'s paper).
@@ -34,12 +38,18 @@ pub fn mutation_scores(
         let Some(check) = all.iter().find(|e| e.number == n).map(|e| e.check) else {
             continue;
         };
-        let ms = mutants(&bench.paper.equation(n).chains);
+        let printed_fails = check(bench).verdict == Verdict::Fails;
+        let ms = if printed_fails {
+            Vec::new()
+        } else {
+            mutants(&bench.paper.equation(n).chains)
+        };
         let mut score = Score {
             equation: n,
             mutants: ms.len(),
             killed: 0,
             survivors: Vec::new(),
+            printed_fails,
         };
         for m in ms {
             let paper = bench.paper.with_chains(n, m.chains);

@@ -1205,11 +1205,15 @@ mod tests {
             ok.verdict, ok.error, ok.at, bad.verdict, bad.error
         );
         assert_eq!(ok.verdict, verdict, "eq {number}: {ok:?}");
-        assert_eq!(
-            bad.verdict,
-            Verdict::Fails,
-            "eq {number} perturbed: {bad:?}"
-        );
+        // Equations read from the LaTeX are mutated in their text by tests/mutation.rs (a
+        // relative change of a side that is zero, as in eq 12, would change nothing).
+        if !crate::equations::FROM_LATEX.contains(&number) {
+            assert_eq!(
+                bad.verdict,
+                Verdict::Fails,
+                "eq {number} perturbed: {bad:?}"
+            );
+        }
     }
 
     #[test]

@@ -31,7 +31,9 @@ pub fn built_in_paper() -> &'static Paper {
 
 /// The equations whose checks take their claimed side from the paper's LaTeX (the others still
 /// carry a Rust transcription, checked by the ±1e-3 sweep of tests/registry.rs).
-pub const FROM_LATEX: &[u32] = &[1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 23, 24, 25];
+pub const FROM_LATEX: &[u32] = &[
+    1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 23, 24, 25, 76, 77, 78, 79, 84, 85,
+];
 
 /// What a check runs with.
 #[derive(Debug, Clone, Copy)]
@@ -273,4 +275,50 @@ pub(crate) fn printed_relations(
             }),
         }
     }
+}
+
+/// The value of `quantity` that makes the printed relation `rel` of `eq` hold, the others bound
+/// by `bind`: the root of (left side - right side) in `[lo, hi]`, located by bisection to the
+/// last bit. `None` when the relation does not change sign there or cannot be evaluated. This is
+/// how a check reads a printed relation as a definition of one of its symbols (the $t_0$ of
+/// eqs 77-79, the $C$ of eq 79) without writing that symbol's formula in Rust.
+pub(crate) fn solve_printed(
+    eq: &crate::paper::Equation,
+    rel: &crate::paper::Relation<'_>,
+    quantity: &str,
+    bind: &crate::paper::Bindings<f64>,
+    lo: f64,
+    hi: f64,
+) -> Option<f64> {
+    use crate::paper::Value;
+    let residual = |x: f64| -> Option<f64> {
+        let mut b = bind.clone();
+        b.set(quantity, Value::Scalar(x));
+        let l = eq.scalar(rel.lhs, &b).ok()?;
+        let r = eq.scalar(rel.rhs, &b).ok()?;
+        let d = l - r;
+        d.is_finite().then_some(d)
+    };
+    let (mut lo, mut hi) = (lo, hi);
+    let (mut f_lo, f_hi) = (residual(lo)?, residual(hi)?);
+    if f_lo == 0.0 {
+        return Some(lo);
+    }
+    if f_lo.signum() == f_hi.signum() {
+        return None;
+    }
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        let f_mid = residual(mid)?;
+        if f_mid.signum() == f_lo.signum() {
+            lo = mid;
+            f_lo = f_mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Some(0.5 * (lo + hi))
 }
