@@ -16,7 +16,7 @@
 //! paper's eqs 60-62 enters it. The reference is generic over dual numbers, so its Jacobians (for
 //! the linearizations) are exact too.
 
-use super::{Bench, Equation};
+use super::{add_threshold, printed_threshold, Bench, Equation};
 use crate::disk::Disk;
 use crate::finding::{Finding, Method, Tolerance, Verdict, Worst};
 use crate::model::frictionless::{accelerations, Frictionless};
@@ -25,6 +25,7 @@ use crate::model::{Extras, Model, Motion};
 use crate::numerics::linearize::{eigenvalues, jacobian};
 use crate::numerics::oscillation::{angular_frequency, bisect};
 use crate::numerics::rng::Rng;
+use crate::paper::Bindings;
 use crate::solve::{solve, Dynamics, Ending, Event, Problem, State};
 use nalgebra::{Complex, SMatrix};
 use num_dual::{Dual, Dual64, DualNum, HyperDual};
@@ -637,8 +638,24 @@ pub fn eq65(b: &Bench) -> Finding {
         let (lo, hi) = bisect(0.2 * unit, 20.0 * unit, width, unstable);
         let threshold = 0.5 * (lo + hi);
         resolution = resolution.max((2f64.acosh() / t_end).powi(2) / (2.0 * threshold.powi(2)));
-        let claimed = b.claim((d.g / (d.a * k)).sqrt());
-        worst.add(claimed, threshold, threshold, || {
+        // The printed inequality read as a threshold on Omega (of this sign), and its direction
+        // against the integrations 0.1 % either side.
+        let probes = [threshold * (1.0 - 1e-3), threshold * (1.0 + 1e-3)];
+        let allowed = probes.map(|x| !unstable(x));
+        let bind = Bindings::new()
+            .scalar("g", d.g)
+            .scalar("a", d.a)
+            .scalar("k", k);
+        let mut printed = printed_threshold(
+            b,
+            65,
+            "Omega",
+            &bind,
+            (sign * 0.2 * unit, sign * 20.0 * unit),
+            probes.map(|x| sign * x),
+        );
+        printed.edge = printed.edge.abs();
+        add_threshold(b, &mut worst, &printed, threshold, allowed, &|| {
             format!("k = {k}, Omega {}", if sign > 0.0 { "> 0" } else { "< 0" })
         });
     }

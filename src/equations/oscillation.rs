@@ -10,12 +10,13 @@
 //! $b/a$ enters as the ratio $\omega_{10}/\Omega_0$ (eq 28, checked by measuring the path).
 
 use super::steady::{disk, jac, rho_edge, state, steady_ref, KS};
-use super::{Bench, Equation};
+use super::{add_threshold, printed_threshold, Bench, Equation};
 use crate::disk::Disk;
 use crate::finding::{Finding, Method, Tolerance, Worst};
 use crate::model::rolling::Rolling;
 use crate::model::{Extras, Model, Motion};
 use crate::numerics::oscillation::{angular_frequency, bisect};
+use crate::paper::Bindings;
 use crate::solve::{solve, Ending, Event, Problem, State};
 use nalgebra::{Complex, SMatrix};
 use std::f64::consts::{FRAC_PI_2, PI};
@@ -436,6 +437,11 @@ fn eq53(b: &Bench) -> Finding {
     threshold_check(b, 53)
 }
 
+/// Eqs 52 and 53: the threshold on $\omega_{10}$ (eq 52, printed on its square) or on
+/// $|\Omega_0|$ (eq 53) where the upright disk becomes stable, located by bisection on the
+/// linearized $\varpi^2$ and on integrations; compared with the edge the printed inequality gives
+/// (solved for $\omega_{10}$ or $\Omega_0$), and its direction with the linearization's verdict
+/// 0.1 % either side.
 fn threshold_check(b: &Bench, which: u32) -> Finding {
     let width = 1e-10;
     let width_int = 1e-6;
@@ -443,28 +449,15 @@ fn threshold_check(b: &Bench, which: u32) -> Finding {
     for k in KS {
         let d = disk(k);
         let ga = d.g_over_a();
-        // x is omega_10^2 (eq 52) or |Omega_0| (eq 53).
-        let (y_of, claimed) = if which == 52 {
-            (
-                Box::new(move |x: f64| (0.0, x.sqrt())) as Box<dyn Fn(f64) -> (f64, f64)>,
-                b.claim(d.g / (2.0 * (2.0 * k + 1.0) * d.a)),
-            )
-        } else {
-            (
-                Box::new(move |x: f64| (x, 0.0)) as Box<dyn Fn(f64) -> (f64, f64)>,
-                b.claim((d.g / (d.a * (k + 1.0))).sqrt()),
-            )
-        };
-        let (lo, hi) = if which == 52 {
-            (0.1 * ga, 3.0 * ga)
-        } else {
-            (0.3 * ga.sqrt(), 3.0 * ga.sqrt())
+        // x is omega_10 (eq 52) or |Omega_0| (eq 53): the state (Omega, omega_1) at x.
+        let y_of = |x: f64| if which == 52 { (0.0, x) } else { (x, 0.0) };
+        let (lo, hi) = (0.3 * ga.sqrt(), 3.0 * ga.sqrt());
+        let stable = |x: f64| {
+            let (om, w) = y_of(x);
+            varpi2(&d, &[FRAC_PI_2, 0.0, om, w]) > 0.0
         };
         let lin = {
-            let (l, h) = bisect(lo, hi, width, |x| {
-                let (om, w) = y_of(x);
-                varpi2(&d, &[FRAC_PI_2, 0.0, om, w]) > 0.0
-            });
+            let (l, h) = bisect(lo, hi, width, stable);
             0.5 * (l + h)
         };
         let int = {
@@ -474,27 +467,39 @@ fn threshold_check(b: &Bench, which: u32) -> Finding {
             });
             0.5 * (l + h)
         };
+        let quantity = if which == 52 { "omega_10" } else { "Omega_0" };
+        let bind = Bindings::new()
+            .scalar("g", d.g)
+            .scalar("a", d.a)
+            .scalar("k", k);
+        let probes = [lin * (1.0 - 1e-3), lin * (1.0 + 1e-3)];
+        let printed = printed_threshold(b, which, quantity, &bind, (lo, hi), probes);
+        let allowed = probes.map(stable);
         let mut wl = Worst::default();
-        wl.add(claimed, lin, lin, || format!("k = {k}, linearization"));
+        add_threshold(b, &mut wl, &printed, lin, allowed, &|| {
+            format!("k = {k}, linearization")
+        });
         let mut wi = Worst::default();
-        wi.add(claimed, int, int, || format!("k = {k}, integrations"));
+        wi.add(b.claim(printed.edge), int, int, || {
+            format!("{}: k = {k}, integrations", printed.relation)
+        });
         let what = if which == 52 {
-            "omega_10^2 threshold"
+            "omega_10 threshold"
         } else {
             "|Omega_0| threshold"
         };
         let fl = Finding::from_worst(
             Method::Linearization,
-            format!("{what}: claimed against the sign change of the linearized varpi^2"),
+            format!("{what}: the printed edge and direction against the sign change of the linearized varpi^2"),
             wl,
             Tolerance::bisection(width),
             false,
         );
         let fi = Finding::from_worst(
             Method::Threshold,
-            format!("{what}: claimed against bisection on integrations (does a kick turn back?)"),
+            format!("{what}: the printed edge against bisection on integrations (does a kick turn back?)"),
             wi,
-            finite_time_tolerance(k, width_int, which == 52),
+            finite_time_tolerance(k, width_int, false),
             false,
         );
         let f = worse(fi, fl);
@@ -503,7 +508,15 @@ fn threshold_check(b: &Bench, which: u32) -> Finding {
             Some(o) => worse(o, f),
         });
     }
-    out.expect("a sweep")
+    out.unwrap_or_else(|| {
+        Finding::from_worst(
+            Method::Threshold,
+            "no disk was swept",
+            Worst::default(),
+            Tolerance::bisection(width),
+            false,
+        )
+    })
 }
 
 /// Eq 54, $\dfrac{\varpi^2}{\Omega_0^2}(k+1) = 3k\cos^2\alpha_0 + \sin^2\alpha_0 + \dfrac{b}{a}

@@ -7,10 +7,12 @@
 //! so the friction needed is $\mu_* = |b|\Omega_0^2/g$.
 
 use super::steady::{disk, rho_edge, steady_ref};
-use super::{Bench, Equation};
+use super::{printed_threshold, Bench, Equation};
 use crate::disk::Disk;
 use crate::finding::{Finding, Method, Tolerance, Worst};
 use crate::model::rolling::{contact_force, rates};
+use crate::paper::Bindings;
+use nalgebra::Vector3;
 
 /// The checks of this part of the paper.
 pub const EQUATIONS: &[Equation] = &[
@@ -70,12 +72,31 @@ fn eq41(b: &Bench) -> Finding {
                         let rho = sign * x;
                         let [fz, fr, f2] = force(&d, alpha0, rho);
                         let mg = d.m * d.g;
-                        let cz = b.claim(mg);
-                        let cr = b.claim(-rho / (k * alpha0.sin()) * mg);
-                        ((cr - fr) / fr)
+                        // The printed force in a frame with r-hat along x, 2-hat along y.
+                        let bind = Bindings::new()
+                            .scalar("m", d.m)
+                            .scalar("g", d.g)
+                            .scalar("a", d.a)
+                            .scalar("k", k)
+                            .scalar("b", rho * d.a)
+                            .scalar("alpha_0", alpha0)
+                            .vector("z_hat", Vector3::z())
+                            .vector("r_hat", Vector3::x());
+                        let eq = b.paper.equation(41);
+                        let printed = eq
+                            .eval(eq.relations()[0].rhs, &bind)
+                            .and_then(|v| v.vector())
+                            .map_or([f64::NAN; 3], |v| [v.x, v.y, v.z]);
+                        let (cr, c2, cz) = (b.claim(printed[0]), printed[1], b.claim(printed[2]));
+                        let e = ((cr - fr) / fr)
                             .abs()
                             .max((cz - fz).abs() / mg)
-                            .max(f2.abs() / mg)
+                            .max((c2 - f2).abs() / mg);
+                        if e.is_nan() {
+                            f64::INFINITY
+                        } else {
+                            e
+                        }
                     })
                     .collect();
                 fits.push((
@@ -107,8 +128,23 @@ fn eq42(b: &Bench) -> Finding {
                     .iter()
                     .map(|&x| {
                         let mu = needed_mu(&d, alpha0, sign * x);
-                        let claimed = b.claim(x / (k * alpha0.sin()));
-                        ((claimed - mu) / mu).abs()
+                        let bind = Bindings::new()
+                            .scalar("a", d.a)
+                            .scalar("k", k)
+                            .scalar("b", sign * x * d.a)
+                            .scalar("alpha_0", alpha0);
+                        // Direction: half the need must be refused, one and a half allowed.
+                        let printed =
+                            printed_threshold(b, 42, "mu", &bind, (0.0, 1e3), [0.5 * mu, 1.5 * mu]);
+                        if printed.holds != [false, true] {
+                            return f64::INFINITY;
+                        }
+                        let e = ((b.claim(printed.edge) - mu) / mu).abs();
+                        if e.is_nan() {
+                            f64::INFINITY
+                        } else {
+                            e
+                        }
                     })
                     .collect();
                 fits.push((
@@ -145,7 +181,9 @@ fn eq43(b: &Bench) -> Finding {
         let d = disk(k);
         for alpha0 in [0.3f64, 0.8, 1.2] {
             let edge = rho_edge(&d, alpha0, 1e-12);
-            let claimed = b.claim(1.0 / alpha0.tan() / (2.0 * k + 1.0));
+            let bind = Bindings::new().scalar("k", k).scalar("alpha_0", alpha0);
+            let bound = printed_threshold(b, 43, "mu", &bind, (0.0, 1e3), [0.0, 1e3]).edge;
+            let claimed = b.claim(bound);
             for beta in [0.25, 0.5, 0.75, 0.9, 0.99] {
                 let mu = needed_mu(&d, alpha0, beta * edge);
                 // Error: the excess of the need over the bound, relative to the bound. Where the

@@ -17,7 +17,7 @@
 //!
 //! The helpers here are shared with `slippage.rs` and `oscillation.rs`.
 
-use super::{Bench, Equation};
+use super::{add_threshold, printed_threshold, Bench, Equation};
 use crate::disk::Disk;
 use crate::finding::{Finding, Method, Tolerance, Worst};
 use crate::model::lab_frame::{Contact, LabFrame, Snapshot};
@@ -25,6 +25,7 @@ use crate::model::rolling::{contact_force, rates, Rolling};
 use crate::model::{Extras, Model, Motion};
 use crate::numerics::linearize::jacobian;
 use crate::numerics::oscillation::bisect;
+use crate::paper::Bindings;
 use crate::solve::{solve, Problem, State};
 use nalgebra::{SMatrix, Vector3};
 use num_dual::{Dual64, DualNum};
@@ -254,12 +255,14 @@ fn rhos(d: &Disk, alpha0: f64) -> [f64; 4] {
 /// $A\Omega^2 - C$ with $C > 0$ (the weight) for $\alpha_0 < \pi/2$, so a root exists iff the
 /// growth $A = \ddot\alpha(1) - \ddot\alpha(0) > 0$.
 pub(super) fn rho_edge(d: &Disk, alpha0: f64, width: f64) -> f64 {
-    let exists = |rho: f64| {
-        let f = |om: f64| rhs(d, &[alpha0, 0.0, om, rho * om])[1];
-        f(1.0) - f(0.0) > 0.0
-    };
-    let (lo, hi) = bisect(-2.0, 2.0, width, exists);
+    let (lo, hi) = bisect(-2.0, 2.0, width, |rho| steady_exists(d, alpha0, rho));
     0.5 * (lo + hi)
+}
+
+/// Whether the model has a steady motion at `alpha0` with $\omega_{10} = \rho\Omega_0$.
+pub(super) fn steady_exists(d: &Disk, alpha0: f64, rho: f64) -> bool {
+    let f = |om: f64| rhs(d, &[alpha0, 0.0, om, rho * om])[1];
+    f(1.0) - f(0.0) > 0.0
 }
 
 fn at(k: f64, alpha0: f64, rho: f64) -> String {
@@ -400,7 +403,8 @@ fn eq29(b: &Bench) -> Finding {
 /// Threshold: the most negative ratio $\rho = \omega_{10}/\Omega_0$ at which the model's eq 24
 /// still has a real steady $\Omega_0$ is located by bisection (the coefficient of $\Omega^2$ in
 /// $\ddot\alpha$ changes sign there and $\Omega_0^2$ diverges); $b = \rho a$ by the kinematics
-/// verified in eq 28's check. Compared with the claimed bound.
+/// verified in eq 28's check. Compared with the edge the printed inequality gives (solved for
+/// $b$), and its direction with the model's at $b$ 0.1 % either side of the edge.
 fn eq30(b: &Bench) -> Finding {
     let width = 1e-10;
     let mut w = Worst::default();
@@ -408,15 +412,21 @@ fn eq30(b: &Bench) -> Finding {
         let d = disk(k);
         for alpha0 in [0.1, 0.5, 1.0, 1.4, 1.55] {
             let edge = rho_edge(&d, alpha0, width) * d.a;
-            let claimed = b.claim(-d.a * k * alpha0.cos() / (2.0 * k + 1.0));
-            w.add(claimed, edge, edge.abs(), || {
+            let probes = [edge - 1e-3 * edge.abs(), edge + 1e-3 * edge.abs()];
+            let bind = Bindings::new()
+                .scalar("a", d.a)
+                .scalar("k", k)
+                .scalar("alpha_0", alpha0);
+            let printed = printed_threshold(b, 30, "b", &bind, (-d.a, d.a), probes);
+            let allowed = probes.map(|x| steady_exists(&d, alpha0, x / d.a));
+            add_threshold(b, &mut w, &printed, edge, allowed, &|| {
                 format!("k = {k}, alpha0 = {alpha0}")
             });
         }
     }
     Finding::from_worst(
         Method::Threshold,
-        "lower bound on b for a steady motion: claimed against the model's edge found by bisection",
+        "lower bound on b for a steady motion: the printed edge and direction against the model's edge found by bisection",
         w,
         Tolerance::bisection(width),
         false,
