@@ -12,7 +12,7 @@
 //! - eq 76's factor 2/5 should be 2/3 (adiabatic energy balance), so the $C$ of eq 79 is 5/3
 //!   times too large for the dissipative disk.
 
-use super::{solve_printed, Bench, Equation};
+use super::{printed_relations, solve_printed, Bench, Equation};
 use crate::disk::Disk;
 use crate::finding::{Finding, Method, Tolerance, Worst};
 use crate::model::dissipation::PowerLaw;
@@ -124,6 +124,7 @@ const SMALL_ALPHAS: [f64; 5] = [0.2, 0.1, 0.05, 0.025, 0.0125];
 /// $U \approx \frac12 m a^2\dot\alpha^2 + \frac32 m a g\alpha$ against the exact energy.
 fn eq72_at(b: &Bench, c0: f64) -> Finding {
     let mut errors = vec![0.0f64; SMALL_ALPHAS.len()];
+    let mut worst_form = vec![0usize; SMALL_ALPHAS.len()];
     for &k in &[0.25, 0.5] {
         let d = disk(k);
         for (i, &alpha) in SMALL_ALPHAS.iter().enumerate() {
@@ -135,21 +136,47 @@ fn eq72_at(b: &Bench, c0: f64) -> Finding {
                 spin: 0.0,
             };
             let reference = energy(&d, &m);
-            let claimed = b.claim(
-                0.5 * d.m * d.a * d.a * alpha_dot * alpha_dot + 1.5 * d.m * d.a * d.g * alpha,
-            );
-            errors[i] = errors[i].max(((claimed - reference) / reference).abs());
+            let bind = Bindings::new()
+                .scalar("m", d.m)
+                .scalar("a", d.a)
+                .scalar("g", d.g)
+                .scalar("alpha", alpha)
+                .scalar("alpha_dot", alpha_dot)
+                .scalar("h", d.a * alpha.sin())
+                .scalar("h_dot", d.a * alpha.cos() * alpha_dot)
+                .scalar("I_33", k * d.m * d.a * d.a)
+                .scalar("omega_3", -m.precession * alpha.sin())
+                .scalar("U", reference);
+            for (form, side) in b.paper.equation(72).chains[0].sides.iter().enumerate() {
+                let e = b
+                    .paper
+                    .equation(72)
+                    .scalar(side, &bind)
+                    .map_or(f64::INFINITY, |c| {
+                        ((b.claim(c) - reference) / reference).abs()
+                    });
+                if e > errors[i] || e.is_nan() {
+                    errors[i] = if e.is_nan() { f64::INFINITY } else { e };
+                    worst_form[i] = form + 1;
+                }
+            }
         }
     }
-    Finding::from_order(
+    let mut f = Finding::from_order(
         format!(
-            "U of eq 72 against the exact energy at b = 0 (Omega^2 = g/ak sin alpha, omega_1 = 0), \
+            "every printed form of U in eq 72 against the exact energy at b = 0 (Omega^2 = g/ak sin alpha, omega_1 = 0), \
              alpha_dot^2 = {c0} g alpha / a, relative error against alpha"
         ),
         &SMALL_ALPHAS,
         &errors,
-        2.0,
-    )
+        b.paper.equation(72).entry.claimed_order.unwrap_or(2.0),
+    );
+    f.at = format!(
+        "{}; worst printed form at the smallest alpha: side {}",
+        f.at,
+        worst_form.last().copied().unwrap_or(0)
+    );
+    f
 }
 
 /// Eq 72, $U = \frac12 m\dot h^2 + \frac12 I_{33}\omega^2 + mgh \approx \frac12 m a^2\dot\alpha^2 + \frac32 m a g\alpha$.
@@ -181,6 +208,7 @@ pub fn eq72(b: &Bench) -> Finding {
 /// 0$, the power is $\frac32 m a g\dot\alpha$, the relation eq 76 should have used.)
 pub fn eq73(b: &Bench) -> Finding {
     let mut errors = vec![0.0f64; SMALL_ALPHAS.len()];
+    let mut worst_form = vec![0usize; SMALL_ALPHAS.len()];
     for &k in &[0.25, 0.5] {
         let d = disk(k);
         for (i, &alpha) in SMALL_ALPHAS.iter().enumerate() {
@@ -196,18 +224,40 @@ pub fn eq73(b: &Bench) -> Finding {
                 spin: Dual64::from(0.0),
             };
             let reference = energy(&d, &m).eps;
-            let claimed = b.claim(2.5 * d.m * d.a * d.g * alpha_dot);
             let unit = d.m * d.a * d.g * alpha_dot.abs();
-            errors[i] = errors[i].max((claimed - reference).abs() / unit);
+            let bind = Bindings::new()
+                .scalar("m", d.m)
+                .scalar("a", d.a)
+                .scalar("g", d.g)
+                .scalar("alpha_dot", alpha_dot)
+                .scalar("alpha_ddot", alpha_ddot)
+                .scalar("P", reference)
+                .scalar("U_rate", reference);
+            let eq = b.paper.equation(73);
+            for (form, side) in eq.chains[0].sides.iter().enumerate() {
+                let e = eq
+                    .scalar(side, &bind)
+                    .map_or(f64::INFINITY, |c| (b.claim(c) - reference).abs() / unit);
+                if e > errors[i] || e.is_nan() {
+                    errors[i] = if e.is_nan() { f64::INFINITY } else { e };
+                    worst_form[i] = form + 1;
+                }
+            }
         }
     }
-    Finding::from_order(
-        "P = (5/2) m a g alpha_dot against the exact dE/dt where F_z = 0 (b = 0, adiabatic precession), \
+    let mut f = Finding::from_order(
+        "every printed form of P in eq 73 against the exact dE/dt where F_z = 0 (b = 0, adiabatic precession), \
          error in units of m a g |alpha_dot|, against alpha",
         &SMALL_ALPHAS,
         &errors,
-        2.0,
-    )
+        b.paper.equation(73).entry.claimed_order.unwrap_or(2.0),
+    );
+    f.at = format!(
+        "{}; worst printed form at the smallest alpha: side {}",
+        f.at,
+        worst_form.last().copied().unwrap_or(0)
+    );
+    f
 }
 
 /// The rolling model with the dissipation of eq 75 and the integral
@@ -232,7 +282,7 @@ impl Dynamics<5> for WithWork {
 /// claimed power. Errors relative to the sum of the magnitudes of the terms of
 /// $\nabla E\cdot f$, the scale of its round-off. Epsilon is chosen so that the power is 1 % of
 /// $m g a\,\Omega$ at the start.
-fn dissipation(b: &Bench, betas: &[f64]) -> Finding {
+fn dissipation(b: &Bench, n: u32, betas: &[f64]) -> Finding {
     let mut worst = Worst::default();
     for &k in &[0.25, 0.5] {
         let d = disk(k);
@@ -272,8 +322,13 @@ fn dissipation(b: &Bench, betas: &[f64]) -> Finding {
                         rate += t;
                         terms += t.abs();
                     }
-                    let claimed = b.claim(-law.epsilon * d.m * d.a * d.g * y[2].abs().powf(beta));
-                    worst.add(claimed, rate, terms, || {
+                    // Eq 74's bumps: spacing 1 mm (it cancels); eq 75's epsilon is the law's.
+                    let bind = law_bindings(&d, &law)
+                        .scalar("bump_slope", law.epsilon)
+                        .scalar("bump_spacing", 1e-3)
+                        .scalar("Omega", y[2].abs())
+                        .scalar("P", rate);
+                    printed_relations(b, n, &bind, terms, &mut worst, &|| {
                         format!(
                             "k = {k}, beta = {beta}, start alpha0 = {alpha0}, b = {bb}, at alpha = {:.4}",
                             y[0]
@@ -285,7 +340,7 @@ fn dissipation(b: &Bench, betas: &[f64]) -> Finding {
     }
     Finding::from_worst(
         Method::Integration,
-        "claimed power against dE/dt (exact gradient of the energy . right-hand side) along the dissipative rolling model",
+        "every printed form of the power against dE/dt (exact gradient of the energy . right-hand side) along the dissipative rolling model",
         worst,
         Tolerance::roundoff(),
         true,
@@ -296,12 +351,12 @@ fn dissipation(b: &Bench, betas: &[f64]) -> Finding {
 /// consistency with the dissipative rolling model built on it ($\beta = 1$), which must lose
 /// energy at exactly this rate along its motion (b = 0, b > 0, b < 0; k = 1/4, 1/2).
 pub fn eq74(b: &Bench) -> Finding {
-    dissipation(b, &[1.0])
+    dissipation(b, 74, &[1.0])
 }
 
 /// Eq 75, $P = -\epsilon m a g\Omega^\beta$: checked like eq 74 for $\beta$ = 0.5, 2, 2.5, 3, 4.
 pub fn eq75(b: &Bench) -> Finding {
-    dissipation(b, &[0.5, 2.0, 2.5, 3.0, 4.0])
+    dissipation(b, 75, &[0.5, 2.0, 2.5, 3.0, 4.0])
 }
 
 /// What the full dissipative model does from steady $b = 0$ motion at `alpha0`, over 20
@@ -660,17 +715,36 @@ pub fn eq79(b: &Bench) -> Finding {
     )
 }
 
-/// The lift-off of eqs 80-81 derived from eq 79: the time before $t_0$, $\tau$, at which
-/// $d^2(1/\Omega^2)/dt^2 = -k$, the second derivative exact by a second-order dual number,
-/// located by bisection to relative width `WIDTH`; returns $(\tau, \Omega(\tau))$.
+/// The lift-off of eqs 80-81 derived from eq 79 AS PRINTED (its last form, $\Omega$ in terms of
+/// $C$): the time before $t_0$, $\tau$, at which $d^2(1/\Omega^2)/dt^2 = -k$ (the loss of contact
+/// the paper states), the second derivative exact by a second-order dual number through the
+/// parsed expression, located by bisection to relative width `WIDTH`; returns
+/// $(\tau, \Omega(\tau))$.
 const WIDTH: f64 = 1e-12;
 
-fn lift_off(k: f64, beta: f64, c: f64) -> (f64, f64) {
-    let inv_om2 = |tau: Dual2_64| (tau * (1.0 / c)).powf(2.0 / (beta + 2.0));
-    let below = |tau: f64| inv_om2(Dual2_64::from_re(tau).derivative()).v2 < -k;
+fn lift_off(b: &Bench, k: f64, beta: f64, c: f64) -> (f64, f64) {
+    let eq = b.paper.equation(79);
+    let omega = |tau: Dual2_64| -> Dual2_64 {
+        let constant = Dual2_64::from_re;
+        let bind = Bindings::<Dual2_64>::new()
+            .scalar("C", constant(c))
+            .scalar("beta", constant(beta))
+            .scalar("k", constant(k))
+            .scalar("t_0", constant(0.0))
+            .scalar("t", -tau);
+        eq.chains[0]
+            .sides
+            .last()
+            .and_then(|e| eq.scalar(e, &bind).ok())
+            .unwrap_or(constant(f64::NAN))
+    };
+    let below = |tau: f64| {
+        let om = omega(Dual2_64::from_re(tau).derivative());
+        (om * om).recip().v2 < -k
+    };
     let (lo, hi) = bisect(1e-15, 1e3, WIDTH, below);
     let tau = 0.5 * (lo + hi);
-    (tau, (c / tau).powf(1.0 / (beta + 2.0)))
+    (tau, omega(Dual2_64::from_re(tau)).re)
 }
 
 /// The (k, beta, C) swept by eqs 80-81 (C in the units of eq 79 for each beta).
@@ -689,51 +763,48 @@ fn lift_off_cases() -> Vec<(f64, f64, f64)> {
 /// Eq 80, $\Omega_{max} = (k(\beta+2)^2/2\beta)^{1/2(\beta+1)} C^{1/(\beta+1)}$, against
 /// $\Omega$ of eq 79 where $d^2(1/\Omega^2)/dt^2 = -k$ (bisection).
 pub fn eq80(b: &Bench) -> Finding {
-    let mut worst = Worst::default();
-    for (k, beta, c) in lift_off_cases() {
-        let (_, om) = lift_off(k, beta, c);
-        let claimed = b.claim(
-            (k * (beta + 2.0).powi(2) / (2.0 * beta)).powf(1.0 / (2.0 * (beta + 1.0)))
-                * c.powf(1.0 / (beta + 1.0)),
-        );
-        worst.add(claimed, om, om, || {
-            format!("k = {k}, beta = {beta}, C = {c:e}")
-        });
-    }
-    Finding::from_worst(
-        Method::Threshold,
-        "Omega_max of eq 80 against eq 79 at d^2(1/Omega^2)/dt^2 = -k (bisection)",
-        worst,
-        Tolerance::bisection(WIDTH),
-        false,
-    )
+    lift_off_check(b, 80)
 }
 
 /// Eq 81, $t_0 - t_{max} = (2\beta/k(\beta+2)^2)^{(\beta+2)/2(\beta+1)} C^{-1/(\beta+1)}$, against
 /// the $\tau$ where eq 79 gives $d^2(1/\Omega^2)/dt^2 = -k$ (bisection).
 pub fn eq81(b: &Bench) -> Finding {
+    lift_off_check(b, 81)
+}
+
+/// Eqs 80-81: the printed relation with $\Omega_{max}$, $t_0 = 0$ and $t_{max} = -\tau$ bound to
+/// the lift-off derived from eq 79.
+fn lift_off_check(b: &Bench, n: u32) -> Finding {
     let mut worst = Worst::default();
     for (k, beta, c) in lift_off_cases() {
-        let (tau, _) = lift_off(k, beta, c);
-        let claimed = b.claim(
-            (2.0 * beta / (k * (beta + 2.0).powi(2))).powf((beta + 2.0) / (2.0 * (beta + 1.0)))
-                * c.powf(-1.0 / (beta + 1.0)),
-        );
-        worst.add(claimed, tau, tau, || {
+        let (tau, om) = lift_off(b, k, beta, c);
+        let bind = Bindings::new()
+            .scalar("k", k)
+            .scalar("beta", beta)
+            .scalar("C", c)
+            .scalar("Omega_max", om)
+            .scalar("t_0", 0.0)
+            .scalar("t_max", -tau);
+        let scale = if n == 80 { om } else { tau };
+        printed_relations(b, n, &bind, scale, &mut worst, &|| {
             format!("k = {k}, beta = {beta}, C = {c:e}")
         });
     }
     Finding::from_worst(
         Method::Threshold,
-        "t0 - t_max of eq 81 against the time where eq 79 gives d^2(1/Omega^2)/dt^2 = -k (bisection)",
+        if n == 80 {
+            "Omega_max of eq 80 against eq 79 as printed at d^2(1/Omega^2)/dt^2 = -k (bisection)"
+        } else {
+            "t0 - t_max of eq 81 against the time where eq 79 as printed gives d^2(1/Omega^2)/dt^2 = -k (bisection)"
+        },
         worst,
         Tolerance::bisection(WIDTH),
         false,
     )
 }
 
-/// Eq 83, $\Omega = \sqrt{g/ak}\,((m/2\pi\eta a)/(t_0 - t))^{1/6}$: from eq 82's tilt
-/// $\alpha = ((2\pi\eta a/m)(t_0 - t))^{1/3}$ and the small-angle precession
+/// Eq 83, $\Omega = \sqrt{g/ak}\,((m/2\pi\eta a)/(t_0 - t))^{1/6}$: from eq 82's tilt AS
+/// PRINTED, $\alpha = ((2\pi\eta a/m)(t_0 - t))^{1/3}$, and the small-angle precession
 /// $\Omega^2 = g/ak\alpha$ that the paper uses, evaluated at times before $t_0$ from 10 s to
 /// 1 ms (air, $\eta = 1.8\times10^{-5}$ Pa s; k = 1/4, 1/2).
 pub fn eq83(b: &Bench) -> Finding {
@@ -743,14 +814,32 @@ pub fn eq83(b: &Bench) -> Finding {
         let d = disk(k);
         for i in 0..20 {
             let tau = 10f64.powf(1.0 - 4.0 * f64::from(i) / 19.0);
-            let alpha = (2.0 * PI * eta * d.a / d.m * tau).cbrt();
+            let bind = law_bindings(
+                &d,
+                &PowerLaw {
+                    epsilon: 0.0,
+                    beta: 4.0,
+                },
+            )
+            .scalar("eta", eta)
+            .scalar("t_0", 7.27)
+            .scalar("t", 7.27 - tau);
+            // Eq 82 as printed gives alpha; the small-angle precession gives Omega.
+            let eq82 = b.paper.equation(82);
+            let alpha = eq82.chains[0]
+                .sides
+                .last()
+                .and_then(|e| eq82.scalar(e, &bind).ok())
+                .unwrap_or(f64::NAN);
             let reference = (d.g / (d.a * k * alpha)).sqrt();
-            let claimed = b.claim(
-                (d.g / (d.a * k)).sqrt() * (d.m / (2.0 * PI * eta * d.a) / tau).powf(1.0 / 6.0),
+            printed_relations(
+                b,
+                83,
+                &bind.scalar("Omega", reference),
+                reference,
+                &mut worst,
+                &|| format!("k = {k}, t0 - t = {tau:.3e} s"),
             );
-            worst.add(claimed, reference, reference, || {
-                format!("k = {k}, t0 - t = {tau:.3e} s")
-            });
         }
     }
     Finding::from_worst(
