@@ -32,8 +32,8 @@ pub fn built_in_paper() -> &'static Paper {
 /// The equations whose checks take their claimed side from the paper's LaTeX (the others still
 /// carry a Rust transcription, checked by the ±1e-3 sweep of tests/registry.rs).
 pub const FROM_LATEX: &[u32] = &[
-    1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 23, 24, 25, 30, 41, 42, 43, 52, 53, 65, 72, 73, 74,
-    75, 76, 77, 78, 79, 80, 81, 83, 84, 85,
+    1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 23, 24, 25, 27, 28, 29, 30, 31, 32, 38, 39, 40, 41,
+    42, 43, 52, 53, 65, 72, 73, 74, 75, 76, 77, 78, 79, 80, 81, 83, 84, 85,
 ];
 
 /// What a check runs with.
@@ -292,9 +292,25 @@ pub(crate) fn solve_printed(
     hi: f64,
 ) -> Option<f64> {
     use crate::paper::Value;
-    let residual = |x: f64| -> Option<f64> {
+    let bind_at = |x: f64| {
         let mut b = bind.clone();
         b.set(quantity, Value::Scalar(x));
+        b
+    };
+    solve_printed_with(eq, rel, &bind_at, lo, hi)
+}
+
+/// [`solve_printed`] where the bindings depend on the unknown `x` in other ways too (eq 27's
+/// $\omega_{10} = \rho\Omega_0$ with $\Omega_0$ the unknown).
+pub(crate) fn solve_printed_with(
+    eq: &crate::paper::Equation,
+    rel: &crate::paper::Relation<'_>,
+    bind_at: &dyn Fn(f64) -> crate::paper::Bindings<f64>,
+    lo: f64,
+    hi: f64,
+) -> Option<f64> {
+    let residual = |x: f64| -> Option<f64> {
+        let b = bind_at(x);
         let l = eq.scalar(rel.lhs, &b).ok()?;
         let r = eq.scalar(rel.rhs, &b).ok()?;
         let d = l - r;

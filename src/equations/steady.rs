@@ -17,7 +17,10 @@
 //!
 //! The helpers here are shared with `slippage.rs` and `oscillation.rs`.
 
-use super::{add_threshold, printed_threshold, Bench, Equation};
+use super::{
+    add_threshold, printed_relations, printed_threshold, solve_printed, solve_printed_with, Bench,
+    Equation,
+};
 use crate::disk::Disk;
 use crate::finding::{Finding, Method, Tolerance, Worst};
 use crate::model::lab_frame::{Contact, LabFrame, Snapshot};
@@ -221,11 +224,13 @@ pub(super) fn measure_b_r(bench: &Bench, d: &Disk, m: &Motion) -> (f64, f64) {
 pub(super) fn steady_drift(bench: &Bench, d: &Disk, m: &Motion, periods: f64) -> f64 {
     let model = Rolling::<4>::new(*d, Extras::default(), None);
     let t_end = periods * 2.0 * PI / m.precession.abs();
-    let sol = solve(
+    // A start that is not a number (a printed relation with no root, say) cannot be steady.
+    let Ok(sol) = solve(
         Problem::new(&model, 0.0, model.state(m), t_end).sampled(t_end / 200.0),
         &bench.settings(),
-    )
-    .expect("valid settings");
+    ) else {
+        return f64::INFINITY;
+    };
     if !sol.ending.is_complete() {
         return f64::INFINITY;
     }
@@ -259,6 +264,16 @@ pub(super) fn rho_edge(d: &Disk, alpha0: f64, width: f64) -> f64 {
     0.5 * (lo + hi)
 }
 
+/// The disk's constants and the steady tilt, bound to the paper's symbols.
+fn steady_bindings(d: &Disk, alpha0: f64) -> Bindings<f64> {
+    Bindings::new()
+        .scalar("a", d.a)
+        .scalar("k", d.k)
+        .scalar("g", d.g)
+        .scalar("m", d.m)
+        .scalar("alpha_0", alpha0)
+}
+
 /// Whether the model has a steady motion at `alpha0` with $\omega_{10} = \rho\Omega_0$.
 pub(super) fn steady_exists(d: &Disk, alpha0: f64, rho: f64) -> bool {
     let f = |om: f64| rhs(d, &[alpha0, 0.0, om, rho * om])[1];
@@ -286,11 +301,22 @@ fn eq27(b: &Bench) -> Finding {
         let d = disk(k);
         for alpha0 in [0.1, 0.5, 1.0] {
             for rho in rhos(&d, alpha0) {
-                let (s, c) = alpha0.sin_cos();
-                // Eq 27 with omega_10 = rho Omega_0: a quadratic in Omega_0.
-                let om2 = d.g_over_a() * c / (k * s * c + (2.0 * k + 1.0) * rho * s);
+                // Eq 27 as printed, solved for Omega_0 with omega_10 = rho Omega_0.
                 let sign = if rho < 0.0 { -1.0 } else { 1.0 };
-                let om = sign * b.claim(om2.sqrt());
+                let unit = d.g_over_a().sqrt();
+                let eq = b.paper.equation(27);
+                let bind_at = |x: f64| {
+                    steady_bindings(&d, alpha0)
+                        .scalar("Omega_0", x)
+                        .scalar("omega_10", rho * x)
+                };
+                let om = eq
+                    .relations()
+                    .first()
+                    .and_then(|rel| {
+                        solve_printed_with(eq, rel, &bind_at, sign * 1e-3 * unit, sign * 1e3 * unit)
+                    })
+                    .map_or(f64::NAN, |x| b.claim(x));
                 let m = Motion {
                     alpha: alpha0,
                     alpha_dot: 0.0,
@@ -331,26 +357,20 @@ fn eq28(b: &Bench) -> Finding {
                     continue;
                 };
                 let (bb, r) = measure_b_r(b, &d, &m);
-                let om = m.precession;
-                let claims = [
-                    b.claim(bb / d.a * om),
-                    b.claim(om * (r / d.a - alpha0.cos())),
-                ];
-                for (i, cl) in claims.into_iter().enumerate() {
-                    w.add(cl, m.spin, om.abs(), || {
-                        format!(
-                            "{} ({} form); b and r measured on the path",
-                            at(k, alpha0, rho),
-                            ["b", "r"][i]
-                        )
-                    });
-                }
+                let bind = steady_bindings(&d, alpha0)
+                    .scalar("b", bb)
+                    .scalar("r", r)
+                    .scalar("Omega_0", m.precession)
+                    .scalar("omega_10", m.spin);
+                printed_relations(b, 28, &bind, m.precession.abs(), &mut w, &|| {
+                    format!("{}; b and r measured on the path", at(k, alpha0, rho))
+                });
             }
         }
     }
     Finding::from_worst(
         Method::Integration,
-        "omega_10 from eq 28 (b, r measured) against the model's steady spin, relative to |Omega_0|",
+        "both printed relations of eq 28 at the model's steady spin and the measured b, r, relative to |Omega_0|",
         w,
         Tolerance::solver(b.rtol),
         false,
@@ -374,24 +394,18 @@ fn eq29(b: &Bench) -> Finding {
                     continue;
                 };
                 let (bb, r) = measure_b_r(b, &d, &m);
-                let (a, g, c) = (d.a, d.g, alpha0.cos());
-                let cot = 1.0 / alpha0.tan();
-                let claims = [
-                    b.claim(g * cot / (k * a * c + (2.0 * k + 1.0) * bb)),
-                    b.claim(g * cot / ((2.0 * k + 1.0) * r - (k + 1.0) * a * c)),
-                ];
+                let bind = steady_bindings(&d, alpha0)
+                    .scalar("b", bb)
+                    .scalar("r", r)
+                    .scalar("Omega_0", m.precession);
                 let om2 = m.precession * m.precession;
-                for (i, cl) in claims.into_iter().enumerate() {
-                    w.add(cl, om2, om2, || {
-                        format!("{} ({} form)", at(k, alpha0, rho), ["b", "r"][i])
-                    });
-                }
+                printed_relations(b, 29, &bind, om2, &mut w, &|| at(k, alpha0, rho));
             }
         }
     }
     Finding::from_worst(
         Method::Integration,
-        "Omega_0^2 of eq 29 at the measured b (and r) against the model's steady Omega_0^2",
+        "both printed forms of eq 29 at the measured b and r against the model's steady Omega_0^2",
         w,
         Tolerance::solver(b.rtol),
         false,
@@ -444,7 +458,14 @@ fn eq31(b: &Bench) -> Finding {
     for k in KS {
         let d = disk(k);
         for alpha0 in [0.05, 0.3, 0.8, 1.2, 1.5] {
-            let om = b.claim((d.g / (d.a * k * alpha0.sin())).sqrt());
+            let eq = b.paper.equation(31);
+            let unit = d.g_over_a().sqrt();
+            let bind = steady_bindings(&d, alpha0);
+            let om = eq
+                .relations()
+                .first()
+                .and_then(|rel| solve_printed(eq, rel, "Omega_0", &bind, 1e-3 * unit, 1e3 * unit))
+                .map_or(f64::NAN, |x| b.claim(x));
             let m = Motion {
                 alpha: alpha0,
                 alpha_dot: 0.0,
@@ -489,7 +510,7 @@ fn measured_rel_spin(bench: &Bench, d: &Disk, m: &Motion) -> f64 {
 
 /// Shared by eqs 32 and 39: $\omega_{rel} = \Omega_0\cos\alpha_0$ at $b = 0$, against the face
 /// angle's rate measured on an integration of the model's $b = 0$ steady motion.
-fn rel_spin_check(b: &Bench) -> Finding {
+fn rel_spin_check(b: &Bench, n: u32) -> Finding {
     let mut w = Worst::default();
     for k in KS {
         let d = disk(k);
@@ -498,8 +519,10 @@ fn rel_spin_check(b: &Bench) -> Finding {
                 continue;
             };
             let measured = measured_rel_spin(b, &d, &m);
-            let claimed = b.claim(m.precession * alpha0.cos());
-            w.add(claimed, measured, m.precession.abs(), || {
+            let bind = steady_bindings(&d, alpha0)
+                .scalar("Omega_0", m.precession)
+                .scalar("omega_rel", measured);
+            printed_relations(b, n, &bind, m.precession.abs(), &mut w, &|| {
                 format!("k = {k}, alpha0 = {alpha0}, b = 0")
             });
         }
@@ -518,14 +541,14 @@ fn rel_spin_check(b: &Bench) -> Finding {
 /// Integration: the model's $b = 0$ steady motion (Newton on eq 24 at $\omega_{10} = 0$) is
 /// integrated with the face angle over one precession period; its rate is the relative spin.
 fn eq32(b: &Bench) -> Finding {
-    rel_spin_check(b)
+    rel_spin_check(b, 32)
 }
 
 /// Eq 39, $\omega_{rel} = \Omega_0\cos\alpha_0$ (section 5's rederivation of eq 32).
 ///
 /// Integration, as for eq 32.
 fn eq39(b: &Bench) -> Finding {
-    rel_spin_check(b)
+    rel_spin_check(b, 39)
 }
 
 /// Eq 38, $\omega = -\Omega_0\sin\alpha_0$: at $b = 0$ the disk turns about axis
@@ -559,8 +582,10 @@ fn eq38(b: &Bench) -> Finding {
             w.add(f2, 0.0, d.m * d.g, || {
                 format!("k = {k}, alpha0 = {alpha0}: F along axis 2 / mg")
             });
-            let claimed = b.claim(-m.precession * s);
-            w.add(claimed, omega_ref, omega_ref.abs(), || {
+            let bind = steady_bindings(&d, alpha0)
+                .scalar("Omega_0", m.precession)
+                .scalar("omega_3", omega_ref);
+            printed_relations(b, 38, &bind, omega_ref.abs(), &mut w, &|| {
                 format!("k = {k}, alpha0 = {alpha0}, b = 0")
             });
         }
@@ -587,8 +612,10 @@ fn eq40(b: &Bench) -> Finding {
                 continue;
             };
             let om2 = m.precession * m.precession;
-            let claimed = b.claim(d.g / (d.a * k * alpha0.sin()));
-            w.add(claimed, om2, om2, || format!("k = {k}, alpha0 = {alpha0}"));
+            let bind = steady_bindings(&d, alpha0).scalar("Omega_0", m.precession);
+            printed_relations(b, 40, &bind, om2, &mut w, &|| {
+                format!("k = {k}, alpha0 = {alpha0}")
+            });
         }
     }
     Finding::from_worst(
