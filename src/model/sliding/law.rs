@@ -10,7 +10,13 @@
 //! isotropic along the table, so the direction is found by the fixed point
 //! $\hat{\mathbf s}\leftarrow\dot{\mathbf v}_{c,t}/|\dot{\mathbf v}_{c,t}|$, started from
 //! $-\mathbf F_{t}^{\rm stick}/|\mathbf F_{t}^{\rm stick}|$ (the friction at its limit along the
-//! force sticking needs).
+//! force sticking needs). That start is itself the consistent direction in the limit of a
+//! vanishing excess $\delta = |\mathbf F^{\rm stick}_t| - \mu F_z$: with
+//! $\hat{\mathbf u} = \mathbf F^{\rm stick}_t/|\mathbf F^{\rm stick}_t|$, the direction
+//! $\hat{\mathbf s} = -\hat{\mathbf u} + O(\delta)$ gives $\dot{\mathbf v}_{c,t} = \lambda\hat{\mathbf s}$ with
+//! $\lambda = \delta/(\hat{\mathbf u}\cdot A^{-1}\hat{\mathbf u}) > 0$. A slip that starts at
+//! the located edge of the cone ($\delta \approx 0$) therefore starts along $-\hat{\mathbf u}$,
+//! and the iteration is used only while the acceleration is well above round-off.
 
 use super::{horizontal, Mode, Sliding};
 use crate::model::lab_frame::{ContactProblem, Snapshot};
@@ -27,14 +33,19 @@ pub(crate) struct ContactForce {
 }
 
 impl Sliding {
-    /// The slip direction of the flow: $(\mathbf v_{c,t} + v_0\hat{\mathbf s}_0)/|\cdot|$.
-    pub(crate) fn slip_direction(&self, s: &Snapshot, anchor: &[f64; 3]) -> Vector3<f64> {
-        let v = horizontal(&s.contact_velocity) + self.slip_floor() * Vector3::from(*anchor);
+    /// The slip direction of the flow: `anchor` while held, else $\mathbf v_{c,t}/|\mathbf v_{c,t}|$.
+    pub(crate) fn slip_direction(
+        &self,
+        s: &Snapshot,
+        anchor: &[f64; 3],
+        held: bool,
+    ) -> Vector3<f64> {
+        let v = horizontal(&s.contact_velocity);
         let n = v.norm();
-        if n > 0.0 {
-            v / n
-        } else {
+        if held || n == 0.0 {
             Vector3::from(*anchor)
+        } else {
+            v / n
         }
     }
 
@@ -52,9 +63,9 @@ impl Sliding {
                     consistency: 1.0,
                 }
             }
-            Mode::Slip { anchor } => {
+            Mode::Slip { anchor, held } => {
                 let cp = ContactProblem::of(&self.disk, s);
-                let dir = self.slip_direction(s, anchor);
+                let dir = self.slip_direction(s, anchor, *held);
                 self.slip_force(&cp, s, &dir)
             }
         }
@@ -100,6 +111,7 @@ impl Sliding {
         if f.consistency <= 0.0 || f.force.z > 0.0 {
             Mode::Slip {
                 anchor: [dir.x, dir.y, 0.0],
+                held: true,
             }
         } else {
             Mode::Flight
@@ -126,7 +138,10 @@ impl Sliding {
             }
             let acc = horizontal(&(cp.apply(s, &f.force) - cp.b));
             let n = acc.norm();
-            if n == 0.0 {
+            // At the edge of the cone the slip starts with zero acceleration along
+            // -F_t/|F_t| (the limit of the consistent direction as the excess vanishes); a
+            // direction read from an acceleration of round-off size would be noise.
+            if n < 1e-6 * self.disk.g {
                 break;
             }
             let next = acc / n;

@@ -28,11 +28,19 @@
 //! slip -> stick when $\mathbf v_{c,t}$ passes through zero (if then $|A^{-1}\mathbf b|_t \le \mu F_z$;
 //! otherwise the slip restarts in the consistent direction, see `law.rs`); stick -> slip when
 //! $|\mathbf F_t|$ reaches $\mu F_z$; contact -> flight when $F_z$ reaches 0; flight -> contact
-//! at the landing, an impact (`impact.rs`). The slip direction at $\mathbf v_{c,t} = 0$ is not
-//! defined by Coulomb's law; the flow uses
-//! $\hat{\mathbf s} = (\mathbf v_{c,t} + v_0\hat{\mathbf s}_0)/|\cdot|$ with the phase's start
-//! direction $\hat{\mathbf s}_0$ and $v_0 = 10^{-10}\sqrt{ga}$ (6e-11 m/s for the toy disk),
-//! which changes nothing once the slip exceeds a few $v_0$ and fixes the direction at the onset.
+//! at the landing, an impact (`impact.rs`).
+//!
+//! **The slip direction at small speeds.** Coulomb's direction law $\hat{\mathbf s} =
+//! \mathbf v_{c,t}/|\mathbf v_{c,t}|$ is singular where a slip starts or ends: a deviation of
+//! the slip velocity across its direction relaxes at the rate $\mu F_z A_t/|\mathbf v_{c,t}|$,
+//! which diverges, so an explicit integrator stalls (`ode_solvers` declares the problem stiff)
+//! on every slip that starts from rest at the edge of the cone. The model therefore holds the
+//! direction fixed, at the consistent direction the slip started in (`law.rs`) or the one it
+//! had, while the slip is slower than $v_h = 10^{-6}\sqrt{ga}$ (0.6 µm/s for the toy disk), and
+//! lets it follow $\mathbf v_{c,t}$ above $2v_h$ (located events with hysteresis). Within that
+//! band the friction direction is off by at most the angle the slip turns while slower than
+//! 1.2 µm/s; its work is still booked exactly ($\dot W = -\mathbf F_t\cdot\mathbf v_{c,t}$).
+//! Nothing else is regularized: stick and slip are exact Coulomb phases.
 //!
 //! **Drift control** as in the lab-frame model, $\lambda = \sqrt{g/a}$ on the translation: the
 //! whole $\mathbf v_c$ and $h$ while sticking, the vertical part while slipping, none in flight.
@@ -85,10 +93,13 @@ pub struct Slip {
 pub enum Mode {
     /// The contact point at rest: rolling.
     Stick,
-    /// The contact point sliding; `anchor` is the slip direction when the phase began.
+    /// The contact point sliding.
     Slip {
-        /// Unit horizontal vector (lab).
+        /// Unit horizontal vector (lab): the slip direction when the phase began.
         anchor: [f64; 3],
+        /// True while the slip is slower than [`Sliding::hold_speed`] and the friction keeps
+        /// the direction `anchor`; false when it opposes the slip velocity itself.
+        held: bool,
     },
     /// No contact.
     Flight,
@@ -140,10 +151,15 @@ impl Sliding {
         self
     }
 
-    /// The speed scale $v_0 = 10^{-10}\sqrt{ga}$ below which the slip direction is the phase's
-    /// start direction, and by which a guard is offset (m/s).
+    /// $v_0 = 10^{-10}\sqrt{ga}$: the offset of the guard that ends a held slip, and the
+    /// residual speed a located stop leaves (m/s).
     pub fn slip_floor(&self) -> f64 {
         1e-10 * (self.disk.g * self.disk.a).sqrt()
+    }
+
+    /// $v_h = 10^{-6}\sqrt{ga}$: below it the slip direction is held (module documentation).
+    pub fn hold_speed(&self) -> f64 {
+        1e-6 * (self.disk.g * self.disk.a).sqrt()
     }
 
     /// The lab state for the paper's variables `m` rolling (heading 0, centre above the

@@ -1,19 +1,20 @@
 //! The sliding model as a hybrid system: the guards of each mode and the jumps between them
 //! (module documentation of [`super`]), run by [`crate::events::run_hybrid`].
 //!
-//! | mode   | guard (the flow ends where it reaches 0)                            | jump |
-//! |--------|---------------------------------------------------------------------|------|
-//! | stick  | $\mu F_z - |\mathbf F_t|$                                           | slip in the consistent direction (`law.rs`) |
-//! | stick  | $F_z$                                                               | flight |
-//! | slip   | $\mathbf v_{c,t}\cdot\hat{\mathbf s}_0 - \frac12|\mathbf v_{c,t}| + v_0$ | slip stopped: stick if the cone allows, else slip again; slip turned by 60°: slip with a new $\hat{\mathbf s}_0$ |
-//! | slip   | $F_z$                                                               | flight |
-//! | slip   | $m\,\hat{\mathbf z}\cdot A(\hat{\mathbf z} - \mu\hat{\mathbf s})$    | halt: Painlevé's paradox |
-//! | flight | $h + 10^{-12}a$                                                     | impact (`impact.rs`), then contact or flight |
+//! | mode        | guard (the flow ends where it reaches 0)                  | jump |
+//! |-------------|-----------------------------------------------------------|------|
+//! | stick       | $\mu F_z - |\mathbf F_t|$                                 | held slip in the consistent direction (`law.rs`) |
+//! | stick       | $F_z$                                                     | flight |
+//! | slip (free) | $|\mathbf v_{c,t}| - v_h$                                  | held slip along $\mathbf v_{c,t}$ |
+//! | slip (held) | $\mathbf v_{c,t}\cdot\hat{\mathbf s}_0 + v_0$             | stopped: stick if the cone allows, else held slip from rest |
+//! | slip (held) | $2v_h - |\mathbf v_{c,t}|$                                 | free slip |
+//! | slip        | $F_z$                                                     | flight |
+//! | slip        | $m\,\hat{\mathbf z}\cdot A(\hat{\mathbf z} - \mu\hat{\mathbf s})$ | halt: Painlevé's paradox |
+//! | flight      | $h + 10^{-12}a$                                           | impact (`impact.rs`), then contact or flight |
 //!
-//! The slip guard needs no square root of a vanishing speed: where $\mathbf v_{c,t}$ passes
-//! through zero it changes sign along $\hat{\mathbf s}_0$; where the slip only turns, it turns
-//! through 60° first. The two are told apart at the located point by the sign of
-//! $\mathbf v_{c,t}\cdot\hat{\mathbf s}_0$.
+//! A held slip ends where its velocity passes through zero along the held direction
+//! $\hat{\mathbf s}_0$ (offset by $v_0 = 10^{-10}\sqrt{ga}$ so that a slip starting from rest
+//! starts with the guard positive).
 
 use super::{horizontal, Mode, Sliding, DISSIPATED};
 use crate::events::{run_hybrid, Hybrid, HybridProblem, HybridSolution, Jump};
@@ -30,8 +31,12 @@ pub mod guard {
     pub const FRICTION_LIMIT: &str = "the friction needed reaches mu F_z";
     /// Contact ends.
     pub const CONTACT_LOST: &str = "the normal force reaches 0";
-    /// Slip ends or turns.
-    pub const SLIP_ENDS: &str = "the slip velocity passes through 0 or turns by 60 degrees";
+    /// A held slip stops.
+    pub const SLIP_ENDS: &str = "the slip velocity passes through 0";
+    /// A free slip slows to the hold speed.
+    pub const HOLD: &str = "the slip slows below the hold speed";
+    /// A held slip speeds up past twice the hold speed.
+    pub const RELEASE: &str = "the slip speeds up past twice the hold speed";
     /// Coulomb's law has no solution.
     pub const PAINLEVE: &str = "Coulomb's law has no solution (Painleve)";
     /// Flight ends.
@@ -44,27 +49,35 @@ impl Sliding {
     }
 
     /// The mode and state the contact enters at `y`: slip along the contact point's velocity
-    /// when it moves (faster than $10v_0$), otherwise what Coulomb's law allows from rest
-    /// (sticking projects the contact point's residual velocity to zero).
+    /// when it moves (faster than $10v_0$; held below $2v_h$), otherwise what Coulomb's law
+    /// allows from rest (sticking projects the contact point's residual velocity to zero).
     pub fn enter_contact(&self, y: &State<14>) -> (Mode, State<14>) {
         let s = Snapshot::of(self.disk.a, y);
         let vt = horizontal(&s.contact_velocity);
-        if vt.norm() > 10.0 * self.slip_floor() {
-            let dir = vt / vt.norm();
+        let n = vt.norm();
+        if n > 10.0 * self.slip_floor() {
+            let dir = vt / n;
             let cp = ContactProblem::of(&self.disk, &s);
             let f = self.slip_force(&cp, &s, &dir);
             let mode = if f.consistency <= 0.0 || f.force.z > 0.0 {
                 Mode::Slip {
                     anchor: [dir.x, dir.y, 0.0],
+                    held: n < 2.0 * self.hold_speed(),
                 }
             } else {
                 Mode::Flight
             };
             return (mode, *y);
         }
-        match self.mode_from_rest(&s) {
-            Mode::Stick => (Mode::Stick, self.settle(y)),
-            m => (m, *y),
+        self.start_from_rest(y)
+    }
+
+    /// [`Sliding::mode_from_rest`] at `y`, projecting the contact point's residual velocity
+    /// (at most $10v_0$) to zero when it sticks or slips from rest.
+    fn start_from_rest(&self, y: &State<14>) -> (Mode, State<14>) {
+        match self.mode_from_rest(&Snapshot::of(self.disk.a, y)) {
+            Mode::Flight => (Mode::Flight, *y),
+            m => (m, self.settle(y)),
         }
     }
 
@@ -79,7 +92,8 @@ impl Sliding {
         y[DISSIPATED] += d.m * d.g * h;
         let s = Snapshot::of(d.a, &y);
         let vc = s.contact_velocity;
-        let e = if -vc.z > self.bounce_floor() {
+        // A rebound slower than the bounce floor is not flown: the landing is plastic.
+        let e = if -vc.z * self.friction.restitution > self.bounce_floor() {
             self.friction.restitution
         } else {
             0.0
@@ -154,24 +168,35 @@ impl Hybrid<14> for Sliding {
                         .z
                 }),
             ],
-            Mode::Slip { anchor } => {
-                let floor = self.slip_floor();
-                let s0 = Vector3::from(anchor);
-                vec![
-                    Event::new(guard::SLIP_ENDS, move |y: &State<14>| {
-                        let vt = horizontal(&Snapshot::of(a, y).contact_velocity);
-                        vt.dot(&s0) - 0.5 * vt.norm() + floor
-                    }),
+            Mode::Slip { anchor, held } => {
+                let mode = Mode::Slip { anchor, held };
+                let mut g = vec![
+                    if held {
+                        let floor = self.slip_floor();
+                        let s0 = Vector3::from(anchor);
+                        Event::new(guard::SLIP_ENDS, move |y: &State<14>| {
+                            horizontal(&Snapshot::of(a, y).contact_velocity).dot(&s0) + floor
+                        })
+                    } else {
+                        let vh = self.hold_speed();
+                        Event::new(guard::HOLD, move |y: &State<14>| {
+                            horizontal(&Snapshot::of(a, y).contact_velocity).norm() - vh
+                        })
+                    },
                     Event::new(guard::CONTACT_LOST, move |y: &State<14>| {
-                        self.contact_force(&mode_slip(anchor), &Snapshot::of(a, y))
-                            .force
-                            .z
+                        self.contact_force(&mode, &Snapshot::of(a, y)).force.z
                     }),
                     Event::new(guard::PAINLEVE, move |y: &State<14>| {
-                        self.contact_force(&mode_slip(anchor), &Snapshot::of(a, y))
-                            .consistency
+                        self.contact_force(&mode, &Snapshot::of(a, y)).consistency
                     }),
-                ]
+                ];
+                if held {
+                    let vh2 = 2.0 * self.hold_speed();
+                    g.push(Event::new(guard::RELEASE, move |y: &State<14>| {
+                        vh2 - horizontal(&Snapshot::of(a, y).contact_velocity).norm()
+                    }));
+                }
+                g
             }
             Mode::Flight => {
                 let margin = self.landing_margin();
@@ -192,6 +217,7 @@ impl Hybrid<14> for Sliding {
                 Jump::To {
                     mode: Mode::Slip {
                         anchor: [dir.x, dir.y, 0.0],
+                        held: true,
                     },
                     y: *y,
                     what: "stick -> slip".into(),
@@ -207,24 +233,30 @@ impl Hybrid<14> for Sliding {
                     what: "lift-off".into(),
                 }
             }
-            (Mode::Slip { anchor }, 0) => {
-                let vt = horizontal(&s.contact_velocity);
-                let n = vt.norm();
-                if n > 10.0 * self.slip_floor() && vt.dot(&Vector3::from(anchor)) > 0.0 {
-                    let dir = vt / n;
-                    return Jump::To {
-                        mode: Mode::Slip {
-                            anchor: [dir.x, dir.y, 0.0],
-                        },
-                        y: *y,
-                        what: "slip turned".into(),
-                    };
-                }
+            (Mode::Slip { held: true, .. }, 0) => {
+                // Stopped, or only turned away from the held direction.
                 let (mode, y) = self.enter_contact(y);
                 Jump::To {
                     mode,
                     y,
                     what: format!("slip -> {}", mode.name()),
+                }
+            }
+            (Mode::Slip { held, .. }, 0 | 3) => {
+                let vt = horizontal(&s.contact_velocity);
+                let dir = vt / vt.norm();
+                Jump::To {
+                    mode: Mode::Slip {
+                        anchor: [dir.x, dir.y, 0.0],
+                        held: !held,
+                    },
+                    y: *y,
+                    what: if held {
+                        "slip direction released"
+                    } else {
+                        "slip direction held"
+                    }
+                    .into(),
                 }
             }
             (Mode::Slip { .. }, _) => Jump::Halt(format!(
@@ -235,8 +267,4 @@ impl Hybrid<14> for Sliding {
             (Mode::Flight, _) => self.land(y),
         }
     }
-}
-
-fn mode_slip(anchor: [f64; 3]) -> Mode {
-    Mode::Slip { anchor }
 }
