@@ -302,3 +302,103 @@ fn a_disk_thrown_off_the_table_flies_lands_and_loses_energy_only_at_impacts_and_
         }
     }
 }
+
+const USER_SCENE: &str = "name: mine
+disk: { radius: 0.0375, k: 0.25, mass: 0.4 }
+model: sliding
+friction: { mu: 0.3, restitution: 0.0 }
+start: { explicit: { alpha: 1.5707963267948966 }, slip: { forward: 1.0 } }
+stop: { time: 0.3 }
+record: [slip_speed, cm_speed, normal_force, contact_gap, energy, dissipated]
+";
+
+#[test]
+fn a_user_sliding_scene_runs_and_records_the_contact_quantities() {
+    use rolling_disk::scene::Scene;
+    let scene = Scene::parse(USER_SCENE, "mine.yaml").unwrap();
+    let r = rolling_disk::run::run(&scene, None).unwrap();
+    assert_eq!(r.ending, Ending::TimeReached);
+    assert_eq!(
+        r.columns,
+        [
+            "t_s",
+            "slip_speed_m_per_s",
+            "cm_speed_m_per_s",
+            "normal_force_N",
+            "contact_gap_m",
+            "energy_J",
+            "dissipated_J"
+        ]
+    );
+    assert_eq!(r.contact_events.len(), 1, "{:?}", r.contact_events);
+    let slip = r.column("slip_speed_m_per_s").unwrap();
+    assert!((slip[0] - 1.0).abs() < 1e-12);
+    assert!(slip.last().unwrap().abs() < 1e-9);
+    let fz = r.column("normal_force_N").unwrap();
+    assert!(
+        fz.iter().all(|f| (f - 0.4 * 9.81).abs() < 1e-9),
+        "upright: F_z = m g"
+    );
+    let (e, w) = (
+        r.column("energy_J").unwrap(),
+        r.column("dissipated_J").unwrap(),
+    );
+    for (e, w) in e.iter().zip(&w) {
+        assert!((e + w - r.energy.0).abs() < 1e-9 * r.energy.0);
+    }
+}
+
+#[test]
+fn bad_sliding_scenes_are_refused_with_the_key_and_the_fix() {
+    use rolling_disk::scene::Scene;
+    let cases: [(&str, &str, &str, usize); 6] = [
+        ("mu: 0.3", "mu: -0.1", "mu must be a number of 0 or more", 4),
+        (
+            "restitution: 0.0",
+            "restitution: 1.5",
+            "restitution must lie between 0",
+            4,
+        ),
+        ("model: sliding", "model: rolling", "has no friction law", 4),
+        (
+            "model: sliding\nfriction: { mu: 0.3, restitution: 0.0 }",
+            "model: rolling",
+            "cannot start slipping",
+            4,
+        ),
+        (
+            "friction: { mu: 0.3, restitution: 0.0 }\n",
+            "",
+            "needs a friction law",
+            3,
+        ),
+        (
+            "model: sliding",
+            "model: lab-frame",
+            "has no friction law",
+            4,
+        ),
+    ];
+    for (from, to, says, line) in cases {
+        let src = USER_SCENE.replace(from, to);
+        let e = Scene::parse(&src, "mine.yaml").unwrap_err();
+        let msg = e.to_string();
+        assert!(msg.contains(says), "{from} -> {to}: {msg}");
+        assert!(msg.starts_with(&format!("mine.yaml:{line}:")), "{msg}");
+    }
+    let rolling_with_quantity = "name: r
+disk: { radius: 0.0375, k: 0.25, mass: 0.4 }
+model: rolling
+start: { steady: { alpha0: 0.3, b: 0.0 } }
+stop: { time: 0.1 }
+record: [alpha, slip_speed]
+";
+    let e = Scene::parse(rolling_with_quantity, "r.yaml").unwrap_err();
+    assert!(
+        e.to_string().contains("slip_speed needs the contact point"),
+        "{e}"
+    );
+    let typo = USER_SCENE.replace("restitution", "restitutoin");
+    let e = Scene::parse(&typo, "mine.yaml").unwrap_err();
+    assert!(e.to_string().contains("unknown field"), "{e}");
+}

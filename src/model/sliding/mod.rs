@@ -48,6 +48,7 @@
 mod flow;
 mod impact;
 mod law;
+pub mod scene;
 mod switching;
 #[cfg(test)]
 mod tests;
