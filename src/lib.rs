@@ -15,6 +15,7 @@ pub mod events;
 pub mod experiment;
 pub mod figures;
 pub mod finding;
+pub mod friction;
 pub mod model;
 pub mod numerics;
 pub mod output;

@@ -2,7 +2,6 @@
 //! the scene's quantities in the mode of each recorded point.
 
 use super::{Flow, Mode, Sliding, SlidingRun};
-use crate::model::lab_frame::Snapshot;
 use crate::model::Model;
 use crate::run::Run;
 use crate::scene::Scene;
@@ -52,8 +51,7 @@ pub fn model(scene: &Scene) -> Sliding {
 /// Runs a sliding scene: the scene's stop events hold in every mode.
 pub fn run(scene: &Scene) -> Result<Run, SettingsError> {
     let model = model(scene);
-    let a = model.disk.a;
-    let alpha = move |y: &State<14>| Snapshot::of(a, y).alpha();
+    let alpha = |y: &State<14>| tilt(y);
     let below = scene.stop.alpha_below;
     let stops = move || {
         let mut v = vec![
@@ -74,6 +72,18 @@ pub fn run(scene: &Scene) -> Result<Run, SettingsError> {
     let y0 = model.start_state(&scene.start);
     let sol = model.run(&y0, scene.stop.time, &scene.settings, scene.sample, &stops)?;
     Ok(record(&model, scene, &sol))
+}
+
+/// The paper's $\alpha$ straight from the quaternion (the stop events are evaluated at every
+/// step end, so they skip the full snapshot of the geometry): the symmetry axis in the lab is
+/// $\hat{\mathbf n} = R\,\mathbf e_x$, $\cos\alpha = -n_z$, $\sin\alpha = |\mathbf n_h|$.
+fn tilt(y: &State<14>) -> f64 {
+    let (w, i, j, k) = (y[0], y[1], y[2], y[3]);
+    let q2 = w * w + i * i + j * j + k * k;
+    let nx = (w * w + i * i - j * j - k * k) / q2;
+    let ny = 2.0 * (i * j + w * k) / q2;
+    let nz = 2.0 * (i * k - w * j) / q2;
+    nx.hypot(ny).atan2(-nz)
 }
 
 fn record(model: &Sliding, scene: &Scene, sol: &SlidingRun) -> Run {
