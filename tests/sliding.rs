@@ -79,6 +79,11 @@ fn upright_wheel_thrown_sliding_rolls_at_the_closed_form_time_and_speed() {
             "v0 {v0} mu {mu} k {k}: rolls at {} s, closed form {t_roll} s",
             s.t
         );
+        eprintln!(
+            "upright v0 {v0} mu {mu} k {k}: rolls at {:.12} s, closed form {t_roll:.12} s ({:.1e})",
+            s.t,
+            s.t - t_roll
+        );
         let (t, y) = (run.t.last().unwrap(), run.y.last().unwrap());
         assert!(*t > t_roll);
         let v = State::<3>::new(y[10], y[11], y[12]).norm();
@@ -150,6 +155,7 @@ fn mu_zero_is_the_frictionless_model() {
         spin: 4.0,
     };
     let worst = compare_with_lab(&model, &lab, &m);
+    eprintln!("mu = 0 vs lab-frame frictionless over 10 s: {worst:.2e}");
     assert!(worst < SOLVER * 10.0, "mu = 0 vs frictionless: {worst:e}");
 }
 
@@ -167,6 +173,7 @@ fn large_mu_is_the_rolling_model() {
     let mut m = steady_motion(&d, 0.3, 0.01).unwrap();
     m.alpha += 1e-3;
     let worst = compare_with_lab(&model, &lab, &m);
+    eprintln!("mu = 1e3 vs lab-frame rolling over 10 s: {worst:.2e}");
     assert!(worst < SOLVER * 10.0, "mu = 1e3 vs rolling: {worst:e}");
 }
 
@@ -239,7 +246,8 @@ fn energy_balance_closes_and_energy_never_rises_in_slip_and_stick() {
         assert_eq!(run.ending, Ending::TimeReached, "{}", run.ending);
         let (worst, rise) = balance(&model, &run);
         eprintln!(
-            "mu {mu} slip {slip:?}: {} switches, |E + W - E0|/E0 = {worst:.2e}, largest rise {rise:.2e}, W = {:.4e} J",
+            "mu {mu} slip {slip:?}: {} physical switches ({} with the held/released slip direction), |E + W - E0|/E0 = {worst:.2e}, largest rise {rise:.2e}, W = {:.4e} J",
+            rolling_disk::model::sliding::scene::contact_events(&run).len(),
             run.switches.len(),
             run.y.last().unwrap()[DISSIPATED]
         );
