@@ -237,12 +237,6 @@ fn energy_balance_closes_and_energy_never_rises_in_slip_and_stick() {
         ),
     ] {
         let (model, run) = tilted_slipping(mu, slip);
-        for sw in run.switches.iter().take(20) {
-            eprintln!(
-                "{:.12} {} | {:?} -> {:?} {}",
-                sw.t, sw.guard, sw.from, sw.to, sw.what
-            );
-        }
         assert_eq!(run.ending, Ending::TimeReached, "{}", run.ending);
         let (worst, rise) = balance(&model, &run);
         eprintln!(
@@ -280,12 +274,6 @@ fn a_disk_thrown_off_the_table_flies_lands_and_loses_energy_only_at_impacts_and_
         let run = model
             .run(&y0, 2.0, &settings(), Some(0.001), &no_stops)
             .unwrap();
-        for sw in run.switches.iter().take(20) {
-            eprintln!(
-                "{:.12} {} | {:?} -> {:?} {}",
-                sw.t, sw.guard, sw.from, sw.to, sw.what
-            );
-        }
         let flights = run.switches.iter().filter(|s| s.to == Mode::Flight).count();
         let landings = run
             .switches
