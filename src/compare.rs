@@ -40,6 +40,11 @@ pub fn lab_frame_for(model: ModelKind) -> Result<ModelKind, String> {
         ModelKind::Frictionless | ModelKind::LabFrameFrictionless => {
             Ok(ModelKind::LabFrameFrictionless)
         }
+        ModelKind::Sliding => Err(
+            "a sliding scene already runs in the lab frame; compare it with rolling and \
+             frictionless runs by setting mu large or 0 (tests/sliding.rs does)"
+                .to_string(),
+        ),
         ModelKind::Dissipative | ModelKind::Adiabatic => Err(format!(
             "the lab-frame model has no dissipation, so a {model} scene cannot be compared with it: \
              compare a rolling or frictionless scene"

@@ -47,6 +47,20 @@ pub(crate) fn dispatch<V: Visit>(scene: &Scene, v: V) -> V::Out {
         }
         ModelKind::LabFrame => v.visit(&LabFrame::new(d, Contact::Rolling), scene),
         ModelKind::LabFrameFrictionless => v.visit(&LabFrame::new(d, Contact::Frictionless), scene),
+        // The sliding model switches between flows; what is generic over one model (the cost
+        // of a right-hand side, work-precision) sees the flow of the mode it starts in. Runs go
+        // through `crate::model::sliding::scene::run`.
+        ModelKind::Sliding => {
+            let model = crate::model::sliding::scene::model(scene);
+            let (mode, _) = model.enter_contact(&model.start_state(&scene.start));
+            v.visit(
+                &crate::model::sliding::Flow {
+                    model: &model,
+                    mode,
+                },
+                scene,
+            )
+        }
     }
 }
 

@@ -279,7 +279,7 @@ fn print_summary(scene: &Scene, r: &Run) {
         "final       alpha = {:.12} rad, alpha_dot = {:.12e} rad/s, Omega = {:.12} rad/s, omega_1 = {:.12} rad/s",
         m.alpha, m.alpha_dot, m.precession, m.spin
     );
-    let label = if scene.dissipation.is_some() {
+    let label = if scene.dissipation.is_some() || scene.friction.is_some() {
         "energy lost"
     } else {
         "energy drift"
@@ -292,6 +292,15 @@ fn print_summary(scene: &Scene, r: &Run) {
         "work        {} right-hand-side evaluations ({} more to locate events and sample), {} accepted and {} rejected steps",
         r.stats.evaluations, r.stats.extra_evaluations, r.stats.accepted, r.stats.rejected
     );
+    if scene.model == rolling_disk::scene::ModelKind::Sliding {
+        println!(
+            "contact     {} switches and impacts",
+            r.contact_events.len()
+        );
+        for e in &r.contact_events {
+            println!("  t = {:.9} s  {} -> {}: {}", e.t, e.from, e.to, e.what);
+        }
+    }
 }
 
 /// The paper to check: the built-in copy, or the one in `dir` (read once for the whole run).

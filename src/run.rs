@@ -30,10 +30,16 @@ pub struct Run {
     /// Largest $|E(t) - E(0)| / |E(0)|$ over the recorded times (a drift for conservative
     /// models, the energy lost for dissipative ones).
     pub energy_change: f64,
+    /// The contact's switches, flights and impacts (sliding model; empty otherwise).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub contact_events: Vec<crate::model::sliding::scene::ContactEvent>,
 }
 
 /// Runs a scene. `progress` receives the simulated time now and then.
 pub fn run(scene: &Scene, progress: Option<&dyn Fn(f64)>) -> Result<Run, SettingsError> {
+    if scene.model == ModelKind::Sliding {
+        return crate::model::sliding::scene::run(scene);
+    }
     dispatch(scene, Integrate { progress })
 }
 
@@ -90,6 +96,7 @@ fn record<M: Model<N>, const N: usize>(
         last: model.motion(&y_end),
         energy: (e0, model.energy(&y_end)),
         energy_change,
+        contact_events: Vec::new(),
     }
 }
 

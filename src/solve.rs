@@ -183,6 +183,13 @@ pub enum Ending {
         /// Where.
         t: f64,
     },
+    /// A hybrid run ([`crate::events`]) could not go on at time `t`, for the reason given.
+    Halted {
+        /// Where.
+        t: f64,
+        /// Why, in a sentence.
+        reason: String,
+    },
 }
 
 impl Ending {
@@ -210,6 +217,7 @@ impl fmt::Display for Ending {
             Ending::NonFinite { t } => {
                 write!(f, "the state became NaN or infinite at t = {t:.9} s")
             }
+            Ending::Halted { t, reason } => write!(f, "halted at t = {t:.9} s: {reason}"),
         }
     }
 }

@@ -166,9 +166,9 @@ fn every_kind_of_bad_scene_gets_a_located_actionable_error() {
             &["time bound", "add `time"],
         ),
         (
-            GOOD.replace("model: rolling", "model: sliding"),
+            GOOD.replace("model: rolling", "model: skidding"),
             "bad.yaml:3",
-            &["unknown variant `sliding`", "rolling"],
+            &["unknown variant `skidding`", "rolling"],
         ),
         (
             GOOD.replace("record: [alpha]", "record: [alpah]"),

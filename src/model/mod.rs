@@ -11,6 +11,7 @@ pub mod frictionless;
 pub mod lab_frame;
 pub mod layout;
 pub mod rolling;
+pub mod sliding;
 pub mod steady;
 
 pub use layout::{Extras, Layout};
@@ -59,11 +60,22 @@ pub enum Quantity {
     NormalForce,
     /// Horizontal contact (friction) force along $\hat{\mathbf r}$ and $\hat{\mathbf 2}$ (N).
     Friction,
+    /// Speed of the material point at the contact along the table, $|\mathbf v_{c,h}|$ (m/s):
+    /// zero while rolling (lab-frame and sliding models).
+    SlipSpeed,
+    /// Speed of the centre of mass, $|\mathbf v|$ (m/s) (lab-frame and sliding models).
+    CmSpeed,
+    /// Height of the rim's lowest point above the table (m): zero in contact, positive in flight
+    /// (lab-frame and sliding models).
+    ContactGap,
+    /// Energy taken out by the contact so far (J): the work of sliding friction plus the losses
+    /// of impacts (sliding model; zero in the lab-frame models, whose contact does no work).
+    Dissipated,
 }
 
 impl Quantity {
     /// Every quantity, in column order.
-    pub const ALL: [Quantity; 11] = [
+    pub const ALL: [Quantity; 15] = [
         Quantity::Alpha,
         Quantity::AlphaDot,
         Quantity::Precession,
@@ -75,6 +87,10 @@ impl Quantity {
         Quantity::Lz,
         Quantity::NormalForce,
         Quantity::Friction,
+        Quantity::SlipSpeed,
+        Quantity::CmSpeed,
+        Quantity::ContactGap,
+        Quantity::Dissipated,
     ];
 
     /// CSV column headers (with units) that this quantity produces.
@@ -91,6 +107,10 @@ impl Quantity {
             Quantity::Lz => &["lz_kg_m2_per_s"],
             Quantity::NormalForce => &["normal_force_N"],
             Quantity::Friction => &["friction_r_N", "friction_2_N"],
+            Quantity::SlipSpeed => &["slip_speed_m_per_s"],
+            Quantity::CmSpeed => &["cm_speed_m_per_s"],
+            Quantity::ContactGap => &["contact_gap_m"],
+            Quantity::Dissipated => &["dissipated_J"],
         }
     }
 
@@ -108,6 +128,10 @@ impl Quantity {
             Quantity::Lz => "lz",
             Quantity::NormalForce => "normal_force",
             Quantity::Friction => "friction",
+            Quantity::SlipSpeed => "slip_speed",
+            Quantity::CmSpeed => "cm_speed",
+            Quantity::ContactGap => "contact_gap",
+            Quantity::Dissipated => "dissipated",
         }
     }
 }

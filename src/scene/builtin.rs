@@ -43,6 +43,18 @@ pub const BUILTIN: &[(&str, &str)] = &[
         "benchmark",
         include_str!("../../paper/scenes/benchmark.yaml"),
     ),
+    (
+        "wheel-thrown-sliding",
+        include_str!("../../paper/scenes/wheel-thrown-sliding.yaml"),
+    ),
+    (
+        "slip-stick",
+        include_str!("../../paper/scenes/slip-stick.yaml"),
+    ),
+    (
+        "coin-bounce",
+        include_str!("../../paper/scenes/coin-bounce.yaml"),
+    ),
 ];
 
 /// The source of the built-in scene `name`.

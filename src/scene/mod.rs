@@ -14,10 +14,12 @@
 //! meaning; the error names the file, the line and what to change.
 
 pub mod builtin;
+mod friction;
 pub mod locate;
 
 use crate::disk::{Disk, DiskError};
 use crate::model::dissipation::PowerLaw;
+use crate::model::sliding::{Friction, Slip};
 use crate::model::steady::{rolling_straight, steady_motion, vertical_spin, SteadyError};
 use crate::model::{Extras, Motion, Quantity};
 use crate::solve::{Method, Settings};
@@ -64,6 +66,8 @@ pub enum ModelKind {
     LabFrame,
     /// The independent Newton-Euler model in lab coordinates, without friction.
     LabFrameFrictionless,
+    /// The lab-frame model with Coulomb friction, stick/slip and flight (issue 14).
+    Sliding,
 }
 
 impl fmt::Display for ModelKind {
@@ -75,6 +79,7 @@ impl fmt::Display for ModelKind {
             ModelKind::Adiabatic => "adiabatic",
             ModelKind::LabFrame => "lab-frame",
             ModelKind::LabFrameFrictionless => "lab-frame-frictionless",
+            ModelKind::Sliding => "sliding",
         })
     }
 }
@@ -89,6 +94,8 @@ struct SceneSpec {
     model: ModelKind,
     #[serde(default)]
     dissipation: Option<PowerLaw>,
+    #[serde(default)]
+    friction: Option<friction::FrictionSpec>,
     start: StartSpec,
     stop: StopSpec,
     #[serde(default)]
@@ -121,6 +128,7 @@ struct StartSpec {
     rolling_straight: Option<RollingStraightSpec>,
     explicit: Option<MotionSpec>,
     perturb: Option<MotionSpec>,
+    slip: Option<friction::SlipSpec>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -233,6 +241,10 @@ pub struct Scene {
     pub model: ModelKind,
     /// The dissipation law (dissipative and adiabatic models).
     pub dissipation: Option<PowerLaw>,
+    /// The friction law (sliding model).
+    pub friction: Option<Friction>,
+    /// The contact point's velocity relative to rolling at the start (sliding model).
+    pub slip: Slip,
     /// The start, perturbation included.
     pub start: Motion,
     /// When to stop.
@@ -329,6 +341,7 @@ impl Validator<'_> {
             self.err(&["disk", key], format!("disk: {e}"))
         })?;
         let dissipation = self.dissipation(&s)?;
+        let (friction, slip) = self.friction(&s)?;
         let start = self.start(&s.start, &disk, s.model)?;
         let stop = self.stop(&s.stop, &start, s.model)?;
         let record = self.record(&s.record, s.model)?;
@@ -362,6 +375,8 @@ impl Validator<'_> {
             disk,
             model: s.model,
             dissipation,
+            friction,
+            slip,
             start,
             stop,
             record,
@@ -544,6 +559,7 @@ impl Validator<'_> {
                     ),
                 ));
             }
+            self.contact_quantity(q, model)?;
             out.push(q);
         }
         Ok(out)

@@ -15,20 +15,61 @@
 
 use super::geometry::Snapshot;
 use super::{Contact, LabFrame};
+use crate::disk::Disk;
 use nalgebra::Vector3;
 
-impl LabFrame {
-    /// $\mathbf F$ in the lab for the geometry `s`, from the exact contact condition (the
-    /// stabilisation acts on the translation only, see [`LabFrame::drift_correction`]).
-    pub(super) fn force(&self, s: &Snapshot) -> Vector3<f64> {
-        let d = &self.disk;
+/// The contact condition $\dot{\mathbf v}_c = A\mathbf F - \mathbf b$ at one instant: the free
+/// acceleration term $\mathbf b$ (lab) and the diagonal of $A$ in the triad. Shared with the
+/// sliding model ([`crate::model::sliding`]), which solves the same condition under other laws.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct ContactProblem {
+    /// $\mathbf b = g\hat{\mathbf z} - \dot{\boldsymbol\omega}_0\times\boldsymbol\rho - \boldsymbol\omega\times\dot{\boldsymbol\rho}$ (m/s²).
+    pub b: Vector3<f64>,
+    /// $A_{11} = 1/m + a^2/I_{22}$ (along $\hat{\mathbf 1}$).
+    pub a1: f64,
+    /// $A_{22} = 1/m + a^2/I_{11}$ (along $\hat{\mathbf 2}$).
+    pub a22: f64,
+    /// $A_{33} = 1/m$ (along $\hat{\mathbf 3}$).
+    pub a3: f64,
+}
+
+impl ContactProblem {
+    /// The contact condition of disk `d` in the geometry `s`.
+    pub(crate) fn of(d: &Disk, s: &Snapshot) -> Self {
         let (i1, i2) = (d.i11(), d.i22());
         let spin = s.omega.dot(&s.e1);
         let w_dot_free = -(i1 - i2) / i2 * spin * s.omega.cross(&s.e1);
         let b = d.g * Vector3::z() - w_dot_free.cross(&s.rho) - s.omega.cross(&s.rho_dot);
         let a2 = d.a * d.a;
         let inv_m = 1.0 / d.m;
-        let (a1, a22, a3) = (inv_m + a2 / i2, inv_m + a2 / i1, inv_m);
+        Self {
+            b,
+            a1: inv_m + a2 / i2,
+            a22: inv_m + a2 / i1,
+            a3: inv_m,
+        }
+    }
+
+    /// $A\mathbf x$ for a lab vector $\mathbf x$, with the triad of `s`.
+    pub(crate) fn apply(&self, s: &Snapshot, x: &Vector3<f64>) -> Vector3<f64> {
+        s.e1 * (self.a1 * x.dot(&s.e1))
+            + s.e2 * (self.a22 * x.dot(&s.e2))
+            + s.e3 * (self.a3 * x.dot(&s.e3))
+    }
+
+    /// $A^{-1}\mathbf x$ for a lab vector $\mathbf x$, with the triad of `s`.
+    pub(crate) fn solve(&self, s: &Snapshot, x: &Vector3<f64>) -> Vector3<f64> {
+        s.e1 * (x.dot(&s.e1) / self.a1)
+            + s.e2 * (x.dot(&s.e2) / self.a22)
+            + s.e3 * (x.dot(&s.e3) / self.a3)
+    }
+}
+
+impl LabFrame {
+    /// $\mathbf F$ in the lab for the geometry `s`, from the exact contact condition (the
+    /// stabilisation acts on the translation only, see [`LabFrame::drift_correction`]).
+    pub(super) fn force(&self, s: &Snapshot) -> Vector3<f64> {
+        let ContactProblem { b, a1, a22, a3 } = ContactProblem::of(&self.disk, s);
         match self.contact {
             Contact::Rolling => {
                 s.e1 * (b.dot(&s.e1) / a1)

@@ -68,7 +68,9 @@ impl Snapshot {
     /// $\dot{\hat{\mathbf n}} = \boldsymbol\omega\times\hat{\mathbf n}$ alone:
     /// $\dot{\mathbf u} = (\hat{\mathbf z}\cdot\dot{\hat{\mathbf n}})\hat{\mathbf n} + (\hat{\mathbf z}\cdot\hat{\mathbf n})\dot{\hat{\mathbf n}}$,
     /// $\dot{\hat{\mathbf 3}} = \left(\dot{\mathbf u} - \hat{\mathbf 3}(\hat{\mathbf 3}\cdot\dot{\mathbf u})\right)/|\mathbf u|$.
-    pub fn of(a: f64, y: &State<13>) -> Self {
+    /// Only the first 13 states are read, so a model that carries more (the sliding model's
+    /// dissipated work) reads its geometry here too.
+    pub fn of<const N: usize>(a: f64, y: &State<N>) -> Self {
         let q = Quaternion::new(y[Q], y[Q + 1], y[Q + 2], y[Q + 3]);
         let rotation = UnitQuaternion::new_normalize(q).to_rotation_matrix();
         let omega_body = vec3(y, W);
@@ -194,6 +196,6 @@ impl LabFrame {
 }
 
 /// $\mathrm{diag}(I_{11}, I_{22}, I_{33})$ in body axes (eq 18's moments).
-pub(super) fn inertia(disk: &Disk) -> Vector3<f64> {
+pub(crate) fn inertia(disk: &Disk) -> Vector3<f64> {
     Vector3::new(disk.i11(), disk.i22(), disk.i22())
 }

@@ -52,6 +52,9 @@
 
 mod contact;
 mod geometry;
+
+pub(crate) use contact::ContactProblem;
+pub(crate) use geometry::inertia;
 #[cfg(test)]
 mod tests;
 
@@ -60,7 +63,7 @@ pub use geometry::Snapshot;
 use crate::disk::Disk;
 use crate::model::{Extras, Layout, Model, Motion, Quantity};
 use crate::solve::{Dynamics, State};
-use geometry::{inertia, Q, V, W, X};
+use geometry::{Q, V, W, X};
 use nalgebra::{Quaternion, Vector3};
 
 /// What the table does at the contact point.
@@ -179,6 +182,10 @@ impl Model<13> for LabFrame {
                 let f = self.force(&s);
                 out.extend_from_slice(&[f.dot(&s.r), f.dot(&s.e2)]);
             }
+            Quantity::SlipSpeed => out.push(s.contact_velocity.xy().norm()),
+            Quantity::CmSpeed => out.push(s.velocity.norm()),
+            Quantity::ContactGap => out.push(s.height),
+            Quantity::Dissipated => out.push(0.0),
         }
         true
     }

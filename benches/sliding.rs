@@ -1,0 +1,29 @@
+//! The sliding model's cost (issue 14: a 10 s scene with slip-stick switching must run in under
+//! 20 ms in release): the built-in `slip-stick` scene end to end through
+//! [`rolling_disk::run::run`], recording every accepted step, and with the scene's own 1 ms
+//! sampling (10 001 rows, each re-integrated from the step before it).
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use rolling_disk::run::run;
+use rolling_disk::scene::Scene;
+use std::hint::black_box;
+
+fn sliding(c: &mut Criterion) {
+    let mut group = c.benchmark_group("sliding");
+    group.sample_size(10);
+    let sampled = Scene::load("slip-stick").expect("a built-in scene");
+    let steps = Scene {
+        sample: None,
+        ..sampled.clone()
+    };
+    group.bench_function("slip-stick 10 s, steps", |b| {
+        b.iter(|| black_box(run(black_box(&steps), None).expect("runs")))
+    });
+    group.bench_function("slip-stick 10 s, sampled every 1 ms", |b| {
+        b.iter(|| black_box(run(black_box(&sampled), None).expect("runs")))
+    });
+    group.finish();
+}
+
+criterion_group!(benches, sliding);
+criterion_main!(benches);

@@ -1,0 +1,118 @@
+//! The smooth flow of one mode: Newton-Euler with the mode's contact force (module
+//! documentation of [`super`]), and what a state of that mode records.
+
+use super::{energy_of, horizontal, Mode, Sliding, DISSIPATED};
+use crate::model::lab_frame::{inertia, Snapshot};
+use crate::model::{Layout, Model, Motion, Quantity};
+use crate::solve::{Dynamics, State};
+use nalgebra::{Quaternion, Vector3};
+
+/// The sliding model in one mode.
+#[derive(Debug, Clone, Copy)]
+pub struct Flow<'a> {
+    /// The model.
+    pub model: &'a Sliding,
+    /// The mode.
+    pub mode: Mode,
+}
+
+impl Flow<'_> {
+    /// The geometry of `y`.
+    pub fn snapshot(&self, y: &State<14>) -> Snapshot {
+        Snapshot::of(self.model.disk.a, y)
+    }
+
+    /// The contact force in this mode (lab, N).
+    pub fn force(&self, y: &State<14>) -> Vector3<f64> {
+        self.model
+            .contact_force(&self.mode, &self.snapshot(y))
+            .force
+    }
+
+    /// The drift control added to $\dot{\mathbf v}$ in this mode.
+    fn drift_correction(&self, s: &Snapshot) -> Vector3<f64> {
+        let lambda = self.model.stabilisation;
+        let z = Vector3::z();
+        let v = match self.mode {
+            Mode::Stick => s.contact_velocity,
+            Mode::Slip { .. } => s.contact_velocity.z * z,
+            Mode::Flight => return Vector3::zeros(),
+        };
+        -2.0 * lambda * v - lambda * lambda * s.height * z
+    }
+}
+
+impl Dynamics<14> for Flow<'_> {
+    fn rhs(&self, y: &State<14>, dy: &mut State<14>) {
+        let s = self.snapshot(y);
+        let d = &self.model.disk;
+        let f = self.model.contact_force(&self.mode, &s).force;
+        let i = inertia(d);
+        let torque_body = s.rotation.inverse_transform_vector(&s.rho.cross(&f));
+        let w = s.omega_body;
+        let w_dot = (torque_body - w.cross(&i.component_mul(&w))).component_div(&i);
+        let q = Quaternion::new(y[0], y[1], y[2], y[3]);
+        let q_dot = q * Quaternion::from_imag(0.5 * w)
+            - q * (self.model.stabilisation * (q.norm_squared() - 1.0));
+        let acc = f / d.m - d.g * Vector3::z() + self.drift_correction(&s);
+        dy[0] = q_dot.w;
+        dy[1] = q_dot.i;
+        dy[2] = q_dot.j;
+        dy[3] = q_dot.k;
+        dy.fixed_rows_mut::<3>(4).copy_from(&w_dot);
+        dy.fixed_rows_mut::<3>(7).copy_from(&s.velocity);
+        dy.fixed_rows_mut::<3>(10).copy_from(&acc);
+        dy[DISSIPATED] = match self.mode {
+            Mode::Slip { .. } => -horizontal(&f).dot(&horizontal(&s.contact_velocity)),
+            _ => 0.0,
+        };
+    }
+}
+
+impl Model<14> for Flow<'_> {
+    fn layout(&self) -> &Layout {
+        self.model.layout()
+    }
+
+    fn motion(&self, y: &State<14>) -> Motion {
+        self.snapshot(y).motion()
+    }
+
+    fn energy(&self, y: &State<14>) -> f64 {
+        self.model.energy(y)
+    }
+
+    fn record(&self, y: &State<14>, q: Quantity, out: &mut Vec<f64>) -> bool {
+        let s = self.snapshot(y);
+        let m = s.motion();
+        match q {
+            Quantity::Alpha => out.push(m.alpha),
+            Quantity::AlphaDot => out.push(m.alpha_dot),
+            Quantity::Precession => out.push(m.precession),
+            Quantity::Spin => out.push(m.spin),
+            Quantity::Heading => out.push(s.heading()),
+            Quantity::Path => out.extend_from_slice(&[s.centre.x, s.centre.y]),
+            Quantity::Face => out.push(s.face()),
+            Quantity::Energy => out.push(energy_of(&self.model.disk, &s)),
+            Quantity::Lz => {
+                let i = inertia(&self.model.disk);
+                out.push((s.rotation * i.component_mul(&s.omega_body)).z);
+            }
+            Quantity::NormalForce => out.push(self.force(y).z),
+            Quantity::Friction => {
+                let f = self.force(y);
+                out.extend_from_slice(&[f.dot(&s.r), f.dot(&s.e2)]);
+            }
+            Quantity::SlipSpeed => out.push(horizontal(&s.contact_velocity).norm()),
+            Quantity::CmSpeed => out.push(s.velocity.norm()),
+            Quantity::ContactGap => out.push(s.height),
+            Quantity::Dissipated => out.push(y[DISSIPATED]),
+        }
+        true
+    }
+
+    /// The model's start state (rolling plus its start slip).
+    fn state(&self, m: &Motion) -> State<14> {
+        self.model.start_state(m)
+    }
+}

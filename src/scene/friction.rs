@@ -1,0 +1,139 @@
+//! The scene keys of the sliding model (issue 14): `model: sliding`, `friction: { mu,
+//! restitution }`, a start slip `start: { ..., slip: { forward, sideways } }`, and the record
+//! quantities only the lab-frame and sliding models provide (`slip_speed`, `cm_speed`,
+//! `contact_gap`, `dissipated`).
+//!
+//! ```yaml
+//! model: sliding
+//! friction: { mu: 0.3, restitution: 0.0 }      # Coulomb's mu >= 0; Newton's e in [0, 1]
+//! start: { explicit: { alpha: 1.5707963, spin: 0 }, slip: { forward: 1.0, sideways: 0.0 } }
+//! record: [alpha, slip_speed, cm_speed, normal_force, contact_gap, energy, dissipated]
+//! ```
+
+use super::{ModelKind, SceneSpec, Validator};
+use crate::model::sliding::{Friction, Slip};
+use crate::model::Quantity;
+use crate::scene::SceneError;
+use serde::Deserialize;
+
+/// `friction:` as written.
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct FrictionSpec {
+    mu: f64,
+    #[serde(default)]
+    restitution: f64,
+}
+
+/// `slip:` inside `start:` as written (m/s).
+#[derive(Debug, Clone, Copy, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct SlipSpec {
+    #[serde(default)]
+    forward: f64,
+    #[serde(default)]
+    sideways: f64,
+}
+
+impl Validator<'_> {
+    /// The friction law and the start slip of a scene: required and checked for
+    /// `model: sliding`, refused for every other model.
+    pub(super) fn friction(&self, s: &SceneSpec) -> Result<(Option<Friction>, Slip), SceneError> {
+        let sliding = s.model == ModelKind::Sliding;
+        let slip = s.start.slip.unwrap_or_default();
+        if !sliding {
+            if s.friction.is_some() {
+                return Err(self.err(
+                    &["friction"],
+                    format!(
+                        "the {} model has no friction law: remove `friction`, or use model: sliding",
+                        s.model
+                    ),
+                ));
+            }
+            if s.start.slip.is_some() {
+                return Err(self.err(
+                    &["start", "slip"],
+                    format!(
+                        "start: the {} model cannot start slipping (its contact point {}): remove \
+                         `slip`, or use model: sliding",
+                        s.model,
+                        match s.model {
+                            ModelKind::Frictionless | ModelKind::LabFrameFrictionless => {
+                                "slides freely, with no friction to compare a slip against"
+                            }
+                            _ => "is at rest by construction",
+                        }
+                    ),
+                ));
+            }
+            return Ok((None, Slip::default()));
+        }
+        let Some(f) = s.friction else {
+            return Err(self.err(
+                &["model"],
+                "the sliding model needs a friction law: add `friction: { mu: 0.3, restitution: 0.0 }`",
+            ));
+        };
+        if !(f.mu.is_finite() && f.mu >= 0.0) {
+            return Err(self.err(
+                &["friction", "mu"],
+                format!(
+                    "friction: mu must be a number of 0 or more (0 is frictionless), got {}",
+                    f.mu
+                ),
+            ));
+        }
+        if !(f.restitution.is_finite() && (0.0..=1.0).contains(&f.restitution)) {
+            return Err(self.err(
+                &["friction", "restitution"],
+                format!(
+                    "friction: restitution must lie between 0 (plastic landing) and 1 (elastic), got {}",
+                    f.restitution
+                ),
+            ));
+        }
+        for (key, v) in [("forward", slip.forward), ("sideways", slip.sideways)] {
+            if !v.is_finite() {
+                return Err(self.err(
+                    &["start", "slip", key],
+                    format!("start: slip {key} must be a finite speed in m/s, got {v}"),
+                ));
+            }
+        }
+        Ok((
+            Some(Friction {
+                mu: f.mu,
+                restitution: f.restitution,
+            }),
+            Slip {
+                forward: slip.forward,
+                sideways: slip.sideways,
+            },
+        ))
+    }
+
+    /// Refuses a record quantity that `model` cannot provide (the contact quantities of the
+    /// lab-frame and sliding models).
+    pub(super) fn contact_quantity(&self, q: Quantity, model: ModelKind) -> Result<(), SceneError> {
+        let contact_only = matches!(
+            q,
+            Quantity::SlipSpeed | Quantity::CmSpeed | Quantity::ContactGap | Quantity::Dissipated
+        );
+        let lab = matches!(
+            model,
+            ModelKind::Sliding | ModelKind::LabFrame | ModelKind::LabFrameFrictionless
+        );
+        if contact_only && !lab {
+            return Err(self.err(
+                &["record"],
+                format!(
+                    "record: {} needs the contact point's motion, which only the lab-frame and \
+                     sliding models integrate; remove it or use model: sliding",
+                    q.name()
+                ),
+            ));
+        }
+        Ok(())
+    }
+}
