@@ -692,3 +692,42 @@ fn the_cli_simulates_and_analyses_a_wav_and_refuses_noise() {
     assert!(!out.status.success() && e.starts_with("error: "), "{e}");
     assert_eq!(e.trim_end().lines().count(), 1, "{e}");
 }
+
+/// The new figures are pure functions of the analyses.
+#[test]
+fn figures_of_the_fit_the_residuals_the_sound_and_the_coverage() {
+    use rolling_disk::figures::experiment as fig;
+    let disk = Disk::uniform(0.0375);
+    let trace = law_trace(&Law::paper(), &disk, &LightModel::default()).unwrap();
+    let a = analyze(&trace, &AnalysisSettings::default()).unwrap();
+    let band = fig::omega_band(&a);
+    let res = fig::residuals(&a);
+    assert_eq!((band.name, res.name), ("omega_band", "residuals"));
+    assert!(band.caption.contains(&format!("{:.4}", a.eq84.beta)));
+    let c = coverage::coverage(10, 77, false).unwrap();
+    let cov = fig::coverage(&c);
+    assert_eq!(cov.caption, c.summary());
+    let mic = Microphone::default();
+    let law = Law {
+        beta: 2.0,
+        c: 100f64.powi(4) * 7.0,
+    };
+    let s = analyze_sound(
+        &law_sound(&law, &mic, &Artifacts::none()).unwrap(),
+        &TrackSettings::default(),
+        &plausibility::Plausibility::default(),
+    )
+    .unwrap();
+    let tr = fig::sound_track(&s);
+    assert!(tr.caption.contains("frame"), "{}", tr.caption);
+    // The same inputs give the same bytes, and every figure renders.
+    let svg = band.drawing.to_svg(640, 480).unwrap();
+    assert_eq!(fig::omega_band(&a).drawing.to_svg(640, 480).unwrap(), svg);
+    for f in [&res, &cov, &tr] {
+        assert!(
+            f.drawing.to_svg(640, 480).unwrap().contains("<svg"),
+            "{}",
+            f.name
+        );
+    }
+}
