@@ -125,26 +125,99 @@ enum FigureFormat {
 
 #[derive(Subcommand)]
 enum ExperimentCommand {
-    /// Simulates the light signal of a spin-down scene, as a scope CSV (time in s, signal in V).
+    /// Simulates a recording of a spin-down scene: the scope's light signal as CSV (time in s,
+    /// signal in V), or the disk's sound as WAV, with optional bench artifacts.
     Simulate {
         /// A dissipative scene (file or built-in name), e.g. spin-down.
         #[arg(default_value = "spin-down")]
         scene: String,
-        /// Where to write the CSV.
-        #[arg(long, value_name = "FILE")]
-        csv: PathBuf,
+        /// Write the scope's light signal to this CSV.
+        #[arg(long, value_name = "FILE", required_unless_present = "wav")]
+        csv: Option<PathBuf>,
+        /// Write the disk's sound (16-bit mono, 8 kHz) to this WAV.
+        #[arg(long, value_name = "FILE", conflicts_with = "csv")]
+        wav: Option<PathBuf>,
+        #[command(flatten)]
+        artifacts: ArtifactArgs,
     },
-    /// Times the peaks of a scope CSV and fits beta, t0 and C (eqs 84-85) with uncertainties.
+    /// Analyses a recording: a scope CSV (peak times, eqs 84-85) or a WAV (frequency track,
+    /// eq 79); fits beta, t0 and C with uncertainties, compares laws, and refuses with a reason
+    /// (non-zero exit) what is not a spin-down.
     Analyze {
-        /// The CSV: a header, then time (s) and signal (V) columns.
+        /// The recording: a CSV (time and signal columns) or a .wav file.
+        #[arg(value_name = "FILE")]
         csv: PathBuf,
-        /// Also write analysis.json, peaks.csv, omega.csv and omega_dot.csv here.
+        /// Also write analysis.json, peaks.csv, omega.csv and omega_dot.csv here (CSV input).
         #[arg(long, value_name = "DIR")]
         out: Option<PathBuf>,
         /// Print the analysis as JSON.
         #[arg(long)]
         json: bool,
     },
+}
+
+/// What a bench recording adds (all off by default).
+#[derive(clap::Args)]
+struct ArtifactArgs {
+    /// All of a realistic bench's artifacts: drift 5 %, 50 Hz hum 2 %, clipping of the top
+    /// 15 %, 2 glitches/s, 1 % dropped samples (of the signal's span).
+    #[arg(long)]
+    realistic: bool,
+    /// Baseline drift, rms, as a fraction of the signal's span.
+    #[arg(long, value_name = "FRACTION")]
+    drift: Option<f64>,
+    /// Mains hum amplitude as a fraction of the signal's span.
+    #[arg(long, value_name = "FRACTION")]
+    hum: Option<f64>,
+    /// Mains frequency (Hz).
+    #[arg(long, value_name = "HZ", default_value_t = 50.0)]
+    mains: f64,
+    /// Clip above this fraction of the signal's range.
+    #[arg(long, value_name = "FRACTION")]
+    clip: Option<f64>,
+    /// Isolated glitches per second.
+    #[arg(long, value_name = "RATE")]
+    glitches: Option<f64>,
+    /// Fraction of samples dropped.
+    #[arg(long, value_name = "FRACTION")]
+    dropped: Option<f64>,
+    /// Noise seed of the scope or microphone, and of the artifacts.
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+}
+
+impl ArtifactArgs {
+    /// The artifacts for a signal of peak-to-peak `span`.
+    fn artifacts(&self, span: f64) -> experiment::Artifacts {
+        let mut a = if self.realistic {
+            experiment::Artifacts::realistic(span, self.seed)
+        } else {
+            experiment::Artifacts {
+                seed: self.seed,
+                ..experiment::Artifacts::none()
+            }
+        };
+        a.mains = self.mains;
+        if let Some(x) = self.drift {
+            a.drift = x * span;
+        }
+        if let Some(x) = self.hum {
+            a.hum = x * span;
+        }
+        if let Some(x) = self.clip {
+            a.clip = x;
+        }
+        if let Some(x) = self.glitches {
+            a.glitches_per_s = x;
+            if a.glitch == 0.0 {
+                a.glitch = 0.5 * span;
+            }
+        }
+        if let Some(x) = self.dropped {
+            a.dropped = x;
+        }
+        a
+    }
 }
 
 fn main() -> ExitCode {
@@ -175,9 +248,12 @@ fn main() -> ExitCode {
             quick,
             target,
         } => precision(&scene, json, quick, target),
-        Command::Experiment(ExperimentCommand::Simulate { scene, csv }) => {
-            experiment_simulate(&scene, &csv)
-        }
+        Command::Experiment(ExperimentCommand::Simulate {
+            scene,
+            csv,
+            wav,
+            artifacts,
+        }) => experiment_simulate(&scene, csv.as_deref(), wav.as_deref(), &artifacts),
         Command::Experiment(ExperimentCommand::Analyze { csv, out, json }) => {
             experiment_analyze(&csv, out.as_deref(), json)
         }
@@ -605,18 +681,66 @@ fn precision(name: &str, json: bool, quick: bool, target: Option<f64>) -> Result
     Ok(())
 }
 
-fn experiment_simulate(name: &str, csv: &Path) -> Result<(), String> {
+fn experiment_simulate(
+    name: &str,
+    csv: Option<&Path>,
+    wav: Option<&Path>,
+    args: &ArtifactArgs,
+) -> Result<(), String> {
     let scene = Scene::load(name).map_err(|e| e.to_string())?;
-    eprintln!("simulating the light signal of {}...", scene.name);
-    let trace = experiment::simulate_trace(&scene, &experiment::LightModel::default())
-        .map_err(|e| e.to_string())?;
-    write_atomically(csv, trace.to_csv().as_bytes())
-        .map_err(|e| format!("cannot write {}: {e}", csv.display()))?;
-    println!("{} samples written to {}", trace.t.len(), csv.display());
+    eprintln!("simulating the recording of {}...", scene.name);
+    let (path, bytes, trace) = if let Some(path) = wav {
+        let mic = experiment::Microphone {
+            seed: args.seed,
+            ..experiment::Microphone::default()
+        };
+        let a = args.artifacts(2.0 * mic.amplitude);
+        let trace = experiment::simulate_sound(&scene, &mic, &a).map_err(|e| e.to_string())?;
+        let bytes = experiment::wav_bytes(&trace.v, mic.sample_rate)
+            .map_err(|e| format!("cannot encode the WAV: {e}"))?;
+        (path, bytes, trace)
+    } else if let Some(path) = csv {
+        let mut light = experiment::LightModel::default();
+        light.scope.seed = args.seed;
+        let trace = experiment::simulate_trace(&scene, &light).map_err(|e| e.to_string())?;
+        let trace = trace
+            .with_artifacts(&args.artifacts(light.gain))
+            .map_err(|e| e.to_string())?;
+        let bytes = trace.to_csv().into_bytes();
+        (path, bytes, trace)
+    } else {
+        return Err("give --csv FILE or --wav FILE".into());
+    };
+    write_atomically(path, &bytes).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    println!("{} samples written to {}", trace.t.len(), path.display());
+    if let Some(t) = &trace.truth {
+        println!(
+            "truth: beta = {}, t0 = {:.6} s ({})",
+            t.beta, t.t0, t.origin
+        );
+    }
     Ok(())
 }
 
 fn experiment_analyze(csv: &Path, out: Option<&Path>, json: bool) -> Result<(), String> {
+    let is_wav = csv
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("wav"));
+    if is_wav {
+        let trace = experiment::read_wav(csv).map_err(|e| e.to_string())?;
+        let a = experiment::analyze_sound(
+            &trace,
+            &experiment::TrackSettings::default(),
+            &experiment::plausibility::Plausibility::default(),
+        )
+        .map_err(|e| e.to_string())?;
+        if json {
+            println!("{}", a.to_json());
+        } else {
+            println!("{a}");
+        }
+        return Ok(());
+    }
     let trace = experiment::read_trace(csv).map_err(|e| e.to_string())?;
     let analysis = experiment::analyze(&trace, &experiment::AnalysisSettings::default())
         .map_err(|e| e.to_string())?;

@@ -2,9 +2,12 @@
 //! fitting window, the fits of eqs 84 and 85, and (for a synthetic trace) how far they land
 //! from the truth.
 
+use crate::experiment::clean::{remove_glitches, remove_hum};
 use crate::experiment::error::ExperimentError;
-use crate::experiment::fit::{fit_eq84, fit_eq85, Eq84Fit, Eq85Fit};
+use crate::experiment::fit::{fit_eq84, fit_eq84_fixed, fit_eq85, Eq84Fit, Eq85Fit};
+use crate::experiment::models::{compare, Comparison};
 use crate::experiment::peaks::{find_peaks, noise_level, Peak, PeakSettings};
+use crate::experiment::plausibility::{Evidence, Plausibility, Verdict};
 use crate::experiment::rates::{accelerations, cycles, Acceleration, Cycle};
 use crate::experiment::trace::{Trace, Truth};
 use crate::output::write_atomically;
@@ -31,6 +34,8 @@ pub struct AnalysisSettings {
     pub t_from: Option<f64>,
     /// Fit only cycles whose middle is at or before this time (s).
     pub t_to: Option<f64>,
+    /// The checks that a fit describes a spin-down (see [`Plausibility`]).
+    pub plausibility: Plausibility,
 }
 
 impl Default for AnalysisSettings {
@@ -42,6 +47,7 @@ impl Default for AnalysisSettings {
             min_snr: 20.0,
             t_from: None,
             t_to: None,
+            plausibility: Plausibility::default(),
         }
     }
 }
@@ -97,6 +103,10 @@ pub struct Analysis {
     pub sample_interval: f64,
     /// Estimated noise (V rms).
     pub noise: f64,
+    /// Isolated one-sample glitches replaced before timing.
+    pub glitches: usize,
+    /// The largest mains-hum amplitude subtracted before timing (V; 0 if none was found).
+    pub hum: f64,
     /// The settings used.
     pub settings: AnalysisSettings,
     /// Peaks found.
@@ -111,6 +121,10 @@ pub struct Analysis {
     pub eq84: Eq84Fit,
     /// Eq 85's fit.
     pub eq85: Eq85Fit,
+    /// Eq 84 with beta free against beta fixed at 1, 2, 3, 4 (and the two-mechanism law).
+    pub models: Comparison,
+    /// The plausibility checks (passed, or the analysis would have been refused).
+    pub verdict: Verdict,
     /// The truth, if the trace carries one.
     pub truth: Option<Truth>,
     /// The fits against the truth.
@@ -161,7 +175,10 @@ pub fn analyze(trace: &Trace, s: &AnalysisSettings) -> Result<Analysis, Experime
             noise,
         });
     }
-    let peaks = find_peaks(&trace.t, &trace.v, dt, noise, p);
+    let mut v = trace.v.clone();
+    let glitches = remove_glitches(&mut v, noise);
+    let hum = remove_hum(&trace.t, &mut v, noise);
+    let peaks = find_peaks(&trace.t, &v, dt, noise, p);
     let too_few =
         |what: &str, found: usize, needed: usize, hint: &str| ExperimentError::TooFewPeaks {
             file: trace.source.clone(),
@@ -189,6 +206,21 @@ pub fn analyze(trace: &Trace, s: &AnalysisSettings) -> Result<Analysis, Experime
     let (mut anomalous, mut too_short, mut faint) = (0, 0, 0);
     let min_span = s.min_snr * noise;
     let mut in_window = vec![false; cyc.len()];
+    // The end of the spin-down: the pulses fade as the tilt vanishes; after three faint cycles
+    // in a row (past the first twenty) nothing later is the disk's (hum or noise at most).
+    let mut run = 0;
+    let mut last_usable = last_usable;
+    for (k, c) in cyc.iter().enumerate().skip(20) {
+        if peaks[c.i].span < min_span || peaks[c.i + 1].span < min_span {
+            run += 1;
+            if run == 3 {
+                last_usable = last_usable.min(k.saturating_sub(2));
+                break;
+            }
+        } else {
+            run = 0;
+        }
+    }
     for c in &cyc {
         if c.i + 1 > last_usable
             || s.t_from.is_some_and(|a| c.t < a)
@@ -227,13 +259,57 @@ pub fn analyze(trace: &Trace, s: &AnalysisSettings) -> Result<Analysis, Experime
         what: what.into(),
         message,
     };
-    let eq84 = fit_eq84(&ta, &tb, &cyc_idx, &w).map_err(|m| fit_err("eq 84", m))?;
+    let refuse = |reason: String| ExperimentError::Refused {
+        file: trace.source.clone(),
+        reason,
+    };
+    let eq84 = match fit_eq84(&ta, &tb, &cyc_idx, &w) {
+        Ok(f) => f,
+        Err(m) => return Err(refuse(format!("eq 84 cannot be fitted ({m})"))),
+    };
+    let t_mid: Vec<f64> = cyc_idx.iter().map(|&i| cyc[i].t).collect();
+    let om: Vec<f64> = cyc_idx.iter().map(|&i| cyc[i].omega).collect();
+    let ys: Vec<f64> = eq84.points.iter().map(|p| p.y).collect();
+    let rs: Vec<f64> = eq84.points.iter().map(|p| p.residual).collect();
+    let verdict = s.plausibility.judge(&Evidence {
+        t: &t_mid,
+        omega: &om,
+        anomalous,
+        y: &ys,
+        residual: &rs,
+        beta: eq84.beta,
+        t0: eq84.t0,
+        t_first: tp[cyc_idx[0]],
+        t_last: tp[cyc_idx[cyc_idx.len() - 1] + 1],
+    });
+    if !verdict.refusals.is_empty() {
+        return Err(refuse(verdict.refusals.join("; ")));
+    }
     let eq85 = fit_eq85(&tp, &acc_idx, &w).map_err(|m| fit_err("eq 85", m))?;
+    let mut candidates = vec![(
+        "beta free".to_string(),
+        format!("beta = {:.3} +- {:.3}", eq84.beta, eq84.beta_sigma),
+        3,
+        eq84.chi2,
+        eq84.ln_det_sigma,
+    )];
+    for beta in [1.0, 2.0, 3.0, 4.0] {
+        if let Ok(f) = fit_eq84_fixed(&ta, &tb, &cyc_idx, &w, beta, &eq84) {
+            candidates.push((
+                format!("beta = {beta}"),
+                format!("t0 = {:.5} +- {:.5} s", f.t0, f.t0_sigma),
+                2,
+                f.chi2,
+                f.ln_det_sigma,
+            ));
+        }
+    }
+    let models = compare(cyc_idx.len(), candidates);
     let window = Window {
         rule: format!(
             "cycles between peaks {first_peak} and {last_peak}: all but the last {} peaks, \
-             periods of at least {} samples, pulses spanning at least {} noise deviations, \
-             no anomalous period{}{}",
+             periods of at least {} samples, pulses spanning at least {} noise deviations \
+             (none after the first three faint ones in a row), no anomalous period{}{}",
             s.drop_last,
             s.min_samples_per_period,
             s.min_snr,
@@ -264,6 +340,8 @@ pub fn analyze(trace: &Trace, s: &AnalysisSettings) -> Result<Analysis, Experime
         samples: n,
         sample_interval: dt,
         noise,
+        glitches,
+        hum,
         settings: *s,
         peaks,
         cycles: cyc,
@@ -271,6 +349,8 @@ pub fn analyze(trace: &Trace, s: &AnalysisSettings) -> Result<Analysis, Experime
         window,
         eq84,
         eq85,
+        models,
+        verdict,
         truth: trace.truth.clone(),
         score,
     })
@@ -313,6 +393,30 @@ impl fmt::Display for Analysis {
             "  eq 85: slope = {:.4} +- {:.4}, so beta = {:.4} +- {:.4} (reduced chi2 {:.2}, n = {})",
             b.slope, b.slope_sigma, b.beta, b.beta_sigma, b.reduced_chi2, b.n
         )?;
+        writeln!(
+            f,
+            "  model choice (eq 84 on {} cycles): {}",
+            self.models.n, self.models.summary
+        )?;
+        for c in &self.models.candidates {
+            writeln!(
+                f,
+                "    {:<12} {:<28} dAIC {:>9.1}  dBIC {:>9.1}  weight {:.3}",
+                c.name, c.parameters, c.delta_aic, c.delta_bic, c.weight
+            )?;
+        }
+        writeln!(
+            f,
+            "  spin-down checks: Kendall tau {:.3}, Omega rises x{:.2}, R^2 {:.6}, t0 gap {:.4} of the window",
+            self.verdict.kendall, self.verdict.rise, self.verdict.r2, self.verdict.gap
+        )?;
+        if self.eq84.reduced_chi2 > 1.0 {
+            writeln!(
+                f,
+                "  uncertainties: scaled by sqrt(reduced chi2) = {:.2}: the scatter exceeds the peak-timing noise",
+                self.eq84.reduced_chi2.sqrt()
+            )?;
+        }
         if let (Some(t), Some(s)) = (&self.truth, &self.score) {
             writeln!(
                 f,

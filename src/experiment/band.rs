@@ -63,6 +63,11 @@ impl BandCholesky {
         Some(Self { m, l })
     }
 
+    /// $\ln\det\Sigma = 2\sum_i \ln L_{ii}$.
+    pub fn ln_det(&self) -> f64 {
+        2.0 * self.l.iter().map(|row| row[self.m].ln()).sum::<f64>()
+    }
+
     /// Solves $L z = r$ in place (whitening).
     pub fn whiten(&self, r: &mut [f64]) {
         let m = self.m;

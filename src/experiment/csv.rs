@@ -1,11 +1,13 @@
 //! Scope CSV: a header (time in s, signal in V) and one row per sample, as a scope exports it.
 //!
-//! Reading validates every row and names the file and the 1-based line of the first problem:
-//! a missing column, a cell that is not a number, NaN or infinity, a time that does not
-//! increase. Lines starting with `#` are comments; a synthetic trace writes its truth there
+//! Reading validates every row and names the file, the 1-based line and column of the first
+//! problem: a missing column, a cell that is not a number, NaN or infinity, a time that does not
+//! increase, an unknown time unit, too many rows. Files are opened only through
+//! [`read_bounded`](crate::experiment::input::read_bounded). Lines starting with `#` are comments; a synthetic trace writes its truth there
 //! (`# truth.beta: 2`), and reading it back restores it.
 
 use crate::experiment::error::ExperimentError;
+use crate::experiment::input::{read_bounded, MAX_BYTES, MAX_SAMPLES};
 use crate::experiment::trace::{Trace, Truth};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -35,24 +37,108 @@ impl Trace {
     }
 }
 
-/// Reads and validates a scope CSV file.
+/// Reads and validates a scope CSV file (at most [`MAX_BYTES`] bytes, [`MAX_SAMPLES`] rows).
 pub fn read_trace(path: impl AsRef<Path>) -> Result<Trace, ExperimentError> {
     let path = path.as_ref();
     let file = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| ExperimentError::Io {
+    let bytes = read_bounded(path, MAX_BYTES)?;
+    let text = String::from_utf8(bytes).map_err(|e| ExperimentError::Io {
         file: file.clone(),
-        message: format!("cannot read this CSV ({e})"),
+        message: format!(
+            "not UTF-8 text (byte {} is invalid): save the CSV as UTF-8 or ASCII text",
+            e.utf8_error().valid_up_to() + 1
+        ),
     })?;
     parse_trace(&text, &file)
 }
 
+/// The lines of `text` whatever their ends: LF, CRLF or CR alone.
+fn lines_any(text: &str) -> impl Iterator<Item = &str> {
+    let mut rest = Some(text);
+    std::iter::from_fn(move || {
+        let r = rest?;
+        match r.find(['\n', '\r']) {
+            Some(k) => {
+                let skip = if r[k..].starts_with("\r\n") { 2 } else { 1 };
+                rest = Some(&r[k + skip..]);
+                Some(&r[..k])
+            }
+            None => {
+                rest = None;
+                (!r.is_empty()).then_some(r)
+            }
+        }
+    })
+}
+
+/// The cells of a line, split at commas, else tabs, else semicolons, else runs of spaces;
+/// empty cells at the end (trailing separators) dropped.
+fn cells(s: &str) -> Vec<&str> {
+    let mut c: Vec<&str> = if s.contains(',') {
+        s.split(',').map(str::trim).collect()
+    } else if s.contains('\t') {
+        s.split('\t').map(str::trim).collect()
+    } else if s.contains(';') {
+        s.split(';').map(str::trim).collect()
+    } else {
+        s.split_whitespace().collect()
+    };
+    while c.last().is_some_and(|x| x.is_empty()) {
+        c.pop();
+    }
+    c
+}
+
+/// The unit written in a header cell: in parentheses or brackets (`Time (ms)`, `CH1 [V]`), or
+/// after the last `_` or `/` (`time_s`, `t/ms`); `None` when the cell names none.
+fn header_unit(cell: &str) -> Option<&str> {
+    let c = cell.trim();
+    for (open, close) in [('(', ')'), ('[', ']')] {
+        if let (Some(a), Some(b)) = (c.rfind(open), c.rfind(close)) {
+            if a < b {
+                return Some(c[a + 1..b].trim());
+            }
+        }
+    }
+    c.rfind(['_', '/']).map(|k| c[k + 1..].trim())
+}
+
+/// The factor to seconds of a time unit.
+fn time_factor(unit: &str) -> Option<f64> {
+    match unit {
+        "s" | "sec" | "S" | "seconds" | "second" => Some(1.0),
+        "ms" => Some(1e-3),
+        "us" | "µs" | "μs" => Some(1e-6),
+        "ns" => Some(1e-9),
+        _ => None,
+    }
+}
+
+/// The factor to volts of a signal unit; other units (counts, a.u.) are kept as they are: the
+/// timing does not depend on the signal's scale.
+fn signal_factor(unit: &str) -> f64 {
+    match unit {
+        "mV" => 1e-3,
+        "uV" | "µV" | "μV" => 1e-6,
+        "kV" => 1e3,
+        _ => 1.0,
+    }
+}
+
 /// Parses and validates CSV text; `file` names it in errors.
+///
+/// Accepted: a UTF-8 byte-order mark; LF, CRLF or CR line ends; cells separated by commas,
+/// tabs, semicolons or spaces; trailing separators; `#` comment lines; a header whose cells
+/// name units (time in s, ms, us or ns, converted to s; signal in V, mV or uV, converted to V,
+/// or any other unit, kept); columns after the second ignored. At most [`MAX_SAMPLES`] rows.
 pub fn parse_trace(text: &str, file: &str) -> Result<Trace, ExperimentError> {
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut t = Vec::new();
     let mut v = Vec::new();
     let mut header_line = None;
+    let (mut kt, mut kv) = (1.0, 1.0);
     let mut truth = TruthFields::default();
-    for (i, raw) in text.lines().enumerate() {
+    for (i, raw) in lines_any(text).enumerate() {
         let line = i + 1;
         let s = raw.trim();
         if s.is_empty() {
@@ -62,24 +148,37 @@ pub fn parse_trace(text: &str, file: &str) -> Result<Trace, ExperimentError> {
             truth.read(c.trim());
             continue;
         }
-        let cells: Vec<&str> = s.split(',').map(str::trim).collect();
-        let numeric = cells[0].parse::<f64>().is_ok();
+        let cells = cells(s);
+        let missing = || ExperimentError::MissingColumn {
+            file: file.into(),
+            line,
+            found: cells.iter().filter(|c| !c.is_empty()).count(),
+        };
+        let numeric = cells.first().is_some_and(|c| c.parse::<f64>().is_ok());
         if header_line.is_none() && t.is_empty() && !numeric {
             if cells.len() < 2 || cells[1].is_empty() {
-                return Err(ExperimentError::MissingColumn {
+                return Err(missing());
+            }
+            if let Some(u) = header_unit(cells[0]) {
+                kt = time_factor(u).ok_or_else(|| ExperimentError::UnknownUnit {
                     file: file.into(),
                     line,
-                    found: cells.iter().filter(|c| !c.is_empty()).count(),
-                });
+                    column: 1,
+                    unit: u.into(),
+                })?;
             }
+            kv = header_unit(cells[1]).map_or(1.0, signal_factor);
             header_line = Some(line);
             continue;
         }
         if cells.len() < 2 || cells[1].is_empty() {
-            return Err(ExperimentError::MissingColumn {
+            return Err(missing());
+        }
+        if t.len() >= MAX_SAMPLES {
+            return Err(ExperimentError::TooManySamples {
                 file: file.into(),
                 line,
-                found: cells.iter().filter(|c| !c.is_empty()).count(),
+                limit: MAX_SAMPLES,
             });
         }
         let num = |k: usize, name: &str| -> Result<f64, ExperimentError> {
@@ -89,6 +188,7 @@ pub fn parse_trace(text: &str, file: &str) -> Result<Trace, ExperimentError> {
                     file: file.into(),
                     line,
                     column: name.into(),
+                    col: k + 1,
                     cell: cells[k].into(),
                 })?;
             if x.is_finite() {
@@ -98,12 +198,13 @@ pub fn parse_trace(text: &str, file: &str) -> Result<Trace, ExperimentError> {
                     file: file.into(),
                     line,
                     column: name.into(),
+                    col: k + 1,
                     value: x,
                 })
             }
         };
-        let ti = num(0, "time")?;
-        let vi = num(1, "signal")?;
+        let ti = num(0, "time")? * kt;
+        let vi = num(1, "signal")? * kv;
         if let Some(&prev) = t.last() {
             if ti <= prev {
                 return Err(ExperimentError::NotIncreasing {

@@ -29,7 +29,7 @@ pub enum ExperimentError {
         line: usize,
     },
     /// A row (or the header) has fewer than two columns.
-    #[error("{file}:{line}: {found} column(s) where two are needed (time in s, signal in V): a column is missing")]
+    #[error("{file}:{line}: {found} column(s) where two are needed (time in s, signal in V): a column is missing; separate the two columns by a comma, a tab or spaces")]
     MissingColumn {
         /// The file.
         file: String,
@@ -39,7 +39,7 @@ pub enum ExperimentError {
         found: usize,
     },
     /// A cell that is not a number.
-    #[error("{file}:{line}: the {column} cell {cell:?} is not a number")]
+    #[error("{file}:{line}:{col}: the {column} cell {cell:?} is not a number: write a plain decimal number (e.g. 0.0125 or 1.25e-2)")]
     NotANumber {
         /// The file.
         file: String,
@@ -47,11 +47,15 @@ pub enum ExperimentError {
         line: usize,
         /// Which column ("time" or "signal").
         column: String,
+        /// The 1-based column.
+        col: usize,
         /// The cell as written.
         cell: String,
     },
     /// NaN or infinity.
-    #[error("{file}:{line}: the {column} is {value} (NaN or infinite): remove or repair this row")]
+    #[error(
+        "{file}:{line}:{col}: the {column} is {value} (NaN or infinite): remove or repair this row"
+    )]
     NonFinite {
         /// The file.
         file: String,
@@ -59,11 +63,13 @@ pub enum ExperimentError {
         line: usize,
         /// Which column.
         column: String,
+        /// The 1-based column.
+        col: usize,
         /// The value read.
         value: f64,
     },
     /// Time does not increase.
-    #[error("{file}:{line}: the time {t} s does not increase from the previous row's {previous} s: samples must be in time order, each time once")]
+    #[error("{file}:{line}:1: the time {t} s does not increase from the previous row's {previous} s: samples must be in time order, each time once")]
     NotIncreasing {
         /// The file.
         file: String,
@@ -73,6 +79,54 @@ pub enum ExperimentError {
         previous: f64,
         /// This time.
         t: f64,
+    },
+    /// The file is larger than the reader accepts.
+    #[error("{file}: the file holds {bytes} bytes, more than the {limit} this tool reads: cut the recording to the spin-down's last seconds, or decimate it")]
+    TooLarge {
+        /// The file.
+        file: String,
+        /// Its size (bytes).
+        bytes: u64,
+        /// The limit (bytes).
+        limit: u64,
+    },
+    /// More samples than the analysis accepts.
+    #[error("{file}:{line}: more than {limit} samples: cut the recording to the spin-down's last seconds, or decimate it")]
+    TooManySamples {
+        /// The file.
+        file: String,
+        /// The line (CSV) or 0 (WAV) where the limit was passed.
+        line: usize,
+        /// The limit.
+        limit: usize,
+    },
+    /// A unit in a header this reader does not know.
+    #[error("{file}:{line}:{column}: unknown unit {unit:?} in the header: write the time in s, ms or us and the signal in V or mV (or no unit)")]
+    UnknownUnit {
+        /// The file.
+        file: String,
+        /// The 1-based line.
+        line: usize,
+        /// The 1-based column.
+        column: usize,
+        /// The unit as written.
+        unit: String,
+    },
+    /// A WAV file that cannot be decoded.
+    #[error("{file}: not a readable WAV file ({message}): save the recording as PCM or float WAV (8-32 bit, mono or stereo)")]
+    Wav {
+        /// The file.
+        file: String,
+        /// What the decoder said.
+        message: String,
+    },
+    /// The data are not a disk spinning down: the analysis refuses to report a fit.
+    #[error("{file}: not a spin-down, no fit reported: {reason}")]
+    Refused {
+        /// The file.
+        file: String,
+        /// Why, with the numbers.
+        reason: String,
     },
     /// The signal never varies above its noise.
     #[error("{file}: the signal is flat (it varies by {span:.3e} V peak to peak, against a noise of {noise:.3e} V rms): there are no pulses to time")]

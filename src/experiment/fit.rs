@@ -14,11 +14,12 @@
 //! $d\Omega_i/dt$ is biased, and undefined where noise makes it negative), with the covariance
 //! of the rows, which share peaks, propagated from $t_i, t_{i+1}, t_{i+2}$ in the same way.
 //!
-//! The parameter covariance is $s^2 (J_w^{\mathsf T} J_w)^{-1}$, scaled by the residual variance
-//! $s^2 = |r_w|^2/(n - p)$ (the reduced $\chi^2$; near 1 when the noise model is right).
+//! Both are minimised by [`least_squares::solve`](crate::experiment::least_squares::solve),
+//! whose covariance is scaled by the reduced $\chi^2$ when it exceeds 1 (see there).
 
-use crate::experiment::band::{BandCholesky, Row};
-use nalgebra::{DMatrix, DVector, SMatrix, SVector};
+use crate::experiment::band::Row;
+use crate::experiment::least_squares::{solve, Problem, Scale, Solved};
+use nalgebra::SVector;
 use serde::Serialize;
 use std::f64::consts::PI;
 
@@ -60,6 +61,10 @@ pub struct Eq84Fit {
     pub covariance: [[f64; 3]; 3],
     /// Reduced $\chi^2$ = $s^2$.
     pub reduced_chi2: f64,
+    /// Whitened $\chi^2$ (unscaled).
+    pub chi2: f64,
+    /// $\ln\det\Sigma$ at the solution.
+    pub ln_det_sigma: f64,
     /// Points fitted.
     pub n: usize,
     /// Data, curve and residuals.
@@ -89,119 +94,6 @@ pub struct Eq85Fit {
     pub points: Vec<FitPoint>,
 }
 
-/// What a Levenberg-Marquardt run returns.
-struct Solved<const P: usize> {
-    p: SVector<f64, P>,
-    cov: SMatrix<f64, P, P>,
-    s2: f64,
-    residual: Vec<f64>,
-    whitened: Vec<f64>,
-    model: Vec<f64>,
-}
-
-/// A problem for [`levenberg_marquardt`]: the data `y`, and for parameters `p` the model values
-/// and their gradients, the rows of $B$ (error propagation) and whether `p` is admissible.
-trait Problem<const P: usize> {
-    fn y(&self) -> &[f64];
-    fn model(&self, p: &SVector<f64, P>, i: usize) -> (f64, SVector<f64, P>);
-    fn rows(&self, p: &SVector<f64, P>) -> Vec<Row>;
-    fn admissible(&self, p: &SVector<f64, P>) -> bool;
-}
-
-fn levenberg_marquardt<const P: usize>(
-    pr: &impl Problem<P>,
-    w: &[f64],
-    p0: SVector<f64, P>,
-) -> Result<Solved<P>, String> {
-    let n = pr.y().len();
-    if n <= P {
-        return Err(format!("{n} points for {P} parameters"));
-    }
-    let mut p = p0;
-    let evaluate = |p: &SVector<f64, P>, ch: &BandCholesky| {
-        let mut r = Vec::with_capacity(n);
-        let mut cols = vec![Vec::with_capacity(n); P];
-        for i in 0..n {
-            let (f, g) = pr.model(p, i);
-            r.push(pr.y()[i] - f);
-            for k in 0..P {
-                cols[k].push(g[k]);
-            }
-        }
-        ch.whiten(&mut r);
-        for c in cols.iter_mut() {
-            ch.whiten(c);
-        }
-        let cost: f64 = r.iter().map(|x| x * x).sum();
-        let mut a = SMatrix::<f64, P, P>::zeros();
-        let mut g = SVector::<f64, P>::zeros();
-        for i in 0..n {
-            for k in 0..P {
-                g[k] += cols[k][i] * r[i];
-                for l in 0..P {
-                    a[(k, l)] += cols[k][i] * cols[l][i];
-                }
-            }
-        }
-        (cost, a, g, r)
-    };
-    let mut last = None;
-    for _round in 0..3 {
-        let ch = BandCholesky::from_rows(&pr.rows(&p), w)
-            .ok_or("the residuals' covariance is not positive definite")?;
-        let (mut cost, mut a, mut g, _) = evaluate(&p, &ch);
-        let mut lambda = 1e-3;
-        for _ in 0..200 {
-            let mut m = a;
-            for k in 0..P {
-                m[(k, k)] += lambda * a[(k, k)].max(1e-300);
-            }
-            let Some(step) = solve_small(&m, &g) else {
-                lambda *= 10.0;
-                continue;
-            };
-            let q = p + step;
-            let (c2, a2, g2, _) = if pr.admissible(&q) {
-                evaluate(&q, &ch)
-            } else {
-                (f64::INFINITY, a, g, Vec::new())
-            };
-            if c2.is_finite() && c2 <= cost {
-                let done = (cost - c2) <= 1e-14 * cost.max(1e-300);
-                p = q;
-                cost = c2;
-                a = a2;
-                g = g2;
-                lambda = (lambda / 3.0).max(1e-12);
-                if done {
-                    break;
-                }
-            } else {
-                lambda *= 4.0;
-                if lambda > 1e16 {
-                    break;
-                }
-            }
-        }
-        last = Some(ch);
-    }
-    let ch = last.ok_or("no iteration")?;
-    let (cost, a, _, whitened) = evaluate(&p, &ch);
-    let inv = inverse_small(&a)
-        .ok_or("the parameters are not determined by the data (singular normal matrix)")?;
-    let s2 = cost / (n - P) as f64;
-    let model: Vec<f64> = (0..n).map(|i| pr.model(&p, i).0).collect();
-    let residual = (0..n).map(|i| pr.y()[i] - model[i]).collect();
-    Ok(Solved {
-        p,
-        cov: inv * s2,
-        s2,
-        residual,
-        whitened,
-        model,
-    })
-}
-
 /// Eq 84 on cycles $[t_a, t_b]$: data $1/\Omega_i = (t_b - t_a)/2\pi$, compared with the law's
 /// own cycle average $(t_b - t_a)/(\Phi(t_b) - \Phi(t_a))$, $\Phi$ the heading of eq 79
 /// integrated (see [`law`](crate::experiment::law)), so that placing a mean rate at a point costs
@@ -215,7 +107,7 @@ struct Law84<'a> {
 
 /// $\Phi(t) = -C^{q}(t_0 - t)^{1-q}/(1-q)$ ($q = 1/(\beta+2)$), $\Omega(t)$, and the gradient of
 /// $\Phi$ in $(\beta, t_0, \ln C)$.
-fn phase(p: &SVector<f64, 3>, t: f64) -> (f64, f64, SVector<f64, 3>) {
+pub(crate) fn phase(p: &SVector<f64, 3>, t: f64) -> (f64, f64, SVector<f64, 3>) {
     let q = 1.0 / (p[0] + 2.0);
     let ln_tau = (p[1] - t).ln();
     let e = (q * p[2] + (1.0 - q) * ln_tau).exp();
@@ -269,21 +161,14 @@ impl Problem<3> for Law84<'_> {
     }
 }
 
-/// Fits eq 84 to the cycles between peaks `ta[i]` and `tb[i]` (first peak `start[i]`), given
-/// the peak-time variances `w` (indexed by peak).
-pub fn fit_eq84(ta: &[f64], tb: &[f64], start: &[usize], w: &[f64]) -> Result<Eq84Fit, String> {
-    let n = ta.len();
-    if n < 5 {
-        return Err(format!("{n} cycles in the window, at least 5 are needed"));
+/// A start for eq 84's fits: over trial end times $t_0$ after `xmax`, the straight line
+/// $\ln y = q(\ln(t_0 - x) - \ln C)$ fitted to the data $y = 1/\Omega$ at times `x`; the trial with
+/// the least relative squared error gives $(\beta, t_0, \ln C)$.
+pub(crate) fn start84(x: &[f64], y: &[f64], xmax: f64) -> Option<SVector<f64, 3>> {
+    let n = x.len();
+    if n < 3 {
+        return None;
     }
-    let x: Vec<f64> = ta.iter().zip(tb).map(|(a, b)| 0.5 * (a + b)).collect();
-    let y: Vec<f64> = ta
-        .iter()
-        .zip(tb)
-        .map(|(a, b)| (b - a) / (2.0 * PI))
-        .collect();
-    // Start: profile over t0 of the straight line ln y = q (ln(t0 - x) - ln C).
-    let xmax = tb.iter().copied().fold(f64::MIN, f64::max);
     let xmin = x.iter().copied().fold(f64::MAX, f64::min);
     let span = (xmax - xmin).max(1e-9);
     let last_period = 2.0 * PI * y[n - 1];
@@ -303,21 +188,39 @@ pub fn fit_eq84(ta: &[f64], tb: &[f64], start: &[usize], w: &[f64]) -> Result<Eq
         let ln_c = mx - my / q;
         let ssr: f64 = lx
             .iter()
-            .zip(&y)
+            .zip(y)
             .map(|(a, b)| (b - (q * (a - ln_c)).exp()).powi(2) / (b * b))
             .sum();
         if best.as_ref().is_none_or(|b| ssr < b.0) {
             best = Some((ssr, SVector::<f64, 3>::new(1.0 / q - 2.0, t0, ln_c)));
         }
     }
-    let (_, p0) = best.ok_or("1/Omega does not fall toward an end time: no start for the fit")?;
+    best.map(|b| b.1)
+}
+
+/// Fits eq 84 to the cycles between peaks `ta[i]` and `tb[i]` (first peak `start[i]`), given
+/// the peak-time variances `w` (indexed by peak).
+pub fn fit_eq84(ta: &[f64], tb: &[f64], start: &[usize], w: &[f64]) -> Result<Eq84Fit, String> {
+    let n = ta.len();
+    if n < 5 {
+        return Err(format!("{n} cycles in the window, at least 5 are needed"));
+    }
+    let x: Vec<f64> = ta.iter().zip(tb).map(|(a, b)| 0.5 * (a + b)).collect();
+    let y: Vec<f64> = ta
+        .iter()
+        .zip(tb)
+        .map(|(a, b)| (b - a) / (2.0 * PI))
+        .collect();
+    let xmax = tb.iter().copied().fold(f64::MIN, f64::max);
+    let p0 = start84(&x, &y, xmax)
+        .ok_or("1/Omega does not fall toward an end time: no start for the fit")?;
     let pr = Law84 {
         ta,
         tb,
         y: &y,
         start,
     };
-    let s = levenberg_marquardt(&pr, w, p0)?;
+    let s = solve(&pr, w, p0, Scale::Floored)?;
     let (beta, t0, ln_c) = (s.p[0], s.p[1], s.p[2]);
     let q = 1.0 / (beta + 2.0);
     let inv = (-q * ln_c).exp();
@@ -335,6 +238,8 @@ pub fn fit_eq84(ta: &[f64], tb: &[f64], start: &[usize], w: &[f64]) -> Result<Eq
         inv_omega_1s_sigma: var_inv.sqrt(),
         covariance: std::array::from_fn(|i| std::array::from_fn(|j| s.cov[(i, j)])),
         reduced_chi2: s.s2,
+        chi2: s.chi2,
+        ln_det_sigma: s.ln_det_sigma,
         n,
         points: points(&x, &y, &s),
     })
@@ -460,7 +365,7 @@ pub fn fit_eq85(t: &[f64], start: &[usize], w: &[f64]) -> Result<Eq85Fit, String
         start,
         t,
     };
-    let s = levenberg_marquardt(&pr, w, p0)?;
+    let s = solve(&pr, w, p0, Scale::Floored)?;
     let sigma = s.cov[(0, 0)].sqrt();
     Ok(Eq85Fit {
         slope: s.p[0],
@@ -487,23 +392,100 @@ fn points<const P: usize>(x: &[f64], y: &[f64], s: &Solved<P>) -> Vec<FitPoint> 
         .collect()
 }
 
-/// Solves a small system through a dynamically sized LU (nalgebra's fixed-size LU needs
-/// concrete dimensions).
-fn solve_small<const P: usize>(
-    m: &SMatrix<f64, P, P>,
-    g: &SVector<f64, P>,
-) -> Option<SVector<f64, P>> {
-    let d = DMatrix::from_fn(P, P, |i, j| m[(i, j)]);
-    let x = d.lu().solve(&DVector::from_fn(P, |i, _| g[i]))?;
-    Some(SVector::<f64, P>::from_fn(|i, _| x[i]))
-}
-
-/// The inverse of a small matrix.
-fn inverse_small<const P: usize>(m: &SMatrix<f64, P, P>) -> Option<SMatrix<f64, P, P>> {
-    let d = DMatrix::from_fn(P, P, |i, j| m[(i, j)]).try_inverse()?;
-    Some(SMatrix::<f64, P, P>::from_fn(|i, j| d[(i, j)]))
-}
-
 fn mean(v: &[f64]) -> f64 {
     v.iter().sum::<f64>() / v.len().max(1) as f64
+}
+
+/// A law of eq 84's family with $\beta$ fixed: parameters $(t_0, \ln C)$.
+pub(crate) struct FixedBeta<Q> {
+    /// The law with $(\beta, t_0, \ln C)$.
+    pub law: Q,
+    /// The fixed $\beta$.
+    pub beta: f64,
+}
+
+impl<Q: Problem<3>> FixedBeta<Q> {
+    fn full(&self, p: &SVector<f64, 2>) -> SVector<f64, 3> {
+        SVector::<f64, 3>::new(self.beta, p[0], p[1])
+    }
+}
+
+impl<Q: Problem<3>> Problem<2> for FixedBeta<Q> {
+    fn y(&self) -> &[f64] {
+        self.law.y()
+    }
+    fn model(&self, p: &SVector<f64, 2>, i: usize) -> (f64, SVector<f64, 2>) {
+        let (m, g) = self.law.model(&self.full(p), i);
+        (m, SVector::<f64, 2>::new(g[1], g[2]))
+    }
+    fn rows(&self, p: &SVector<f64, 2>) -> Vec<Row> {
+        self.law.rows(&self.full(p))
+    }
+    fn admissible(&self, p: &SVector<f64, 2>) -> bool {
+        self.law.admissible(&self.full(p))
+    }
+}
+
+/// A fit of eq 84 with $\beta$ fixed.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FixedFit {
+    /// The fixed $\beta$.
+    pub beta: f64,
+    /// $t_0$ (s) and its standard uncertainty.
+    pub t0: f64,
+    /// (s)
+    pub t0_sigma: f64,
+    /// $\ln C$.
+    pub ln_c: f64,
+    /// Whitened $\chi^2$ (unscaled).
+    pub chi2: f64,
+    /// $\ln\det\Sigma$ at the solution.
+    pub ln_det_sigma: f64,
+    /// Points fitted.
+    pub n: usize,
+}
+
+/// Fits eq 84 with $\beta$ fixed to the cycles of [`fit_eq84`], started from the free fit `free`.
+pub fn fit_eq84_fixed(
+    ta: &[f64],
+    tb: &[f64],
+    start: &[usize],
+    w: &[f64],
+    beta: f64,
+    free: &Eq84Fit,
+) -> Result<FixedFit, String> {
+    let n = ta.len();
+    let y: Vec<f64> = ta
+        .iter()
+        .zip(tb)
+        .map(|(a, b)| (b - a) / (2.0 * PI))
+        .collect();
+    // ln C so that the law meets the datum at the window's middle.
+    let m = n / 2;
+    let tm = 0.5 * (ta[m] + tb[m]);
+    let ln_c = -(beta + 2.0) * y[m].ln() + (free.t0 - tm).ln();
+    let pr = FixedBeta {
+        law: Law84 {
+            ta,
+            tb,
+            y: &y,
+            start,
+        },
+        beta,
+    };
+    let s = solve(
+        &pr,
+        w,
+        SVector::<f64, 2>::new(free.t0, ln_c),
+        Scale::Floored,
+    )?;
+    Ok(FixedFit {
+        beta,
+        t0: s.p[0],
+        t0_sigma: s.cov[(0, 0)].sqrt(),
+        ln_c: s.p[1],
+        chi2: s.chi2,
+        ln_det_sigma: s.ln_det_sigma,
+        n,
+    })
 }

@@ -21,24 +21,40 @@
 //! The paper's "Hz" are angular frequencies, rad/s ($\Omega_i = 2\pi/\Delta t$); so are ours.
 
 pub mod analysis;
+pub mod artifacts;
+pub mod audio;
 pub mod band;
+pub mod clean;
+pub mod coverage;
 pub mod csv;
 pub mod error;
 pub mod fit;
+pub mod input;
 pub mod law;
+pub mod least_squares;
 pub mod light;
+pub mod models;
 pub mod numbers;
 pub mod peaks;
+pub mod plausibility;
 pub mod rates;
 pub mod scope;
 pub mod simulate;
+pub mod sound;
 pub mod trace;
+pub mod track;
+pub mod wav;
 
 pub use analysis::{analyze, write_analysis, Analysis, AnalysisSettings};
+pub use artifacts::Artifacts;
+pub use audio::{analyze_sound, SoundAnalysis};
 pub use csv::{parse_trace, read_trace};
 pub use error::ExperimentError;
 pub use law::{law_trace, Law};
 pub use light::{Direction, LightModel};
 pub use scope::Scope;
 pub use simulate::simulate_trace;
+pub use sound::{law_sound, simulate_sound, Microphone};
 pub use trace::{Trace, Truth};
+pub use track::TrackSettings;
+pub use wav::{read_wav, wav_bytes};

@@ -1,7 +1,10 @@
 //! The scope: sample rate, record length, where in the record the spin-down ends, and what the
-//! electronics add: Gaussian noise (seeded) and quantisation.
+//! electronics add: Gaussian noise (`rand_distr`, seeded ChaCha8: the same seed gives the same
+//! bytes on every machine) and quantisation.
 
-use crate::numerics::rng::Rng;
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use rand_distr::{Distribution, StandardNormal};
 use serde::{Deserialize, Serialize};
 
 /// A digital scope as in section 11: 5 kS/s, 50,000 samples.
@@ -96,22 +99,16 @@ impl Scope {
 
     /// What the scope records of a clean signal: plus noise, clipped to the range, quantised.
     pub fn record(&self, clean: &mut [f64]) {
-        let mut rng = Rng::new(self.seed);
+        let mut rng = ChaCha8Rng::seed_from_u64(self.seed);
         let lsb = self.lsb();
         let (lo, hi) = self.range;
         for v in clean.iter_mut() {
-            let mut x = *v + self.noise * gaussian(&mut rng);
+            let g: f64 = StandardNormal.sample(&mut rng);
+            let mut x = *v + self.noise * g;
             if self.bits > 0 {
                 x = lo + ((x.clamp(lo, hi) - lo) / lsb).round() * lsb;
             }
             *v = x;
         }
     }
-}
-
-/// A standard normal deviate by Box-Muller.
-pub fn gaussian(rng: &mut Rng) -> f64 {
-    let u1 = 1.0 - rng.uniform(0.0, 1.0); // in (0, 1]
-    let u2 = rng.uniform(0.0, 1.0);
-    (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
 }

@@ -23,11 +23,62 @@ const HEADING: usize = 4;
 /// $t_{stop}$. After $t_{stop}$ the disk lies flat and the signal is constant. The truth's $t_0$
 /// is defined in [`Truth`].
 pub fn simulate_trace(scene: &Scene, light: &LightModel) -> Result<Trace, ExperimentError> {
+    light.validate().map_err(ExperimentError::Setting)?;
+    let scope = &light.scope;
+    let m = simulate_motion(scene, scope.end_at, scope.sample_rate, scope.samples)?;
+    let flat = light.intensity(0.0, 0.0);
+    let mut v: Vec<f64> = m
+        .alpha
+        .iter()
+        .zip(&m.heading)
+        .map(|(&a, &h)| {
+            if a.is_nan() {
+                flat
+            } else {
+                light.intensity(a, h)
+            }
+        })
+        .collect();
+    scope.record(&mut v);
+    Ok(Trace {
+        source: format!("synthetic:{}", scene.name),
+        t: m.t,
+        v,
+        truth: Some(m.truth),
+    })
+}
+
+/// The sampled motion of a spin-down: tilt and heading at the record's times, NaN after the
+/// spin-down ends (the disk lies flat), and the truth.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Motion {
+    /// Record times (s), the first at 0.
+    pub t: Vec<f64>,
+    /// $\alpha$ (rad), NaN once flat.
+    pub alpha: Vec<f64>,
+    /// The heading $\psi$, $\dot\psi = \Omega$ (rad), NaN once flat.
+    pub heading: Vec<f64>,
+    /// The truth.
+    pub truth: Truth,
+}
+
+/// Integrates a dissipative scene and samples its tilt and heading at `rate` for `samples`
+/// samples, the spin-down ending at record time `end_at` (see [`simulate_trace`]).
+pub fn simulate_motion(
+    scene: &Scene,
+    end_at: f64,
+    rate: f64,
+    samples: usize,
+) -> Result<Motion, ExperimentError> {
     let scene_err = |message: String| ExperimentError::Scene {
         scene: scene.name.clone(),
         message,
     };
-    light.validate().map_err(ExperimentError::Setting)?;
+    if !(rate.is_finite() && rate > 0.0 && end_at.is_finite() && end_at > 0.0) {
+        return Err(scene_err(format!(
+            "the record needs a positive sample rate and end time, got {rate} S/s and {end_at} s"
+        )));
+    }
     if scene.model != ModelKind::Dissipative {
         return Err(scene_err(format!(
             "the experiment needs a spinning-down disk: model must be dissipative, not {}",
@@ -80,13 +131,12 @@ pub fn simulate_trace(scene: &Scene, light: &LightModel) -> Result<Trace, Experi
     // 1. When does the spin-down end?
     let first = stopped(0.0, y0, scene.stop.time, None)?;
     let t_stop = ended(&first)?;
-    let scope = &light.scope;
-    let t_start = t_stop - scope.end_at;
+    let t_start = t_stop - end_at;
     if t_start <= 0.0 {
         return Err(scene_err(format!(
             "the spin-down lasts {t_stop:.3} s, but the record starts {} s before its end: \
              start at a larger alpha0 or lower epsilon",
-            scope.end_at
+            end_at
         )));
     }
     // 2. The state at the start of the record.
@@ -94,29 +144,29 @@ pub fn simulate_trace(scene: &Scene, light: &LightModel) -> Result<Trace, Experi
         .map_err(|e| scene_err(e.to_string()))?;
     let (_, y_start) = to_start.last();
     // 3. Sampled from there to the end.
-    let dt = scope.dt();
+    let dt = 1.0 / rate;
     let run = stopped(t_start, y_start, t_stop + 1.0, Some(dt))?;
     let t_end = ended(&run)?;
     let (_, y_end) = run.last();
 
-    let times = scope.times();
-    let flat = light.intensity(0.0, 0.0);
-    let mut v: Vec<f64> = vec![flat; times.len()];
+    let times: Vec<f64> = (0..samples).map(|j| j as f64 * dt).collect();
+    let mut alpha = vec![f64::NAN; samples];
+    let mut heading = vec![f64::NAN; samples];
     // The last point of a sampled solution is the event, off the grid: skip it.
     let on_grid = run.t.len().saturating_sub(1);
-    for (j, y) in run.y.iter().take(on_grid.min(v.len())).enumerate() {
-        v[j] = light.intensity(y[0], y[HEADING]);
+    for (j, y) in run.y.iter().take(on_grid.min(samples)).enumerate() {
+        alpha[j] = y[0];
+        heading[j] = y[HEADING];
     }
-    scope.record(&mut v);
 
     let beta = law.beta;
     let tau_rem = 2.0 * y_end[0] / ((beta + 2.0) * y_end[1].abs().max(f64::MIN_POSITIVE));
     let t_stop_rec = t_end - t_start;
-    Ok(Trace {
-        source: format!("synthetic:{}", scene.name),
+    Ok(Motion {
         t: times,
-        v,
-        truth: Some(Truth {
+        alpha,
+        heading,
+        truth: Truth {
             beta,
             t0: t_stop_rec + tau_rem,
             t_stop: t_stop_rec,
@@ -126,6 +176,6 @@ pub fn simulate_trace(scene: &Scene, light: &LightModel) -> Result<Trace, Experi
                 "dissipative model, beta = {beta}, epsilon = {}, scene {}",
                 law.epsilon, scene.name
             ),
-        }),
+        },
     })
 }

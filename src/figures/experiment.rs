@@ -434,3 +434,177 @@ fn odot(e: &Experiment) -> Result<Figure, String> {
         drawing: Drawing::Plot(plot),
     })
 }
+
+/// $\Omega(t)$ of eq 79 with parameters $(\beta, t_0, \ln C)$ and its gradient in them.
+fn law_and_gradient(p: [f64; 3], t: f64) -> (f64, [f64; 3]) {
+    let q = 1.0 / (p[0] + 2.0);
+    let tau = p[1] - t;
+    let l = p[2] - tau.ln();
+    let om = (q * l).exp();
+    (om, [-q * q * om * l, -q * om / tau, q * om])
+}
+
+/// The rate per cycle with eq 79 fitted and its 95 % band, $\pm 1.96\sqrt{g^{\mathsf T}\Sigma g}$
+/// with $g = \partial\Omega/\partial(\beta, t_0, \ln C)$ and $\Sigma$ the fit's stated covariance.
+/// A pure function of the analysis.
+pub fn omega_band(a: &crate::experiment::Analysis) -> Figure {
+    let f = &a.eq84;
+    let p = [f.beta, f.t0, f.ln_c];
+    let pts: Vec<(f64, f64)> = a
+        .window
+        .cycles
+        .iter()
+        .filter_map(|&i| a.cycles.get(i))
+        .map(|c| (c.t, c.omega))
+        .collect();
+    let (t_a, t_b) = (a.window.t_first, a.window.t_last);
+    let mut law = Vec::new();
+    let (mut lo, mut hi) = (Vec::new(), Vec::new());
+    for k in 0..=200 {
+        let t = t_a + (t_b - t_a) * k as f64 / 200.0;
+        let (om, g) = law_and_gradient(p, t);
+        let var: f64 = (0..3)
+            .flat_map(|i| (0..3).map(move |j| (i, j)))
+            .map(|(i, j)| g[i] * f.covariance[i][j] * g[j])
+            .sum();
+        let d = 1.96 * var.max(0.0).sqrt();
+        law.push((t, om));
+        lo.push((t, om - d));
+        hi.push((t, om + d));
+    }
+    let plot = Plot::new(
+        "Omega_i with eq 79 and its 95 % band",
+        "time t (s)",
+        "Omega (rad/s)",
+    )
+    .with(Series::new("Omega_i, fitted cycles", pts, Style::Points))
+    .with(Series::new(
+        format!("eq 79: beta = {:.4} +- {:.4}", f.beta, f.beta_sigma),
+        law,
+        Style::Line,
+    ))
+    .with(Series::new("95 % band", lo, Style::Dotted))
+    .with(Series::new("", hi, Style::Dotted))
+    .legend_at(Legend::UpperLeft);
+    Figure {
+        name: "omega_band",
+        title: "The frequency track with the fitted law and its band".into(),
+        caption: format!(
+            "{}: the rate of each fitted cycle and eq 79 with the parameters of eq 84's fit, \
+             beta = {:.4} +- {:.4}, t0 = {:.5} +- {:.5} s; the dotted lines are the 95 % band \
+             of the curve from the fit's stated covariance (scaled by the reduced chi2 {:.2} \
+             and by the residuals' lag-one correlation).",
+            a.source, f.beta, f.beta_sigma, f.t0, f.t0_sigma, f.reduced_chi2
+        ),
+        drawing: Drawing::Plot(plot),
+    }
+}
+
+/// The whitened residuals of eq 84's fit against time: unit scatter, no structure, when the law
+/// and the noise model hold.
+pub fn residuals(a: &crate::experiment::Analysis) -> Figure {
+    let pts: Vec<(f64, f64)> = a.eq84.points.iter().map(|p| (p.x, p.normalized)).collect();
+    let plot = Plot::new(
+        "Whitened residuals of eq 84",
+        "time t (s)",
+        "residual / sigma",
+    )
+    .with(Series::new("cycles", pts, Style::Points))
+    .mark(Axis::Y, 0.0, "")
+    .legend_at(Legend::Hidden);
+    Figure {
+        name: "residuals",
+        title: "Residuals of eq 84's fit".into(),
+        caption: format!(
+            "{}: each fitted cycle's residual in 1/Omega, whitened by the peak-time covariance \
+             (unit variance when the noise model holds). Reduced chi2 {:.2}; R^2 {:.6}.",
+            a.source, a.eq84.reduced_chi2, a.verdict.r2
+        ),
+        drawing: Drawing::Plot(plot),
+    }
+}
+
+/// $P(|Z| \le z)$ for a standard normal $Z$, by Simpson's rule on $e^{-x^2/2}$ (400 panels;
+/// accurate to 1e-10 for $z \le 4$): the claimed coverage curve.
+fn normal_inside(z: f64) -> f64 {
+    let n = 400;
+    let h = z / n as f64;
+    let f = |x: f64| (-0.5 * x * x).exp();
+    let s: f64 = (0..=n)
+        .map(|k| {
+            let w = if k == 0 || k == n {
+                1.0
+            } else if k % 2 == 1 {
+                4.0
+            } else {
+                2.0
+            };
+            w * f(k as f64 * h)
+        })
+        .sum();
+    2.0 * s * h / 3.0 / (2.0 * std::f64::consts::PI).sqrt()
+}
+
+/// The coverage study: the fraction of recordings whose truth lies inside $\pm z$ stated
+/// standard uncertainties, against $z$, for beta and t0, with the claimed normal curve.
+pub fn coverage(c: &crate::experiment::coverage::Coverage) -> Figure {
+    let zs: Vec<f64> = (1..=30).map(|k| 0.1 * k as f64).collect();
+    let curve = |pulls: &[f64]| -> Vec<(f64, f64)> {
+        zs.iter().map(|&z| (z, c.fraction(pulls, z))).collect()
+    };
+    let claimed: Vec<(f64, f64)> = zs.iter().map(|&z| (z, normal_inside(z))).collect();
+    let plot = Plot::new(
+        "Coverage of the stated intervals",
+        "z (stated standard uncertainties)",
+        "fraction inside +- z",
+    )
+    .with(Series::new("beta", curve(&c.beta_pulls), Style::Points))
+    .with(Series::new("t0", curve(&c.t0_pulls), Style::Squares))
+    .with(Series::new("claimed (normal)", claimed, Style::Dashed))
+    .mark(Axis::X, 1.96, "95 %")
+    .legend_at(Legend::LowerRight);
+    Figure {
+        name: "coverage",
+        title: "Monte Carlo coverage of the stated uncertainties".into(),
+        caption: c.summary(),
+        drawing: Drawing::Plot(plot),
+    }
+}
+
+/// A sound recording's frequency track with eq 79's fitted frame means.
+pub fn sound_track(s: &crate::experiment::SoundAnalysis) -> Figure {
+    let mid = |p: &crate::experiment::track::TrackPoint| 0.5 * (p.a + p.b);
+    let pts: Vec<(f64, f64)> = s.track.points.iter().map(|p| (mid(p), p.omega)).collect();
+    let fit: Vec<(f64, f64)> = s
+        .track
+        .points
+        .iter()
+        .zip(&s.fit.model)
+        .map(|(p, m)| (mid(p), *m))
+        .collect();
+    let plot = Plot::new(
+        "The sound's fundamental, Omega",
+        "time t (s)",
+        "Omega (rad/s)",
+    )
+    .with(Series::new("spectral track (frames)", pts, Style::Points))
+    .with(Series::new(
+        format!(
+            "eq 79: beta = {:.3} +- {:.3}, t0 = {:.4} s",
+            s.fit.beta, s.fit.beta_sigma, s.fit.t0
+        ),
+        fit,
+        Style::Line,
+    ))
+    .legend_at(Legend::UpperLeft);
+    Figure {
+        name: "sound_track",
+        title: "Frequency track of a sound recording".into(),
+        caption: format!(
+            "{}: the fundamental of each {}-sample frame (the contact point's rate Omega/2 pi, \
+             chosen by the harmonic sum of three harmonics) and eq 79's frame means fitted to it.",
+            s.source, s.track.frame
+        ),
+        drawing: Drawing::Plot(plot),
+    }
+}

@@ -1,0 +1,117 @@
+//! Which dissipation law do the data support? Eq 84 with $\beta$ free against $\beta$ fixed at
+//! the mechanisms around eq 75 ($P \propto \Omega^\beta$ from a drag force $\propto \Omega^{\beta-1}$:
+//! 1, a drag independent of speed; 2, rolling friction proportional to the contact point's speed;
+//! 3, air drag proportional to its square; 4, Moffatt's viscous air film), and a two-mechanism
+//! law, compared by AIC and BIC on the same cycles.
+//!
+//! The errors' scale is not known (the peak-time variances may understate the scatter), so the
+//! Gaussian likelihood is maximised over a common scale factor $s^2$ as well:
+//! $$-2\ln\hat L = n\ln\frac{\chi^2_w}{n} + \ln\det\Sigma + n(1 + \ln 2\pi),$$
+//! with $\chi^2_w$ the whitened residuals' sum of squares and $\Sigma$ the peak-time covariance
+//! of the residuals; $k$ counts the law's parameters plus the scale;
+//! $\mathrm{AIC} = -2\ln\hat L + 2k$, $\mathrm{BIC} = -2\ln\hat L + k\ln n$.
+//! A difference $\Delta$ from the best of 0-2 is "as good", 2-6 "positive", 6-10 "strong" and
+//! above 10 "decisive" evidence against (Kass & Raftery's scale, read for $\Delta\mathrm{BIC}$).
+
+use serde::Serialize;
+use std::f64::consts::PI;
+
+/// One candidate law's fit and its scores.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Candidate {
+    /// The law, in words.
+    pub name: String,
+    /// Its fitted parameters, in words with numbers.
+    pub parameters: String,
+    /// Parameters counted (the law's plus the common scale).
+    pub k: usize,
+    /// Whitened $\chi^2$.
+    pub chi2: f64,
+    /// AIC.
+    pub aic: f64,
+    /// BIC.
+    pub bic: f64,
+    /// AIC minus the smallest AIC.
+    pub delta_aic: f64,
+    /// BIC minus the smallest BIC.
+    pub delta_bic: f64,
+    /// Akaike weight $e^{-\Delta/2}/\sum e^{-\Delta/2}$.
+    pub weight: f64,
+}
+
+/// The comparison.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Comparison {
+    /// Points compared.
+    pub n: usize,
+    /// The candidates, best BIC first.
+    pub candidates: Vec<Candidate>,
+    /// The verdict in words.
+    pub summary: String,
+}
+
+/// The words of Kass & Raftery's scale for a BIC difference.
+pub fn strength(delta: f64) -> &'static str {
+    if delta < 2.0 {
+        "not worth more than a mention"
+    } else if delta < 6.0 {
+        "positive"
+    } else if delta < 10.0 {
+        "strong"
+    } else {
+        "decisive"
+    }
+}
+
+/// Scores candidates `(name, parameters, law parameters, chi2, ln det Sigma)` fitted to the
+/// same `n` points.
+pub fn compare(n: usize, fits: Vec<(String, String, usize, f64, f64)>) -> Comparison {
+    let nf = n as f64;
+    let mut c: Vec<Candidate> = fits
+        .into_iter()
+        .filter(|f| f.3.is_finite() && f.3 > 0.0)
+        .map(|(name, parameters, p, chi2, ln_det)| {
+            let k = p + 1;
+            let m2ll = nf * (chi2 / nf).ln() + ln_det + nf * (1.0 + (2.0 * PI).ln());
+            Candidate {
+                name,
+                parameters,
+                k,
+                chi2,
+                aic: m2ll + 2.0 * k as f64,
+                bic: m2ll + k as f64 * nf.ln(),
+                delta_aic: 0.0,
+                delta_bic: 0.0,
+                weight: 0.0,
+            }
+        })
+        .collect();
+    let best_aic = c.iter().map(|x| x.aic).fold(f64::INFINITY, f64::min);
+    let best_bic = c.iter().map(|x| x.bic).fold(f64::INFINITY, f64::min);
+    for x in c.iter_mut() {
+        x.delta_aic = x.aic - best_aic;
+        x.delta_bic = x.bic - best_bic;
+    }
+    let total: f64 = c.iter().map(|x| (-0.5 * x.delta_aic).exp()).sum();
+    for x in c.iter_mut() {
+        x.weight = (-0.5 * x.delta_aic).exp() / total;
+    }
+    c.sort_by(|a, b| a.bic.total_cmp(&b.bic));
+    let summary = match (c.first(), c.get(1)) {
+        (Some(a), Some(b)) => format!(
+            "the data support {} ({}); the next, {}, is {:.1} higher in BIC: {} evidence against it",
+            a.name,
+            a.parameters,
+            b.name,
+            b.delta_bic,
+            strength(b.delta_bic)
+        ),
+        (Some(a), None) => format!("only {} could be fitted", a.name),
+        _ => "no law could be fitted".into(),
+    };
+    Comparison {
+        n,
+        candidates: c,
+        summary,
+    }
+}
