@@ -5,6 +5,7 @@
 //! only the states the scene needs and integrates it through [`solve`], the only door to
 //! `ode_solvers`.
 
+pub mod budget;
 pub mod catalogue;
 pub mod check;
 pub mod compare;
@@ -14,6 +15,7 @@ pub mod equations;
 pub mod experiment;
 pub mod figures;
 pub mod finding;
+pub mod input;
 pub mod model;
 pub mod numerics;
 pub mod output;
