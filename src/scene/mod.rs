@@ -311,11 +311,29 @@ impl Scene {
         let spec: SceneSpec = serde_yaml::from_str(src).map_err(|e| {
             let raw = e.to_string();
             let raw = raw.find(" at line ").map_or(raw.as_str(), |i| &raw[..i]);
+            let (line, column) = match e.location() {
+                Some(l) => (Some(l.line()), Some(l.column())),
+                None => (None, None),
+            };
+            let at = line.zip(column).and_then(|(l, c)| {
+                let text = src.lines().nth(l.checked_sub(1)?)?;
+                text.chars().nth(c.checked_sub(1)?)
+            });
+            let mut message = message::translate(raw);
+            if at == Some('\t') && !message.contains("tab") {
+                message = "a tab character here: YAML indents with spaces only: replace the tab \
+                           with spaces"
+                    .to_string();
+            } else if raw.contains("cannot start any token") {
+                message.push_str(
+                    ": `@` and the backtick are reserved in YAML: put such a value in quotes",
+                );
+            }
             SceneError {
                 file: file.to_string(),
-                line: e.location().map(|l| l.line()),
-                column: e.location().map(|l| l.column()),
-                message: message::translate(raw),
+                line,
+                column,
+                message,
             }
         })?;
         Validator { src, file }.scene(spec)
