@@ -410,6 +410,11 @@ impl<'a, D: Dynamics<N>, const N: usize> Problem<'a, D, N> {
 /// A fixed step is taken as unresolved, and the run as unstable, when the part of the step
 /// beyond first order exceeds this multiple of its first-order (Euler) part.
 ///
+/// The first-order part is taken as the largest of the recent steps' (a maximum that decays by
+/// 1 % a step, so over about a hundred steps): at the turning points of a nutation the slope
+/// passes near zero while the curvature does not, and the step's own Euler part would make the
+/// ratio spike there without any instability.
+///
 /// For a linear mode $\dot y = \lambda y$ the RK4 step multiplies $y$ by
 /// $R(z) = 1 + z + z^2/2 + z^3/6 + z^4/24$ with $z = h\lambda$, so the ratio is
 /// $|z/2 + z^2/6 + z^3/24|$. It reaches 1 at $z = -2.785$, exactly RK4's stability limit on the
@@ -434,6 +439,8 @@ struct Bridge<'p, 'a, D, const N: usize> {
     /// Watch each fixed step's resolution (RK4 only).
     fixed_step: bool,
     unstable: Option<(f64, f64, f64)>,
+    /// The decaying maximum of the recent steps' Euler parts.
+    scale: f64,
     deadline: Option<Deadline>,
     timed_out: Option<f64>,
 }
@@ -451,22 +458,26 @@ impl<'p, 'a, D: Dynamics<N>, const N: usize> Bridge<'p, 'a, D, N> {
             steps: 0,
             fixed_step: false,
             unstable: None,
+            scale: 0.0,
             deadline: None,
             timed_out: None,
         }
     }
 
     /// The step from `self.last` to `(t, y)` with first slope `dy`: `Some((ratio, h))` when its
-    /// higher-order part exceeds [`RK4_RESOLUTION`] times its Euler part. A floor of 1e-6 of
-    /// the state's size keeps round-off in a motion at rest from counting.
-    fn unresolved(&self, t: f64, y: &State<N>, dy: &State<N>) -> Option<(f64, f64)> {
+    /// higher-order part exceeds [`RK4_RESOLUTION`] times the recent Euler parts, or the size
+    /// of the state itself (a step that jumps). A floor of 1e-6 of the state's size keeps
+    /// round-off in a motion at rest from counting.
+    fn unresolved(&mut self, t: f64, y: &State<N>, dy: &State<N>) -> Option<(f64, f64)> {
         let (t_a, y_a) = &self.last;
         let h = t - t_a;
         let euler = dy * h;
+        self.scale = euler.norm().max(0.99 * self.scale);
         let rest = (y - y_a - euler).norm();
         let floor = 1e-6 * (1.0 + y_a.norm());
-        (rest > RK4_RESOLUTION * euler.norm() && rest > floor)
-            .then(|| (rest / euler.norm().max(f64::MIN_POSITIVE), h))
+        let unresolved = rest > RK4_RESOLUTION * self.scale && rest > floor;
+        let jump = rest > y_a.norm() + euler.norm();
+        (unresolved || jump).then(|| (rest / self.scale.max(f64::MIN_POSITIVE), h))
     }
 }
 

@@ -542,3 +542,57 @@ fn files(root: &Path, dir: &Path, into: &mut Vec<(u64, String)>) {
         }
     }
 }
+
+/// The RK4 resolution watch on modes whose stability is known: $\dot y = -\lambda y$ is stable
+/// for RK4 up to $h\lambda = 2.785$; an oscillator is stable up to $h\omega = 2\sqrt 2$ and
+/// resolved well below. Nothing is flagged where the method is stable and resolving, and the
+/// real-axis mode beyond its limit is flagged.
+#[test]
+fn rk4_is_flagged_exactly_where_its_steps_stop_resolving() {
+    use rolling_disk::solve::{solve, Dynamics, Ending, Method, Problem, Settings, State};
+    struct Decay(f64);
+    impl Dynamics<1> for Decay {
+        fn rhs(&self, y: &State<1>, dy: &mut State<1>) {
+            dy[0] = -self.0 * y[0];
+        }
+    }
+    struct Oscillator(f64);
+    impl Dynamics<2> for Oscillator {
+        fn rhs(&self, y: &State<2>, dy: &mut State<2>) {
+            dy[0] = y[1];
+            dy[1] = -self.0 * self.0 * y[0];
+        }
+    }
+    let rk4 = |step: f64| Settings {
+        method: Method::Rk4,
+        step,
+        ..Settings::default()
+    };
+    for (z, flagged) in [
+        (0.5, false),
+        (2.0, false),
+        (2.7, false),
+        (2.9, true),
+        (4.0, true),
+    ] {
+        let sol = solve(
+            Problem::new(&Decay(1.0), 0.0, State::<1>::new(1.0), 200.0 * z),
+            &rk4(z),
+        )
+        .expect("valid");
+        assert_eq!(
+            matches!(sol.ending, Ending::Unstable { .. }),
+            flagged,
+            "h lambda = {z}: {:?}",
+            sol.ending
+        );
+    }
+    for hw in [0.05, 0.3, 1.0] {
+        let sol = solve(
+            Problem::new(&Oscillator(1.0), 0.0, State::<2>::new(1.0, 0.0), 1000.0),
+            &rk4(hw),
+        )
+        .expect("valid");
+        assert_eq!(sol.ending, Ending::TimeReached, "h omega = {hw}");
+    }
+}
