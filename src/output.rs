@@ -42,6 +42,9 @@ pub enum SetError {
     /// The target exists and holds files this tool did not write.
     #[error("--out {0}: exists and is not a report set written by this tool (it has no {MANIFEST}); give a new or empty directory so that nothing of yours is replaced")]
     Foreign(String),
+    /// The target has no name of its own (`.`, `..`, `/`).
+    #[error("--out {0}: name a directory of its own (for example --out report), not . or .. or /, since the whole set is replaced")]
+    NoName(String),
     /// The target exists and is not a directory.
     #[error("--out {0}: exists and is not a directory; give the path of a directory")]
     NotDirectory(String),
@@ -114,7 +117,7 @@ impl SetWriter {
         let name = target
             .file_name()
             .map(|n| n.to_string_lossy().into_owned())
-            .ok_or_else(|| SetError::NotDirectory(shown.clone()))?;
+            .ok_or_else(|| SetError::NoName(shown.clone()))?;
         let parent = target
             .parent()
             .filter(|p| !p.as_os_str().is_empty())
@@ -329,6 +332,14 @@ mod tests {
         assert!(matches!(
             write_set(&file, "x"),
             Err(SetError::NotDirectory(_))
+        ));
+        assert!(matches!(
+            write_set(Path::new("."), "x"),
+            Err(SetError::NoName(_))
+        ));
+        assert!(matches!(
+            write_set(Path::new("/"), "x"),
+            Err(SetError::NoName(_))
         ));
         let _ = std::fs::remove_dir_all(&root);
     }

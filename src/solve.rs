@@ -299,7 +299,7 @@ impl fmt::Display for Ending {
             ),
             Ending::Unstable { t, ratio, step } => write!(
                 f,
-                "rk4 went unstable at t = {t:.9} s: its step of {step:e} s is beyond what it \
+                "rk4 went unstable at t = {t:.9} s: its step of {step:.3e} s is beyond what it \
                  resolves there (the step's higher-order part is {ratio:.3e} times its \
                  first-order part), so no number of this run can be trusted: lower solver.step \
                  or use method: dop853"
