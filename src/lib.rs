@@ -5,6 +5,7 @@
 //! only the states the scene needs and integrates it through [`solve`], the only door to
 //! `ode_solvers`.
 
+pub mod budget;
 pub mod catalogue;
 pub mod check;
 pub mod compare;
@@ -16,6 +17,7 @@ pub mod experiment;
 pub mod figures;
 pub mod finding;
 pub mod friction;
+pub mod input;
 pub mod model;
 pub mod mutation;
 pub mod numerics;

@@ -5,11 +5,12 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rolling_disk::check::{run_checks, Checked, Selection, Tally};
 use rolling_disk::equations::{built_in_paper, Bench};
 use rolling_disk::experiment;
-use rolling_disk::output::write_atomically;
+use rolling_disk::output::{write_atomically, SetWriter};
 use rolling_disk::paper::Paper;
 use rolling_disk::precision::{self, Accuracy};
 use rolling_disk::run::{run, Run};
 use rolling_disk::scene::{builtin::BUILTIN, Scene};
+use rolling_disk::solve::Ending;
 use std::path::Path;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -23,6 +24,10 @@ use std::process::ExitCode;
 struct Cli {
     #[command(subcommand)]
     command: Command,
+    /// Wall-time budget of each integration, in seconds (default 600): a run that takes longer
+    /// ends and says so instead of running on.
+    #[arg(long, global = true, value_name = "SECONDS")]
+    max_seconds: Option<f64>,
 }
 
 #[derive(Subcommand)]
@@ -222,6 +227,12 @@ impl ArtifactArgs {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    if let Some(seconds) = cli.max_seconds {
+        if let Err(message) = rolling_disk::budget::set_wall_seconds(seconds) {
+            eprintln!("error: {message}");
+            return ExitCode::FAILURE;
+        }
+    }
     let result = match cli.command {
         Command::Simulate {
             scene,
@@ -324,6 +335,13 @@ fn simulate(name: &str, csv: Option<PathBuf>, compare: Option<&str>) -> Result<(
     let result = run(&scene, Some(&report)).map_err(|e| format!("{}: {e}", scene.source));
     bar.finish_and_clear();
     let result = result?;
+    if matches!(
+        result.ending,
+        Ending::Unstable { .. } | Ending::NonFinite { .. }
+    ) {
+        // No number of such a run means anything: say why, print none.
+        return Err(format!("{}: {}", scene.source, result.ending));
+    }
     print_summary(&scene, &result);
     if let Some(path) = csv {
         write_atomically(&path, result.to_csv().as_bytes())
@@ -408,6 +426,8 @@ fn report(
     paper: Option<&Path>,
 ) -> Result<(), String> {
     use rolling_disk::report::{build::build, render};
+    // Check --out and make room beside it before computing anything.
+    let set = SetWriter::begin(out).map_err(|e| e.to_string())?;
     let bench = bench_for(accuracy, load_paper(paper)?);
     let status = |s: &str| eprintln!("report: {s}...");
     let (report, figures) = build(&bench, &status)?;
@@ -422,7 +442,10 @@ fn report(
         ],
     };
     status("writing");
-    let written = render::write(&report, &figures, out, &formats)?;
+    let written = render::write(&report, &figures, set.dir(), &formats)?;
+    let shown: Vec<PathBuf> = written.iter().map(|p| set.final_path(p)).collect();
+    set.commit(&written).map_err(|e| e.to_string())?;
+    let written = shown;
     let t = &report.summary.equations;
     println!(
         "{} equations checked: {} hold, {} hold approximately, {} definitions, {} fail; {} claims fail",
@@ -463,6 +486,13 @@ fn figures(only: Option<&str>, out: &Path, format: FigureFormat) -> Result<(), S
             .collect(),
         None => names.clone(),
     };
+    if wanted.is_empty() {
+        return Err(format!(
+            "--only was given no figure name; name some (the figures are: {}) or leave --only out \
+             to draw them all",
+            names.join(", ")
+        ));
+    }
     for w in &wanted {
         if !names.contains(w) {
             return Err(format!(
@@ -504,6 +534,13 @@ fn check(
     let bench = bench_for(accuracy, load_paper(paper)?);
     let started = std::time::Instant::now();
     let selection = match only {
+        Some(text) if text.split(',').all(|s| s.trim().is_empty()) => {
+            return Err(
+                "--only was given an empty list; name equations, ranges or claim ids \
+                 (for example --only 23-25,50) or leave --only out to run every check"
+                    .to_string(),
+            )
+        }
         Some(text) => Selection::parse(text)?,
         None => Selection::default(),
     };

@@ -1,5 +1,6 @@
 //! Running a scene: build the model with only the states it needs, integrate, record.
 
+use crate::budget;
 use crate::dispatch::{dispatch, problem, Visit};
 use crate::model::{Model, Motion};
 use crate::scene::{ModelKind, Scene};
@@ -35,7 +36,9 @@ pub struct Run {
     pub contact_events: Vec<crate::model::sliding::scene::ContactEvent>,
 }
 
-/// Runs a scene. `progress` receives the simulated time now and then.
+/// Runs a scene. `progress` receives the simulated time now and then. A run records at most
+/// [`budget::MAX_ROWS`] rows: a scene that samples more finely is refused before integrating (by
+/// [`solve`]), and an unsampled run that takes more steps is refused after it.
 pub fn run(scene: &Scene, progress: Option<&dyn Fn(f64)>) -> Result<Run, SettingsError> {
     if scene.model == ModelKind::Sliding {
         return crate::model::sliding::scene::run(scene);
@@ -57,6 +60,14 @@ impl Visit for Integrate<'_> {
         p.progress = self.progress;
         p.sample = scene.sample;
         let sol = solve(p, &scene.settings)?;
+        let rows = sol.t.len() as u64;
+        if rows > budget::MAX_ROWS {
+            return Err(SettingsError::Rows {
+                rows,
+                limit: budget::MAX_ROWS,
+                suggest: scene.stop.time / (budget::MAX_ROWS as f64 / 10.0),
+            });
+        }
         Ok(record(model, scene, &y0, &sol))
     }
 }

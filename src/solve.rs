@@ -12,6 +12,7 @@
 //! - It can only stop after an accepted step. A stop event is detected on the step ends and then
 //!   located by bisection on re-integrations from the start of the step that crossed it.
 
+use crate::budget::{self, Deadline};
 use nalgebra::SVector;
 use ode_solvers::dop_shared::IntegrationError;
 use ode_solvers::{Dop853, Dopri5, OutputType, Rk4, System};
@@ -80,12 +81,59 @@ impl Default for Settings {
 /// Settings that cannot be used.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum SettingsError {
-    /// rtol must be positive and finite.
-    #[error("rtol must be a positive number (for example 1e-10), got {0}")]
+    /// rtol must lie strictly between 0 and 1: at 1 or above the error control accepts any step,
+    /// so the numbers would mean nothing.
+    #[error("rtol must lie strictly between 0 and 1 (for example 1e-10; at 1 or above any step is accepted and the result means nothing), got {0}")]
     Rtol(f64),
-    /// atol must be positive and finite.
-    #[error("atol must be a positive number (for example 1e-12), got {0}")]
+    /// atol must be zero or positive, and finite.
+    #[error("atol must be zero or a positive number (for example 1e-12), got {0}")]
     Atol(f64),
+    /// max_steps must be at least 1 and at most [`budget::MAX_STEPS_LIMIT`].
+    #[error("max_steps must lie between 1 and {limit}, got {steps}")]
+    MaxSteps {
+        /// The value asked for.
+        steps: u64,
+        /// The limit.
+        limit: u64,
+    },
+    /// The steps the solver might store would take more memory than the budget.
+    #[error("max_steps = {steps} lets the solver store up to {mib} MiB of steps of {states} states, more than the budget of {limit_mib} MiB: lower max_steps to {fits} or less")]
+    Memory {
+        /// Steps asked for (max_steps, or the rk4 steps needed).
+        steps: u64,
+        /// States of the system.
+        states: usize,
+        /// MiB those steps take.
+        mib: u64,
+        /// The budget in MiB.
+        limit_mib: u64,
+        /// The most steps that fit the budget.
+        fits: u64,
+    },
+    /// A run without `sample` took more steps than rows may be recorded.
+    #[error("the run took {rows} steps, each recorded as a row, more than the limit of {limit} rows: add sample: {suggest:.3e} (seconds between rows) to the scene")]
+    Rows {
+        /// Rows the run produced.
+        rows: u64,
+        /// The limit.
+        limit: u64,
+        /// A sampling interval that records about a tenth of the limit.
+        suggest: f64,
+    },
+    /// Sampling would record more rows than allowed.
+    #[error("sampling every {sample} s over {span} s records {rows:.0} rows, more than the limit of {limit}: raise sample to at least {least:.3e} s")]
+    Samples {
+        /// The sampling interval.
+        sample: f64,
+        /// The time span.
+        span: f64,
+        /// Rows it would record.
+        rows: f64,
+        /// The limit.
+        limit: u64,
+        /// The smallest interval within the limit.
+        least: f64,
+    },
     /// The RK4 step must be positive and finite.
     #[error("the rk4 step must be a positive number of seconds (for example 1e-4), got {0}")]
     Step(f64),
@@ -111,19 +159,43 @@ pub enum SettingsError {
 }
 
 impl Settings {
-    /// Checks that the settings can be used.
+    /// Checks that the settings can be used: rtol in (0, 1), atol >= 0, a positive finite rk4
+    /// step, and max_steps between 1 and [`budget::MAX_STEPS_LIMIT`]. The memory the steps may
+    /// take depends on the number of states and is checked by [`solve`].
     pub fn validate(&self) -> Result<(), SettingsError> {
         let ok = |x: f64| x.is_finite() && x > 0.0;
+        let steps = u64::from(self.max_steps);
+        if steps == 0 || steps > budget::MAX_STEPS_LIMIT {
+            return Err(SettingsError::MaxSteps {
+                steps,
+                limit: budget::MAX_STEPS_LIMIT,
+            });
+        }
         match self.method {
             Method::Rk4 if !ok(self.step) => Err(SettingsError::Step(self.step)),
-            Method::Dopri5 | Method::Dop853 if !ok(self.rtol) => {
+            Method::Dopri5 | Method::Dop853 if !(ok(self.rtol) && self.rtol < 1.0) => {
                 Err(SettingsError::Rtol(self.rtol))
             }
-            Method::Dopri5 | Method::Dop853 if !ok(self.atol) => {
+            Method::Dopri5 | Method::Dop853 if !(self.atol.is_finite() && self.atol >= 0.0) => {
                 Err(SettingsError::Atol(self.atol))
             }
             _ => Ok(()),
         }
+    }
+
+    /// Checks that `steps` stored steps of an `n`-state system fit the memory budget.
+    fn check_memory(steps: u64, n: usize) -> Result<(), SettingsError> {
+        let bytes = budget::trajectory_bytes(steps, n);
+        if bytes <= budget::TRAJECTORY_BYTES {
+            return Ok(());
+        }
+        Err(SettingsError::Memory {
+            steps,
+            states: n,
+            mib: bytes >> 20,
+            limit_mib: budget::TRAJECTORY_BYTES >> 20,
+            fits: budget::TRAJECTORY_BYTES / budget::trajectory_bytes(1, n),
+        })
     }
 }
 
@@ -190,6 +262,24 @@ pub enum Ending {
         /// Why, in a sentence.
         reason: String,
     },
+    /// A fixed-step (rk4) run went unstable in the step ending at `t`: the step's terms beyond
+    /// first order were `ratio` times its first-order (Euler) term, so the step is beyond what
+    /// the method resolves (see [`RK4_RESOLUTION`]); the state there is discarded.
+    Unstable {
+        /// The end of the first unresolved step.
+        t: f64,
+        /// Higher-order over first-order part of that step.
+        ratio: f64,
+        /// The step.
+        step: f64,
+    },
+    /// The wall-time budget of the integration ran out at simulated time `t`.
+    WallTime {
+        /// Where.
+        t: f64,
+        /// The budget, in seconds.
+        seconds: f64,
+    },
 }
 
 impl Ending {
@@ -207,11 +297,24 @@ impl fmt::Display for Ending {
             Ending::StepCollapse { t } => write!(
                 f,
                 "the step size collapsed at t = {t:.12} s (the motion runs into a singularity: \
-                 stop earlier, e.g. with alpha_below)"
+                 stop earlier, e.g. with stop: {{ alpha_below: ... }})"
             ),
             Ending::TooManySteps { t, steps } => write!(
                 f,
-                "gave up after {steps} steps at t = {t:.9} s (loosen rtol or shorten the run)"
+                "gave up after {steps} steps at t = {t:.9} s (raise solver.max_steps, loosen \
+                 solver.rtol or lower stop.time)"
+            ),
+            Ending::Unstable { t, ratio, step } => write!(
+                f,
+                "rk4 went unstable at t = {t:.9} s: its step of {step:.3e} s is beyond what it \
+                 resolves there (the step's higher-order part is {ratio:.3e} times its \
+                 first-order part), so no number of this run can be trusted: lower solver.step \
+                 or use method: dop853"
+            ),
+            Ending::WallTime { t, seconds } => write!(
+                f,
+                "the wall-time budget of {seconds} s ran out at t = {t:.9} s (raise --max-seconds \
+                 or lower stop.time)"
             ),
             Ending::Stiff { t } => write!(f, "the problem became stiff at t = {t:.9} s"),
             Ending::NonFinite { t } => {
@@ -312,17 +415,42 @@ impl<'a, D: Dynamics<N>, const N: usize> Problem<'a, D, N> {
     }
 }
 
-/// Bridges a [`Dynamics`] to `ode_solvers`: ignores the time it is passed, watches the events and
-/// the finiteness of the state after each accepted step.
+/// A fixed step is taken as unresolved, and the run as unstable, when the part of the step
+/// beyond first order exceeds this multiple of its first-order (Euler) part.
+///
+/// The first-order part is taken as the largest of the recent steps' (a maximum that decays by
+/// 1 % a step, so over about a hundred steps): at the turning points of a nutation the slope
+/// passes near zero while the curvature does not, and the step's own Euler part would make the
+/// ratio spike there without any instability.
+///
+/// For a linear mode $\dot y = \lambda y$ the RK4 step multiplies $y$ by
+/// $R(z) = 1 + z + z^2/2 + z^3/6 + z^4/24$ with $z = h\lambda$, so the ratio is
+/// $|z/2 + z^2/6 + z^3/24|$. It reaches 1 at $z = -2.785$, exactly RK4's stability limit on the
+/// negative real axis, and at $|z| \approx 2.1$ on the imaginary axis (the limit there is
+/// $2\sqrt 2$, where the phase is already wrong by a large fraction of a turn). The ratio needs no
+/// extra evaluation: `ode_solvers` hands the step's first slope $f(y_n)$ to the step-end callback.
+pub const RK4_RESOLUTION: f64 = 1.0;
+
+/// Bridges a [`Dynamics`] to `ode_solvers`: ignores the time it is passed, watches the events,
+/// the finiteness of the state, the wall-time budget and (for RK4) the resolution of each step.
 struct Bridge<'p, 'a, D, const N: usize> {
     dynamics: &'a D,
     events: &'p [Event<'a, N>],
     progress: Option<&'a dyn Fn(f64)>,
     /// The last accepted step end at which no event had happened.
     prev: (f64, State<N>),
+    /// The last accepted step end, whatever happened there.
+    last: (f64, State<N>),
     crossed: bool,
     non_finite: Option<f64>,
     steps: u64,
+    /// Watch each fixed step's resolution (RK4 only).
+    fixed_step: bool,
+    unstable: Option<(f64, f64, f64)>,
+    /// The decaying maximum of the recent steps' Euler parts.
+    scale: f64,
+    deadline: Option<Deadline>,
+    timed_out: Option<f64>,
 }
 
 impl<'p, 'a, D: Dynamics<N>, const N: usize> Bridge<'p, 'a, D, N> {
@@ -332,10 +460,32 @@ impl<'p, 'a, D: Dynamics<N>, const N: usize> Bridge<'p, 'a, D, N> {
             events,
             progress: None,
             prev: (t0, y0),
+            last: (t0, y0),
             crossed: false,
             non_finite: None,
             steps: 0,
+            fixed_step: false,
+            unstable: None,
+            scale: 0.0,
+            deadline: None,
+            timed_out: None,
         }
+    }
+
+    /// The step from `self.last` to `(t, y)` with first slope `dy`: `Some((ratio, h))` when its
+    /// higher-order part exceeds [`RK4_RESOLUTION`] times the recent Euler parts, or the size
+    /// of the state itself (a step that jumps). A floor of 1e-6 of the state's size keeps
+    /// round-off in a motion at rest from counting.
+    fn unresolved(&mut self, t: f64, y: &State<N>, dy: &State<N>) -> Option<(f64, f64)> {
+        let (t_a, y_a) = &self.last;
+        let h = t - t_a;
+        let euler = dy * h;
+        self.scale = euler.norm().max(0.99 * self.scale);
+        let rest = (y - y_a - euler).norm();
+        let floor = 1e-6 * (1.0 + y_a.norm());
+        let unresolved = rest > RK4_RESOLUTION * self.scale && rest > floor;
+        let jump = rest > y_a.norm() + euler.norm();
+        (unresolved || jump).then(|| (rest / self.scale.max(f64::MIN_POSITIVE), h))
     }
 }
 
@@ -344,16 +494,27 @@ impl<D: Dynamics<N>, const N: usize> System<f64, State<N>> for &mut Bridge<'_, '
         self.dynamics.rhs(y, dy);
     }
 
-    fn solout(&mut self, t: f64, y: &State<N>, _dy: &State<N>) -> bool {
+    fn solout(&mut self, t: f64, y: &State<N>, dy: &State<N>) -> bool {
         self.steps += 1;
-        if let Some(p) = self.progress {
-            if self.steps.is_multiple_of(256) {
+        if self.steps.is_multiple_of(256) {
+            if let Some(p) = self.progress {
                 p(t);
             }
+        }
+        if self.steps.is_multiple_of(64) && self.deadline.is_some_and(|d| d.passed()) {
+            self.timed_out = Some(t);
+            return true;
         }
         if !y.iter().all(|v| v.is_finite()) {
             self.non_finite = Some(t);
             return true;
+        }
+        if self.fixed_step {
+            if let Some((ratio, h)) = self.unresolved(t, y, dy) {
+                self.unstable = Some((t, ratio, h));
+                return true;
+            }
+            self.last = (t, *y);
         }
         if self.events.iter().any(|e| (e.value)(y) <= 0.0) {
             self.crossed = true;
@@ -483,11 +644,23 @@ pub fn solve<D: Dynamics<N>, const N: usize>(
         if !(dt.is_finite() && dt > 0.0) {
             return Err(SettingsError::Sample(dt));
         }
+        let rows = (span / dt).floor() + 2.0;
+        if rows > budget::MAX_ROWS as f64 {
+            return Err(SettingsError::Samples {
+                sample: dt,
+                span,
+                rows,
+                limit: budget::MAX_ROWS,
+                least: span / (budget::MAX_ROWS as f64 - 2.0),
+            });
+        }
     }
     if !problem.y0.iter().all(|v| v.is_finite()) {
         return Err(SettingsError::Start(problem.y0.iter().copied().collect()));
     }
-    if settings.method == Method::Rk4 {
+    // Never allocate from a user's number unchecked: ode_solvers' RK4 reserves room for all
+    // ceil(span / step) steps at once, and the adaptive methods keep every accepted step.
+    let stored = if settings.method == Method::Rk4 {
         let needed = (span / settings.step).ceil();
         if needed > f64::from(settings.max_steps) {
             return Err(SettingsError::TooManyRk4Steps {
@@ -496,8 +669,13 @@ pub fn solve<D: Dynamics<N>, const N: usize>(
                 limit: settings.max_steps,
             });
         }
-    }
+        needed as u64 + 1
+    } else {
+        u64::from(settings.max_steps) + 1
+    };
+    Settings::check_memory(stored, N)?;
     let (t0, y0) = (problem.t0, problem.y0);
+    let deadline = Deadline::start();
     let mut stats = Stats::default();
 
     // An event that already holds at the start ends the run there.
@@ -516,8 +694,11 @@ pub fn solve<D: Dynamics<N>, const N: usize>(
 
     let mut bridge = Bridge::new(problem.dynamics, &problem.events, t0, y0);
     bridge.progress = problem.progress;
+    bridge.fixed_step = settings.method == Method::Rk4;
+    bridge.deadline = Some(deadline);
     let (result, mut ts, mut ys) = raw_run(&mut bridge, settings, t0, y0, problem.t_end, 0.0);
     let (crossed, non_finite, prev) = (bridge.crossed, bridge.non_finite, bridge.prev);
+    let (unstable, timed_out) = (bridge.unstable, bridge.timed_out);
     let mut ending = Ending::TimeReached;
     match result {
         Ok(s) => {
@@ -541,9 +722,18 @@ pub fn solve<D: Dynamics<N>, const N: usize>(
         ending = Ending::NonFinite { t };
         ts.pop();
         ys.pop();
+    } else if let Some((t, ratio, step)) = unstable {
+        ending = Ending::Unstable { t, ratio, step };
+        ts.pop();
+        ys.pop();
+    } else if let Some(t) = timed_out {
+        ending = Ending::WallTime {
+            t,
+            seconds: deadline.seconds(),
+        };
     } else if crossed {
         let (t_a, y_a) = prev;
-        let t_b = *ts.last().expect("a crossing needs a step");
+        let t_b = ts.last().copied().unwrap_or(t0);
         let (index, t_e, y_e) = locate(
             problem.dynamics,
             settings,
@@ -569,7 +759,25 @@ pub fn solve<D: Dynamics<N>, const N: usize>(
 
     let (t, y) = match problem.sample {
         None => (ts, ys),
-        Some(dt) => resample(problem.dynamics, settings, &ts, &ys, t0, dt, &mut stats),
+        Some(dt) => {
+            let (t, y, complete) = resample(
+                problem.dynamics,
+                settings,
+                &ts,
+                &ys,
+                t0,
+                dt,
+                &deadline,
+                &mut stats,
+            );
+            if !complete && ending.is_complete() {
+                ending = Ending::WallTime {
+                    t: *t.last().unwrap_or(&t0),
+                    seconds: deadline.seconds(),
+                };
+            }
+            (t, y)
+        }
     };
     Ok(Solution {
         t,
@@ -621,6 +829,8 @@ fn locate<D: Dynamics<N>, const N: usize>(
 
 /// Samples a solution every `dt` seconds from `t0`, each sample re-integrated from the last
 /// accepted step before it. The final point (end time or event) is kept as the last sample.
+/// The flag is false when the wall-time budget ran out first (the samples then stop there).
+#[allow(clippy::too_many_arguments)]
 fn resample<const N: usize, D: Dynamics<N>>(
     dynamics: &D,
     settings: &Settings,
@@ -628,9 +838,12 @@ fn resample<const N: usize, D: Dynamics<N>>(
     ys: &[State<N>],
     t0: f64,
     dt: f64,
+    deadline: &Deadline,
     stats: &mut Stats,
-) -> (Vec<f64>, Vec<State<N>>) {
-    let t_last = *ts.last().expect("a solution has a start");
+) -> (Vec<f64>, Vec<State<N>>, bool) {
+    let Some((&t_last, &y_last)) = ts.last().zip(ys.last()) else {
+        return (Vec::new(), Vec::new(), true);
+    };
     let mut out_t = Vec::new();
     let mut out_y = Vec::new();
     let mut j = 0;
@@ -640,6 +853,11 @@ fn resample<const N: usize, D: Dynamics<N>>(
         if t >= t_last - 1e-12 * dt.max(t_last.abs()) {
             break;
         }
+        if n.is_multiple_of(64) && deadline.passed() {
+            out_t.push(t_last);
+            out_y.push(y_last);
+            return (out_t, out_y, false);
+        }
         while j + 1 < ts.len() && ts[j + 1] <= t {
             j += 1;
         }
@@ -648,8 +866,8 @@ fn resample<const N: usize, D: Dynamics<N>>(
         n += 1;
     }
     out_t.push(t_last);
-    out_y.push(*ys.last().expect("a solution has a start"));
-    (out_t, out_y)
+    out_y.push(y_last);
+    (out_t, out_y, true)
 }
 
 /// Makes a time-dependent system $\dot y = f(t, y)$ autonomous by carrying $t$ as the last of

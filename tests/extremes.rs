@@ -295,9 +295,9 @@ fn inertia_factor_from_small_to_large() {
 /// - DOPRI5 and DOP853 go on until $\alpha \sim 10^{-18}$ rad and end with
 ///   [`Ending::StepCollapse`], whose message names the singularity; they locate $t_s$ to 1e-9 s
 ///   at rtol 1e-10 and to 1e-6 s at rtol 1e-6.
-/// - RK4 with a fixed step does not notice: it steps across $t_s$ and ends within three steps of
-///   it with [`Ending::NonFinite`], whose message does not mention the singularity (and its last
-///   finite state, kept in the solution, is already meaningless: $|\alpha| \sim 10^{14}$).
+/// - RK4 with a fixed step has no error control; its resolution watch (`RK4_RESOLUTION`) ends it
+///   with [`Ending::Unstable`] within a few steps before $t_s$, where its steps stop resolving
+///   the motion (before that watch it stepped across $t_s$ and ended with a non-finite state).
 /// - With the scene's own stop events the run ends cleanly at an event.
 #[test]
 fn spin_down_into_the_singularity() {
@@ -346,10 +346,10 @@ fn spin_down_into_the_singularity() {
         };
         let sol = end(&s);
         eprintln!("rk4 h {h:e}: {}", sol.ending);
-        let Ending::NonFinite { t } = sol.ending else {
+        let Ending::Unstable { t, .. } = sol.ending else {
             panic!("{:?}", sol.ending)
         };
-        assert!(t > ts - h && t < ts + 3.0 * h, "{t} vs {ts}");
+        assert!(t > ts - 10.0 * h && t < ts + 3.0 * h, "{t} vs {ts}");
     }
     let r = run(&scene, None).expect("runs");
     eprintln!("with the scene's events: {}", r.ending);

@@ -14,10 +14,15 @@
 //! meaning; the error names the file, the line and what to change.
 
 pub mod builtin;
+pub mod depth;
 mod friction;
 pub mod locate;
+pub mod message;
+pub mod range;
 
+use crate::budget;
 use crate::disk::{Disk, DiskError};
+use crate::input;
 use crate::model::dissipation::PowerLaw;
 use crate::model::sliding::{Friction, Slip};
 use crate::model::steady::{rolling_straight, steady_motion, vertical_spin, SteadyError};
@@ -35,15 +40,18 @@ pub struct SceneError {
     pub file: String,
     /// The 1-based line, when known.
     pub line: Option<usize>,
+    /// The 1-based column, when known.
+    pub column: Option<usize>,
     /// What is wrong and what to change.
     pub message: String,
 }
 
 impl fmt::Display for SceneError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self.line {
-            Some(l) => write!(f, "{}:{}: {}", self.file, l, self.message),
-            None => write!(f, "{}: {}", self.file, self.message),
+        match (self.line, self.column) {
+            (Some(l), Some(c)) => write!(f, "{}:{l}:{c}: {}", self.file, self.message),
+            (Some(l), None) => write!(f, "{}:{l}: {}", self.file, self.message),
+            _ => write!(f, "{}: {}", self.file, self.message),
         }
     }
 }
@@ -275,45 +283,73 @@ impl Scene {
             }
         }
         let path = Path::new(name_or_path);
-        let src = std::fs::read_to_string(path).map_err(|e| SceneError {
-            file: name_or_path.to_string(),
-            line: None,
-            message: format!(
-                "cannot read this scene file ({e}); give a path to a YAML file or the name of a \
-                 built-in scene (`rolling-disk scenes` lists them)"
-            ),
+        let src = input::read_text(path, input::MAX_SCENE_BYTES).map_err(|e| {
+            let (line, hint) = match &e {
+                input::InputError::NotText { line, .. } => (Some(*line), ""),
+                input::InputError::Open { .. } => (
+                    None,
+                    "; give a path to a YAML file or the name of a built-in scene \
+                     (`rolling-disk scenes` lists them)",
+                ),
+                _ => (None, ""),
+            };
+            SceneError {
+                file: name_or_path.to_string(),
+                line,
+                column: None,
+                message: format!("{}{hint}", e.reason()),
+            }
         })?;
         Scene::parse(&src, &path.display().to_string())
     }
 
-    /// Parses and validates a scene from YAML text; `file` names it in errors.
+    /// Parses and validates a scene from YAML text; `file` names it in errors. A byte-order
+    /// mark and CR or CRLF line ends are accepted; nesting deeper than [`depth::MAX_DEPTH`] is
+    /// refused before the YAML reader sees it.
     pub fn parse(src: &str, file: &str) -> Result<Scene, SceneError> {
-        let spec: SceneSpec = serde_yaml::from_str(src).map_err(|e| SceneError {
-            file: file.to_string(),
-            line: e.location().map(|l| l.line()),
-            message: yaml_message(&e.to_string()),
+        let src = &*input::normalize(src);
+        if let Err((line, column)) = depth::check(src) {
+            return Err(SceneError {
+                file: file.to_string(),
+                line: Some(line),
+                column: Some(column),
+                message: format!(
+                    "the scene nests deeper than {} levels here; a scene needs at most four \
+                     (for example start: {{ steady: {{ alpha0: 0.3 }} }})",
+                    depth::MAX_DEPTH
+                ),
+            });
+        }
+        let spec: SceneSpec = serde_yaml::from_str(src).map_err(|e| {
+            let raw = e.to_string();
+            let raw = raw.find(" at line ").map_or(raw.as_str(), |i| &raw[..i]);
+            let (line, column) = match e.location() {
+                Some(l) => (Some(l.line()), Some(l.column())),
+                None => (None, None),
+            };
+            let at = line.zip(column).and_then(|(l, c)| {
+                let text = src.lines().nth(l.checked_sub(1)?)?;
+                text.chars().nth(c.checked_sub(1)?)
+            });
+            let mut message = message::translate(raw);
+            if at == Some('\t') && !message.contains("tab") {
+                message = "a tab character here: YAML indents with spaces only: replace the tab \
+                           with spaces"
+                    .to_string();
+            } else if raw.contains("cannot start any token") {
+                message.push_str(
+                    ": `@` and the backtick are reserved in YAML: put such a value in quotes",
+                );
+            }
+            SceneError {
+                file: file.to_string(),
+                line,
+                column,
+                message,
+            }
         })?;
         Validator { src, file }.scene(spec)
     }
-}
-
-/// serde's message without its trailing " at line L column C" (the line is given separately),
-/// with a hint for the commonest mistakes.
-fn yaml_message(raw: &str) -> String {
-    let msg = match raw.find(" at line ") {
-        Some(i) => &raw[..i],
-        None => raw,
-    };
-    let hint = if msg.contains("unknown field") {
-        ": remove or rename that key"
-    } else if msg.contains("unknown variant") {
-        ": use one of the names listed"
-    } else if msg.contains("missing field") {
-        ": add it"
-    } else {
-        ""
-    };
-    format!("{msg}{hint}")
 }
 
 struct Validator<'s> {
@@ -326,8 +362,66 @@ impl Validator<'_> {
         SceneError {
             file: self.file.to_string(),
             line: locate::line_of(self.src, path),
-            message: message.into(),
+            column: None,
+            message: message::compact_numbers(&message.into()),
         }
+    }
+
+    /// Values beyond the supported physical ranges ([`range`]) and budgets ([`budget`]).
+    fn limits(&self, s: &SceneSpec, disk: &Disk, start: &Motion) -> Result<(), SceneError> {
+        let d = &s.disk;
+        for (r, x) in [
+            (range::RADIUS, d.radius),
+            (range::INERTIA_FACTOR, d.k),
+            (range::MASS, d.mass),
+            (range::GRAVITY, d.g),
+        ] {
+            if let Some(m) = r.refuse(x) {
+                return Err(self.err(r.key, m));
+            }
+        }
+        for (key, w) in [
+            ("alpha_dot", start.alpha_dot),
+            ("precession", start.precession),
+            ("spin", start.spin),
+        ] {
+            if let Some(m) = range::refuse_rate(key, w, disk.a, disk.g) {
+                return Err(self.err(&["start"], m));
+            }
+        }
+        let time = s.stop.time.unwrap_or(0.0);
+        if let Some(dt) = s.sample {
+            let rows = (time / dt).floor() + 2.0;
+            if rows > budget::MAX_ROWS as f64 {
+                return Err(self.err(
+                    &["sample"],
+                    format!(
+                        "sample: {dt:e} s over stop.time = {time} s records {rows:.3e} rows, more \
+                         than the limit of {}: raise sample to {:.3e} s or more",
+                        budget::MAX_ROWS,
+                        time / (budget::MAX_ROWS as f64 - 2.0)
+                    ),
+                ));
+            }
+        }
+        let sv = &s.solver;
+        if sv.method == Method::Rk4 && sv.step.is_finite() && sv.step > 0.0 {
+            let needed = (time / sv.step).ceil();
+            if needed > f64::from(sv.max_steps) {
+                return Err(self.err(
+                    &["solver", "step"],
+                    format!(
+                        "solver: rk4 with step {:e} s over stop.time = {time} s needs {needed:.3e} \
+                         steps, more than max_steps = {}: raise step to {:.3e} s or more, or use \
+                         method: dop853",
+                        sv.step,
+                        sv.max_steps,
+                        time / f64::from(sv.max_steps)
+                    ),
+                ));
+            }
+        }
+        Ok(())
     }
 
     fn scene(&self, s: SceneSpec) -> Result<Scene, SceneError> {
@@ -364,10 +458,12 @@ impl Validator<'_> {
             let key = match e {
                 crate::solve::SettingsError::Atol(_) => "atol",
                 crate::solve::SettingsError::Step(_) => "step",
+                crate::solve::SettingsError::MaxSteps { .. } => "max_steps",
                 _ => "rtol",
             };
             self.err(&["solver", key], format!("solver: {e}"))
         })?;
+        self.limits(&s, &disk, &start)?;
         Ok(Scene {
             name: s.name,
             description: s.description,
@@ -453,7 +549,15 @@ impl Validator<'_> {
         } else if let Some(r) = &s.rolling_straight {
             rolling_straight(r.spin)
         } else {
-            let e = s.explicit.as_ref().expect("one form is present");
+            let e = s
+                .explicit
+                .as_ref()
+                .map_or_else(MotionSpec::default, |e| MotionSpec {
+                    alpha: e.alpha,
+                    alpha_dot: e.alpha_dot,
+                    precession: e.precession,
+                    spin: e.spin,
+                });
             Motion {
                 alpha: e.alpha,
                 alpha_dot: e.alpha_dot,

@@ -1,0 +1,105 @@
+//! Budgets on what a user controls: the memory a trajectory may take, the number of samples and
+//! steps, and the wall time of one integration. Each limit is far above what an honest scene
+//! needs (the built-in scenes use at most a few percent of each) and each is checked *before*
+//! anything is allocated from a user's number, so that a hostile scene is refused at once with
+//! a sentence instead of exhausting the machine.
+//!
+//! The wall-time budget is process-wide: the command line sets it once (`--max-seconds`) and
+//! every integration started afterwards, including those run inside `check` and `report`, ends
+//! with [`crate::solve::Ending::WallTime`] when it overruns.
+
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::time::{Duration, Instant};
+
+/// Bytes the stored steps of one integration may take (times, states and the copy
+/// `ode_solvers` hands back): 512 MiB.
+pub const TRAJECTORY_BYTES: u64 = 512 << 20;
+
+/// Most rows one run may record (samples, or accepted steps without `sample`). A million rows
+/// of a scene's columns is about 150 MB in memory and as CSV; the built-in scenes record at most
+/// about 120,000 rows (`spin-down` sampled every 0.5 ms over 60 s).
+pub const MAX_ROWS: u64 = 1_000_000;
+
+/// The largest `max_steps` a scene may ask for, whatever its number of states.
+pub const MAX_STEPS_LIMIT: u64 = 50_000_000;
+
+/// Default wall-time budget of one integration, in seconds.
+pub const DEFAULT_WALL_SECONDS: f64 = 600.0;
+
+/// The wall-time budget of each integration, in milliseconds (0 is never stored: see
+/// [`set_wall_seconds`]).
+static WALL_BUDGET_MILLIS: AtomicU64 = AtomicU64::new((DEFAULT_WALL_SECONDS * 1000.0) as u64);
+
+/// Sets the wall-time budget of every integration started from now on. Returns an error
+/// sentence when `seconds` is not a positive finite number of at most a day.
+pub fn set_wall_seconds(seconds: f64) -> Result<(), String> {
+    if !(seconds.is_finite() && seconds > 0.0 && seconds <= 86_400.0) {
+        return Err(format!(
+            "--max-seconds must be a positive number of seconds up to 86400 (a day), got {seconds}"
+        ));
+    }
+    let millis = (seconds * 1000.0).ceil().max(1.0) as u64;
+    WALL_BUDGET_MILLIS.store(millis, Ordering::Relaxed);
+    Ok(())
+}
+
+/// The wall-time budget of one integration, in seconds.
+pub fn wall_seconds() -> f64 {
+    WALL_BUDGET_MILLIS.load(Ordering::Relaxed) as f64 / 1000.0
+}
+
+/// A deadline for one integration, started now with the current budget.
+#[derive(Debug, Clone, Copy)]
+pub struct Deadline {
+    end: Instant,
+    seconds: f64,
+}
+
+impl Deadline {
+    /// Starts the clock of one integration.
+    pub fn start() -> Self {
+        let seconds = wall_seconds();
+        Self {
+            end: Instant::now() + Duration::from_secs_f64(seconds),
+            seconds,
+        }
+    }
+
+    /// True once the budget is spent.
+    pub fn passed(&self) -> bool {
+        Instant::now() >= self.end
+    }
+
+    /// The budget, in seconds.
+    pub fn seconds(&self) -> f64 {
+        self.seconds
+    }
+}
+
+/// Bytes that `steps` stored steps of an `n`-state system take in the solver (a time and a
+/// state each, twice: the solver's own vectors and the copy handed back).
+pub fn trajectory_bytes(steps: u64, n: usize) -> u64 {
+    steps.saturating_mul(2 * (8 + 8 * n as u64))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_budget_refuses_nonsense_and_keeps_the_last_good_value() {
+        let before = wall_seconds();
+        for bad in [0.0, -1.0, f64::NAN, f64::INFINITY, 1e9] {
+            assert!(set_wall_seconds(bad).is_err(), "{bad} accepted");
+        }
+        assert_eq!(wall_seconds(), before);
+    }
+
+    #[test]
+    fn the_default_step_limit_fits_the_memory_budget_for_every_model() {
+        // The lab-frame model has the most states (13).
+        let default = u64::from(crate::solve::Settings::default().max_steps);
+        assert!(trajectory_bytes(default, 13) <= TRAJECTORY_BYTES);
+        assert!(trajectory_bytes(MAX_STEPS_LIMIT, 4) > TRAJECTORY_BYTES);
+    }
+}
