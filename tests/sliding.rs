@@ -396,5 +396,9 @@ record: [alpha, slip_speed]
     );
     let typo = USER_SCENE.replace("restitution", "restitutoin");
     let e = Scene::parse(&typo, "mine.yaml").unwrap_err();
-    assert!(e.to_string().contains("unknown field"), "{e}");
+    assert!(
+        e.to_string().contains("unknown key `restitutoin`")
+            && e.to_string().contains("did you mean `restitution`?"),
+        "{e}"
+    );
 }

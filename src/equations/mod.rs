@@ -33,7 +33,8 @@ pub fn built_in_paper() -> &'static Paper {
 /// carry a Rust transcription, checked by the ±1e-3 sweep of tests/registry.rs).
 pub const FROM_LATEX: &[u32] = &[
     1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 23, 24, 25, 27, 28, 29, 30, 31, 32, 38, 39, 40, 41,
-    42, 43, 52, 53, 65, 72, 73, 74, 75, 76, 77, 78, 79, 80, 81, 83, 84, 85,
+    42, 43, 44, 45, 46, 47, 48, 49, 50, 51, 52, 53, 54, 55, 56, 57, 58, 65, 72, 73, 74, 75, 76, 77,
+    78, 79, 80, 81, 83, 84, 85,
 ];
 
 /// What a check runs with.
@@ -418,4 +419,44 @@ pub(crate) fn add_threshold(
             )
         });
     }
+}
+
+/// The square $x^2$ of `quantity` that makes the printed relation `rel` hold, for relations in
+/// which it appears only squared (eqs 49-51, 54: $\varpi^2$), read from the printed text: the
+/// residual (left - right) is evaluated at $x$ = 0, $X$ and $2X$; it must be $r_0 + c x^2$ (else NaN,
+/// with the printed form not of that shape), and then $x^2 = -r_0/c$. This reads an unstable
+/// motion's negative $\varpi^2$ too, which no real $\varpi$ could be bound to.
+pub(crate) fn implied_square(
+    eq: &crate::paper::Equation,
+    rel: &crate::paper::Relation<'_>,
+    quantity: &str,
+    bind: &crate::paper::Bindings<f64>,
+) -> f64 {
+    use crate::paper::Value;
+    let residual = |x: f64| -> f64 {
+        let mut b = bind.clone();
+        b.set(quantity, Value::Scalar(x));
+        match (eq.scalar(rel.lhs, &b), eq.scalar(rel.rhs, &b)) {
+            (Ok(l), Ok(r)) => l - r,
+            _ => f64::NAN,
+        }
+    };
+    // Probes at x = 0, X, 2X with X^2 of the size of the answer, so that the difference
+    // r(X) - r(0) keeps its digits.
+    // A first pass estimates c, the second probes where c X^2 is as large as r(0).
+    let r0 = residual(0.0);
+    let mut x = r0.abs().sqrt().max(1e-6);
+    let mut answer = f64::NAN;
+    for _ in 0..2 {
+        let (r1, r2) = (residual(x), residual(2.0 * x));
+        let c = (r1 - r0) / (x * x);
+        let quadratic =
+            (r2 - r0 - 4.0 * c * x * x).abs() <= 1e-9 * (r0.abs() + 4.0 * (c * x * x).abs());
+        if !quadratic || c == 0.0 || !c.is_finite() {
+            return f64::NAN;
+        }
+        answer = -r0 / c;
+        x = (r0 / c).abs().sqrt().max(1e-300);
+    }
+    answer
 }
