@@ -16,18 +16,17 @@
 //! paper's eqs 60-62 enters it. The reference is generic over dual numbers, so its Jacobians (for
 //! the linearizations) are exact too.
 
-use super::{add_threshold, printed_threshold, Bench, Equation};
+use super::{add_threshold, printed_relations, printed_threshold, term_scale, Bench, Equation};
 use crate::disk::Disk;
 use crate::finding::{Finding, Method, Tolerance, Verdict, Worst};
-use crate::model::frictionless::{accelerations, Frictionless};
-use crate::model::rolling::lz;
+use crate::model::frictionless::Frictionless;
 use crate::model::{Extras, Model, Motion};
 use crate::numerics::linearize::{eigenvalues, jacobian};
 use crate::numerics::oscillation::{angular_frequency, bisect};
 use crate::numerics::rng::Rng;
 use crate::paper::Bindings;
 use crate::solve::{solve, Dynamics, Ending, Event, Problem, State};
-use nalgebra::{Complex, SMatrix};
+use nalgebra::{Complex, SMatrix, Vector3};
 use num_dual::{Dual, Dual64, DualNum, HyperDual};
 use std::f64::consts::{FRAC_PI_2, PI};
 
@@ -346,13 +345,40 @@ fn linear(d: &Disk, alpha0: f64) -> Linear {
 
 // ------------------------------------------------------------------ checks
 
+/// The paper's variables of the frictionless disk at state `m`, with the rates
+/// `[alpha_ddot, Omega_dot, omega_1_dot]`, bound to the quantities of paper/symbols.yaml.
+fn state_bindings(d: &Disk, m: &Motion, rates: [f64; 3]) -> Bindings<f64> {
+    Bindings::new()
+        .scalar("alpha", m.alpha)
+        .scalar("alpha_dot", m.alpha_dot)
+        .scalar("alpha_ddot", rates[0])
+        .scalar("Omega", m.precession)
+        .scalar("Omega_dot", rates[1])
+        .scalar("omega_1", m.spin)
+        .scalar("omega_1_dot", rates[2])
+        .scalar("k", d.k)
+        .scalar("g", d.g)
+        .scalar("a", d.a)
+        .scalar("m", d.m)
+}
+
+/// The largest sum of the magnitudes of the terms of a printed relation of `eq` at `bind`: the
+/// round-off scale of its residual (its terms may cancel).
+fn relation_scale(eq: &crate::paper::Equation, bind: &Bindings<f64>) -> f64 {
+    eq.relations()
+        .iter()
+        .map(|r| term_scale(eq, r.lhs, bind) + term_scale(eq, r.rhs, bind))
+        .fold(0.0, f64::max)
+}
+
 /// Eq 59, $\mathbf r_{cm} = a\sin\alpha\,\hat{\mathbf z}$: a model statement (no friction, so the
 /// centre of mass moves only vertically; its height is fixed by the contact).
 ///
-/// Consistency: the height of the centre above the lowest point of the rim, computed from the
-/// disk's orientation alone ($a\sqrt{u_z^2 + v_z^2}$ for any orthonormal $u, v$ spanning the
-/// disk's plane), at the tilts visited by integrations of the frictionless model and at random
-/// tilts in $(0, \pi)$.
+/// Consistency: the printed relation evaluated from its LaTeX with $\mathbf r_{cm}$ bound to the
+/// centre's position above the lowest point of the rim, computed from the disk's orientation
+/// alone (height $a\sqrt{u_z^2 + v_z^2}$ for any orthonormal $u, v$ spanning the disk's plane),
+/// at the tilts visited by integrations of the frictionless model and at random tilts in
+/// $(0, \pi)$.
 pub fn eq59(b: &Bench) -> Finding {
     let mut worst = Worst::default();
     let mut rng = Rng::new(59);
@@ -382,12 +408,18 @@ pub fn eq59(b: &Bench) -> Finding {
         let u = e[1];
         let v = cross(e[0], u);
         let height = a * (u[2] * u[2] + v[2] * v[2]).sqrt();
-        let claimed = b.claim(a * alpha.sin());
-        worst.add(claimed, height, a, || format!("alpha = {alpha:.4}"));
+        let bind = Bindings::new()
+            .vector("r_cm", Vector3::new(0.0, 0.0, height))
+            .vector("z_hat", Vector3::z())
+            .scalar("a", a)
+            .scalar("alpha", alpha);
+        printed_relations(b, 59, &bind, a, &mut worst, &|| {
+            format!("alpha = {alpha:.4}")
+        });
     }
     Finding::from_worst(
         Method::Identity,
-        "height of the centre above the disk's lowest rim point (from the orientation) against a sin(alpha)",
+        "eq 59 as printed, r_cm bound to the centre's height above the disk's lowest rim point (from the orientation)",
         worst,
         Tolerance::roundoff(),
         true,
@@ -425,12 +457,17 @@ fn describe(k: f64, m: &Motion) -> String {
 
 /// Eq 60, $\dot\omega_1 = 0$: the spin stays constant.
 ///
-/// The claim, "omega_1(t) = omega_1(0)", against omega_1(t) on integrations of the Lagrangian
-/// reference (whose spin equation knows nothing of eq 60) from random states with nonzero spin,
-/// over 2 natural times sqrt(a/g) (the reference is costly: 15 hyper-dual Lagrangians a step).
+/// On integrations of the Lagrangian reference (whose spin equation knows nothing of eq 60) from
+/// random states with nonzero spin, over 2 natural times sqrt(a/g) (the reference is costly: 15
+/// hyper-dual Lagrangians a step), two comparisons for each printed relation: its residual at
+/// every step with the reference's own $\dot\omega_1$ (relative to $|\dot\omega_1| + g/a$ + the
+/// squared rates), and the spin it implies, $\omega_1(0) + \int\dot\omega_1\,dt$ with
+/// $\dot\omega_1$ solved from the printed relation at the reference's states (trapezoids over
+/// the steps), against the integrated $\omega_1(t)$.
 pub fn eq60(b: &Bench) -> Finding {
     let mut worst = Worst::default();
     let mut rng = Rng::new(60);
+    let eq = b.paper.equation(60);
     for &k in &[0.1, 0.25, 0.9] {
         let d = disk(k);
         let model = Reference { disk: d };
@@ -445,39 +482,68 @@ pub fn eq60(b: &Bench) -> Finding {
             ) else {
                 continue;
             };
+            let rels = eq.relations();
+            // Per relation: the spin it implies so far, and the previous (t, rate).
+            let mut implied: Vec<(f64, Option<(f64, f64)>)> = vec![(m.spin, None); rels.len()];
             for (t, y) in sol.t.iter().zip(&sol.y) {
-                worst.add(b.claim(m.spin), y[3], m.spin.abs(), || {
-                    format!("{} at t = {t:.4} s", describe(k, m))
-                });
+                let s = Motion {
+                    alpha: y[0],
+                    alpha_dot: y[1],
+                    precession: y[2],
+                    spin: y[3],
+                };
+                let rates = reference_rates(&d, &s);
+                let bind = state_bindings(&d, &s, rates);
+                let scale = rates[2].abs() + squared_rate(&d, &s);
+                let at = || format!("{} at t = {t:.4} s", describe(k, m));
+                printed_relations(b, 60, &bind, scale, &mut worst, &at);
+                for (r, (spin, prev)) in rels.iter().zip(implied.iter_mut()) {
+                    if r.rel.is_inequality() {
+                        continue;
+                    }
+                    let rate = super::solve_printed(
+                        eq,
+                        r,
+                        "omega_1_dot",
+                        &bind,
+                        -1e3 * scale,
+                        1e3 * scale,
+                    )
+                    .unwrap_or(f64::NAN);
+                    if let Some((t0, r0)) = *prev {
+                        *spin += 0.5 * (r0 + rate) * (t - t0);
+                    }
+                    *prev = Some((*t, rate));
+                    worst.add(b.claim(*spin), y[3], m.spin.abs(), || {
+                        format!("spin implied by eq 60 {}: {}", r.name(), at())
+                    });
+                }
             }
         }
     }
     Finding::from_worst(
         Method::IndependentModel,
-        "omega_1(t) claimed constant against omega_1(t) integrated from the Lagrangian reference",
+        "eq 60 as printed at states integrated from the Lagrangian reference (residual with its rate), and the spin it implies against the integrated omega_1(t)",
         worst,
         Tolerance::solver(b.rtol),
         false,
     )
 }
 
-/// Eqs 61-62 compared with the Lagrangian reference at random states: `which` = 0 for
-/// alpha_ddot (eq 61), 1 for Omega_dot (eq 62).
-fn compare_accelerations(b: &Bench, which: usize, seed: u64) -> Worst {
+/// Eqs 61-62: each printed relation of eq `n` evaluated from its LaTeX at random states, with
+/// the rates $(\ddot\alpha, \dot\Omega, \dot\omega_1)$ of the Lagrangian reference there; the
+/// residual relative to the sum of the magnitudes of the relation's terms plus
+/// $g/a + \dot\alpha^2 + \Omega^2 + \omega_1^2$.
+fn residuals(b: &Bench, n: u32, seed: u64) -> Worst {
     let mut worst = Worst::default();
     let mut rng = Rng::new(seed);
+    let eq = b.paper.equation(n);
     for &k in &KS {
         let d = disk(k);
         for m in random_states(&d, &mut rng, 40) {
-            let (alpha_ddot, precession_dot) = accelerations(&d, &m);
-            let claimed = b.claim(if which == 0 {
-                alpha_ddot
-            } else {
-                precession_dot
-            });
-            let reference = reference_rates(&d, &m)[which];
-            let scale = reference.abs() + squared_rate(&d, &m);
-            worst.add(claimed, reference, scale, || describe(k, &m));
+            let bind = state_bindings(&d, &m, reference_rates(&d, &m));
+            let scale = relation_scale(eq, &bind) + squared_rate(&d, &m);
+            printed_relations(b, n, &bind, scale, &mut worst, &|| describe(k, &m));
         }
     }
     worst
@@ -485,25 +551,24 @@ fn compare_accelerations(b: &Bench, which: usize, seed: u64) -> Worst {
 
 /// Eq 61, the frictionless tilt equation,
 /// $(k\Omega^2 + \dot\alpha^2)\sin\alpha\cos\alpha + 2k\omega_1\Omega\sin\alpha - (k + \cos^2\alpha)\ddot\alpha = \frac ga\cos\alpha$,
-/// solved for $\ddot\alpha$, against the Lagrangian reference at 160 random states (error
-/// relative to $|\ddot\alpha| + g/a + \dot\alpha^2 + \Omega^2 + \omega_1^2$).
+/// as printed, at 160 random states with the Lagrangian reference's $\ddot\alpha$.
 pub fn eq61(b: &Bench) -> Finding {
     Finding::from_worst(
         Method::IndependentModel,
-        "alpha_ddot from eq 61 against the Euler-Lagrange equations of the frictionless disk",
-        compare_accelerations(b, 0, 61),
+        "eq 61 as printed at random states, its rates from the Euler-Lagrange equations of the frictionless disk",
+        residuals(b, 61, 61),
         Tolerance::roundoff(),
         false,
     )
 }
 
-/// Eq 62, $\dot\Omega\sin\alpha + 2\dot\alpha\Omega\cos\alpha + 2\omega_1\dot\alpha = 0$, solved
-/// for $\dot\Omega$, against the Lagrangian reference at 160 random states.
+/// Eq 62, $\dot\Omega\sin\alpha + 2\dot\alpha\Omega\cos\alpha + 2\omega_1\dot\alpha = 0$, as
+/// printed, at 160 random states with the Lagrangian reference's $\dot\Omega$.
 pub fn eq62(b: &Bench) -> Finding {
     Finding::from_worst(
         Method::IndependentModel,
-        "Omega_dot from eq 62 against the Euler-Lagrange equations of the frictionless disk",
-        compare_accelerations(b, 1, 62),
+        "eq 62 as printed at random states, its rates from the Euler-Lagrange equations of the frictionless disk",
+        residuals(b, 62, 62),
         Tolerance::roundoff(),
         false,
     )
@@ -530,10 +595,11 @@ fn lz_geometric(d: &Disk, m: &Motion) -> f64 {
 
 /// Eq 63, $k m a^2(\Omega\sin^2\alpha - 2\omega_1\cos\alpha) = L_z$ = constant.
 ///
-/// The claimed $L_z$ along integrations of the frictionless model (eqs 60-62) from random
-/// states, against the geometric $\hat{\mathbf z}\cdot\mathbf I\vec\omega$ at the start: this
-/// tests both the formula and its constancy. Tolerance: the solver's (the formula alone agrees
-/// to round-off).
+/// Along integrations of the frictionless model (eqs 60-62) from random states, each printed
+/// relation evaluated from its LaTeX with $L_z$ bound to the geometric
+/// $\hat{\mathbf z}\cdot\mathbf I\vec\omega$ at the current state and "constant" to its value at
+/// the start: the first relation tests the formula (to round-off), the second the constancy.
+/// Tolerance: the solver's.
 pub fn eq63(b: &Bench) -> Finding {
     let mut worst = Worst::default();
     let mut rng = Rng::new(63);
@@ -541,7 +607,7 @@ pub fn eq63(b: &Bench) -> Finding {
         let d = disk(k);
         for m in random_states(&d, &mut rng, 3) {
             let model = Frictionless::<3>::new(d, m.spin, Extras::default());
-            let reference = lz_geometric(&d, &m);
+            let initial = lz_geometric(&d, &m);
             let scale = d.i22() * (m.precession.abs() + 2.0 * m.spin.abs());
             let t_end = 8.0 / d.g_over_a().sqrt();
             let Ok(sol) = solve(
@@ -553,8 +619,11 @@ pub fn eq63(b: &Bench) -> Finding {
                 continue;
             };
             for (t, y) in sol.t.iter().zip(&sol.y) {
-                let claimed = b.claim(lz(&d, &model.motion(y)));
-                worst.add(claimed, reference, scale, || {
+                let s = model.motion(y);
+                let bind = state_bindings(&d, &s, [f64::NAN; 3])
+                    .scalar("L_z", lz_geometric(&d, &s))
+                    .scalar("L_z_initial", initial);
+                printed_relations(b, 63, &bind, scale, &mut worst, &|| {
                     format!("{} at t = {t:.4} s", describe(k, &m))
                 });
             }
@@ -562,7 +631,7 @@ pub fn eq63(b: &Bench) -> Finding {
     }
     Finding::from_worst(
         Method::Conservation,
-        "L_z of eq 63 along frictionless integrations against z . I omega from geometry at the start",
+        "eq 63 as printed along frictionless integrations, L_z bound to z . I omega from geometry (now and at the start)",
         worst,
         Tolerance::solver(b.rtol),
         false,
@@ -572,9 +641,11 @@ pub fn eq63(b: &Bench) -> Finding {
 /// Eq 64, $\ddot\epsilon + (\Omega^2 - g/ak)\epsilon = 0$ for $\alpha = \pi/2 - \epsilon$.
 ///
 /// The Jacobian of the Lagrangian reference at $\alpha = \pi/2$, $\dot\alpha = 0$,
-/// $\omega_1 = 0$: the stiffness $-\partial\ddot\alpha/\partial\alpha$ against the claimed
-/// $\Omega^2 - g/ak$, and the couplings to $\dot\alpha$ and $\Omega$ against the claimed 0,
-/// over several spin rates of both signs, below and above the threshold.
+/// $\omega_1 = 0$ gives the linear tilt equation $\ddot\epsilon = (\partial\ddot\alpha/\partial\alpha)\,\epsilon$;
+/// the printed relation is evaluated from its LaTeX with that $\ddot\epsilon$ at amplitudes
+/// $\epsilon$ = 0.3 and -0.05 (two, so that a changed power of $\epsilon$ shows), over several
+/// spin rates of both signs, below and above the threshold. The couplings of $\ddot\alpha$ to
+/// $\dot\alpha$ and $\Omega$, absent from the printed form, must vanish.
 pub fn eq64(b: &Bench) -> Finding {
     let mut worst = Worst::default();
     for &k in &KS {
@@ -584,14 +655,25 @@ pub fn eq64(b: &Bench) -> Finding {
             let jac = reference_jacobian(&d, [FRAC_PI_2, 0.0, om], 0.0);
             let scale = om * om + d.g / (d.a * k);
             let at = || format!("k = {k}, Omega = {om:.3}");
-            worst.add(b.claim(om * om - d.g / (d.a * k)), -jac[(1, 0)], scale, at);
+            for eps in [0.3, -0.05] {
+                let bind = Bindings::new()
+                    .scalar("tilt_from_vertical", eps)
+                    .scalar("tilt_from_vertical_ddot", jac[(1, 0)] * eps)
+                    .scalar("Omega", om)
+                    .scalar("g", d.g)
+                    .scalar("a", d.a)
+                    .scalar("k", k);
+                printed_relations(b, 64, &bind, scale * eps.abs(), &mut worst, &|| {
+                    format!("{}, epsilon = {eps}", at())
+                });
+            }
             worst.add(0.0, jac[(1, 1)], scale.sqrt(), at);
             worst.add(0.0, jac[(1, 2)], scale.sqrt(), at);
         }
     }
     Finding::from_worst(
         Method::Linearization,
-        "stiffness of the tilt near the vertical: Omega^2 - g/ak against the Lagrangian reference's Jacobian",
+        "eq 64 as printed with the linear tilt equation of the Lagrangian reference's Jacobian near the vertical",
         worst,
         Tolerance::roundoff(),
         false,
@@ -701,11 +783,13 @@ fn oscillate(
     (sol.ending == Ending::TimeReached).then_some((sol.t, sol.y))
 }
 
-/// Eqs 66-67: the residual of the ansatz on small-amplitude integrations, relative to its
-/// amplitude, at shrinking amplitudes; `which` = 0 for alpha (66), 2 for Omega (67).
-fn ansatz(b: &Bench, which: usize) -> Finding {
+/// Eqs 66-67: the residual of the printed trial form of eq `n` (evaluated from its LaTeX) on
+/// small-amplitude integrations, relative to its amplitude (`amplitude` picks epsilon or
+/// |delta|), at shrinking amplitudes.
+fn ansatz(b: &Bench, n: u32, amplitude: fn(f64, f64) -> f64) -> Finding {
     // Resolving this claim needs tight integrations whatever the preset (see Bench::resolving).
     let b = &b.resolving(1e-12);
+    let eq = b.paper.equation(n);
     let fractions = [1e-2, 3e-3, 1e-3, 3e-4];
     let mut errors = vec![0.0f64; fractions.len()];
     for &k in &[0.25, 0.5] {
@@ -720,23 +804,35 @@ fn ansatz(b: &Bench, which: usize) -> Finding {
                     continue;
                 };
                 for (t, y) in t.iter().zip(&y) {
-                    let c = (lin.varpi * t).cos();
-                    let (claimed, amplitude) = if which == 0 {
-                        (b.claim(alpha0 + eps * c), eps)
-                    } else {
-                        (b.claim(lin.omega0 + delta * c), delta.abs())
-                    };
-                    errors[i] = errors[i].max((claimed - y[which]).abs() / amplitude);
+                    let bind = Bindings::new()
+                        .scalar("alpha", y[0])
+                        .scalar("Omega", y[2])
+                        .scalar("alpha_0", alpha0)
+                        .scalar("Omega_0", lin.omega0)
+                        .scalar("epsilon", eps)
+                        .scalar("delta", delta)
+                        .scalar("varpi", lin.varpi)
+                        .scalar("t", *t);
+                    for r in eq.relations() {
+                        let e = match (eq.scalar(r.lhs, &bind), eq.scalar(r.rhs, &bind)) {
+                            (Ok(l), Ok(rr)) if !r.rel.is_inequality() => {
+                                (b.claim(rr) - l).abs() / amplitude(eps, delta)
+                            }
+                            _ => f64::INFINITY,
+                        };
+                        if e.is_nan() || e > errors[i] {
+                            errors[i] = if e.is_nan() { f64::INFINITY } else { e };
+                        }
+                    }
                 }
             }
         }
     }
-    let what = if which == 0 { "alpha" } else { "Omega" };
     let mut f = Finding::from_order(
         format!(
-            "residual of the trial form for {what} (amplitude from the reference eigenvector, varpi \
-             from its eigenvalue) on frictionless integrations, relative to the amplitude, against \
-             the amplitude epsilon/alpha0"
+            "residual of eq {n}'s trial form as printed (amplitude from the reference eigenvector, \
+             varpi from its eigenvalue) on frictionless integrations, relative to the amplitude, \
+             against the amplitude epsilon/alpha0"
         ),
         &fractions,
         &errors,
@@ -751,15 +847,15 @@ fn ansatz(b: &Bench, which: usize) -> Finding {
 /// Eq 66, the trial form $\alpha = \alpha_0 + \epsilon\cos\varpi t$: a definition, checked for
 /// consistency: on integrations of the frictionless model from steady spinless motion
 /// ($\alpha_0$ = 0.3, 0.9, 1.3; k = 1/4, 1/2) started along the oscillating mode, the residual
-/// of the trial form relative to $\epsilon$ must fall as $\epsilon$ (first-order ansatz).
+/// of the printed form relative to $\epsilon$ must fall as $\epsilon$ (first-order ansatz).
 pub fn eq66(b: &Bench) -> Finding {
-    ansatz(b, 0)
+    ansatz(b, 66, |eps, _| eps)
 }
 
 /// Eq 67, the trial form $\Omega = \Omega_0 + \delta\cos\varpi t$, checked like eq 66 (same
-/// frequency, in phase with the tilt).
+/// frequency, in phase with the tilt), relative to $|\delta|$.
 pub fn eq67(b: &Bench) -> Finding {
-    ansatz(b, 2)
+    ansatz(b, 67, |_, delta| delta.abs())
 }
 
 fn sweep_linear(mut f: impl FnMut(&Disk, f64, &Linear, &mut Worst)) -> Worst {
@@ -774,19 +870,37 @@ fn sweep_linear(mut f: impl FnMut(&Disk, f64, &Linear, &mut Worst)) -> Worst {
     worst
 }
 
-/// Eq 68, $\delta = -2\epsilon\Omega_0\cot\alpha_0$: the ratio $\delta/\epsilon$ of the
-/// oscillating eigenvector of the Lagrangian reference linearized about steady spinless motion
-/// (its steady precession derived from the reference itself), which must be real.
+/// The steady spinless motion's quantities of the small-oscillation equations.
+fn linear_bindings(d: &Disk, alpha0: f64, lin: &Linear) -> Bindings<f64> {
+    Bindings::new()
+        .scalar("alpha_0", alpha0)
+        .scalar("Omega_0", lin.omega0)
+        .scalar("k", d.k)
+        .scalar("g", d.g)
+        .scalar("a", d.a)
+}
+
+/// Eq 68, $\delta = -2\epsilon\Omega_0\cot\alpha_0$, evaluated from its LaTeX with $\delta$
+/// bound to $\epsilon$ times the ratio $\delta/\epsilon$ of the oscillating eigenvector of the
+/// Lagrangian reference linearized about steady spinless motion (its steady precession derived
+/// from the reference itself), at $\epsilon$ = 0.3 and -0.05; the ratio must be real.
 pub fn eq68(b: &Bench) -> Finding {
     let worst = sweep_linear(|d, alpha0, lin, worst| {
-        let claimed = b.claim(-2.0 * lin.omega0 / alpha0.tan());
         let at = || format!("k = {}, alpha0 = {alpha0}", d.k);
-        worst.add(claimed, lin.ratio.re, lin.ratio.re.abs(), at);
+        for eps in [0.3, -0.05] {
+            let delta = lin.ratio.re * eps;
+            let bind = linear_bindings(d, alpha0, lin)
+                .scalar("epsilon", eps)
+                .scalar("delta", delta);
+            printed_relations(b, 68, &bind, delta.abs(), worst, &|| {
+                format!("{}, epsilon = {eps}", at())
+            });
+        }
         worst.add(0.0, lin.ratio.im, lin.ratio.re.abs(), at);
     });
     Finding::from_worst(
         Method::Linearization,
-        "delta/epsilon = -2 Omega0 cot(alpha0) against the eigenvector of the linearized Lagrangian reference",
+        "eq 68 as printed, delta from the eigenvector of the linearized Lagrangian reference",
         worst,
         Tolerance::roundoff(),
         false,
@@ -796,29 +910,38 @@ pub fn eq68(b: &Bench) -> Finding {
 /// Eq 69, the first-order part of the tilt equation:
 /// $\epsilon\varpi^2(k + \cos^2\alpha_0) = \epsilon k\Omega_0^2(1 - 2\cos^2\alpha_0) - 2\delta k\Omega_0\sin\alpha_0\cos\alpha_0 - \epsilon\frac ga\sin\alpha_0$.
 /// With $\alpha = \alpha_0 + \epsilon\cos\varpi t$, $\Omega = \Omega_0 + \delta\cos\varpi t$ the
-/// reference's linear tilt equation reads
-/// $-\varpi^2\epsilon = J_{\alpha}\epsilon + J_{\Omega}\delta$ (and no $\dot\alpha$ term), so the
-/// claimed coefficients of $\epsilon$ and $\delta$ divided by $k + \cos^2\alpha_0$ are compared
-/// with $-\partial\ddot\alpha/\partial\alpha$ and $-\partial\ddot\alpha/\partial\Omega$.
+/// reference's linear tilt equation reads $-\varpi^2\epsilon = J_{\alpha}\epsilon + J_{\Omega}\delta$
+/// (and no $\dot\alpha$ term) for any amplitudes, not only the eigenvector's: the printed
+/// relation is evaluated from its LaTeX at $\epsilon = 0.3$ and $\delta = \epsilon(\delta/\epsilon)_{\rm eig} + s\,\epsilon\Omega_0$,
+/// $s \in \{0, \pm\frac12\}$, with $\varpi^2 = -(J_\alpha\epsilon + J_\Omega\delta)/\epsilon$
+/// (pairs where that is not positive are skipped), so that the coefficients of $\epsilon$ and
+/// $\delta$ are tested separately. Errors relative to the relation's terms.
 pub fn eq69(b: &Bench) -> Finding {
     let worst = sweep_linear(|d, alpha0, lin, worst| {
-        let k = d.k;
-        let (s, c) = alpha0.sin_cos();
-        let om = lin.omega0;
-        let lhs = k + c * c;
-        let c_eps = b.claim(k * om * om * (1.0 - 2.0 * c * c) - d.g_over_a() * s) / lhs;
-        // Round-off scale of the epsilon coefficient: its terms, which cancel near pi/2.
-        let terms = (k * om * om * (1.0 + 2.0 * c * c) + d.g_over_a() * s) / lhs;
-        let c_delta = b.claim(-2.0 * k * om * s * c) / lhs;
         let (j_a, j_ad, j_om) = (lin.jac[(1, 0)], lin.jac[(1, 1)], lin.jac[(1, 2)]);
-        let at = || format!("k = {k}, alpha0 = {alpha0}");
-        worst.add(c_eps, -j_a, terms.max(j_a.abs()), at);
-        worst.add(c_delta, -j_om, j_om.abs(), at);
+        let at = || format!("k = {}, alpha0 = {alpha0}", d.k);
+        let eps = 0.3;
+        let eq = b.paper.equation(69);
+        for s in [0.0, 0.5, -0.5] {
+            let delta = (lin.ratio.re + s * lin.omega0) * eps;
+            let varpi2 = -(j_a * eps + j_om * delta) / eps;
+            if varpi2 <= 0.0 {
+                continue;
+            }
+            let bind = linear_bindings(d, alpha0, lin)
+                .scalar("epsilon", eps)
+                .scalar("delta", delta)
+                .scalar("varpi", varpi2.sqrt());
+            let scale = relation_scale(eq, &bind);
+            printed_relations(b, 69, &bind, scale, worst, &|| {
+                format!("{}, delta = {delta:.4}", at())
+            });
+        }
         worst.add(0.0, j_ad, j_a.abs().sqrt(), at);
     });
     Finding::from_worst(
         Method::Linearization,
-        "coefficients of epsilon and delta in eq 69 against the linearized Lagrangian reference",
+        "eq 69 as printed, varpi from the linear tilt equation of the Lagrangian reference at independent epsilon and delta",
         worst,
         Tolerance::roundoff(),
         false,
@@ -826,64 +949,59 @@ pub fn eq69(b: &Bench) -> Finding {
 }
 
 /// Eq 70, $\varpi^2(k + \cos^2\alpha_0) = k\Omega_0^2(1 + 2\cos^2\alpha_0) - \frac ga\sin\alpha_0 = 3k\Omega_0^2\cos^2\alpha_0$:
-/// both right-hand sides against $\varpi^2(k + \cos^2\alpha_0)$ with $\varpi$ the eigenvalue of
-/// the Lagrangian reference linearized about its own steady spinless motion. Errors relative to
-/// the size of the middle form's terms (they cancel near $\alpha_0 = \pi/2$, where round-off is
+/// both printed relations evaluated from the LaTeX with $\varpi$ the eigenvalue of the Lagrangian
+/// reference linearized about its own steady spinless motion $\Omega_0$. Errors relative to the
+/// size of the relation's terms (they cancel near $\alpha_0 = \pi/2$, where round-off is
 /// relative to them, not to their small difference).
 pub fn eq70(b: &Bench) -> Finding {
+    let eq = b.paper.equation(70);
     let worst = sweep_linear(|d, alpha0, lin, worst| {
-        let k = d.k;
-        let (s, c) = alpha0.sin_cos();
-        let om2 = lin.omega0 * lin.omega0;
-        let reference = lin.varpi * lin.varpi * (k + c * c);
-        let at = || format!("k = {k}, alpha0 = {alpha0}");
-        let middle = b.claim(k * om2 * (1.0 + 2.0 * c * c) - d.g_over_a() * s);
-        // Round-off scale: the terms of the middle form, which cancel to O(cos^2) near pi/2.
-        let terms = k * om2 * (1.0 + 2.0 * c * c) + d.g_over_a() * s;
-        worst.add(middle, reference, terms, at);
-        worst.add(b.claim(3.0 * k * om2 * c * c), reference, terms, at);
+        let bind = linear_bindings(d, alpha0, lin).scalar("varpi", lin.varpi);
+        let scale = relation_scale(eq, &bind);
+        printed_relations(b, 70, &bind, scale, worst, &|| {
+            format!("k = {}, alpha0 = {alpha0}", d.k)
+        });
     });
     Finding::from_worst(
         Method::Linearization,
-        "varpi^2 (k + cos^2 alpha0) of eq 70 (both forms) against the eigenvalues of the linearized Lagrangian reference",
+        "eq 70 as printed (both relations), varpi and Omega0 from the linearized Lagrangian reference",
         worst,
         Tolerance::roundoff(),
         false,
     )
 }
 
-/// Eq 71, $\varpi/\Omega_0 = \sqrt{3k/(k + \cos^2\alpha_0)}\cos\alpha_0$: the frequency of the
-/// tilt measured on integrations of the frictionless model over 10 periods, started along the
-/// oscillating mode at amplitudes $\epsilon = 10^{-4}\alpha_0\cos\alpha_0$ and $2\epsilon$ (the
-/// motion's scales are $\alpha_0$ and, near the vertical, $\cos\alpha_0$), extrapolated to
-/// zero amplitude by Richardson ($\varpi(\epsilon) = \varpi + c\epsilon^2 + O(\epsilon^4)$:
-/// the amplitude's shift is even in $\epsilon$), divided by the steady $\Omega_0$. Smaller
-/// amplitudes drown in the solver's error on $\alpha$, which is relative to $\alpha_0$.
+/// Eq 71, $\varpi/\Omega_0 = \sqrt{3k/(k + \cos^2\alpha_0)}\cos\alpha_0$, evaluated from its
+/// LaTeX with $\varpi$ the frequency of the tilt measured on integrations of the frictionless
+/// model over 10 periods, started along the oscillating mode at amplitudes
+/// $\epsilon = 10^{-4}\alpha_0\cos\alpha_0$ and $2\epsilon$ (the motion's scales are $\alpha_0$
+/// and, near the vertical, $\cos\alpha_0$), extrapolated to zero amplitude by Richardson
+/// ($\varpi(\epsilon) = \varpi + c\epsilon^2 + O(\epsilon^4)$: the amplitude's shift is even in
+/// $\epsilon$), and $\Omega_0$ the steady precession. Smaller amplitudes drown in the solver's
+/// error on $\alpha$, which is relative to $\alpha_0$.
 pub fn eq71(b: &Bench) -> Finding {
     // Resolving this claim needs tight integrations whatever the preset (see Bench::resolving).
     let b = &b.resolving(1e-12);
     let worst = sweep_linear(|d, alpha0, lin, worst| {
-        let k = d.k;
-        let c = alpha0.cos();
-        let claimed = b.claim((3.0 * k / (k + c * c)).sqrt() * c);
         let measure = |eps: f64| {
             oscillate(b, d, lin, alpha0, eps, 10.0).and_then(|(t, y)| {
                 let x: Vec<f64> = y.iter().map(|y| y[0]).collect();
                 angular_frequency(&t, &x)
             })
         };
-        let eps = 1e-4 * alpha0 * c;
-        let reference = match (measure(eps), measure(2.0 * eps)) {
-            (Some(w1), Some(w2)) => (4.0 * w1 - w2) / 3.0 / lin.omega0,
+        let eps = 1e-4 * alpha0 * alpha0.cos();
+        let varpi = match (measure(eps), measure(2.0 * eps)) {
+            (Some(w1), Some(w2)) => (4.0 * w1 - w2) / 3.0,
             _ => f64::NAN,
         };
-        worst.add(claimed, reference, reference, || {
-            format!("k = {k}, alpha0 = {alpha0}")
+        let bind = linear_bindings(d, alpha0, lin).scalar("varpi", varpi);
+        printed_relations(b, 71, &bind, varpi / lin.omega0, worst, &|| {
+            format!("k = {}, alpha0 = {alpha0}", d.k)
         });
     });
     Finding::from_worst(
         Method::Integration,
-        "varpi/Omega0 of eq 71 against the frequency measured on small oscillations of the frictionless model",
+        "eq 71 as printed, varpi measured on small oscillations of the frictionless model",
         worst,
         Tolerance::solver(b.rtol),
         false,
@@ -893,6 +1011,7 @@ pub fn eq71(b: &Bench) -> Finding {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::model::frictionless::accelerations;
 
     fn verdicts(f: fn(&Bench) -> Finding) -> (Finding, Finding) {
         let start = std::time::Instant::now();
@@ -905,6 +1024,21 @@ mod tests {
         );
         assert_eq!(bad.verdict, Verdict::Fails, "perturbed must fail");
         (ok, bad)
+    }
+
+    /// For an equation printed as `... = 0` (eqs 62, 64), whose claimed side a relative
+    /// perturbation cannot move: the printed form holds, and every mutant of its LaTeX fails.
+    fn printed_holds_and_mutants_fail(n: u32, f: fn(&Bench) -> Finding) {
+        let b = Bench::default();
+        let ok = f(&b);
+        assert_eq!(ok.verdict, Verdict::Holds, "eq {n}: {ok:?}");
+        let ms = crate::paper::mutate::mutants(&b.paper.equation(n).chains);
+        assert!(!ms.is_empty(), "eq {n} has no mutants");
+        for m in ms {
+            let paper = b.paper.with_chains(n, m.chains);
+            let bad = f(&Bench::with_paper(&paper));
+            assert_eq!(bad.verdict, Verdict::Fails, "eq {n}: {} survives", m.change);
+        }
     }
 
     #[test]
@@ -941,7 +1075,7 @@ mod tests {
 
     #[test]
     fn eq62_holds() {
-        assert_eq!(verdicts(eq62).0.verdict, Verdict::Holds);
+        printed_holds_and_mutants_fail(62, eq62);
     }
 
     #[test]
@@ -951,7 +1085,7 @@ mod tests {
 
     #[test]
     fn eq64_holds() {
-        assert_eq!(verdicts(eq64).0.verdict, Verdict::Holds);
+        printed_holds_and_mutants_fail(64, eq64);
     }
 
     #[test]
