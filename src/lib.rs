@@ -27,6 +27,7 @@ pub mod precision;
 pub mod report;
 pub mod run;
 pub mod scene;
+pub mod select;
 pub mod solve;
 
 pub use disk::Disk;

@@ -72,11 +72,16 @@ enum Command {
         #[arg(long, value_enum, default_value = "svg")]
         format: FigureFormat,
     },
-    /// Lists the built-in scenes.
-    Scenes,
+    /// Lists the built-in scenes, or prints one as a YAML template to edit.
+    Scenes {
+        /// Print this built-in scene as a ready-to-edit YAML template.
+        #[arg(long, value_name = "NAME")]
+        show: Option<String>,
+    },
     /// Checks the paper's equations and prose claims, each against an independent reference.
     Check {
-        /// Only these: equation numbers, ranges and claim ids, comma-separated (e.g. 23-25,50).
+        /// Only these: equation numbers, ranges and claim ids, comma-separated, with or without
+        /// a prefix (e.g. 23-25,eq50,claim:k-uniform-disk).
         #[arg(long, value_name = "LIST")]
         only: Option<String>,
         /// Print the findings as JSON instead of a table.
@@ -239,7 +244,10 @@ fn main() -> ExitCode {
             csv,
             compare,
         } => simulate(&scene, csv, compare.as_deref()),
-        Command::Scenes => scenes(),
+        Command::Scenes { show: Some(name) } => rolling_disk::select::scene_template(&name)
+            .map(|t| print!("{t}"))
+            .map_err(|e| e.to_string()),
+        Command::Scenes { show: None } => scenes(),
         Command::Report {
             format,
             out,
@@ -541,7 +549,7 @@ fn check(
                     .to_string(),
             )
         }
-        Some(text) => Selection::parse(text)?,
+        Some(text) => rolling_disk::select::parse_only(text).map_err(|e| e.to_string())?,
         None => Selection::default(),
     };
     let bar = ProgressBar::with_draw_target(None, ProgressDrawTarget::stderr());

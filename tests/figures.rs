@@ -48,6 +48,85 @@ fn every_figure_builds_draws_and_is_deterministic() {
     }
 }
 
+/// The axis labels of every plot of a drawing.
+fn axis_labels(f: &Figure) -> Vec<(String, String)> {
+    let of = |c: &rolling_disk::figures::Chart| (c.x_label.clone(), c.y_label.clone());
+    match &f.drawing {
+        Drawing::Chart(c) => vec![of(c)],
+        Drawing::Plot(p) => vec![of(&p.chart)],
+        Drawing::Panels(p) => p.plots.iter().map(|p| of(&p.chart)).collect(),
+        Drawing::Geometry(_) => vec![],
+    }
+}
+
+/// Every plot, at both sizes the report draws (SVG 760 x 480 at scale 1, PNG 1800 x 1200 at
+/// scale 3): its legend covers no plotted pixel (bounding boxes, as plotters lays the legend
+/// out), each axis has at least three labelled ticks and a label.
+#[test]
+fn legends_cover_no_data_and_every_axis_has_ticks_and_a_label() {
+    let mut defects = Vec::new();
+    for f in figures::all().expect("figures build") {
+        for (w, h, scale) in [(760, 480, 1.0), (1800, 1200, 3.0)] {
+            for (i, l) in f
+                .drawing
+                .layouts(w, h, scale)
+                .expect("lays out")
+                .iter()
+                .enumerate()
+            {
+                let at = format!("{} (plot {i}, {w}x{h})", f.name);
+                if l.covered > 0 {
+                    defects.push(format!(
+                        "{at}: the legend at {:?} covers {} plotted pixels",
+                        l.legend, l.covered
+                    ));
+                }
+                if l.x_ticks < 3 || l.y_ticks < 3 {
+                    defects.push(format!(
+                        "{at}: {} x ticks, {} y ticks",
+                        l.x_ticks, l.y_ticks
+                    ));
+                }
+            }
+        }
+        for (x, y) in axis_labels(&f) {
+            if x.trim().is_empty() || y.trim().is_empty() {
+                defects.push(format!("{}: an unlabelled axis ({x:?}, {y:?})", f.name));
+            }
+        }
+    }
+    assert!(defects.is_empty(), "{}", defects.join("\n"));
+}
+
+/// The bounding-box test can fail: a legend pinned over a line through the plot is caught.
+#[test]
+fn a_legend_over_the_data_is_caught() {
+    use rolling_disk::figures::{Legend, Plot, Series, Style};
+    let line: Vec<(f64, f64)> = (0..=100).map(|i| (i as f64, i as f64)).collect();
+    let plot = Plot::new("diagonal", "x (m)", "y (m)").with(Series::new(
+        "a line from corner to corner",
+        line,
+        Style::Line,
+    ));
+    // Asked for the upper right, which the line crosses, the legend goes to the free corner.
+    let pinned = plot
+        .legend_at(Legend::UpperRight)
+        .layout((760, 480), 1.0)
+        .unwrap();
+    assert_eq!(pinned.covered, 0, "{pinned:?}");
+    assert_eq!(pinned.legend, Some(Legend::UpperLeft));
+    // Lines across the whole plot and a fixed range leave no free corner: the test's count
+    // sees the overlap.
+    let mut full = Plot::new("full", "x (m)", "y (m)").y_range(0.0, 1.0);
+    for k in 0..=20 {
+        let y = k as f64 / 20.0;
+        let label = if k == 0 { "lines" } else { "" };
+        full = full.with(Series::new(label, vec![(0.0, y), (1.0, y)], Style::Line));
+    }
+    let full = full.layout((760, 480), 1.0).unwrap();
+    assert!(full.covered > 0, "{full:?}");
+}
+
 #[test]
 fn figures_can_be_built_by_name() {
     let f = figures::by_name("stability-map")

@@ -6,7 +6,9 @@
 //! coordinates ([`Note`]). Build one with a struct literal (`..Default::default()` for what you do
 //! not set) or with [`Chart::new`] and its builder methods.
 
-use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
+use super::legend::{self, Layout};
+use super::ticks;
+use plotters::coord::ranged1d::{AsRangedCoord, BoldPoints, Ranged, ValueFormatter};
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use serde::Serialize;
@@ -59,8 +61,12 @@ impl Series {
 /// Where the legend goes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
 pub enum Legend {
-    /// Upper right corner (the default).
+    /// The first corner that covers no plotted point (see [`super::legend::choose`]); when
+    /// every corner covers some and the y range is automatic, the range grows at the top until
+    /// the upper corners are free. The default.
     #[default]
+    Auto,
+    /// Upper right corner.
     UpperRight,
     /// Upper left corner.
     UpperLeft,
@@ -246,6 +252,12 @@ impl Plot {
     ) -> Result<(), DrawError> {
         self.chart.draw_with(root, scale, &self.options)
     }
+
+    /// Where the legend goes and what it covers, and the labelled ticks, when drawn at `dim`
+    /// pixels and `scale` (see [`Chart::layout`]).
+    pub fn layout(&self, dim: (u32, u32), scale: f64) -> Result<Layout, DrawError> {
+        self.chart.layout(dim, scale, &self.options)
+    }
 }
 
 /// The Okabe-Ito palette: distinguishable with colour-vision deficiencies and in grey print.
@@ -284,6 +296,15 @@ pub fn tick_label(v: f64) -> String {
     if a < 1e-12 * 1e-3 || a == 0.0 {
         return "0".into();
     }
+    nonzero_tick_label(v)
+}
+
+/// A tick label of a logarithmic axis, where no value is zero (so none is rounded to zero).
+pub fn nonzero_tick_label(v: f64) -> String {
+    if !v.is_finite() {
+        return String::new();
+    }
+    let a = v.abs();
     if !(1e-3..1e4).contains(&a) {
         let s = format!("{v:.3e}");
         let (m, e) = s.split_once('e').unwrap_or((&s, "0"));
@@ -407,22 +428,64 @@ impl Chart {
         scale: f64,
         o: &Options,
     ) -> Result<(), DrawError> {
+        self.render(root, scale, o).map(|_| ())
+    }
+
+    /// Where the legend goes and what it covers, and the labelled ticks, when the chart is drawn
+    /// at `dim` pixels and `scale`: the same computation as drawing, on a scratch canvas.
+    pub fn layout(&self, dim: (u32, u32), scale: f64, o: &Options) -> Result<Layout, DrawError> {
+        let mut scratch = String::new();
+        let root = SVGBackend::with_string(&mut scratch, dim).into_drawing_area();
+        self.render(&root, scale, o)
+    }
+
+    /// Draws with the legend moved to a free corner, or else the y range grown at the top, so
+    /// that the legend covers no data.
+    fn render<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, plotters::coord::Shift>,
+        scale: f64,
+        o: &Options,
+    ) -> Result<Layout, DrawError> {
+        if o.legend == Legend::Hidden || o.y_range.is_some() {
+            return self.render_with_headroom(root, scale, o, 0.0);
+        }
+        let mut scratch = String::new();
+        let probe = SVGBackend::with_string(&mut scratch, root.dim_in_pixel()).into_drawing_area();
+        let first = self.render_with_headroom(&probe, scale, o, 0.0)?;
+        drop(probe);
+        let headroom = match (first.covered, first.rect) {
+            (0, _) | (_, None) => 0.0,
+            (_, Some(r)) => {
+                let (_, ph) = self.plot_area(root.dim_in_pixel(), scale)?;
+                // The share of the plot's height the legend takes from the top, plus a gap.
+                ((r.y1 - r.y0 + 12) as f64 / ph).min(0.6)
+            }
+        };
+        self.render_with_headroom(root, scale, o, headroom)
+    }
+
+    /// Draws with the top `headroom` share of the plot's height kept free of data.
+    fn render_with_headroom<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, plotters::coord::Shift>,
+        scale: f64,
+        o: &Options,
+        headroom: f64,
+    ) -> Result<Layout, DrawError> {
         register_font();
         root.fill(&WHITE).map_err(|e| e.to_string())?;
         let (mut x0, mut x1) = checked(self.x_bounds(o), self.x_log, "x")?;
         let (mut y0, mut y1) = checked(self.y_bounds(o), self.y_log, "y")?;
-        // plotters labels a short log axis only from its first power of ten up: an automatic
-        // range that starts well below one is extended down to the power below.
-        let extend = |lo: f64, hi: f64, log: bool, fixed: bool| {
-            let next = 10f64.powf(lo.log10().ceil());
-            if log && !fixed && (hi / lo).log10() < 1.3 && next / lo > 2.0 {
-                10f64.powf(lo.log10().floor())
+        if headroom > 0.0 {
+            // Grow the top so that the data keep the lower (1 - headroom) of the height.
+            let grow = headroom / (1.0 - headroom);
+            if self.y_log {
+                y1 = 10f64.powf(y1.log10() + grow * (y1.log10() - y0.log10()));
             } else {
-                lo
+                y1 += grow * (y1 - y0);
             }
-        };
-        x0 = extend(x0, x1, self.x_log, o.x_range.is_some());
-        y0 = extend(y0, y1, self.y_log, o.y_range.is_some());
+        }
         if o.equal_aspect && !self.x_log && !self.y_log {
             // Widen one range so that a unit is as long on both axes.
             let (pw, ph) = self.plot_area(root.dim_in_pixel(), scale)?;
@@ -435,32 +498,22 @@ impl Chart {
                 (x0, x1) = (c - h, c + h);
             }
         }
+        // Log axes carry their own ticks (see `ticks`).
+        let log_axis = ticks::LogAxis::new;
         match (self.x_log, self.y_log) {
             (false, false) => self.draw_in(root, scale, o, x0..x1, y0..y1, (x0, x1), (y0, y1)),
-            (true, false) => self.draw_in(
-                root,
-                scale,
-                o,
-                (x0..x1).log_scale(),
-                y0..y1,
-                (x0, x1),
-                (y0, y1),
-            ),
-            (false, true) => self.draw_in(
-                root,
-                scale,
-                o,
-                x0..x1,
-                (y0..y1).log_scale(),
-                (x0, x1),
-                (y0, y1),
-            ),
+            (true, false) => {
+                self.draw_in(root, scale, o, log_axis(x0, x1), y0..y1, (x0, x1), (y0, y1))
+            }
+            (false, true) => {
+                self.draw_in(root, scale, o, x0..x1, log_axis(y0, y1), (x0, x1), (y0, y1))
+            }
             (true, true) => self.draw_in(
                 root,
                 scale,
                 o,
-                (x0..x1).log_scale(),
-                (y0..y1).log_scale(),
+                log_axis(x0, x1),
+                log_axis(y0, y1),
                 (x0, x1),
                 (y0, y1),
             ),
@@ -506,7 +559,7 @@ impl Chart {
         y: Y,
         xr: (f64, f64),
         yr: (f64, f64),
-    ) -> Result<(), DrawError>
+    ) -> Result<Layout, DrawError>
     where
         DB: DrawingBackend,
         X: AsRangedCoord<Value = f64>,
@@ -524,21 +577,22 @@ impl Chart {
         let (pw, ph) = chart.plotting_area().dim_in_pixel();
         let fit = |len: u32, per: f64| ((len as f64 / (per * scale)) as usize).clamp(4, 8);
         let (nx, ny) = (fit(pw, 60.0), fit(ph, 40.0));
-        // A log axis over less than about a decade and a half gets ticks at 1..9 times the
-        // powers of ten, labelled at 1, 2, 3 and 5 only; plain powers of ten otherwise.
-        let short = |r: (f64, f64), log: bool| log && (r.1 / r.0).log10() < 1.3;
-        let (x_short, y_short) = (short(xr, self.x_log), short(yr, self.y_log));
-        let log_fmt = |v: &f64| {
-            let m = *v / 10f64.powf(v.log10().floor());
-            if [1.0, 2.0, 3.0, 5.0].iter().any(|k| (m - k).abs() < 1e-6) {
-                tick_label(*v)
-            } else {
-                String::new()
-            }
-        };
+        // A linear axis asks plotters for more ticks until three fall inside its range; a log
+        // axis has its own (the hint is then ignored).
+        let (x_hint, y_hint) = (
+            ticks::linear_hint(xr.0, xr.1, nx),
+            ticks::linear_hint(yr.0, yr.1, ny),
+        );
         let plain = |v: &f64| tick_label(*v);
-        let x_fmt: &dyn Fn(&f64) -> String = if x_short { &log_fmt } else { &plain };
-        let y_fmt: &dyn Fn(&f64) -> String = if y_short { &log_fmt } else { &plain };
+        let log = |v: &f64| nonzero_tick_label(*v);
+        let x_fmt: &dyn Fn(&f64) -> String = if self.x_log { &log } else { &plain };
+        let y_fmt: &dyn Fn(&f64) -> String = if self.y_log { &log } else { &plain };
+        let spec = chart.as_coord_spec();
+        let labelled = |keys: Vec<f64>, f: &dyn Fn(&f64) -> String| {
+            keys.iter().filter(|k| !f(k).is_empty()).count()
+        };
+        let x_ticks = labelled(spec.x_spec().key_points(BoldPoints(x_hint)), x_fmt);
+        let y_ticks = labelled(spec.y_spec().key_points(BoldPoints(y_hint)), y_fmt);
         chart
             .configure_mesh()
             .x_desc(&self.x_label)
@@ -547,8 +601,8 @@ impl Chart {
             .axis_desc_style(font(14.0))
             .light_line_style(RGBColor(235, 235, 235))
             .bold_line_style(RGBColor(215, 215, 215))
-            .x_labels(if x_short { 10 } else { nx })
-            .y_labels(if y_short { 10 } else { ny })
+            .x_labels(x_hint)
+            .y_labels(y_hint)
             .x_label_formatter(x_fmt)
             .y_label_formatter(y_fmt)
             .draw()
@@ -558,6 +612,92 @@ impl Chart {
         };
         let width = px(1.6).max(1);
         let grey = RGBColor(110, 110, 110);
+        // Every plotted pixel, relative to the plotting area, for placing the legend: the
+        // series, the reference lines and their labels.
+        let base = chart.plotting_area().get_base_pixel();
+        let area = chart.plotting_area().dim_in_pixel();
+        let mut pixels: Vec<(i32, i32)> = Vec::new();
+        for m in &o.marks {
+            if !m.at.is_finite() {
+                continue;
+            }
+            let ends = match m.axis {
+                Axis::X => [(m.at, yr.0), (m.at, yr.1)],
+                Axis::Y => [(xr.0, m.at), (xr.1, m.at)],
+            };
+            let line: Vec<(i32, i32)> = ends
+                .iter()
+                .map(|p| {
+                    let (a, b) = chart.backend_coord(p);
+                    (a - base.0, b - base.1)
+                })
+                .collect();
+            pixels.extend(legend::densify(&line));
+        }
+        for s in &self.series {
+            let pts: Vec<(i32, i32)> = s
+                .points
+                .iter()
+                .copied()
+                .filter(|p| inside(*p))
+                .map(|p| {
+                    let (a, b) = chart.backend_coord(&p);
+                    (a - base.0, b - base.1)
+                })
+                .collect();
+            match s.style {
+                Style::Line | Style::Dashed | Style::Dotted => pixels.extend(legend::densify(&pts)),
+                _ => pixels.extend(pts),
+            }
+        }
+        let labels: Vec<&str> = self
+            .series
+            .iter()
+            .filter(|s| !s.label.is_empty())
+            .map(|s| s.label.as_str())
+            .collect();
+        let mut layout = Layout {
+            legend: None,
+            rect: None,
+            covered: 0,
+            x_ticks,
+            y_ticks,
+        };
+        let chosen = if labels.is_empty() {
+            Legend::Hidden
+        } else {
+            let size = legend::size(&labels, 12.0 * scale, px(28.0) as i32, px(8.0) as i32)?;
+            // A position the figure asks for is a preference: if it would hide data and
+            // another corner would not, the legend goes there.
+            let (pos, rect, covered) = match o.legend {
+                Legend::Auto => legend::choose(size, area, &pixels),
+                fixed => match legend::rect(fixed, size, area) {
+                    Some(r) => match legend::covered(&r, &pixels) {
+                        0 => (fixed, r, 0),
+                        c => match legend::choose(size, area, &pixels) {
+                            (p, r2, 0) => (p, r2, 0),
+                            _ => (fixed, r, c),
+                        },
+                    },
+                    None => (
+                        fixed,
+                        legend::Rect {
+                            x0: 0,
+                            y0: 0,
+                            x1: 0,
+                            y1: 0,
+                        },
+                        0,
+                    ),
+                },
+            };
+            if pos != Legend::Hidden {
+                layout.legend = Some(pos);
+                layout.rect = Some(rect);
+                layout.covered = covered;
+            }
+            pos
+        };
         // Reference lines first, under the data.
         for m in &o.marks {
             if !m.at.is_finite() {
@@ -595,6 +735,22 @@ impl Chart {
                     Axis::Y => (px(6.0) as i32, -(px(16.0) as i32)),
                 };
                 let hpos = if left { HPos::Right } else { HPos::Left };
+                // A label the legend would hide moves down below the legend.
+                let (tw, th) = font(11.0).box_size(&m.label).map_err(|e| e.to_string())?;
+                let (ax, ay) = chart.backend_coord(&at);
+                let (lx, ly) = (ax - base.0 + dx, ay - base.1 + dy);
+                let lx = if left { lx - tw as i32 } else { lx };
+                let dy = match layout.rect {
+                    Some(r)
+                        if lx <= r.x1
+                            && lx + tw as i32 >= r.x0
+                            && ly <= r.y1
+                            && ly + th as i32 >= r.y0 =>
+                    {
+                        dy + (r.y1 - ly) + px(4.0) as i32
+                    }
+                    _ => dy,
+                };
                 chart
                     .draw_series(std::iter::once(
                         EmptyElement::at(at)
@@ -737,8 +893,9 @@ impl Chart {
                 }))
                 .map_err(|e| e.to_string())?;
         }
-        let labelled = self.series.iter().any(|s| !s.label.is_empty());
-        let position = match o.legend {
+        let labelled = !labels.is_empty();
+        let position = match chosen {
+            Legend::Auto => Some(SeriesLabelPosition::UpperRight),
             Legend::UpperRight => Some(SeriesLabelPosition::UpperRight),
             Legend::UpperLeft => Some(SeriesLabelPosition::UpperLeft),
             Legend::LowerRight => Some(SeriesLabelPosition::LowerRight),
@@ -758,7 +915,8 @@ impl Chart {
                 .draw()
                 .map_err(|e| e.to_string())?;
         }
-        root.present().map_err(|e| e.to_string())
+        root.present().map_err(|e| e.to_string())?;
+        Ok(layout)
     }
 }
 

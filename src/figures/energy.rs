@@ -25,7 +25,7 @@ pub fn figure() -> Result<Figure, String> {
     let mut plot = Plot::new(
         "Energy drift on the benchmark scene",
         "time t (s)",
-        "|E(t) - E0| / E0",
+        "|E(t) − E₀| / E₀ (relative)",
     )
     .log(false, true)
     .legend_at(Legend::UpperRight);

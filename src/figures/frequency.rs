@@ -128,8 +128,8 @@ pub fn figure() -> Result<Figure, String> {
     let limit = (3.0 * k / (k + 1.0)).sqrt();
     let plot = Plot::new(
         "Frequency of small oscillations about steady motion (k = 1/4)",
-        "tilt alpha0 (degrees)",
-        "varpi / Omega0",
+        "tilt α₀ (degrees)",
+        "ϖ / Ω₀ (dimensionless)",
     )
     .x_range(0.0, 90.0)
     .with_colored(

@@ -86,10 +86,10 @@ fn panel(name: &str, title: &str, every: f64, legend: Legend) -> Result<(Plot, [
     let plot = Plot::new(title, "time t (s)", "|reduced - lab frame| (rad, rad/s)")
         .log(false, true)
         .y_range(FLOOR / 2.0, top * 1e4)
-        .with(Series::new("alpha (rad)", env(&da), Style::Line))
-        .with(Series::new("alpha_dot (rad/s)", env(&dad), Style::Dashed))
-        .with(Series::new("Omega (rad/s)", env(&dp), Style::Line))
-        .with(Series::new("omega1 (rad/s)", env(&ds), Style::Dotted))
+        .with(Series::new("α (rad)", env(&da), Style::Line))
+        .with(Series::new("dα/dt (rad/s)", env(&dad), Style::Dashed))
+        .with(Series::new("Ω (rad/s)", env(&dp), Style::Line))
+        .with(Series::new("ω₁ (rad/s)", env(&ds), Style::Dotted))
         .legend_at(legend);
     Ok((plot, worst))
 }

@@ -23,12 +23,15 @@ pub mod experiment;
 pub mod frequency;
 pub mod geometry;
 pub mod lab_frame;
+pub mod legend;
 pub mod path;
 pub mod spin_down;
 pub mod stability;
+pub mod ticks;
 
 pub use chart::{Axis, Chart, Legend, Mark, Note, Options, Plot, Series, Style};
 pub use geometry::Geometry;
+pub use legend::Layout;
 
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -101,6 +104,30 @@ impl Drawing {
                     plot.draw(area, scale)?;
                 }
                 root.present().map_err(|e| e.to_string())
+            }
+        }
+    }
+
+    /// For each plot of the drawing (one, or one per panel; none for a geometry): where its
+    /// legend goes, how many plotted pixels it covers, and its labelled ticks per axis, when
+    /// drawn at `width` x `height` px and `scale` (the report's sizes: 760 x 480 at 1, and
+    /// 1800 x 1200 at 3).
+    pub fn layouts(&self, width: u32, height: u32, scale: f64) -> Result<Vec<Layout>, String> {
+        chart::register_font();
+        match self {
+            Drawing::Chart(c) => Ok(vec![c.layout(
+                (width, height),
+                scale,
+                &Options::default(),
+            )?]),
+            Drawing::Plot(p) => Ok(vec![p.layout((width, height), scale)?]),
+            Drawing::Geometry(_) => Ok(vec![]),
+            Drawing::Panels(p) => {
+                // The same split as `draw`: a title band, then equal columns.
+                let band = (36.0 * scale).round() as u32;
+                let n = p.plots.len().max(1) as u32;
+                let dim = (width / n, height.saturating_sub(band));
+                p.plots.iter().map(|plot| plot.layout(dim, scale)).collect()
             }
         }
     }

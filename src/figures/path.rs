@@ -39,10 +39,40 @@ fn unit(extent: f64) -> (&'static str, f64) {
     }
 }
 
+/// The samples from `start` through one turn of the direction of motion (the heading of the
+/// path's tangent sweeps 2 pi), or to the end of the run.
+fn one_loop(pts: &[(f64, f64)], start: usize) -> &[(f64, f64)] {
+    let mut swept = 0.0;
+    let mut last: Option<f64> = None;
+    for i in start + 1..pts.len() {
+        let (dx, dy) = (pts[i].0 - pts[i - 1].0, pts[i].1 - pts[i - 1].1);
+        if dx == 0.0 && dy == 0.0 {
+            continue;
+        }
+        let a = dy.atan2(dx);
+        if let Some(b) = last {
+            let mut d = a - b;
+            while d > std::f64::consts::PI {
+                d -= std::f64::consts::TAU;
+            }
+            while d < -std::f64::consts::PI {
+                d += std::f64::consts::TAU;
+            }
+            swept += d;
+        }
+        last = Some(a);
+        if swept.abs() >= std::f64::consts::TAU {
+            return &pts[start..=i];
+        }
+    }
+    &pts[start..]
+}
+
 /// The figure: three panels side by side.
 pub fn figure() -> Result<Figure, String> {
     let mut plots = Vec::new();
     let mut notes = Vec::new();
+    let mut loops = String::new();
     for (name, what) in [
         ("rolling-circle", "rolling in a circle"),
         ("nutating-coin", "nutating coin"),
@@ -71,15 +101,42 @@ pub fn figure() -> Result<Figure, String> {
             early * f,
             late * f
         ));
-        let plot = Plot::new(what, format!("x - x0 ({u})"), format!("y - y0 ({u})"))
-            .equal_aspect()
-            .with(Series::new(
-                format!("t = 0 to {t_end:.1} s"),
-                scaled.clone(),
-                Style::Line,
-            ))
-            .with(Series::new("start", vec![scaled[0]], Style::Points))
-            .legend_at(Legend::Hidden);
+        let mut plot =
+            Plot::new(what, format!("x − x₀ ({u})"), format!("y − y₀ ({u})")).equal_aspect();
+        if name == "spin-down" {
+            // Hundreds of loops of slowly growing radius fill a disc: one loop at each of a
+            // few times shows the growth instead.
+            // The panel is too narrow for a legend: the caption names the loops' times and
+            // colours.
+            let mut which = Vec::new();
+            for (frac, colour) in [
+                (0.05, "blue"),
+                (0.5, "orange"),
+                (0.9, "green"),
+                (0.99, "pink"),
+            ] {
+                let i = t
+                    .partition_point(|x| *x < frac * t_end)
+                    .min(scaled.len() - 1);
+                which.push(format!("{colour} from t = {:.2} s", t[i]));
+                plot = plot.with(Series::new(
+                    format!("loop at t = {:.2} s", t[i]),
+                    one_loop(&scaled, i).to_vec(),
+                    Style::Line,
+                ));
+            }
+            loops = which.join(", ");
+            plot = plot.legend_at(Legend::Hidden);
+        } else {
+            plot = plot
+                .with(Series::new(
+                    format!("t = 0 to {t_end:.1} s"),
+                    scaled.clone(),
+                    Style::Line,
+                ))
+                .with(Series::new("start", vec![scaled[0]], Style::Points))
+                .legend_at(Legend::Hidden);
+        }
         plots.push(plot);
     }
     Ok(Figure {
@@ -96,8 +153,10 @@ pub fn figure() -> Result<Figure, String> {
              rosette (the nutation beating with the precession). In the spin-down the centre \
              circles the axis ever faster on a small circle whose radius grows as alpha falls: \
              with no slip to pull it in, dissipation alone moves the motion away from b = 0, the \
-             opposite of the spiral the paper describes.",
-            notes.join("; ")
+             opposite of the spiral the paper describes. The spin-down panel draws one loop of the \
+             path at each of four times ({}; the whole path, hundreds of loops, fills a disc).",
+            notes.join("; "),
+            loops
         ),
         drawing: Drawing::Panels(Panels {
             title: "Path of the centre of mass (rolling without slipping)".into(),

@@ -80,7 +80,7 @@ pub fn figure() -> Result<Figure, String> {
         .map_or((0.0, 0.0), |p| (p.0, p.1));
     let plot = Plot::new(
         "Tilt during the spin-down against the law of eq 78",
-        "t0 - t (s)",
+        "t₀ − t (s)",
         "α (rad)",
     )
     .log(true, true)

@@ -2,6 +2,7 @@
 //! a quick speed/accuracy study and the synthetic experiment. Everything here is deterministic:
 //! seeded randomness, no clocks, no wall times.
 
+use super::json::{self, outcome_for, Document};
 use super::mathml::display_math;
 use super::{
     fmt_num, ClaimView, EquationView, FailureView, FigureView, FindingView, PrecisionRow, Report,
@@ -102,12 +103,13 @@ fn finding_of(c: &Checked) -> FindingView {
 }
 
 /// The work-precision figure of the speed/accuracy study, and its table.
-fn precision_part() -> Result<(Vec<PrecisionRow>, Figure), String> {
+fn precision_part() -> Result<(Vec<PrecisionRow>, Vec<json::PrecisionRecord>, Figure), String> {
     let scene = Scene::load("benchmark").map_err(|e| e.to_string())?;
     let mut opts = precision::StudyOptions::quick();
     opts.timing = precision::Timing::ONCE;
     let study = precision::study(&scene, &opts).map_err(|e| e.to_string())?;
     let mut rows = Vec::new();
+    let mut records = Vec::new();
     let mut series = Vec::new();
     for s in &study.series {
         let mut pts = Vec::new();
@@ -117,6 +119,12 @@ fn precision_part() -> Result<(Vec<PrecisionRow>, Figure), String> {
                 evaluations: p.evaluations,
                 final_error: format!("{:.2e}", p.final_error),
                 trajectory_error: format!("{:.2e}", p.trajectory_error),
+            });
+            records.push(json::PrecisionRecord {
+                label: p.label.clone(),
+                evaluations: p.evaluations,
+                final_error: p.final_error,
+                trajectory_error: p.trajectory_error,
             });
             if p.ending.is_complete() && p.trajectory_error > 0.0 {
                 pts.push((p.evaluations as f64, p.trajectory_error));
@@ -150,7 +158,7 @@ fn precision_part() -> Result<(Vec<PrecisionRow>, Figure), String> {
         ),
         drawing: Drawing::Chart(chart),
     };
-    Ok((rows, figure))
+    Ok((rows, records, figure))
 }
 
 fn experiment_part() -> Result<String, String> {
@@ -277,7 +285,7 @@ pub fn build(
     progress("drawing the figures");
     let mut figures = figures::all()?;
     progress("measuring speed against accuracy");
-    let (precision_rows, wp) = precision_part()?;
+    let (precision_rows, precision_records, wp) = precision_part()?;
     figures.push(wp);
     progress("simulating and analysing the experiment");
     let experiment = experiment_part()?;
@@ -305,14 +313,80 @@ pub fn build(
         })
         .collect();
 
-    let report = Report {
-        paper: "A. J. McDonald and K. T. McDonald, The Rolling Motion of a Disk on a Horizontal Plane (2001)".into(),
-        version: env!("CARGO_PKG_VERSION").into(),
-        settings: RunSettings {
-            method: "DOP853".into(),
-            rtol: bench.rtol,
-            command: "rolling-disk report".into(),
+    let paper = "A. J. McDonald and K. T. McDonald, The Rolling Motion of a Disk on a Horizontal Plane (2001)";
+    let settings = RunSettings {
+        method: "DOP853".into(),
+        rtol: bench.rtol,
+        command: "rolling-disk report".into(),
+    };
+    let document = Document {
+        schema: json::SCHEMA_ID.into(),
+        schema_version: json::SCHEMA_VERSION,
+        tool: json::Tool {
+            name: env!("CARGO_PKG_NAME").into(),
+            version: env!("CARGO_PKG_VERSION").into(),
         },
+        paper: json::PaperSource::built_in(paper),
+        settings: json::Settings {
+            method: settings.method.clone(),
+            rtol: settings.rtol,
+            command: settings.command.clone(),
+        },
+        summary: json::SummaryCounts {
+            equations: Tally::of(eqs.iter().copied()).into(),
+            claims: Tally::of(cls.iter().copied()).into(),
+        },
+        equations: cat
+            .iter()
+            .map(|e| json::EquationRecord {
+                number: e.number,
+                section: e.section,
+                latex: e.latex.clone(),
+                kind: e.kind.clone(),
+                premises: e.premises.clone(),
+                outcome: outcome_for(
+                    &checked,
+                    |s| matches!(s, Subject::Equation { number, .. } if *number == e.number),
+                    UNCHECKABLE_EQUATIONS
+                        .iter()
+                        .find(|(n, _)| *n == e.number)
+                        .map(|(_, why)| *why),
+                ),
+            })
+            .collect(),
+        claims: catalogue::claims()
+            .iter()
+            .map(|c| json::ClaimRecord {
+                id: c.id.clone(),
+                section: c.section,
+                near_equation: c.near_equation,
+                printed_value: c.claimed_value,
+                unit: c.unit.clone(),
+                outcome: outcome_for(
+                    &checked,
+                    |s| matches!(s, Subject::Claim { id } if *id == c.id),
+                    UNCHECKABLE_CLAIMS
+                        .iter()
+                        .find(|(id, _)| *id == c.id)
+                        .map(|(_, why)| *why),
+                ),
+            })
+            .collect(),
+        figures: figure_views
+            .iter()
+            .map(|f| json::FigureRecord {
+                name: f.name.clone(),
+                title: f.title.clone(),
+                file: f.file.clone(),
+            })
+            .collect(),
+        precision: precision_records,
+    };
+
+    let report = Report {
+        paper: paper.into(),
+        version: env!("CARGO_PKG_VERSION").into(),
+        settings,
         summary: Summary {
             equations: Tally::of(eqs.iter().copied()),
             claims: Tally::of(cls.iter().copied()),
@@ -327,6 +401,7 @@ pub fn build(
         experiment,
         paper_numbers: experiment::numbers::paper_numbers().to_string(),
         scenes,
+        document,
     };
     Ok((report, figures))
 }

@@ -3,6 +3,7 @@
 //! by templates (`render`) to HTML, LaTeX or JSON. Templates and figures only read it.
 
 pub mod build;
+pub mod json;
 pub mod mathml;
 pub mod render;
 pub mod tex;
@@ -35,6 +36,9 @@ pub struct Report {
     pub paper_numbers: String,
     /// The built-in scenes the figures and checks use.
     pub scenes: Vec<SceneView>,
+    /// The same results for tools (`report.json`), with numbers as numbers.
+    #[serde(skip)]
+    pub document: json::Document,
 }
 
 /// How the checks were run.

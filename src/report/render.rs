@@ -71,9 +71,9 @@ pub fn latex(report: &Report) -> Result<String, String> {
     render(report, "report.tex")
 }
 
-/// The report's data as JSON.
+/// The report's data as JSON, following `schemas/report.schema.json` (see [`super::json`]).
 pub fn json(report: &Report) -> Result<String, String> {
-    serde_json::to_string_pretty(report).map_err(|e| e.to_string())
+    super::json::to_json(&report.document)
 }
 
 /// Writes the report in `formats` to `dir`, each file atomically; returns the paths written.
