@@ -333,7 +333,7 @@ fn every_option_and_key_that_advice_names_exists() {
             let len = rest
                 .find(|c: char| !(c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_'))
                 .unwrap_or(rest.len());
-            if len > 0 && !before.is_ascii_alphanumeric() && before != '_' && before != '.' {
+            if len > 0 && !before.is_ascii_alphanumeric() && !"_.-/".contains(before) {
                 keys.push((section, &rest[..len]));
             }
         }

@@ -12,14 +12,26 @@ pub const MAX_VALUE_CHARS: usize = 40;
 /// Longest message, in characters (a safety net after the values are cut).
 const MAX_MESSAGE_CHARS: usize = 600;
 
-/// `value` cut to [`MAX_VALUE_CHARS`] characters, saying how long it was when cut.
+/// `value` cut to [`MAX_VALUE_CHARS`] characters, saying how long it was when cut, with control
+/// characters (a line break inside a YAML key, say) escaped so that a message stays one line.
 pub fn cut(value: &str) -> String {
     let n = value.chars().count();
+    let escape = |s: &str| -> String {
+        s.chars()
+            .map(|c| {
+                if c.is_control() {
+                    c.escape_default().to_string()
+                } else {
+                    c.to_string()
+                }
+            })
+            .collect()
+    };
     if n <= MAX_VALUE_CHARS {
-        return value.to_string();
+        return escape(value);
     }
     let head: String = value.chars().take(MAX_VALUE_CHARS).collect();
-    format!("{head}... ({n} characters)")
+    format!("{}... ({n} characters)", escape(&head))
 }
 
 /// Every value between backticks or double quotes in `msg` cut by [`cut`].
