@@ -1,0 +1,103 @@
+//! Property tests of the other readers of user input (the scene reader has `scene_fuzz.rs`): the
+//! paper's LaTeX, scope CSVs and WAV files. Whatever the input, each returns in bounded time with
+//! a value or an error sentence, never a panic. Seeded, so that CI runs the same cases each time.
+
+use proptest::prelude::*;
+use proptest::test_runner::RngSeed;
+use rolling_disk::experiment::{parse_trace, wav::parse_wav};
+use rolling_disk::paper::parse::parse;
+
+/// LaTeX tokens the paper uses, and a few that break it.
+const TOKENS: &[&str] = &[
+    r"\frac", r"\sqrt", r"\sin", r"\cos", r"\cot", r"\alpha", r"\Omega", r"\omega", r"\dot",
+    r"\ddot", r"\hat", r"\vec", r"\mathbf", r"\mathrm", r"\left", r"\right", r"\cdot", r"\times",
+    r"\approx", r"\geq", r"\equiv", r"\propto", r"\qquad", "{", "}", "(", ")", "[", "]", "|", "^",
+    "_", "+", "-", "/", "=", "<", ">", ",", "a", "k", "t", "1", "2", "10", "1.8", " ", "\\", "é",
+];
+
+fn latex() -> impl Strategy<Value = String> {
+    proptest::collection::vec(proptest::sample::select(TOKENS), 0..60).prop_map(|v| v.concat())
+}
+
+fn csvish() -> impl Strategy<Value = String> {
+    let cell = proptest::sample::select(
+        &[
+            "0",
+            "1e-3",
+            "-2.5",
+            "nan",
+            "inf",
+            "x",
+            "",
+            " ",
+            "1,",
+            "\t",
+            ";",
+            "#",
+            "\"",
+            "Time (ms)",
+            "\u{feff}",
+            "\r",
+            "\n",
+            "\r\n",
+            "1e308",
+            "-0",
+        ][..],
+    );
+    proptest::collection::vec(cell, 0..200).prop_map(|v| v.concat())
+}
+
+fn wavish() -> impl Strategy<Value = Vec<u8>> {
+    // A RIFF/WAVE header with random fields, or random bytes.
+    let header = (
+        any::<u16>(),
+        1u16..3,
+        any::<u32>(),
+        prop_oneof![Just(8u16), Just(16), Just(24), Just(32), any::<u16>()],
+    )
+        .prop_map(|(fmt, ch, rate, bits)| {
+            let mut v = Vec::new();
+            v.extend_from_slice(b"RIFF");
+            v.extend_from_slice(&1000u32.to_le_bytes());
+            v.extend_from_slice(b"WAVEfmt ");
+            v.extend_from_slice(&16u32.to_le_bytes());
+            v.extend_from_slice(&(fmt % 4).to_le_bytes());
+            v.extend_from_slice(&ch.to_le_bytes());
+            v.extend_from_slice(&rate.to_le_bytes());
+            v.extend_from_slice(&rate.wrapping_mul(4).to_le_bytes());
+            v.extend_from_slice(&4u16.to_le_bytes());
+            v.extend_from_slice(&bits.to_le_bytes());
+            v.extend_from_slice(b"data");
+            v.extend_from_slice(&64u32.to_le_bytes());
+            v
+        });
+    (header, proptest::collection::vec(any::<u8>(), 0..256)).prop_map(|(mut h, body)| {
+        h.extend(body);
+        h
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 3000, failure_persistence: None, rng_seed: RngSeed::Fixed(20_261_124), ..ProptestConfig::default() })]
+
+    #[test]
+    fn the_latex_reader_answers_or_locates(src in latex()) {
+        if let Err(e) = parse(&src) {
+            prop_assert!(e.column >= 1 && e.column <= src.chars().count() + 1, "{e:?} for {src:?}");
+            prop_assert!(!e.message.is_empty());
+        }
+    }
+
+    #[test]
+    fn the_csv_reader_answers_in_one_sentence(src in csvish()) {
+        if let Err(e) = parse_trace(&src, "fuzz.csv") {
+            let text = e.to_string();
+            prop_assert!(text.contains("fuzz.csv"), "{text}");
+        }
+    }
+
+    #[test]
+    fn the_wav_reader_never_panics(bytes in wavish()) {
+        let _ = parse_wav(&bytes, "fuzz.wav");
+    }
+}
