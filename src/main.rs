@@ -78,6 +78,20 @@ enum Command {
         #[arg(long, value_name = "NAME")]
         show: Option<String>,
     },
+    /// The mutation suite: mutants of each printed equation (constants nudged, signs flipped, sin
+    /// for cos, terms and factors dropped, powers raised, inequalities reversed) run through the
+    /// equation's own check; prints how many each check kills and every survivor.
+    Mutants {
+        /// Only these equations: numbers and ranges, comma-separated (e.g. 23-25,50).
+        #[arg(long, value_name = "LIST")]
+        only: Option<String>,
+        /// Print the scores as JSON.
+        #[arg(long)]
+        json: bool,
+        /// Mutate the equations of DIR/equations.yaml instead of the built-in paper.
+        #[arg(long, value_name = "DIR")]
+        paper: Option<PathBuf>,
+    },
     /// Checks the paper's equations and prose claims, each against an independent reference.
     Check {
         /// Only these: equation numbers, ranges and claim ids, comma-separated, with or without
@@ -248,6 +262,7 @@ fn main() -> ExitCode {
             .map(|t| print!("{t}"))
             .map_err(|e| e.to_string()),
         Command::Scenes { show: None } => scenes(),
+        Command::Mutants { only, json, paper } => mutants(only.as_deref(), json, paper.as_deref()),
         Command::Report {
             format,
             out,
@@ -284,6 +299,62 @@ fn main() -> ExitCode {
             ExitCode::FAILURE
         }
     }
+}
+
+fn mutants(only: Option<&str>, json: bool, paper: Option<&Path>) -> Result<(), String> {
+    let bench = bench_for(None, load_paper(paper)?);
+    let numbers: Vec<u32> = match only {
+        None => rolling_disk::equations::equations()
+            .iter()
+            .map(|e| e.number)
+            .collect(),
+        Some(text) => {
+            let selection = rolling_disk::select::parse_only(text).map_err(|e| e.to_string())?;
+            match selection.numbers {
+                Some(n) if !n.is_empty() => n,
+                _ => {
+                    return Err(format!(
+                        "--only {text}: name equation numbers or ranges (claims have no mutants)"
+                    ))
+                }
+            }
+        }
+    };
+    let bar = ProgressBar::with_draw_target(None, ProgressDrawTarget::stderr());
+    let progress = |done: usize, total: usize| {
+        bar.set_length(total as u64);
+        bar.set_position(done as u64);
+    };
+    let scores = rolling_disk::mutation::mutation_scores(&bench, &numbers, &progress);
+    bar.finish_and_clear();
+    if json {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&scores).map_err(|e| format!("cannot write JSON: {e}"))?
+        );
+        return Ok(());
+    }
+    let (mut made, mut killed) = (0, 0);
+    for s in &scores {
+        if s.printed_fails {
+            println!(
+                "eq {:2}  the printed form fails its check: no score",
+                s.equation
+            );
+            continue;
+        }
+        made += s.mutants;
+        killed += s.killed;
+        println!(
+            "eq {:2}  {:3}/{:<3} killed",
+            s.equation, s.killed, s.mutants
+        );
+        for change in &s.survivors {
+            println!("         survives: {change}");
+        }
+    }
+    println!("{killed}/{made} mutants killed");
+    Ok(())
 }
 
 fn scenes() -> Result<(), String> {

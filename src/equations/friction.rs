@@ -703,7 +703,7 @@ pub fn eq79(b: &Bench) -> Finding {
                         epsilon: r.epsilon,
                         beta,
                     };
-                    let bind = law_bindings(&d, &law).scalar("t_0", 1.0).scalar("t", 0.0);
+                    let bind = law_bindings(&d, &law).scalar("t_0", 1.7).scalar("t", 0.7);
                     let printed = definition
                         .and_then(|rel| solve_printed(eq, &rel, "C", &bind, 0.0, 1e3 * r.c))
                         .unwrap_or(f64::NAN);
@@ -872,7 +872,7 @@ pub fn eq83(b: &Bench) -> Finding {
 /// printed text), NaN if it cannot be.
 fn printed_c(b: &Bench, d: &Disk, law: &PowerLaw) -> f64 {
     let eq = b.paper.equation(79);
-    let bind = law_bindings(d, law).scalar("t_0", 1.0).scalar("t", 0.0);
+    let bind = law_bindings(d, law).scalar("t_0", 1.7).scalar("t", 0.7);
     let guess = d.g / (law.epsilon * d.a * d.k);
     eq.relations()
         .get(1)

@@ -1,0 +1,93 @@
+//! `check --paper DIR` as an author uses it: the claims read from an edited copy of the paper's
+//! LaTeX, with no rebuild. A correction of a wrong equation makes it hold and says what follows
+//! for the equations derived from it; a sign changed in a correct equation fails that equation
+//! alone; an unchanged copy gives the built-in verdicts.
+
+use rolling_disk::equations::{equations, Bench};
+use rolling_disk::finding::Verdict;
+use rolling_disk::paper::{Paper, PaperSource};
+
+const EQUATIONS: &str = include_str!("../paper/equations.yaml");
+const SYMBOLS: &str = include_str!("../paper/symbols.yaml");
+const CLAIMS: &str = include_str!("../paper/claims.yaml");
+
+fn paper(equations: &str) -> Paper {
+    Paper::from_texts(PaperSource::BuiltIn, equations, SYMBOLS, CLAIMS).unwrap()
+}
+
+fn verdicts(p: &Paper, numbers: &[u32]) -> Vec<(u32, Verdict)> {
+    let bench = Bench::with_paper(p);
+    equations()
+        .into_iter()
+        .filter(|e| numbers.contains(&e.number))
+        .map(|e| (e.number, (e.check)(&bench).verdict))
+        .collect()
+}
+
+fn passes(v: &[(u32, Verdict)], n: u32) -> bool {
+    v.iter().any(|(m, verdict)| *m == n && verdict.passes())
+}
+
+const EQ76: &str =
+    r"\dot{\alpha} = - \frac{2 \epsilon}{5} \Omega^{\beta} \approx - \frac{2 \epsilon}{5}";
+
+#[test]
+fn correcting_eq_76_makes_it_hold_and_shows_what_follows() {
+    let sec11 = [76, 77, 78, 79, 84];
+    let printed = verdicts(&paper(EQUATIONS), &sec11);
+    assert!(!passes(&printed, 76) && passes(&printed, 77) && !passes(&printed, 79));
+
+    // Only eq 76 corrected: it holds; 77, 78 and 84 no longer follow from it.
+    assert!(EQUATIONS.contains(EQ76));
+    let only76 = EQUATIONS.replace(EQ76, &EQ76.replace("{5}", "{3}"));
+    let v = verdicts(&paper(&only76), &sec11);
+    assert!(passes(&v, 76), "{v:?}");
+    for n in [77, 78, 84] {
+        assert!(!passes(&v, n), "eq {n} should no longer follow: {v:?}");
+    }
+
+    // The chain corrected: every one of them holds.
+    let all = only76
+        .replace(
+            r"\frac{\epsilon (\beta + 2)}{5}",
+            r"\frac{\epsilon (\beta + 2)}{3}",
+        )
+        .replace(r"\frac{5 g / \epsilon", r"\frac{3 g / \epsilon");
+    let v = verdicts(&paper(&all), &sec11);
+    for n in sec11 {
+        assert!(passes(&v, n), "eq {n}: {v:?}");
+    }
+}
+
+#[test]
+fn a_sign_changed_in_a_correct_equation_fails_that_equation_alone() {
+    // Eq 24: + (2k + 1) omega_1 ... becomes - (2k + 1) omega_1 ...
+    let from = r"k \Omega^2 \sin\alpha \cos\alpha + (2k + 1) \omega_1";
+    assert!(EQUATIONS.contains(from));
+    let edited = EQUATIONS.replace(
+        from,
+        r"k \Omega^2 \sin\alpha \cos\alpha - (2k + 1) \omega_1",
+    );
+    let around = [22, 23, 24, 25, 26, 27, 61];
+    let before = verdicts(&paper(EQUATIONS), &around);
+    let after = verdicts(&paper(&edited), &around);
+    for ((n, b), (_, a)) in before.iter().zip(&after) {
+        if *n == 24 {
+            assert_eq!(*a, Verdict::Fails, "eq 24 after the edit");
+        } else {
+            assert_eq!(a, b, "eq {n} changed with eq 24's sign");
+        }
+    }
+}
+
+#[test]
+fn an_unchanged_copy_gives_the_built_in_verdicts() {
+    let numbers: Vec<u32> = (1..=85).collect();
+    let copy = paper(EQUATIONS);
+    let a = verdicts(&copy, &numbers);
+    let b: Vec<(u32, Verdict)> = equations()
+        .into_iter()
+        .map(|e| (e.number, (e.check)(&Bench::default()).verdict))
+        .collect();
+    assert_eq!(a, b);
+}
