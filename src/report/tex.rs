@@ -19,6 +19,9 @@ pub fn escape(s: &str) -> String {
             '^' => out.push_str(r"\textasciicircum{}"),
             '<' => out.push_str(r"\textless{}"),
             '>' => out.push_str(r"\textgreater{}"),
+            // Prose names formulas such as d^2(1/Omega^2)/dt^2: let a line break after a slash
+            // rather than run into the margin.
+            '/' => out.push_str(r"/\allowbreak{}"),
             _ => match unicode_symbol(c) {
                 Some(tex) => out.push_str(tex),
                 None => out.push(c),
@@ -84,6 +87,11 @@ mod tests {
     #[test]
     fn spells_greek_and_symbols_as_tex() {
         assert_eq!(escape("α ≈ 60°"), r"$\alpha$ $\approx$ 60$^\circ$");
+    }
+
+    #[test]
+    fn a_slash_may_end_a_line() {
+        assert_eq!(escape("1/2"), r"1/\allowbreak{}2");
     }
 
     #[test]
