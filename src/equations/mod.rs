@@ -29,8 +29,10 @@ pub fn built_in_paper() -> &'static Paper {
     })
 }
 
-/// The equations whose checks take their claimed side from the paper's LaTeX (the others still
-/// carry a Rust transcription, checked by the ±1e-3 sweep of tests/registry.rs).
+/// The equations whose checks take their claimed side from the paper's LaTeX: every checked
+/// equation (82 has no check). Their checks are judged by the mutants of their printed text
+/// (tests/mutation.rs); a check added with a Rust claim would stay off this list, and be judged
+/// by the ±1e-3 sweep of tests/registry.rs, until it reads the LaTeX.
 pub const FROM_LATEX: &[u32] = &[
     1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26,
     27, 28, 29, 30, 31, 32, 33, 34, 35, 36, 37, 38, 39, 40, 41, 42, 43, 44, 45, 46, 47, 48, 49, 50,
