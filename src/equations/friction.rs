@@ -621,11 +621,14 @@ fn implied_t0(b: &Bench, n: u32, relation: usize, worst: &mut Worst) {
     };
     for (d, run) in law_runs(b) {
         let beta = run.law.beta;
+        let c = printed_c(b, &d, &run.law);
         let mut first = None;
         for (t, a) in run.t.iter().zip(&run.alpha) {
+            // C as eq 79 defines it, for the relations written with it (eq 84).
             let bind = law_bindings(&d, &run.law)
                 .scalar("alpha", *a)
                 .scalar("t", *t)
+                .scalar("C", c)
                 .scalar("Omega", (d.g / (d.a * d.k * a)).sqrt());
             let t0 =
                 solve_printed(eq, &rel, "t_0", &bind, *t + 1e-12, *t + 1e3).unwrap_or(f64::NAN);
@@ -884,36 +887,7 @@ fn printed_c(b: &Bench, d: &Disk, law: &PowerLaw) -> f64 {
 /// printed law integrated numerically (k = 1/4, 1/2; $\beta$ = 1, 2, 2.5, 4) with
 /// $\Omega = \sqrt{g/ak\alpha}$: the $t_0$ it implies must not drift.
 pub fn eq84(b: &Bench) -> Finding {
-    let mut worst = Worst::default();
-    let eq = b.paper.equation(84);
-    let rel = eq.relations()[0];
-    for (d, run) in law_runs(b) {
-        let beta = run.law.beta;
-        let c = printed_c(b, &d, &run.law);
-        let mut first = None;
-        for (t, a) in run.t.iter().zip(&run.alpha) {
-            let bind = law_bindings(&d, &run.law)
-                .scalar("C", c)
-                .scalar("t", *t)
-                .scalar("Omega", (d.g / (d.a * d.k * a)).sqrt());
-            let t0 =
-                solve_printed(eq, &rel, "t_0", &bind, *t + 1e-12, *t + 1e3).unwrap_or(f64::NAN);
-            let reference = *first.get_or_insert(t0);
-            worst.add(b.claim(t0), reference, reference.abs(), || {
-                format!(
-                    "implied t_0 at t = {t:.4} s, k = {}, beta = {beta}, alpha = {a:.4}",
-                    d.k
-                )
-            });
-        }
-    }
-    Finding::from_worst(
-        Method::Derivation,
-        "eq 84 with eq 79's C: the t_0 it implies along eq 76's printed law, which must not drift",
-        worst,
-        Tolerance::solver(b.rtol),
-        false,
-    )
+    derivation_from_eq76(b, 84, 0, "eq 84 with eq 79's C")
 }
 
 /// Eq 85, $d\Omega/dt \propto \Omega^{\beta+3}$: along eq 76's printed law, at tilts over three
