@@ -2,6 +2,7 @@
 //! could not run, the others go on), results in registry order whatever the scheduling.
 
 use crate::catalogue;
+use crate::cause::{classify, Cause, Node};
 use crate::equations::{self, Bench};
 use crate::finding::Finding;
 use serde::Serialize;
@@ -46,6 +47,10 @@ pub struct Checked {
     pub section: u32,
     /// The finding, or why the check could not run.
     pub finding: Result<Finding, String>,
+    /// For an equation with a derivation check: whether it follows from its printed premises.
+    pub derivation: Option<Result<Finding, String>>,
+    /// For a failing equation: root cause, inherited, or undetermined ([`crate::cause`]).
+    pub cause: Option<Cause>,
 }
 
 /// Which checks to run.
@@ -88,13 +93,44 @@ impl Selection {
     }
 }
 
-type Job = (Subject, u32, fn(&Bench) -> Finding);
+/// One check to run: what, its section, the check, its derivation check if any, and whether
+/// its result is shown (a premise run only to classify a selected equation is not).
+type Job = (
+    Subject,
+    u32,
+    fn(&Bench) -> Finding,
+    Option<fn(&Bench) -> Finding>,
+    bool,
+);
 
-fn jobs(selection: &Selection) -> Result<Vec<Job>, String> {
+/// The selected equations and, transitively, their premises (a failing equation can only be
+/// told a root cause or an inherited error knowing its premises' verdicts).
+fn with_premises(bench: &Bench, numbers: &[u32]) -> Vec<u32> {
+    let mut all: std::collections::BTreeSet<u32> = numbers.iter().copied().collect();
+    let mut todo: Vec<u32> = numbers.to_vec();
+    while let Some(n) = todo.pop() {
+        if !(1..=85).contains(&n) {
+            continue;
+        }
+        for &p in &bench.paper.equation(n).entry.premises {
+            if all.insert(p) {
+                todo.push(p);
+            }
+        }
+    }
+    all.into_iter().collect()
+}
+
+fn jobs(bench: &Bench, selection: &Selection) -> Result<Vec<Job>, String> {
     let sections: Vec<u32> = catalogue::equations().iter().map(|e| e.section).collect();
     let claim_sections = catalogue::claims();
     let mut out: Vec<Job> = Vec::new();
     let registered = equations::equations();
+    let derivations = equations::derivations();
+    let needed = selection
+        .numbers
+        .as_ref()
+        .map(|ns| with_premises(bench, ns));
     if let Some(numbers) = &selection.numbers {
         for n in numbers {
             if !registered.iter().any(|e| e.number == *n) {
@@ -103,11 +139,12 @@ fn jobs(selection: &Selection) -> Result<Vec<Job>, String> {
         }
     }
     for e in registered {
-        let wanted = selection
+        let shown = selection
             .numbers
             .as_ref()
             .is_none_or(|ns| ns.contains(&e.number));
-        if wanted {
+        let needed = needed.as_ref().is_none_or(|ns| ns.contains(&e.number));
+        if shown || needed {
             let section = sections.get(e.number as usize - 1).copied().unwrap_or(0);
             out.push((
                 Subject::Equation {
@@ -116,6 +153,11 @@ fn jobs(selection: &Selection) -> Result<Vec<Job>, String> {
                 },
                 section,
                 e.check,
+                derivations
+                    .iter()
+                    .find(|d| d.number == e.number)
+                    .map(|d| d.check),
+                shown,
             ));
         }
     }
@@ -139,7 +181,7 @@ fn jobs(selection: &Selection) -> Result<Vec<Job>, String> {
                 .iter()
                 .find(|e| e.id == c.id)
                 .map_or(0, |e| e.section);
-            out.push((Subject::Claim { id: c.id }, section, c.check));
+            out.push((Subject::Claim { id: c.id }, section, c.check, None, true));
         }
     }
     Ok(out)
@@ -152,7 +194,7 @@ pub fn run_checks(
     threads: usize,
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<Vec<Checked>, String> {
-    let jobs = jobs(selection)?;
+    let jobs = jobs(bench, selection)?;
     let total = jobs.len();
     let next = AtomicUsize::new(0);
     let done = AtomicUsize::new(0);
@@ -161,33 +203,70 @@ pub fn run_checks(
         for _ in 0..threads.max(1) {
             scope.spawn(|| loop {
                 let i = next.fetch_add(1, Ordering::Relaxed);
-                let Some((subject, section, check)) = jobs.get(i).cloned() else {
+                let Some((subject, section, check, derivation, _)) = jobs.get(i).cloned() else {
                     break;
                 };
-                let finding = catch_unwind(AssertUnwindSafe(|| check(bench))).map_err(|e| {
-                    let msg = e
-                        .downcast_ref::<String>()
-                        .cloned()
-                        .or_else(|| e.downcast_ref::<&str>().map(|s| s.to_string()))
-                        .unwrap_or_else(|| "unknown panic".into());
-                    format!("the check could not run: {msg}")
-                });
                 let checked = Checked {
                     subject,
                     section,
-                    finding,
+                    finding: isolated(check, bench),
+                    derivation: derivation.map(|d| isolated(d, bench)),
+                    cause: None,
                 };
                 results.lock().unwrap_or_else(|p| p.into_inner())[i] = Some(checked);
                 progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
             });
         }
     });
-    Ok(results
+    let mut all: Vec<Checked> = results
         .into_inner()
         .unwrap_or_else(|p| p.into_inner())
         .into_iter()
         .flatten()
+        .collect();
+    attach_causes(bench, &mut all);
+    Ok(all
+        .into_iter()
+        .zip(&jobs)
+        .filter_map(|(c, job)| job.4.then_some(c))
         .collect())
+}
+
+/// Runs one check; a check that panics is reported as one that could not run.
+fn isolated(check: fn(&Bench) -> Finding, bench: &Bench) -> Result<Finding, String> {
+    catch_unwind(AssertUnwindSafe(|| check(bench))).map_err(|e| {
+        let msg = e
+            .downcast_ref::<String>()
+            .cloned()
+            .or_else(|| e.downcast_ref::<&str>().map(|s| s.to_string()))
+            .unwrap_or_else(|| "unknown panic".into());
+        format!("the check could not run: {msg}")
+    })
+}
+
+/// Classifies every failing equation among `checked` ([`crate::cause`]).
+fn attach_causes(bench: &Bench, checked: &mut [Checked]) {
+    let causes = {
+        let mut nodes = std::collections::BTreeMap::new();
+        for c in checked.iter() {
+            if let Subject::Equation { number, .. } = c.subject {
+                nodes.insert(
+                    number,
+                    Node {
+                        premises: &bench.paper.equation(number).entry.premises,
+                        truth: c.finding.as_ref().ok(),
+                        derivation: c.derivation.as_ref().and_then(|d| d.as_ref().ok()),
+                    },
+                );
+            }
+        }
+        classify(&nodes)
+    };
+    for c in checked.iter_mut() {
+        if let Subject::Equation { number, .. } = c.subject {
+            c.cause = causes.get(&number).cloned();
+        }
+    }
 }
 
 /// Counts of verdicts, for the summary line.

@@ -7,6 +7,7 @@
 
 pub mod budget;
 pub mod catalogue;
+pub mod cause;
 pub mod check;
 pub mod compare;
 pub mod disk;

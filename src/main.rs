@@ -346,8 +346,15 @@ fn mutants(only: Option<&str>, json: bool, paper: Option<&Path>) -> Result<(), S
         made += s.mutants;
         killed += s.killed;
         println!(
-            "eq {:2}  {:3}/{:<3} killed",
-            s.equation, s.killed, s.mutants
+            "eq {:2}  {:3}/{:<3} killed{}",
+            s.equation,
+            s.killed,
+            s.mutants,
+            if s.judged_by == "derivation" {
+                " (judged by its derivation from its printed premises: the printed form fails its own check)"
+            } else {
+                ""
+            }
         );
         for change in &s.survivors {
             println!("         survives: {change}");
@@ -697,9 +704,13 @@ fn print_table(checked: &[Checked]) {
                     f.tolerance.rule,
                     f.at
                 );
+                if let Some(cause) = &c.cause {
+                    println!("  cause: {}", cause.describe());
+                }
             }
         }
     }
+    print_root_causes(checked);
     let (eqs, claims): (Vec<&Checked>, Vec<&Checked>) = checked
         .iter()
         .partition(|c| matches!(c.subject, rolling_disk::check::Subject::Equation { .. }));
@@ -718,6 +729,45 @@ fn print_table(checked: &[Checked]) {
         "{}",
         line("claims", Tally::of(claims.iter().copied()), claims.len())
     );
+}
+
+/// The failing equations grouped by root cause: each root cause with the equations that inherit
+/// its error, then those whose cause could not be settled.
+fn print_root_causes(checked: &[Checked]) {
+    use rolling_disk::cause::{consequences, Cause};
+    let causes: std::collections::BTreeMap<u32, Cause> = checked
+        .iter()
+        .filter_map(|c| match (&c.subject, &c.cause) {
+            (rolling_disk::check::Subject::Equation { number, .. }, Some(cause)) => {
+                Some((*number, cause.clone()))
+            }
+            _ => None,
+        })
+        .collect();
+    if causes.is_empty() {
+        return;
+    }
+    println!("\nroot causes:");
+    for (root, inherit) in consequences(&causes) {
+        let tail = if inherit.is_empty() {
+            String::new()
+        } else {
+            format!(
+                "; inherited by {}",
+                inherit
+                    .iter()
+                    .map(|n| format!("eq {n}"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            )
+        };
+        println!("  eq {root}{tail}");
+    }
+    for (n, c) in &causes {
+        if let Cause::Undetermined { .. } = c {
+            println!("  eq {n}: {}", c.describe());
+        }
+    }
 }
 
 /// States what a preset actually reaches, measured on the benchmark scene against the validated

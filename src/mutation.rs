@@ -1,10 +1,14 @@
 //! The mutation suite: mutants of each equation's printed LaTeX ([`crate::paper::mutate`]) run
 //! through the checks. A mutant is killed when the check of ITS equation fails; a survivor is
 //! listed with what was changed, for a reader to judge (mathematically equivalent, outside the
-//! checked domain, or a weak check to fix). An equation whose printed form already fails has no
-//! score: its check would "kill" every mutant without telling anything.
+//! checked domain, or a weak check to fix). An equation whose printed form already fails its own
+//! check is judged instead by its derivation check (whether it follows from its printed
+//! premises, [`crate::equations::derivations`]) when it has one that its printed form passes:
+//! eq 77 is wrong physically, but a mutant of it no longer follows from eq 76. Otherwise it has
+//! no score: a check that already fails would "kill" every mutant without telling anything.
 
-use crate::equations::{equations, Bench};
+use crate::equations::{derivations, equations, Bench};
+use crate::finding::Finding;
 use crate::finding::Verdict;
 use crate::paper::mutate::mutants;
 use serde::Serialize;
@@ -23,6 +27,8 @@ pub struct Score {
     /// The printed equation itself fails its check: its mutants say nothing (a check that
     /// already fails "kills" everything), so none are run.
     pub printed_fails: bool,
+    /// The check that judged the mutants: `truth` (the equation's own check) or `derivation`.
+    pub judged_by: &'static str,
 }
 
 /// Runs the mutants of the equations `numbers` through their checks (on `bench`'s paper).
@@ -33,12 +39,22 @@ pub fn mutation_scores(
     progress: &dyn Fn(usize, usize),
 ) -> Vec<Score> {
     let all = equations();
+    let derived = derivations();
     let mut out = Vec::new();
     for (i, &n) in numbers.iter().enumerate() {
-        let Some(check) = all.iter().find(|e| e.number == n).map(|e| e.check) else {
+        let Some(truth) = all.iter().find(|e| e.number == n).map(|e| e.check) else {
             continue;
         };
-        let printed_fails = check(bench).verdict == Verdict::Fails;
+        let mut check: fn(&Bench) -> Finding = truth;
+        let mut judged_by = "truth";
+        let mut printed_fails = check(bench).verdict == Verdict::Fails;
+        if printed_fails {
+            if let Some(d) = derived.iter().find(|d| d.number == n) {
+                if (d.check)(bench).verdict != Verdict::Fails {
+                    (check, judged_by, printed_fails) = (d.check, "derivation", false);
+                }
+            }
+        }
         let ms = if printed_fails {
             Vec::new()
         } else {
@@ -50,6 +66,7 @@ pub fn mutation_scores(
             killed: 0,
             survivors: Vec::new(),
             printed_fails,
+            judged_by,
         };
         for m in ms {
             let paper = bench.paper.with_chains(n, m.chains);

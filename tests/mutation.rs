@@ -20,7 +20,10 @@ fn every_mutant_of_the_printed_equations_is_killed() {
             eprintln!("eq {:2}: the printed form fails; no score", s.equation);
             continue;
         }
-        eprintln!("eq {:2}: {}/{} killed", s.equation, s.killed, s.mutants);
+        eprintln!(
+            "eq {:2}: {}/{} killed by its {} check",
+            s.equation, s.killed, s.mutants, s.judged_by
+        );
         for change in &s.survivors {
             let explained = EXPLAINED
                 .iter()

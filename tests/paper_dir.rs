@@ -3,6 +3,8 @@
 //! for the equations derived from it; a sign changed in a correct equation fails that equation
 //! alone; an unchanged copy gives the built-in verdicts.
 
+use rolling_disk::cause::Cause;
+use rolling_disk::check::{run_checks, Selection, Subject};
 use rolling_disk::equations::{equations, Bench};
 use rolling_disk::finding::Verdict;
 use rolling_disk::paper::{Paper, PaperSource};
@@ -31,19 +33,60 @@ fn passes(v: &[(u32, Verdict)], n: u32) -> bool {
 const EQ76: &str =
     r"\dot{\alpha} = - \frac{2 \epsilon}{5} \Omega^{\beta} \approx - \frac{2 \epsilon}{5}";
 
+/// The causes `run_checks` gives to the selected equations of a paper.
+fn causes(p: &Paper, numbers: &[u32]) -> Vec<(u32, bool, Option<Cause>)> {
+    let bench = Bench::with_paper(p);
+    let selection = Selection {
+        numbers: Some(numbers.to_vec()),
+        claims: Some(Vec::new()),
+    };
+    run_checks(&bench, &selection, 2, &|_, _| {})
+        .unwrap()
+        .into_iter()
+        .filter_map(|c| match c.subject {
+            Subject::Equation { number, .. } => Some((
+                number,
+                c.finding.as_ref().is_ok_and(|f| f.verdict.passes()),
+                c.cause,
+            )),
+            Subject::Claim { .. } => None,
+        })
+        .collect()
+}
+
+fn root(v: &[(u32, bool, Option<Cause>)], n: u32) -> bool {
+    v.iter()
+        .any(|(m, _, c)| *m == n && matches!(c, Some(Cause::RootCause { .. })))
+}
+
+fn inherits_from(v: &[(u32, bool, Option<Cause>)], n: u32, roots: &[u32]) -> bool {
+    v.iter().any(|(m, _, c)| {
+        *m == n && matches!(c, Some(Cause::Inherits { roots: r, .. }) if r == roots)
+    })
+}
+
 #[test]
 fn correcting_eq_76_makes_it_hold_and_shows_what_follows() {
     let sec11 = [76, 77, 78, 79, 84];
     let printed = verdicts(&paper(EQUATIONS), &sec11);
-    assert!(!passes(&printed, 76) && passes(&printed, 77) && !passes(&printed, 79));
+    for n in sec11 {
+        assert!(!passes(&printed, n), "eq {n} as printed: {printed:?}");
+    }
+    let c = causes(&paper(EQUATIONS), &sec11);
+    for n in sec11 {
+        assert!(inherits_from(&c, n, &[73]), "eq {n}: {c:?}");
+    }
 
-    // Only eq 76 corrected: it holds; 77, 78 and 84 no longer follow from it.
+    // Only eq 76 corrected: it holds; 77, 78 and 84 still fail, and now as root causes of their
+    // own, since they no longer follow from the eq 76 they cite.
     assert!(EQUATIONS.contains(EQ76));
     let only76 = EQUATIONS.replace(EQ76, &EQ76.replace("{5}", "{3}"));
     let v = verdicts(&paper(&only76), &sec11);
     assert!(passes(&v, 76), "{v:?}");
+    let c = causes(&paper(&only76), &sec11);
     for n in [77, 78, 84] {
-        assert!(!passes(&v, n), "eq {n} should no longer follow: {v:?}");
+        assert!(!passes(&v, n), "eq {n} should still fail: {v:?}");
+        assert!(root(&c, n), "eq {n} should be a root cause now: {c:?}");
     }
 
     // The chain corrected: every one of them holds.

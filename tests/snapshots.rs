@@ -57,6 +57,19 @@ fn findings_of_every_equation_and_claim() {
                 .unwrap();
             }
         }
+        if let Some(Ok(d)) = &c.derivation {
+            writeln!(
+                out,
+                "  follows from its printed premises? {} (error ~{}, tolerance {:e})",
+                d.verdict,
+                decade(d.error),
+                d.tolerance.value
+            )
+            .unwrap();
+        }
+        if let Some(cause) = &c.cause {
+            writeln!(out, "  cause: {}", cause.describe()).unwrap();
+        }
     }
     insta::with_settings!({ snapshot_path => "../snapshots", prepend_module_to_snapshot => false }, {
         insta::assert_snapshot!("findings", out);

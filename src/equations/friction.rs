@@ -12,8 +12,11 @@
 //! - eq 76's factor 2/5 should be 2/3 (adiabatic energy balance), so the $C$ of eq 79 is 5/3
 //!   times too large for the dissipative disk.
 
+use super::spin_down::{
+    descent, disk, energy, law_bindings, slope, steady_precession, time_remaining_on_model,
+    PrintedLaw, BETAS, SMALL_ALPHAS,
+};
 use super::{printed_relations, solve_printed, Bench, Equation};
-use crate::disk::Disk;
 use crate::finding::{Finding, Method, Tolerance, Worst};
 use crate::model::dissipation::PowerLaw;
 use crate::model::rolling::Rolling;
@@ -21,9 +24,8 @@ use crate::model::steady::steady_motion;
 use crate::model::{Extras, Model, Motion};
 use crate::numerics::oscillation::bisect;
 use crate::paper::Bindings;
-use crate::solve::{solve, Dynamics, Event, Problem, State};
+use crate::solve::{solve, Dynamics, Problem, State};
 use num_dual::{Dual2_64, Dual64, DualNum};
-use std::f64::consts::PI;
 
 /// The checks of this part of the paper.
 pub const EQUATIONS: &[Equation] = &[
@@ -93,31 +95,6 @@ pub const EQUATIONS: &[Equation] = &[
         check: eq85,
     },
 ];
-
-fn disk(k: f64) -> Disk {
-    Disk::new(0.0375, k, 0.4, 9.81).expect("a valid disk")
-}
-
-/// The exact energy of the disk rolling without slipping (eq 26's content), generic so that its
-/// rate along a motion is exact by a dual number:
-/// $E = \frac{ma^2}{2}\left[(2k+1)\omega_1^2 + (k+1)\dot\alpha^2 + k\Omega^2\sin^2\alpha\right] + mga\sin\alpha$.
-fn energy<T: DualNum<f64> + Copy>(d: &Disk, m: &Motion<T>) -> T {
-    let k = d.k;
-    let s = m.alpha.sin();
-    let kinetic = m.spin * m.spin * (2.0 * k + 1.0)
-        + m.alpha_dot * m.alpha_dot * (k + 1.0)
-        + m.precession * m.precession * s * s * k;
-    kinetic * (0.5 * d.m * d.a * d.a) + s * (d.m * d.g * d.a)
-}
-
-/// Steady precession with the centre of mass at rest ($b = 0$, $\omega_1 = 0$), from eq 24 with
-/// $\ddot\alpha = 0$: $\Omega^2 = g/(a k\sin\alpha)$, generic in alpha.
-fn steady_precession<T: DualNum<f64> + Copy>(d: &Disk, alpha: T) -> T {
-    (alpha.sin() * (d.a * d.k)).recip().sqrt() * d.g.sqrt()
-}
-
-/// The tilts at which the small-angle approximations are measured (two decades).
-const SMALL_ALPHAS: [f64; 5] = [0.2, 0.1, 0.05, 0.025, 0.0125];
 
 /// Eq 72 at states of the $b = 0$ family (steady precession at each tilt, $\omega_1 = 0$) with
 /// tilt rate $\dot\alpha^2 = c_0\,g\alpha/a$: the claimed
@@ -260,23 +237,6 @@ pub fn eq73(b: &Bench) -> Finding {
     f
 }
 
-/// The rolling model with the dissipation of eq 75 and the integral
-/// $W = \int\epsilon\,|\Omega|^\beta dt$ carried as a fifth state.
-struct WithWork {
-    model: Rolling<4>,
-    law: PowerLaw,
-}
-
-impl Dynamics<5> for WithWork {
-    fn rhs(&self, y: &State<5>, dy: &mut State<5>) {
-        let core = State::<4>::new(y[0], y[1], y[2], y[3]);
-        let mut d = State::<4>::zeros();
-        self.model.rhs(&core, &mut d);
-        dy.fixed_rows_mut::<4>(0).copy_from(&d);
-        dy[4] = self.law.epsilon * y[2].abs().powf(self.law.beta);
-    }
-}
-
 /// Eqs 74-75 against the dissipative rolling model: at states sampled along its integrations,
 /// the rate of the exact energy, $\nabla E\cdot f(y)$ (gradient by dual numbers), against the
 /// claimed power. Errors relative to the sum of the magnitudes of the terms of
@@ -357,72 +317,6 @@ pub fn eq74(b: &Bench) -> Finding {
 /// Eq 75, $P = -\epsilon m a g\Omega^\beta$: checked like eq 74 for $\beta$ = 0.5, 2, 2.5, 3, 4.
 pub fn eq75(b: &Bench) -> Finding {
     dissipation(b, 75, &[0.5, 2.0, 2.5, 3.0, 4.0])
-}
-
-/// What the full dissipative model does from steady $b = 0$ motion at `alpha0`, over 20
-/// precession periods (epsilon set so that alpha falls by about 2 % over them): the ratio
-/// $\langle\dot\alpha\rangle / \langle\epsilon\Omega^\beta\rangle$ and the $C$ of eq 79,
-/// $-1/\frac{d}{dt}\langle\Omega^{-(\beta+2)}\rangle$, both from least-squares slopes over the
-/// samples (which average the nutation out). The start's tilt rate is set to the adiabatic
-/// estimate $-\frac23\epsilon\Omega^\beta/\cos\alpha_0$ to excite little nutation.
-struct Descent {
-    c: f64,
-    epsilon: f64,
-    /// The samples: time, tilt, precession rate.
-    t: Vec<f64>,
-    alpha: Vec<f64>,
-    precession: Vec<f64>,
-}
-
-fn slope(x: &[f64], y: &[f64]) -> f64 {
-    let n = x.len() as f64;
-    let mx = x.iter().sum::<f64>() / n;
-    let my = y.iter().sum::<f64>() / n;
-    let sxy: f64 = x.iter().zip(y).map(|(a, b)| (a - mx) * (b - my)).sum();
-    let sxx: f64 = x.iter().map(|a| (a - mx) * (a - mx)).sum();
-    sxy / sxx
-}
-
-fn descent(b: &Bench, d: &Disk, beta: f64, alpha0: f64) -> Option<Descent> {
-    let start = steady_motion(d, alpha0, 0.0).ok()?;
-    let om0 = start.precession;
-    let epsilon = 1.5e-4 * alpha0 * om0.powf(1.0 - beta);
-    let law = PowerLaw { epsilon, beta };
-    let sys = WithWork {
-        model: Rolling::<4>::new(*d, Extras::default(), Some(law)),
-        law,
-    };
-    let alpha_dot0 = -2.0 / 3.0 * epsilon * om0.powf(beta) / alpha0.cos();
-    let y0 = State::<5>::new(alpha0, alpha_dot0, om0, 0.0, 0.0);
-    let t_end = 20.0 * 2.0 * PI / om0;
-    let sol = solve(
-        Problem::new(&sys, 0.0, y0, t_end).sampled(t_end / 400.0),
-        &b.settings(),
-    )
-    .ok()?;
-    let col = |i: usize| sol.y.iter().map(|y| y[i]).collect::<Vec<f64>>();
-    let x: Vec<f64> = sol.y.iter().map(|y| y[2].powf(-(beta + 2.0))).collect();
-    Some(Descent {
-        c: -1.0 / slope(&sol.t, &x),
-        epsilon,
-        alpha: col(0),
-        precession: col(2),
-        t: sol.t,
-    })
-}
-
-/// The dissipation exponents and disks of the spin-down checks.
-const BETAS: [f64; 3] = [1.0, 2.0, 4.0];
-
-/// Bindings of the quantities of sec. 11 for a disk and a dissipation law.
-fn law_bindings(d: &Disk, law: &PowerLaw) -> Bindings<f64> {
-    Bindings::new()
-        .scalar("dissipation", law.epsilon)
-        .scalar("beta", law.beta)
-        .scalar("g", d.g)
-        .scalar("a", d.a)
-        .scalar("k", d.k)
-        .scalar("m", d.m)
 }
 
 /// Eq 76, $\dot\alpha = -\frac{2\epsilon}{5}\Omega^\beta \approx -\frac{2\epsilon}{5}
@@ -527,169 +421,35 @@ pub fn eq76(b: &Bench) -> Finding {
     ])
 }
 
-/// The one-state law of eq 76 AS PRINTED (its last form, a function of $\alpha$ alone) integrated
-/// from $\alpha_0 = 0.2$ until $\alpha$ falls below $\alpha_0/10$ (closer to the finite-time
-/// singularity the solver's error relative to $\alpha$ grows past its tolerance rule), sampled.
-/// These runs are the premise of eqs 77-79: each must follow from the eq 76 of the paper under
-/// check, whatever its coefficient.
-struct LawRun {
-    law: PowerLaw,
-    t: Vec<f64>,
-    alpha: Vec<f64>,
-}
-
-const LAW_ALPHA0: f64 = 0.2;
-
-/// Eq 76's last printed form as a one-state system.
-struct PrintedLaw<'a> {
-    eq: &'a crate::paper::Equation,
-    bind: std::cell::RefCell<Bindings<f64>>,
-}
-
-impl PrintedLaw<'_> {
-    fn rate(&self, alpha: f64) -> f64 {
-        let mut bind = self.bind.borrow_mut();
-        bind.set("alpha", crate::paper::Value::Scalar(alpha));
-        let last = self.eq.chains[0].sides.last();
-        last.and_then(|e| self.eq.scalar(e, &bind).ok())
-            .unwrap_or(f64::NAN)
-    }
-}
-
-impl Dynamics<1> for PrintedLaw<'_> {
-    fn rhs(&self, y: &State<1>, dy: &mut State<1>) {
-        dy[0] = self.rate(y[0]);
-    }
-}
-
-fn law_runs(b: &Bench) -> Vec<(Disk, LawRun)> {
-    let mut out = Vec::new();
-    let eq76 = b.paper.equation(76);
-    for &k in &[0.25, 0.5] {
-        let d = disk(k);
-        for &beta in &[1.0, 2.0, 2.5, 4.0] {
-            let unit = PrintedLaw {
-                eq: eq76,
-                bind: law_bindings(&d, &PowerLaw { epsilon: 1.0, beta }).into(),
-            };
-            // epsilon so that alpha0 / |alpha_dot(alpha0)| is one second.
-            let epsilon = LAW_ALPHA0 / unit.rate(LAW_ALPHA0).abs();
-            if !epsilon.is_finite() {
-                continue;
-            }
-            let law = PowerLaw { epsilon, beta };
-            let model = PrintedLaw {
-                eq: eq76,
-                bind: law_bindings(&d, &law).into(),
-            };
-            let Ok(sol) = solve(
-                Problem::new(&model, 0.0, State::<1>::new(LAW_ALPHA0), 10.0)
-                    .sampled(0.01)
-                    .stop_when(Event::new("alpha small", |y: &State<1>| {
-                        y[0] - LAW_ALPHA0 / 10.0
-                    })),
-                &b.settings(),
-            ) else {
-                continue;
-            };
-            out.push((
-                d,
-                LawRun {
-                    law,
-                    alpha: sol.y.iter().map(|y| y[0]).collect(),
-                    t: sol.t,
-                },
-            ));
-        }
-    }
-    out
-}
-
-/// Eqs 77-79 share this: along each run of eq 76's printed law, the $t_0$ that makes the printed
-/// relation `relation` of eq `n` hold at each sample (a root, [`super::solve_printed`]); the
-/// relation follows from eq 76 exactly when that $t_0$ is the same at every sample. The error is
-/// the largest spread of the implied $t_0$ relative to the first, the tolerance the solver's.
-/// `omega` binds $\Omega$ where the relation names it (eq 79: $\Omega^2 = g/ak\alpha$, the
-/// premise eq 76 itself uses).
-fn implied_t0(b: &Bench, n: u32, relation: usize, worst: &mut Worst) {
-    let eq = b.paper.equation(n);
-    let Some(rel) = eq.relations().get(relation).copied() else {
-        worst.add(f64::NAN, 0.0, 1.0, || {
-            format!("eq {n} has no relation {}", relation + 1)
-        });
-        return;
-    };
-    for (d, run) in law_runs(b) {
-        let beta = run.law.beta;
-        let c = printed_c(b, &d, &run.law);
-        let mut first = None;
-        for (t, a) in run.t.iter().zip(&run.alpha) {
-            // C as eq 79 defines it, for the relations written with it (eq 84).
-            let bind = law_bindings(&d, &run.law)
-                .scalar("alpha", *a)
-                .scalar("t", *t)
-                .scalar("C", c)
-                .scalar("Omega", (d.g / (d.a * d.k * a)).sqrt());
-            let t0 =
-                solve_printed(eq, &rel, "t_0", &bind, *t + 1e-12, *t + 1e3).unwrap_or(f64::NAN);
-            let reference = *first.get_or_insert(t0);
-            worst.add(b.claim(t0), reference, reference.abs(), || {
-                format!(
-                    "eq {n} {}: implied t_0 at t = {t:.4} s against {reference:.9} s at the start, k = {}, beta = {beta}, alpha = {a:.4}",
-                    rel.name(),
-                    d.k
-                )
-            });
-        }
-    }
-}
-
-fn derivation_from_eq76(b: &Bench, n: u32, relation: usize, what: &str) -> Finding {
-    let mut worst = Worst::default();
-    implied_t0(b, n, relation, &mut worst);
-    Finding::from_worst(
-        Method::Derivation,
-        format!("{what}: the t_0 it implies along eq 76's printed law integrated numerically, which must not drift"),
-        worst,
-        Tolerance::solver(b.rtol),
-        false,
-    )
-}
-
-/// Eq 77, $\alpha^{(\beta+2)/2} = \frac{\epsilon(\beta+2)}{5}(g/ak)^{\beta/2}(t_0 - t)$: an exact
-/// integral of eq 76's law. Against the printed law integrated numerically (k = 1/4, 1/2;
-/// $\beta$ = 1, 2, 2.5, 4) down to $\alpha_0/10$.
+/// Eq 77, $\alpha^{(\beta+2)/2} = \frac{\epsilon(\beta+2)}{5}(g/ak)^{\beta/2}(t_0 - t)$.
+///
+/// FAILS for the dissipative disk: against the full dissipative rolling model
+/// ([`time_remaining_on_model`]) the printed relation puts the time remaining at 5/3 of the
+/// model's, at every tilt (the model obeys the same law with 3 in place of 5). That it follows
+/// exactly from eq 76 as printed is the derivation check (`derivations::eq77_from_eq76`): the
+/// error is inherited.
 pub fn eq77(b: &Bench) -> Finding {
-    derivation_from_eq76(b, 77, 0, "eq 77")
+    time_remaining_on_model(b, 77, 0, "eq 77")
 }
 
 /// Eq 78, $\alpha = (\epsilon(\beta+2)/5)^{2/(\beta+2)}(g/ak)^{\beta/(\beta+2)}(t_0 - t)^{2/(\beta+2)}$,
 /// against eq 76's printed law integrated numerically.
 pub fn eq78(b: &Bench) -> Finding {
-    derivation_from_eq76(b, 78, 0, "eq 78")
+    time_remaining_on_model(b, 78, 0, "eq 78")
 }
 
 /// Eq 79, $\Omega = \left(\frac{5g/\epsilon(\beta+2)ak}{t_0 - t}\right)^{1/(\beta+2)} \equiv
 /// (C/(t_0 - t))^{1/(\beta+2)}$.
 ///
-/// FAILS for the dissipative disk. (a) Its first relation against eq 76's printed law integrated
-/// numerically with $\Omega = \sqrt{g/ak\alpha}$: an exact consequence (the implied $t_0$ does
-/// not drift). (b) The $C$ its second relation defines (solved for from the printed text) against
-/// the full dissipative rolling model, a small-angle law whose error must fall at order 2 in
+/// FAILS for the dissipative disk. (a) Its first relation against the full dissipative rolling
+/// model ([`time_remaining_on_model`]). (b) The $C$ its second relation defines (solved for from
+/// the printed text) against the same model, a small-angle law whose error must fall at order 2 in
 /// $\alpha_0$ (from steady b = 0 motion at $\alpha_0$ = 0.1, 0.05, 0.025;
 /// k = 1/4, 1/2; $\beta$ = 1, 2, 4), where $C$ is measured as $-1/\frac{d}{dt}\Omega^{-(\beta+2)}$:
 /// the printed $C$ is $5/3$ times the measured one (the adiabatic balance gives
 /// $C = 3g/\epsilon(\beta+2)ak$), inherited from eq 76.
 pub fn eq79(b: &Bench) -> Finding {
-    let mut worst = Worst::default();
-    implied_t0(b, 79, 0, &mut worst);
-    let derived = Finding::from_worst(
-        Method::Derivation,
-        "eq 79: the t_0 its first relation implies along eq 76's printed law, which must not drift",
-        worst,
-        Tolerance::solver(b.rtol),
-        false,
-    );
+    let first = time_remaining_on_model(b, 79, 0, "eq 79's first relation");
     // (b) The C of the second relation against the full model: a small-angle law, so its error
     // must fall at the order eq 76 claims as alpha0 shrinks.
     let eq = b.paper.equation(79);
@@ -730,8 +490,8 @@ pub fn eq79(b: &Bench) -> Finding {
     );
     physical.at = format!("{}; {seen}", physical.at);
     super::worst_order(vec![
-        ("derived from eq 76".into(), derived),
-        ("against the dissipative model".into(), physical),
+        ("first relation".into(), first),
+        ("C of the second relation".into(), physical),
     ])
 }
 
@@ -871,23 +631,14 @@ pub fn eq83(b: &Bench) -> Finding {
     )
 }
 
-/// The $C$ that eq 79's second relation defines for a disk and a law (solved for from the
-/// printed text), NaN if it cannot be.
-fn printed_c(b: &Bench, d: &Disk, law: &PowerLaw) -> f64 {
-    let eq = b.paper.equation(79);
-    let bind = law_bindings(d, law).scalar("t_0", 1.7).scalar("t", 0.7);
-    let guess = d.g / (law.epsilon * d.a * d.k);
-    eq.relations()
-        .get(1)
-        .and_then(|rel| solve_printed(eq, rel, "C", &bind, 0.0, 1e3 * guess))
-        .unwrap_or(f64::NAN)
-}
-
-/// Eq 84, $1/\Omega = ((t_0 - t)/C)^{1/(\beta+2)}$, with $C$ as eq 79 defines it, along eq 76's
-/// printed law integrated numerically (k = 1/4, 1/2; $\beta$ = 1, 2, 2.5, 4) with
-/// $\Omega = \sqrt{g/ak\alpha}$: the $t_0$ it implies must not drift.
+/// Eq 84, $1/\Omega = ((t_0 - t)/C)^{1/(\beta+2)}$, with $C$ as eq 79 defines it.
+///
+/// FAILS for the dissipative disk, by the factor of eq 79's $C$: against the full dissipative
+/// rolling model ([`time_remaining_on_model`]). With $C$ a fitted constant (as sec. 11's data
+/// analysis uses it) the form is right; the derivation check `derivations::eq84_from_eq79` shows
+/// it follows from eq 76 as printed.
 pub fn eq84(b: &Bench) -> Finding {
-    derivation_from_eq76(b, 84, 0, "eq 84 with eq 79's C")
+    time_remaining_on_model(b, 84, 0, "eq 84 with eq 79's C")
 }
 
 /// Eq 85, $d\Omega/dt \propto \Omega^{\beta+3}$: along eq 76's printed law, at tilts over three
@@ -994,18 +745,25 @@ mod tests {
     }
 
     #[test]
-    fn eq77_holds() {
-        assert_eq!(verdicts(eq77).verdict, Verdict::Holds);
+    fn eq77_fails_against_the_dissipative_model_by_five_thirds() {
+        five_thirds(verdicts(eq77));
     }
 
     #[test]
-    fn eq78_holds() {
-        assert_eq!(verdicts(eq78).verdict, Verdict::Holds);
+    fn eq78_fails_against_the_dissipative_model_by_five_thirds() {
+        five_thirds(verdicts(eq78));
     }
 
     #[test]
     fn eq79_fails_against_the_dissipative_model() {
-        assert_eq!(verdicts(eq79).verdict, Verdict::Fails);
+        five_thirds(verdicts(eq79));
+    }
+
+    /// A check of 77-79 or 84 against the model: fails, and the time remaining it implies is
+    /// 5/3 of the model's at the smallest tilt (the error 2/3, within the O(alpha^2) rest).
+    fn five_thirds(f: Finding) {
+        assert_eq!(f.verdict, Verdict::Fails);
+        assert!(f.at.contains("1.66"), "{}", f.at);
     }
 
     #[test]
@@ -1024,8 +782,8 @@ mod tests {
     }
 
     #[test]
-    fn eq84_holds() {
-        assert_eq!(verdicts(eq84).verdict, Verdict::Holds);
+    fn eq84_fails_against_the_dissipative_model_by_five_thirds() {
+        five_thirds(verdicts(eq84));
     }
 
     #[test]

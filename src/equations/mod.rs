@@ -6,12 +6,14 @@
 //! perturb it (by a relative 1e-3) and see the check fail: a check that cannot fail is no check.
 
 pub mod claims;
+pub mod derivations;
 pub mod friction;
 pub mod frictionless;
 pub mod kinematics;
 pub mod motion;
 pub mod oscillation;
 pub mod slippage;
+pub mod spin_down;
 pub mod steady;
 
 use crate::finding::{Finding, Worst};
@@ -115,6 +117,21 @@ pub struct Equation {
     pub label: &'static str,
     /// The check.
     pub check: fn(&Bench) -> Finding,
+}
+
+/// Whether an equation FOLLOWS from its printed premises (their LaTeX as the reference), as
+/// opposed to whether it is true (its [`Equation::check`]); see [`derivations`].
+#[derive(Debug, Clone, Copy)]
+pub struct Derivation {
+    /// The printed number of the equation derived.
+    pub number: u32,
+    /// The check.
+    pub check: fn(&Bench) -> Finding,
+}
+
+/// Every registered derivation check, by number.
+pub fn derivations() -> Vec<Derivation> {
+    derivations::DERIVATIONS.to_vec()
 }
 
 /// One prose claim (an entry of `paper/claims.yaml`) and its check.

@@ -1,0 +1,240 @@
+//! Root causes and inherited errors: dependency-aware verdicts over the premises graph of
+//! `paper/equations.yaml`.
+//!
+//! An equation's own check says whether it is TRUE (against an independent reference). That
+//! alone cannot say whose fault a failure is: eq 79 fails, but only because eq 76 does. So each
+//! failing equation is classified from three facts:
+//!
+//! - whether its direct premises (the `premises` of its entry) pass their own checks;
+//! - whether it FOLLOWS from its premises as printed (a derivation check,
+//!   [`crate::equations::derivations`]), where one is registered;
+//! - the classification of the failing premises (for the root causes behind them).
+//!
+//! The rules, applied to every failing equation:
+//!
+//! | premises | follows from them? | classification |
+//! |---|---|---|
+//! | all hold | (cannot: true premises give true conclusions) | root cause |
+//! | some fail | no | root cause, which also inherits from the failing premises |
+//! | some fail | yes | inherits from the failing premises |
+//! | some fail | not checked | undetermined, said so |
+//!
+//! "How much of the error is inherited": where the equation follows from its printed premises,
+//! all of it (its derivation error is reported, at round-off or solver tolerance); where it does
+//! not, the derivation check's error is its own share and is reported beside the total.
+
+use crate::finding::Finding;
+use serde::Serialize;
+use std::collections::{BTreeMap, BTreeSet};
+
+/// Why an equation fails.
+#[derive(Debug, Clone, PartialEq, Serialize, schemars::JsonSchema)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Cause {
+    /// Its premises hold, or it does not follow from them: the error starts here.
+    RootCause {
+        /// Failing direct premises it ALSO carries errors from (empty when they all hold).
+        also_inherits_from: Vec<u32>,
+        /// The error of the step from its printed premises (its own share), when checked.
+        own_error: Option<f64>,
+    },
+    /// It follows from its printed premises, some of which fail: the error is theirs.
+    Inherits {
+        /// The failing direct premises.
+        from: Vec<u32>,
+        /// The root causes upstream.
+        roots: Vec<u32>,
+        /// The error of the step from its printed premises (within its tolerance).
+        derivation_error: f64,
+    },
+    /// Some premise fails and no check says whether it follows from them.
+    Undetermined {
+        /// The failing direct premises.
+        failed_premises: Vec<u32>,
+    },
+}
+
+impl Cause {
+    /// One line for a reader: "root cause", "inherits from eq 76 (root: eq 73)", ...
+    pub fn describe(&self) -> String {
+        let eqs = |v: &[u32]| {
+            v.iter()
+                .map(|n| format!("eq {n}"))
+                .collect::<Vec<_>>()
+                .join(", ")
+        };
+        match self {
+            Cause::RootCause {
+                also_inherits_from,
+                own_error,
+            } => {
+                let mut s = "root cause".to_string();
+                if !also_inherits_from.is_empty() {
+                    s.push_str(&format!(
+                        ": it does not follow from its printed premises (own error {}), which fail too ({})",
+                        own_error.map_or("-".into(), |e| format!("{e:.3e}")),
+                        eqs(also_inherits_from)
+                    ));
+                }
+                s
+            }
+            Cause::Inherits { from, roots, .. } => format!(
+                "inherits from {}: follows from its printed premises, so the error is theirs (root cause{}: {})",
+                eqs(from),
+                if roots.len() == 1 { "" } else { "s" },
+                eqs(roots)
+            ),
+            Cause::Undetermined { failed_premises } => format!(
+                "undetermined: its premises {} fail, and whether it follows from them is not checked",
+                eqs(failed_premises)
+            ),
+        }
+    }
+}
+
+/// What the classification needs of one equation.
+#[derive(Debug, Clone)]
+pub struct Node<'a> {
+    /// Its direct premises (printed numbers).
+    pub premises: &'a [u32],
+    /// Its own check's finding (None if not checked or could not run).
+    pub truth: Option<&'a Finding>,
+    /// Its derivation check's finding, if one is registered and ran.
+    pub derivation: Option<&'a Finding>,
+}
+
+/// Classifies every failing equation of `nodes` (keyed by printed number). A premise that is not
+/// in `nodes` (unchecked, like eq 82) counts as holding only if it is a definition or model the
+/// paper posits; here it is simply not counted as failing. Premises always have smaller numbers
+/// than the equation in this paper, so one pass in order settles the roots.
+pub fn classify(nodes: &BTreeMap<u32, Node<'_>>) -> BTreeMap<u32, Cause> {
+    let mut out: BTreeMap<u32, Cause> = BTreeMap::new();
+    let fails = |n: u32| {
+        nodes
+            .get(&n)
+            .and_then(|x| x.truth)
+            .is_some_and(|f| !f.verdict.passes())
+    };
+    for (&n, node) in nodes {
+        if !fails(n) {
+            continue;
+        }
+        let failed: Vec<u32> = node
+            .premises
+            .iter()
+            .copied()
+            .filter(|&p| fails(p))
+            .collect();
+        let cause = if failed.is_empty() {
+            Cause::RootCause {
+                also_inherits_from: Vec::new(),
+                own_error: node.derivation.map(|d| d.error),
+            }
+        } else {
+            match node.derivation {
+                Some(d) if d.verdict.passes() => {
+                    let mut roots = BTreeSet::new();
+                    for p in &failed {
+                        match out.get(p) {
+                            Some(Cause::Inherits { roots: r, .. }) => roots.extend(r),
+                            _ => {
+                                roots.insert(*p);
+                            }
+                        }
+                    }
+                    Cause::Inherits {
+                        from: failed,
+                        roots: roots.into_iter().collect(),
+                        derivation_error: d.error,
+                    }
+                }
+                Some(d) => Cause::RootCause {
+                    also_inherits_from: failed,
+                    own_error: Some(d.error),
+                },
+                None => Cause::Undetermined {
+                    failed_premises: failed,
+                },
+            }
+        };
+        out.insert(n, cause);
+    }
+    out
+}
+
+/// The consequences of each root cause: the equations whose roots include it, in order.
+pub fn consequences(causes: &BTreeMap<u32, Cause>) -> BTreeMap<u32, Vec<u32>> {
+    let mut out: BTreeMap<u32, Vec<u32>> = BTreeMap::new();
+    for (&n, c) in causes {
+        match c {
+            Cause::RootCause { .. } => {
+                out.entry(n).or_default();
+            }
+            Cause::Inherits { roots, .. } => {
+                for r in roots {
+                    out.entry(*r).or_default().push(n);
+                }
+            }
+            Cause::Undetermined { .. } => {}
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::finding::{Method, Tolerance, Worst};
+
+    fn finding(ok: bool) -> Finding {
+        let mut w = Worst::default();
+        w.add(if ok { 1.0 } else { 2.0 }, 1.0, 1.0, || "here".into());
+        Finding::from_worst(Method::Identity, "x", w, Tolerance::roundoff(), false)
+    }
+
+    /// The chain of section 11, by hand: 72 fails with true premises; 73 fails and does not
+    /// follow from 72; 76 follows from 73 and 75; 77 from 76; 80 holds.
+    #[test]
+    fn the_section_11_chain_is_classified_as_a_referee_would() {
+        let (pass, fail) = (finding(true), finding(false));
+        let mut nodes = BTreeMap::new();
+        let premises: Vec<(u32, Vec<u32>, bool, Option<bool>)> = vec![
+            (18, vec![], true, None),
+            (72, vec![18], false, None),
+            (73, vec![72], false, Some(false)),
+            (75, vec![], true, None),
+            (76, vec![73, 75], false, Some(true)),
+            (77, vec![76], false, Some(true)),
+            (78, vec![77], false, None),
+            (80, vec![77], true, None),
+        ];
+        for (n, p, ok, der) in &premises {
+            nodes.insert(
+                *n,
+                Node {
+                    premises: p,
+                    truth: Some(if *ok { &pass } else { &fail }),
+                    derivation: der.map(|d| if d { &pass } else { &fail }),
+                },
+            );
+        }
+        let c = classify(&nodes);
+        assert!(
+            matches!(&c[&72], Cause::RootCause { also_inherits_from, .. } if also_inherits_from.is_empty())
+        );
+        assert!(
+            matches!(&c[&73], Cause::RootCause { also_inherits_from, .. } if also_inherits_from == &[72])
+        );
+        assert!(
+            matches!(&c[&76], Cause::Inherits { from, roots, .. } if from == &[73] && roots == &[73])
+        );
+        assert!(matches!(&c[&77], Cause::Inherits { roots, .. } if roots == &[73]));
+        assert!(
+            matches!(&c[&78], Cause::Undetermined { failed_premises } if failed_premises == &[77])
+        );
+        assert!(!c.contains_key(&80));
+        let q = consequences(&c);
+        assert_eq!(q[&73], vec![76, 77]);
+        assert_eq!(q[&72], Vec::<u32>::new());
+    }
+}

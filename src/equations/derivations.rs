@@ -1,0 +1,321 @@
+//! Does an equation FOLLOW from its printed premises? Each check here takes the premises'
+//! LaTeX, as printed, for the reference, and the equation's own LaTeX for the claim: it asks
+//! about the paper's algebra, not about the physics. The physics is asked by the equation's own
+//! check (its [`super::Equation::check`]). Together they let [`crate::cause`] tell a root cause
+//! (the premises hold, or the step from them is wrong) from an inherited error (a correct step
+//! from a wrong premise).
+//!
+//! Only the equations that fail and have a failing premise need this (an equation that fails
+//! while all its premises hold cannot follow from them): the chain of section 11.
+
+use super::spin_down::{
+    derivation_from_eq76, disk, implied_t0, implied_t0_of, law_bindings, SMALL_ALPHAS,
+};
+use super::{printed_relations, solve_printed, worst_order, Bench, Derivation};
+use crate::finding::{Finding, Method, Tolerance, Worst};
+use crate::model::dissipation::PowerLaw;
+use crate::paper::{Bindings, Relation};
+use num_dual::Dual64;
+
+/// The derivation checks.
+pub const DERIVATIONS: &[Derivation] = &[
+    Derivation {
+        number: 73,
+        check: eq73_from_eq72,
+    },
+    Derivation {
+        number: 76,
+        check: eq76_from_eqs73_75,
+    },
+    Derivation {
+        number: 77,
+        check: eq77_from_eq76,
+    },
+    Derivation {
+        number: 78,
+        check: eq78_from_eq76,
+    },
+    Derivation {
+        number: 79,
+        check: eq79_from_eq78,
+    },
+    Derivation {
+        number: 84,
+        check: eq84_from_eq79,
+    },
+];
+
+/// Eq 73 from eq 72 AS PRINTED under the condition the paper attaches to its last form,
+/// $F_z \approx 0$, with the vertical force the same section gives, $F_z \approx m g + m a\ddot\alpha$:
+/// so $\ddot\alpha = -g/a$. The rate of eq 72's last form,
+/// $\frac{d}{dt}\left(\frac12 m a^2\dot\alpha^2 + \frac32 m a g\alpha\right)$, is taken exactly by a dual
+/// number through the parsed LaTeX (tilt $\alpha + \dot\alpha\,\varepsilon$, tilt rate
+/// $\dot\alpha + \ddot\alpha\,\varepsilon$) and every printed form of eq 73 is compared with it, in
+/// units of $m a g|\dot\alpha|$. The middle form follows exactly; the last, $\frac52 m a g\dot\alpha$,
+/// does not: eq 72 gives $\frac12 m a g\dot\alpha$ there.
+pub fn eq73_from_eq72(b: &Bench) -> Finding {
+    let eq72 = b.paper.equation(72);
+    let mut worst = Worst::default();
+    for &k in &[0.25, 0.5] {
+        let d = disk(k);
+        for &alpha in &SMALL_ALPHAS {
+            let alpha_dot = -0.1 * (d.g * alpha / d.a).sqrt();
+            let alpha_ddot = -d.g_over_a();
+            let constant = Dual64::from_re;
+            let bind = Bindings::<Dual64>::new()
+                .scalar("m", constant(d.m))
+                .scalar("a", constant(d.a))
+                .scalar("g", constant(d.g))
+                .scalar("alpha", Dual64::new(alpha, alpha_dot))
+                .scalar("alpha_dot", Dual64::new(alpha_dot, alpha_ddot));
+            let derived = eq72.chains[0]
+                .sides
+                .last()
+                .and_then(|e| eq72.scalar(e, &bind).ok())
+                .map_or(f64::NAN, |u| u.eps);
+            let unit = d.m * d.a * d.g * alpha_dot.abs();
+            let at = Bindings::new()
+                .scalar("m", d.m)
+                .scalar("a", d.a)
+                .scalar("g", d.g)
+                .scalar("alpha_dot", alpha_dot)
+                .scalar("alpha_ddot", alpha_ddot)
+                .scalar("P", derived)
+                .scalar("U_rate", derived);
+            printed_relations(b, 73, &at, unit, &mut worst, &|| {
+                format!(
+                    "k = {k}, alpha = {alpha}, alpha_dot = {alpha_dot:.4} rad/s, alpha_ddot = -g/a; \
+                     eq 72's last form gives dU/dt = {:.4} m a g alpha_dot",
+                    derived / (d.m * d.a * d.g * alpha_dot)
+                )
+            });
+        }
+    }
+    Finding::from_worst(
+        Method::Derivation,
+        "every printed form of eq 73 against the rate of eq 72's last form where F_z = m g + m a alpha_ddot = 0 \
+         (error in units of m a g |alpha_dot|)",
+        worst,
+        Tolerance::roundoff(),
+        false,
+    )
+}
+
+/// Eq 76's first relation from eq 73's last form and eq 75, both AS PRINTED: the power of eq 75,
+/// $P = -\epsilon m a g\Omega^\beta$, put into $P \approx \frac52 m a g\dot\alpha$ and solved for
+/// $\dot\alpha$ (a root of the printed relation between eq 73's first and last sides), against the
+/// $\dot\alpha$ eq 76 prints, at tilts and rates over the sweep of the section (k = 1/4, 1/2;
+/// beta = 1, 2, 4; $\Omega$ from 10 to 1000 rad/s). Eq 76's second relation (its small-angle form
+/// of eq 31) is judged by eq 76's own check.
+pub fn eq76_from_eqs73_75(b: &Bench) -> Finding {
+    let (eq73, eq75, eq76) = (
+        b.paper.equation(73),
+        b.paper.equation(75),
+        b.paper.equation(76),
+    );
+    let mut worst = Worst::default();
+    let sides = &eq73.chains[0].sides;
+    let (Some(first), Some(last), Some(rel)) = (
+        sides.first(),
+        sides.last(),
+        eq73.chains[0].rels.last().copied(),
+    ) else {
+        return no_form(73);
+    };
+    let power_to_rate = Relation {
+        chain: 0,
+        index: sides.len() - 2,
+        rel,
+        lhs: first,
+        rhs: last,
+    };
+    for &k in &[0.25, 0.5] {
+        let d = disk(k);
+        for &beta in &[1.0, 2.0, 4.0] {
+            for omega in [10.0f64, 100.0, 1000.0] {
+                let law = PowerLaw {
+                    epsilon: 1e-3 * omega.powf(1.0 - beta),
+                    beta,
+                };
+                let bind = law_bindings(&d, &law).scalar("Omega", omega);
+                let power = eq75.chains[0]
+                    .sides
+                    .last()
+                    .and_then(|e| eq75.scalar(e, &bind).ok())
+                    .unwrap_or(f64::NAN);
+                let scale = (power / (d.m * d.a * d.g)).abs();
+                let derived = solve_printed(
+                    eq73,
+                    &power_to_rate,
+                    "alpha_dot",
+                    &bind.clone().scalar("P", power),
+                    -1e3 * scale,
+                    1e3 * scale,
+                )
+                .unwrap_or(f64::NAN);
+                let printed = eq76
+                    .relations()
+                    .first()
+                    .and_then(|r| eq76.scalar(r.rhs, &bind).ok())
+                    .unwrap_or(f64::NAN);
+                worst.add(b.claim(printed), derived, derived.abs(), || {
+                    format!(
+                        "k = {k}, beta = {beta}, Omega = {omega} rad/s: eqs 73 and 75 give alpha_dot = {derived:.6e} rad/s"
+                    )
+                });
+            }
+        }
+    }
+    let first = Finding::from_worst(
+        Method::Derivation,
+        "eq 76's first relation against alpha_dot solved from eq 73's last form with the power of eq 75",
+        worst,
+        Tolerance::roundoff(),
+        false,
+    );
+    worst_order(vec![
+        ("first relation".into(), first),
+        ("second relation".into(), eq76_second_from_eq31(b)),
+    ])
+}
+
+/// Eq 76's second relation from its first with $\Omega_0$ solved from eq 31 AS PRINTED
+/// ($\Omega_0^2 = g/ak\sin\alpha_0$) at each tilt: a small-angle form, whose relative error must
+/// fall at the order eq 76 claims (k = 1/4, 1/2; beta = 1, 2, 4).
+fn eq76_second_from_eq31(b: &Bench) -> Finding {
+    let (eq31, eq76) = (b.paper.equation(31), b.paper.equation(76));
+    let rels = eq76.relations();
+    let mut errors = vec![0.0f64; SMALL_ALPHAS.len()];
+    for &k in &[0.25, 0.5] {
+        let d = disk(k);
+        for &beta in &[1.0, 2.0, 4.0] {
+            let law = PowerLaw {
+                epsilon: 1e-3,
+                beta,
+            };
+            for (i, &alpha) in SMALL_ALPHAS.iter().enumerate() {
+                let bind = law_bindings(&d, &law).scalar("alpha_0", alpha);
+                let guess = (d.g / (d.a * k * alpha)).sqrt();
+                let omega = eq31
+                    .relations()
+                    .first()
+                    .and_then(|r| solve_printed(eq31, r, "Omega_0", &bind, 0.0, 1e3 * guess))
+                    .unwrap_or(f64::NAN);
+                let at = bind.scalar("alpha", alpha).scalar("Omega", omega);
+                let e = match (rels.first(), rels.get(1)) {
+                    (Some(r1), Some(r2)) => {
+                        match (eq76.scalar(r1.rhs, &at), eq76.scalar(r2.rhs, &at)) {
+                            (Ok(l), Ok(r)) => ((b.claim(r) - l) / l).abs(),
+                            _ => f64::INFINITY,
+                        }
+                    }
+                    _ => f64::INFINITY,
+                };
+                errors[i] = errors[i].max(if e.is_nan() { f64::INFINITY } else { e });
+            }
+        }
+    }
+    Finding::from_order(
+        "eq 76's second relation against its first with Omega_0 solved from eq 31 as printed, relative error against alpha",
+        &SMALL_ALPHAS,
+        &errors,
+        eq76.entry.claimed_order.unwrap_or(2.0),
+    )
+}
+
+fn no_form(n: u32) -> Finding {
+    let mut worst = Worst::default();
+    worst.add(f64::NAN, 0.0, 1.0, || {
+        format!("eq {n} has no printed relation")
+    });
+    Finding::from_worst(
+        Method::Derivation,
+        format!("eq {n} as printed"),
+        worst,
+        Tolerance::roundoff(),
+        false,
+    )
+}
+
+/// Eq 77 from eq 76's printed law, integrated numerically: the $t_0$ it implies must not drift.
+pub fn eq77_from_eq76(b: &Bench) -> Finding {
+    derivation_from_eq76(b, 77, 0, "eq 77")
+}
+
+/// Eq 78 from eq 76's printed law (eq 78 is eq 77 solved for the tilt).
+pub fn eq78_from_eq76(b: &Bench) -> Finding {
+    derivation_from_eq76(b, 78, 0, "eq 78")
+}
+
+/// Eq 79's first relation from eq 76's printed law with $\Omega = \sqrt{g/ak\alpha}$ (eq 78 with
+/// eq 31 at small tilt).
+///
+/// Its last side, $(C/(t_0 - t))^{1/(\beta+2)}$ with $C$ solved for from the second relation, is
+/// compared in the same way against $\Omega$ (the second relation alone holds for any $t_0$).
+pub fn eq79_from_eq78(b: &Bench) -> Finding {
+    let mut worst = Worst::default();
+    implied_t0(b, 79, 0, &mut worst);
+    let eq = b.paper.equation(79);
+    let sides = &eq.chains[0].sides;
+    if let (Some(first), Some(last), Some(rel)) =
+        (sides.first(), sides.last(), eq.chains[0].rels.first())
+    {
+        let omega_to_c = Relation {
+            chain: 0,
+            index: sides.len() - 2,
+            rel: *rel,
+            lhs: first,
+            rhs: last,
+        };
+        implied_t0_of(b, 79, &omega_to_c, &mut worst);
+    }
+    Finding::from_worst(
+        Method::Derivation,
+        "eq 79: the t_0 that Omega = (its first right side) and Omega = (C/(t_0 - t))^(1/(beta+2)) \
+         imply along eq 76's printed law, which must not drift",
+        worst,
+        Tolerance::solver(b.rtol),
+        false,
+    )
+}
+
+/// Eq 84 with the $C$ eq 79 defines, from eq 76's printed law.
+pub fn eq84_from_eq79(b: &Bench) -> Finding {
+    derivation_from_eq76(b, 84, 0, "eq 84 with eq 79's C")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::finding::Verdict;
+
+    fn run(n: u32) -> (Finding, Finding) {
+        let d = DERIVATIONS.iter().find(|d| d.number == n).map(|d| d.check);
+        let check = d.unwrap_or(|_| panic!("no derivation"));
+        let ok = check(&Bench::default());
+        let bad = check(&Bench::perturbed(1e-3));
+        eprintln!(
+            "eq {n}: {} error {:.3e} at {}\n  perturbed: {} error {:.3e}",
+            ok.verdict, ok.error, ok.at, bad.verdict, bad.error
+        );
+        (ok, bad)
+    }
+
+    #[test]
+    fn eq73_last_form_does_not_follow_from_eq72_at_zero_normal_force() {
+        let (f, _) = run(73);
+        assert_eq!(f.verdict, Verdict::Fails);
+        // 5/2 printed against 1/2 derived, in units of m a g |alpha_dot|.
+        assert!((f.error - 2.0).abs() < 1e-9, "{}", f.error);
+        assert!(f.at.contains("relation 3"), "{}", f.at);
+    }
+
+    #[test]
+    fn the_rest_of_the_chain_follows_from_its_printed_premises() {
+        for n in [76, 77, 78, 79, 84] {
+            let (ok, bad) = run(n);
+            assert!(ok.verdict.passes(), "eq {n}: {}", ok.at);
+            assert_eq!(bad.verdict, Verdict::Fails, "eq {n} perturbed");
+        }
+    }
+}
