@@ -164,7 +164,13 @@ pub fn parse_only(text: &str) -> Result<Selection, SelectError> {
                 continue;
             }
         };
+        // Inside a range an equation without a check is skipped (`76-85` holds eq 82, whose
+        // reason the report states); named alone, it is refused with that reason.
+        let ranged = picked.len() > 1;
         for n in picked {
+            if ranged && !checked.contains(&n) {
+                continue;
+            }
             if !checked.contains(&n) {
                 let why = UNCHECKABLE_EQUATIONS
                     .iter()
@@ -265,6 +271,8 @@ mod tests {
         assert!(e("eq0").contains("1 to 85"));
         assert!(e("25-23").contains("write 23-25"), "{}", e("25-23"));
         assert!(e("82").contains("eq 82 cannot be checked"), "{}", e("82"));
+        let range = parse_only("80-85").unwrap();
+        assert_eq!(range.numbers, Some(vec![80, 81, 83, 84, 85]));
         assert!(
             e("k-uniform-dsk").contains("did you mean k-uniform-disk"),
             "{}",
