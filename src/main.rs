@@ -645,9 +645,29 @@ fn check(
     bar.finish_and_clear();
     let elapsed = started.elapsed().as_secs_f64();
     if json {
+        use rolling_disk::report::json;
+        let document = json::CheckDocument {
+            schema: json::CHECK_SCHEMA_ID.into(),
+            schema_version: json::SCHEMA_VERSION,
+            tool: json::Tool {
+                name: env!("CARGO_PKG_NAME").into(),
+                version: env!("CARGO_PKG_VERSION").into(),
+            },
+            paper: json::PaperSource::of(PAPER_TITLE, bench.paper),
+            settings: json::Settings {
+                method: "DOP853".into(),
+                rtol: bench.rtol,
+                command: std::iter::once("rolling-disk".to_string())
+                    .chain(std::env::args().skip(1))
+                    .collect::<Vec<_>>()
+                    .join(" "),
+            },
+            summary: json::SummaryCounts::of(&checked),
+            checks: checked.iter().map(json::CheckRecord::of).collect(),
+        };
         println!(
             "{}",
-            serde_json::to_string_pretty(&checked)
+            serde_json::to_string_pretty(&document)
                 .map_err(|e| format!("cannot write JSON: {e}"))?
         );
     } else {
@@ -670,6 +690,10 @@ fn check(
     }
     Ok(())
 }
+
+/// The paper, as the JSON documents name it.
+const PAPER_TITLE: &str =
+    "A. J. McDonald and K. T. McDonald, The Rolling Motion of a Disk on a Horizontal Plane (2001)";
 
 fn print_table(checked: &[Checked]) {
     println!(

@@ -126,16 +126,67 @@ fn check_runs_the_selected_checks_and_refuses_unknown_ones() {
     assert!(!ok && err.contains("no-such-claim"), "{err}");
 }
 
-#[test]
-fn check_json_is_parseable_data() {
-    let (ok, out, err) = cli(&["check", "--only", "26", "--json"]);
-    assert!(ok, "{err}");
-    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
-    assert_eq!(v[0]["subject"]["number"], 26);
+/// `schemas/check.schema.json`, checked equal to the schema of the code (bless with
+/// `ROLLING_DISK_BLESS=1`).
+fn check_schema() -> serde_json::Value {
+    let path =
+        std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("schemas/check.schema.json");
+    let generated = rolling_disk::report::json::check_schema().unwrap();
+    if std::env::var_os("ROLLING_DISK_BLESS").is_some() {
+        std::fs::write(&path, &generated).unwrap();
+    }
+    let published = std::fs::read_to_string(&path).unwrap_or_default();
     assert!(
-        v[0]["finding"]["Ok"]["verdict"]["kind"].is_string(),
-        "{out}"
+        published == generated,
+        "{} is not the schema of the code: run `ROLLING_DISK_BLESS=1 cargo test --release --test \
+         cli check_json` and commit it",
+        path.display()
     );
+    serde_json::from_str(&published).unwrap()
+}
+
+#[test]
+fn check_json_validates_and_says_root_causes_and_inherited_errors() {
+    let (ok, out, err) = cli(&["check", "--only", "26,72-79", "--json"]);
+    assert!(ok, "{err}");
+    let doc: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let validator = jsonschema::validator_for(&check_schema()).unwrap();
+    let errors: Vec<String> = validator.iter_errors(&doc).map(|e| e.to_string()).collect();
+    assert!(errors.is_empty(), "{errors:?}");
+    assert!(!out.contains("\"Ok\"") && !out.contains("\"Err\""), "{out}");
+    let checks = doc["checks"].as_array().unwrap();
+    let eq = |n: u64| {
+        checks
+            .iter()
+            .find(|c| c["equation"] == n)
+            .unwrap_or_else(|| panic!("eq {n} missing"))
+    };
+    assert_eq!(eq(26)["outcome"]["status"], "checked");
+    assert!(eq(26)["cause"].is_null());
+    assert_eq!(eq(72)["cause"]["kind"], "root_cause");
+    assert_eq!(eq(73)["cause"]["kind"], "root_cause");
+    assert_eq!(
+        eq(73)["cause"]["also_inherits_from"],
+        serde_json::json!([72])
+    );
+    for n in [76, 77, 78, 79] {
+        assert_eq!(eq(n)["cause"]["kind"], "inherits", "eq {n}");
+        assert_eq!(eq(n)["cause"]["roots"], serde_json::json!([73]), "eq {n}");
+        assert_eq!(
+            eq(n)["derivation"]["verdict"]
+                .as_str()
+                .map(|v| v != "fails"),
+            Some(true)
+        );
+    }
+    let roots = &doc["summary"]["root_causes"];
+    assert_eq!(roots[1]["equation"], 73, "{roots}");
+    assert_eq!(
+        roots[1]["consequences"],
+        serde_json::json!([76, 77, 78, 79])
+    );
+    // Premises were run to classify, but only what was asked is listed.
+    assert_eq!(checks.len(), 9);
 }
 
 #[test]

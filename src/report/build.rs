@@ -102,6 +102,13 @@ fn finding_of(c: &Checked) -> FindingView {
     }
 }
 
+/// The check of equation `n` among `checked`.
+fn equation_checked(checked: &[Checked], n: u32) -> Option<&Checked> {
+    checked
+        .iter()
+        .find(|c| matches!(c.subject, Subject::Equation { number, .. } if number == n))
+}
+
 /// The work-precision figure of the speed/accuracy study, and its table.
 fn precision_part() -> Result<(Vec<PrecisionRow>, Vec<json::PrecisionRecord>, Figure), String> {
     let scene = Scene::load("benchmark").map_err(|e| e.to_string())?;
@@ -332,10 +339,7 @@ pub fn build(
             rtol: settings.rtol,
             command: settings.command.clone(),
         },
-        summary: json::SummaryCounts {
-            equations: Tally::of(eqs.iter().copied()).into(),
-            claims: Tally::of(cls.iter().copied()).into(),
-        },
+        summary: json::SummaryCounts::of(&checked),
         equations: cat
             .iter()
             .map(|e| json::EquationRecord {
@@ -352,6 +356,10 @@ pub fn build(
                         .find(|(n, _)| *n == e.number)
                         .map(|(_, why)| *why),
                 ),
+                derivation: equation_checked(&checked, e.number).and_then(json::derivation_outcome),
+                cause: equation_checked(&checked, e.number).and_then(|c| c.cause.clone()),
+                cause_text: equation_checked(&checked, e.number)
+                    .and_then(|c| c.cause.as_ref().map(crate::cause::Cause::describe)),
             })
             .collect(),
         claims: catalogue::claims()

@@ -7,6 +7,7 @@
 //! Versioning: [`SCHEMA_VERSION`] rises by one whenever a field is removed, renamed or changes
 //! meaning; adding a field keeps it.
 
+use crate::cause::Cause;
 use crate::check::{Checked, Subject, Tally};
 use crate::finding::{Finding, Verdict};
 use schemars::JsonSchema;
@@ -66,6 +67,26 @@ pub struct PaperSource {
 }
 
 impl PaperSource {
+    /// The transcription `paper` came from: the built-in one, or the directory it was read from
+    /// (hashed as read now; the checks read the same files moments before).
+    pub fn of(title: &str, paper: &crate::paper::Paper) -> Self {
+        match &paper.source {
+            crate::paper::PaperSource::BuiltIn => Self::built_in(title),
+            crate::paper::PaperSource::Dir(dir) => {
+                let mut h = Sha256::new();
+                for file in ["equations.yaml", "claims.yaml"] {
+                    h.update(std::fs::read(dir.join(file)).unwrap_or_default());
+                }
+                let digest = h.finalize();
+                Self {
+                    title: title.into(),
+                    source: dir.display().to_string(),
+                    sha256: digest.iter().map(|b| format!("{b:02x}")).collect(),
+                }
+            }
+        }
+    }
+
     /// The transcription compiled into the binary.
     pub fn built_in(title: &str) -> Self {
         let mut h = Sha256::new();
@@ -118,13 +139,138 @@ impl From<Tally> for Counts {
     }
 }
 
-/// Counts for equations and claims.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, JsonSchema)]
+/// Counts for equations and claims, and the root causes of the failing equations.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, JsonSchema)]
 pub struct SummaryCounts {
     /// Numbered equations.
     pub equations: Counts,
     /// Prose claims.
     pub claims: Counts,
+    /// Each failing equation whose error starts there, with the equations that inherit it.
+    pub root_causes: Vec<RootCauseRecord>,
+}
+
+/// A root cause and its consequences.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, JsonSchema)]
+pub struct RootCauseRecord {
+    /// The equation where the error starts.
+    pub equation: u32,
+    /// The failing equations that follow correctly from it (directly or through others).
+    pub consequences: Vec<u32>,
+}
+
+impl SummaryCounts {
+    /// The counts and root causes of a run of the checks.
+    pub fn of(checked: &[Checked]) -> Self {
+        let (eqs, cls): (Vec<&Checked>, Vec<&Checked>) = checked
+            .iter()
+            .partition(|c| matches!(c.subject, Subject::Equation { .. }));
+        Self {
+            equations: Tally::of(eqs.iter().copied()).into(),
+            claims: Tally::of(cls.iter().copied()).into(),
+            root_causes: root_causes(checked),
+        }
+    }
+}
+
+/// The root causes among `checked`, each with its consequences, in equation order.
+pub fn root_causes(checked: &[Checked]) -> Vec<RootCauseRecord> {
+    let causes = checked
+        .iter()
+        .filter_map(|c| match (&c.subject, &c.cause) {
+            (Subject::Equation { number, .. }, Some(cause)) => Some((*number, cause.clone())),
+            _ => None,
+        })
+        .collect();
+    crate::cause::consequences(&causes)
+        .into_iter()
+        .map(|(equation, consequences)| RootCauseRecord {
+            equation,
+            consequences,
+        })
+        .collect()
+}
+
+/// The document `check --json` writes (`schemas/check.schema.json`).
+#[derive(Debug, Clone, PartialEq, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct CheckDocument {
+    /// The schema this document follows: always [`CHECK_SCHEMA_ID`].
+    pub schema: String,
+    /// The schema's version: [`SCHEMA_VERSION`].
+    pub schema_version: u32,
+    /// The tool that wrote it.
+    pub tool: Tool,
+    /// The paper and the transcription of it the checks used.
+    pub paper: PaperSource,
+    /// How the integrations of the checks were run.
+    pub settings: Settings,
+    /// Counts of verdicts, and the root causes.
+    pub summary: SummaryCounts,
+    /// Every check that ran, in registry order.
+    pub checks: Vec<CheckRecord>,
+}
+
+/// The identifier of `check --json`'s schema.
+pub const CHECK_SCHEMA_ID: &str = "https://rolling-disk.invalid/schemas/check.schema.json";
+
+/// One check of `check --json`.
+#[derive(Debug, Clone, PartialEq, Serialize, JsonSchema)]
+pub struct CheckRecord {
+    /// "eq 79" or the claim's id.
+    pub name: String,
+    /// The equation's printed number, for an equation.
+    pub equation: Option<u32>,
+    /// The claim's id, for a claim.
+    pub claim: Option<String>,
+    /// The paper's section.
+    pub section: u32,
+    /// What the check found.
+    pub outcome: Outcome,
+    /// Whether it follows from its printed premises, where a derivation check exists.
+    pub derivation: Option<Outcome>,
+    /// For a failing equation: root cause, inherited, or undetermined.
+    pub cause: Option<Cause>,
+    /// The cause in one sentence.
+    pub cause_text: Option<String>,
+}
+
+impl CheckRecord {
+    /// The record of one check.
+    pub fn of(c: &Checked) -> Self {
+        let (equation, claim) = match &c.subject {
+            Subject::Equation { number, .. } => (Some(*number), None),
+            Subject::Claim { id } => (None, Some(id.to_string())),
+        };
+        Self {
+            name: c.subject.name(),
+            equation,
+            claim,
+            section: c.section,
+            outcome: Outcome::of_checked(c),
+            derivation: derivation_outcome(c),
+            cause: c.cause.clone(),
+            cause_text: c.cause.as_ref().map(Cause::describe),
+        }
+    }
+}
+
+/// The derivation check's outcome, if the subject has one.
+pub fn derivation_outcome(c: &Checked) -> Option<Outcome> {
+    c.derivation.as_ref().map(|d| match d {
+        Ok(f) => Outcome::of(f),
+        Err(e) => Outcome::Error { message: e.clone() },
+    })
+}
+
+/// The JSON Schema of [`CheckDocument`], pretty-printed, as published in `schemas/`.
+pub fn check_schema() -> Result<String, String> {
+    let mut s = schemars::schema_for!(CheckDocument);
+    s.insert("$id".into(), CHECK_SCHEMA_ID.into());
+    let mut text =
+        serde_json::to_string_pretty(&s).map_err(|e| format!("cannot write the schema: {e}"))?;
+    text.push('\n');
+    Ok(text)
 }
 
 /// A verdict, as a word.
@@ -240,6 +386,12 @@ pub struct EquationRecord {
     pub premises: Vec<u32>,
     /// What the check found.
     pub outcome: Outcome,
+    /// Whether it follows from its printed premises, where a derivation check exists.
+    pub derivation: Option<Outcome>,
+    /// For a failing equation: root cause, inherited (from which equations), or undetermined.
+    pub cause: Option<Cause>,
+    /// The cause in one sentence.
+    pub cause_text: Option<String>,
 }
 
 /// One prose claim.
