@@ -103,10 +103,33 @@ pub struct Node<'a> {
     pub derivation: Option<&'a Finding>,
 }
 
-/// Classifies every failing equation of `nodes` (keyed by printed number). A premise that is not
-/// in `nodes` (unchecked, like eq 82) counts as holding only if it is a definition or model the
-/// paper posits; here it is simply not counted as failing. Premises always have smaller numbers
-/// than the equation in this paper, so one pass in order settles the roots.
+/// The numbers of `nodes` with every premise before the equations that cite it (a premise may
+/// carry a larger number: eq 3 cites eq 4). A cycle, which a transcription could hold by
+/// mistake, is broken where it closes.
+pub fn premises_first(premises: &dyn Fn(u32) -> Vec<u32>, numbers: &[u32]) -> Vec<u32> {
+    fn visit(
+        n: u32,
+        premises: &dyn Fn(u32) -> Vec<u32>,
+        seen: &mut BTreeSet<u32>,
+        out: &mut Vec<u32>,
+    ) {
+        if !seen.insert(n) {
+            return;
+        }
+        for p in premises(n) {
+            visit(p, premises, seen, out);
+        }
+        out.push(n);
+    }
+    let (mut seen, mut out) = (BTreeSet::new(), Vec::new());
+    for &n in numbers {
+        visit(n, premises, &mut seen, &mut out);
+    }
+    out
+}
+
+/// Classifies every failing equation of `nodes` (keyed by printed number), premises first. A
+/// premise that is not in `nodes` (unchecked, like eq 82) is not counted as failing.
 pub fn classify(nodes: &BTreeMap<u32, Node<'_>>) -> BTreeMap<u32, Cause> {
     let mut out: BTreeMap<u32, Cause> = BTreeMap::new();
     let fails = |n: u32| {
@@ -115,7 +138,12 @@ pub fn classify(nodes: &BTreeMap<u32, Node<'_>>) -> BTreeMap<u32, Cause> {
             .and_then(|x| x.truth)
             .is_some_and(|f| !f.verdict.passes())
     };
-    for (&n, node) in nodes {
+    let numbers: Vec<u32> = nodes.keys().copied().collect();
+    let premises = |n: u32| nodes.get(&n).map_or(Vec::new(), |x| x.premises.to_vec());
+    for n in premises_first(&premises, &numbers) {
+        let Some(node) = nodes.get(&n) else {
+            continue;
+        };
         if !fails(n) {
             continue;
         }
@@ -236,5 +264,33 @@ mod tests {
         let q = consequences(&c);
         assert_eq!(q[&73], vec![76, 77]);
         assert_eq!(q[&72], Vec::<u32>::new());
+    }
+
+    /// A premise with a larger number than its consequence (eq 3 cites eq 4) is settled first.
+    #[test]
+    fn a_premise_printed_later_is_classified_first() {
+        let fail = finding(false);
+        let der = finding(true);
+        let mut nodes = BTreeMap::new();
+        let (p3, p4) = (vec![4], vec![]);
+        nodes.insert(
+            3,
+            Node {
+                premises: &p3,
+                truth: Some(&fail),
+                derivation: Some(&der),
+            },
+        );
+        nodes.insert(
+            4,
+            Node {
+                premises: &p4,
+                truth: Some(&fail),
+                derivation: None,
+            },
+        );
+        let c = classify(&nodes);
+        assert!(matches!(&c[&3], Cause::Inherits { roots, .. } if roots == &[4]));
+        assert!(matches!(&c[&4], Cause::RootCause { .. }));
     }
 }
