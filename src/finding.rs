@@ -195,6 +195,48 @@ pub struct Finding {
     pub at: String,
     /// A scene or figure that shows it, if any.
     pub shown_by: Option<String>,
+    /// The one comparison a reader needs, in the paper's terms (set by the checks whose
+    /// `claimed` and `reference` are orders or errors rather than the quantity itself).
+    pub headline: Option<Headline>,
+}
+
+/// One comparison in the paper's terms: a named quantity, the value the paper prints (or
+/// implies: said so), the true value from the reference, its unit, and where.
+#[derive(Debug, Clone, PartialEq, Serialize, schemars::JsonSchema)]
+pub struct Headline {
+    /// What is compared, in words and the paper's symbols.
+    pub quantity: String,
+    /// The paper's value.
+    pub paper: f64,
+    /// `printed` when the paper writes the number, `implied` when it follows from what it writes.
+    pub paper_is: String,
+    /// The reference's value.
+    pub reference: f64,
+    /// The unit (`1` for a pure number).
+    pub unit: String,
+    /// Where (a point of the domain).
+    pub at: String,
+}
+
+impl Headline {
+    /// A headline for `quantity`: the paper's value (`printed` or `implied`) and the true one.
+    pub fn new(
+        quantity: impl Into<String>,
+        paper: f64,
+        paper_is: &str,
+        reference: f64,
+        unit: &str,
+        at: impl Into<String>,
+    ) -> Self {
+        Self {
+            quantity: quantity.into(),
+            paper,
+            paper_is: paper_is.into(),
+            reference,
+            unit: unit.into(),
+            at: at.into(),
+        }
+    }
 }
 
 impl Finding {
@@ -223,6 +265,7 @@ impl Finding {
             tolerance,
             verdict,
             shown_by: None,
+            headline: None,
         }
     }
 
@@ -273,7 +316,14 @@ impl Finding {
                 Verdict::Fails
             },
             shown_by: None,
+            headline: None,
         }
+    }
+
+    /// Sets the headline comparison.
+    pub fn with_headline(mut self, h: Headline) -> Self {
+        self.headline = Some(h);
+        self
     }
 
     /// Names a scene or figure that shows this finding.

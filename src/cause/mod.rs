@@ -23,6 +23,8 @@
 //! all of it (its derivation error is reported, at round-off or solver tolerance); where it does
 //! not, the derivation check's error is its own share and is reported beside the total.
 
+pub mod graph;
+
 use crate::finding::Finding;
 use serde::Serialize;
 use std::collections::{BTreeMap, BTreeSet};

@@ -17,7 +17,7 @@ use super::spin_down::{
     PrintedLaw, BETAS, SMALL_ALPHAS,
 };
 use super::{printed_relations, solve_printed, Bench, Equation};
-use crate::finding::{Finding, Method, Tolerance, Worst};
+use crate::finding::{Finding, Headline, Method, Tolerance, Worst};
 use crate::model::dissipation::PowerLaw;
 use crate::model::rolling::Rolling;
 use crate::model::steady::steady_motion;
@@ -100,6 +100,7 @@ pub const EQUATIONS: &[Equation] = &[
 /// tilt rate $\dot\alpha^2 = c_0\,g\alpha/a$: the claimed
 /// $U \approx \frac12 m a^2\dot\alpha^2 + \frac32 m a g\alpha$ against the exact energy.
 fn eq72_at(b: &Bench, c0: f64) -> Finding {
+    let mut headline = None;
     let mut errors = vec![0.0f64; SMALL_ALPHAS.len()];
     let mut worst_form = vec![0usize; SMALL_ALPHAS.len()];
     for &k in &[0.25, 0.5] {
@@ -137,6 +138,24 @@ fn eq72_at(b: &Bench, c0: f64) -> Finding {
                     worst_form[i] = form + 1;
                 }
             }
+            let eq = b.paper.equation(72);
+            if k == 0.25 && i == SMALL_ALPHAS.len() - 1 {
+                let unit = d.m * d.g * d.a * alpha;
+                let last = eq.chains[0].sides.last();
+                let printed = last
+                    .and_then(|e| eq.scalar(e, &bind).ok())
+                    .unwrap_or(f64::NAN);
+                headline = Some(Headline::new(
+                    format!(
+                        "U / (m g a alpha) at alpha_dot^2 = {c0} g alpha / a (eq 72's last form)"
+                    ),
+                    printed / unit,
+                    "printed",
+                    reference / unit,
+                    "1",
+                    format!("uniform disk (k = 1/4), alpha = {alpha}, b = 0"),
+                ));
+            }
         }
     }
     let mut f = Finding::from_order(
@@ -153,6 +172,7 @@ fn eq72_at(b: &Bench, c0: f64) -> Finding {
         f.at,
         worst_form.last().copied().unwrap_or(0)
     );
+    f.headline = headline;
     f
 }
 
@@ -184,6 +204,7 @@ pub fn eq72(b: &Bench) -> Finding {
 /// $m a g|\dot\alpha|$: $2 + k$, not falling with $\alpha$. (Adiabatically, $\ddot\alpha \approx
 /// 0$, the power is $\frac32 m a g\dot\alpha$, the relation eq 76 should have used.)
 pub fn eq73(b: &Bench) -> Finding {
+    let mut headline = None;
     let mut errors = vec![0.0f64; SMALL_ALPHAS.len()];
     let mut worst_form = vec![0usize; SMALL_ALPHAS.len()];
     for &k in &[0.25, 0.5] {
@@ -220,6 +241,22 @@ pub fn eq73(b: &Bench) -> Finding {
                     worst_form[i] = form + 1;
                 }
             }
+            if k == 0.25 && i == SMALL_ALPHAS.len() - 1 {
+                let coefficient = d.m * d.a * d.g * alpha_dot;
+                let printed = eq.chains[0]
+                    .sides
+                    .last()
+                    .and_then(|e| eq.scalar(e, &bind).ok())
+                    .unwrap_or(f64::NAN);
+                headline = Some(Headline::new(
+                    "P / (m a g alpha_dot) where F_z = 0 (eq 73's last form; the exact rate gives 1/2 - k)",
+                    printed / coefficient,
+                    "printed",
+                    reference / coefficient,
+                    "1",
+                    format!("uniform disk (k = 1/4), alpha = {alpha}, b = 0"),
+                ));
+            }
         }
     }
     let mut f = Finding::from_order(
@@ -234,6 +271,7 @@ pub fn eq73(b: &Bench) -> Finding {
         f.at,
         worst_form.last().copied().unwrap_or(0)
     );
+    f.headline = headline;
     f
 }
 
@@ -337,6 +375,7 @@ pub fn eq76(b: &Bench) -> Finding {
     let alphas = [0.2, 0.1, 0.05];
     let mut errors = vec![0.0f64; alphas.len()];
     let mut seen = String::new();
+    let mut headline = None;
     for &k in &[0.25, 0.5] {
         let d = disk(k);
         for &beta in &BETAS {
@@ -364,6 +403,25 @@ pub fn eq76(b: &Bench) -> Finding {
                         let measured = slope(&r.t, &r.alpha);
                         let claimed = slope(&r.t, &predicted);
                         let e = ((claimed - measured) / measured).abs();
+                        if i == alphas.len() - 1 && k == 0.25 && beta == 2.0 {
+                            // The printed rate's coefficient over eps Omega^beta (at the start),
+                            // and the measured mean rate over the mean of eps Omega^beta.
+                            let printed = r.epsilon
+                                * r.precession.iter().map(|o| o.powf(beta)).sum::<f64>()
+                                / r.precession.len() as f64;
+                            let om0 = r.precession[0];
+                            let at_start = eq
+                                .scalar(relations[0].rhs, &bind.clone().scalar("Omega", om0).scalar("alpha", r.alpha[0]))
+                                .unwrap_or(f64::NAN);
+                            headline = Some(Headline::new(
+                                "alpha_dot / (epsilon Omega^beta), the rate of the tilt over the power-law rate (measured: mean over 20 precession periods)",
+                                at_start / (r.epsilon * om0.powf(beta)),
+                                "printed",
+                                measured / printed,
+                                "1",
+                                format!("uniform disk (k = 1/4), beta = 2, from steady b = 0 motion at alpha0 = {alpha0}, mean over 20 precession periods"),
+                            ));
+                        }
                         if i == alphas.len() - 1 {
                             seen = format!(
                                 "mean rate: printed {claimed:.5e}, measured {measured:.5e} rad/s (ratio {:.4}; adiabatic 5/3/cos = {:.4}) at k = {k}, beta = {beta}",
@@ -387,6 +445,7 @@ pub fn eq76(b: &Bench) -> Finding {
         claimed_order,
     );
     first.at = format!("{}; {seen}", first.at);
+    first.headline = headline;
     let mut errors2 = vec![0.0f64; SMALL_ALPHAS.len()];
     if let Some(second) = relations.get(1) {
         for &k in &[0.25, 0.5] {
@@ -457,6 +516,7 @@ pub fn eq79(b: &Bench) -> Finding {
     let alphas = [0.1, 0.05, 0.025];
     let mut errors = vec![0.0f64; alphas.len()];
     let mut seen = String::new();
+    let mut headline = None;
     for &k in &[0.25, 0.5] {
         let d = disk(k);
         for &beta in &BETAS {
@@ -470,6 +530,17 @@ pub fn eq79(b: &Bench) -> Finding {
                     let printed = definition
                         .and_then(|rel| solve_printed(eq, &rel, "C", &bind, 0.0, 1e3 * r.c))
                         .unwrap_or(f64::NAN);
+                    if i == alphas.len() - 1 && k == 0.25 && beta == 2.0 {
+                        let unit = d.g / (r.epsilon * (beta + 2.0) * d.a * k);
+                        headline = Some(Headline::new(
+                            "C of eq 79 in units of g / (epsilon (beta + 2) a k)",
+                            printed / unit,
+                            "printed",
+                            r.c / unit,
+                            "1",
+                            format!("uniform disk (k = 1/4), beta = 2, from steady b = 0 motion at alpha0 = {alpha0}"),
+                        ));
+                    }
                     if i == alphas.len() - 1 {
                         seen = format!(
                             "printed C / measured C = {:.4} at k = {k}, beta = {beta}, alpha0 = {alpha0}",
@@ -489,6 +560,7 @@ pub fn eq79(b: &Bench) -> Finding {
         b.paper.equation(76).entry.claimed_order.unwrap_or(2.0),
     );
     physical.at = format!("{}; {seen}", physical.at);
+    physical.headline = headline;
     super::worst_order(vec![
         ("first relation".into(), first),
         ("C of the second relation".into(), physical),

@@ -9,7 +9,7 @@
 use super::steady::{disk, rho_edge, steady_ref};
 use super::{printed_threshold, Bench, Equation};
 use crate::disk::Disk;
-use crate::finding::{Finding, Method, Tolerance, Worst};
+use crate::finding::{Finding, Headline, Method, Tolerance, Worst};
 use crate::model::rolling::{contact_force, rates};
 use crate::paper::Bindings;
 use nalgebra::Vector3;
@@ -197,13 +197,22 @@ fn eq43(b: &Bench) -> Finding {
             }
         }
     }
-    Finding::from_worst(
+    let f = Finding::from_worst(
         Method::Threshold,
         "friction bound for negative b against the friction the model's steady motion needs",
         w,
         edge_tolerance(),
         false,
-    )
+    );
+    let h = Headline::new(
+        "friction coefficient mu that steady motion with negative b needs (eq 43 bounds it)",
+        f.claimed,
+        "printed",
+        f.reference,
+        "1",
+        f.at.clone(),
+    );
+    f.with_headline(h)
 }
 
 /// Eq 43's tolerance: the edge is located by bisection to 1e-12 relative and enters

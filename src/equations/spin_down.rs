@@ -5,7 +5,7 @@
 
 use super::{solve_printed, Bench};
 use crate::disk::Disk;
-use crate::finding::{Finding, Method, Tolerance, Worst};
+use crate::finding::{Finding, Headline, Method, Tolerance, Worst};
 use crate::model::dissipation::PowerLaw;
 use crate::model::rolling::Rolling;
 use crate::model::steady::steady_motion;
@@ -314,6 +314,7 @@ pub(crate) fn time_remaining_on_model(b: &Bench, n: u32, relation: usize, what: 
     let rel = eq.relations().get(relation).copied();
     let mut errors = vec![0.0f64; MODEL_ALPHAS.len()];
     let mut seen = String::new();
+    let mut headline = None;
     for &k in &[0.25, 0.5] {
         let d = disk(k);
         for &beta in &BETAS {
@@ -340,6 +341,16 @@ pub(crate) fn time_remaining_on_model(b: &Bench, n: u32, relation: usize, what: 
                     1.0 - slope(&ts, &t0s)
                 });
                 let x = factor.unwrap_or(f64::NAN);
+                if i == MODEL_ALPHAS.len() - 1 && k == 0.25 && beta == 2.0 {
+                    headline = Some(Headline::new(
+                        format!("time remaining to t_0 that {what} implies, over the true time remaining"),
+                        x,
+                        "implied",
+                        1.0,
+                        "1",
+                        format!("uniform disk (k = 1/4), beta = 2, alpha0 = {alpha0}"),
+                    ));
+                }
                 if i == MODEL_ALPHAS.len() - 1 {
                     seen = format!(
                         "the printed relation puts the time remaining at {x:.4} times the model's at k = {k}, beta = {beta}, alpha0 = {alpha0}"
@@ -360,5 +371,6 @@ pub(crate) fn time_remaining_on_model(b: &Bench, n: u32, relation: usize, what: 
         b.paper.equation(76).entry.claimed_order.unwrap_or(2.0),
     );
     f.at = format!("{}; {seen}", f.at);
+    f.headline = headline;
     f
 }

@@ -71,6 +71,8 @@ pub enum Drawing {
     Panels(Panels),
     /// Figure 1's geometry.
     Geometry(Geometry),
+    /// The premises graph, coloured by verdict ([`crate::cause::graph`]).
+    Premises(crate::cause::graph::PremisesGraph),
 }
 
 impl Drawing {
@@ -84,6 +86,7 @@ impl Drawing {
             Drawing::Chart(c) => c.draw(root, scale),
             Drawing::Plot(p) => p.draw(root, scale),
             Drawing::Geometry(g) => g.draw(root, scale),
+            Drawing::Premises(g) => g.draw(root, scale),
             Drawing::Panels(p) => {
                 chart::register_font();
                 root.fill(&WHITE).map_err(|e| e.to_string())?;
@@ -121,7 +124,7 @@ impl Drawing {
                 &Options::default(),
             )?]),
             Drawing::Plot(p) => Ok(vec![p.layout((width, height), scale)?]),
-            Drawing::Geometry(_) => Ok(vec![]),
+            Drawing::Geometry(_) | Drawing::Premises(_) => Ok(vec![]),
             Drawing::Panels(p) => {
                 // The same split as `draw`: a title band, then equal columns.
                 let band = (36.0 * scale).round() as u32;

@@ -6,7 +6,7 @@ use super::json::{self, outcome_for, Document};
 use super::mathml::display_math;
 use super::{
     fmt_num, ClaimView, EquationView, FailureView, FigureView, FindingView, PrecisionRow, Report,
-    RunSettings, SceneView, SectionView, Summary,
+    RootCauseView, RunSettings, SceneView, SectionView, Summary,
 };
 use crate::catalogue;
 use crate::check::{run_checks, Checked, Selection, Subject, Tally};
@@ -99,6 +99,99 @@ fn finding_of(c: &Checked) -> FindingView {
     match &c.finding {
         Ok(f) => view(f),
         Err(e) => error_view(e),
+    }
+}
+
+/// A failing check as one row of the summary; `None` when it does not fail.
+fn failure_view(c: &Checked) -> Option<FailureView> {
+    let f = c.finding.as_ref().ok()?;
+    let (claimed, reference) = values(f);
+    (f.verdict == Verdict::Fails).then(|| FailureView {
+        name: c.subject.name(),
+        at: f.at.clone(),
+        anchor: match &c.subject {
+            Subject::Equation { number, .. } => format!("eq-{number}"),
+            Subject::Claim { id } => format!("claim-{id}"),
+        },
+        compared: f.compared.clone(),
+        claimed,
+        reference,
+        error: format!("{:.2e}", f.error),
+        headline: f.headline.as_ref().map(|h| {
+            let unit = if h.unit == "1" {
+                String::new()
+            } else {
+                format!(" {}", h.unit)
+            };
+            format!(
+                "{}: paper {}{unit} ({}), true {}{unit}",
+                h.quantity,
+                fmt_num(h.paper),
+                h.paper_is,
+                fmt_num(h.reference)
+            )
+        }),
+        headline_at: f.headline.as_ref().map(|h| h.at.clone()),
+    })
+}
+
+/// The root causes among the failing equations, each with its consequences, and the failing
+/// equations whose cause is undetermined.
+fn causes_view(checked: &[Checked]) -> (Vec<RootCauseView>, Vec<FailureView>) {
+    use crate::cause::Cause;
+    let causes: std::collections::BTreeMap<u32, Cause> = checked
+        .iter()
+        .filter_map(|c| match (&c.subject, &c.cause) {
+            (Subject::Equation { number, .. }, Some(cause)) => Some((*number, cause.clone())),
+            _ => None,
+        })
+        .collect();
+    let row = |n: u32| equation_checked(checked, n).and_then(failure_view);
+    let roots = crate::cause::consequences(&causes)
+        .into_iter()
+        .filter_map(|(root, inherit)| {
+            Some(RootCauseView {
+                failure: row(root)?,
+                cause: causes.get(&root).map(Cause::describe).unwrap_or_default(),
+                consequences: inherit.into_iter().filter_map(row).collect(),
+            })
+        })
+        .collect();
+    let undetermined = causes
+        .iter()
+        .filter(|(_, c)| matches!(c, Cause::Undetermined { .. }))
+        .filter_map(|(n, _)| row(*n))
+        .collect();
+    (roots, undetermined)
+}
+
+/// The premises graph of the report: every equation, coloured by its verdict.
+fn premises_figure(bench: &Bench, checked: &[Checked]) -> Figure {
+    use crate::cause::graph::{PremisesGraph, Status};
+    let premises = (1..=85u32)
+        .map(|n| (n, bench.paper.equation(n).entry.premises.clone()))
+        .collect();
+    let status = |n: u32| match equation_checked(checked, n).map(|c| &c.finding) {
+        Some(Ok(f)) => match f.verdict {
+            Verdict::Holds => Status::Holds,
+            Verdict::HoldsApproximately { .. } => Status::Approx,
+            Verdict::Definition => Status::Definition,
+            Verdict::Fails => Status::Fails,
+        },
+        _ => Status::Unchecked,
+    };
+    let causes = checked
+        .iter()
+        .filter_map(|c| match (&c.subject, &c.cause) {
+            (Subject::Equation { number, .. }, Some(cause)) => Some((*number, cause.clone())),
+            _ => None,
+        })
+        .collect();
+    Figure {
+        name: "premises",
+        title: "Which equation follows from which, and where the errors start".into(),
+        caption: "One node per numbered equation, an arrow from each premise to the equation that cites it (paper/equations.yaml), each row one step further from the paper's starting points. Colours are the verdicts (green holds, blue holds at its order, grey definition, red fails, yellow not checked); a thick outline marks a root cause, and red arrows carry an error into an equation that follows correctly from a failing premise. In the HTML each node links to its finding.".into(),
+        drawing: Drawing::Premises(PremisesGraph::new(&premises, &status, &causes)),
     }
 }
 
@@ -266,24 +359,12 @@ pub fn build(
         });
     }
 
-    let failures = checked
+    let failures: Vec<FailureView> = checked.iter().filter_map(failure_view).collect();
+    let (root_causes, undetermined) = causes_view(&checked);
+    let failing_claims = checked
         .iter()
-        .filter_map(|c| {
-            let f = c.finding.as_ref().ok()?;
-            let (claimed, reference) = values(f);
-            (f.verdict == Verdict::Fails).then(|| FailureView {
-                name: c.subject.name(),
-                at: f.at.clone(),
-                anchor: match &c.subject {
-                    Subject::Equation { number, .. } => format!("eq-{number}"),
-                    Subject::Claim { id } => format!("claim-{id}"),
-                },
-                compared: f.compared.clone(),
-                claimed,
-                reference,
-                error: format!("{:.2e}", f.error),
-            })
-        })
+        .filter(|c| matches!(c.subject, Subject::Claim { .. }))
+        .filter_map(failure_view)
         .collect();
     let (eqs, cls): (Vec<&Checked>, Vec<&Checked>) = checked
         .iter()
@@ -291,6 +372,7 @@ pub fn build(
 
     progress("drawing the figures");
     let mut figures = figures::all()?;
+    figures.push(premises_figure(bench, &checked));
     progress("measuring speed against accuracy");
     let (precision_rows, precision_records, wp) = precision_part()?;
     figures.push(wp);
@@ -304,7 +386,10 @@ pub fn build(
                 name: f.name.to_string(),
                 title: f.title.clone(),
                 caption: f.caption.clone(),
-                svg: f.drawing.to_svg(760, 480)?,
+                svg: match &f.drawing {
+                    Drawing::Premises(g) => g.to_linked_svg(760, 560),
+                    d => d.to_svg(760, 480)?,
+                },
                 file: format!("figures/{}.png", f.name),
             })
         })
@@ -401,6 +486,9 @@ pub fn build(
             unchecked,
             unchecked_claims,
             failures,
+            root_causes,
+            undetermined,
+            failing_claims,
         },
         sections,
         claims,

@@ -317,6 +317,8 @@ pub enum Outcome {
         at: String,
         /// A figure or scene that shows it.
         shown_by: Option<String>,
+        /// The one comparison a reader needs, in the paper's terms, when the check gives one.
+        headline: Option<crate::finding::Headline>,
     },
     /// The check could not run.
     Error {
@@ -359,6 +361,7 @@ impl Outcome {
             claimed_order,
             at: f.at.clone(),
             shown_by: f.shown_by.clone(),
+            headline: f.headline.clone(),
         }
     }
 

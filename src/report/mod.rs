@@ -65,6 +65,25 @@ pub struct Summary {
     pub unchecked_claims: Vec<(String, String)>,
     /// What fails, equations first.
     pub failures: Vec<FailureView>,
+    /// The root causes among the failing equations, each with the equations that inherit its
+    /// error.
+    pub root_causes: Vec<RootCauseView>,
+    /// Failing equations whose cause is undetermined (a premise fails, and no check says whether
+    /// they follow from it).
+    pub undetermined: Vec<FailureView>,
+    /// The failing prose claims.
+    pub failing_claims: Vec<FailureView>,
+}
+
+/// A root cause and its consequences, as the summary lists them.
+#[derive(Debug, Clone, Serialize)]
+pub struct RootCauseView {
+    /// The failing equation where the error starts.
+    pub failure: FailureView,
+    /// Its cause in one sentence (it may also carry a failing premise's error).
+    pub cause: String,
+    /// The equations that follow correctly from it and so carry its error.
+    pub consequences: Vec<FailureView>,
 }
 
 /// One failure, in one line.
@@ -84,6 +103,11 @@ pub struct FailureView {
     pub error: String,
     /// Where the worst case was, with the unrounded computed value for printed numbers.
     pub at: String,
+    /// The comparison in the paper's terms, when the check gives one: "quantity: paper X
+    /// (printed), true Y unit".
+    pub headline: Option<String>,
+    /// Where the headline comparison is made.
+    pub headline_at: Option<String>,
 }
 
 /// A section of the paper.
