@@ -318,7 +318,7 @@ pub enum Outcome {
         /// A figure or scene that shows it.
         shown_by: Option<String>,
         /// The one comparison a reader needs, in the paper's terms, when the check gives one.
-        headline: Option<crate::finding::Headline>,
+        headline: Option<Box<crate::finding::Headline>>,
     },
     /// The check could not run.
     Error {
@@ -361,7 +361,7 @@ impl Outcome {
             claimed_order,
             at: f.at.clone(),
             shown_by: f.shown_by.clone(),
-            headline: f.headline.clone(),
+            headline: f.headline.clone().map(Box::new),
         }
     }
 
