@@ -13,6 +13,7 @@ fn series_counts(f: &Figure) -> Vec<usize> {
             .flat_map(|p| p.chart.series.iter().map(|s| s.points.len()))
             .collect(),
         Drawing::Geometry(g) => vec![g.shapes().len()],
+        Drawing::Premises(g) => vec![g.nodes.len(), g.edges.len()],
     }
 }
 
@@ -55,7 +56,7 @@ fn axis_labels(f: &Figure) -> Vec<(String, String)> {
         Drawing::Chart(c) => vec![of(c)],
         Drawing::Plot(p) => vec![of(&p.chart)],
         Drawing::Panels(p) => p.plots.iter().map(|p| of(&p.chart)).collect(),
-        Drawing::Geometry(_) => vec![],
+        Drawing::Geometry(_) | Drawing::Premises(_) => vec![],
     }
 }
 
