@@ -25,6 +25,26 @@ fn built() -> &'static Built {
     })
 }
 
+/// One pipeline: a full report computes every study exactly once, and building the report
+/// from those results (which computes nothing) gives the report `build` gives.
+#[test]
+fn a_full_report_computes_each_study_once() {
+    use rolling_disk::report::build::from_results;
+    use rolling_disk::report::pipeline::{compute, RunConfig, Study};
+    let results = compute(&RunConfig::report(Bench::default()), &|_| {}).unwrap();
+    let studies: Vec<Study> = results.computed.keys().copied().collect();
+    assert_eq!(studies, Study::ALL.to_vec());
+    assert!(
+        results.computed.values().all(|&n| n == 1),
+        "{:?}",
+        results.computed
+    );
+    let (report, figures) = from_results(&Bench::default(), &results, &|_| {}).unwrap();
+    assert_eq!(figures.len(), rolling_disk::figures::NAMES.len());
+    assert_eq!(&render::json(&report).unwrap(), &built().3);
+    assert_eq!(&render::html(&report).unwrap(), &built().0);
+}
+
 #[test]
 fn html_holds_every_equation_claim_and_figure_as_mathml_and_svg() {
     let (html, _, figures, _) = built();

@@ -100,14 +100,20 @@ pub fn write(
                 let fig_dir = dir.join("figures");
                 std::fs::create_dir_all(&fig_dir)
                     .map_err(|e| format!("cannot create {}: {e}", fig_dir.display()))?;
-                for fig in figures {
-                    let path = fig_dir.join(format!("{}.png", fig.name));
-                    let tmp = fig_dir.join(format!(".{}.{}.png", fig.name, std::process::id()));
-                    fig.drawing.to_png(&tmp)?;
-                    std::fs::rename(&tmp, &path)
-                        .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
-                    written.push(path);
-                }
+                // Each PNG is drawn on its own rayon thread; the files do not depend on that.
+                use rayon::prelude::*;
+                let pngs: Vec<PathBuf> = figures
+                    .par_iter()
+                    .map(|fig| {
+                        let path = fig_dir.join(format!("{}.png", fig.name));
+                        let tmp = fig_dir.join(format!(".{}.{}.png", fig.name, std::process::id()));
+                        fig.drawing.to_png(&tmp)?;
+                        std::fs::rename(&tmp, &path)
+                            .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+                        Ok(path)
+                    })
+                    .collect::<Result<_, String>>()?;
+                written.extend(pngs);
                 put("report.tex", latex(report)?, &mut written)?;
             }
         }
