@@ -67,6 +67,17 @@ fn every_figure_builds_draws_and_is_deterministic() {
         assert!(!f.title.is_empty());
         let svg = f.drawing.to_svg(760, 480).expect("draws");
         assert!(svg.starts_with("<svg") && svg.len() > 2000, "{}", f.name);
+        // One well-formed document holding the whole drawing: a panel that closed the
+        // document early left the later panels after `</svg>`.
+        assert_eq!(svg.matches("</svg>").count(), 1, "{}", f.name);
+        assert!(
+            svg.trim_end().ends_with("</svg>"),
+            "{}: drawing after </svg>",
+            f.name
+        );
+        if let Err(e) = roxmltree::Document::parse(&svg) {
+            panic!("{}: the SVG is not well formed: {e}", f.name);
+        }
         assert!(
             !svg.contains("NaN") && !svg.contains("inf"),
             "{}: NaN in the SVG",

@@ -87,8 +87,14 @@ impl Drawing {
         scale: f64,
     ) -> Result<(), String> {
         match self {
-            Drawing::Chart(c) => c.draw(root, scale),
-            Drawing::Plot(p) => p.draw(root, scale),
+            Drawing::Chart(c) => {
+                c.draw(root, scale)?;
+                root.present().map_err(|e| e.to_string())
+            }
+            Drawing::Plot(p) => {
+                p.draw(root, scale)?;
+                root.present().map_err(|e| e.to_string())
+            }
             Drawing::Geometry(g) => g.draw(root, scale),
             Drawing::Panels(p) => {
                 chart::register_font();

@@ -50,6 +50,14 @@ fn render(report: &Report, template: &str) -> Result<String, String> {
     let mut ctx = ctx;
     let svgs: Vec<&str> = report.figures.iter().map(|f| f.svg.as_str()).collect();
     ctx.insert("svgs", &svgs);
+    if template == "report.html" {
+        use base64::Engine;
+        let font: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
+        ctx.insert(
+            "figure_font",
+            &base64::engine::general_purpose::STANDARD.encode(font),
+        );
+    }
     t.render(template, &ctx).map_err(|e| {
         let mut msg = format!("cannot render {template}: {e}");
         let mut source = std::error::Error::source(&e);
