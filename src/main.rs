@@ -515,7 +515,7 @@ fn report(
     // Check --out and make room beside it before computing anything.
     let set = SetWriter::begin(out).map_err(|e| e.to_string())?;
     let bench = bench_for(accuracy, load_paper(paper)?);
-    let status = |s: &str| eprintln!("report: {s}...");
+    let status = |s: &str| eprintln!("report: {s}");
     let (report, figures) = build(&bench, &status)?;
     let formats = match format {
         ReportFormat::Html => vec![render::Format::Html],
@@ -562,8 +562,8 @@ fn report(
 }
 
 fn figures(only: Option<&str>, out: &Path, format: FigureFormat) -> Result<(), String> {
-    let all = rolling_disk::figures::all()?;
-    let names: Vec<&str> = all.iter().map(|f| f.name).collect();
+    use rolling_disk::report::pipeline::{compute, RunConfig};
+    let names: Vec<&str> = rolling_disk::figures::NAMES.to_vec();
     let wanted: Vec<&str> = match only {
         Some(list) => list
             .split(',')
@@ -588,7 +588,11 @@ fn figures(only: Option<&str>, out: &Path, format: FigureFormat) -> Result<(), S
         }
     }
     std::fs::create_dir_all(out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
-    for f in all.iter().filter(|f| wanted.contains(&f.name)) {
+    // Only the studies the wanted figures are drawn from, each once.
+    let config = RunConfig::figures(rolling_disk::equations::Bench::default(), &wanted)?;
+    let results = compute(&config, &|s: &str| eprintln!("figures: {s}"))?;
+    let all = rolling_disk::figures::some(&wanted, &results)?;
+    for f in &all {
         let path = match format {
             FigureFormat::Svg => {
                 let path = out.join(format!("{}.svg", f.name));

@@ -72,3 +72,88 @@ fn the_rule_would_catch_an_import() {
     let line = "use crate::paper::Paper;";
     assert!(CLAIMS.iter().any(|c| line.contains(c)));
 }
+
+/// What computes a study: the solver, the scene runner, the simulations, the checks, the
+/// precision study and the studies behind the figures.
+const COMPUTES: &[&str] = &[
+    "crate::solve",
+    "crate::dispatch",
+    "crate::run::run",
+    "run::run(",
+    "precision::study(",
+    "run_checks",
+    "simulate_trace",
+    "simulate_motion",
+    "simulate_sound",
+    "law_trace",
+    "analyze(",
+    "Reference::compute",
+    "studies::",
+    "pipeline::compute",
+];
+
+/// The lines of `text` before its unit tests (`#[cfg(test)]`), numbered from 1.
+fn code_lines(text: &str) -> Vec<(usize, &str)> {
+    text.lines()
+        .enumerate()
+        .take_while(|(_, l)| !l.trim_start().starts_with("#[cfg(test)]"))
+        .map(|(i, l)| (i + 1, l))
+        .filter(|(_, l)| !l.trim_start().starts_with("//"))
+        .collect()
+}
+
+fn computing_lines(files: &[std::path::PathBuf]) -> Vec<String> {
+    let mut offenders = Vec::new();
+    for f in files {
+        let text = std::fs::read_to_string(f).unwrap();
+        for (n, line) in code_lines(&text) {
+            if let Some(c) = COMPUTES.iter().find(|c| line.contains(*c)) {
+                offenders.push(format!("{}:{n}: {} ({c})", f.display(), line.trim()));
+            }
+        }
+    }
+    offenders
+}
+
+/// One pipeline: figures are pure functions of the results, and the report's renderers read
+/// results; only `report/pipeline.rs` (which calls each study once) and `report/studies/`
+/// (the studies themselves) compute.
+#[test]
+fn figures_and_renderers_never_integrate() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut files = Vec::new();
+    rust_files(&src.join("figures"), &mut files);
+    rust_files(&src.join("report"), &mut files);
+    let files: Vec<_> = files
+        .into_iter()
+        .filter(|f| {
+            let rel = f
+                .strip_prefix(&src)
+                .unwrap()
+                .to_string_lossy()
+                .replace('\\', "/");
+            rel != "report/pipeline.rs" && !rel.starts_with("report/studies/")
+        })
+        .collect();
+    assert!(files.len() >= 15, "only {} files found", files.len());
+    let offenders = computing_lines(&files);
+    assert!(
+        offenders.is_empty(),
+        "figures or renderers that compute:\n{}",
+        offenders.join("\n")
+    );
+}
+
+#[test]
+fn the_purity_rule_would_catch_an_integration() {
+    // The scan must be able to fail: the studies it exempts are caught when scanned.
+    let studies = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/report/studies");
+    let mut files = Vec::new();
+    rust_files(&studies, &mut files);
+    let caught = computing_lines(&files);
+    assert!(
+        caught.iter().any(|l| l.contains("crate::solve"))
+            && caught.iter().any(|l| l.contains("run::run")),
+        "{caught:?}"
+    );
+}

@@ -1,7 +1,20 @@
 //! The report's figures: each builds, has data, draws to SVG without NaN, and is the same bytes
 //! on every build.
 
+use rolling_disk::equations::Bench;
 use rolling_disk::figures::{self, Drawing, Figure};
+use rolling_disk::report::pipeline::{compute, Results, RunConfig, Study};
+
+/// The studies every figure is drawn from, computed once by the report's pipeline.
+fn computed() -> Results {
+    let config = RunConfig::figures(Bench::default(), &figures::NAMES).expect("known figures");
+    compute(&config, &|_| {}).expect("the studies compute")
+}
+
+/// Every figure, from freshly computed studies.
+fn all() -> Vec<Figure> {
+    figures::all(&computed()).expect("figures build")
+}
 
 fn series_counts(f: &Figure) -> Vec<usize> {
     match &f.drawing {
@@ -20,12 +33,29 @@ fn series_counts(f: &Figure) -> Vec<usize> {
 #[test]
 fn every_figure_builds_draws_and_is_deterministic() {
     let start = std::time::Instant::now();
-    let a = figures::all().expect("figures build");
+    let results = computed();
+    let a = figures::all(&results).expect("figures build");
     let built = start.elapsed();
+    // One pipeline: the figures need every study but the checks, and each ran once.
+    let studies: Vec<Study> = results.computed.keys().copied().collect();
+    assert_eq!(
+        studies,
+        Study::ALL
+            .iter()
+            .copied()
+            .filter(|s| *s != Study::Checks)
+            .collect::<Vec<_>>()
+    );
+    assert!(
+        results.computed.values().all(|&n| n == 1),
+        "{:?}",
+        results.computed
+    );
     println!("all figures' data in {built:?}");
     let names: Vec<&str> = a.iter().map(|f| f.name).collect();
     assert_eq!(names, figures::NAMES.to_vec());
-    let b = figures::all().expect("figures build twice");
+    // A second computation gives the same figures.
+    let b = all();
     for (f, g) in a.iter().zip(&b) {
         let counts = series_counts(f);
         assert!(!counts.is_empty(), "{}: no series", f.name);
@@ -38,6 +68,17 @@ fn every_figure_builds_draws_and_is_deterministic() {
         assert!(!f.title.is_empty());
         let svg = f.drawing.to_svg(760, 480).expect("draws");
         assert!(svg.starts_with("<svg") && svg.len() > 2000, "{}", f.name);
+        // One well-formed document holding the whole drawing: a panel that closed the
+        // document early left the later panels after `</svg>`.
+        assert_eq!(svg.matches("</svg>").count(), 1, "{}", f.name);
+        assert!(
+            svg.trim_end().ends_with("</svg>"),
+            "{}: drawing after </svg>",
+            f.name
+        );
+        if let Err(e) = roxmltree::Document::parse(&svg) {
+            panic!("{}: the SVG is not well formed: {e}", f.name);
+        }
         assert!(
             !svg.contains("NaN") && !svg.contains("inf"),
             "{}: NaN in the SVG",
@@ -66,7 +107,7 @@ fn axis_labels(f: &Figure) -> Vec<(String, String)> {
 #[test]
 fn legends_cover_no_data_and_every_axis_has_ticks_and_a_label() {
     let mut defects = Vec::new();
-    for f in figures::all().expect("figures build") {
+    for f in all() {
         for (w, h, scale) in [(760, 480, 1.0), (1800, 1200, 3.0)] {
             for (i, l) in f
                 .drawing
@@ -130,14 +171,15 @@ fn a_legend_over_the_data_is_caught() {
 
 #[test]
 fn figures_can_be_built_by_name() {
-    let f = figures::by_name("stability-map")
-        .expect("known")
-        .expect("builds");
-    assert_eq!(f.name, "stability-map");
-    let some = figures::some(&["tek02", "fig1", "tek02"]).expect("builds");
+    let wanted = ["tek02", "fig1", "tek02"];
+    let config = RunConfig::figures(Bench::default(), &wanted).expect("known");
+    assert_eq!(config.studies, vec![Study::Experiment]);
+    let results = compute(&config, &|_| {}).expect("computes");
+    let some = figures::some(&wanted, &results).expect("builds");
     let names: Vec<&str> = some.iter().map(|f| f.name).collect();
     assert_eq!(names, ["tek02", "fig1"]);
-    assert!(figures::by_name("fig99").is_none());
+    assert!(figures::some(&["fig99"], &results).is_err());
+    assert!(RunConfig::figures(Bench::default(), &["fig99"]).is_err());
 }
 
 /// Writes every figure as PNG to /tmp/fig_NAME.png for looking at:
@@ -145,7 +187,7 @@ fn figures_can_be_built_by_name() {
 #[test]
 #[ignore]
 fn write_pngs_for_inspection() {
-    for f in figures::all().expect("figures build") {
+    for f in all() {
         let path = std::path::PathBuf::from(format!("/tmp/fig_{}.png", f.name));
         f.drawing.to_png(&path).expect("png");
         let svg = f.drawing.to_svg(760, 480).expect("svg");

@@ -25,6 +25,27 @@ fn built() -> &'static Built {
     })
 }
 
+/// One pipeline: a full report computes every study exactly once, and building the report
+/// from those results (which computes nothing) gives the report `build` gives.
+#[test]
+fn a_full_report_computes_each_study_once() {
+    use rolling_disk::report::build::from_results;
+    use rolling_disk::report::pipeline::{compute, RunConfig, Study};
+    let results = compute(&RunConfig::report(Bench::default()), &|_| {}).unwrap();
+    let studies: Vec<Study> = results.computed.keys().copied().collect();
+    assert_eq!(studies, Study::ALL.to_vec());
+    assert!(
+        results.computed.values().all(|&n| n == 1),
+        "{:?}",
+        results.computed
+    );
+    let (report, figures) = from_results(&Bench::default(), &results, &|_| {}).unwrap();
+    // The figures of the studies, and the premises graph drawn from the checks.
+    assert_eq!(figures.len(), rolling_disk::figures::NAMES.len() + 1);
+    assert_eq!(&render::json(&report).unwrap(), &built().3);
+    assert_eq!(&render::html(&report).unwrap(), &built().0);
+}
+
 #[test]
 fn html_holds_every_equation_claim_and_figure_as_mathml_and_svg() {
     let (html, _, figures, _) = built();
@@ -56,19 +77,21 @@ fn html_holds_every_equation_claim_and_figure_as_mathml_and_svg() {
 #[test]
 fn html_refers_to_nothing_outside_itself() {
     let (html, _, _, _) = built();
-    for bad in [
-        "<script",
-        "<link",
-        "src=\"http",
-        "href=\"http",
-        "url(",
-        "@import",
-    ] {
+    for bad in ["<script", "<link", "src=\"http", "href=\"http", "@import"] {
         assert!(
             !html.contains(bad),
             "the report refers outside itself: {bad}"
         );
     }
+    // The one url() is the figures' font, embedded as data.
+    let urls: Vec<&str> = html
+        .match_indices("url(")
+        .map(|(i, _)| &html[i..])
+        .collect();
+    assert_eq!(urls.len(), 1, "one embedded font, no other url()");
+    assert!(urls
+        .iter()
+        .all(|u| u.starts_with("url(data:font/ttf;base64,")));
     // The only absolute URIs are XML namespace names, which nothing fetches.
     let namespaces = [
         "http://www.w3.org/1998/Math/MathML",

@@ -915,7 +915,9 @@ impl Chart {
                 .draw()
                 .map_err(|e| e.to_string())?;
         }
-        root.present().map_err(|e| e.to_string())?;
+        // No `present` here: a plot may be one panel of several, and presenting an SVG
+        // backend closes its document (the later panels fell outside `</svg>`). The
+        // drawing's owner presents once, at the end (`Drawing::draw`).
         Ok(layout)
     }
 }

@@ -3,25 +3,30 @@
 
 use crate::figures::chart::{Legend, Plot, Series, Style};
 use crate::figures::{max_per_bin, Drawing, Figure};
-use crate::model::rolling::Rolling;
-use crate::model::{Extras, Model};
-use crate::scene::Scene;
-use crate::solve::{solve, Method, Problem, Settings};
 
-/// The figure.
-pub fn figure() -> Result<Figure, String> {
-    let scene = Scene::load("benchmark").map_err(|e| e.to_string())?;
-    let model = Rolling::<4>::new(scene.disk, Extras::default(), None);
-    let y0 = model.state(&scene.start);
-    let e0 = model.energy(&y0);
-    let runs: [(Method, f64, f64); 6] = [
-        (Method::Rk4, 0.0, 1e-2),
-        (Method::Rk4, 0.0, 1e-3),
-        (Method::Dopri5, 1e-6, 0.0),
-        (Method::Dopri5, 1e-9, 0.0),
-        (Method::Dop853, 1e-8, 0.0),
-        (Method::Dop853, 1e-12, 0.0),
-    ];
+/// One integration of the benchmark scene and its energy drift.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DriftRun {
+    /// Method and tolerance or step, for the legend.
+    pub label: String,
+    /// How its curve is drawn (fixed-step and DOP853 solid, DOPRI5 dashed).
+    pub style: Style,
+    /// $(t, |E(t) - E_0|/E_0)$ at every step.
+    pub drift: Vec<(f64, f64)>,
+    /// Right-hand-side evaluations the run took.
+    pub evaluations: u64,
+}
+
+/// The energy-drift study: one run per method and tolerance (computed by
+/// `report::studies::energy`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct EnergyDrift {
+    /// The runs, in the legend's order.
+    pub runs: Vec<DriftRun>,
+}
+
+/// The figure, from the study's runs (no integration here).
+pub fn figure(study: &EnergyDrift) -> Result<Figure, String> {
     let mut plot = Plot::new(
         "Energy drift on the benchmark scene",
         "time t (s)",
@@ -31,39 +36,15 @@ pub fn figure() -> Result<Figure, String> {
     .legend_at(Legend::UpperRight);
     let mut lowest = f64::INFINITY;
     let mut summary = Vec::new();
-    for (method, rtol, step) in runs {
-        let settings = Settings {
-            method,
-            rtol: if rtol > 0.0 { rtol } else { 1e-10 },
-            atol: if rtol > 0.0 { rtol * 1e-2 } else { 1e-12 },
-            step: if step > 0.0 { step } else { 1e-3 },
-            ..Settings::default()
-        };
-        let sol = solve(Problem::new(&model, 0.0, y0, scene.stop.time), &settings)
-            .map_err(|e| e.to_string())?;
-        let drift: Vec<(f64, f64)> = sol
-            .t
-            .iter()
-            .zip(&sol.y)
-            .map(|(t, y)| (*t, ((model.energy(y) - e0) / e0).abs()))
-            .collect();
-        let last = drift.last().map_or(0.0, |p| p.1);
-        let label = match method {
-            Method::Rk4 => format!("rk4, step {} ms", step * 1e3),
-            _ => format!("{method}, rtol {rtol:.0e}"),
-        };
+    for run in &study.runs {
+        let last = run.drift.last().map_or(0.0, |p| p.1);
         summary.push(format!(
-            "{label}: {last:.1e} at 10 s, {} evaluations",
-            sol.stats.total_evaluations()
+            "{}: {last:.1e} at 10 s, {} evaluations",
+            run.label, run.evaluations
         ));
-        let style = match method {
-            Method::Rk4 => Style::Line,
-            Method::Dopri5 => Style::Dashed,
-            Method::Dop853 => Style::Line,
-        };
-        let shown = max_per_bin(&drift, 300);
+        let shown = max_per_bin(&run.drift, 300);
         lowest = shown.iter().map(|p| p.1).fold(lowest, f64::min);
-        plot = plot.with(Series::new(label, shown, style));
+        plot = plot.with(Series::new(run.label.clone(), shown, run.style));
     }
     // Room above the curves for the legend.
     let plot = plot.y_range(lowest.max(1e-18) / 2.0, 1e-5);

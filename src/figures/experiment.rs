@@ -5,25 +5,17 @@
 //! noise, 8 bits), then analysed as the paper did (peak times, $\Omega_i$, $d\Omega_i/dt$) and
 //! fitted (eqs 84 and 85).
 
-use crate::experiment::{analyze, simulate_trace, Analysis, AnalysisSettings, LightModel, Trace};
+use crate::experiment::{Analysis, Trace};
 use crate::figures::chart::{Axis, Legend, Plot, Series, Style};
 use crate::figures::{min_max_decimate, Drawing, Figure};
-use crate::scene::Scene;
 
 /// The synthetic trace and its analysis.
+#[derive(Debug, Clone)]
 pub struct Experiment {
     /// The scope trace.
     pub trace: Trace,
     /// Its analysis.
     pub analysis: Analysis,
-}
-
-/// Simulates and analyses the built-in spin-down.
-pub fn run() -> Result<Experiment, String> {
-    let scene = Scene::load("spin-down").map_err(|e| e.to_string())?;
-    let trace = simulate_trace(&scene, &LightModel::default()).map_err(|e| e.to_string())?;
-    let analysis = analyze(&trace, &AnalysisSettings::default()).map_err(|e| e.to_string())?;
-    Ok(Experiment { trace, analysis })
 }
 
 const SYNTHETIC: &str = "Synthetic data (the paper's are not published): the built-in spin-down \
@@ -32,17 +24,17 @@ const SYNTHETIC: &str = "Synthetic data (the paper's are not published): the bui
     velocity), seen by a phototransistor through the default light model and recorded at 5 kS/s \
     for 10 s with 5 mV noise and 8-bit quantisation.";
 
-/// The seven figures of section 11.
-pub fn figures() -> Result<Vec<Figure>, String> {
-    let e = run()?;
+/// The seven figures of section 11, from the experiment the report's pipeline simulated and
+/// analysed once (no integration here).
+pub fn figures(e: &Experiment) -> Result<Vec<Figure>, String> {
     Ok(vec![
-        tek04(&e),
-        tek_zoom(&e, "tek01", 0.25)?,
-        tek_zoom(&e, "tek02", 0.06)?,
-        omega(&e)?,
-        inverse_omega(&e, "tek726", 0.0)?,
-        inverse_omega(&e, "tek728", 0.02)?,
-        odot(&e)?,
+        tek04(e),
+        tek_zoom(e, "tek01", 0.25)?,
+        tek_zoom(e, "tek02", 0.06)?,
+        omega(e)?,
+        inverse_omega(e, "tek726", 0.0)?,
+        inverse_omega(e, "tek728", 0.02)?,
+        odot(e)?,
     ])
 }
 

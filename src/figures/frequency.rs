@@ -2,16 +2,9 @@
 //! tilt: $\varpi/\Omega_0$ measured on integrations of the rolling model (b = 0 and b = a/2) and
 //! of the frictionless model (b = 0), with the curves of eqs 54, 55 and 71.
 
-use crate::disk::Disk;
 use crate::figures::chart::{Legend, Plot, Series, Style};
 use crate::figures::stability::eq54;
 use crate::figures::{Drawing, Figure};
-use crate::model::frictionless::Frictionless;
-use crate::model::rolling::Rolling;
-use crate::model::steady::steady_motion;
-use crate::model::{Extras, Model, Motion};
-use crate::numerics::oscillation::angular_frequency;
-use crate::solve::{solve, Dynamics, Problem, Settings};
 use std::f64::consts::FRAC_PI_2;
 
 /// Eq 55: $\varpi/\Omega_0 = \sqrt{(3k\cos^2\alpha_0 + \sin^2\alpha_0)/(k+1)}$ (b = 0, rolling).
@@ -26,79 +19,45 @@ pub fn eq71(k: f64, alpha0: f64) -> f64 {
     (3.0 * k / (k + c * c)).sqrt() * c
 }
 
-/// The relative size of the nudge to alpha that starts the oscillation.
-const NUDGE: f64 = 1e-6;
-
-/// $\varpi/\Omega_0$ measured on an integration of `model` from `start` with alpha nudged by
-/// `NUDGE` alpha0, over 8 periods of the `predicted` ratio sampled 100 times per period.
-fn measure<M: Model<N> + Dynamics<N>, const N: usize>(
-    model: &M,
-    start: &Motion,
-    predicted: f64,
-) -> Result<Option<f64>, String> {
-    let omega0 = start.precession.abs();
-    let period = std::f64::consts::TAU / (predicted * omega0);
-    let mut m = *start;
-    m.alpha += NUDGE * start.alpha;
-    let y0 = model.state(&m);
-    let settings = Settings {
-        rtol: 1e-11,
-        atol: 1e-13,
-        ..Settings::default()
-    };
-    let sol = solve(
-        Problem::new(model, 0.0, y0, 8.0 * period).sampled(period / 100.0),
-        &settings,
-    )
-    .map_err(|e| e.to_string())?;
-    if !sol.ending.is_complete() {
-        return Ok(None);
-    }
-    let alpha: Vec<f64> = sol.y.iter().map(|y| model.motion(y).alpha).collect();
-    Ok(angular_frequency(&sol.t, &alpha).map(|w| w / omega0))
+/// The measured frequencies (computed by `report::studies::frequency`): $(\alpha_0$ in
+/// degrees$, \varpi/\Omega_0)$ for each family, for a disk of ratio `k`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Measured {
+    /// $k = I_1/ma^2$ of the disk.
+    pub k: f64,
+    /// Rolling model, b = 0 (compare eq 55).
+    pub rolled0: Vec<(f64, f64)>,
+    /// Rolling model, b = a/2 (compare eq 54).
+    pub rolled_half: Vec<(f64, f64)>,
+    /// Frictionless model, b = 0 (compare eq 71).
+    pub slid0: Vec<(f64, f64)>,
 }
 
-/// The figure, for the uniform disk of the toy (a = 37.5 mm, k = 1/4).
-pub fn figure() -> Result<Figure, String> {
-    let disk = Disk::uniform(0.0375);
-    let k = disk.k;
-    let rolling = Rolling::<4>::new(disk, Extras::default(), None);
-    let frictionless = Frictionless::<3>::new(disk, 0.0, Extras::default());
-    let mut rolled0 = Vec::new();
-    let mut rolled_half = Vec::new();
-    let mut slid0 = Vec::new();
-    // The largest relative difference from its curve, and where, per family.
-    let mut worst = [(0.0_f64, 0.0_f64); 3];
-    let note = |w: &mut (f64, f64), measured: f64, predicted: f64, deg: f64| {
-        let d = (measured / predicted - 1.0).abs();
-        if d > w.0 {
-            *w = (d, deg);
-        }
-    };
-    for i in 1..=17 {
-        let deg = 5.0 * i as f64;
-        let a = deg.to_radians();
-        let m0 = steady_motion(&disk, a, 0.0).map_err(|e| e.to_string())?;
-        let p = eq55(k, a);
-        if let Some(r) = measure(&rolling, &m0, p)? {
-            note(&mut worst[0], r, p, deg);
-            rolled0.push((deg, r));
-        }
-        let p = eq71(k, a);
-        if let Some(r) = measure(&frictionless, &m0, p)? {
-            note(&mut worst[2], r, p, deg);
-            slid0.push((deg, r));
-        }
-        let w2 = eq54(k, a, 0.5);
-        if w2 > 0.0 {
-            let p = (w2 / (k + 1.0)).sqrt();
-            let mh = steady_motion(&disk, a, 0.5 * disk.a).map_err(|e| e.to_string())?;
-            if let Some(r) = measure(&rolling, &mh, p)? {
-                note(&mut worst[1], r, p, deg);
-                rolled_half.push((deg, r));
-            }
-        }
-    }
+/// Eq 54 at b = a/2 as a ratio: $\varpi/\Omega_0 = \sqrt{\varpi^2/(k+1)}$ where it is real.
+pub fn eq54_half(k: f64, alpha0: f64) -> Option<f64> {
+    let w2 = eq54(k, alpha0, 0.5);
+    (w2 > 0.0).then(|| (w2 / (k + 1.0)).sqrt())
+}
+
+/// The largest relative difference of measured points from their curve, and its tilt (deg).
+fn worst(points: &[(f64, f64)], curve: &dyn Fn(f64) -> Option<f64>) -> (f64, f64) {
+    points
+        .iter()
+        .fold((0.0, 0.0), |w, &(deg, r)| match curve(deg.to_radians()) {
+            Some(p) if (r / p - 1.0).abs() > w.0 => ((r / p - 1.0).abs(), deg),
+            _ => w,
+        })
+}
+
+/// The figure, from the measured frequencies (no integration here).
+pub fn figure(m: &Measured) -> Result<Figure, String> {
+    let k = m.k;
+    let worst = [
+        worst(&m.rolled0, &|a| Some(eq55(k, a))),
+        worst(&m.rolled_half, &|a| eq54_half(k, a)),
+        worst(&m.slid0, &|a| Some(eq71(k, a))),
+    ];
+    let (rolled0, rolled_half, slid0) = (m.rolled0.clone(), m.rolled_half.clone(), m.slid0.clone());
     // Where b = a/2 turns unstable: eq 54 at b = a/2 changes sign (bisection).
     let (mut lo, mut hi) = (crate::figures::stability::onset(k).0, FRAC_PI_2 - 1e-9);
     for _ in 0..100 {
@@ -119,10 +78,7 @@ pub fn figure() -> Result<Figure, String> {
             .collect()
     };
     let c55 = curve(&|a| Some(eq55(k, a)));
-    let c54 = curve(&|a| {
-        let w2 = eq54(k, a, 0.5);
-        (w2 > 0.0).then(|| (w2 / (k + 1.0)).sqrt())
-    });
+    let c54 = curve(&|a| eq54_half(k, a));
     let c71 = curve(&|a| Some(eq71(k, a)));
     let (blue, vermilion, green) = ([0, 114, 178], [213, 94, 0], [0, 158, 115]);
     let limit = (3.0 * k / (k + 1.0)).sqrt();

@@ -3,54 +3,23 @@
 
 use crate::figures::chart::{Legend, Plot, Series, Style};
 use crate::figures::{max_per_bin, Drawing, Figure, Panels};
-use crate::model::lab_frame::{Contact, LabFrame};
-use crate::model::rolling::Rolling;
-use crate::model::{Extras, Model, Motion};
-use crate::scene::Scene;
-use crate::solve::{solve, Method, Problem, Settings, Solution};
+use crate::model::Motion;
 
-/// Sample times and the paper's variables from the reduced and the lab-frame model.
-type Compared = (Vec<f64>, Vec<Motion>, Vec<Motion>);
+/// The two panels' scenes, with how often (s) the two models are compared on each.
+pub const SCENES: [(&str, f64); 2] = [("nutating-coin", 0.002), ("wheel-straight", 0.01)];
 
-/// Both models integrated from the scene's start, sampled every `every` seconds.
-fn both(scene: &Scene, every: f64) -> Result<Compared, String> {
-    let settings = Settings {
-        method: Method::Dop853,
-        rtol: 1e-12,
-        atol: 1e-14,
-        ..Settings::default()
-    };
-    let reduced = Rolling::<4>::new(scene.disk, Extras::default(), None);
-    let lab = LabFrame::new(scene.disk, Contact::Rolling);
-    let t_end = scene.stop.time;
-    let a: Solution<4> = solve(
-        Problem::new(&reduced, 0.0, reduced.state(&scene.start), t_end).sampled(every),
-        &settings,
-    )
-    .map_err(|e| e.to_string())?;
-    let b: Solution<13> = solve(
-        Problem::new(
-            &lab,
-            0.0,
-            lab.state_from(&scene.start, 0.0, [0.0, 0.0], 0.0),
-            t_end,
-        )
-        .sampled(every),
-        &settings,
-    )
-    .map_err(|e| e.to_string())?;
-    if !(a.ending.is_complete() && b.ending.is_complete()) {
-        return Err(format!(
-            "{}: the integrations did not finish (reduced: {}; lab frame: {})",
-            scene.name, a.ending, b.ending
-        ));
-    }
-    let n = a.t.len().min(b.t.len());
-    Ok((
-        a.t[..n].to_vec(),
-        a.y[..n].iter().map(|y| reduced.motion(y)).collect(),
-        b.y[..n].iter().map(|y| lab.motion(y)).collect(),
-    ))
+/// One scene integrated by the reduced (eqs 23-25) and by the lab-frame model, sampled at the
+/// same times (computed by `report::studies::lab_frame`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Compared {
+    /// The scene's name.
+    pub scene: String,
+    /// Sample times (s).
+    pub t: Vec<f64>,
+    /// The paper's variables from the reduced model.
+    pub reduced: Vec<Motion>,
+    /// The same from the lab-frame model.
+    pub lab: Vec<Motion>,
 }
 
 /// One panel and the largest differences (alpha, Omega, omega1).
@@ -58,12 +27,11 @@ fn both(scene: &Scene, every: f64) -> Result<Compared, String> {
 /// logarithm.
 const FLOOR: f64 = 1e-17;
 
-fn panel(name: &str, title: &str, every: f64, legend: Legend) -> Result<(Plot, [f64; 4]), String> {
-    let scene = Scene::load(name).map_err(|e| e.to_string())?;
-    let (t, a, b) = both(&scene, every)?;
+fn panel(c: &Compared, title: &str, legend: Legend) -> (Plot, [f64; 4]) {
+    let (t, a, b) = (&c.t, &c.reduced, &c.lab);
     let diff = |f: &dyn Fn(&Motion) -> f64| -> Vec<(f64, f64)> {
         t.iter()
-            .zip(a.iter().zip(&b))
+            .zip(a.iter().zip(b))
             .map(|(t, (x, y))| (*t, (f(x) - f(y)).abs()))
             .collect()
     };
@@ -91,18 +59,23 @@ fn panel(name: &str, title: &str, every: f64, legend: Legend) -> Result<(Plot, [
         .with(Series::new("Ω (rad/s)", env(&dp), Style::Line))
         .with(Series::new("ω₁ (rad/s)", env(&ds), Style::Dotted))
         .legend_at(legend);
-    Ok((plot, worst))
+    (plot, worst)
 }
 
-/// The figure: the nutating coin and the wheel rolling straight, side by side.
-pub fn figure() -> Result<Figure, String> {
-    let (coin, wc) = panel("nutating-coin", "nutating coin", 0.002, Legend::Hidden)?;
-    let (wheel, ww) = panel(
-        "wheel-straight",
-        "wheel rolling straight",
-        0.01,
-        Legend::UpperRight,
-    )?;
+/// The figure: the nutating coin and the wheel rolling straight, side by side, from the runs
+/// of [`SCENES`] in that order (no integration here).
+pub fn figure(runs: &[Compared]) -> Result<Figure, String> {
+    let [c, w] = runs else {
+        return Err("the lab-frame figure needs two compared runs".into());
+    };
+    if c.scene != SCENES[0].0 || w.scene != SCENES[1].0 {
+        return Err(format!(
+            "the lab-frame figure needs the runs of {} and {}, in that order",
+            SCENES[0].0, SCENES[1].0
+        ));
+    }
+    let (coin, wc) = panel(c, "nutating coin", Legend::Hidden);
+    let (wheel, ww) = panel(w, "wheel rolling straight", Legend::UpperRight);
     Ok(Figure {
         name: "lab-frame-difference",
         title: "The paper's equations of motion against a lab-frame model".into(),

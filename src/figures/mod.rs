@@ -1,5 +1,8 @@
-//! Figures: the paper's (regenerated from the models) and new ones, each a function that returns
-//! a [`Figure`] as data. The report renders them as inline SVG (HTML) or PNG (LaTeX).
+//! Figures: the paper's (regenerated from the models) and new ones, each a PURE function of the
+//! studies' results ([`Results`], computed once by [`crate::report::pipeline`]) that returns a
+//! [`Figure`] as data. No figure integrates anything: tests/architecture.rs forbids this module
+//! to reach the solver, the scene runner, the simulations or the checks. The report renders the
+//! figures as inline SVG (HTML) or PNG (LaTeX).
 //!
 //! | name | what | file |
 //! |---|---|---|
@@ -14,6 +17,7 @@
 //! | `path` | the centre of mass in the plane | `path.rs` |
 //! | `spin-down-alpha` | $\alpha$ against $t_0 - t$, eq 78 with 2/5 and with 2/3 | `spin_down.rs` |
 //! | `lab-frame-difference` | eqs 23-25 against the lab-frame model | `lab_frame.rs` |
+//! | `work-precision` | error against work of each method (the speed/accuracy study) | `precision.rs` |
 //!
 //! Everything is deterministic: the same build gives the same bytes.
 
@@ -25,6 +29,7 @@ pub mod geometry;
 pub mod lab_frame;
 pub mod legend;
 pub mod path;
+pub mod precision;
 pub mod spin_down;
 pub mod stability;
 pub mod ticks;
@@ -33,6 +38,7 @@ pub use chart::{Axis, Chart, Legend, Mark, Note, Options, Plot, Series, Style};
 pub use geometry::Geometry;
 pub use legend::Layout;
 
+use crate::report::pipeline::{Results, Study};
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use serde::Serialize;
@@ -83,8 +89,14 @@ impl Drawing {
         scale: f64,
     ) -> Result<(), String> {
         match self {
-            Drawing::Chart(c) => c.draw(root, scale),
-            Drawing::Plot(p) => p.draw(root, scale),
+            Drawing::Chart(c) => {
+                c.draw(root, scale)?;
+                root.present().map_err(|e| e.to_string())
+            }
+            Drawing::Plot(p) => {
+                p.draw(root, scale)?;
+                root.present().map_err(|e| e.to_string())
+            }
             Drawing::Geometry(g) => g.draw(root, scale),
             Drawing::Premises(g) => g.draw(root, scale),
             Drawing::Panels(p) => {
@@ -156,7 +168,7 @@ impl Drawing {
 }
 
 /// Every figure's name, in the report's order.
-pub const NAMES: [&str; 14] = [
+pub const NAMES: [&str; 15] = [
     "fig1",
     "tek04",
     "tek01",
@@ -171,6 +183,7 @@ pub const NAMES: [&str; 14] = [
     "path",
     "spin-down-alpha",
     "lab-frame-difference",
+    "work-precision",
 ];
 
 /// Every figure's name, in the report's order.
@@ -178,7 +191,7 @@ pub fn names() -> &'static [&'static str] {
     &NAMES
 }
 
-/// Families of figures built together (the experiment's seven share one simulation).
+/// Families of figures built together (the experiment's seven share one analysis).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Family {
     Geometry,
@@ -189,6 +202,7 @@ enum Family {
     Path,
     SpinDown,
     LabFrame,
+    Precision,
 }
 
 fn family(name: &str) -> Option<Family> {
@@ -201,20 +215,66 @@ fn family(name: &str) -> Option<Family> {
         "path" => Family::Path,
         "spin-down-alpha" => Family::SpinDown,
         "lab-frame-difference" => Family::LabFrame,
+        "work-precision" => Family::Precision,
         _ => return None,
     })
 }
 
-fn build_family(f: Family) -> Result<Vec<Figure>, String> {
+fn unknown(name: &str) -> String {
+    format!(
+        "no figure named {name:?}; the figures are: {}",
+        NAMES.join(", ")
+    )
+}
+
+/// The studies a figure is drawn from (none for the geometry and the stability map, which are
+/// algebra); an unknown name is an error that lists the figures.
+pub fn needs(name: &str) -> Result<&'static [Study], String> {
+    Ok(match family(name).ok_or_else(|| unknown(name))? {
+        Family::Geometry | Family::Stability => &[],
+        Family::Experiment => &[Study::Experiment],
+        Family::Frequency => &[Study::Frequency],
+        Family::Energy => &[Study::EnergyDrift],
+        Family::Path => &[Study::Paths, Study::SpinDown],
+        Family::SpinDown => &[Study::SpinDown],
+        Family::LabFrame => &[Study::LabFrame],
+        Family::Precision => &[Study::Precision],
+    })
+}
+
+fn need<T>(x: &Option<T>, study: Study) -> Result<&T, String> {
+    x.as_ref()
+        .ok_or_else(|| format!("the figures need the {study} study, which was not computed"))
+}
+
+fn build_family(f: Family, r: &Results) -> Result<Vec<Figure>, String> {
     match f {
         Family::Geometry => Ok(vec![geometry_figure()?]),
-        Family::Experiment => experiment::figures(),
+        Family::Experiment => experiment::figures(need(&r.experiment, Study::Experiment)?),
         Family::Stability => Ok(vec![stability::figure()?]),
-        Family::Frequency => Ok(vec![frequency::figure()?]),
-        Family::Energy => Ok(vec![energy::figure()?]),
-        Family::Path => Ok(vec![path::figure()?]),
-        Family::SpinDown => Ok(vec![spin_down::figure()?]),
-        Family::LabFrame => Ok(vec![lab_frame::figure()?]),
+        Family::Frequency => Ok(vec![frequency::figure(need(
+            &r.frequency,
+            Study::Frequency,
+        )?)?]),
+        Family::Energy => Ok(vec![energy::figure(need(&r.energy, Study::EnergyDrift)?)?]),
+        Family::Path => {
+            let mut runs = need(&r.paths, Study::Paths)?.clone();
+            let sd = need(&r.spin_down, Study::SpinDown)?;
+            runs.push(path::PathRun::from_run(&sd.run)?);
+            Ok(vec![path::figure(&runs)?])
+        }
+        Family::SpinDown => Ok(vec![spin_down::figure(need(
+            &r.spin_down,
+            Study::SpinDown,
+        )?)?]),
+        Family::LabFrame => Ok(vec![lab_frame::figure(need(
+            &r.lab_frame,
+            Study::LabFrame,
+        )?)?]),
+        Family::Precision => Ok(vec![precision::figure(need(
+            &r.precision,
+            Study::Precision,
+        )?)]),
     }
 }
 
@@ -253,34 +313,22 @@ pub fn geometry_figure() -> Result<Figure, String> {
     })
 }
 
-/// The figures named (each once, in the order given); an unknown name is an error that lists
-/// the known ones. Families run on parallel threads; the result does not depend on that.
-pub fn some(names: &[&str]) -> Result<Vec<Figure>, String> {
+/// The figures named (each once, in the order given), drawn from `results`; an unknown name is
+/// an error that lists the known ones, and so is a figure whose study was not computed.
+/// Families are built on rayon's threads; the result does not depend on that.
+pub fn some(names: &[&str], results: &Results) -> Result<Vec<Figure>, String> {
+    use rayon::prelude::*;
     let mut families: Vec<Family> = Vec::new();
     for n in names {
-        let f = family(n).ok_or_else(|| {
-            format!(
-                "no figure named {n:?}; the figures are: {}",
-                NAMES.join(", ")
-            )
-        })?;
+        let f = family(n).ok_or_else(|| unknown(n))?;
         if !families.contains(&f) {
             families.push(f);
         }
     }
-    let built: Vec<Result<Vec<Figure>, String>> = std::thread::scope(|s| {
-        let handles: Vec<_> = families
-            .iter()
-            .map(|&f| s.spawn(move || build_family(f)))
-            .collect();
-        handles
-            .into_iter()
-            .map(|h| {
-                h.join()
-                    .unwrap_or_else(|_| Err("a figure's thread panicked".into()))
-            })
-            .collect()
-    });
+    let built: Vec<Result<Vec<Figure>, String>> = families
+        .par_iter()
+        .map(|&f| build_family(f, results))
+        .collect();
     let mut pool = Vec::new();
     for b in built {
         pool.extend(b?);
@@ -297,15 +345,9 @@ pub fn some(names: &[&str]) -> Result<Vec<Figure>, String> {
     Ok(out)
 }
 
-/// Every figure, in the report's order.
-pub fn all() -> Result<Vec<Figure>, String> {
-    some(&NAMES)
-}
-
-/// One figure by name; `None` when there is no such figure.
-pub fn by_name(name: &str) -> Option<Result<Figure, String>> {
-    family(name)?;
-    Some(some(&[name]).and_then(|mut v| v.pop().ok_or_else(|| format!("{name} was not built"))))
+/// Every figure, in the report's order, drawn from `results`.
+pub fn all(results: &Results) -> Result<Vec<Figure>, String> {
+    some(&NAMES, results)
 }
 
 /// Keeps at most about `bins` points of a long series for drawing, honestly: the samples are
@@ -401,11 +443,17 @@ mod tests {
 
     #[test]
     fn unknown_names_are_errors_that_list_the_figures() {
-        let e = some(&["nope"]).unwrap_err();
-        assert!(
-            e.contains("fig1") && e.contains("lab-frame-difference"),
-            "{e}"
-        );
-        assert!(by_name("nope").is_none());
+        let e = some(&["nope"], &Results::default()).unwrap_err();
+        assert!(e.contains("fig1") && e.contains("work-precision"), "{e}");
+        assert!(needs("nope").is_err());
+    }
+
+    #[test]
+    fn a_figure_without_its_study_is_an_error_not_a_computation() {
+        let e = some(&["spin-down-alpha"], &Results::default()).unwrap_err();
+        assert!(e.contains("spin-down"), "{e}");
+        // The algebraic figures need no study.
+        let f = some(&["fig1", "stability-map"], &Results::default()).unwrap();
+        assert_eq!(f.len(), 2);
     }
 }

@@ -5,27 +5,46 @@
 
 use crate::figures::chart::{Legend, Plot, Series, Style};
 use crate::figures::{Drawing, Figure, Panels};
-use crate::model::Quantity;
-use crate::run::run;
-use crate::scene::Scene;
+use crate::run::Run;
 
-/// A scene's path: the times, (x, y) of the centre of mass (m), and how the run ended.
-#[allow(clippy::type_complexity)]
-fn path_of(name: &str) -> Result<(Scene, Vec<f64>, Vec<(f64, f64)>, String), String> {
-    let mut scene = Scene::load(name).map_err(|e| e.to_string())?;
-    if !scene.record.contains(&Quantity::Path) {
-        scene.record.push(Quantity::Path);
+/// The scenes of the figure's panels, left to right, with a short description of each. The
+/// run of each (recording the path) is computed by the report's pipeline.
+pub const SCENES: [(&str, &str); 3] = [
+    ("rolling-circle", "rolling in a circle"),
+    ("nutating-coin", "nutating coin"),
+    ("spin-down", "spin-down (eq 75)"),
+];
+
+/// A scene's path: the times and (x, y) of the centre of mass (m), and how the run ended.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PathRun {
+    /// The scene's name.
+    pub scene: String,
+    /// Sample times (s).
+    pub t: Vec<f64>,
+    /// The centre of mass in the plane (m).
+    pub xy: Vec<(f64, f64)>,
+    /// How the run ended, in words.
+    pub ending: String,
+}
+
+impl PathRun {
+    /// The path read from a run that recorded it (columns `x_m`, `y_m`).
+    pub fn from_run(r: &Run) -> Result<PathRun, String> {
+        let missing = |c: &str| format!("the run of {} did not record {c}", r.scene);
+        let x = r.column("x_m").ok_or_else(|| missing("x_m"))?;
+        let y = r.column("y_m").ok_or_else(|| missing("y_m"))?;
+        let t = r.column("t_s").ok_or_else(|| missing("t_s"))?;
+        if t.is_empty() {
+            return Err(format!("the run of {} recorded no samples", r.scene));
+        }
+        Ok(PathRun {
+            scene: r.scene.clone(),
+            t,
+            xy: x.into_iter().zip(y).collect(),
+            ending: r.ending.to_string(),
+        })
     }
-    let r = run(&scene, None).map_err(|e| e.to_string())?;
-    let x = r.column("x_m").ok_or("no x column")?;
-    let y = r.column("y_m").ok_or("no y column")?;
-    let t = r.column("t_s").ok_or("no time column")?;
-    Ok((
-        scene,
-        t,
-        x.into_iter().zip(y).collect(),
-        r.ending.to_string(),
-    ))
 }
 
 /// A unit for lengths of size `extent` (m): its name and the factor from metres.
@@ -68,17 +87,25 @@ fn one_loop(pts: &[(f64, f64)], start: usize) -> &[(f64, f64)] {
     &pts[start..]
 }
 
-/// The figure: three panels side by side.
-pub fn figure() -> Result<Figure, String> {
+/// The figure: three panels side by side, one per run of [`SCENES`] in that order (no
+/// integration here).
+pub fn figure(runs: &[PathRun]) -> Result<Figure, String> {
+    if runs.len() != SCENES.len()
+        || runs
+            .iter()
+            .zip(SCENES)
+            .any(|(r, (name, _))| r.scene != name)
+    {
+        return Err(format!(
+            "the path figure needs the runs of {:?}, in that order",
+            SCENES.map(|s| s.0)
+        ));
+    }
     let mut plots = Vec::new();
     let mut notes = Vec::new();
     let mut loops = String::new();
-    for (name, what) in [
-        ("rolling-circle", "rolling in a circle"),
-        ("nutating-coin", "nutating coin"),
-        ("spin-down", "spin-down (eq 75)"),
-    ] {
-        let (_, t, pts, ending) = path_of(name)?;
+    for (run, (name, what)) in runs.iter().zip(SCENES) {
+        let (t, pts, ending) = (&run.t, &run.xy, &run.ending);
         let (sx, sy) = pts[0];
         let rel: Vec<(f64, f64)> = pts.iter().map(|(x, y)| (x - sx, y - sy)).collect();
         let dist: Vec<f64> = rel.iter().map(|p| p.0.hypot(p.1)).collect();

@@ -11,10 +11,24 @@
 
 use crate::figures::chart::{Legend, Plot, Series, Style};
 use crate::figures::{log_thin, Drawing, Figure};
-use crate::model::Quantity;
-use crate::run::run;
-use crate::scene::Scene;
-use crate::solve::Ending;
+use crate::run::Run;
+
+/// The one run of the built-in spin-down scene (recording $\alpha$, $\dot\alpha$ and the path)
+/// and the constants of its law: computed once by the report's pipeline and read by this figure
+/// and by the path figure's third panel.
+#[derive(Debug, Clone)]
+pub struct SpinDown {
+    /// The run.
+    pub run: Run,
+    /// When it stopped (the event's time, s).
+    pub t_stop: f64,
+    /// The dissipation law's exponent $\beta$ (eq 75).
+    pub beta: f64,
+    /// Its constant $\epsilon$ (eq 75).
+    pub epsilon: f64,
+    /// $g/(a k)$ of the disk (1/s^2).
+    pub g_ak: f64,
+}
 
 /// Eq 78 with factor `c` in $\dot\alpha = -c\epsilon\Omega^\beta$: $\alpha$ at $t_0 - t = \tau$.
 pub fn law(c: f64, epsilon: f64, beta: f64, g_ak: f64, tau: f64) -> f64 {
@@ -22,29 +36,20 @@ pub fn law(c: f64, epsilon: f64, beta: f64, g_ak: f64, tau: f64) -> f64 {
     (c * epsilon * (beta + 2.0) / 2.0).powf(p) * g_ak.powf(beta / (beta + 2.0)) * tau.powf(p)
 }
 
-/// The figure.
-pub fn figure() -> Result<Figure, String> {
-    let mut scene = Scene::load("spin-down").map_err(|e| e.to_string())?;
-    for q in [Quantity::Alpha, Quantity::AlphaDot] {
-        if !scene.record.contains(&q) {
-            scene.record.push(q);
-        }
-    }
-    let law_of = scene
-        .dissipation
-        .ok_or("the spin-down scene has no dissipation")?;
-    let r = run(&scene, None).map_err(|e| e.to_string())?;
-    let t_stop = match &r.ending {
-        Ending::Event { t, .. } => *t,
-        other => return Err(format!("the spin-down did not end: {other}")),
-    };
+/// The figure, from the spin-down's run (no integration here).
+pub fn figure(sd: &SpinDown) -> Result<Figure, String> {
+    let r = &sd.run;
+    let t_stop = sd.t_stop;
     let t = r.column("t_s").ok_or("no time column")?;
     let alpha = r.column("alpha_rad").ok_or("no alpha column")?;
     let alpha_dot = r
         .column("alpha_dot_rad_per_s")
         .ok_or("no alpha_dot column")?;
+    if alpha.is_empty() {
+        return Err("the spin-down run recorded no samples".into());
+    }
     let n = alpha.len();
-    let beta = law_of.beta;
+    let beta = sd.beta;
     // The time still missing to the singularity when the run stops, from the law's own
     // alpha ~ (t0 - t)^(2/(beta+2)) (as the experiment's truth defines t0).
     let tau_rem = 2.0 * alpha[n - 1] / ((beta + 2.0) * alpha_dot[n - 1].abs().max(1e-300));
@@ -55,9 +60,11 @@ pub fn figure() -> Result<Figure, String> {
         .map(|(t, a)| (t0 - t, *a))
         .filter(|(x, _)| *x > 0.0)
         .collect();
+    if pts.is_empty() {
+        return Err("the spin-down run has no sample before its singular time".into());
+    }
     let shown = log_thin(&pts, 300);
-    let d = scene.disk;
-    let g_ak = d.g / (d.a * d.k);
+    let g_ak = sd.g_ak;
     let (x0, x1) = pts.iter().fold((f64::INFINITY, 0.0_f64), |(lo, hi), p| {
         (lo.min(p.0), hi.max(p.0))
     });
@@ -65,18 +72,18 @@ pub fn figure() -> Result<Figure, String> {
         (0..=60)
             .map(|i| {
                 let x = x0 * (x1 / x0).powf(i as f64 / 60.0);
-                (x, law(c, law_of.epsilon, beta, g_ak, x))
+                (x, law(c, sd.epsilon, beta, g_ak, x))
             })
             .collect()
     };
     // How far each law is from the model, at the middle of the run in log time.
     let mid = pts[pts.len() / 2];
-    let ratio = |c: f64| mid.1 / law(c, law_of.epsilon, beta, g_ak, mid.0);
+    let ratio = |c: f64| mid.1 / law(c, sd.epsilon, beta, g_ak, mid.0);
     let (r25, r23) = (ratio(0.4), ratio(2.0 / 3.0));
     // Where the model leaves the 2/3 law by more than 5 % (scanning from the start).
     let depart = pts
         .iter()
-        .find(|p| (p.1 / law(2.0 / 3.0, law_of.epsilon, beta, g_ak, p.0) - 1.0).abs() > 0.05)
+        .find(|p| (p.1 / law(2.0 / 3.0, sd.epsilon, beta, g_ak, p.0) - 1.0).abs() > 0.05)
         .map_or((0.0, 0.0), |p| (p.0, p.1));
     let plot = Plot::new(
         "Tilt during the spin-down against the law of eq 78",
@@ -118,7 +125,7 @@ pub fn figure() -> Result<Figure, String> {
              the last {:.0} ms (alpha below about {:.4} rad) the model leaves both lines and falls \
              faster: the adiabatic premises (alpha_dot^2 and alpha_ddot negligible, Omega^2 = \
              g/(a k alpha)) fail as the end approaches.",
-            law_of.epsilon,
+            sd.epsilon,
             r.ending,
             2.0 / (beta + 2.0),
             mid.0,

@@ -1,21 +1,24 @@
-//! Building the report: run every check, render every equation's MathML, make the figures, run
-//! a quick speed/accuracy study and the synthetic experiment. Everything here is deterministic:
-//! seeded randomness, no clocks, no wall times.
+//! Building the report from the pipeline's results ([`super::pipeline`]): every equation's
+//! MathML, the findings, the figures (pure functions of the results), the speed/accuracy table
+//! and the experiment's analysis. Nothing here computes a study. Everything here is
+//! deterministic: seeded randomness, no clocks, no wall times.
 
 use super::json::{self, outcome_for, Document};
 use super::mathml::display_math;
+use super::pipeline::{compute, Results, RunConfig, Study};
 use super::{
     fmt_num, ClaimView, EquationView, FailureView, FigureView, FindingView, PrecisionRow, Report,
     RootCauseView, RunSettings, SceneView, SectionView, Summary,
 };
 use crate::catalogue;
-use crate::check::{run_checks, Checked, Selection, Subject, Tally};
+use crate::check::{Checked, Subject, Tally};
 use crate::equations::{Bench, UNCHECKABLE_CLAIMS, UNCHECKABLE_EQUATIONS};
 use crate::experiment;
-use crate::figures::{self, Chart, Drawing, Figure, Series, Style};
+use crate::figures::{self, Drawing, Figure};
 use crate::finding::{Finding, Verdict};
 use crate::precision;
 use crate::scene::{builtin::BUILTIN, Scene};
+use rayon::prelude::*;
 
 /// The subject of each section of the paper, in our words.
 const SECTIONS: [(u32, &str); 10] = [
@@ -202,82 +205,52 @@ fn equation_checked(checked: &[Checked], n: u32) -> Option<&Checked> {
         .find(|c| matches!(c.subject, Subject::Equation { number, .. } if number == n))
 }
 
-/// The work-precision figure of the speed/accuracy study, and its table.
-fn precision_part() -> Result<(Vec<PrecisionRow>, Vec<json::PrecisionRecord>, Figure), String> {
-    let scene = Scene::load("benchmark").map_err(|e| e.to_string())?;
-    let mut opts = precision::StudyOptions::quick();
-    opts.timing = precision::Timing::ONCE;
-    let study = precision::study(&scene, &opts).map_err(|e| e.to_string())?;
+/// The speed/accuracy study's table, for reading and for tools.
+fn precision_rows(study: &precision::Study) -> (Vec<PrecisionRow>, Vec<json::PrecisionRecord>) {
     let mut rows = Vec::new();
     let mut records = Vec::new();
-    let mut series = Vec::new();
-    for s in &study.series {
-        let mut pts = Vec::new();
-        for p in &s.points {
-            rows.push(PrecisionRow {
-                label: p.label.clone(),
-                evaluations: p.evaluations,
-                final_error: format!("{:.2e}", p.final_error),
-                trajectory_error: format!("{:.2e}", p.trajectory_error),
-            });
-            records.push(json::PrecisionRecord {
-                label: p.label.clone(),
-                evaluations: p.evaluations,
-                final_error: p.final_error,
-                trajectory_error: p.trajectory_error,
-            });
-            if p.ending.is_complete() && p.trajectory_error > 0.0 {
-                pts.push((p.evaluations as f64, p.trajectory_error));
-            }
-        }
-        series.push(Series::new(s.method.to_string(), pts, Style::Line));
+    for p in study.series.iter().flat_map(|s| &s.points) {
+        rows.push(PrecisionRow {
+            label: p.label.clone(),
+            evaluations: p.evaluations,
+            final_error: format!("{:.2e}", p.final_error),
+            trajectory_error: format!("{:.2e}", p.trajectory_error),
+        });
+        records.push(json::PrecisionRecord {
+            label: p.label.clone(),
+            evaluations: p.evaluations,
+            final_error: p.final_error,
+            trajectory_error: p.trajectory_error,
+        });
     }
-    let floor = study.reference.uncertainty;
-    let (x0, x1) = (3e2, 3e5);
-    series.push(Series::new(
-        format!("reference uncertainty {floor:.1e}"),
-        vec![(x0, floor), (x1, floor)],
-        Style::Dashed,
-    ));
-    let chart = Chart {
-        title: "Work against precision, benchmark scene (10 s)".into(),
-        x_label: "right-hand-side evaluations".into(),
-        y_label: "largest relative error over the run".into(),
-        x_log: true,
-        y_log: true,
-        series,
-    };
-    let figure = Figure {
-        name: "work-precision",
-        title: "Speed against accuracy".into(),
-        caption: format!(
-            "Error of each method against the reference ({}), versus the number of right-hand-side \
-             evaluations, on the benchmark scene. RK4 runs at fixed steps; DOPRI5 and DOP853 over \
-             tolerances from 1e-3 to 1e-13. Below the dashed line the reference cannot resolve the error.",
-            precision::reference::label(&study.reference.trace.settings)
-        ),
-        drawing: Drawing::Chart(chart),
-    };
-    Ok((rows, records, figure))
+    (rows, records)
 }
 
-fn experiment_part() -> Result<String, String> {
-    let scene = Scene::load("spin-down").map_err(|e| e.to_string())?;
-    let trace = experiment::simulate_trace(&scene, &experiment::LightModel::default())
-        .map_err(|e| e.to_string())?;
-    let analysis = experiment::analyze(&trace, &experiment::AnalysisSettings::default())
-        .map_err(|e| e.to_string())?;
-    Ok(analysis.to_string())
+fn missing(study: Study) -> String {
+    format!("the report needs the {study} study, which was not computed")
 }
 
-/// Builds the report at the bench's accuracy. `progress` receives short status lines.
+/// Computes every study once ([`compute`]) and builds the report from the results, at the
+/// bench's accuracy. `progress` receives short status lines.
 pub fn build(
     bench: &Bench,
     progress: &(dyn Fn(&str) + Sync),
 ) -> Result<(Report, Vec<Figure>), String> {
-    progress("checking the equations and claims");
-    let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
-    let checked = run_checks(bench, &Selection::default(), threads, &|_, _| {})?;
+    let results = compute(&RunConfig::report(*bench), progress)?;
+    from_results(bench, &results, progress)
+}
+
+/// Builds the report from results computed before (a full [`RunConfig::report`]); computes
+/// nothing.
+pub fn from_results(
+    bench: &Bench,
+    results: &Results,
+    progress: &(dyn Fn(&str) + Sync),
+) -> Result<(Report, Vec<Figure>), String> {
+    let checked: &[Checked] = results
+        .checks
+        .as_deref()
+        .ok_or_else(|| missing(Study::Checks))?;
 
     let cat = catalogue::equations();
     let mut sections: Vec<SectionView> = SECTIONS
@@ -371,16 +344,23 @@ pub fn build(
         .partition(|c| matches!(c.subject, Subject::Equation { .. }));
 
     progress("drawing the figures");
-    let mut figures = figures::all()?;
-    figures.push(premises_figure(bench, &checked));
-    progress("measuring speed against accuracy");
-    let (precision_rows, precision_records, wp) = precision_part()?;
-    figures.push(wp);
-    progress("simulating and analysing the experiment");
-    let experiment = experiment_part()?;
+    let mut figures = figures::all(results)?;
+    figures.push(premises_figure(bench, checked));
+    let (precision_rows, precision_records) = precision_rows(
+        results
+            .precision
+            .as_ref()
+            .ok_or_else(|| missing(Study::Precision))?,
+    );
+    let experiment = results
+        .experiment
+        .as_ref()
+        .ok_or_else(|| missing(Study::Experiment))?
+        .analysis
+        .to_string();
 
     let figure_views = figures
-        .iter()
+        .par_iter()
         .map(|f| {
             Ok(FigureView {
                 name: f.name.to_string(),
@@ -424,7 +404,7 @@ pub fn build(
             rtol: settings.rtol,
             command: settings.command.clone(),
         },
-        summary: json::SummaryCounts::of(&checked),
+        summary: json::SummaryCounts::of(checked),
         equations: cat
             .iter()
             .map(|e| json::EquationRecord {
@@ -434,16 +414,16 @@ pub fn build(
                 kind: e.kind.clone(),
                 premises: e.premises.clone(),
                 outcome: outcome_for(
-                    &checked,
+                    checked,
                     |s| matches!(s, Subject::Equation { number, .. } if *number == e.number),
                     UNCHECKABLE_EQUATIONS
                         .iter()
                         .find(|(n, _)| *n == e.number)
                         .map(|(_, why)| *why),
                 ),
-                derivation: equation_checked(&checked, e.number).and_then(json::derivation_outcome),
-                cause: equation_checked(&checked, e.number).and_then(|c| c.cause.clone()),
-                cause_text: equation_checked(&checked, e.number)
+                derivation: equation_checked(checked, e.number).and_then(json::derivation_outcome),
+                cause: equation_checked(checked, e.number).and_then(|c| c.cause.clone()),
+                cause_text: equation_checked(checked, e.number)
                     .and_then(|c| c.cause.as_ref().map(crate::cause::Cause::describe)),
             })
             .collect(),
@@ -456,7 +436,7 @@ pub fn build(
                 printed_value: c.claimed_value,
                 unit: c.unit.clone(),
                 outcome: outcome_for(
-                    &checked,
+                    checked,
                     |s| matches!(s, Subject::Claim { id } if *id == c.id),
                     UNCHECKABLE_CLAIMS
                         .iter()

@@ -5,7 +5,9 @@
 pub mod build;
 pub mod json;
 pub mod mathml;
+pub mod pipeline;
 pub mod render;
+pub mod studies;
 pub mod tex;
 
 use crate::check::Tally;

@@ -50,6 +50,14 @@ fn render(report: &Report, template: &str) -> Result<String, String> {
     let mut ctx = ctx;
     let svgs: Vec<&str> = report.figures.iter().map(|f| f.svg.as_str()).collect();
     ctx.insert("svgs", &svgs);
+    if template == "report.html" {
+        use base64::Engine;
+        let font: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
+        ctx.insert(
+            "figure_font",
+            &base64::engine::general_purpose::STANDARD.encode(font),
+        );
+    }
     t.render(template, &ctx).map_err(|e| {
         let mut msg = format!("cannot render {template}: {e}");
         let mut source = std::error::Error::source(&e);
@@ -100,14 +108,20 @@ pub fn write(
                 let fig_dir = dir.join("figures");
                 std::fs::create_dir_all(&fig_dir)
                     .map_err(|e| format!("cannot create {}: {e}", fig_dir.display()))?;
-                for fig in figures {
-                    let path = fig_dir.join(format!("{}.png", fig.name));
-                    let tmp = fig_dir.join(format!(".{}.{}.png", fig.name, std::process::id()));
-                    fig.drawing.to_png(&tmp)?;
-                    std::fs::rename(&tmp, &path)
-                        .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
-                    written.push(path);
-                }
+                // Each PNG is drawn on its own rayon thread; the files do not depend on that.
+                use rayon::prelude::*;
+                let pngs: Vec<PathBuf> = figures
+                    .par_iter()
+                    .map(|fig| {
+                        let path = fig_dir.join(format!("{}.png", fig.name));
+                        let tmp = fig_dir.join(format!(".{}.{}.png", fig.name, std::process::id()));
+                        fig.drawing.to_png(&tmp)?;
+                        std::fs::rename(&tmp, &path)
+                            .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+                        Ok(path)
+                    })
+                    .collect::<Result<_, String>>()?;
+                written.extend(pngs);
                 put("report.tex", latex(report)?, &mut written)?;
             }
         }

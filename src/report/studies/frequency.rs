@@ -1,0 +1,83 @@
+//! The frequency study: small oscillations about steady motion measured on integrations, for
+//! comparison with eq 54 ($b = a/2$), eq 55 ($b = 0$, rolling) and eq 71 ($b = 0$, no friction).
+//! Each measurement starts from the steady motion of eqs 28-29 with $\alpha$ raised by
+//! [`NUDGE`] of itself and takes $\varpi$ from the mean spacing of $\alpha$'s upward crossings
+//! over eight predicted periods.
+
+use crate::disk::Disk;
+use crate::figures::frequency::{eq54_half, eq55, eq71, Measured};
+use crate::model::frictionless::Frictionless;
+use crate::model::rolling::Rolling;
+use crate::model::steady::steady_motion;
+use crate::model::{Extras, Model, Motion};
+use crate::numerics::oscillation::angular_frequency;
+use crate::solve::{solve, Dynamics, Problem, Settings};
+
+/// The relative size of the nudge to alpha that starts the oscillation.
+pub const NUDGE: f64 = 1e-6;
+
+/// $\varpi/\Omega_0$ measured on an integration of `model` from `start` nudged, over 8 periods
+/// of the `predicted` ratio sampled 100 times per period; `None` when the run does not finish
+/// or shows no oscillation.
+fn measure<M: Model<N> + Dynamics<N>, const N: usize>(
+    model: &M,
+    start: &Motion,
+    predicted: f64,
+) -> Result<Option<f64>, String> {
+    let omega0 = start.precession.abs();
+    let period = std::f64::consts::TAU / (predicted * omega0);
+    let mut m = *start;
+    m.alpha += NUDGE * start.alpha;
+    let y0 = model.state(&m);
+    let settings = Settings {
+        rtol: 1e-11,
+        atol: 1e-13,
+        ..Settings::default()
+    };
+    let sol = solve(
+        Problem::new(model, 0.0, y0, 8.0 * period).sampled(period / 100.0),
+        &settings,
+    )
+    .map_err(|e| e.to_string())?;
+    if !sol.ending.is_complete() {
+        return Ok(None);
+    }
+    let alpha: Vec<f64> = sol.y.iter().map(|y| model.motion(y).alpha).collect();
+    Ok(angular_frequency(&sol.t, &alpha).map(|w| w / omega0))
+}
+
+/// Measures the toy's uniform disk (a = 37.5 mm, k = 1/4) at tilts 5, 10, ..., 85 degrees,
+/// the tilts on rayon's threads (each measurement is independent; the order of the result is
+/// the tilts' whatever the threads do).
+pub fn compute() -> Result<Measured, String> {
+    use rayon::prelude::*;
+    let disk = Disk::uniform(0.0375);
+    let k = disk.k;
+    let rolling = Rolling::<4>::new(disk, Extras::default(), None);
+    let frictionless = Frictionless::<3>::new(disk, 0.0, Extras::default());
+    let per_tilt = |i: u32| -> Result<[Option<(f64, f64)>; 3], String> {
+        let deg = 5.0 * i as f64;
+        let a = deg.to_radians();
+        let m0 = steady_motion(&disk, a, 0.0).map_err(|e| e.to_string())?;
+        let rolled0 = measure(&rolling, &m0, eq55(k, a))?.map(|r| (deg, r));
+        let slid0 = measure(&frictionless, &m0, eq71(k, a))?.map(|r| (deg, r));
+        let rolled_half = match eq54_half(k, a) {
+            Some(p) => {
+                let mh = steady_motion(&disk, a, 0.5 * disk.a).map_err(|e| e.to_string())?;
+                measure(&rolling, &mh, p)?.map(|r| (deg, r))
+            }
+            None => None,
+        };
+        Ok([rolled0, rolled_half, slid0])
+    };
+    let measured: Vec<[Option<(f64, f64)>; 3]> = (1..=17_u32)
+        .into_par_iter()
+        .map(per_tilt)
+        .collect::<Result<_, _>>()?;
+    Ok(Measured {
+        k,
+        rolled0: measured.iter().filter_map(|m| m[0]).collect(),
+        rolled_half: measured.iter().filter_map(|m| m[1]).collect(),
+        slid0: measured.iter().filter_map(|m| m[2]).collect(),
+    })
+}
