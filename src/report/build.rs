@@ -333,7 +333,7 @@ pub fn from_results(
     }
 
     let failures: Vec<FailureView> = checked.iter().filter_map(failure_view).collect();
-    let (root_causes, undetermined) = causes_view(&checked);
+    let (root_causes, undetermined) = causes_view(checked);
     let failing_claims = checked
         .iter()
         .filter(|c| matches!(c.subject, Subject::Claim { .. }))
