@@ -933,6 +933,11 @@ fn experiment_analyze(csv: &Path, out: Option<&Path>, json: bool) -> Result<(), 
         } else {
             println!("{a}");
         }
+        if let Some(dir) = out {
+            for p in experiment::write_sound_analysis(&a, dir).map_err(|e| e.to_string())? {
+                eprintln!("wrote {}", p.display());
+            }
+        }
         return Ok(());
     }
     let trace = experiment::read_trace(csv).map_err(|e| e.to_string())?;

@@ -75,39 +75,109 @@ fn law_traces_give_back_their_beta_and_t0() {
     }
 }
 
-/// Coverage on exact-law traces with the scope's noise (5 mV, 8 bits), 150 seeds: the
-/// fraction of pulls inside 1 and 1.96 standard uncertainties. Binomial sd at 150 runs: 3.8 %
-/// at 68 %, 1.8 % at 95 %; the bounds are about 3 sd.
-fn clean_coverage() -> coverage::Coverage {
-    let c = coverage::coverage(150, 1000, false).unwrap();
+/// Coverage on exact-law traces with the scope's noise (5 mV, 8 bits), `runs` seeds: the
+/// fraction of pulls of beta and t0 inside 1 and 1.96 standard uncertainties must be 68.3 % and
+/// 95 % within about 3 binomial standard deviations (at 120 runs: 4.2 % and 2.0 %).
+fn check_coverage(runs: usize, seed0: u64) {
+    let c = coverage::coverage(runs, seed0, false).unwrap();
     println!("{}", c.summary());
-    c
+    assert_eq!(c.refused, 0, "{}", c.summary());
+    let n = runs as f64;
+    let sd = |p: f64| (p * (1.0 - p) / n).sqrt();
+    for pulls in [&c.beta_pulls, &c.t0_pulls] {
+        let (one, two) = (c.fraction(pulls, 1.0), c.fraction(pulls, 1.96));
+        assert!((one - 0.683).abs() < 3.0 * sd(0.683), "{}", c.summary());
+        assert!((two - 0.95).abs() < 3.0 * sd(0.95), "{}", c.summary());
+    }
 }
 
-/// KNOWN FAILURE (not met): measured 59.3 % inside 1 sigma and 84.0 % inside 1.96 sigma
-/// (150 seeds): the intervals are about 1.35 times too narrow.
+/// KNOWN FAILURE (not met), measured this session on seeds 1000-1119 (with a Newey-West
+/// sandwich covariance in place of the AR(1) inflation; that change was then withdrawn as it
+/// did not help): beta inside 1 sigma 59.2 %, 1.96 sigma 85.0 %; t0 52.5 %, 78.3 %. The pulls'
+/// mean and sd were beta (+0.46, 1.20), t0 (-0.98, 1.25): the shortfall is mostly a bias (t0
+/// about one sigma early, worst 0.24 ms), not too narrow a covariance, so no error model alone
+/// can fix it. It takes 9 minutes on the shared machine, too slow for the normal run.
 #[test]
-#[ignore = "target not met: beta intervals under-cover"]
-fn stated_beta_intervals_cover_the_truth() {
-    let c = clean_coverage();
-    assert_eq!(c.refused, 0);
-    let (one, two) = (
-        c.fraction(&c.beta_pulls, 1.0),
-        c.fraction(&c.beta_pulls, 1.96),
-    );
-    assert!((0.57..=0.80).contains(&one), "{}", c.summary());
-    assert!((0.90..=1.0).contains(&two), "{}", c.summary());
+#[ignore = "target not met: the fits are biased by about one sigma (t0 early)"]
+fn stated_intervals_cover_the_truth() {
+    check_coverage(120, 1000);
 }
 
-/// KNOWN FAILURE (not met): measured 52.7 % inside 1 sigma and 80.0 % inside 1.96 sigma
-/// (150 seeds).
+/// The full study: 400 other recordings (binomial sd 2.3 % at 68 %, 1.1 % at 95 %).
 #[test]
-#[ignore = "target not met: t0 intervals under-cover"]
-fn stated_t0_intervals_cover_the_truth() {
-    let c = clean_coverage();
-    let (one, two) = (c.fraction(&c.t0_pulls, 1.0), c.fraction(&c.t0_pulls, 1.96));
-    assert!((0.57..=0.80).contains(&one), "{}", c.summary());
-    assert!((0.90..=1.0).contains(&two), "{}", c.summary());
+#[ignore = "slow: 400 recordings"]
+fn stated_intervals_cover_the_truth_400_recordings() {
+    check_coverage(400, 5000);
+}
+
+/// A trace whose disk follows the two-mechanism law (beta 1 below Omega_c = 150 rad/s, 4 above,
+/// the time left at Omega_c 2 s), seen through the default light model and scope.
+fn crossover_trace() -> (Trace, f64) {
+    let disk = Disk::uniform(0.0375);
+    let light = LightModel::default();
+    let t0 = light.scope.end_at;
+    let wc: f64 = 150.0;
+    let p = nalgebra::SVector::<f64, 5>::from_column_slice(&[
+        1.0,
+        4.0,
+        t0,
+        (2.0 * wc.powi(6)).ln(),
+        wc.ln(),
+    ]);
+    let t = light.scope.times();
+    let mut v: Vec<f64> = t
+        .iter()
+        .map(|&t| {
+            if t >= t0 {
+                return light.intensity(0.0, 0.0);
+            }
+            let (phi, om) = crossover::heading(&p, t);
+            let s = (disk.g / (disk.k * disk.a * om * om)).min(1.0);
+            light.intensity(s.asin(), phi)
+        })
+        .collect();
+    light.scope.record(&mut v);
+    let trace = Trace {
+        source: "crossover".into(),
+        t,
+        v,
+        truth: None,
+    };
+    (trace, wc)
+}
+
+/// Model choice: a two-mechanism trace is recognised as such, with its crossover and both
+/// exponents; a single law (eq 79, beta = 2) is not taken for two mechanisms.
+#[test]
+fn the_crossover_law_is_chosen_when_and_only_when_the_data_have_one() {
+    let (trace, wc) = crossover_trace();
+    let a = analyze(&trace, &AnalysisSettings::default()).unwrap();
+    println!("{}", a.models.summary);
+    for c in &a.models.candidates {
+        println!("  {} ({}): dBIC {:.1}", c.name, c.parameters, c.delta_bic);
+    }
+    let x = a.crossover.clone().unwrap();
+    assert_eq!(a.models.candidates[0].name, "two mechanisms", "{a}");
+    assert!(a.models.candidates[1].delta_bic > 10.0, "{a}");
+    assert!((x.beta_below - 1.0).abs() < 0.3, "{x:?}");
+    assert!((x.beta_above - 4.0).abs() < 0.3, "{x:?}");
+    assert!((x.omega_c / wc - 1.0).abs() < 0.1, "{x:?}");
+
+    let disk = Disk::uniform(0.0375);
+    let law = Law {
+        beta: 2.0,
+        c: 100f64.powi(4) * 7.0,
+    };
+    let a = analyze(
+        &law_trace(&law, &disk, &LightModel::default()).unwrap(),
+        &AnalysisSettings::default(),
+    )
+    .unwrap();
+    println!("{}", a.models.summary);
+    for c in &a.models.candidates {
+        println!("  {} ({}): dBIC {:.1}", c.name, c.parameters, c.delta_bic);
+    }
+    assert_ne!(a.models.candidates[0].name, "two mechanisms", "{a}");
 }
 
 #[test]
@@ -661,9 +731,13 @@ fn the_cli_simulates_and_analyses_a_wav_and_refuses_noise() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
+    let dir = temp("cli_wav_out");
+    let _ = std::fs::remove_dir_all(&dir);
     let out = std::process::Command::new(bin)
         .args(["experiment", "analyze"])
         .arg(&wav)
+        .arg("--out")
+        .arg(&dir)
         .output()
         .unwrap();
     let text = String::from_utf8_lossy(&out.stdout);
@@ -672,6 +746,14 @@ fn the_cli_simulates_and_analyses_a_wav_and_refuses_noise() {
         out.status.success() && text.contains("eq 79: beta"),
         "{text}"
     );
+    // --out holds the analysis and the track, one row per frame of the track.
+    let json = std::fs::read_to_string(dir.join("analysis.json")).unwrap();
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    let frames = v["track"]["points"].as_array().unwrap().len();
+    let track = std::fs::read_to_string(dir.join("track.csv")).unwrap();
+    assert!(frames > 6, "{frames} frames");
+    assert_eq!(track.lines().count(), frames + 1);
+    assert!(track.starts_with("t_start_s,t_end_s,omega_rad_s,snr\n"));
     let noise = temp("noise.csv");
     let rows: String = (0..5000)
         .map(|j| {

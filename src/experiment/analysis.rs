@@ -3,6 +3,7 @@
 //! from the truth.
 
 use crate::experiment::clean::{remove_glitches, remove_hum};
+use crate::experiment::crossover::{fit_crossover, CrossoverFit};
 use crate::experiment::error::ExperimentError;
 use crate::experiment::fit::{fit_eq84, fit_eq84_fixed, fit_eq85, Eq84Fit, Eq85Fit};
 use crate::experiment::models::{compare, Comparison};
@@ -121,8 +122,10 @@ pub struct Analysis {
     pub eq84: Eq84Fit,
     /// Eq 85's fit.
     pub eq85: Eq85Fit,
-    /// Eq 84 with beta free against beta fixed at 1, 2, 3, 4 (and the two-mechanism law).
+    /// Eq 84 with beta free against beta fixed at 1, 2, 3, 4 and the two-mechanism law.
     pub models: Comparison,
+    /// The two-mechanism law's fit ([`crossover`](crate::experiment::crossover)), when it converged.
+    pub crossover: Option<CrossoverFit>,
     /// The plausibility checks (passed, or the analysis would have been refused).
     pub verdict: Verdict,
     /// The truth, if the trace carries one.
@@ -304,6 +307,24 @@ pub fn analyze(trace: &Trace, s: &AnalysisSettings) -> Result<Analysis, Experime
             ));
         }
     }
+    let crossover = fit_crossover(&ta, &tb, &cyc_idx, &w, &eq84).ok();
+    if let Some(x) = &crossover {
+        candidates.push((
+            "two mechanisms".to_string(),
+            format!(
+                "beta = {:.2} +- {:.2} below Omega_c = {:.0} +- {:.0} rad/s, {:.2} +- {:.2} above",
+                x.beta_below,
+                x.beta_below_sigma,
+                x.omega_c,
+                x.omega_c_sigma,
+                x.beta_above,
+                x.beta_above_sigma
+            ),
+            5,
+            x.chi2,
+            x.ln_det_sigma,
+        ));
+    }
     let models = compare(cyc_idx.len(), candidates);
     let window = Window {
         rule: format!(
@@ -350,6 +371,7 @@ pub fn analyze(trace: &Trace, s: &AnalysisSettings) -> Result<Analysis, Experime
         eq84,
         eq85,
         models,
+        crossover,
         verdict,
         truth: trace.truth.clone(),
         score,

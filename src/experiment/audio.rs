@@ -275,4 +275,33 @@ impl SoundAnalysis {
     pub fn to_json(&self) -> String {
         serde_json::to_string_pretty(self).unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))
     }
+
+    /// The frequency track as CSV: frame start and end (s), $\Omega$ (rad/s), signal-to-noise.
+    pub fn track_csv(&self) -> String {
+        let mut s = String::from("t_start_s,t_end_s,omega_rad_s,snr\n");
+        for p in &self.track.points {
+            s.push_str(&format!("{},{},{},{}\n", p.a, p.b, p.omega, p.snr));
+        }
+        s
+    }
+}
+
+/// Writes a sound analysis to `dir` (`analysis.json`, `track.csv`), each file atomically, and
+/// returns the paths written.
+pub fn write_sound_analysis(
+    a: &SoundAnalysis,
+    dir: &std::path::Path,
+) -> Result<Vec<std::path::PathBuf>, ExperimentError> {
+    let io = |p: &std::path::Path, e: std::io::Error| ExperimentError::Io {
+        file: p.display().to_string(),
+        message: format!("cannot write ({e})"),
+    };
+    std::fs::create_dir_all(dir).map_err(|e| io(dir, e))?;
+    let mut out = Vec::new();
+    for (name, text) in [("analysis.json", a.to_json()), ("track.csv", a.track_csv())] {
+        let p = dir.join(name);
+        crate::output::write_atomically(&p, text.as_bytes()).map_err(|e| io(&p, e))?;
+        out.push(p);
+    }
+    Ok(out)
 }

@@ -38,11 +38,20 @@ impl Coverage {
         pulls.iter().filter(|p| p.abs() <= z).count() as f64 / self.runs.max(1) as f64
     }
 
+    /// The mean and standard deviation of `pulls` (0 and 1 when the intervals are right).
+    pub fn moments(pulls: &[f64]) -> (f64, f64) {
+        let n = pulls.len().max(1) as f64;
+        let m = pulls.iter().sum::<f64>() / n;
+        let v = pulls.iter().map(|p| (p - m).powi(2)).sum::<f64>() / (n - 1.0).max(1.0);
+        (m, v.sqrt())
+    }
+
     /// A summary line.
     pub fn summary(&self) -> String {
         format!(
             "{} recordings ({} refused): beta inside 1 sigma {:.1} %, 1.96 sigma {:.1} %; \
              t0 inside 1 sigma {:.1} %, 1.96 sigma {:.1} % (claimed 68.3 % and 95 %); \
+             pulls (mean, sd): beta ({:.2}, {:.2}), t0 ({:.2}, {:.2}); \
              worst errors: beta {:.4}, t0 {:.3} ms",
             self.runs,
             self.refused,
@@ -50,6 +59,10 @@ impl Coverage {
             100.0 * self.fraction(&self.beta_pulls, 1.96),
             100.0 * self.fraction(&self.t0_pulls, 1.0),
             100.0 * self.fraction(&self.t0_pulls, 1.96),
+            Self::moments(&self.beta_pulls).0,
+            Self::moments(&self.beta_pulls).1,
+            Self::moments(&self.t0_pulls).0,
+            Self::moments(&self.t0_pulls).1,
             self.worst_beta_error,
             1e3 * self.worst_t0_error
         )

@@ -146,18 +146,24 @@ impl Problem<3> for Law84<'_> {
             .map(|i| {
                 // r = d/2pi - d/dphi, d = tb - ta, dphi = Phi(tb) - Phi(ta), dPhi/dt = Omega.
                 let (_, _, dphi, oa, ob) = self.mean(p, i);
-                let d = self.tb[i] - self.ta[i];
-                let k = 0.5 / PI - 1.0 / dphi;
-                Row {
-                    start: self.start[i],
-                    coef: vec![-k - d * oa / (dphi * dphi), k + d * ob / (dphi * dphi)],
-                }
+                cycle_row(self.start[i], self.tb[i] - self.ta[i], dphi, oa, ob)
             })
             .collect()
     }
     fn admissible(&self, p: &SVector<f64, 3>) -> bool {
         let tmax = self.tb.iter().copied().fold(f64::MIN, f64::max);
         p.iter().all(|v| v.is_finite()) && p[0] > -0.9 && p[0] < 50.0 && p[1] > tmax
+    }
+}
+
+/// The row of $B$ for a cycle of length `d` from peak `start`: the residual
+/// $r = d/2\pi - d/\Delta\Phi$ differentiated in the cycle's two peak times, with
+/// $\partial\Delta\Phi/\partial t_{a,b} = \mp\Omega(t_{a,b})$ (rates `oa`, `ob`).
+pub(crate) fn cycle_row(start: usize, d: f64, dphi: f64, oa: f64, ob: f64) -> Row {
+    let k = 0.5 / PI - 1.0 / dphi;
+    Row {
+        start,
+        coef: vec![-k - d * oa / (dphi * dphi), k + d * ob / (dphi * dphi)],
     }
 }
 

@@ -26,6 +26,7 @@ pub mod audio;
 pub mod band;
 pub mod clean;
 pub mod coverage;
+pub mod crossover;
 pub mod csv;
 pub mod error;
 pub mod fit;
@@ -47,7 +48,7 @@ pub mod wav;
 
 pub use analysis::{analyze, write_analysis, Analysis, AnalysisSettings};
 pub use artifacts::Artifacts;
-pub use audio::{analyze_sound, SoundAnalysis};
+pub use audio::{analyze_sound, write_sound_analysis, SoundAnalysis};
 pub use csv::{parse_trace, read_trace};
 pub use error::ExperimentError;
 pub use law::{law_trace, Law};
