@@ -31,7 +31,7 @@ pub mod stable;
 pub mod study;
 
 pub use cost::{energy_drift, rhs_nanoseconds, Drift};
-pub use measure::{Timing, Trace};
+pub use measure::{trace_with, Timing, Trace};
 pub use preset::{measure_preset, Accuracy, PresetMeasurement};
 pub use reference::{Agreement, Reference, ReferenceOptions};
 pub use study::{cheapest, study, Cost, Point, Series, Study, StudyOptions};
