@@ -4,10 +4,10 @@
 use crate::catalogue;
 use crate::equations::{self, Bench};
 use crate::finding::Finding;
+use rayon::prelude::*;
 use serde::Serialize;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::Mutex;
 
 /// What was checked.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize)]
@@ -145,7 +145,9 @@ fn jobs(selection: &Selection) -> Result<Vec<Job>, String> {
     Ok(out)
 }
 
-/// Runs the selected checks on `threads` threads; `progress(done, total)` after each.
+/// Runs the selected checks on a rayon pool of `threads` threads; `progress(done, total)` after
+/// each. The results come back in the selection's order whatever the thread count: each check
+/// reads only the bench, and rayon's indexed collect keeps the order.
 pub fn run_checks(
     bench: &Bench,
     selection: &Selection,
@@ -154,16 +156,15 @@ pub fn run_checks(
 ) -> Result<Vec<Checked>, String> {
     let jobs = jobs(selection)?;
     let total = jobs.len();
-    let next = AtomicUsize::new(0);
     let done = AtomicUsize::new(0);
-    let results: Mutex<Vec<Option<Checked>>> = Mutex::new(vec![None; total]);
-    std::thread::scope(|scope| {
-        for _ in 0..threads.max(1) {
-            scope.spawn(|| loop {
-                let i = next.fetch_add(1, Ordering::Relaxed);
-                let Some((subject, section, check)) = jobs.get(i).cloned() else {
-                    break;
-                };
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads.max(1))
+        .build()
+        .map_err(|e| format!("could not start {threads} threads for the checks: {e}"))?;
+    Ok(pool.install(|| {
+        jobs.par_iter()
+            .map(|job| {
+                let (subject, section, check) = job.clone();
                 let finding = catch_unwind(AssertUnwindSafe(|| check(bench))).map_err(|e| {
                     let msg = e
                         .downcast_ref::<String>()
@@ -172,22 +173,15 @@ pub fn run_checks(
                         .unwrap_or_else(|| "unknown panic".into());
                     format!("the check could not run: {msg}")
                 });
-                let checked = Checked {
+                progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
+                Checked {
                     subject,
                     section,
                     finding,
-                };
-                results.lock().unwrap_or_else(|p| p.into_inner())[i] = Some(checked);
-                progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
-            });
-        }
-    });
-    Ok(results
-        .into_inner()
-        .unwrap_or_else(|p| p.into_inner())
-        .into_iter()
-        .flatten()
-        .collect())
+                }
+            })
+            .collect()
+    }))
 }
 
 /// Counts of verdicts, for the summary line.
