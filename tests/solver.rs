@@ -270,7 +270,7 @@ fn own_dop853_takes_the_same_steps_as_the_published_algorithm_in_ode_solvers() {
 }
 
 #[test]
-fn dense_output_serves_events_and_samples_without_re_integration() {
+fn events_use_the_dense_output_and_samples_keep_the_steps() {
     let s = dop853(1e-12, 1e-14);
     let plain = solve(
         Problem::new(&Oscillator, 0.0, State::<2>::new(1.0, 0.0), 10.0),
@@ -282,9 +282,10 @@ fn dense_output_serves_events_and_samples_without_re_integration() {
         &s,
     )
     .unwrap();
-    // The sampled run takes the same steps; each step holding samples costs 3 evaluations.
+    // The sampled run takes the same steps; its samples are re-integrated (extra evaluations).
     assert_eq!(sampled.stats.evaluations, plain.stats.evaluations);
-    assert!(sampled.stats.extra_evaluations <= 3 * plain.stats.accepted);
+    assert_eq!(sampled.stats.accepted, plain.stats.accepted);
+    assert!(sampled.stats.extra_evaluations > 0);
     assert_eq!(sampled.t.len(), 10_001);
     let worst = sampled
         .t
@@ -292,7 +293,7 @@ fn dense_output_serves_events_and_samples_without_re_integration() {
         .zip(&sampled.y)
         .map(|(t, y)| (y[0] - t.cos()).abs())
         .fold(0.0, f64::max);
-    assert!(worst < 1e-11, "dense output off by {worst:e}");
+    assert!(worst < 1e-11, "samples off by {worst:e}");
     let p = Problem::new(&Oscillator, 0.0, State::<2>::new(1.0, 0.0), 10.0)
         .stop_when(Event::new("x below 0", |y: &State<2>| y[0]));
     let ev = solve(p, &s).unwrap();

@@ -129,9 +129,30 @@ impl<'a, D: Dynamics<N>, const N: usize> Dop853<'a, D, N> {
     /// Starts at `(t0, y0)` with the first step guessed from the problem (2 evaluations), steps
     /// never longer than `h_max`.
     pub(super) fn new(f: &'a D, rtol: f64, atol: f64, t0: f64, y0: State<N>, h_max: f64) -> Self {
+        let mut s = Self::starting(f, rtol, atol, t0, y0, h_max);
+        s.stats.evaluations += 1;
+        s.h = s.first_step();
+        s
+    }
+
+    /// Starts at `(t0, y0)` trying `h_max` as the first step (1 evaluation).
+    pub(super) fn with_first_step(
+        f: &'a D,
+        rtol: f64,
+        atol: f64,
+        t0: f64,
+        y0: State<N>,
+        h_max: f64,
+    ) -> Self {
+        let mut s = Self::starting(f, rtol, atol, t0, y0, h_max);
+        s.h = h_max;
+        s
+    }
+
+    fn starting(f: &'a D, rtol: f64, atol: f64, t0: f64, y0: State<N>, h_max: f64) -> Self {
         let mut k = [State::<N>::zeros(); 13];
         f.rhs(&y0, &mut k[0]);
-        let mut s = Self {
+        Self {
             f,
             rtol,
             atol,
@@ -148,12 +169,10 @@ impl<'a, D: Dynamics<N>, const N: usize> Dop853<'a, D, N> {
             stiff_hits: 0,
             stiff_misses: 0,
             stats: Stats {
-                evaluations: 2,
+                evaluations: 1,
                 ..Stats::default()
             },
-        };
-        s.h = s.first_step();
-        s
+        }
     }
 
     /// Hairer's first-step guess: $h_0 = 0.01 \|y_0\| / \|f(y_0)\|$, then an explicit Euler step

@@ -1,8 +1,10 @@
 //! Drives the crate's own DOP853 ([`super::dop853`]) over a [`Problem`]: the step loop, the
 //! step limit, the wall-time budget, progress, stop events and sampling.
 //!
-//! Events and samples use the dense output of the step they fall in, so they cost three
-//! evaluations for such a step and none otherwise (no re-integration). An event crossing is seen
+//! Events use the dense output of the step they fall in, so locating one costs three
+//! evaluations and no re-integration. Samples are re-integrated from the start of their step:
+//! the interpolant is a little less accurate than the steps, and checks that fit small residuals
+//! over sampled trajectories (eq 44's) see the difference. An event crossing is seen
 //! on the step ends, as with `ode_solvers`, and located by bisection on the step's interpolant
 //! to [`EVENT_TIME_TOLERANCE`].
 
@@ -25,13 +27,19 @@ impl<const N: usize> Sampler<N> {
     }
 
     /// Writes the samples strictly before `t_stop` (by a margin of 1e-12 relative) that lie in
-    /// the step ending at `t_b`, from its dense output (made on first need).
+    /// the step from `(t_a, y_a)` to `t_b`, each re-integrated from the step's start (the
+    /// interpolant of order 7 is less accurate than the steps themselves, and a check that
+    /// fits a small residual over the samples would see it).
+    #[allow(clippy::too_many_arguments)]
     fn fill<D: Dynamics<N>>(
         &mut self,
-        s: &mut Dop853<'_, D, N>,
-        dense: &mut Option<Dense<N>>,
+        f: &D,
+        settings: &Settings,
+        t_a: f64,
+        y_a: State<N>,
         t_b: f64,
         t_stop: f64,
+        extra: &mut u64,
     ) {
         let guard = t_stop - 1e-12 * self.dt.max(t_stop.abs());
         loop {
@@ -39,12 +47,35 @@ impl<const N: usize> Sampler<N> {
             if t > t_b || t >= guard {
                 return;
             }
-            let d = dense.get_or_insert_with(|| s.dense());
             self.t.push(t);
-            self.y.push(d.at(t));
+            self.y.push(advance(f, settings, t_a, y_a, t - t_a, extra));
             self.next += 1;
         }
     }
+}
+
+/// The state at `t_a + tau` re-integrated from `(t_a, y_a)` with the same tolerances, first
+/// trying the whole interval in one step; its evaluations are added to `extra`.
+fn advance<D: Dynamics<N>, const N: usize>(
+    f: &D,
+    settings: &Settings,
+    t_a: f64,
+    y_a: State<N>,
+    tau: f64,
+    extra: &mut u64,
+) -> State<N> {
+    if tau <= 0.0 {
+        return y_a;
+    }
+    let t_b = t_a + tau;
+    let mut s = Dop853::with_first_step(f, settings.rtol, settings.atol, t_a, y_a, tau);
+    while s.t < t_b {
+        if s.step(t_b) != Outcome::Accepted {
+            break;
+        }
+    }
+    *extra += s.stats.evaluations;
+    s.y
 }
 
 /// The earliest event that crossed in the step of `dense` from `t_a` to `t_b`, located by
@@ -122,7 +153,7 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
                 steps: settings.max_steps,
             };
         }
-        let t_a = s.t;
+        let (t_a, y_a) = (s.t, s.y);
         match s.step(t_end) {
             Outcome::Collapse => break Ending::StepCollapse { t: s.t },
             Outcome::Stiff => break Ending::Stiff { t: s.t },
@@ -133,12 +164,13 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
         if !y_b.iter().all(|v| v.is_finite()) {
             break Ending::NonFinite { t: t_b };
         }
-        let mut dense = None;
         if problem.events.iter().any(|e| (e.value)(&y_b) <= 0.0) {
-            let d = dense.get_or_insert_with(|| s.dense());
-            let (index, t_e, y_e) = locate(&problem.events, d, t_a, t_b, y_b);
+            let d = s.dense();
+            let (index, t_e, y_e) = locate(&problem.events, &d, t_a, t_b, y_b);
             if let Some(sm) = sampler.as_mut() {
-                sm.fill(&mut s, &mut dense, t_e, t_e);
+                let mut extra = 0;
+                sm.fill(problem.dynamics, settings, t_a, y_a, t_e, t_e, &mut extra);
+                s.stats.extra_evaluations += extra;
             }
             last = (t_e, y_e);
             break Ending::Event {
@@ -148,7 +180,11 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
             };
         }
         match sampler.as_mut() {
-            Some(sm) => sm.fill(&mut s, &mut dense, t_b, t_end),
+            Some(sm) => {
+                let mut extra = 0;
+                sm.fill(problem.dynamics, settings, t_a, y_a, t_b, t_end, &mut extra);
+                s.stats.extra_evaluations += extra;
+            }
             None => {
                 ts.push(t_b);
                 ys.push(y_b);
