@@ -1,4 +1,4 @@
-//! The Rust side of `scripts/scipy_compare.py`: the benchmark scene's reference (with its
+//! The Rust side of `scripts/compare` (`scripts/compare.py`): the benchmark scene's reference (with its
 //! validation) and the Rust timings over a tolerance sweep, printed as one JSON document on
 //! stdout. Not a criterion benchmark (`harness = false`).
 //!
@@ -11,11 +11,11 @@
 //! included), `--quick` (each point timed once).
 
 use rolling_disk::precision::{
-    energy_drift, measure_preset, rhs_nanoseconds, study, study::measure_point, Accuracy,
+    energy_drift, measure_preset, rhs_nanoseconds, study, study::measure_point_with, Accuracy,
     Reference, ReferenceOptions, StudyOptions, Timing,
 };
 use rolling_disk::scene::Scene;
-use rolling_disk::solve::{Method, Settings};
+use rolling_disk::solve::{Engine, Method, Settings};
 use serde_json::{json, Value};
 
 fn main() {
@@ -41,7 +41,12 @@ fn main() {
     let rhs_ns = rhs_nanoseconds(&scene);
 
     let mut rust = Vec::new();
-    for method in [Method::Dop853, Method::Dopri5] {
+    let engines = [
+        (Method::Dop853, Engine::Own, "dop853"),
+        (Method::Dop853, Engine::OdeSolvers, "ode_solvers dop853"),
+        (Method::Dopri5, Engine::Own, "dopri5"),
+    ];
+    for (method, engine, name) in engines {
         for e in 3..=13 {
             let rtol = 10f64.powi(-e);
             let s = Settings {
@@ -50,10 +55,10 @@ fn main() {
                 atol: 1e-2 * rtol,
                 ..Settings::default()
             };
-            let p = measure_point(&scene, &s, &reference, &timing).expect("point");
+            let p = measure_point_with(&scene, &s, &reference, &timing, engine).expect("point");
             let overhead = p.wall_seconds / (p.evaluations as f64 * rhs_ns * 1e-9);
             rust.push(json!({
-                "method": method, "rtol": rtol, "atol": s.atol,
+                "method": name, "rtol": rtol, "atol": s.atol,
                 "evaluations": p.evaluations, "accepted": p.accepted, "rejected": p.rejected,
                 "wall_seconds": p.wall_seconds, "final_error": p.final_error,
                 "trajectory_error": p.trajectory_error, "energy_change": p.energy_change,

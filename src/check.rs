@@ -5,10 +5,10 @@ use crate::catalogue;
 use crate::cause::{classify, Cause, Node};
 use crate::equations::{self, Bench};
 use crate::finding::Finding;
+use rayon::prelude::*;
 use serde::Serialize;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::Mutex;
 
 /// What was checked.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize)]
@@ -187,7 +187,9 @@ fn jobs(bench: &Bench, selection: &Selection) -> Result<Vec<Job>, String> {
     Ok(out)
 }
 
-/// Runs the selected checks on `threads` threads; `progress(done, total)` after each.
+/// Runs the selected checks on a rayon pool of `threads` threads; `progress(done, total)` after
+/// each. The results come back in the selection's order whatever the thread count: each check
+/// reads only the bench, and rayon's indexed collect keeps the order.
 pub fn run_checks(
     bench: &Bench,
     selection: &Selection,
@@ -196,16 +198,15 @@ pub fn run_checks(
 ) -> Result<Vec<Checked>, String> {
     let jobs = jobs(bench, selection)?;
     let total = jobs.len();
-    let next = AtomicUsize::new(0);
     let done = AtomicUsize::new(0);
-    let results: Mutex<Vec<Option<Checked>>> = Mutex::new(vec![None; total]);
-    std::thread::scope(|scope| {
-        for _ in 0..threads.max(1) {
-            scope.spawn(|| loop {
-                let i = next.fetch_add(1, Ordering::Relaxed);
-                let Some((subject, section, check, derivation, _)) = jobs.get(i).cloned() else {
-                    break;
-                };
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads.max(1))
+        .build()
+        .map_err(|e| format!("could not start {threads} threads for the checks: {e}"))?;
+    let mut all: Vec<Checked> = pool.install(|| {
+        jobs.par_iter()
+            .map(|job| {
+                let (subject, section, check, derivation, _) = job.clone();
                 let checked = Checked {
                     subject,
                     section,
@@ -213,17 +214,11 @@ pub fn run_checks(
                     derivation: derivation.map(|d| isolated(d, bench)),
                     cause: None,
                 };
-                results.lock().unwrap_or_else(|p| p.into_inner())[i] = Some(checked);
                 progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
-            });
-        }
+                checked
+            })
+            .collect()
     });
-    let mut all: Vec<Checked> = results
-        .into_inner()
-        .unwrap_or_else(|p| p.into_inner())
-        .into_iter()
-        .flatten()
-        .collect();
     attach_causes(bench, &mut all);
     Ok(all
         .into_iter()

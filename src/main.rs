@@ -499,6 +499,7 @@ fn bench_for(accuracy: Option<Accuracy>, paper: &'static Paper) -> Bench<'static
     match accuracy {
         Some(a) => Bench {
             rtol: a.settings().rtol,
+            method: a.settings().method,
             ..bench
         },
         None => bench,

@@ -11,6 +11,7 @@ use crate::equations::{derivations, equations, Bench};
 use crate::finding::Finding;
 use crate::finding::Verdict;
 use crate::paper::mutate::mutants;
+use rayon::prelude::*;
 use serde::Serialize;
 
 /// The score of one equation.
@@ -68,16 +69,24 @@ pub fn mutation_scores(
             printed_fails,
             judged_by,
         };
-        for m in ms {
-            let paper = bench.paper.with_chains(n, m.chains);
-            let b = Bench {
-                paper: &paper,
-                ..*bench
-            };
-            if check(&b).verdict == Verdict::Fails {
+        // The mutants of one equation are independent: checked in parallel on rayon's pool,
+        // collected in their order, so the score does not depend on the thread count.
+        let verdicts: Vec<(bool, _)> = ms
+            .into_par_iter()
+            .map(|m| {
+                let paper = bench.paper.with_chains(n, m.chains);
+                let b = Bench {
+                    paper: &paper,
+                    ..*bench
+                };
+                (check(&b).verdict == Verdict::Fails, m.change)
+            })
+            .collect();
+        for (killed, change) in verdicts {
+            if killed {
                 score.killed += 1;
             } else {
-                score.survivors.push(m.change);
+                score.survivors.push(change);
             }
         }
         out.push(score);

@@ -8,7 +8,7 @@ use std::path::Path;
 /// The reference modules, as paths under src/.
 const REFERENCES: &[&str] = &[
     "model",
-    "solve.rs",
+    "solve",
     "events.rs",
     "numerics",
     "disk.rs",

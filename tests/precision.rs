@@ -8,8 +8,8 @@ use rolling_disk::model::frictionless::Frictionless;
 use rolling_disk::model::rolling::Rolling;
 use rolling_disk::model::Extras;
 use rolling_disk::precision::{
-    cheapest, energy_drift, measure_preset, study, Accuracy, Cost, PrecisionError, Reference,
-    ReferenceOptions, StudyOptions, Timing,
+    cheapest, energy_drift, long_time_drift, measure_preset, study, Accuracy, Cost, PrecisionError,
+    Reference, ReferenceOptions, StudyOptions, Timing,
 };
 use rolling_disk::scene::Scene;
 use rolling_disk::solve::{Dynamics, Method, State};
@@ -183,4 +183,37 @@ fn energy_drift_needs_a_conservative_precessing_scene() {
     assert!(e.to_string().contains("not conserved"));
     let e = energy_drift(&Scene::load("wheel-straight").unwrap(), &s, 10.0, 2).unwrap_err();
     assert_eq!(e, PrecisionError::NoPrecession);
+}
+
+/// Issue 17's goal: over 1e4 precession periods of the benchmark scene the `high` preset keeps
+/// the energy to 1e-12 relative, and the table holds every preset from the fastest.
+#[test]
+fn high_preset_keeps_the_energy_over_ten_thousand_periods() {
+    let table = long_time_drift(&Scene::load("benchmark").unwrap(), 1e4, 20).unwrap();
+    assert_eq!(table.rows.len(), 3);
+    for r in &table.rows {
+        eprintln!(
+            "{:<8} {}: max |dE/E| {:.2e} over {:.0} periods, {} evaluations, {:.2} s",
+            r.accuracy.to_string(),
+            r.drift.settings.method,
+            r.drift.max_abs_drift,
+            table.periods,
+            r.drift.evaluations,
+            r.drift.wall_seconds
+        );
+        assert!(
+            r.drift.ending.is_complete(),
+            "{}: {:?}",
+            r.accuracy,
+            r.drift.ending
+        );
+    }
+    let high = &table.rows[2];
+    assert_eq!(high.accuracy, Accuracy::High);
+    assert!(
+        high.drift.max_abs_drift < 1e-12,
+        "high: {:e}",
+        high.drift.max_abs_drift
+    );
+    assert!(table.rows[0].drift.max_abs_drift > high.drift.max_abs_drift);
 }

@@ -1,7 +1,7 @@
 //! The solver layer against problems with known answers.
 
 use rolling_disk::solve::{
-    solve, Dynamics, Ending, Event, Method, Problem, Settings, State, WithTime,
+    solve, solve_with, Dynamics, Ending, Engine, Event, Method, Problem, Settings, State, WithTime,
 };
 
 /// Van der Pol's equation in Hairer's scaling, $\epsilon = 10^{-3}$ (stiff-ish).
@@ -186,4 +186,126 @@ fn bad_settings_are_refused_with_a_reason() {
         ..Settings::default()
     };
     assert!(solve(p(), &rk).unwrap_err().to_string().contains("steps"));
+}
+
+/// The restricted three-body problem of Arenstorf (Hairer, Norsett and Wanner, *Solving ODEs I*,
+/// section II.0): the orbit from this start is periodic with period
+/// 17.0652165601579625588917206249, a test problem Hairer published with `dop853`.
+struct Arenstorf;
+
+#[allow(clippy::excessive_precision)]
+const ARENSTORF_PERIOD: f64 = 17.065_216_560_157_962_558_891_720_624_9;
+
+impl Dynamics<4> for Arenstorf {
+    fn rhs(&self, y: &State<4>, dy: &mut State<4>) {
+        let mu = 0.012277471;
+        let mu1 = 1.0 - mu;
+        let d1 = ((y[0] + mu).powi(2) + y[1] * y[1]).powf(1.5);
+        let d2 = ((y[0] - mu1).powi(2) + y[1] * y[1]).powf(1.5);
+        dy[0] = y[2];
+        dy[1] = y[3];
+        dy[2] = y[0] + 2.0 * y[3] - mu1 * (y[0] + mu) / d1 - mu * (y[0] - mu1) / d2;
+        dy[3] = y[1] - 2.0 * y[2] - mu1 * y[1] / d1 - mu * y[1] / d2;
+    }
+}
+
+fn arenstorf_start() -> State<4> {
+    State::<4>::new(0.994, 0.0, 0.0, -2.001_585_106_379_082_5)
+}
+
+#[test]
+fn own_dop853_closes_the_arenstorf_orbit() {
+    // Global error falls with the tolerance, and at 1e-12 the orbit closes to 1e-7 (its
+    // close approaches to the moon amplify the local errors by about 1e4).
+    let mut last_gap = f64::INFINITY;
+    for (rtol, bound) in [(1e-6, 1e-1), (1e-9, 1e-4), (1e-12, 1e-7)] {
+        let p = Problem::new(&Arenstorf, 0.0, arenstorf_start(), ARENSTORF_PERIOD);
+        let sol = solve(p, &dop853(rtol, rtol)).unwrap();
+        assert_eq!(sol.ending, Ending::TimeReached);
+        let gap = (sol.last().1 - arenstorf_start()).amax();
+        eprintln!(
+            "Arenstorf, rtol = atol = {rtol:.0e}: gap after one period {gap:.2e}, {} evaluations, {} accepted, {} rejected",
+            sol.stats.evaluations, sol.stats.accepted, sol.stats.rejected
+        );
+        assert!(gap < bound && gap < last_gap, "rtol {rtol}: gap {gap}");
+        last_gap = gap;
+    }
+}
+
+#[test]
+fn own_dop853_takes_the_same_steps_as_the_published_algorithm_in_ode_solvers() {
+    // ode_solvers 0.6.2 implements Hairer's controller and norm faithfully (only slowly): on an
+    // autonomous problem both engines must make the same decisions. They sum the stages in
+    // different orders, and the error estimate (a difference of large stage sums on this
+    // stiff-ish problem) carries that round-off into the step sizes, so the step ends drift
+    // apart slowly (at rtol 1e-6 the first 533 of 674 agree to 1e-6): the counts of accepted
+    // and rejected steps are compared, and the final states.
+    let vdp = VanDerPol { eps: 1e-3 };
+    for rtol in [1e-6, 1e-9, 1e-12] {
+        let s = dop853(rtol, rtol);
+        let own = solve(Problem::new(&vdp, 0.0, State::<2>::new(2.0, 0.0), 2.0), &s).unwrap();
+        let up = solve_with(
+            Problem::new(&vdp, 0.0, State::<2>::new(2.0, 0.0), 2.0),
+            &s,
+            Engine::OdeSolvers,
+        )
+        .unwrap();
+        eprintln!(
+            "Van der Pol rtol {rtol:.0e}: own {:?}, ode_solvers {:?}",
+            own.stats, up.stats
+        );
+        let rej = own.stats.rejected.abs_diff(up.stats.rejected);
+        assert!(
+            rej * 50 <= own.stats.rejected.max(50),
+            "rtol {rtol}: {rej} rejections apart"
+        );
+        let gap = (own.last().1 - up.last().1).amax();
+        assert!(gap < 1e3 * rtol, "rtol {rtol}: final states {gap:e} apart");
+        let diff = own.stats.accepted.abs_diff(up.stats.accepted);
+        assert!(
+            diff * 50 <= own.stats.accepted,
+            "rtol {rtol}: {diff} steps apart"
+        );
+    }
+}
+
+#[test]
+fn events_use_the_dense_output_and_samples_keep_the_steps() {
+    // The crate's own DOP853 (not the default engine): events on its dense output.
+    let s = dop853(1e-12, 1e-14);
+    let plain = solve_with(
+        Problem::new(&Oscillator, 0.0, State::<2>::new(1.0, 0.0), 10.0),
+        &s,
+        Engine::Own,
+    )
+    .unwrap();
+    let sampled = solve_with(
+        Problem::new(&Oscillator, 0.0, State::<2>::new(1.0, 0.0), 10.0).sampled(0.001),
+        &s,
+        Engine::Own,
+    )
+    .unwrap();
+    // The sampled run takes the same steps; its samples are re-integrated (extra evaluations).
+    assert_eq!(sampled.stats.evaluations, plain.stats.evaluations);
+    assert_eq!(sampled.stats.accepted, plain.stats.accepted);
+    assert!(sampled.stats.extra_evaluations > 0);
+    assert_eq!(sampled.t.len(), 10_001);
+    let worst = sampled
+        .t
+        .iter()
+        .zip(&sampled.y)
+        .map(|(t, y)| (y[0] - t.cos()).abs())
+        .fold(0.0, f64::max);
+    assert!(worst < 1e-11, "samples off by {worst:e}");
+    let p = Problem::new(&Oscillator, 0.0, State::<2>::new(1.0, 0.0), 10.0)
+        .stop_when(Event::new("x below 0", |y: &State<2>| y[0]));
+    let ev = solve_with(p, &s, Engine::Own).unwrap();
+    assert_eq!(
+        ev.stats.extra_evaluations, 3,
+        "one dense output for the event step"
+    );
+    let Ending::Event { t, .. } = ev.ending else {
+        panic!("{:?}", ev.ending)
+    };
+    assert!((t - std::f64::consts::FRAC_PI_2).abs() < 1e-11, "t = {t}");
 }

@@ -52,6 +52,8 @@ pub struct Bench<'p> {
     pub perturbation: f64,
     /// The solver's relative tolerance for integrations.
     pub rtol: f64,
+    /// The integration method (the `--accuracy` preset's; DOP853 by default).
+    pub method: Method,
 }
 
 impl Default for Bench<'static> {
@@ -60,6 +62,7 @@ impl Default for Bench<'static> {
             paper: built_in_paper(),
             perturbation: 0.0,
             rtol: 1e-12,
+            method: Method::Dop853,
         }
     }
 }
@@ -93,14 +96,21 @@ impl<'p> Bench<'p> {
     pub fn resolving(&self, finest: f64) -> Self {
         Self {
             rtol: self.rtol.min(finest),
+            // A tolerance tightened past the preset's is the high-order method's job.
+            method: if finest < self.rtol {
+                Method::Dop853
+            } else {
+                self.method
+            },
             ..*self
         }
     }
 
-    /// Solver settings for the integrations of a check (DOP853 at this bench's rtol).
+    /// Solver settings for the integrations of a check: this bench's method and rtol, atol =
+    /// 1e-2 rtol (the presets' rule).
     pub fn settings(&self) -> Settings {
         Settings {
-            method: Method::Dop853,
+            method: self.method,
             rtol: self.rtol,
             atol: self.rtol * 1e-2,
             ..Settings::default()

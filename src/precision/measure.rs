@@ -4,7 +4,7 @@
 use crate::dispatch::{dispatch, problem, Visit};
 use crate::model::Model;
 use crate::scene::Scene;
-use crate::solve::{solve, Ending, Settings, SettingsError, Stats};
+use crate::solve::{solve_with, Ending, Engine, Settings, SettingsError, Stats};
 use serde::Serialize;
 use std::time::Instant;
 
@@ -74,12 +74,24 @@ pub fn trace(
     sample: Option<f64>,
     timing: &Timing,
 ) -> Result<Trace, SettingsError> {
+    trace_with(scene, settings, sample, timing, Engine::Own)
+}
+
+/// [`trace`] with a chosen DOP853 engine (the crate's own, or `ode_solvers`' for comparison).
+pub fn trace_with(
+    scene: &Scene,
+    settings: &Settings,
+    sample: Option<f64>,
+    timing: &Timing,
+    engine: Engine,
+) -> Result<Trace, SettingsError> {
     dispatch(
         scene,
         TraceJob {
             settings,
             sample,
             timing,
+            engine,
         },
     )
 }
@@ -88,6 +100,7 @@ struct TraceJob<'a> {
     settings: &'a Settings,
     sample: Option<f64>,
     timing: &'a Timing,
+    engine: Engine,
 }
 
 impl Visit for TraceJob<'_> {
@@ -102,7 +115,7 @@ impl Visit for TraceJob<'_> {
         loop {
             let p = problem(model, scene, y0, t_end);
             let t = Instant::now();
-            let sol = solve(p, self.settings)?;
+            let sol = solve_with(p, self.settings, self.engine)?;
             walls.push(t.elapsed().as_secs_f64());
             first.get_or_insert(sol);
             let n = walls.len();
@@ -117,7 +130,11 @@ impl Visit for TraceJob<'_> {
         let (t_final, y_end) = sol.last();
         let (mut sample_t, mut samples) = (Vec::new(), Vec::new());
         if let Some(dt) = self.sample {
-            let s = solve(problem(model, scene, y0, t_end).sampled(dt), self.settings)?;
+            let s = solve_with(
+                problem(model, scene, y0, t_end).sampled(dt),
+                self.settings,
+                self.engine,
+            )?;
             debug_assert_eq!(s.stats.evaluations, sol.stats.evaluations);
             sample_t = s.t;
             samples = s.y.iter().map(|y| y.iter().copied().collect()).collect();

@@ -24,6 +24,7 @@
 //! error of the event time, $|t - t^{\rm ref}| / t^{\rm ref}$, joins the maximum.
 
 pub mod cost;
+pub mod drift;
 pub mod measure;
 pub mod preset;
 pub mod reference;
@@ -31,7 +32,8 @@ pub mod stable;
 pub mod study;
 
 pub use cost::{energy_drift, rhs_nanoseconds, Drift};
-pub use measure::{Timing, Trace};
+pub use drift::{long_time_drift, DriftRow, DriftTable};
+pub use measure::{trace_with, Timing, Trace};
 pub use preset::{measure_preset, Accuracy, PresetMeasurement};
 pub use reference::{Agreement, Reference, ReferenceOptions};
 pub use study::{cheapest, study, Cost, Point, Series, Study, StudyOptions};

@@ -14,11 +14,11 @@
 //! has not begun) and 100 times the reference's uncertainty (below it the reference and the
 //! round-off floor take over). Nominal orders: RK4 4, DOPRI5 5, DOP853 8.
 
-use super::measure::{trace, Timing};
+use super::measure::{trace_with, Timing};
 use super::reference::{label, Reference, ReferenceOptions};
 use crate::numerics::fit::log_log_slope;
 use crate::scene::Scene;
-use crate::solve::{Ending, Method, Settings, SettingsError};
+use crate::solve::{Ending, Engine, Method, Settings, SettingsError};
 use serde::Serialize;
 
 /// What to measure.
@@ -186,7 +186,24 @@ pub fn measure_point(
     reference: &Reference,
     timing: &Timing,
 ) -> Result<Point, SettingsError> {
-    let t = trace(scene, settings, Some(reference.sample_every), timing)?;
+    measure_point_with(scene, settings, reference, timing, Engine::Own)
+}
+
+/// [`measure_point`] with a chosen DOP853 engine.
+pub fn measure_point_with(
+    scene: &Scene,
+    settings: &Settings,
+    reference: &Reference,
+    timing: &Timing,
+    engine: Engine,
+) -> Result<Point, SettingsError> {
+    let t = trace_with(
+        scene,
+        settings,
+        Some(reference.sample_every),
+        timing,
+        engine,
+    )?;
     let (final_error, trajectory_error) = reference.errors(&t);
     Ok(Point {
         method: settings.method,

@@ -1,0 +1,254 @@
+#!/usr/bin/env python3
+"""Work-precision comparison of rolling-disk against SciPy and another Rust engine, in one run.
+
+The Rust side (`cargo bench --bench scipy_reference`) prints, as JSON, the benchmark scene's
+high-precision reference (with its validation) and the timings of the tool's own DOP853, of
+ode_solvers' DOP853 (the other Rust ODE crate) and of DOPRI5 over a tolerance sweep. This script
+then integrates the same equations of motion, eqs 23-25 of McDonald & McDonald (2001):
+
+    (2k+1) w1' + a' W sin(a) = 0                                            (23)
+    k W^2 sin(a) cos(a) + (2k+1) w1 W sin(a) - (k+1) a'' = (g/a) cos(a)     (24)
+    W' sin(a) + 2 a' W cos(a) + 2 w1 a' = 0                                 (25)
+
+with a plain-Python right-hand side (math module, a list returned: what a SciPy user writes),
+through solve_ivp (DOP853 and RK45) and through scipy.integrate.ode('dop853') (Hairer's dop853;
+since SciPy 1.15 a C translation of his Fortran), all with the tool's rule atol = 1e-2 rtol at
+rtol 1e-6, 1e-9, 1e-12. Every error is measured the same way against the same reference (per
+component, relative to the largest magnitude that component reaches on the reference, at the
+final time). It prints the machine, the date, a work-precision table and the ratios at equal
+error, and writes the table (JSON) and a figure (error against time and against evaluations).
+
+Usage: compare.py [--quick] [--out DIR] [--repeats N]
+"""
+
+import argparse
+import datetime
+import json
+import math
+import os
+import platform
+import statistics
+import subprocess
+import sys
+import time
+
+import scipy
+from scipy.integrate import ode, solve_ivp
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+RTOLS = [1e-6, 1e-9, 1e-12]
+
+
+def machine():
+    cpu = platform.processor() or "unknown cpu"
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    cpu = line.split(":", 1)[1].strip()
+                    break
+    except OSError:
+        pass
+    return {
+        "date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
+        "cpu": cpu,
+        "cores": os.cpu_count(),
+        "system": f"{platform.system()} {platform.release()}",
+        "python": platform.python_version(),
+        "scipy": scipy.__version__,
+    }
+
+
+def rust_side(quick):
+    cmd = ["cargo", "bench", "--quiet", "--bench", "scipy_reference", "--"]
+    if quick:
+        cmd.append("--quick")
+    print("running:", " ".join(cmd), file=sys.stderr)
+    out = subprocess.run(cmd, cwd=ROOT, check=True, stdout=subprocess.PIPE, text=True)
+    return json.loads(out.stdout)
+
+
+def plain_rhs(disk, counter):
+    k, g_a = disk["k"], disk["g"] / disk["a"]
+
+    def f(_t, y):
+        counter[0] += 1
+        alpha, alpha_dot, om, w = y
+        s, c = math.sin(alpha), math.cos(alpha)
+        return [
+            alpha_dot,
+            (k * om * om * s * c + (2.0 * k + 1.0) * w * om * s - g_a * c) / (k + 1.0),
+            -(2.0 * alpha_dot * om * c + 2.0 * w * alpha_dot) / s,
+            -alpha_dot * om * s / (2.0 * k + 1.0),
+        ]
+
+    return f
+
+
+def error(y, ref, scale):
+    return max(abs(a - b) / s for a, b, s in zip(y, ref, scale))
+
+
+def timed(run, repeats, budget):
+    walls, result = [], None
+    start = time.perf_counter()
+    for i in range(repeats):
+        t = time.perf_counter()
+        result = run()
+        walls.append(time.perf_counter() - t)
+        if i >= 1 and time.perf_counter() - start > budget:
+            break
+    return statistics.median(walls), len(walls), result
+
+
+def python_runs(data, repeats, budget):
+    s = data["start"]
+    y0 = [s["alpha"], s["alpha_dot"], s["precession"], s["spin"]]
+    t_end = data["t_end"]
+    ref, scale = data["reference"]["y_final"], data["reference"]["scale"]
+    rows = []
+    for rtol in RTOLS:
+        atol = data["atol_per_rtol"] * rtol
+        for method in ["DOP853", "RK45"]:
+            count = [0]
+            f = plain_rhs(data["disk"], count)
+
+            def ivp(f=f, method=method):
+                return solve_ivp(f, (0.0, t_end), y0, method=method, rtol=rtol, atol=atol)
+
+            wall, n, sol = timed(ivp, repeats, budget)
+            rows.append({
+                "solver": f"solve_ivp {method}", "rtol": rtol, "atol": atol,
+                "evaluations": int(sol.nfev), "wall_seconds": wall, "runs": n,
+                "final_error": error(sol.y[:, -1], ref, scale),
+            })
+        count = [0]
+        f = plain_rhs(data["disk"], count)
+
+        def fortran(f=f):
+            r = ode(f).set_integrator("dop853", rtol=rtol, atol=atol, nsteps=10**7)
+            r.set_initial_value(y0, 0.0)
+            y = r.integrate(t_end)
+            if not r.successful():
+                raise RuntimeError(f"dop853 failed at rtol {rtol}")
+            return y
+
+        count[0] = 0
+        fortran()
+        evals = count[0]
+        wall, n, y = timed(fortran, repeats, budget)
+        rows.append({
+            "solver": "ode dop853 (Hairer)", "rtol": rtol, "atol": atol,
+            "evaluations": evals, "wall_seconds": wall, "runs": n,
+            "final_error": error(y, ref, scale),
+        })
+    return rows
+
+
+def at_error(points, err, key):
+    """`key` (wall_seconds or evaluations) of a solver at final error `err`: log-log
+    interpolation along its measured curve made monotone (the cheapest run reaching each
+    error); the nearest end beyond the measured range."""
+    pts = sorted((p["final_error"], p[key]) for p in points if p["final_error"] > 0)
+    env = [(e, min(v for e2, v in pts if e2 <= e)) for e, _ in pts]
+    for (e0, v0), (e1, v1) in zip(env, env[1:]):
+        if e0 <= err <= e1 and e1 > e0:
+            f = (math.log(err) - math.log(e0)) / (math.log(e1) - math.log(e0))
+            return math.exp(math.log(v0) + f * (math.log(v1) - math.log(v0)))
+    if not env:
+        return float("nan")
+    return env[0][1] if err < env[0][0] else env[-1][1]
+
+
+def figure(rust, rows, path):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    series = {}
+    for p in rust:
+        series.setdefault(f"rolling-disk {p['method']}" if p["method"] != "ode_solvers dop853"
+                          else "ode_solvers dop853 (Rust)", []).append(p)
+    for r in rows:
+        series.setdefault(r["solver"], []).append(r)
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
+    for name, pts in sorted(series.items()):
+        pts = sorted(pts, key=lambda p: p["rtol"])
+        errs = [max(p["final_error"], 1e-17) for p in pts]
+        axes[0].loglog([p["wall_seconds"] for p in pts], errs, "o-", label=name, ms=3)
+        axes[1].loglog([p["evaluations"] for p in pts], errs, "o-", label=name, ms=3)
+    axes[0].set_xlabel("wall time of one integration [s]")
+    axes[1].set_xlabel("right-hand-side evaluations")
+    for ax in axes:
+        ax.set_ylabel("final error (relative to each component's range)")
+        ax.grid(True, which="both", alpha=0.3)
+    axes[1].legend(fontsize=7)
+    fig.suptitle("Benchmark scene, 10 s: work against precision")
+    fig.tight_layout()
+    fig.savefig(path)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true", help="time each point once")
+    ap.add_argument("--out", default=os.path.join(ROOT, "target", "compare"))
+    ap.add_argument("--repeats", type=int, default=15, help="most timed runs per Python point")
+    args = ap.parse_args()
+    repeats, budget = (1, 0.0) if args.quick else (args.repeats, 2.0)
+
+    info = machine()
+    data = rust_side(args.quick)
+    ref = data["reference"]
+    print(f"{info['date']}; {info['cpu']} ({info['cores']} cores), {info['system']}; "
+          f"Python {info['python']}, SciPy {info['scipy']}")
+    print(f"scene {data['scene']}: {data['t_end']} s; reference {ref['settings']['method']} "
+          f"rtol {ref['settings']['rtol']:.0e}, uncertainty {ref['uncertainty']:.1e}")
+    rows = python_runs(data, repeats, budget)
+    rust = data["rust"]
+    ours = [p for p in rust if p["method"] == "dop853"]
+
+    print()
+    print(f"{'solver':<24}{'rtol':>7}{'evals':>9}{'wall [s]':>11}{'error':>10}"
+          f"{'tool evals@err':>16}{'tool time@err':>15}{'time ratio':>12}")
+    for p in rust:
+        if any(abs(p["rtol"] - r) < 1e-3 * r for r in RTOLS):
+            name = p["method"] if p["method"] == "ode_solvers dop853" else f"rolling-disk {p['method']}"
+            print(f"{name:<24}{p['rtol']:>7.0e}{p['evaluations']:>9}{p['wall_seconds']:>11.3e}"
+                  f"{p['final_error']:>10.1e}")
+    others = rows + [dict(p, solver="ode_solvers dop853") for p in rust
+                     if p["method"] == "ode_solvers dop853"
+                     and any(abs(p["rtol"] - r) < 1e-3 * r for r in RTOLS)]
+    for r in others:
+        ev = at_error(ours, r["final_error"], "evaluations")
+        wt = at_error(ours, r["final_error"], "wall_seconds")
+        r["tool_evaluations_at_equal_error"] = ev
+        r["tool_seconds_at_equal_error"] = wt
+        r["time_ratio_at_equal_error"] = r["wall_seconds"] / wt
+        print(f"{r['solver']:<24}{r['rtol']:>7.0e}{r['evaluations']:>9}{r['wall_seconds']:>11.3e}"
+              f"{r['final_error']:>10.1e}{ev:>16.0f}{wt:>15.3e}{r['time_ratio_at_equal_error']:>11.1f}x")
+
+    print()
+    for name in ["solve_ivp DOP853", "solve_ivp RK45", "ode dop853 (Hairer)", "ode_solvers dop853"]:
+        sel = [r for r in others if r["solver"] == name]
+        if sel:
+            ratios = [r["time_ratio_at_equal_error"] for r in sel]
+            evr = [r["evaluations"] / r["tool_evaluations_at_equal_error"] for r in sel]
+            print(f"{name:<22} at equal error: {min(ratios):.0f}x to {max(ratios):.0f}x the tool's "
+                  f"time, {min(evr):.2f}x to {max(evr):.2f}x its evaluations")
+    ns = data["rhs_nanoseconds"]
+    over = [p["wall_seconds"] / (p["evaluations"] * ns * 1e-9) - 1.0 for p in ours]
+    print(f"one right-hand side: {ns:.1f} ns; tool's DOP853 overhead per evaluation: "
+          f"{min(over):.2f} to {max(over):.2f} times the right-hand side (target <= 0.5)")
+
+    os.makedirs(args.out, exist_ok=True)
+    with open(os.path.join(args.out, "compare.json"), "w") as f:
+        json.dump({"machine": info, "reference": ref, "rust": rust, "python": rows,
+                   "rhs_nanoseconds": ns}, f, indent=1)
+    fig_path = os.path.join(args.out, "work_precision.svg")
+    figure(rust, rows, fig_path)
+    print(f"wrote {os.path.join(args.out, 'compare.json')} and {fig_path}")
+
+
+if __name__ == "__main__":
+    main()

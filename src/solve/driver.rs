@@ -1,0 +1,231 @@
+//! Drives the crate's own DOP853 ([`super::dop853`]) over a [`Problem`]: the step loop, the
+//! step limit, the wall-time budget, progress, stop events and sampling.
+//!
+//! Events use the dense output of the step they fall in, so locating one costs three
+//! evaluations and no re-integration. Samples are re-integrated from the start of their step:
+//! the interpolant is a little less accurate than the steps, and checks that fit small residuals
+//! over sampled trajectories (eq 44's) see the difference. An event crossing is seen
+//! on the step ends, as with `ode_solvers`, and located by bisection on the step's interpolant
+//! to [`EVENT_TIME_TOLERANCE`].
+
+use super::dop853::{Dense, Dop853, Outcome};
+use super::{Dynamics, Ending, Event, Problem, Settings, Solution, State, EVENT_TIME_TOLERANCE};
+use crate::budget::Deadline;
+
+/// Where the samples stand: the next sample index and the rows written so far.
+struct Sampler<const N: usize> {
+    t0: f64,
+    dt: f64,
+    next: u64,
+    t: Vec<f64>,
+    y: Vec<State<N>>,
+}
+
+impl<const N: usize> Sampler<N> {
+    fn time(&self, n: u64) -> f64 {
+        self.t0 + self.dt * n as f64
+    }
+
+    /// Writes the samples strictly before `t_stop` (by a margin of 1e-12 relative) that lie in
+    /// the step from `(t_a, y_a)` to `t_b`, each re-integrated from the step's start (the
+    /// interpolant of order 7 is less accurate than the steps themselves, and a check that
+    /// fits a small residual over the samples would see it).
+    #[allow(clippy::too_many_arguments)]
+    fn fill<D: Dynamics<N>>(
+        &mut self,
+        f: &D,
+        settings: &Settings,
+        t_a: f64,
+        y_a: State<N>,
+        t_b: f64,
+        t_stop: f64,
+        extra: &mut u64,
+    ) {
+        let guard = t_stop - 1e-12 * self.dt.max(t_stop.abs());
+        loop {
+            let t = self.time(self.next);
+            if t > t_b || t >= guard {
+                return;
+            }
+            self.t.push(t);
+            self.y.push(advance(f, settings, t_a, y_a, t - t_a, extra));
+            self.next += 1;
+        }
+    }
+}
+
+/// The state at `t_a + tau` re-integrated from `(t_a, y_a)` with the same tolerances, first
+/// trying the whole interval in one step; its evaluations are added to `extra`.
+fn advance<D: Dynamics<N>, const N: usize>(
+    f: &D,
+    settings: &Settings,
+    t_a: f64,
+    y_a: State<N>,
+    tau: f64,
+    extra: &mut u64,
+) -> State<N> {
+    if tau <= 0.0 {
+        return y_a;
+    }
+    let t_b = t_a + tau;
+    let mut s = Dop853::with_first_step(f, settings.rtol, settings.atol, t_a, y_a, tau);
+    while s.t < t_b {
+        if s.step(t_b) != Outcome::Accepted {
+            break;
+        }
+    }
+    *extra += s.stats.evaluations;
+    s.y
+}
+
+/// The earliest event that crossed in the step of `dense` from `t_a` to `t_b`, located by
+/// bisection on the interpolant: its index, time and the interpolated state there (where it
+/// holds).
+fn locate<const N: usize>(
+    events: &[Event<'_, N>],
+    dense: &Dense<N>,
+    t_a: f64,
+    t_b: f64,
+    y_b: State<N>,
+) -> (usize, f64, State<N>) {
+    let mut best: Option<(usize, f64, State<N>)> = None;
+    for (i, e) in events.iter().enumerate() {
+        if (e.value)(&y_b) > 0.0 {
+            continue;
+        }
+        let (mut lo, mut hi) = (0.0, t_b - t_a);
+        let mut y_hi = y_b;
+        while hi - lo > EVENT_TIME_TOLERANCE * 0.5 {
+            let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
+            }
+            let y_mid = dense.at(t_a + mid);
+            if (e.value)(&y_mid) <= 0.0 {
+                hi = mid;
+                y_hi = y_mid;
+            } else {
+                lo = mid;
+            }
+        }
+        if best.as_ref().is_none_or(|b| t_a + hi < b.1) {
+            best = Some((i, t_a + hi, y_hi));
+        }
+    }
+    best.unwrap_or((0, t_b, y_b))
+}
+
+/// Integrates a checked problem (see [`super::solve`]) from a start at which no event holds.
+pub(super) fn run<D: Dynamics<N>, const N: usize>(
+    problem: Problem<'_, D, N>,
+    settings: &Settings,
+    deadline: Deadline,
+) -> Solution<N> {
+    let (t0, y0, t_end) = (problem.t0, problem.y0, problem.t_end);
+    let mut s = Dop853::new(
+        problem.dynamics,
+        settings.rtol,
+        settings.atol,
+        t0,
+        y0,
+        t_end - t0,
+    );
+    let mut sampler = problem.sample.map(|dt| Sampler {
+        t0,
+        dt,
+        next: 0,
+        t: Vec::new(),
+        y: Vec::new(),
+    });
+    let (mut ts, mut ys) = (vec![t0], vec![y0]);
+    // The last point reached where the state is finite (and no event has fired before).
+    let mut last = (t0, y0);
+    let mut attempts: u64 = 0;
+    let max_steps = u64::from(settings.max_steps);
+    let ending = loop {
+        if s.t >= t_end {
+            break Ending::TimeReached;
+        }
+        let before = s.stats.accepted + s.stats.rejected;
+        if attempts >= max_steps {
+            break Ending::TooManySteps {
+                t: s.t,
+                steps: settings.max_steps,
+            };
+        }
+        let (t_a, y_a) = (s.t, s.y);
+        match s.step(t_end) {
+            Outcome::Collapse => break Ending::StepCollapse { t: s.t },
+            Outcome::Stiff => break Ending::Stiff { t: s.t },
+            Outcome::Accepted => {}
+        }
+        attempts += (s.stats.accepted + s.stats.rejected - before).max(1);
+        let (t_b, y_b) = (s.t, s.y);
+        if !y_b.iter().all(|v| v.is_finite()) {
+            break Ending::NonFinite { t: t_b };
+        }
+        if problem.events.iter().any(|e| (e.value)(&y_b) <= 0.0) {
+            let d = s.dense();
+            let (index, t_e, y_e) = locate(&problem.events, &d, t_a, t_b, y_b);
+            if let Some(sm) = sampler.as_mut() {
+                let mut extra = 0;
+                sm.fill(problem.dynamics, settings, t_a, y_a, t_e, t_e, &mut extra);
+                s.stats.extra_evaluations += extra;
+            }
+            last = (t_e, y_e);
+            break Ending::Event {
+                index,
+                name: problem.events[index].name.clone(),
+                t: t_e,
+            };
+        }
+        match sampler.as_mut() {
+            Some(sm) => {
+                let mut extra = 0;
+                sm.fill(problem.dynamics, settings, t_a, y_a, t_b, t_end, &mut extra);
+                s.stats.extra_evaluations += extra;
+            }
+            None => {
+                ts.push(t_b);
+                ys.push(y_b);
+            }
+        }
+        last = (t_b, y_b);
+        let n = s.stats.accepted;
+        if n.is_multiple_of(256) {
+            if let Some(p) = problem.progress {
+                p(t_b);
+            }
+        }
+        if n.is_multiple_of(64) && deadline.passed() {
+            break Ending::WallTime {
+                t: t_b,
+                seconds: deadline.seconds(),
+            };
+        }
+    };
+    if let Some(p) = problem.progress {
+        p(last.0);
+    }
+    let (t, y) = match sampler {
+        Some(mut sm) => {
+            sm.t.push(last.0);
+            sm.y.push(last.1);
+            (sm.t, sm.y)
+        }
+        None => {
+            if matches!(ending, Ending::Event { .. }) {
+                ts.push(last.0);
+                ys.push(last.1);
+            }
+            (ts, ys)
+        }
+    };
+    let stats = s.stats;
+    Solution {
+        t,
+        y,
+        stats,
+        ending,
+    }
+}
