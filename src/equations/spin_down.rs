@@ -65,8 +65,8 @@ impl Dynamics<5> for WithWork {
 /// $-1/\frac{d}{dt}\langle\Omega^{-(\beta+2)}\rangle$, both from least-squares slopes over the
 /// samples (which average the nutation out). The start's tilt rate is set to the adiabatic
 /// estimate $-\frac23\epsilon\Omega^\beta/\cos\alpha_0$ to excite little nutation. The runs
-/// depend on the solver's rtol and the disk only, never on the paper, so they are computed once
-/// per process and shared by the checks of eqs 76-79 and 84 ([`descent`]).
+/// depend on the solver's method and rtol and the disk only, never on the paper, so they are
+/// computed once per process and shared by the checks of eqs 76-79 and 84 ([`descent`]).
 pub(crate) struct Descent {
     pub(crate) c: f64,
     pub(crate) epsilon: f64,
@@ -86,9 +86,9 @@ pub(crate) fn slope(x: &[f64], y: &[f64]) -> f64 {
 }
 
 pub(crate) fn descent(b: &Bench, d: &Disk, beta: f64, alpha0: f64) -> Option<Arc<Descent>> {
-    type Key = [u64; 4];
+    type Key = ([u64; 4], crate::solve::Method);
     static RUNS: OnceLock<Mutex<HashMap<Key, Option<Arc<Descent>>>>> = OnceLock::new();
-    let key = [b.rtol, d.k, beta, alpha0].map(f64::to_bits);
+    let key = ([b.rtol, d.k, beta, alpha0].map(f64::to_bits), b.method);
     let runs = RUNS.get_or_init(Default::default);
     if let Some(found) = runs.lock().unwrap_or_else(|p| p.into_inner()).get(&key) {
         return found.clone();

@@ -7,7 +7,7 @@ use std::fmt;
 use thiserror::Error;
 
 /// The integration method.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Method {
     /// Classical Runge-Kutta of order 4 with a fixed step.
