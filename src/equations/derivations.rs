@@ -9,7 +9,7 @@
 //! while all its premises hold cannot follow from them): the chain of section 11.
 
 use super::spin_down::{derivation_from_eq76, disk, law_bindings, printed_c, SMALL_ALPHAS};
-use super::{printed_relations, solve_printed, worst_order, Bench, Derivation};
+use super::{last_side, printed_relations, solve_printed, worst_order, Bench, Derivation};
 use crate::finding::{Finding, Method, Tolerance, Worst};
 use crate::model::dissipation::PowerLaw;
 use crate::paper::{Bindings, Relation};
@@ -104,8 +104,8 @@ pub fn eq73_from_eq72(b: &Bench) -> Finding {
 /// $P = -\epsilon m a g\Omega^\beta$, put into $P \approx \frac52 m a g\dot\alpha$ and solved for
 /// $\dot\alpha$ (a root of the printed relation between eq 73's first and last sides), against the
 /// $\dot\alpha$ eq 76 prints, at tilts and rates over the sweep of the section (k = 1/4, 1/2;
-/// beta = 1, 2, 4; $\Omega$ from 10 to 1000 rad/s). Eq 76's second relation (its small-angle form
-/// of eq 31) is judged by eq 76's own check.
+/// beta = 1, 2, 4; $\Omega$ from 10 to 1000 rad/s). Its second relation (the small-angle form of
+/// eq 31) is derived from the first with eq 31 as printed ([`eq76_second_from_eq31`]).
 pub fn eq76_from_eqs73_75(b: &Bench) -> Finding {
     let (eq73, eq75, eq76) = (
         b.paper.equation(73),
@@ -137,11 +137,7 @@ pub fn eq76_from_eqs73_75(b: &Bench) -> Finding {
                     beta,
                 };
                 let bind = law_bindings(&d, &law).scalar("Omega", omega);
-                let power = eq75.chains[0]
-                    .sides
-                    .last()
-                    .and_then(|e| eq75.scalar(e, &bind).ok())
-                    .unwrap_or(f64::NAN);
+                let power = last_side(eq75, &bind);
                 let scale = (power / (d.m * d.a * d.g)).abs();
                 let derived = solve_printed(
                     eq73,
@@ -182,7 +178,7 @@ pub fn eq76_from_eqs73_75(b: &Bench) -> Finding {
 /// ($\Omega_0^2 = g/ak\sin\alpha_0$) at each tilt: a small-angle form, whose relative error must
 /// fall at the order eq 76 claims (k = 1/4, 1/2; beta = 1, 2, 4).
 fn eq76_second_from_eq31(b: &Bench) -> Finding {
-    let (eq31, eq76) = (b.paper.equation(31), b.paper.equation(76));
+    let eq76 = b.paper.equation(76);
     let rels = eq76.relations();
     let mut errors = vec![0.0f64; SMALL_ALPHAS.len()];
     for &k in &[0.25, 0.5] {
@@ -193,13 +189,8 @@ fn eq76_second_from_eq31(b: &Bench) -> Finding {
                 beta,
             };
             for (i, &alpha) in SMALL_ALPHAS.iter().enumerate() {
-                let bind = law_bindings(&d, &law).scalar("alpha_0", alpha);
-                let guess = (d.g / (d.a * k * alpha)).sqrt();
-                let omega = eq31
-                    .relations()
-                    .first()
-                    .and_then(|r| solve_printed(eq31, r, "Omega_0", &bind, 0.0, 1e3 * guess))
-                    .unwrap_or(f64::NAN);
+                let bind = law_bindings(&d, &law);
+                let omega = omega_from_eq31(b, &d, alpha, &bind);
                 let at = bind.scalar("alpha", alpha).scalar("Omega", omega);
                 let e = match (rels.first(), rels.get(1)) {
                     (Some(r1), Some(r2)) => {
@@ -284,11 +275,7 @@ pub fn eq78_from_eq77(b: &Bench) -> Finding {
 /// uses $\sin\alpha \approx \alpha$, so its relative error must fall at the order eq 76 claims as
 /// the tilt shrinks (times chosen so that eq 78 gives the tilts 0.2 ... 0.0125).
 pub fn eq79_from_eqs78_31(b: &Bench) -> Finding {
-    let (eq31, eq78, eq79) = (
-        b.paper.equation(31),
-        b.paper.equation(78),
-        b.paper.equation(79),
-    );
+    let (eq78, eq79) = (b.paper.equation(78), b.paper.equation(79));
     let mut errors = vec![0.0f64; SMALL_ALPHAS.len()];
     for &k in &[0.25, 0.5] {
         let d = disk(k);
@@ -317,15 +304,7 @@ pub fn eq79_from_eqs78_31(b: &Bench) -> Finding {
                     .unwrap_or(f64::NAN);
                 let bind = base.scalar("t_0", t0);
                 let tilt = last_side(eq78, &bind);
-                let omega = eq31
-                    .relations()
-                    .first()
-                    .and_then(|r| {
-                        let at = bind.clone().scalar("alpha_0", tilt);
-                        let guess = (d.g / (d.a * k * tilt)).sqrt();
-                        solve_printed(eq31, r, "Omega_0", &at, 0.0, 1e3 * guess)
-                    })
-                    .unwrap_or(f64::NAN);
+                let omega = omega_from_eq31(b, &d, tilt, &bind);
                 let first = eq79
                     .relations()
                     .first()
@@ -377,12 +356,17 @@ pub fn eq84_from_eq79(b: &Bench) -> Finding {
     )
 }
 
-/// The value of an equation's last printed side (NaN if it cannot be evaluated).
-fn last_side(eq: &crate::paper::Equation, bind: &Bindings<f64>) -> f64 {
-    eq.chains[0]
-        .sides
-        .last()
-        .and_then(|e| eq.scalar(e, bind).ok())
+/// $\Omega_0$ solved from eq 31 AS PRINTED ($\Omega_0^2 = g/ak\sin\alpha_0$) at the tilt
+/// `alpha` for disk `d`, the other symbols bound by `bind` (NaN if it has no root).
+fn omega_from_eq31(b: &Bench, d: &crate::disk::Disk, alpha: f64, bind: &Bindings<f64>) -> f64 {
+    let eq31 = b.paper.equation(31);
+    let guess = (d.g / (d.a * d.k * alpha)).sqrt();
+    eq31.relations()
+        .first()
+        .and_then(|r| {
+            let at = bind.clone().scalar("alpha_0", alpha);
+            solve_printed(eq31, r, "Omega_0", &at, 0.0, 1e3 * guess)
+        })
         .unwrap_or(f64::NAN)
 }
 

@@ -16,7 +16,7 @@ use super::spin_down::{
     descent, disk, energy, law_bindings, slope, steady_precession, time_remaining_on_model,
     PrintedLaw, BETAS, SMALL_ALPHAS,
 };
-use super::{printed_relations, solve_printed, Bench, Equation};
+use super::{last_side, printed_relations, solve_printed, Bench, Equation};
 use crate::finding::{Finding, Headline, Method, Tolerance, Worst};
 use crate::model::dissipation::PowerLaw;
 use crate::model::rolling::Rolling;
@@ -141,10 +141,7 @@ fn eq72_at(b: &Bench, c0: f64) -> Finding {
             let eq = b.paper.equation(72);
             if k == 0.25 && i == SMALL_ALPHAS.len() - 1 {
                 let unit = d.m * d.g * d.a * alpha;
-                let last = eq.chains[0].sides.last();
-                let printed = last
-                    .and_then(|e| eq.scalar(e, &bind).ok())
-                    .unwrap_or(f64::NAN);
+                let printed = last_side(eq, &bind);
                 headline = Some(Headline::new(
                     format!(
                         "U / (m g a alpha) at alpha_dot^2 = {c0} g alpha / a (eq 72's last form)"
@@ -243,11 +240,7 @@ pub fn eq73(b: &Bench) -> Finding {
             }
             if k == 0.25 && i == SMALL_ALPHAS.len() - 1 {
                 let coefficient = d.m * d.a * d.g * alpha_dot;
-                let printed = eq.chains[0]
-                    .sides
-                    .last()
-                    .and_then(|e| eq.scalar(e, &bind).ok())
-                    .unwrap_or(f64::NAN);
+                let printed = last_side(eq, &bind);
                 headline = Some(Headline::new(
                     "P / (m a g alpha_dot) where F_z = 0 (eq 73's last form; the exact rate gives 1/2 - k)",
                     printed / coefficient,
@@ -678,11 +671,7 @@ pub fn eq83(b: &Bench) -> Finding {
             .scalar("t", 7.27 - tau);
             // Eq 82 as printed gives alpha; the small-angle precession gives Omega.
             let eq82 = b.paper.equation(82);
-            let alpha = eq82.chains[0]
-                .sides
-                .last()
-                .and_then(|e| eq82.scalar(e, &bind).ok())
-                .unwrap_or(f64::NAN);
+            let alpha = last_side(eq82, &bind);
             let reference = (d.g / (d.a * k * alpha)).sqrt();
             printed_relations(
                 b,

@@ -326,6 +326,17 @@ pub(crate) fn printed_relation(
     }
 }
 
+/// The value of an equation's last printed side (its final form) with the symbols bound by
+/// `bind`; NaN if it cannot be evaluated (a symbol the caller does not provide, say after an
+/// author's edit), so that the check using it fails and says so.
+pub(crate) fn last_side(eq: &crate::paper::Equation, bind: &crate::paper::Bindings<f64>) -> f64 {
+    eq.chains[0]
+        .sides
+        .last()
+        .and_then(|e| eq.scalar(e, bind).ok())
+        .unwrap_or(f64::NAN)
+}
+
 /// The value of `quantity` that makes the printed relation `rel` of `eq` hold, the others bound
 /// by `bind`: the root of (left side - right side) in `[lo, hi]`, located by bisection to the
 /// last bit. `None` when the relation does not change sign there or cannot be evaluated. This is
