@@ -8,7 +8,7 @@ use crate::model::lab_frame::{Contact, LabFrame};
 use crate::model::rolling::Rolling;
 use crate::model::{Layout, Model, Quantity};
 use crate::scene::{ModelKind, Scene};
-use crate::solve::{Event, Problem, State};
+use crate::solve::{onto_level, Event, Problem, Projection, State};
 
 /// Something done with a scene's model, whatever its number of states.
 pub(crate) trait Visit {
@@ -82,6 +82,12 @@ pub(crate) fn problem<'a, M: Model<N>, const N: usize>(
             "the disk fell flat on the table (alpha reached pi)",
             move |y: &State<N>| std::f64::consts::PI - model.motion(y).alpha,
         ));
+    if scene.projection == Some(Projection::Energy) {
+        let e0 = model.energy(&y0);
+        p.project = Some(Box::new(move |y: &mut State<N>| {
+            onto_level(|y| model.energy(y), e0, y)
+        }));
+    }
     if let Some(bound) = scene.stop.alpha_below {
         p = p.stop_when(Event::new(
             format!("alpha fell below {bound} rad"),

@@ -216,4 +216,27 @@ fn high_preset_keeps_the_energy_over_ten_thousand_periods() {
         high.drift.max_abs_drift
     );
     assert!(table.rows[0].drift.max_abs_drift > high.drift.max_abs_drift);
+
+    // With `project: energy`, the DOP853 presets (standard, high) again: the energy stays at
+    // round-off by construction, each step costs one more evaluation, and the run still ends.
+    assert_eq!(table.projected.len(), 2);
+    for (p, free) in table.projected.iter().zip(&table.rows[1..]) {
+        eprintln!(
+            "{:<8} projected: max |dE/E| {:.2e}, {} evaluations ({} without)",
+            p.accuracy.to_string(),
+            p.drift.max_abs_drift,
+            p.drift.evaluations,
+            free.drift.evaluations
+        );
+        assert_eq!(p.accuracy, free.accuracy);
+        assert!(p.drift.ending.is_complete(), "{:?}", p.drift.ending);
+        assert!(
+            p.drift.max_abs_drift < 1e-14,
+            "{}: projected drift {:e}",
+            p.accuracy,
+            p.drift.max_abs_drift
+        );
+        assert!(p.drift.evaluations > free.drift.evaluations);
+    }
+    assert!(table.projected[0].drift.max_abs_drift < table.rows[1].drift.max_abs_drift / 10.0);
 }

@@ -236,3 +236,48 @@ record: [alpha]
         r.last.alpha
     );
 }
+
+/// `solver: { project: energy }`: a rolling run keeps its energy at round-off (the run without
+/// drifts more), and the scenes where a projection means nothing are refused at the key.
+#[test]
+fn projection_onto_the_energy_holds_it_and_is_refused_where_it_means_nothing() {
+    let base = GOOD
+        .replace(
+            "start: { steady: { alpha0: 0.3, b: 0.0 } }",
+            "start: { explicit: { alpha: 1.2, alpha_dot: 0.5, precession: 10.0, spin: 5.0 } }",
+        )
+        .replace("stop: { time: 1.0 }", "stop: { time: 20.0 }")
+        + "solver: { method: dop853, rtol: 1.0e-6, atol: 1.0e-8 }\n";
+    let projected = base.replace("atol: 1.0e-8 }", "atol: 1.0e-8, project: energy }");
+    let free = run(&Scene::parse(&base, "free.yaml").unwrap(), None).unwrap();
+    let held = run(&Scene::parse(&projected, "held.yaml").unwrap(), None).unwrap();
+    eprintln!(
+        "energy change: free {:e} ({} evaluations), projected {:e} ({} evaluations)",
+        free.energy_change, free.stats.evaluations, held.energy_change, held.stats.evaluations
+    );
+    assert_eq!(held.ending, Ending::TimeReached);
+    assert!(
+        held.energy_change < 1e-14,
+        "projected: {:e}",
+        held.energy_change
+    );
+    assert!(
+        free.energy_change > 100.0 * held.energy_change.max(1e-16),
+        "free {:e}, projected {:e}",
+        free.energy_change,
+        held.energy_change
+    );
+    let dissipative = projected.replace(
+        "model: rolling",
+        "model: dissipative\ndissipation: { epsilon: 1.0e-6, beta: 2 }",
+    );
+    let e = error_of(&dissipative);
+    assert!(e.contains("solver.project") || e.contains("project"), "{e}");
+    assert!(e.contains("conserves the energy"), "{e}");
+    let rk4 = projected.replace("method: dop853", "method: rk4");
+    let e = error_of(&rk4);
+    assert!(e.contains("needs method: dop853"), "{e}");
+    let unknown = projected.replace("project: energy", "project: momentum");
+    let e = error_of(&unknown);
+    assert!(e.contains("energy"), "{e}");
+}

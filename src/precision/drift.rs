@@ -11,6 +11,7 @@ use super::cost::{energy_drift, Drift};
 use super::preset::Accuracy;
 use super::PrecisionError;
 use crate::scene::Scene;
+use crate::solve::{Method, Projection};
 use serde::Serialize;
 
 /// The drift of one scene for every preset.
@@ -22,6 +23,9 @@ pub struct DriftTable {
     pub periods: f64,
     /// One row per preset, from the fastest.
     pub rows: Vec<DriftRow>,
+    /// The same with every step projected back onto the start's energy
+    /// (`solver: { project: energy }`), for the presets whose method can project (DOP853).
+    pub projected: Vec<DriftRow>,
 }
 
 /// One preset's drift.
@@ -34,23 +38,39 @@ pub struct DriftRow {
 }
 
 /// Integrates `scene` over `periods` precession periods of its start with each preset, in
-/// `checkpoints` chunks, and measures the energy drift of each.
+/// `checkpoints` chunks, and measures the energy drift of each; then again, projected onto the
+/// energy after every step, with the presets that can project.
 pub fn long_time_drift(
     scene: &Scene,
     periods: f64,
     checkpoints: u32,
 ) -> Result<DriftTable, PrecisionError> {
+    let free = Scene {
+        projection: None,
+        ..scene.clone()
+    };
+    let projecting = Scene {
+        projection: Some(Projection::Energy),
+        ..scene.clone()
+    };
+    let run = |scene: &Scene, accuracy: Accuracy| {
+        let settings = accuracy.apply(scene).settings;
+        energy_drift(scene, &settings, periods, checkpoints)
+            .map(|drift| DriftRow { accuracy, drift })
+    };
     let rows = Accuracy::ALL
         .iter()
-        .map(|&accuracy| {
-            let settings = accuracy.apply(scene).settings;
-            energy_drift(scene, &settings, periods, checkpoints)
-                .map(|drift| DriftRow { accuracy, drift })
-        })
+        .map(|&accuracy| run(&free, accuracy))
+        .collect::<Result<Vec<_>, _>>()?;
+    let projected = Accuracy::ALL
+        .iter()
+        .filter(|a| a.settings().method == Method::Dop853)
+        .map(|&accuracy| run(&projecting, accuracy))
         .collect::<Result<Vec<_>, _>>()?;
     Ok(DriftTable {
         scene: scene.name.clone(),
         periods,
         rows,
+        projected,
     })
 }

@@ -8,7 +8,7 @@
 //! start: { steady: { alpha0: 0.3, b: 0.0 }, perturb: { alpha: 1.0e-4 } }
 //! stop: { time: 10.0 }      # plus, optionally, alpha_below: 0.01 and/or lift_off: true
 //! record: [alpha, precession, spin]
-//! solver: { method: dop853, rtol: 1.0e-10, atol: 1.0e-12 }
+//! solver: { method: dop853, rtol: 1.0e-10, atol: 1.0e-12 }   # optionally project: energy
 //! ```
 //! Every key is checked: an unknown one is an error, and so is every value with no physical
 //! meaning; the error names the file, the line and what to change.
@@ -27,7 +27,7 @@ use crate::model::dissipation::PowerLaw;
 use crate::model::sliding::{Friction, Slip};
 use crate::model::steady::{rolling_straight, steady_motion, vertical_spin, SteadyError};
 use crate::model::{Extras, Motion, Quantity};
-use crate::solve::{Method, Settings};
+use crate::solve::{Method, Projection, Settings};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 use std::fmt;
@@ -193,6 +193,8 @@ struct SolverSpec {
     step: f64,
     #[serde(default = "default_max_steps")]
     max_steps: u32,
+    #[serde(default)]
+    project: Option<Projection>,
 }
 
 fn default_method() -> Method {
@@ -219,6 +221,7 @@ impl Default for SolverSpec {
             atol: default_atol(),
             step: default_step(),
             max_steps: default_max_steps(),
+            project: None,
         }
     }
 }
@@ -263,6 +266,9 @@ pub struct Scene {
     pub sample: Option<f64>,
     /// Solver settings.
     pub settings: Settings,
+    /// An invariant every step is projected back onto (`solver: { project: energy }`), for
+    /// models without dissipation and the DOP853 method.
+    pub projection: Option<Projection>,
 }
 
 impl Scene {
@@ -464,6 +470,7 @@ impl Validator<'_> {
             self.err(&["solver", key], format!("solver: {e}"))
         })?;
         self.limits(&s, &disk, &start)?;
+        let projection = self.projection(&s)?;
         Ok(Scene {
             name: s.name,
             description: s.description,
@@ -478,7 +485,42 @@ impl Validator<'_> {
             record,
             sample: s.sample,
             settings,
+            projection,
         })
+    }
+
+    /// `solver: { project: energy }`: only where the energy is conserved and the step loop
+    /// can project (DOP853, the crate's own engine).
+    fn projection(&self, s: &SceneSpec) -> Result<Option<Projection>, SceneError> {
+        let Some(p) = s.solver.project else {
+            return Ok(None);
+        };
+        let conservative = matches!(
+            s.model,
+            ModelKind::Rolling
+                | ModelKind::Frictionless
+                | ModelKind::LabFrame
+                | ModelKind::LabFrameFrictionless
+        );
+        if !conservative {
+            return Err(self.err(
+                &["solver", "project"],
+                format!(
+                    "solver: project: {p} needs a model that conserves the energy (rolling, frictionless, lab-frame or lab-frame-frictionless), and the {} model does not: remove `project`",
+                    s.model
+                ),
+            ));
+        }
+        if s.solver.method != Method::Dop853 {
+            return Err(self.err(
+                &["solver", "project"],
+                format!(
+                    "solver: project: {p} needs method: dop853 (the projection is applied in its step loop), got {}: set method: dop853 or remove `project`",
+                    s.solver.method
+                ),
+            ));
+        }
+        Ok(Some(p))
     }
 
     fn dissipation(&self, s: &SceneSpec) -> Result<Option<PowerLaw>, SceneError> {

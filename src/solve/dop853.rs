@@ -268,6 +268,14 @@ impl<'a, D: Dynamics<N>, const N: usize> Dop853<'a, D, N> {
         }
     }
 
+    /// Replaces the state reached by the last accepted step (a projection moved it) and
+    /// evaluates the first stage of the next step there (1 evaluation).
+    pub(super) fn restart_from(&mut self, y: State<N>) {
+        self.y = y;
+        self.f.rhs(&self.y, &mut self.k[12]);
+        self.stats.evaluations += 1;
+    }
+
     /// Hairer's stiffness test, every [`STIFF_EVERY`] accepted steps and on every step while it
     /// fires: $|h\lambda| \approx h \|k_{13} - k_{12}\| / \|y_1 - Y_{12}\|$ with $Y_{12}$ the
     /// argument of stage 12. True when it fired [`STIFF_COUNT`] times in a row.

@@ -7,6 +7,9 @@
 //! over sampled trajectories (eq 44's) see the difference. An event crossing is seen
 //! on the step ends, as with `ode_solvers`, and located by bisection on the step's interpolant
 //! to [`EVENT_TIME_TOLERANCE`].
+//!
+//! With a projection ([`Problem::project`]) every accepted step's end is moved onto the
+//! invariant before the next step starts from it (one more evaluation per step, counted).
 
 use super::dop853::{Dense, Dop853, Outcome};
 use super::{Dynamics, Ending, Event, Problem, Settings, Solution, State, EVENT_TIME_TOLERANCE};
@@ -179,16 +182,25 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
                 t: t_e,
             };
         }
-        match sampler.as_mut() {
-            Some(sm) => {
-                let mut extra = 0;
-                sm.fill(problem.dynamics, settings, t_a, y_a, t_b, t_end, &mut extra);
-                s.stats.extra_evaluations += extra;
+        if let Some(sm) = sampler.as_mut() {
+            let mut extra = 0;
+            sm.fill(problem.dynamics, settings, t_a, y_a, t_b, t_end, &mut extra);
+            s.stats.extra_evaluations += extra;
+        }
+        // The projection comes after the step's events and samples, which use its dense
+        // output and its start; the next step starts from the projected state.
+        let y_b = match &problem.project {
+            Some(project) => {
+                let mut y = y_b;
+                project(&mut y);
+                s.restart_from(y);
+                y
             }
-            None => {
-                ts.push(t_b);
-                ys.push(y_b);
-            }
+            None => y_b,
+        };
+        if sampler.is_none() {
+            ts.push(t_b);
+            ys.push(y_b);
         }
         last = (t_b, y_b);
         let n = s.stats.accepted;

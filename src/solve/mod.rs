@@ -21,11 +21,13 @@
 mod dop853;
 mod driver;
 mod outcome;
+mod projection;
 mod settings;
 mod tableau;
 mod upstream;
 
 pub use outcome::{Ending, Solution, Stats};
+pub use projection::{onto_level, Projection};
 pub use settings::{Method, Settings, SettingsError};
 pub use upstream::RK4_RESOLUTION;
 
@@ -60,6 +62,9 @@ impl<'a, const N: usize> Event<'a, N> {
     }
 }
 
+/// Moves a state back onto an invariant ([`Problem::project`]).
+pub type Projector<'a, const N: usize> = Box<dyn Fn(&mut State<N>) + 'a>;
+
 /// An event's time is located to this many seconds (absolute) at least.
 pub const EVENT_TIME_TOLERANCE: f64 = 1e-12;
 
@@ -80,6 +85,10 @@ pub struct Problem<'a, D, const N: usize> {
     pub sample: Option<f64>,
     /// Called with the current time now and then, for progress bars.
     pub progress: Option<&'a dyn Fn(f64)>,
+    /// Applied to the state after every accepted step ([`projection`]): moves it back onto an
+    /// invariant. Only the crate's own DOP853 can apply it, so a problem that has one is
+    /// integrated by it (and refused with another method).
+    pub project: Option<Projector<'a, N>>,
 }
 
 impl<'a, D: Dynamics<N>, const N: usize> Problem<'a, D, N> {
@@ -93,6 +102,7 @@ impl<'a, D: Dynamics<N>, const N: usize> Problem<'a, D, N> {
             events: Vec::new(),
             sample: None,
             progress: None,
+            project: None,
         }
     }
 
@@ -114,9 +124,9 @@ impl<'a, D: Dynamics<N>, const N: usize> Problem<'a, D, N> {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Engine {
-    /// The crate's own DOP853 ([`dop853`]): the default.
+    /// The crate's own DOP853 ([`dop853`]): events on its dense output, projections.
     Own,
-    /// `ode_solvers` 0.6.2's DOP853, for comparison.
+    /// `ode_solvers` 0.6.2's DOP853: the default.
     OdeSolvers,
 }
 
@@ -137,6 +147,9 @@ pub fn solve_with<D: Dynamics<N>, const N: usize>(
     engine: Engine,
 ) -> Result<Solution<N>, SettingsError> {
     settings.validate()?;
+    if problem.project.is_some() && settings.method != Method::Dop853 {
+        return Err(SettingsError::Projection(settings.method));
+    }
     let span = problem.t_end - problem.t0;
     if !(span.is_finite() && span > 0.0) {
         return Err(SettingsError::Span(span));
@@ -194,6 +207,10 @@ pub fn solve_with<D: Dynamics<N>, const N: usize>(
     }
     Ok(match (settings.method, engine) {
         (Method::Dop853, Engine::Own) => driver::run(problem, settings, deadline),
+        // Only the own engine's step loop can project.
+        (Method::Dop853, _) if problem.project.is_some() => {
+            driver::run(problem, settings, deadline)
+        }
         _ => upstream::run(problem, settings, deadline),
     })
 }

@@ -130,6 +130,9 @@ pub enum SettingsError {
         /// The limit.
         limit: u32,
     },
+    /// A projection onto an invariant needs the crate's own DOP853 step loop.
+    #[error("a projection onto an invariant (solver: {{ project: energy }}) needs method dop853, got {0}")]
+    Projection(Method),
     /// The start state holds a NaN or an infinity.
     #[error("the start state is not finite: {0:?}")]
     Start(Vec<f64>),
