@@ -10,13 +10,17 @@
 //! rtol 1e-13, and 1e5 periods), `--study` (also the whole work-precision study, RK4
 //! included), `--quick` (each point timed once).
 
+use rolling_disk::model::rolling::Rolling;
+use rolling_disk::model::{Extras, Model};
 use rolling_disk::precision::{
     energy_drift, measure_preset, rhs_nanoseconds, study, study::measure_point_with, Accuracy,
     Reference, ReferenceOptions, StudyOptions, Timing,
 };
 use rolling_disk::scene::Scene;
-use rolling_disk::solve::{Engine, Method, Settings};
+use rolling_disk::solve::{Dynamics, Engine, Method, Settings, State};
 use serde_json::{json, Value};
+use std::cell::Cell;
+use std::time::Instant;
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -66,6 +70,7 @@ fn main() {
             }));
         }
     }
+    rust.extend(other_crate(&scene, &reference, &timing, rhs_ns));
     let presets: Vec<Value> = Accuracy::ALL
         .iter()
         .map(|&a| json!(measure_preset(&scene, a, &reference, &timing).expect("preset")))
@@ -119,4 +124,82 @@ fn main() {
         "study": study,
     });
     println!("{}", serde_json::to_string_pretty(&out).expect("json"));
+}
+
+/// The benchmark scene's rolling model (eqs 23-25) as the `ivp` crate's system, counting its
+/// evaluations: the same right-hand side as the tool's, behind another crate's DOP853.
+struct IvpSystem {
+    model: Rolling<4>,
+    evaluations: Cell<u64>,
+}
+
+impl ivp::prelude::FirstOrderSystem for IvpSystem {
+    fn derivative(&self, _t: f64, y: &[f64], dydt: &mut [f64]) {
+        self.evaluations.set(self.evaluations.get() + 1);
+        let mut dy = State::<4>::zeros();
+        self.model.rhs(&State::<4>::from_column_slice(y), &mut dy);
+        dydt.copy_from_slice(dy.as_slice());
+    }
+}
+
+/// One other Rust ODE crate, `ivp` (a port of SciPy's `solve_ivp`), on the same scene, the
+/// same tolerances (atol = 1e-2 rtol) and the same error measure: its DOP853 over the sweep,
+/// timed as the tool's points are (median of runs within the timing budget).
+fn other_crate(scene: &Scene, reference: &Reference, timing: &Timing, rhs_ns: f64) -> Vec<Value> {
+    use ivp::prelude::{Ivp, Method as IvpMethod};
+    let system = IvpSystem {
+        model: Rolling::<4>::new(scene.disk, Extras::default(), None),
+        evaluations: Cell::new(0),
+    };
+    let y0: Vec<f64> = system.model.state(&scene.start).iter().copied().collect();
+    let mut out = Vec::new();
+    for e in 3..=13 {
+        let rtol = 10f64.powi(-e);
+        let atol = 1e-2 * rtol;
+        let once = || {
+            system.evaluations.set(0);
+            let started = Instant::now();
+            let sol = Ivp::first_order(&system, 0.0, scene.stop.time, &y0)
+                .method(IvpMethod::DOP853)
+                .rtol(rtol)
+                .atol(atol)
+                .max_steps(10_000_000)
+                .solve();
+            (started.elapsed().as_secs_f64(), sol)
+        };
+        let (first, sol) = once();
+        let sol = match sol {
+            Ok(s) => s,
+            Err(e) => {
+                out.push(json!({ "method": "ivp dop853", "rtol": rtol, "error": e.to_string() }));
+                continue;
+            }
+        };
+        let evaluations = system.evaluations.get();
+        let mut times = vec![first];
+        let budget = Instant::now();
+        while times.len() < timing.max_runs
+            && (times.len() < timing.min_runs
+                || budget.elapsed().as_secs_f64() < timing.budget_seconds)
+        {
+            times.push(once().0);
+        }
+        times.sort_by(f64::total_cmp);
+        let wall_seconds = times[times.len() / 2];
+        let (Some(&t_final), Some(y_final)) = (sol.t.last(), sol.y.last()) else {
+            continue;
+        };
+        let final_error = if (t_final - scene.stop.time).abs() <= 1e-9 * scene.stop.time {
+            reference.state_error(y_final, &reference.trace.y_final)
+        } else {
+            f64::INFINITY
+        };
+        out.push(json!({
+            "method": "ivp dop853", "rtol": rtol, "atol": atol,
+            "evaluations": evaluations, "accepted": sol.naccpt, "rejected": sol.nrejct,
+            "wall_seconds": wall_seconds, "final_error": final_error,
+            "overhead": wall_seconds / (evaluations as f64 * rhs_ns * 1e-9),
+        }));
+    }
+    out
 }

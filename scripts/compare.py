@@ -3,7 +3,9 @@
 
 The Rust side (`cargo bench --bench scipy_reference`) prints, as JSON, the benchmark scene's
 high-precision reference (with its validation) and the timings of the tool's own DOP853, of
-ode_solvers' DOP853 (the other Rust ODE crate) and of DOPRI5 over a tolerance sweep. This script
+two other Rust ODE crates on the same right-hand side (ode_solvers' DOP853, the tool's default
+engine, and the DOP853 of `ivp`, a Rust port of solve_ivp) and of DOPRI5 over a tolerance
+sweep. This script
 then integrates the same equations of motion, eqs 23-25 of McDonald & McDonald (2001):
 
     (2k+1) w1' + a' W sin(a) = 0                                            (23)
@@ -168,8 +170,8 @@ def figure(rust, rows, path):
 
     series = {}
     for p in rust:
-        series.setdefault(f"rolling-disk {p['method']}" if p["method"] != "ode_solvers dop853"
-                          else "ode_solvers dop853 (Rust)", []).append(p)
+        series.setdefault(f"rolling-disk {p['method']}" if p["method"] not in OTHER_RUST
+                          else f"{p['method']} (Rust)", []).append(p)
     for r in rows:
         series.setdefault(r["solver"], []).append(r)
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
@@ -187,6 +189,11 @@ def figure(rust, rows, path):
     fig.suptitle("Benchmark scene, 10 s: work against precision")
     fig.tight_layout()
     fig.savefig(path)
+
+
+# Rust crates timed by the Rust side besides the tool's own engine ("dop853"): ode_solvers (the
+# tool's default engine) and ivp (a Rust port of solve_ivp), each on the tool's right-hand side.
+OTHER_RUST = ("ode_solvers dop853", "ivp dop853")
 
 
 def main():
@@ -213,11 +220,11 @@ def main():
           f"{'tool evals@err':>16}{'tool time@err':>15}{'time ratio':>12}")
     for p in rust:
         if any(abs(p["rtol"] - r) < 1e-3 * r for r in RTOLS):
-            name = p["method"] if p["method"] == "ode_solvers dop853" else f"rolling-disk {p['method']}"
+            name = p["method"] if p["method"] in OTHER_RUST else f"rolling-disk {p['method']}"
             print(f"{name:<24}{p['rtol']:>7.0e}{p['evaluations']:>9}{p['wall_seconds']:>11.3e}"
                   f"{p['final_error']:>10.1e}")
-    others = rows + [dict(p, solver="ode_solvers dop853") for p in rust
-                     if p["method"] == "ode_solvers dop853"
+    others = rows + [dict(p, solver=p["method"]) for p in rust
+                     if p["method"] in OTHER_RUST and "error" not in p
                      and any(abs(p["rtol"] - r) < 1e-3 * r for r in RTOLS)]
     for r in others:
         ev = at_error(ours, r["final_error"], "evaluations")
@@ -229,12 +236,13 @@ def main():
               f"{r['final_error']:>10.1e}{ev:>16.0f}{wt:>15.3e}{r['time_ratio_at_equal_error']:>11.1f}x")
 
     print()
-    for name in ["solve_ivp DOP853", "solve_ivp RK45", "ode dop853 (Hairer)", "ode_solvers dop853"]:
+    for name in ["solve_ivp DOP853", "solve_ivp RK45", "ode dop853 (Hairer)", *OTHER_RUST]:
         sel = [r for r in others if r["solver"] == name]
         if sel:
             ratios = [r["time_ratio_at_equal_error"] for r in sel]
             evr = [r["evaluations"] / r["tool_evaluations_at_equal_error"] for r in sel]
-            print(f"{name:<22} at equal error: {min(ratios):.0f}x to {max(ratios):.0f}x the tool's "
+            fmt = (lambda x: f"{x:.0f}") if min(ratios) >= 10 else (lambda x: f"{x:.2f}")
+            print(f"{name:<22} at equal error: {fmt(min(ratios))}x to {fmt(max(ratios))}x the tool's "
                   f"time, {min(evr):.2f}x to {max(evr):.2f}x its evaluations")
     ns = data["rhs_nanoseconds"]
     over = [p["wall_seconds"] / (p["evaluations"] * ns * 1e-9) - 1.0 for p in ours]
