@@ -10,6 +10,7 @@ pub mod catalogue;
 pub mod cause;
 pub mod check;
 pub mod compare;
+pub mod corrections;
 pub mod disk;
 pub mod dispatch;
 pub mod equations;

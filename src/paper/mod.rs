@@ -226,6 +226,8 @@ pub struct Paper {
     pub claims: Vec<ClaimEntry>,
     /// A hash of the three files' bytes (FNV-1a, 64 bits, hex), to tell two papers apart.
     pub hash: String,
+    /// symbols.yaml resolved, for equations parsed later ([`Paper::with_latex`]).
+    global: BTreeMap<Symbol, SymbolInfo>,
 }
 
 const EQUATIONS: &str = include_str!("../../paper/equations.yaml");
@@ -291,44 +293,31 @@ impl Paper {
             });
         }
         let global = resolve_table(&table, &file("symbols.yaml"), 0)?;
-        let mut parsed = Vec::with_capacity(entries.len());
-        for entry in entries {
-            let eqfile = file("equations.yaml");
-            let latex_error = |column: usize, message: String| PaperError::Latex {
-                file: eqfile.clone(),
-                number: entry.number,
-                column,
-                message,
-                latex: entry.latex.clone(),
-                caret: format!("{}^", " ".repeat(column.saturating_sub(1))),
-            };
-            let (chains, seen) =
-                parse::parse(&entry.latex).map_err(|e| latex_error(e.column, e.message))?;
-            let local = resolve_table(&entry.symbols, &eqfile, entry.number)?;
-            let mut symbols = BTreeMap::new();
-            for (s, col) in seen {
-                let info = local.get(&s).or_else(|| global.get(&s)).ok_or_else(|| {
-                    PaperError::UnknownSymbol {
-                        file: eqfile.clone(),
-                        number: entry.number,
-                        column: col,
-                        symbol: s.to_string(),
-                    }
-                })?;
-                symbols.insert(s, info.clone());
-            }
-            parsed.push(Equation {
-                entry,
-                chains,
-                symbols,
-            });
-        }
+        let eqfile = file("equations.yaml");
+        let parsed = entries
+            .into_iter()
+            .map(|entry| parse_entry(entry, &global, &eqfile))
+            .collect::<Result<Vec<_>, _>>()?;
         Ok(Paper {
             hash: fnv(&[equations, symbols, claims]),
             source,
             equations: parsed,
             claims: claim_entries,
+            global,
         })
+    }
+
+    /// The same paper with eq `n`'s LaTeX replaced by `latex` (an author's or a referee's
+    /// correction), parsed and resolved as the files' are: a LaTeX error or an unknown symbol
+    /// is an error naming the equation and the column. The hash changes with the LaTeX.
+    pub fn with_latex(&self, n: u32, latex: &str) -> Result<Paper, PaperError> {
+        let mut p = self.clone();
+        let i = (n.clamp(1, 85) - 1) as usize;
+        let mut entry = p.equations[i].entry.clone();
+        entry.latex = latex.to_string();
+        p.equations[i] = parse_entry(entry, &self.global, "a correction of equations.yaml")?;
+        p.hash = fnv(&[&self.hash, &n.to_string(), latex]);
+        Ok(p)
     }
 
     /// Equation `n` (1-85).
@@ -342,6 +331,45 @@ impl Paper {
         p.equations[(n.clamp(1, 85) - 1) as usize].chains = chains;
         p
     }
+}
+
+/// One entry of equations.yaml parsed, its symbols resolved against its own `symbols` map and
+/// then the paper's table `global`.
+fn parse_entry(
+    entry: EquationEntry,
+    global: &BTreeMap<Symbol, SymbolInfo>,
+    eqfile: &str,
+) -> Result<Equation, PaperError> {
+    let latex_error = |column: usize, message: String| PaperError::Latex {
+        file: eqfile.to_string(),
+        number: entry.number,
+        column,
+        message,
+        latex: entry.latex.clone(),
+        caret: format!("{}^", " ".repeat(column.saturating_sub(1))),
+    };
+    let (chains, seen) =
+        parse::parse(&entry.latex).map_err(|e| latex_error(e.column, e.message))?;
+    let local = resolve_table(&entry.symbols, eqfile, entry.number)?;
+    let mut symbols = BTreeMap::new();
+    for (s, col) in seen {
+        let info =
+            local
+                .get(&s)
+                .or_else(|| global.get(&s))
+                .ok_or_else(|| PaperError::UnknownSymbol {
+                    file: eqfile.to_string(),
+                    number: entry.number,
+                    column: col,
+                    symbol: s.to_string(),
+                })?;
+        symbols.insert(s, info.clone());
+    }
+    Ok(Equation {
+        entry,
+        chains,
+        symbols,
+    })
 }
 
 /// A symbol table's LaTeX keys, read by the equation reader into canonical symbols.

@@ -1,0 +1,26 @@
+//! The corrections of paper/corrections.yaml, each checked by its equation's own check against
+//! the same reference as the printed form: the printed form fails, the corrected one holds.
+
+use rolling_disk::corrections::{built_in, verify};
+use rolling_disk::equations::Bench;
+
+#[test]
+fn every_correction_holds_where_the_printed_form_fails() {
+    let cs = built_in().unwrap();
+    let verified = verify(&Bench::default(), &cs, 2).unwrap();
+    assert_eq!(verified.len(), cs.len());
+    let mut wrong = Vec::new();
+    for v in &verified {
+        eprintln!(
+            "eq {}: printed {} ({}), corrected {} ({})",
+            v.number, v.printed.verdict, v.printed.detail, v.corrected.verdict, v.corrected.detail
+        );
+        if v.printed.holds || !v.corrected.holds {
+            wrong.push(v.number);
+        }
+    }
+    assert!(
+        wrong.is_empty(),
+        "corrections that do not do their job: {wrong:?}"
+    );
+}
