@@ -133,30 +133,56 @@ pub fn verify(
     corrections: &[Correction],
     threads: usize,
 ) -> Result<Vec<Verified>, CorrectionError> {
-    let corrected = apply(bench.paper, corrections)?;
-    let selection = Selection {
+    let quiet = |_: usize, _: usize| {};
+    let before = run_checks(bench, &selection(corrections), threads, &quiet)
+        .map_err(CorrectionError::Checks)?;
+    let after = check_corrected(bench, corrections, threads)?;
+    Ok(assemble(bench.paper, corrections, &before, &after))
+}
+
+/// The checks of the corrected equations only.
+fn selection(corrections: &[Correction]) -> Selection {
+    Selection {
         numbers: Some(corrections.iter().map(|c| c.number).collect()),
         claims: None,
-    };
-    let quiet = |_: usize, _: usize| {};
-    let before = run_checks(bench, &selection, threads, &quiet).map_err(CorrectionError::Checks)?;
+    }
+}
+
+/// Runs the check of every corrected equation on `bench`'s paper with all the corrections
+/// substituted (the printed forms' checks are the report's own).
+pub fn check_corrected(
+    bench: &Bench,
+    corrections: &[Correction],
+    threads: usize,
+) -> Result<Vec<Checked>, CorrectionError> {
+    let corrected = apply(bench.paper, corrections)?;
     let after_bench = Bench {
         paper: &corrected,
         ..*bench
     };
-    let after =
-        run_checks(&after_bench, &selection, threads, &quiet).map_err(CorrectionError::Checks)?;
-    Ok(corrections
+    run_checks(&after_bench, &selection(corrections), threads, &|_, _| {})
+        .map_err(CorrectionError::Checks)
+}
+
+/// Each correction with the printed form's check (from `printed`, the checks of `paper`) and
+/// the corrected form's (from `corrected`).
+pub fn assemble(
+    paper: &Paper,
+    corrections: &[Correction],
+    printed: &[Checked],
+    corrected: &[Checked],
+) -> Vec<Verified> {
+    corrections
         .iter()
         .map(|c| Verified {
             number: c.number,
-            printed_latex: bench.paper.equation(c.number).entry.latex.clone(),
+            printed_latex: paper.equation(c.number).entry.latex.clone(),
             corrected_latex: c.latex.clone(),
             why: c.why.clone(),
-            printed: outcome(&before, c.number),
-            corrected: outcome(&after, c.number),
+            printed: outcome(printed, c.number),
+            corrected: outcome(corrected, c.number),
         })
-        .collect())
+        .collect()
 }
 
 fn outcome(checked: &[Checked], number: u32) -> Outcome {

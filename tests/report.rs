@@ -66,10 +66,11 @@ fn html_holds_every_equation_claim_and_figure_as_mathml_and_svg() {
             "figure {f} missing"
         );
     }
+    let corrections = rolling_disk::corrections::built_in().unwrap().len();
     assert_eq!(
         html.matches("<math").count(),
-        85,
-        "one MathML block per equation"
+        85 + corrections,
+        "one MathML block per equation and one per corrected form"
     );
     assert!(html.matches("<svg").count() >= figures.len());
 }

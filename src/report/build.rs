@@ -339,6 +339,7 @@ pub fn from_results(
         .filter(|c| matches!(c.subject, Subject::Claim { .. }))
         .filter_map(failure_view)
         .collect();
+    let (corrections, downstream) = corrections_view(bench, checked, results.corrections.as_ref());
     let (eqs, cls): (Vec<&Checked>, Vec<&Checked>) = checked
         .iter()
         .partition(|c| matches!(c.subject, Subject::Equation { .. }));
@@ -469,6 +470,8 @@ pub fn from_results(
             root_causes,
             undetermined,
             failing_claims,
+            corrections,
+            downstream,
         },
         sections,
         claims,
@@ -480,4 +483,57 @@ pub fn from_results(
         document,
     };
     Ok((report, figures))
+}
+
+/// The corrections of the summary: each corrected form with the verdicts of the printed form
+/// (from the report's checks) and of the corrected one, and the downstream sentence.
+fn corrections_view(
+    bench: &Bench,
+    checked: &[Checked],
+    study: Option<&super::pipeline::CorrectionsStudy>,
+) -> (Vec<super::CorrectionView>, String) {
+    let Some(study) = study else {
+        return (Vec::new(), String::new());
+    };
+    let verified =
+        crate::corrections::assemble(bench.paper, &study.corrections, checked, &study.corrected);
+    let views = verified
+        .into_iter()
+        .map(|v| super::CorrectionView {
+            number: v.number,
+            anchor: format!("eq-{}", v.number),
+            mathml: display_math(&v.corrected_latex),
+            latex: v.corrected_latex,
+            why: v.why,
+            printed: v.printed.verdict,
+            corrected: v.corrected.verdict,
+            holds: v.corrected.holds,
+            detail: match v.corrected.headline {
+                Some(h) => format!(
+                    "{}: corrected {}, true {} ({})",
+                    h.quantity,
+                    fmt_num(h.paper),
+                    fmt_num(h.reference),
+                    h.at
+                ),
+                None => v.corrected.detail,
+            },
+        })
+        .collect();
+    let downstream = study.downstream.as_ref().map_or(String::new(), |d| {
+        format!(
+            "The paper's fit of sec. 11 (beta = {}, C^(-1/4) = {} s) means a dissipation strength \
+             epsilon = {} with the printed eq 79 and {} with the corrected one (ratio {:.4}; disk of \
+             the built-in spin-down: a = {} m, k = {}, g = {} m/s^2)",
+            d.beta,
+            d.c_inv_root,
+            fmt_num(d.epsilon_printed),
+            fmt_num(d.epsilon_corrected),
+            d.epsilon_corrected / d.epsilon_printed,
+            d.a,
+            d.k,
+            d.g
+        )
+    });
+    (views, downstream)
 }

@@ -75,6 +75,33 @@ pub struct Summary {
     pub undetermined: Vec<FailureView>,
     /// The failing prose claims.
     pub failing_claims: Vec<FailureView>,
+    /// Corrected forms of the root causes and their consequences, each checked.
+    pub corrections: Vec<CorrectionView>,
+    /// What the corrections change downstream, in one sentence (empty when not computed).
+    pub downstream: String,
+}
+
+/// A corrected equation as the summary shows it.
+#[derive(Debug, Clone, Serialize)]
+pub struct CorrectionView {
+    /// The printed number.
+    pub number: u32,
+    /// Its anchor.
+    pub anchor: String,
+    /// The corrected LaTeX, and as MathML.
+    pub latex: String,
+    /// MathML of the corrected form.
+    pub mathml: String,
+    /// Why.
+    pub why: String,
+    /// The printed form's verdict.
+    pub printed: String,
+    /// The corrected form's verdict.
+    pub corrected: String,
+    /// True when the corrected form holds.
+    pub holds: bool,
+    /// The corrected form's comparison in the paper's terms, or its detail.
+    pub detail: String,
 }
 
 /// A root cause and its consequences, as the summary lists them.

@@ -9,6 +9,7 @@
 
 use super::studies;
 use crate::check::{run_checks, Checked, Selection};
+use crate::corrections::{self, Correction, Downstream};
 use crate::equations::Bench;
 use crate::experiment::{self, AnalysisSettings, LightModel};
 use crate::figures::energy::EnergyDrift;
@@ -43,11 +44,13 @@ pub enum Study {
     SpinDown,
     /// The reduced model against the lab-frame model (eqs 23-25).
     LabFrame,
+    /// The corrected forms of paper/corrections.yaml checked (`crate::corrections`).
+    Corrections,
 }
 
 impl Study {
     /// Every study, in the order they are listed in the report.
-    pub const ALL: [Study; 8] = [
+    pub const ALL: [Study; 9] = [
         Study::Checks,
         Study::Experiment,
         Study::Precision,
@@ -56,6 +59,7 @@ impl Study {
         Study::Paths,
         Study::SpinDown,
         Study::LabFrame,
+        Study::Corrections,
     ];
 }
 
@@ -70,6 +74,7 @@ impl fmt::Display for Study {
             Study::Paths => "paths",
             Study::SpinDown => "spin-down",
             Study::LabFrame => "lab-frame",
+            Study::Corrections => "corrections",
         })
     }
 }
@@ -126,6 +131,8 @@ pub struct Results {
     pub spin_down: Option<SpinDown>,
     /// The lab-frame comparisons.
     pub lab_frame: Option<Vec<Compared>>,
+    /// The corrections and their checks on the corrected paper.
+    pub corrections: Option<CorrectionsStudy>,
     /// How many times each study was computed to make these results.
     pub computed: BTreeMap<Study, usize>,
 }
@@ -140,6 +147,35 @@ enum Output {
     Paths(Vec<PathRun>),
     SpinDown(Box<SpinDown>),
     LabFrame(Vec<Compared>),
+    Corrections(Box<CorrectionsStudy>),
+}
+
+/// The corrections study: the corrected forms, their checks on the paper with all of them
+/// substituted, and the dissipation strength the paper's fit means before and after.
+#[derive(Debug, Clone)]
+pub struct CorrectionsStudy {
+    /// paper/corrections.yaml.
+    pub corrections: Vec<Correction>,
+    /// The corrected equations' checks.
+    pub corrected: Vec<Checked>,
+    /// $\epsilon$ from the paper's fit, printed and corrected eq 79, for the built-in
+    /// spin-down disk.
+    pub downstream: Option<Downstream>,
+}
+
+fn corrections_study(bench: &Bench) -> Result<CorrectionsStudy, String> {
+    let corrections = corrections::built_in().map_err(|e| e.to_string())?;
+    let threads = rayon::current_num_threads().max(1);
+    let corrected =
+        corrections::check_corrected(bench, &corrections, threads).map_err(|e| e.to_string())?;
+    let fixed = corrections::apply(bench.paper, &corrections).map_err(|e| e.to_string())?;
+    let disk = Scene::load("spin-down").map_err(|e| e.to_string())?.disk;
+    let downstream = corrections::downstream(bench.paper, &fixed, (disk.a, disk.k, disk.g));
+    Ok(CorrectionsStudy {
+        corrections,
+        corrected,
+        downstream,
+    })
 }
 
 fn experiment_study() -> Result<Experiment, String> {
@@ -177,6 +213,7 @@ fn one(study: Study, bench: &Bench) -> Result<Output, String> {
         Study::Paths => Output::Paths(studies::runs::paths()?),
         Study::SpinDown => Output::SpinDown(Box::new(studies::runs::spin_down()?)),
         Study::LabFrame => Output::LabFrame(studies::lab_frame::compute()?),
+        Study::Corrections => Output::Corrections(Box::new(corrections_study(bench)?)),
     })
 }
 
@@ -220,6 +257,7 @@ pub fn compute(config: &RunConfig, progress: &(dyn Fn(&str) + Sync)) -> Result<R
             Output::Paths(p) => r.paths = Some(p),
             Output::SpinDown(s) => r.spin_down = Some(*s),
             Output::LabFrame(l) => r.lab_frame = Some(l),
+            Output::Corrections(c) => r.corrections = Some(*c),
         }
     }
     Ok(r)
