@@ -339,7 +339,8 @@ pub fn from_results(
         .filter(|c| matches!(c.subject, Subject::Claim { .. }))
         .filter_map(failure_view)
         .collect();
-    let (corrections, downstream) = corrections_view(bench, checked, results.corrections.as_ref());
+    let (corrections, downstream, correction_records) =
+        corrections_view(bench, checked, results.corrections.as_ref());
     let (eqs, cls): (Vec<&Checked>, Vec<&Checked>) = checked
         .iter()
         .partition(|c| matches!(c.subject, Subject::Equation { .. }));
@@ -455,6 +456,7 @@ pub fn from_results(
             })
             .collect(),
         precision: precision_records,
+        corrections: correction_records,
     };
 
     let report = Report {
@@ -491,12 +493,28 @@ fn corrections_view(
     bench: &Bench,
     checked: &[Checked],
     study: Option<&super::pipeline::CorrectionsStudy>,
-) -> (Vec<super::CorrectionView>, String) {
+) -> (
+    Vec<super::CorrectionView>,
+    String,
+    Vec<json::CorrectionRecord>,
+) {
     let Some(study) = study else {
-        return (Vec::new(), String::new());
+        return (Vec::new(), String::new(), Vec::new());
     };
     let verified =
         crate::corrections::assemble(bench.paper, &study.corrections, checked, &study.corrected);
+    let records = verified
+        .iter()
+        .map(|v| json::CorrectionRecord {
+            number: v.number,
+            printed_latex: v.printed_latex.clone(),
+            corrected_latex: v.corrected_latex.clone(),
+            why: v.why.clone(),
+            printed_verdict: v.printed.verdict.clone(),
+            corrected_verdict: v.corrected.verdict.clone(),
+            corrected_holds: v.corrected.holds,
+        })
+        .collect();
     let views = verified
         .into_iter()
         .map(|v| super::CorrectionView {
@@ -535,5 +553,5 @@ fn corrections_view(
             d.g
         )
     });
-    (views, downstream)
+    (views, downstream, records)
 }

@@ -44,6 +44,28 @@ pub struct Document {
     pub figures: Vec<FigureRecord>,
     /// The speed/accuracy study on the benchmark scene.
     pub precision: Vec<PrecisionRecord>,
+    /// The corrected forms of paper/corrections.yaml, each checked by its equation's check.
+    pub corrections: Vec<CorrectionRecord>,
+}
+
+/// A corrected equation and the verdicts of its printed and corrected forms.
+#[derive(Debug, Clone, PartialEq, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct CorrectionRecord {
+    /// The printed number.
+    pub number: u32,
+    /// The printed LaTeX.
+    pub printed_latex: String,
+    /// The corrected LaTeX.
+    pub corrected_latex: String,
+    /// Why the correction.
+    pub why: String,
+    /// The printed form's verdict.
+    pub printed_verdict: String,
+    /// The corrected form's verdict.
+    pub corrected_verdict: String,
+    /// True when the corrected form holds (exactly or approximately).
+    pub corrected_holds: bool,
 }
 
 /// The tool.
