@@ -101,3 +101,45 @@ proptest! {
         let _ = parse_wav(&bytes, "fuzz.wav");
     }
 }
+
+/// Regressions found by cargo-fuzz (fuzz/README.md), kept as inputs under tests/fixtures/fuzz/.
+mod regressions {
+    use super::*;
+    use std::path::PathBuf;
+
+    fn fixture(name: &str) -> Vec<u8> {
+        let p = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+            .join("tests/fixtures/fuzz")
+            .join(name);
+        std::fs::read(p).unwrap()
+    }
+
+    /// Nested `\frac{d...` that are not derivatives: each level was parsed twice (once as a
+    /// failed derivative), so 626 bytes took over 6 s; now once.
+    #[test]
+    fn nested_fractions_that_look_like_derivatives_parse_at_once() {
+        let text = String::from_utf8(fixture("latex-nested-fractions.tex")).unwrap();
+        let start = std::time::Instant::now();
+        let _ = parse(&text);
+        let deeper = text.repeat(4);
+        let _ = parse(&deeper);
+        let took = start.elapsed().as_secs_f64();
+        assert!(took < 0.5, "{took} s");
+        // Derivatives still read as derivatives.
+        let (chains, _) = parse(r"P = \frac{d U}{dt} = \frac{d^2 x}{dt^2}").unwrap();
+        assert_eq!(chains.len(), 1);
+    }
+
+    /// A cell of control characters was quoted whole, escaped to over 800 characters; now cut
+    /// to a few dozen, on one line.
+    #[test]
+    fn a_long_bad_cell_is_quoted_cut() {
+        let text = String::from_utf8(fixture("csv-long-cell.csv")).unwrap();
+        let e = parse_trace(&text, "fuzz.csv").unwrap_err().to_string();
+        assert!(e.contains("fuzz.csv:2"), "{e}");
+        // 40 characters at most, each at most `\u{XXXX}` escaped, plus the sentence.
+        assert!(e.chars().count() < 500, "{} chars: {e}", e.chars().count());
+        assert!(e.contains("(159 characters)"), "{e}");
+        assert!(!e.contains('\n'), "{e}");
+    }
+}

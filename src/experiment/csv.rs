@@ -189,7 +189,8 @@ pub fn parse_trace(text: &str, file: &str) -> Result<Trace, ExperimentError> {
                     line,
                     column: name.into(),
                     col: k + 1,
-                    cell: cells[k].into(),
+                    // Quoted cut to a few dozen characters, control characters escaped: one line.
+                    cell: crate::scene::message::cut(cells[k]),
                 })?;
             if x.is_finite() {
                 Ok(x)

@@ -39,7 +39,7 @@ pub enum ExperimentError {
         found: usize,
     },
     /// A cell that is not a number.
-    #[error("{file}:{line}:{col}: the {column} cell {cell:?} is not a number: write a plain decimal number (e.g. 0.0125 or 1.25e-2)")]
+    #[error("{file}:{line}:{col}: the {column} cell \"{cell}\" is not a number: write a plain decimal number (e.g. 0.0125 or 1.25e-2)")]
     NotANumber {
         /// The file.
         file: String,

@@ -519,7 +519,50 @@ impl Parser {
         Ok(Expr::bin(Op::Div, num, den))
     }
 
+    /// True when the tokens from here read `{d ...}{dt}` or `{d ...}{dt^2}`: the shape of a
+    /// time derivative, found by counting braces without parsing, so that a fraction that is
+    /// not a derivative is parsed once, not once as a failed derivative and again (which made
+    /// nested fractions take exponential time: found by fuzzing, `tests/reader_fuzz.rs`).
+    fn looks_like_derivative(&self) -> bool {
+        let tok = |i: usize| self.toks.get(i).map(|(t, _)| t);
+        if tok(self.pos) != Some(&Tok::LBrace) || tok(self.pos + 1) != Some(&Tok::Letter('d')) {
+            return false;
+        }
+        let mut depth = 0usize;
+        let mut i = self.pos;
+        let close = loop {
+            match tok(i) {
+                None => return false,
+                Some(Tok::LBrace) => depth += 1,
+                Some(Tok::RBrace) => {
+                    depth -= 1;
+                    if depth == 0 {
+                        break i;
+                    }
+                }
+                Some(_) => {}
+            }
+            i += 1;
+        };
+        let denominator = [
+            Some(&Tok::LBrace),
+            Some(&Tok::Letter('d')),
+            Some(&Tok::Letter('t')),
+        ];
+        if (0..3).any(|j| tok(close + 1 + j) != denominator[j]) {
+            return false;
+        }
+        match tok(close + 4) {
+            Some(Tok::RBrace) => true,
+            Some(Tok::Caret) => tok(close + 6) == Some(&Tok::RBrace),
+            _ => false,
+        }
+    }
+
     fn derivative(&mut self, col: usize) -> Option<Expr> {
+        if !self.looks_like_derivative() {
+            return None;
+        }
         if !(self.eat(&Tok::LBrace) && self.eat(&Tok::Letter('d'))) {
             return None;
         }
