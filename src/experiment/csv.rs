@@ -164,7 +164,7 @@ pub fn parse_trace(text: &str, file: &str) -> Result<Trace, ExperimentError> {
                     file: file.into(),
                     line,
                     column: 1,
-                    unit: u.into(),
+                    unit: crate::scene::message::cut(u),
                 })?;
             }
             kv = header_unit(cells[1]).map_or(1.0, signal_factor);

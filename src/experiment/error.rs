@@ -101,7 +101,7 @@ pub enum ExperimentError {
         limit: usize,
     },
     /// A unit in a header this reader does not know.
-    #[error("{file}:{line}:{column}: unknown unit {unit:?} in the header: write the time in s, ms or us and the signal in V or mV (or no unit)")]
+    #[error("{file}:{line}:{column}: unknown unit \"{unit}\" in the header: write the time in s, ms or us and the signal in V or mV (or no unit)")]
     UnknownUnit {
         /// The file.
         file: String,
