@@ -501,6 +501,12 @@ fn corrections_view(
     let Some(study) = study else {
         return (Vec::new(), String::new(), Vec::new());
     };
+    if let Some(e) = &study.error {
+        let note = format!(
+            "The corrections of paper/corrections.yaml could not be checked on this paper: {e}"
+        );
+        return (Vec::new(), note, Vec::new());
+    }
     let verified =
         crate::corrections::assemble(bench.paper, &study.corrections, checked, &study.corrected);
     let records = verified
