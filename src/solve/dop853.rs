@@ -231,7 +231,9 @@ impl<'a, D: Dynamics<N>, const N: usize> Dop853<'a, D, N> {
             let fac11 = if err.is_nan() {
                 f64::INFINITY
             } else {
-                err.powf(0.125)
+                // err^(1/8) as three square roots: a few ulps from `powf(0.125)` and several
+                // times cheaper, which matters at one call per step of 12 evaluations.
+                err.sqrt().sqrt().sqrt()
             };
             if err <= 1.0 {
                 let fac = (1.0 / FAC_MAX).max((1.0 / FAC_MIN).min(fac11 / SAFETY));
