@@ -63,6 +63,103 @@ pub struct ClaimEntry {
     pub quantity: String,
     /// How it is computed independently.
     pub how: String,
+    /// How a loosely worded number ("about", "roughly", "a few") is judged, stated so a reader
+    /// can disagree with it; absent where the check's own rule applies.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rule: Option<Rule>,
+    /// Other places where the paper states the same fact (one claim per fact).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub also_at: Vec<Location>,
+}
+
+/// The reading of a loosely worded number: exactly one of `digits`, `within`, `factor` and
+/// `range`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Rule {
+    /// The paper's words the rule interprets ("about", "roughly", "a few").
+    pub words: String,
+    /// The number as printed to this many significant digits: the computed value, rounded to
+    /// them, must equal it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub digits: Option<u32>,
+    /// Within this relative distance of the printed number.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub within: Option<f64>,
+    /// Within this factor of the printed number, either way ("of order").
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub factor: Option<f64>,
+    /// Inside this closed interval, in the claim's unit.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub range: Option<[f64; 2]>,
+}
+
+impl Rule {
+    /// Why the rule is unusable, if it is: not exactly one reading, or a reading out of range.
+    pub fn problem(&self) -> Option<String> {
+        let set = [
+            self.digits.is_some(),
+            self.within.is_some(),
+            self.factor.is_some(),
+            self.range.is_some(),
+        ];
+        if set.iter().filter(|&&x| x).count() != 1 {
+            return Some("give exactly one of `digits`, `within`, `factor` and `range`".into());
+        }
+        if let Some(d) = self.digits.filter(|d| !(1..=15).contains(d)) {
+            return Some(format!("`digits: {d}` must be 1 to 15"));
+        }
+        if let Some(w) = self.within.filter(|w| !(*w > 0.0 && *w < 1.0)) {
+            return Some(format!("`within: {w}` must be a fraction between 0 and 1"));
+        }
+        if let Some(f) = self.factor.filter(|f| !(f.is_finite() && *f > 1.0)) {
+            return Some(format!("`factor: {f}` must be a finite number above 1"));
+        }
+        match self.range {
+            Some([lo, hi]) if !(lo.is_finite() && hi.is_finite() && lo < hi) => Some(format!(
+                "`range: [{lo}, {hi}]` must be two finite numbers, low first"
+            )),
+            _ => None,
+        }
+    }
+
+    /// The rule in words, for the report: `'roughly' read as within 5 % of 60 deg`.
+    pub fn describe(&self, printed: Option<f64>, unit: &str) -> String {
+        let unit = if unit == "1" { "" } else { unit };
+        let value = printed
+            .map(|v| format!("{v} {unit}").trim_end().to_string())
+            .unwrap_or_else(|| "the printed number".into());
+        let reading = if let Some(d) = self.digits {
+            format!(
+                "as {value} printed to {d} significant digit{}: the computed value, rounded to \
+                 that precision, must equal it",
+                if d == 1 { "" } else { "s" }
+            )
+        } else if let Some(w) = self.within {
+            format!("as within {} % of {value}", w * 100.0)
+        } else if let Some(f) = self.factor {
+            format!("as within a factor {f} of {value}, either way")
+        } else if let Some([lo, hi]) = self.range {
+            format!("as between {lo} and {hi} {unit}")
+                .trim_end()
+                .to_string()
+        } else {
+            "(no reading)".into()
+        };
+        format!("'{}' read {reading}", self.words)
+    }
+}
+
+/// Where in the paper a claim is (also) stated.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Location {
+    /// Section of the paper.
+    pub section: u32,
+    /// The equation it is about or near.
+    pub near_equation: u32,
+    /// The statement there, in our words.
+    pub claim: String,
 }
 
 /// The 85 equations, in order.

@@ -292,6 +292,14 @@ impl Paper {
                 message: "the entries must be the paper's 85 numbered equations, numbers 1 to 85 in order".into(),
             });
         }
+        for c in &claim_entries {
+            if let Some(problem) = c.rule.as_ref().and_then(|r| r.problem()) {
+                return Err(PaperError::Structure {
+                    file: file("claims.yaml"),
+                    message: format!("claim `{}`, key `rule`: {problem}", c.id),
+                });
+            }
+        }
         let global = resolve_table(&table, &file("symbols.yaml"), 0)?;
         let eqfile = file("equations.yaml");
         let parsed = entries

@@ -302,7 +302,7 @@ pub fn from_results(
 
     let mut claims = Vec::new();
     let mut unchecked_claims = Vec::new();
-    for c in catalogue::claims() {
+    for c in &bench.paper.claims {
         let found = checked
             .iter()
             .find(|k| matches!(k.subject, Subject::Claim { id } if id == c.id));
@@ -327,6 +327,15 @@ pub fn from_results(
                 None => "(qualitative)".into(),
             },
             how: c.how.clone(),
+            rule: c
+                .rule
+                .as_ref()
+                .map(|r| r.describe(c.claimed_value, &c.unit)),
+            also: c
+                .also_at
+                .iter()
+                .map(|l| format!("sec. {} (eq {}): {}", l.section, l.near_equation, l.claim))
+                .collect(),
             finding: found.map(finding_of),
             uncheckable: why,
         });
@@ -429,13 +438,27 @@ pub fn from_results(
                     .and_then(|c| c.cause.as_ref().map(crate::cause::Cause::describe)),
             })
             .collect(),
-        claims: catalogue::claims()
+        claims: bench
+            .paper
+            .claims
             .iter()
             .map(|c| json::ClaimRecord {
                 id: c.id.clone(),
                 section: c.section,
                 near_equation: c.near_equation,
+                also_at: c
+                    .also_at
+                    .iter()
+                    .map(|l| json::Place {
+                        section: l.section,
+                        near_equation: l.near_equation,
+                    })
+                    .collect(),
                 printed_value: c.claimed_value,
+                rule: c
+                    .rule
+                    .as_ref()
+                    .map(|r| r.describe(c.claimed_value, &c.unit)),
                 unit: c.unit.clone(),
                 outcome: outcome_for(
                     checked,

@@ -428,12 +428,26 @@ pub struct ClaimRecord {
     pub section: u32,
     /// The equation it is about.
     pub near_equation: u32,
+    /// Other places that state the same fact.
+    pub also_at: Vec<Place>,
     /// The number the paper prints, if it prints one.
     pub printed_value: Option<f64>,
+    /// How loose wording ("about", "a few") is read, in words, where the paper's wording needs
+    /// a reading.
+    pub rule: Option<String>,
     /// Its unit.
     pub unit: String,
     /// What the check found.
     pub outcome: Outcome,
+}
+
+/// A place in the paper.
+#[derive(Debug, Clone, PartialEq, Serialize, JsonSchema)]
+pub struct Place {
+    /// The paper's section.
+    pub section: u32,
+    /// The equation it is about or printed next to.
+    pub near_equation: u32,
 }
 
 /// One figure.

@@ -219,6 +219,10 @@ pub struct ClaimView {
     pub printed: String,
     /// How it is computed.
     pub how: String,
+    /// How its loose wording is read (paper/claims.yaml `rule`), in words.
+    pub rule: Option<String>,
+    /// Other places that state the same fact: "sec. 12 (eq 54): ...".
+    pub also: Vec<String>,
     /// The finding (absent when it cannot be checked).
     pub finding: Option<FindingView>,
     /// Why it cannot be checked, when it cannot.
