@@ -13,8 +13,8 @@
 use rolling_disk::model::rolling::Rolling;
 use rolling_disk::model::{Extras, Model};
 use rolling_disk::precision::{
-    energy_drift, measure_preset, rhs_nanoseconds, study, study::measure_point_with, Accuracy,
-    Reference, ReferenceOptions, StudyOptions, Timing,
+    energy_drift, measure_preset, rhs_latency_nanoseconds, rhs_nanoseconds, study,
+    study::measure_point_with, Accuracy, Reference, ReferenceOptions, StudyOptions, Timing,
 };
 use rolling_disk::scene::Scene;
 use rolling_disk::solve::{Dynamics, Engine, Method, Settings, State};
@@ -43,6 +43,7 @@ fn main() {
 
     let reference = Reference::compute(&scene, &ReferenceOptions::default()).expect("reference");
     let rhs_ns = rhs_nanoseconds(&scene);
+    let rhs_latency_ns = rhs_latency_nanoseconds(&scene);
 
     let mut rust = Vec::new();
     let engines = [
@@ -118,6 +119,7 @@ fn main() {
             "uncertainty": reference.uncertainty,
         },
         "rhs_nanoseconds": rhs_ns,
+        "rhs_latency_nanoseconds": rhs_latency_ns,
         "rust": rust,
         "presets": presets,
         "drift": drift,

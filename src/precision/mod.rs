@@ -31,7 +31,7 @@ pub mod reference;
 pub mod stable;
 pub mod study;
 
-pub use cost::{energy_drift, rhs_nanoseconds, Drift};
+pub use cost::{energy_drift, rhs_latency_nanoseconds, rhs_nanoseconds, Drift};
 pub use drift::{long_time_drift, DriftRow, DriftTable};
 pub use measure::{trace_with, Timing, Trace};
 pub use preset::{measure_preset, Accuracy, PresetMeasurement};
