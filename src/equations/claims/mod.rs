@@ -1,0 +1,536 @@
+//! Checks of the numeric and qualitative claims in the paper's prose (`paper/claims.yaml`).
+//!
+//! Every check computes the claimed quantity independently (closed forms derived here, roots by
+//! bisection, exact Jacobians of the rolling model, integrations) and compares it with the number
+//! the paper prints, read through [`Bench::claim`].
+//!
+//! **Loosely stated numbers** ("about 60 degrees", "0.77", "0.9", "560") are compared at the
+//! paper's own printed precision: the computed value is rounded to the number of significant
+//! digits the paper printed and must then EQUAL the printed number (to round-off). This is the
+//! same as requiring the computed value to lie within half a unit of the last printed digit, with
+//! one more demand that keeps the check able to fail: the claimed number must be the number the
+//! paper printed. A claimed value shifted by a relative 1e-3 is no longer a number printed at
+//! that precision, so the mutation test sees the check fail. See [`printed_precision`].
+//!
+//! Qualitative claims (true/false) get a numeric witness: a boundary, a limit, an exponent, or
+//! the paper's own arithmetic that the statement rests on.
+//!
+//! Claims of `paper/claims.yaml` marked 'not checkable' (observations whose data are not in the
+//! paper) are NOT registered here; neither are `nutation-disappears-below-0p1` (the equations
+//! give no threshold at 0.1 rad) and `contact-speed-exceeds-sound` (no number; its content is
+//! `finite-time-singularity`) and `summary-nutation-10-15-deg` (a range membership: the
+//! coincidence tilt, 9.65 deg from the linearization with b = alpha0 a, 11.46 deg from eq 58,
+//! sits inside the range at its printed precision with a margin no 1e-3 change of the range's
+//! ends can break, so no check of it could fail under the mutation test).
+
+use super::{Bench, Claim};
+use crate::disk::Disk;
+use crate::finding::{Finding, Method, Tolerance, Worst};
+use crate::model::adiabatic::Adiabatic;
+use crate::model::dissipation::PowerLaw;
+use crate::model::frictionless::{self as fl, Frictionless};
+use crate::model::lab_frame::{Contact, LabFrame};
+use crate::model::rolling::{self, Rates, Rolling};
+use crate::model::steady::steady_motion;
+use crate::model::{Extras, Model, Motion, Quantity};
+use crate::numerics::fit::log_log_slope;
+use crate::numerics::linearize::{eigenvalues, jacobian};
+use crate::numerics::oscillation::bisect;
+use crate::solve::{solve, Dynamics, Event, Problem, State};
+use nalgebra::SMatrix;
+use num_dual::{second_derivative, Dual64, DualNum};
+use std::f64::consts::{FRAC_PI_2, FRAC_PI_3, PI};
+
+mod frictionless;
+mod integrals;
+mod motion;
+mod oscillation;
+mod spin_down;
+#[cfg(test)]
+mod tests;
+
+use frictionless::*;
+use integrals::*;
+use motion::*;
+use oscillation::*;
+use spin_down::*;
+
+/// The claim checks.
+pub const CLAIMS: &[Claim] = &[
+    Claim {
+        id: "k-rim-disk",
+        check: k_rim_disk,
+    },
+    Claim {
+        id: "k-uniform-disk",
+        check: k_uniform_disk,
+    },
+    Claim {
+        id: "center-of-motion-constant",
+        check: center_of_motion_constant,
+    },
+    Claim {
+        id: "no-steady-motion-beyond-vertical",
+        check: no_steady_motion_beyond_vertical,
+    },
+    Claim {
+        id: "face-figure-rate-vanishes",
+        check: face_figure_rate_vanishes,
+    },
+    Claim {
+        id: "slip-when-b-large",
+        check: slip_when_b_large,
+    },
+    Claim {
+        id: "negative-b-friction-angle",
+        check: negative_b_friction_angle,
+    },
+    Claim {
+        id: "bracket-negative-angle",
+        check: bracket_negative_angle,
+    },
+    Claim {
+        id: "positive-b-unstable-large-tilt",
+        check: positive_b_unstable_large_tilt,
+    },
+    Claim {
+        id: "negative-b-always-stable",
+        check: negative_b_always_stable,
+    },
+    Claim {
+        id: "ratio-uniform-disk-077",
+        check: ratio_uniform_disk_077,
+    },
+    Claim {
+        id: "ratio-hoop-one",
+        check: ratio_hoop_one,
+    },
+    Claim {
+        id: "b-of-order-a-alpha",
+        check: b_of_order_a_alpha,
+    },
+    Claim {
+        id: "coincidence-eq58",
+        check: coincidence_eq58,
+    },
+    Claim {
+        id: "coincidence-eq54",
+        check: coincidence_eq54,
+    },
+    Claim {
+        id: "frictionless-threshold-uniform",
+        check: frictionless_threshold_uniform,
+    },
+    Claim {
+        id: "rolling-threshold-uniform",
+        check: rolling_threshold_uniform,
+    },
+    Claim {
+        id: "thresholds-ratio",
+        check: thresholds_ratio,
+    },
+    Claim {
+        id: "frictionless-constants",
+        check: frictionless_constants,
+    },
+    Claim {
+        id: "eq73-second-approximation-sign",
+        check: eq73_second_approximation_sign,
+    },
+    Claim {
+        id: "drag-exponent-linear-force",
+        check: drag_exponent_linear_force,
+    },
+    Claim {
+        id: "drag-exponent-quadratic-air",
+        check: drag_exponent_quadratic_air,
+    },
+    Claim {
+        id: "drag-exponent-moffatt",
+        check: drag_exponent_moffatt,
+    },
+    Claim {
+        id: "finite-time-singularity",
+        check: finite_time_singularity,
+    },
+    Claim {
+        id: "air-viscosity",
+        check: air_viscosity,
+    },
+    Claim {
+        id: "omega-units-hz-vs-rad-per-s",
+        check: omega_units_hz_vs_rad_per_s,
+    },
+    Claim {
+        id: "one-period-remaining-omega",
+        check: one_period_remaining_omega,
+    },
+    Claim {
+        id: "one-period-remaining-time",
+        check: one_period_remaining_time,
+    },
+    Claim {
+        id: "t0-after-last-peak",
+        check: t0_after_last_peak,
+    },
+    Claim {
+        id: "contact-loss-time",
+        check: contact_loss_time,
+    },
+    Claim {
+        id: "contact-loss-omega",
+        check: contact_loss_omega,
+    },
+    Claim {
+        id: "larger-t0-lowers-beta",
+        check: larger_t0_lowers_beta,
+    },
+    Claim {
+        id: "rolling-extra-integrals",
+        check: rolling_extra_integrals,
+    },
+    Claim {
+        id: "rattling-needs-more-friction",
+        check: rattling_needs_more_friction,
+    },
+    Claim {
+        id: "angular-momentum-near-vertical",
+        check: angular_momentum_near_vertical,
+    },
+    Claim {
+        id: "limits-eq55-eq71",
+        check: limits_eq55_eq71,
+    },
+    Claim {
+        id: "summary-contact-lost-few-degrees",
+        check: summary_contact_lost_few_degrees,
+    },
+];
+
+// ------------------------------------------------------------------------------ helpers
+
+/// Bisections here narrow their bracket to this relative width.
+const WIDTH: f64 = 1e-12;
+
+/// The experiment's fit (sec. 11): $C^{-1/4} = 0.0055$ with $\beta = 2$, $C$ in s^-3.
+const C_FIT_QUARTER: f64 = 0.0055;
+
+/// A dimensionless disk: $a = g = m = 1$, so rates are in units of $\sqrt{g/a}$.
+fn unit_disk(k: f64) -> Disk {
+    Disk::new(1.0, k, 1.0, 1.0).expect("a valid disk")
+}
+
+/// `x` rounded to `sig` significant digits.
+fn round_sig(x: f64, sig: i32) -> f64 {
+    if x == 0.0 || !x.is_finite() {
+        return x;
+    }
+    let e = x.abs().log10().floor() as i32;
+    let scale = 10f64.powi(sig - 1 - e);
+    (x * scale).round() / scale
+}
+
+/// The printed-precision rule (see the module's doc).
+fn printed_tolerance(sig: i32) -> Tolerance {
+    Tolerance {
+        value: 1e-12,
+        rule: format!(
+            "printed precision: the computed value rounded to the paper's {sig} significant \
+             digit(s) must equal the printed number (to round-off 1e-12)"
+        ),
+    }
+}
+
+/// Compares a computed value with a number printed to `sig` significant digits: the computed
+/// value is rounded to that precision and must equal the (claimed) printed number.
+fn printed_precision(
+    b: &Bench,
+    method: Method,
+    compared: &str,
+    computed: f64,
+    printed: f64,
+    sig: i32,
+    at: String,
+) -> Finding {
+    let mut w = Worst::default();
+    let rounded = round_sig(computed, sig);
+    w.add(b.claim(printed), rounded, printed.abs(), || {
+        format!("{at}; computed {computed:.6} rounds to {rounded} at {sig} significant digit(s)")
+    });
+    Finding::from_worst(method, compared, w, printed_tolerance(sig), false)
+}
+
+/// Judges `computed` against the claim `id` as the bench's paper states it (paper/claims.yaml):
+/// its printed value, moved by [`Bench::claim`] under the mutation test, read by the claim's
+/// `rule` (to the printed digits, within a relative distance, within a factor, or inside a
+/// range), and the rule's words become the tolerance's rule in the report. The number and its
+/// reading live in the YAML only, so an author can restate either without touching Rust.
+///
+/// A claim missing from the paper, or without the `rule` or `claimed_value` its check needs,
+/// makes the check one that could not run, naming the key to add.
+fn stated(
+    b: &Bench,
+    id: &str,
+    method: Method,
+    compared: &str,
+    computed: f64,
+    at: String,
+) -> Finding {
+    let Some(c) = b.paper.claims.iter().find(|c| c.id == id) else {
+        panic!(
+            "claims.yaml has no claim `{id}`: restore it (its check reads the printed value there)"
+        )
+    };
+    let Some(rule) = &c.rule else {
+        panic!("claims.yaml, claim `{id}`: add a `rule` saying how its wording is read")
+    };
+    let tolerance = |value: f64| Tolerance {
+        value,
+        rule: rule.describe(c.claimed_value, &c.unit),
+    };
+    if let Some([lo, hi]) = rule.range {
+        let (lo, hi) = (b.claim(lo), b.claim(hi));
+        let (end, outside) = if !computed.is_finite() {
+            (lo, f64::INFINITY)
+        } else if computed < lo {
+            (lo, lo - computed)
+        } else if computed > hi {
+            (hi, computed - hi)
+        } else {
+            (computed, 0.0)
+        };
+        let w = Worst {
+            error: outside / end.abs().max(f64::MIN_POSITIVE),
+            claimed: end,
+            reference: computed,
+            at: format!("{at}; the stated range is {lo} to {hi}"),
+            points: 1,
+        };
+        return Finding::from_worst(method, compared, w, tolerance(0.0), false);
+    }
+    let Some(printed) = c.claimed_value else {
+        panic!("claims.yaml, claim `{id}`: its rule needs the printed number in `claimed_value`")
+    };
+    let claimed = b.claim(printed);
+    let mut w = Worst::default();
+    if let Some(digits) = rule.digits {
+        let rounded = round_sig(computed, digits as i32);
+        w.add(claimed, rounded, printed.abs(), || {
+            format!(
+                "{at}; computed {computed:.6} rounds to {rounded} at {digits} significant digit(s)"
+            )
+        });
+        return Finding::from_worst(method, compared, w, tolerance(1e-12), false);
+    }
+    if let Some(f) = rule.factor {
+        let error = (computed / claimed).ln().abs();
+        let w = Worst {
+            error: if error.is_finite() {
+                error
+            } else {
+                f64::INFINITY
+            },
+            claimed,
+            reference: computed,
+            at: format!(
+                "{at}; error is |ln(computed / printed)|, a factor {:.3}",
+                error.exp()
+            ),
+            points: 1,
+        };
+        return Finding::from_worst(method, compared, w, tolerance(f.ln()), false);
+    }
+    let within = rule.within.unwrap_or(0.0);
+    w.add(claimed, computed, claimed.abs(), || at);
+    Finding::from_worst(method, compared, w, tolerance(within), false)
+}
+
+/// One comparison of a claimed value with a reference, relative, under `tol`.
+fn single(
+    method: Method,
+    compared: &str,
+    claimed: f64,
+    reference: f64,
+    tol: Tolerance,
+    at: String,
+) -> Finding {
+    let mut w = Worst::default();
+    w.add(claimed, reference, reference.abs(), || at);
+    Finding::from_worst(method, compared, w, tol, false)
+}
+
+/// The failing one of two findings, or the first when both pass (its `at` names the second).
+fn worse(first: Finding, second: Finding) -> Finding {
+    match (first.verdict.passes(), second.verdict.passes()) {
+        (true, false) => second,
+        (false, _) => first,
+        (true, true) => {
+            let mut f = first;
+            f.at = format!(
+                "{}; also {} ({}: error {:.3e}, {})",
+                f.at, second.compared, second.verdict, second.error, second.at
+            );
+            f
+        }
+    }
+}
+
+/// Rates of eqs 23-25 as a first-order system (no torque), for the Jacobian.
+fn rolling_field(disk: &Disk, y: &[Dual64; 4]) -> [Dual64; 4] {
+    let m = Motion {
+        alpha: y[0],
+        alpha_dot: y[1],
+        precession: y[2],
+        spin: y[3],
+    };
+    let r = rolling::rates(disk, &m, [Dual64::from(0.0); 3]);
+    [y[1], r.alpha_ddot, r.precession_dot, r.spin_dot]
+}
+
+/// The exact Jacobian of eqs 23-25 at a state.
+fn rolling_jacobian(disk: &Disk, m: &Motion) -> SMatrix<f64, 4, 4> {
+    jacobian(
+        |y| rolling_field(disk, y),
+        &[m.alpha, m.alpha_dot, m.precession, m.spin],
+    )
+}
+
+/// The squared small-oscillation frequency at an equilibrium whose Jacobian has one pair of
+/// non-zero eigenvalues $\pm i\varpi$ (the others zero): $\varpi^2 = -\mathrm{tr}(J^2)/2$.
+fn varpi2<const N: usize>(j: &SMatrix<f64, N, N>) -> f64 {
+    -(j * j).trace() / 2.0
+}
+
+/// $(k+1)\varpi^2/\Omega_0^2$ from the linearized eqs 23-25 at the steady motion $(\alpha_0, b = \beta a)$:
+/// the quantity the right side of eq 54 claims, measured independently of it.
+fn q_linearized(k: f64, alpha0: f64, beta: f64) -> f64 {
+    let disk = unit_disk(k);
+    let m = steady_motion(&disk, alpha0, beta).expect("a steady motion");
+    let j = rolling_jacobian(&disk, &m);
+    (k + 1.0) * varpi2(&j) / (m.precession * m.precession)
+}
+
+/// The right side of eq 54 (the paper's claim), with the claimed value read through `b`.
+fn q_eq54(k: f64, alpha0: f64, beta: f64) -> f64 {
+    let (s, c) = alpha0.sin_cos();
+    3.0 * k * c * c
+        + s * s
+        + beta * ((6.0 * k + 1.0) * c - (2.0 * k + 1.0) * s * s / c)
+        + 2.0 * beta * beta * (2.0 * k + 1.0)
+}
+
+/// The largest real part of the eigenvalues of eqs 23-25 linearized at a steady motion.
+fn max_growth(k: f64, alpha0: f64, beta: f64) -> f64 {
+    let disk = unit_disk(k);
+    let m = steady_motion(&disk, alpha0, beta).expect("a steady motion");
+    eigenvalues(&rolling_jacobian(&disk, &m))
+        .iter()
+        .map(|z| z.re)
+        .fold(f64::NEG_INFINITY, f64::max)
+}
+
+/// Minimum of a unimodal function on `[lo, hi]` by golden-section search.
+fn golden_min(mut lo: f64, mut hi: f64, f: impl Fn(f64) -> f64) -> (f64, f64) {
+    let r = (5f64.sqrt() - 1.0) / 2.0;
+    let mut x1 = hi - r * (hi - lo);
+    let mut x2 = lo + r * (hi - lo);
+    let (mut f1, mut f2) = (f(x1), f(x2));
+    while hi - lo > 1e-9 * (1.0 + hi.abs()) {
+        if f1 < f2 {
+            hi = x2;
+            x2 = x1;
+            f2 = f1;
+            x1 = hi - r * (hi - lo);
+            f1 = f(x1);
+        } else {
+            lo = x1;
+            x1 = x2;
+            f1 = f2;
+            x2 = lo + r * (hi - lo);
+            f2 = f(x2);
+        }
+    }
+    let x = 0.5 * (lo + hi);
+    (x, f(x))
+}
+
+/// The required friction coefficient $|F_{horizontal}|/F_z$ of a steady motion, from the exact
+/// contact force of eq 20 (the model's [`rolling::contact_force`]).
+fn mu_required(k: f64, alpha0: f64, beta: f64) -> f64 {
+    let disk = unit_disk(k);
+    let m = steady_motion(&disk, alpha0, beta).expect("a steady motion");
+    let r = rolling::rates(&disk, &m, [0.0; 3]);
+    let [fz, fr, f2] = rolling::contact_force(&disk, &m, &r);
+    fr.hypot(f2) / fz
+}
+
+/// The stability threshold of a disk spinning about a vertical diameter, in $\sqrt{g/a}$, from
+/// the linearized eqs 23-25 (rolling) at $\alpha = \pi/2$, $\omega_1 = 0$.
+fn rolling_vertical_threshold(k: f64) -> (f64, f64) {
+    let disk = unit_disk(k);
+    let stable = |om: f64| {
+        let m = Motion {
+            alpha: FRAC_PI_2,
+            alpha_dot: 0.0,
+            precession: om,
+            spin: 0.0,
+        };
+        varpi2(&rolling_jacobian(&disk, &m)) > 0.0
+    };
+    bisect(0.1, 10.0, WIDTH, stable)
+}
+
+/// The same threshold without friction, from the linearized eqs 61-62 ($\omega_1 = 0$).
+fn frictionless_vertical_threshold(k: f64) -> (f64, f64) {
+    let disk = unit_disk(k);
+    let stable = |om: f64| {
+        let j = jacobian(
+            |y: &[Dual64; 3]| {
+                let m = Motion {
+                    alpha: y[0],
+                    alpha_dot: y[1],
+                    precession: y[2],
+                    spin: Dual64::from(0.0),
+                };
+                let (add, pd) = fl::accelerations(&disk, &m);
+                [y[1], add, pd]
+            },
+            &[FRAC_PI_2, 0.0, om],
+        );
+        varpi2(&j) > 0.0
+    };
+    bisect(0.1, 10.0, WIDTH, stable)
+}
+
+fn mid((lo, hi): (f64, f64)) -> f64 {
+    0.5 * (lo + hi)
+}
+
+/// $C$ of the experimental fit (s^-3).
+fn c_fit() -> f64 {
+    C_FIT_QUARTER.powi(-4)
+}
+
+/// The precession rate at which one period remains, $t_0 - t = 2\pi/\Omega$ on eq 79 with
+/// $\beta = 2$ ($t_0 - t = C/\Omega^4$), by bisection.
+fn one_period_omega() -> f64 {
+    let c = c_fit();
+    mid(bisect(10.0, 1e4, WIDTH, |om| {
+        c / om.powi(4) < 2.0 * PI / om
+    }))
+}
+
+/// Remaining time $t_0 - t$ at which $d^2(1/\Omega^2)/dt^2 = -k$ on eq 79 ($\beta = 2$, $k = 1/4$),
+/// i.e. the vertical contact force vanishes (sec. 11's premise), by bisection with exact second
+/// derivatives.
+fn contact_loss_remaining() -> f64 {
+    let (c, k, beta) = (c_fit(), 0.25, 2.0);
+    let inv_omega2 = |tau: f64| {
+        let (_, _, d2) = second_derivative(
+            |t: num_dual::Dual2_64| (t * (1.0 / c)).powf(2.0 / (beta + 2.0)),
+            tau,
+        );
+        d2
+    };
+    mid(bisect(1e-7, 1.0, WIDTH, |tau| inv_omega2(tau) > -k))
+}

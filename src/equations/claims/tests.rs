@@ -1,0 +1,194 @@
+//! Tests of the claim checks.
+
+use super::*;
+use crate::finding::Verdict;
+use serde::Deserialize;
+
+#[derive(Deserialize)]
+struct Entry {
+    id: String,
+}
+
+#[test]
+fn every_claim_id_is_in_claims_yaml() {
+    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/paper/claims.yaml"))
+        .expect("paper/claims.yaml");
+    let entries: Vec<Entry> = serde_yaml::from_str(&text).expect("claims.yaml parses");
+    let mut ids: Vec<&str> = CLAIMS.iter().map(|c| c.id).collect();
+    for id in &ids {
+        assert!(
+            entries.iter().any(|e| e.id == *id),
+            "{id} is not in claims.yaml"
+        );
+    }
+    ids.sort();
+    ids.dedup();
+    assert_eq!(ids.len(), CLAIMS.len(), "duplicate ids");
+}
+
+/// Expected unperturbed verdicts: true = passes, false = fails (the paper is wrong).
+const EXPECTED: &[(&str, bool)] = &[
+    ("k-rim-disk", true),
+    ("k-uniform-disk", true),
+    ("center-of-motion-constant", false),
+    ("no-steady-motion-beyond-vertical", true),
+    ("face-figure-rate-vanishes", true),
+    ("slip-when-b-large", true),
+    ("negative-b-friction-angle", false),
+    ("bracket-negative-angle", false),
+    ("positive-b-unstable-large-tilt", false),
+    ("negative-b-always-stable", true),
+    ("ratio-uniform-disk-077", true),
+    ("ratio-hoop-one", true),
+    ("b-of-order-a-alpha", false),
+    ("coincidence-eq58", true),
+    ("coincidence-eq54", true),
+    ("frictionless-threshold-uniform", true),
+    ("rolling-threshold-uniform", true),
+    ("thresholds-ratio", true),
+    ("frictionless-constants", true),
+    ("eq73-second-approximation-sign", false),
+    ("drag-exponent-linear-force", true),
+    ("drag-exponent-quadratic-air", true),
+    ("drag-exponent-moffatt", true),
+    ("finite-time-singularity", true),
+    ("air-viscosity", true),
+    ("omega-units-hz-vs-rad-per-s", false),
+    ("one-period-remaining-omega", true),
+    ("one-period-remaining-time", true),
+    ("t0-after-last-peak", true),
+    ("contact-loss-time", true),
+    ("contact-loss-omega", true),
+    ("larger-t0-lowers-beta", true),
+    ("rolling-extra-integrals", false),
+    ("rattling-needs-more-friction", true),
+    ("angular-momentum-near-vertical", false),
+    ("limits-eq55-eq71", true),
+    ("summary-contact-lost-few-degrees", false),
+];
+
+#[test]
+fn verdicts_unperturbed_and_perturbed() {
+    assert_eq!(EXPECTED.len(), CLAIMS.len());
+    let mut bad = Vec::new();
+    for c in CLAIMS {
+        let expected = EXPECTED
+            .iter()
+            .find(|(id, _)| *id == c.id)
+            .unwrap_or_else(|| panic!("no expectation for {}", c.id))
+            .1;
+        let f = (c.check)(&Bench::default());
+        if f.verdict.passes() != expected {
+            bad.push(format!("{}: unperturbed {:?} {f:#?}", c.id, f.verdict));
+        }
+        // A claimed number moved by 1e-3 must fail; one read loosely ("within 5 %",
+        // "within a factor 3") that holds must fail once moved beyond its stated reading.
+        let rule = Bench::default()
+            .paper
+            .claims
+            .iter()
+            .find(|e| e.id == c.id)
+            .and_then(|e| e.rule.clone());
+        let moves = match rule.filter(|_| expected) {
+            Some(r) if r.within.is_some() => {
+                let w = r.within.unwrap_or_default();
+                [2.0 * w, -2.0 * w]
+            }
+            Some(r) if r.factor.is_some() => {
+                let f = r.factor.unwrap_or_default();
+                [f * f - 1.0, 1.0 / (f * f) - 1.0]
+            }
+            _ => [1e-3, -1e-3],
+        };
+        for eps in moves {
+            let p = (c.check)(&Bench::perturbed(eps));
+            if p.verdict != Verdict::Fails {
+                bad.push(format!("{}: perturbed {eps} {:?} {p:#?}", c.id, p.verdict));
+            }
+        }
+    }
+    assert!(bad.is_empty(), "{}", bad.join("\n"));
+}
+
+/// The paper with `claims` as its claims.yaml (the built-in equations and symbols).
+fn paper_with_claims(claims: &str) -> Result<crate::paper::Paper, crate::paper::PaperError> {
+    crate::paper::Paper::from_texts(
+        crate::paper::PaperSource::BuiltIn,
+        include_str!("../../../paper/equations.yaml"),
+        include_str!("../../../paper/symbols.yaml"),
+        claims,
+    )
+}
+
+/// The printed number and its reading come from claims.yaml: a looser reading of "about
+/// 60 degrees" (within 25 %) lets 71.4 deg pass, another printed number fails it again.
+#[test]
+fn a_rule_or_number_edited_in_claims_yaml_changes_the_verdict() {
+    let text = include_str!("../../../paper/claims.yaml");
+    let rule = "rule: { words: about, within: 0.05 }";
+    assert_eq!(text.matches(rule).count(), 1, "one claim has this rule");
+    let verdict = |claims: &str| {
+        let paper = paper_with_claims(claims).expect("the edited claims parse");
+        positive_b_unstable_large_tilt(&Bench::with_paper(&paper)).verdict
+    };
+    assert_eq!(verdict(text), Verdict::Fails);
+    let looser = text.replace(rule, "rule: { words: about, within: 0.25 }");
+    assert!(verdict(&looser).passes(), "71.4 is within 25 % of 60");
+    let block = &looser[looser.find("id: positive-b-unstable-large-tilt").unwrap()..];
+    let moved = looser.replacen(
+        block,
+        &block.replacen("claimed_value: 60", "claimed_value: 50", 1),
+        1,
+    );
+    assert_eq!(
+        verdict(&moved),
+        Verdict::Fails,
+        "71.4 is not within 25 % of 50"
+    );
+}
+
+#[test]
+fn an_unusable_rule_is_refused_naming_the_claim_and_the_key() {
+    let text = include_str!("../../../paper/claims.yaml").replace(
+        "rule: { words: about, within: 0.05 }",
+        "rule: { words: about, within: 0.05, digits: 2 }",
+    );
+    let Err(e) = paper_with_claims(&text) else {
+        panic!("two readings must be refused")
+    };
+    let msg = e.to_string();
+    assert!(
+        msg.contains("claims.yaml")
+            && msg.contains("positive-b-unstable-large-tilt")
+            && msg.contains("`rule`")
+            && msg.contains("exactly one"),
+        "{msg}"
+    );
+}
+
+#[test]
+fn linearization_has_one_oscillating_pair() {
+    // varpi^2 = -tr(J^2)/2 assumes the other eigenvalues vanish: check it.
+    for &(k, al, beta) in &[(0.25, 0.3, 0.1), (0.5, 1.0, -0.1), (0.25, 1.3, 0.6)] {
+        let disk = unit_disk(k);
+        let m = steady_motion(&disk, al, beta).unwrap();
+        let j = rolling_jacobian(&disk, &m);
+        let ev = eigenvalues(&j);
+        let w2 = varpi2(&j);
+        let big: Vec<_> = ev.iter().filter(|z| z.norm() > 1e-6).collect();
+        assert_eq!(big.len(), 2, "{ev:?}");
+        let lam2 = big[0] * big[0];
+        assert!((lam2.re + w2).abs() < 1e-9 * w2.abs(), "{lam2} vs {w2}");
+        assert!((q_linearized(k, al, beta) - q_eq54(k, al, beta)).abs() < 1e-9);
+    }
+}
+
+#[test]
+fn all_claims_are_fast() {
+    for c in CLAIMS {
+        let t = std::time::Instant::now();
+        let _ = (c.check)(&Bench::default());
+        let dt = t.elapsed().as_secs_f64();
+        assert!(dt < 0.5, "{} took {dt} s", c.id);
+    }
+}
