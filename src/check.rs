@@ -1,5 +1,11 @@
-//! Running the checks: in parallel, each isolated (a check that panics is reported as one that
-//! could not run, the others go on), results in registry order whatever the scheduling.
+//! Running the checks: in parallel, results in registry order whatever the scheduling.
+//!
+//! A check runs only when what it reads from the paper is there: a claim check needs its claim
+//! in the paper's claims.yaml and, where the built-in claim states a `rule` for its wording,
+//! the rule (and the printed number it reads) too; otherwise the check is reported as one that
+//! could not run, naming the key to add. Nothing else in a check can fail on user input (the
+//! mutation suite runs every mutant of every printed equation through the checks without a
+//! panic), so a panic in a check is a defect of this program and is not caught.
 
 use crate::catalogue;
 use crate::cause::{classify, Cause, Node};
@@ -7,7 +13,6 @@ use crate::equations::{self, Bench};
 use crate::finding::Finding;
 use rayon::prelude::*;
 use serde::Serialize;
-use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// What was checked.
@@ -207,11 +212,15 @@ pub fn run_checks(
         jobs.par_iter()
             .map(|job| {
                 let (subject, section, check, derivation, _) = job.clone();
+                let finding = match missing_input(bench, &subject) {
+                    Some(why) => Err(why),
+                    None => Ok(check(bench)),
+                };
                 let checked = Checked {
                     subject,
                     section,
-                    finding: isolated(check, bench),
-                    derivation: derivation.map(|d| isolated(d, bench)),
+                    finding,
+                    derivation: derivation.map(|d| Ok(d(bench))),
                     cause: None,
                 };
                 progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
@@ -227,16 +236,37 @@ pub fn run_checks(
         .collect())
 }
 
-/// Runs one check; a check that panics is reported as one that could not run.
-fn isolated(check: fn(&Bench) -> Finding, bench: &Bench) -> Result<Finding, String> {
-    catch_unwind(AssertUnwindSafe(|| check(bench))).map_err(|e| {
-        let msg = e
-            .downcast_ref::<String>()
-            .cloned()
-            .or_else(|| e.downcast_ref::<&str>().map(|s| s.to_string()))
-            .unwrap_or_else(|| "unknown panic".into());
-        format!("the check could not run: {msg}")
-    })
+/// Why the check of `subject` cannot run on `bench`'s paper, if it cannot: its claim is missing
+/// from claims.yaml, or lacks the `rule` (and the `claimed_value` the rule reads) that the
+/// built-in claim has and the check judges by.
+fn missing_input(bench: &Bench, subject: &Subject) -> Option<String> {
+    let Subject::Claim { id } = subject else {
+        return None;
+    };
+    let Some(found) = bench.paper.claims.iter().find(|c| c.id == *id) else {
+        return Some(format!(
+            "claims.yaml has no claim `{id}`: add it back (its check reads the printed value there)"
+        ));
+    };
+    let built_in = catalogue::claims().into_iter().find(|c| c.id == *id);
+    if built_in.is_some_and(|c| c.rule.is_some()) {
+        match &found.rule {
+            None => {
+                return Some(format!(
+                    "claims.yaml, claim `{id}`: add a `rule` saying how its wording is read \
+                     (for example `rule: {{ words: about, within: 0.05 }}`)"
+                ))
+            }
+            Some(r) if r.range.is_none() && found.claimed_value.is_none() => {
+                return Some(format!(
+                    "claims.yaml, claim `{id}`: its rule compares with the printed number: give \
+                     `claimed_value`"
+                ))
+            }
+            Some(_) => {}
+        }
+    }
+    None
 }
 
 /// Classifies every failing equation among `checked` ([`crate::cause`]).

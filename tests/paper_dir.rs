@@ -135,3 +135,43 @@ fn an_unchanged_copy_gives_the_built_in_verdicts() {
         .collect();
     assert_eq!(a, b);
 }
+
+/// The claim checks of an edited claims.yaml: one whose claim lost the `rule` its check judges
+/// by, and one whose claim was deleted, are reported as checks that could not run, each naming
+/// what to add; the others run as before.
+#[test]
+fn a_claim_missing_its_rule_or_its_entry_cannot_run_and_says_what_to_add() {
+    let rule = "  rule: { words: about, within: 0.05 }\n";
+    assert_eq!(CLAIMS.matches(rule).count(), 1);
+    let no_rule = CLAIMS.replace(rule, "");
+    let start = CLAIMS.find("- id: k-rim-disk").unwrap();
+    let end = start + CLAIMS[start..].find("\n\n").unwrap() + 2;
+    let edited = format!("{}{}", &no_rule[..start], &no_rule[end..]);
+    assert!(!edited.contains("k-rim-disk"));
+    let p = Paper::from_texts(PaperSource::BuiltIn, EQUATIONS, SYMBOLS, &edited).unwrap();
+    let bench = Bench::with_paper(&p);
+    let selection = Selection {
+        numbers: Some(Vec::new()),
+        claims: Some(vec![
+            "positive-b-unstable-large-tilt".into(),
+            "k-rim-disk".into(),
+            "k-uniform-disk".into(),
+        ]),
+    };
+    let checked = run_checks(&bench, &selection, 1, &|_, _| {}).unwrap();
+    let outcome = |id: &str| {
+        checked
+            .iter()
+            .find(|c| matches!(c.subject, Subject::Claim { id: i } if i == id))
+            .map(|c| c.finding.clone())
+            .unwrap()
+    };
+    let e = outcome("positive-b-unstable-large-tilt").unwrap_err();
+    assert!(
+        e.contains("positive-b-unstable-large-tilt") && e.contains("add a `rule`"),
+        "{e}"
+    );
+    let e = outcome("k-rim-disk").unwrap_err();
+    assert!(e.contains("has no claim `k-rim-disk`"), "{e}");
+    assert!(outcome("k-uniform-disk").unwrap().verdict.passes());
+}

@@ -266,8 +266,9 @@ fn printed_precision(
 /// range), and the rule's words become the tolerance's rule in the report. The number and its
 /// reading live in the YAML only, so an author can restate either without touching Rust.
 ///
-/// A claim missing from the paper, or without the `rule` or `claimed_value` its check needs,
-/// makes the check one that could not run, naming the key to add.
+/// A claim missing from the paper, or without the `rule` or `claimed_value` its check needs, is
+/// caught before the check runs (`check::missing_input`), which reports it as one that could
+/// not run and names the key to add.
 fn stated(
     b: &Bench,
     id: &str,
@@ -277,12 +278,10 @@ fn stated(
     at: String,
 ) -> Finding {
     let Some(c) = b.paper.claims.iter().find(|c| c.id == id) else {
-        panic!(
-            "claims.yaml has no claim `{id}`: restore it (its check reads the printed value there)"
-        )
+        unreachable!("check::missing_input runs the check only when claims.yaml has `{id}`")
     };
     let Some(rule) = &c.rule else {
-        panic!("claims.yaml, claim `{id}`: add a `rule` saying how its wording is read")
+        unreachable!("check::missing_input runs the check only when `{id}` has its rule")
     };
     let tolerance = |value: f64| Tolerance {
         value,
@@ -309,7 +308,7 @@ fn stated(
         return Finding::from_worst(method, compared, w, tolerance(0.0), false);
     }
     let Some(printed) = c.claimed_value else {
-        panic!("claims.yaml, claim `{id}`: its rule needs the printed number in `claimed_value`")
+        unreachable!("check::missing_input runs the check only when `{id}` has its number")
     };
     let claimed = b.claim(printed);
     let mut w = Worst::default();
