@@ -828,7 +828,11 @@ fn precision(name: &str, json: bool, quick: bool, target: Option<f64>) -> Result
         scene.name,
         if quick { "seconds" } else { "about a minute" }
     );
-    let study = precision::study(&scene, &opts).map_err(|e| format!("{}: {e}", scene.source))?;
+    let progress = |done: usize, total: usize, what: &str| {
+        eprintln!("  [{done:>2}/{total}] {what}");
+    };
+    let study = precision::study_with_progress(&scene, &opts, &progress)
+        .map_err(|e| format!("{}: {e}", scene.source))?;
     if json {
         println!(
             "{}",

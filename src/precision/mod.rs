@@ -36,7 +36,7 @@ pub use drift::{long_time_drift, DriftRow, DriftTable};
 pub use measure::{trace_with, Timing, Trace};
 pub use preset::{measure_preset, Accuracy, PresetMeasurement};
 pub use reference::{Agreement, Reference, ReferenceOptions};
-pub use study::{cheapest, study, Cost, Point, Series, Study, StudyOptions};
+pub use study::{cheapest, study, study_with_progress, Cost, Point, Series, Study, StudyOptions};
 
 use crate::scene::ModelKind;
 use crate::solve::SettingsError;

@@ -125,7 +125,20 @@ pub fn nominal_order(m: Method) -> u32 {
 
 /// Measures the work-precision diagram of `scene`.
 pub fn study(scene: &Scene, opts: &StudyOptions) -> Result<Study, SettingsError> {
+    study_with_progress(scene, opts, &|_, _, _| {})
+}
+
+/// [`study`], calling `progress(done, total, what)` after the reference and after each point
+/// (`total` counts the reference as one), so a long run can say where it is.
+pub fn study_with_progress(
+    scene: &Scene,
+    opts: &StudyOptions,
+    progress: &dyn Fn(usize, usize, &str),
+) -> Result<Study, SettingsError> {
+    let total = 1 + opts.rk4_steps.len() + 2 * opts.rtols.len();
     let reference = Reference::compute(scene, &opts.reference)?;
+    progress(1, total, "reference");
+    let mut done = 1;
     let span = scene.stop.time;
     let base = Settings {
         max_steps: scene.settings.max_steps,
@@ -160,7 +173,10 @@ pub fn study(scene: &Scene, opts: &StudyOptions) -> Result<Study, SettingsError>
     ] {
         let mut points = Vec::new();
         for s in sweep {
-            points.push(measure_point(scene, &s, &reference, &opts.timing)?);
+            let p = measure_point(scene, &s, &reference, &opts.timing)?;
+            done += 1;
+            progress(done, total, &p.label);
+            points.push(p);
         }
         points.sort_by_key(|p| p.evaluations);
         let (observed_order, fitted_points) = observed_order(&points, reference.uncertainty);
