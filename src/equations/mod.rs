@@ -349,7 +349,7 @@ pub(crate) fn last_side(eq: &crate::paper::Equation, bind: &crate::paper::Bindin
 pub(crate) fn solve_printed(
     eq: &crate::paper::Equation,
     rel: &crate::paper::Relation<'_>,
-    quantity: &str,
+    quantity: &'static str,
     bind: &crate::paper::Bindings<f64>,
     lo: f64,
     hi: f64,
@@ -419,7 +419,7 @@ pub(crate) struct PrintedThreshold {
 pub(crate) fn printed_threshold(
     b: &Bench,
     n: u32,
-    quantity: &str,
+    quantity: &'static str,
     bind: &crate::paper::Bindings<f64>,
     bracket: (f64, f64),
     probes: [f64; 2],
@@ -491,7 +491,7 @@ pub(crate) fn add_threshold(
 pub(crate) fn implied_square(
     eq: &crate::paper::Equation,
     rel: &crate::paper::Relation<'_>,
-    quantity: &str,
+    quantity: &'static str,
     bind: &crate::paper::Bindings<f64>,
 ) -> f64 {
     use crate::paper::Value;

@@ -16,7 +16,7 @@ pub use expr::{Chain, Expr, Rel, Symbol};
 
 use crate::catalogue::{ClaimEntry, EquationEntry, SymbolInfo};
 use nalgebra::{RealField, Vector3};
-use std::collections::{BTreeMap, HashMap};
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 /// Where the paper was read from.
@@ -126,45 +126,54 @@ impl Relation<'_> {
 }
 
 /// Values of the quantities a check knows at one point.
+///
+/// A short list searched in order rather than a hash map: a check binds a dozen quantities or
+/// fewer, names are string literals of the checks, and a check clones its bindings for every
+/// point it evaluates, so a list of `&'static str` keys clones without allocating strings and
+/// looks up without hashing (the report spent a fifth of its time hashing and cloning here).
 #[derive(Debug, Clone, Default)]
 pub struct Bindings<T: RealField + Copy> {
-    map: HashMap<String, Value<T>>,
+    list: Vec<(&'static str, Value<T>)>,
 }
 
 impl<T: RealField + Copy> Bindings<T> {
     /// No values.
     pub fn new() -> Self {
-        Self {
-            map: HashMap::new(),
-        }
+        Self { list: Vec::new() }
     }
 
     /// Binds a scalar quantity.
-    pub fn scalar(mut self, quantity: &str, x: T) -> Self {
-        self.map.insert(quantity.to_string(), Value::Scalar(x));
+    pub fn scalar(mut self, quantity: &'static str, x: T) -> Self {
+        self.set(quantity, Value::Scalar(x));
         self
     }
 
     /// Binds a vector quantity.
-    pub fn vector(mut self, quantity: &str, v: Vector3<T>) -> Self {
-        self.map.insert(quantity.to_string(), Value::Vector(v));
+    pub fn vector(mut self, quantity: &'static str, v: Vector3<T>) -> Self {
+        self.set(quantity, Value::Vector(v));
         self
     }
 
     /// Binds any value.
-    pub fn value(mut self, quantity: &str, v: Value<T>) -> Self {
-        self.map.insert(quantity.to_string(), v);
+    pub fn value(mut self, quantity: &'static str, v: Value<T>) -> Self {
+        self.set(quantity, v);
         self
     }
 
-    /// Binds in place.
-    pub fn set(&mut self, quantity: &str, v: Value<T>) {
-        self.map.insert(quantity.to_string(), v);
+    /// Binds in place (a quantity bound again takes the new value).
+    pub fn set(&mut self, quantity: &'static str, v: Value<T>) {
+        match self.list.iter_mut().find(|(q, _)| *q == quantity) {
+            Some(slot) => slot.1 = v,
+            None => self.list.push((quantity, v)),
+        }
     }
 
     /// The value of a quantity, if bound.
     pub fn get(&self, quantity: &str) -> Option<Value<T>> {
-        self.map.get(quantity).copied()
+        self.list
+            .iter()
+            .find(|(q, _)| *q == quantity)
+            .map(|(_, v)| *v)
     }
 }
 
