@@ -323,6 +323,7 @@ pub fn from_results(
             near_equation: c.near_equation,
             claim: c.claim.clone(),
             printed: match c.claimed_value {
+                Some(v) if c.unit == "1" => fmt_num(v),
                 Some(v) => format!("{} {}", fmt_num(v), c.unit),
                 None => "(qualitative)".into(),
             },
