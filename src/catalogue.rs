@@ -72,8 +72,8 @@ pub struct ClaimEntry {
     pub also_at: Vec<Location>,
 }
 
-/// The reading of a loosely worded number: exactly one of `digits`, `within`, `factor` and
-/// `range`.
+/// The reading of a loosely worded number: exactly one of `digits`, `within`, `factor`,
+/// `at_most` and `range`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Rule {
@@ -89,6 +89,9 @@ pub struct Rule {
     /// Within this factor of the printed number, either way ("of order").
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub factor: Option<f64>,
+    /// A bound: no more than the printed number, plus this relative slack ("at most about").
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub at_most: Option<f64>,
     /// Inside this closed interval, in the claim's unit.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub range: Option<[f64; 2]>,
@@ -101,16 +104,22 @@ impl Rule {
             self.digits.is_some(),
             self.within.is_some(),
             self.factor.is_some(),
+            self.at_most.is_some(),
             self.range.is_some(),
         ];
         if set.iter().filter(|&&x| x).count() != 1 {
-            return Some("give exactly one of `digits`, `within`, `factor` and `range`".into());
+            return Some(
+                "give exactly one of `digits`, `within`, `factor`, `at_most` and `range`".into(),
+            );
         }
         if let Some(d) = self.digits.filter(|d| !(1..=15).contains(d)) {
             return Some(format!("`digits: {d}` must be 1 to 15"));
         }
         if let Some(w) = self.within.filter(|w| !(*w > 0.0 && *w < 1.0)) {
             return Some(format!("`within: {w}` must be a fraction between 0 and 1"));
+        }
+        if let Some(m) = self.at_most.filter(|m| !(*m >= 0.0 && *m < 1.0)) {
+            return Some(format!("`at_most: {m}` must be a slack between 0 and 1"));
         }
         if let Some(f) = self.factor.filter(|f| !(f.is_finite() && *f > 1.0)) {
             return Some(format!("`factor: {f}` must be a finite number above 1"));
@@ -139,6 +148,8 @@ impl Rule {
             format!("as within {} % of {value}", w * 100.0)
         } else if let Some(f) = self.factor {
             format!("as within a factor {f} of {value}, either way")
+        } else if let Some(m) = self.at_most {
+            format!("as no more than {value} plus {} %", m * 100.0)
         } else if let Some([lo, hi]) = self.range {
             format!("as between {lo} and {hi} {unit}")
                 .trim_end()

@@ -4,13 +4,15 @@
 //! bisection, exact Jacobians of the rolling model, integrations) and compares it with the number
 //! the paper prints, read through [`Bench::claim`].
 //!
-//! **Loosely stated numbers** ("about 60 degrees", "0.77", "0.9", "560") are compared at the
-//! paper's own printed precision: the computed value is rounded to the number of significant
-//! digits the paper printed and must then EQUAL the printed number (to round-off). This is the
-//! same as requiring the computed value to lie within half a unit of the last printed digit, with
-//! one more demand that keeps the check able to fail: the claimed number must be the number the
-//! paper printed. A claimed value shifted by a relative 1e-3 is no longer a number printed at
-//! that precision, so the mutation test sees the check fail. See [`printed_precision`].
+//! **Loosely stated numbers** ("about 60 degrees", "roughly pi/3", "of order", "a few
+//! degrees", "at most about 0.01 s") are judged by the `rule` their entry in claims.yaml states,
+//! which the report shows beside the claim ([`stated`]): to the printed digits (the computed
+//! value rounded to the digits the paper printed must equal the printed number), within a
+//! relative distance, within a factor, under a bound with a slack, or inside a range. The printed
+//! number and its reading are read from the YAML, so an author or a referee who reads "about"
+//! differently edits one line and re-runs. The mutation test moves a printed number by 1e-3,
+//! or, for a loose reading that holds, beyond the reading (twice the distance, the factor
+//! squared, a bound ten times tighter): the check must then fail.
 //!
 //! Qualitative claims (true/false) get a numeric witness: a boundary, a limit, an exponent, or
 //! the paper's own arithmetic that the statement rests on.
@@ -338,6 +340,22 @@ fn stated(
             points: 1,
         };
         return Finding::from_worst(method, compared, w, tolerance(f.ln()), false);
+    }
+    if let Some(slack) = rule.at_most {
+        let limit = claimed * (1.0 + slack);
+        let over = (computed - limit) / claimed.abs();
+        let w = Worst {
+            error: if over.is_nan() {
+                f64::INFINITY
+            } else {
+                over.max(0.0)
+            },
+            claimed,
+            reference: computed,
+            at: format!("{at}; the bound with its slack is {limit:.6e}"),
+            points: 1,
+        };
+        return Finding::from_worst(method, compared, w, tolerance(0.0), false);
     }
     let within = rule.within.unwrap_or(0.0);
     w.add(claimed, computed, claimed.abs(), || at);
