@@ -57,6 +57,30 @@ use motion::*;
 use oscillation::*;
 use spin_down::*;
 
+/// How far the mutation test moves the printed number of the built-in claim `id` (relative, two
+/// moves) to see its check fail: 1e-3 either way; but a loose reading that `holds` is moved
+/// beyond itself (twice its distance, its factor squared, a bound ten times tighter), since a
+/// 1e-3 move inside "within 5 %" rightly changes nothing. A failing claim is moved by 1e-3 only:
+/// a large move could carry a wrong number into the reading by chance.
+pub fn mutation_moves(id: &str, holds: bool) -> [f64; 2] {
+    let rule = crate::catalogue::claims()
+        .into_iter()
+        .find(|c| c.id == id)
+        .and_then(|c| c.rule);
+    match rule.filter(|_| holds) {
+        Some(r) if r.within.is_some() => {
+            let w = r.within.unwrap_or_default();
+            [2.0 * w, -2.0 * w]
+        }
+        Some(r) if r.at_most.is_some() => [-0.9, -0.95],
+        Some(r) if r.factor.is_some() => {
+            let f = r.factor.unwrap_or_default();
+            [f * f - 1.0, 1.0 / (f * f) - 1.0]
+        }
+        _ => [1e-3, -1e-3],
+    }
+}
+
 /// The claim checks.
 pub const CLAIMS: &[Claim] = &[
     Claim {

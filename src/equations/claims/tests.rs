@@ -81,27 +81,7 @@ fn verdicts_unperturbed_and_perturbed() {
         if f.verdict.passes() != expected {
             bad.push(format!("{}: unperturbed {:?} {f:#?}", c.id, f.verdict));
         }
-        // A claimed number moved by 1e-3 must fail; one read loosely ("within 5 %",
-        // "within a factor 3") that holds must fail once moved beyond its stated reading.
-        let rule = Bench::default()
-            .paper
-            .claims
-            .iter()
-            .find(|e| e.id == c.id)
-            .and_then(|e| e.rule.clone());
-        let moves = match rule.filter(|_| expected) {
-            Some(r) if r.within.is_some() => {
-                let w = r.within.unwrap_or_default();
-                [2.0 * w, -2.0 * w]
-            }
-            // A bound that holds must fail once tightened tenfold.
-            Some(r) if r.at_most.is_some() => [-0.9, -0.95],
-            Some(r) if r.factor.is_some() => {
-                let f = r.factor.unwrap_or_default();
-                [f * f - 1.0, 1.0 / (f * f) - 1.0]
-            }
-            _ => [1e-3, -1e-3],
-        };
+        let moves = mutation_moves(c.id, expected);
         for eps in moves {
             let p = (c.check)(&Bench::perturbed(eps));
             if p.verdict != Verdict::Fails {
