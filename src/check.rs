@@ -249,6 +249,12 @@ fn missing_input(bench: &Bench, subject: &Subject) -> Option<String> {
         ));
     };
     let built_in = catalogue::claims().into_iter().find(|c| c.id == *id);
+    if found.rule.is_some() && built_in.as_ref().is_some_and(|c| c.rule.is_none()) {
+        return Some(format!(
+            "claims.yaml, claim `{id}`: its check makes its own comparison and reads no `rule`; \
+             remove the rule (it would be shown without being applied)"
+        ));
+    }
     if built_in.is_some_and(|c| c.rule.is_some()) {
         match &found.rule {
             None => {

@@ -174,4 +174,26 @@ fn a_claim_missing_its_rule_or_its_entry_cannot_run_and_says_what_to_add() {
     let e = outcome("k-rim-disk").unwrap_err();
     assert!(e.contains("has no claim `k-rim-disk`"), "{e}");
     assert!(outcome("k-uniform-disk").unwrap().verdict.passes());
+
+    // A reading added to a claim whose check makes its own comparison would be shown and not
+    // applied: refused.
+    let start = CLAIMS.find("- id: k-uniform-disk").unwrap();
+    let end = start + CLAIMS[start..].find("\n\n").unwrap();
+    let with_rule = format!(
+        "{}\n  rule: {{ words: about, within: 0.1 }}{}",
+        &CLAIMS[..end],
+        &CLAIMS[end..]
+    );
+    let p = Paper::from_texts(PaperSource::BuiltIn, EQUATIONS, SYMBOLS, &with_rule).unwrap();
+    let bench = Bench::with_paper(&p);
+    let selection = Selection {
+        numbers: Some(Vec::new()),
+        claims: Some(vec!["k-uniform-disk".into()]),
+    };
+    let checked = run_checks(&bench, &selection, 1, &|_, _| {}).unwrap();
+    let e = checked[0].finding.clone().unwrap_err();
+    assert!(
+        e.contains("k-uniform-disk") && e.contains("reads no `rule`"),
+        "{e}"
+    );
 }

@@ -174,3 +174,50 @@ fn all_claims_are_fast() {
         assert!(dt < 0.5, "{} took {dt} s", c.id);
     }
 }
+
+/// Every claim whose built-in entry states a reading is judged by it: with the reading replaced
+/// by a range that holds everything the check passes, by one that holds nothing it fails.
+#[test]
+fn every_stated_reading_is_the_one_applied() {
+    let text = include_str!("../../../paper/claims.yaml");
+    let claims = crate::catalogue::claims();
+    let mut tried = 0;
+    for entry in claims.iter().filter(|c| c.rule.is_some()) {
+        let check = CLAIMS
+            .iter()
+            .find(|c| c.id == entry.id)
+            .expect("a claim with a reading has a check");
+        let start = text.find(&format!("- id: {}\n", entry.id)).unwrap();
+        let end = start + text[start..].find("\n\n").unwrap_or(text.len() - start);
+        let block = &text[start..end];
+        let line = block
+            .lines()
+            .find(|l| l.starts_with("  rule:"))
+            .expect("the rule's line");
+        let verdict = |rule: &str| {
+            let edited = format!(
+                "{}{}{}",
+                &text[..start],
+                block.replace(line, rule),
+                &text[end..]
+            );
+            let paper = paper_with_claims(&edited).expect("the edited claims parse");
+            (check.check)(&Bench::with_paper(&paper)).verdict
+        };
+        let all = verdict("  rule: { words: test, range: [-1.0e300, 1.0e300] }");
+        assert!(
+            all.passes(),
+            "{}: a range holding everything gives {all}",
+            entry.id
+        );
+        let none = verdict("  rule: { words: test, range: [1.0e299, 1.0e300] }");
+        assert_eq!(
+            none,
+            Verdict::Fails,
+            "{}: a range holding nothing",
+            entry.id
+        );
+        tried += 1;
+    }
+    assert_eq!(tried, 13);
+}
