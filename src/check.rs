@@ -255,6 +255,16 @@ fn missing_input(bench: &Bench, subject: &Subject) -> Option<String> {
              remove the rule (it would be shown without being applied)"
         ));
     }
+    if found.claimed_value.is_none()
+        && built_in
+            .as_ref()
+            .is_some_and(|c| c.claimed_value.is_some() && c.rule.is_none())
+    {
+        return Some(format!(
+            "claims.yaml, claim `{id}`: its check compares with the printed number: give \
+             `claimed_value`"
+        ));
+    }
     if built_in.is_some_and(|c| c.rule.is_some()) {
         match &found.rule {
             None => {

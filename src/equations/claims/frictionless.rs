@@ -84,12 +84,17 @@ pub(super) fn frictionless_threshold_uniform(b: &Bench) -> Finding {
     let f = single(
         Method::Linearization,
         "frictionless stability threshold, k = 1/4 (sqrt(g/a))",
-        b.claim(2.0),
+        b.claim(printed(b, "frictionless-threshold-uniform")),
         thr,
         Tolerance::bisection(WIDTH),
         "bisection on varpi^2 of the linearized eqs 61-62 at alpha = pi/2".into(),
     );
-    with_integration(f, b, b.claim(2.0), true)
+    with_integration(
+        f,
+        b,
+        b.claim(printed(b, "frictionless-threshold-uniform")),
+        true,
+    )
 }
 
 /// `rolling-threshold-uniform`: the same threshold rolling without slipping, from the linearized
@@ -236,7 +241,7 @@ pub(super) fn frictionless_constants_lab(b: &Bench) -> Finding {
     single(
         Method::Integration,
         "constants of the frictionless motion in the lab-frame Newton-Euler model (count)",
-        b.claim(5.0),
+        b.claim(printed(b, "frictionless-constants")),
         count,
         Tolerance::roundoff(),
         format!(
@@ -308,7 +313,7 @@ pub(super) fn angular_momentum_near_vertical(b: &Bench) -> Finding {
     single(
         Method::Derivation,
         "coefficient of -m a^2 Omega 3-hat in L near the vertical (k = 1/4)",
-        b.claim(1.0),
+        b.claim(printed(b, "angular-momentum-near-vertical")),
         coefficient,
         Tolerance::roundoff(),
         format!(

@@ -386,6 +386,19 @@ fn stated(
     Finding::from_worst(method, compared, w, tolerance(within), false)
 }
 
+/// The number claim `id` prints, as the bench's paper's claims.yaml gives it (so an author's
+/// edit reaches the check); `check::missing_input` runs a check only when it is there.
+fn printed(b: &Bench, id: &str) -> f64 {
+    b.paper
+        .claims
+        .iter()
+        .find(|c| c.id == id)
+        .and_then(|c| c.claimed_value)
+        .unwrap_or_else(|| {
+            unreachable!("check::missing_input runs the check only when `{id}` has its number")
+        })
+}
+
 /// One comparison of a claimed value with a reference, relative, under `tol`.
 fn single(
     method: Method,

@@ -17,12 +17,18 @@ pub(super) fn k_rim_disk(b: &Bench) -> Finding {
         i22 += m / n as f64 * y * y;
     }
     let mut w = Worst::default();
-    w.add(b.claim(0.5), i11 / (2.0 * m * a * a), 0.5, || {
-        "I_11/(2 m a^2) of a ring of 24 point masses".into()
-    });
-    w.add(b.claim(0.5), i22 / (m * a * a), 0.5, || {
-        "I_22/(m a^2), diametral moment of the same ring".into()
-    });
+    w.add(
+        b.claim(printed(b, "k-rim-disk")),
+        i11 / (2.0 * m * a * a),
+        0.5,
+        || "I_11/(2 m a^2) of a ring of 24 point masses".into(),
+    );
+    w.add(
+        b.claim(printed(b, "k-rim-disk")),
+        i22 / (m * a * a),
+        0.5,
+        || "I_22/(m a^2), diametral moment of the same ring".into(),
+    );
     Finding::from_worst(
         Method::Derivation,
         "k of a ring from its moments of inertia",
@@ -55,12 +61,18 @@ pub(super) fn k_uniform_disk(b: &Bench) -> Finding {
         }
     }
     let mut w = Worst::default();
-    w.add(b.claim(0.25), i11 / (2.0 * mass * a * a), 0.25, || {
-        "I_11/(2 m a^2) by quadrature".into()
-    });
-    w.add(b.claim(0.25), i22 / (mass * a * a), 0.25, || {
-        "I_22/(m a^2) by quadrature".into()
-    });
+    w.add(
+        b.claim(printed(b, "k-uniform-disk")),
+        i11 / (2.0 * mass * a * a),
+        0.25,
+        || "I_11/(2 m a^2) by quadrature".into(),
+    );
+    w.add(
+        b.claim(printed(b, "k-uniform-disk")),
+        i22 / (mass * a * a),
+        0.25,
+        || "I_22/(m a^2) by quadrature".into(),
+    );
     Finding::from_worst(
         Method::Derivation,
         "k of a uniform disk from its moments of inertia",

@@ -237,7 +237,7 @@ pub(super) fn coincidence_eq58(b: &Bench) -> Finding {
     single(
         Method::Derivation,
         "tilt where eq 58 gives varpi = Omega0 (rad)",
-        b.claim(0.2),
+        b.claim(printed(b, "coincidence-eq58")),
         root,
         Tolerance::bisection(WIDTH),
         "bisection on eq 58".into(),

@@ -33,7 +33,7 @@ pub(super) fn eq73_second_approximation_sign(b: &Bench) -> Finding {
     single(
         Method::Derivation,
         "coefficient of m a g alpha_dot in eq 73 at F_z = 0",
-        b.claim(2.5),
+        b.claim(printed(b, "eq73-second-approximation-sign")),
         c,
         Tolerance::bisection(WIDTH),
         format!(
@@ -63,7 +63,7 @@ pub(super) fn drag_exponent_linear_force(b: &Bench) -> Finding {
     single(
         Method::Derivation,
         "beta for a drag force proportional to the contact speed",
-        b.claim(2.0),
+        b.claim(printed(b, "drag-exponent-linear-force")),
         drag_exponent(1.0),
         Tolerance::roundoff(),
         "log-log slope of P = F v against Omega".into(),
@@ -75,7 +75,7 @@ pub(super) fn drag_exponent_quadratic_air(b: &Bench) -> Finding {
     single(
         Method::Derivation,
         "beta for a drag force proportional to the speed squared",
-        b.claim(3.0),
+        b.claim(printed(b, "drag-exponent-quadratic-air")),
         drag_exponent(2.0),
         Tolerance::roundoff(),
         "log-log slope of P = F v against Omega".into(),
@@ -100,7 +100,7 @@ pub(super) fn drag_exponent_moffatt(b: &Bench) -> Finding {
     single(
         Method::Derivation,
         "beta of Moffatt's air-film model (exponent of P against Omega)",
-        b.claim(4.0),
+        b.claim(printed(b, "drag-exponent-moffatt")),
         log_log_slope(&omegas, &powers),
         Tolerance::roundoff(),
         "eq 82 differentiated exactly, Omega from eq 31".into(),
@@ -147,9 +147,12 @@ pub(super) fn finite_time_singularity(b: &Bench) -> Finding {
         for j in i + 1..betas.len() {
             let (u, v) = (1.0 / p[i], 1.0 / p[j]);
             let root = betas[i] - u * (betas[j] - betas[i]) / (v - u);
-            w.add(b.claim(-2.0), root, 2.0, || {
-                format!("from beta = {} and {}", betas[i], betas[j])
-            });
+            w.add(
+                b.claim(printed(b, "finite-time-singularity")),
+                root,
+                2.0,
+                || format!("from beta = {} and {}", betas[i], betas[j]),
+            );
         }
     }
     let mut f = Finding::from_worst(
@@ -178,9 +181,12 @@ pub(super) fn air_viscosity(b: &Bench) -> Finding {
         let mu = 1.716e-5 * (t / 273.15).powf(1.5) * (273.15 + 110.4) / (t + 110.4);
         let cgs = 10.0 * mu;
         let rounded = round_sig(cgs, 2);
-        w.add(b.claim(1.8e-4), rounded, 1.8e-4, || {
-            format!("{tc} C: {cgs:.4e} g/(cm s) rounds to {rounded:e}")
-        });
+        w.add(
+            b.claim(printed(b, "air-viscosity")),
+            rounded,
+            1.8e-4,
+            || format!("{tc} C: {cgs:.4e} g/(cm s) rounds to {rounded:e}"),
+        );
     }
     Finding::from_worst(
         Method::Derivation,

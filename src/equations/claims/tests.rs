@@ -221,3 +221,36 @@ fn every_stated_reading_is_the_one_applied() {
     }
     assert_eq!(tried, 13);
 }
+
+/// A printed number edited in claims.yaml reaches a check that makes its own comparison too:
+/// k = 0.3 for a uniform disk fails, and a claim whose number was deleted is not run.
+#[test]
+fn a_printed_number_edited_in_claims_yaml_reaches_the_check() {
+    let text = include_str!("../../../paper/claims.yaml");
+    let start = text.find("- id: k-uniform-disk").unwrap();
+    let end = start + text[start..].find("\n\n").unwrap();
+    let block = &text[start..end];
+    let run = |edited_block: &str| {
+        let edited = format!("{}{}{}", &text[..start], edited_block, &text[end..]);
+        let paper = paper_with_claims(&edited).expect("the edited claims parse");
+        crate::check::run_checks(
+            &Bench::with_paper(&paper),
+            &crate::check::Selection {
+                numbers: Some(Vec::new()),
+                claims: Some(vec!["k-uniform-disk".into()]),
+            },
+            1,
+            &|_, _| {},
+        )
+        .expect("the selection is valid")
+        .remove(0)
+        .finding
+    };
+    assert!(run(block).unwrap().verdict.passes());
+    let wrong = block.replace("claimed_value: 0.25", "claimed_value: 0.3");
+    assert_ne!(wrong, block);
+    assert_eq!(run(&wrong).unwrap().verdict, Verdict::Fails);
+    let gone = block.replace("claimed_value: 0.25", "claimed_value: null");
+    let e = run(&gone).unwrap_err();
+    assert!(e.contains("give `claimed_value`"), "{e}");
+}
