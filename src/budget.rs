@@ -23,6 +23,14 @@ pub const MAX_ROWS: u64 = 1_000_000;
 /// The largest `max_steps` a scene may ask for, whatever its number of states.
 pub const MAX_STEPS_LIMIT: u64 = 50_000_000;
 
+/// A budget the user asked for that cannot be set.
+#[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
+pub enum BudgetError {
+    /// `--max-seconds` out of its range.
+    #[error("--max-seconds must be a positive number of seconds up to 86400 (a day), got {0}")]
+    WallSeconds(f64),
+}
+
 /// Default wall-time budget of one integration, in seconds.
 pub const DEFAULT_WALL_SECONDS: f64 = 600.0;
 
@@ -32,11 +40,9 @@ static WALL_BUDGET_MILLIS: AtomicU64 = AtomicU64::new((DEFAULT_WALL_SECONDS * 10
 
 /// Sets the wall-time budget of every integration started from now on. Returns an error
 /// sentence when `seconds` is not a positive finite number of at most a day.
-pub fn set_wall_seconds(seconds: f64) -> Result<(), String> {
+pub fn set_wall_seconds(seconds: f64) -> Result<(), BudgetError> {
     if !(seconds.is_finite() && seconds > 0.0 && seconds <= 86_400.0) {
-        return Err(format!(
-            "--max-seconds must be a positive number of seconds up to 86400 (a day), got {seconds}"
-        ));
+        return Err(BudgetError::WallSeconds(seconds));
     }
     let millis = (seconds * 1000.0).ceil().max(1.0) as u64;
     WALL_BUDGET_MILLIS.store(millis, Ordering::Relaxed);

@@ -3,7 +3,47 @@
 
 use crate::run::{run, Run};
 use crate::scene::{ModelKind, Scene};
+use crate::solve::SettingsError;
 use serde::Serialize;
+
+/// Why two runs of a scene could not be compared.
+#[derive(Debug, thiserror::Error)]
+pub enum CompareError {
+    /// A sliding scene has no reduced model to referee.
+    #[error(
+        "a sliding scene already runs in the lab frame; compare it with rolling and frictionless \
+         runs by setting mu large or 0 (tests/sliding.rs does)"
+    )]
+    Sliding,
+    /// The lab-frame model has no dissipation.
+    #[error(
+        "the lab-frame model has no dissipation, so a {0} scene cannot be compared with it: \
+         compare a rolling or frictionless scene"
+    )]
+    Dissipative(ModelKind),
+    /// One of the two runs was refused.
+    #[error("{source_name}{model}: {error}")]
+    Run {
+        /// The scene's file or built-in name.
+        source_name: String,
+        /// " in the ... model" for the second run, empty for the scene's own.
+        model: String,
+        /// Why.
+        error: SettingsError,
+    },
+    /// One of the two runs ended early.
+    #[error("a run did not finish ({model}: {mine}; {other}: {theirs})")]
+    Unfinished {
+        /// The scene's model.
+        model: ModelKind,
+        /// How its run ended.
+        mine: String,
+        /// The other model.
+        other: ModelKind,
+        /// How that run ended.
+        theirs: String,
+    },
+}
 
 /// The largest difference of one recorded quantity between two runs.
 #[derive(Debug, Clone, Serialize)]
@@ -34,27 +74,20 @@ pub struct Comparison {
 }
 
 /// The lab-frame model that referees a scene's model.
-pub fn lab_frame_for(model: ModelKind) -> Result<ModelKind, String> {
+pub fn lab_frame_for(model: ModelKind) -> Result<ModelKind, CompareError> {
     match model {
         ModelKind::Rolling | ModelKind::LabFrame => Ok(ModelKind::LabFrame),
         ModelKind::Frictionless | ModelKind::LabFrameFrictionless => {
             Ok(ModelKind::LabFrameFrictionless)
         }
-        ModelKind::Sliding => Err(
-            "a sliding scene already runs in the lab frame; compare it with rolling and \
-             frictionless runs by setting mu large or 0 (tests/sliding.rs does)"
-                .to_string(),
-        ),
-        ModelKind::Dissipative | ModelKind::Adiabatic => Err(format!(
-            "the lab-frame model has no dissipation, so a {model} scene cannot be compared with it: \
-             compare a rolling or frictionless scene"
-        )),
+        ModelKind::Sliding => Err(CompareError::Sliding),
+        ModelKind::Dissipative | ModelKind::Adiabatic => Err(CompareError::Dissipative(model)),
     }
 }
 
 /// Runs `scene` in its own model and in `other`, both sampled at the same times (the scene's
 /// `sample`, or 1000 samples over its duration), and measures the differences of what it records.
-pub fn compare(scene: &Scene, other: ModelKind) -> Result<Comparison, String> {
+pub fn compare(scene: &Scene, other: ModelKind) -> Result<Comparison, CompareError> {
     let mut mine = scene.clone();
     if mine.sample.is_none() {
         mine.sample = Some(mine.stop.time / 1000.0);
@@ -63,14 +96,22 @@ pub fn compare(scene: &Scene, other: ModelKind) -> Result<Comparison, String> {
         model: other,
         ..mine.clone()
     };
-    let a = run(&mine, None).map_err(|e| format!("{}: {e}", scene.source))?;
-    let b =
-        run(&theirs, None).map_err(|e| format!("{} in the {other} model: {e}", scene.source))?;
+    let refused = |model: String| {
+        move |error| CompareError::Run {
+            source_name: scene.source.to_string(),
+            model,
+            error,
+        }
+    };
+    let a = run(&mine, None).map_err(refused(String::new()))?;
+    let b = run(&theirs, None).map_err(refused(format!(" in the {other} model")))?;
     if !a.ending.is_complete() || !b.ending.is_complete() {
-        return Err(format!(
-            "a run did not finish ({}: {}; {other}: {})",
-            scene.model, a.ending, b.ending
-        ));
+        return Err(CompareError::Unfinished {
+            model: scene.model,
+            mine: a.ending.to_string(),
+            other,
+            theirs: b.ending.to_string(),
+        });
     }
     Ok(Comparison {
         scene: scene.name.clone(),

@@ -389,14 +389,16 @@ fn simulate(name: &str, csv: Option<PathBuf>, compare: Option<&str>) -> Result<(
     let scene = Scene::load(name).map_err(|e| e.to_string())?;
     if let Some(other) = compare {
         let other = match other {
-            "lab-frame" => rolling_disk::compare::lab_frame_for(scene.model)?,
+            "lab-frame" => {
+                rolling_disk::compare::lab_frame_for(scene.model).map_err(|e| e.to_string())?
+            }
             _ => {
                 return Err(format!(
                     "--compare: {other} is not a model to compare with; use lab-frame"
                 ))
             }
         };
-        let c = rolling_disk::compare::compare(&scene, other)?;
+        let c = rolling_disk::compare::compare(&scene, other).map_err(|e| e.to_string())?;
         println!("scene {}: {} against {}", c.scene, c.model, c.other);
         println!(
             "{:<24} {:>14} {:>14} {:>10}",
