@@ -7,8 +7,8 @@
 //! with $\mathbf F(\hat{\mathbf s}) = F_z(\hat{\mathbf s})(\hat{\mathbf z} - \mu\hat{\mathbf s})$
 //! the contact point's acceleration $\dot{\mathbf v}_c = A\mathbf F - \mathbf b$ must point
 //! along $+\hat{\mathbf s}$ (Filippov's sliding-onset condition for this law). $A$ is not
-//! isotropic along the table, so the direction is found by the fixed point
-//! $\hat{\mathbf s}\leftarrow\dot{\mathbf v}_{c,t}/|\dot{\mathbf v}_{c,t}|$, started from
+//! isotropic along the table, so the direction is found by a root search in the table's plane
+//! (`onset_direction`) that starts from
 //! $-\mathbf F_{t}^{\rm stick}/|\mathbf F_{t}^{\rm stick}|$ (the friction at its limit along the
 //! force sticking needs). That start is itself the consistent direction in the limit of a
 //! vanishing excess $\delta = |\mathbf F^{\rm stick}_t| - \mu F_z$: with
@@ -16,10 +16,11 @@
 //! $\hat{\mathbf s} = -\hat{\mathbf u} + O(\delta)$ gives $\dot{\mathbf v}_{c,t} = \lambda\hat{\mathbf s}$ with
 //! $\lambda = \delta/(\hat{\mathbf u}\cdot A^{-1}\hat{\mathbf u}) > 0$. A slip that starts at
 //! the located edge of the cone ($\delta \approx 0$) therefore starts along $-\hat{\mathbf u}$,
-//! and the iteration is used only while the acceleration is well above round-off.
+//! and the search takes the consistent root nearest to it.
 
 use super::{horizontal, Mode, Sliding};
 use crate::model::lab_frame::{ContactProblem, Snapshot};
+use crate::numerics::oscillation::bisect;
 use nalgebra::Vector3;
 
 /// The contact force of one evaluation, with what the guards need.
@@ -118,7 +119,20 @@ impl Sliding {
         }
     }
 
-    /// The consistent slip direction at rest (module documentation).
+    /// The consistent slip direction at rest (module documentation): the direction
+    /// $\hat{\mathbf s}(\theta) = (\cos\theta, \sin\theta, 0)$ nearest to
+    /// $-\hat{\mathbf u}$ at which the contact point's acceleration $\dot{\mathbf v}_{c,t}$ has
+    /// no component across $\hat{\mathbf s}$ and none against it.
+    ///
+    /// Found by bracketing the across component $(\dot{\mathbf v}_{c,t}\times\hat{\mathbf s})_z$
+    /// in steps of 5 degrees outward from $-\hat{\mathbf u}$ and bisecting each bracket, keeping the
+    /// first root whose along component is not negative. Not by the fixed point
+    /// $\hat{\mathbf s}\leftarrow\dot{\mathbf v}_{c,t}/|\dot{\mathbf v}_{c,t}|$: near the edge
+    /// of the cone the acceleration along $\hat{\mathbf s}$ is of the size of the excess $\delta$
+    /// while its across component changes by $O(|\mathbf b|)$ per radian, so that map has a gain
+    /// of order $|\mathbf b|/\delta$ and runs away from the consistent direction (it did, at
+    /// $\delta = 1.4\times10^{-5}$ N with $\mu = 0.05$, to a direction the contact point
+    /// decelerated along: ten thousand held slips of $10^{-10}$ s each).
     pub(crate) fn onset_direction(
         &self,
         cp: &ContactProblem,
@@ -126,31 +140,54 @@ impl Sliding {
         stick: &Vector3<f64>,
     ) -> Vector3<f64> {
         let ft = horizontal(stick);
-        let mut dir = if ft.norm() > 0.0 {
+        let start = if ft.norm() > 0.0 {
             -ft / ft.norm()
         } else {
             s.e2
         };
-        for _ in 0..50 {
+        let theta0 = start.y.atan2(start.x);
+        let direction = |phi: f64| {
+            let th = theta0 + phi;
+            Vector3::new(th.cos(), th.sin(), 0.0)
+        };
+        // (along, across) components of the contact point's acceleration for direction phi;
+        // None where the slip law has no solution (Painleve).
+        let components = |phi: f64| {
+            let dir = direction(phi);
             let f = self.slip_force(cp, s, &dir);
             if f.consistency <= 0.0 {
-                break;
+                return None;
             }
             let acc = horizontal(&(cp.apply(s, &f.force) - cp.b));
-            let n = acc.norm();
-            // At the edge of the cone the slip starts with zero acceleration along
-            // -F_t/|F_t| (the limit of the consistent direction as the excess vanishes); a
-            // direction read from an acceleration of round-off size would be noise.
-            if n < 1e-6 * self.disk.g {
-                break;
-            }
-            let next = acc / n;
-            let moved = (next - dir).norm();
-            dir = next;
-            if moved < 1e-14 {
-                break;
+            Some((acc.dot(&dir), acc.cross(&dir).z))
+        };
+        // The along component at a root is about delta / m; round-off in it is ~1e-12 g.
+        let tiny = 1e-9 * self.disk.g;
+        let step = 5f64.to_radians();
+        for j in 0..36 {
+            for (lo, hi) in [
+                (j as f64 * step, (j + 1) as f64 * step),
+                (-((j + 1) as f64) * step, -(j as f64) * step),
+            ] {
+                let (Some((_, c_lo)), Some((_, c_hi))) = (components(lo), components(hi)) else {
+                    continue;
+                };
+                if c_lo == 0.0 || (c_lo > 0.0) != (c_hi > 0.0) {
+                    let positive_at_lo = c_lo > 0.0;
+                    let (a, b) = if c_lo == 0.0 {
+                        (lo, lo)
+                    } else {
+                        bisect(lo, hi, 1e-14, |phi| {
+                            components(phi).is_some_and(|(_, c)| c > 0.0) != positive_at_lo
+                        })
+                    };
+                    let root = 0.5 * (a + b);
+                    if components(root).is_some_and(|(along, _)| along >= -tiny) {
+                        return direction(root);
+                    }
+                }
             }
         }
-        dir
+        start
     }
 }
