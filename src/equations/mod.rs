@@ -165,10 +165,6 @@ pub const UNCHECKABLE_EQUATIONS: &[(u32, &str)] = &[(
 /// Prose claims (ids of paper/claims.yaml) that have no check, and why.
 pub const UNCHECKABLE_CLAIMS: &[(&str, &str)] = &[
     (
-        "rising-needs-slip",
-        "not yet: it needs a study on the Coulomb sliding model (issue 14), which is being built",
-    ),
-    (
         "transition-observed-range",
         "an observation on the authors' video frames",
     ),

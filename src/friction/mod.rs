@@ -4,8 +4,10 @@
 //! - [`slip_onset`]: the friction that steady motion with $b > 0$ needs (eq 42) against the
 //!   onset of slip found by integration;
 //! - [`negative_b`]: whether steady motion with $b < 0$ survives a realistic $\mu$ (eq 43).
+//! - [`rising`]: whether a disk spun about a nearly vertical diameter rises only when it slides (sec. 10).
 
 pub mod negative_b;
+pub mod rising;
 pub mod slip_onset;
 
 use crate::disk::Disk;

@@ -47,6 +47,7 @@ mod frictionless;
 mod integrals;
 mod motion;
 mod oscillation;
+mod rising;
 mod spin_down;
 #[cfg(test)]
 mod tests;
@@ -55,6 +56,7 @@ use frictionless::*;
 use integrals::*;
 use motion::*;
 use oscillation::*;
+use rising::*;
 use spin_down::*;
 
 /// How far the mutation test moves the printed number of the built-in claim `id` (relative, two
@@ -226,6 +228,10 @@ pub const CLAIMS: &[Claim] = &[
     Claim {
         id: "limits-eq55-eq71",
         check: limits_eq55_eq71,
+    },
+    Claim {
+        id: "rising-needs-slip",
+        check: rising_needs_slip,
     },
     Claim {
         id: "summary-contact-lost-few-degrees",

@@ -64,6 +64,7 @@ const EXPECTED: &[(&str, bool)] = &[
     ("rattling-needs-more-friction", true),
     ("angular-momentum-near-vertical", false),
     ("limits-eq55-eq71", true),
+    ("rising-needs-slip", true),
     ("summary-contact-lost-few-degrees", false),
 ];
 
