@@ -48,7 +48,10 @@ impl Dynamics<14> for Flow<'_> {
         let d = &self.model.disk;
         let f = self.model.contact_force(&self.mode, &s).force;
         let i = inertia(d);
-        let torque_body = s.rotation.inverse_transform_vector(&s.rho.cross(&f));
+        let drag = self.model.drag_torque(&s);
+        let torque_body = s
+            .rotation
+            .inverse_transform_vector(&(s.rho.cross(&f) + drag));
         let w = s.omega_body;
         let w_dot = (torque_body - w.cross(&i.component_mul(&w))).component_div(&i);
         let q = Quaternion::new(y[0], y[1], y[2], y[3]);
@@ -62,10 +65,11 @@ impl Dynamics<14> for Flow<'_> {
         dy.fixed_rows_mut::<3>(4).copy_from(&w_dot);
         dy.fixed_rows_mut::<3>(7).copy_from(&s.velocity);
         dy.fixed_rows_mut::<3>(10).copy_from(&acc);
-        dy[DISSIPATED] = match self.mode {
-            Mode::Slip { .. } => -horizontal(&f).dot(&horizontal(&s.contact_velocity)),
-            _ => 0.0,
-        };
+        dy[DISSIPATED] = -drag.dot(&s.omega)
+            + match self.mode {
+                Mode::Slip { .. } => -horizontal(&f).dot(&horizontal(&s.contact_velocity)),
+                _ => 0.0,
+            };
     }
 }
 

@@ -24,7 +24,7 @@
 //! flights.
 
 use super::{energy_of, horizontal, Sliding, DISSIPATED};
-use crate::model::lab_frame::{inertia, ContactProblem, Snapshot};
+use crate::model::lab_frame::{inertia, Snapshot};
 use crate::solve::State;
 use nalgebra::Vector3;
 
@@ -36,7 +36,7 @@ impl Sliding {
 
     /// The impulse of the impact law for the contact velocity `vc` (module documentation).
     pub(crate) fn impact_impulse(&self, s: &Snapshot, vc: &Vector3<f64>, e: f64) -> Vector3<f64> {
-        let cp = ContactProblem::of(&self.disk, s);
+        let cp = self.contact_problem(s);
         let dv = Vector3::new(-vc.x, -vc.y, -(1.0 + e) * vc.z);
         let stick = cp.solve(s, &dv);
         let mu = self.friction.mu;
@@ -83,7 +83,7 @@ impl Sliding {
     /// locating the end of a slip, always a loss, $\frac12\mathbf v_c\cdot A^{-1}\mathbf v_c$).
     pub(crate) fn settle(&self, y: &State<14>) -> State<14> {
         let s = Snapshot::of(self.disk.a, y);
-        let cp = ContactProblem::of(&self.disk, &s);
+        let cp = self.contact_problem(&s);
         let p = -cp.solve(&s, &s.contact_velocity);
         self.apply_impulse(y, &p).0
     }

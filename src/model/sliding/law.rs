@@ -58,14 +58,14 @@ impl Sliding {
                 consistency: 1.0,
             },
             Mode::Stick => {
-                let cp = ContactProblem::of(&self.disk, s);
+                let cp = self.contact_problem(s);
                 ContactForce {
                     force: cp.solve(s, &cp.b),
                     consistency: 1.0,
                 }
             }
             Mode::Slip { anchor, held } => {
-                let cp = ContactProblem::of(&self.disk, s);
+                let cp = self.contact_problem(s);
                 let dir = self.slip_direction(s, anchor, *held);
                 self.slip_force(&cp, s, &dir)
             }
@@ -98,7 +98,7 @@ impl Sliding {
     /// assumed zero): stick when $F^{\rm stick}_z > 0$ and $|\mathbf F^{\rm stick}_t| < \mu F^{\rm stick}_z$,
     /// flight when $F_z \le 0$ under either law, otherwise slip in the consistent direction.
     pub(crate) fn mode_from_rest(&self, s: &Snapshot) -> Mode {
-        let cp = ContactProblem::of(&self.disk, s);
+        let cp = self.contact_problem(s);
         let stick = cp.solve(s, &cp.b);
         if stick.z <= 0.0 {
             return Mode::Flight;

@@ -54,10 +54,11 @@ mod switching;
 mod tests;
 
 pub use flow::Flow;
-pub use switching::SlidingRun;
+pub use switching::{guard, SlidingRun};
 
 use crate::disk::Disk;
-use crate::model::lab_frame::{inertia, Contact, LabFrame, Snapshot};
+use crate::model::dissipation::PowerLaw;
+use crate::model::lab_frame::{inertia, Contact, ContactProblem, LabFrame, Snapshot};
 use crate::model::{Extras, Layout, Motion};
 use crate::solve::State;
 use nalgebra::Vector3;
@@ -130,6 +131,8 @@ pub struct Sliding {
     pub slip: Slip,
     /// End the run where the contact is lost instead of flying on (a scene's `lift_off`).
     pub stop_at_lift_off: bool,
+    /// An optional drag: eq 75's power as a torque about the centre (see [`Sliding::drag_torque`]).
+    pub drag: Option<PowerLaw>,
     layout: Layout,
 }
 
@@ -142,6 +145,7 @@ impl Sliding {
             stabilisation: disk.g_over_a().sqrt(),
             slip: Slip::default(),
             stop_at_lift_off: false,
+            drag: None,
             layout: Layout::new(14, Extras::default()),
         }
     }
@@ -150,6 +154,42 @@ impl Sliding {
     pub fn with_slip(mut self, slip: Slip) -> Self {
         self.slip = slip;
         self
+    }
+
+    /// The same model losing energy by eq 75's power law as well.
+    pub fn with_drag(mut self, drag: PowerLaw) -> Self {
+        self.drag = Some(drag);
+        self
+    }
+
+    /// The drag torque about the centre (lab, N m): as in the dissipative rolling model
+    /// ([`crate::model::dissipation`]), $\mathbf N = -\frac{\epsilon m a g|\Omega|^\beta}{|\boldsymbol\omega|^2}\boldsymbol\omega$,
+    /// whose power is eq 75's $P = -\epsilon m a g|\Omega|^\beta$ ($\Omega$ the precession
+    /// rate read from the geometry). Zero without a drag or without rotation. Its work is booked
+    /// in $W$ with the friction's.
+    pub fn drag_torque(&self, s: &Snapshot) -> Vector3<f64> {
+        let Some(law) = self.drag else {
+            return Vector3::zeros();
+        };
+        let w2 = s.omega.norm_squared();
+        if w2 == 0.0 {
+            return Vector3::zeros();
+        }
+        let power = law.power(&self.disk, s.motion().precession);
+        s.omega * (power / w2)
+    }
+
+    /// The contact condition at `s`, with the drag torque's angular acceleration
+    /// $I^{-1}\mathbf N$ added to the free one (so that sticking, slipping and the guards all see it).
+    pub(crate) fn contact_problem(&self, s: &Snapshot) -> ContactProblem {
+        let mut cp = ContactProblem::of(&self.disk, s);
+        if self.drag.is_some() {
+            let n = self.drag_torque(s);
+            let (i1, i2) = (self.disk.i11(), self.disk.i22());
+            let w_dot = n / i2 + s.e1 * (n.dot(&s.e1) * (1.0 / i1 - 1.0 / i2));
+            cp.b -= w_dot.cross(&s.rho);
+        }
+        cp
     }
 
     /// $v_0 = 10^{-10}\sqrt{ga}$: the offset of the guard that ends a held slip, and the

@@ -18,7 +18,7 @@
 
 use super::{horizontal, Mode, Sliding, DISSIPATED};
 use crate::events::{run_hybrid, Hybrid, HybridProblem, HybridSolution, Jump};
-use crate::model::lab_frame::{ContactProblem, Snapshot};
+use crate::model::lab_frame::Snapshot;
 use crate::solve::{Event, Settings, SettingsError, State};
 use nalgebra::Vector3;
 
@@ -57,7 +57,7 @@ impl Sliding {
         let n = vt.norm();
         if n > 10.0 * self.slip_floor() {
             let dir = vt / n;
-            let cp = ContactProblem::of(&self.disk, &s);
+            let cp = self.contact_problem(&s);
             let f = self.slip_force(&cp, &s, &dir);
             let mode = if f.consistency <= 0.0 || f.force.z > 0.0 {
                 Mode::Slip {
@@ -211,7 +211,7 @@ impl Hybrid<14> for Sliding {
         let s = Snapshot::of(self.disk.a, y);
         match (*mode, guard) {
             (Mode::Stick, 0) => {
-                let cp = ContactProblem::of(&self.disk, &s);
+                let cp = self.contact_problem(&s);
                 let stick = cp.solve(&s, &cp.b);
                 let dir = self.onset_direction(&cp, &s, &stick);
                 Jump::To {
