@@ -5,12 +5,14 @@
 //!   onset of slip found by integration;
 //! - [`negative_b`]: whether steady motion with $b < 0$ survives a realistic $\mu$ (eq 43).
 //! - [`contact_loss`]: whether a spin-down with eq 75's drag and Coulomb friction loses contact (the premise of eqs 80-81) or slips first;
+//! - [`spiral`]: whether slipping reduces $|b|$ (the inward spiral of sec. 6);
 //! - [`rising`]: whether a disk spun about a nearly vertical diameter rises only when it slides (sec. 10).
 
 pub mod contact_loss;
 pub mod negative_b;
 pub mod rising;
 pub mod slip_onset;
+pub mod spiral;
 
 use crate::disk::Disk;
 use crate::model::sliding::{scene::contact_events, Friction, Sliding};
