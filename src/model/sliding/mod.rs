@@ -133,6 +133,8 @@ pub struct Sliding {
     pub stop_at_lift_off: bool,
     /// An optional drag: eq 75's power as a torque about the centre (see [`Sliding::drag_torque`]).
     pub drag: Option<PowerLaw>,
+    /// The most switches a run may take before it halts (default 10,000).
+    pub max_switches: usize,
     layout: Layout,
 }
 
@@ -146,6 +148,7 @@ impl Sliding {
             slip: Slip::default(),
             stop_at_lift_off: false,
             drag: None,
+            max_switches: 10_000,
             layout: Layout::new(14, Extras::default()),
         }
     }

@@ -147,6 +147,7 @@ impl Sliding {
         let mut p = HybridProblem::new(self, mode, 0.0, y, t_end);
         p.sample = sample;
         p.stops = stops;
+        p.max_switches = self.max_switches;
         run_hybrid(p, settings)
     }
 }
