@@ -90,6 +90,7 @@ const COMPUTES: &[&str] = &[
     "Reference::compute",
     "studies::",
     "pipeline::compute",
+    "friction::studies(",
 ];
 
 /// The lines of `text` before its unit tests (`#[cfg(test)]`), numbered from 1.

@@ -18,6 +18,7 @@
 //! | `spin-down-alpha` | $\alpha$ against $t_0 - t$, eq 78 with 2/5 and with 2/3 | `spin_down.rs` |
 //! | `lab-frame-difference` | eqs 23-25 against the lab-frame model | `lab_frame.rs` |
 //! | `work-precision` | error against work of each method (the speed/accuracy study) | `precision.rs` |
+//! | `slip-stick`, `slip-stick-path` | the sliding model's slip-stick scene: slip, normal force, energy; paths | `friction.rs` |
 //!
 //! Everything is deterministic: the same build gives the same bytes.
 
@@ -25,6 +26,7 @@ pub mod chart;
 pub mod energy;
 pub mod experiment;
 pub mod frequency;
+pub mod friction;
 pub mod geometry;
 pub mod lab_frame;
 pub mod legend;
@@ -168,7 +170,7 @@ impl Drawing {
 }
 
 /// Every figure's name, in the report's order.
-pub const NAMES: [&str; 15] = [
+pub const NAMES: [&str; 17] = [
     "fig1",
     "tek04",
     "tek01",
@@ -184,6 +186,8 @@ pub const NAMES: [&str; 15] = [
     "spin-down-alpha",
     "lab-frame-difference",
     "work-precision",
+    "slip-stick",
+    "slip-stick-path",
 ];
 
 /// Every figure's name, in the report's order.
@@ -203,6 +207,7 @@ enum Family {
     SpinDown,
     LabFrame,
     Precision,
+    Friction,
 }
 
 fn family(name: &str) -> Option<Family> {
@@ -216,6 +221,7 @@ fn family(name: &str) -> Option<Family> {
         "spin-down-alpha" => Family::SpinDown,
         "lab-frame-difference" => Family::LabFrame,
         "work-precision" => Family::Precision,
+        "slip-stick" | "slip-stick-path" => Family::Friction,
         _ => return None,
     })
 }
@@ -239,6 +245,7 @@ pub fn needs(name: &str) -> Result<&'static [Study], String> {
         Family::SpinDown => &[Study::SpinDown],
         Family::LabFrame => &[Study::LabFrame],
         Family::Precision => &[Study::Precision],
+        Family::Friction => &[Study::Friction],
     })
 }
 
@@ -275,6 +282,10 @@ fn build_family(f: Family, r: &Results) -> Result<Vec<Figure>, String> {
             &r.precision,
             Study::Precision,
         )?)]),
+        Family::Friction => {
+            let f = need(&r.friction, Study::Friction)?;
+            Ok(vec![friction::slip_stick(f)?, friction::paths(f)?])
+        }
     }
 }
 

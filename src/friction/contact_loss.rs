@@ -41,7 +41,7 @@ const SAMPLE: f64 = 1e-3;
 const LONGEST: f64 = 60.0;
 
 /// The state of the disk at one event of the run.
-#[derive(Debug, Clone, Copy, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct Moment {
     /// Time (s).
     pub t: f64,
@@ -52,7 +52,7 @@ pub struct Moment {
 }
 
 /// One spin-down.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct SpinDownContact {
     /// Coulomb's coefficient.
     pub mu: f64,

@@ -3,10 +3,14 @@
 //!
 //! - [`slip_onset`]: the friction that steady motion with $b > 0$ needs (eq 42) against the
 //!   onset of slip found by integration;
-//! - [`negative_b`]: whether steady motion with $b < 0$ survives a realistic $\mu$ (eq 43).
-//! - [`contact_loss`]: whether a spin-down with eq 75's drag and Coulomb friction loses contact (the premise of eqs 80-81) or slips first;
+//! - [`negative_b`]: whether steady motion with $b < 0$ survives a realistic $\mu$ (eq 43);
 //! - [`spiral`]: whether slipping reduces $|b|$ (the inward spiral of sec. 6);
-//! - [`rising`]: whether a disk spun about a nearly vertical diameter rises only when it slides (sec. 10).
+//! - [`rising`]: whether a disk spun about a nearly vertical diameter rises only when it slides
+//!   (sec. 10);
+//! - [`contact_loss`]: whether a spin-down with eq 75's drag and Coulomb friction loses contact
+//!   (the premise of eqs 80-81) or slips first.
+//!
+//! [`studies`] runs them all for the report, each over a range of $\mu$.
 
 pub mod contact_loss;
 pub mod negative_b;
@@ -15,9 +19,11 @@ pub mod slip_onset;
 pub mod spiral;
 
 use crate::disk::Disk;
-use crate::model::sliding::{scene::contact_events, Friction, Sliding};
+use crate::model::sliding::{scene::contact_events, Friction, Mode, Sliding};
 use crate::model::steady::steady_motion;
-use crate::solve::{Event, Method, Settings};
+use crate::solve::SettingsError;
+use crate::solve::{Ending, Event, Method, Settings};
+use serde::Serialize;
 
 /// How long a steady start is run to see whether it slips (s).
 pub const WATCH: f64 = 0.02;
@@ -45,9 +51,15 @@ pub fn slips(d: &Disk, alpha0: f64, b: f64, mu: f64) -> Option<bool> {
         ..Settings::default()
     };
     let y0 = model.start_state(&m);
+    if model.enter_contact(&y0).0 != Mode::Stick {
+        return Some(true);
+    }
+    // Rolling at the start: any guard of the stick mode (the friction limit, the contact lost)
+    // ends the run at once (no switch allowed), and that is the answer.
+    let mut model = model;
+    model.max_switches = 0;
     let run = model.run(&y0, WATCH, &settings, None, &no_stops).ok()?;
-    let started_rolling = run.mode.first().map(|m| m.name()) == Some("stick");
-    Some(!started_rolling || !contact_events(&run).is_empty())
+    Some(!contact_events(&run).is_empty() || matches!(run.ending, Ending::Halted { .. }))
 }
 
 /// The boundary between `lo` (predicate false) and `hi` (true) by bisection to `width`.
@@ -66,4 +78,84 @@ pub(crate) fn bisect(
         }
     }
     Some(0.5 * (lo + hi))
+}
+
+/// The friction studies of the report, for the toy disk (a = 37.5 mm, k = 1/4, m = 0.4 kg).
+#[derive(Debug, Clone, PartialEq, Serialize, schemars::JsonSchema)]
+pub struct Studies {
+    /// Eq 42 against integration, at each tilt of [`ONSET_TILTS`] and each $\mu$ of [`ONSET_MUS`].
+    pub slip_onset: Vec<slip_onset::SlipOnset>,
+    /// Eq 43 with realistic tables, at each tilt of [`ONSET_TILTS`] and each $\mu$ of
+    /// [`NEGATIVE_B_MUS`].
+    pub negative_b: Vec<negative_b::NegativeB>,
+    /// Radial slippage (sec. 6), every start of [`spiral::STARTS`] on every table of
+    /// [`spiral::MUS`].
+    pub spiral: Vec<spiral::Spiral>,
+    /// Rising near the vertical (sec. 10).
+    pub rising: rising::Rising,
+    /// The spin-down on Coulomb tables, to the first slip (eqs 80-81's premise).
+    pub contact_loss: Vec<contact_loss::SpinDownContact>,
+}
+
+/// Tilts of the slip-onset and negative-b studies (rad).
+pub const ONSET_TILTS: [f64; 2] = [0.3, 1.0];
+/// Coulomb coefficients of the slip-onset study.
+pub const ONSET_MUS: [f64; 3] = [0.1, 0.3, 0.6];
+/// Coulomb coefficients of the negative-b study.
+pub const NEGATIVE_B_MUS: [f64; 2] = [0.3, 1.0];
+
+/// Runs every friction study (a few seconds of computing), the studies in parallel.
+pub fn studies(settings: &Settings) -> Result<Studies, SettingsError> {
+    let d = toy_disk();
+    let onset = || -> Vec<slip_onset::SlipOnset> {
+        ONSET_TILTS
+            .iter()
+            .flat_map(|&a| ONSET_MUS.iter().map(move |&mu| (a, mu)))
+            .filter_map(|(a, mu)| slip_onset::slip_onset(&d, a, mu))
+            .collect()
+    };
+    let negative = || -> Vec<negative_b::NegativeB> {
+        ONSET_TILTS
+            .iter()
+            .flat_map(|&a| NEGATIVE_B_MUS.iter().map(move |&mu| (a, mu)))
+            .filter_map(|(a, mu)| negative_b::negative_b(&d, a, mu))
+            .collect()
+    };
+    let spirals = || -> Result<Vec<spiral::Spiral>, SettingsError> {
+        let mut out = Vec::new();
+        for (a, b) in spiral::STARTS {
+            for mu in spiral::MUS {
+                out.extend(spiral::spiral(&d, a, b, mu, settings)?);
+            }
+        }
+        Ok(out)
+    };
+    let ((slip_onset, negative_b), (spiral, (rising, contact_loss))) = rayon::join(
+        || rayon::join(onset, negative),
+        || {
+            rayon::join(spirals, || {
+                let rising = rising::rising(&d, (d.g / (d.a * d.k)).sqrt(), settings);
+                let losses: Result<Vec<_>, SettingsError> = contact_loss::MUS
+                    .iter()
+                    .map(|&mu| contact_loss::spin_down_contact(&d, mu, settings, false))
+                    .collect();
+                (rising, losses)
+            })
+        },
+    );
+    Ok(Studies {
+        slip_onset,
+        negative_b,
+        spiral: spiral?,
+        rising: rising?,
+        contact_loss: contact_loss?,
+    })
+}
+
+/// The toy disk of the studies: a uniform disk of radius 37.5 mm and mass 0.4 kg.
+pub fn toy_disk() -> Disk {
+    let Ok(d) = Disk::new(0.0375, 0.25, 0.4, 9.81) else {
+        unreachable!("the toy disk is valid")
+    };
+    d
 }

@@ -13,7 +13,7 @@ use crate::disk::Disk;
 use serde::Serialize;
 
 /// How much of the negative-$b$ range survives one $\mu$ at one tilt.
-#[derive(Debug, Clone, Copy, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct NegativeB {
     /// Coulomb's coefficient.
     pub mu: f64,

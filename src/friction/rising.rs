@@ -39,7 +39,7 @@ pub const MUS: [f64; 4] = [0.05, 0.1, 0.3, 1.0];
 const SAMPLE: f64 = 1e-3;
 
 /// One launch.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct RisingCase {
     /// "no friction", "Coulomb friction" or "rolling".
     pub contact: &'static str,
@@ -56,7 +56,7 @@ pub struct RisingCase {
 }
 
 /// The study: every launch (module documentation).
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct Rising {
     /// Launch tilt (deg).
     pub launch_tilt_deg: f64,

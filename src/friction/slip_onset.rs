@@ -14,7 +14,7 @@ use crate::disk::Disk;
 use serde::Serialize;
 
 /// The slip limit at one tilt and one $\mu$.
-#[derive(Debug, Clone, Copy, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct SlipOnset {
     /// Coulomb's coefficient.
     pub mu: f64,

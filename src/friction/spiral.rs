@@ -27,7 +27,7 @@ pub const MUS: [f64; 3] = [0.1, 0.3, 0.6];
 const SAMPLE: f64 = 1e-3;
 
 /// One start on one table.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct Spiral {
     /// Steady start tilt (rad).
     pub alpha0: f64,

@@ -71,11 +71,13 @@ pub enum Quantity {
     /// Energy taken out by the contact so far (J): the work of sliding friction plus the losses
     /// of impacts (sliding model; zero in the lab-frame models, whose contact does no work).
     Dissipated,
+    /// The lowest rim point on the table, $(x, y)$ (m): the contact's path.
+    ContactPath,
 }
 
 impl Quantity {
     /// Every quantity, in column order.
-    pub const ALL: [Quantity; 15] = [
+    pub const ALL: [Quantity; 16] = [
         Quantity::Alpha,
         Quantity::AlphaDot,
         Quantity::Precession,
@@ -91,6 +93,7 @@ impl Quantity {
         Quantity::CmSpeed,
         Quantity::ContactGap,
         Quantity::Dissipated,
+        Quantity::ContactPath,
     ];
 
     /// CSV column headers (with units) that this quantity produces.
@@ -111,6 +114,7 @@ impl Quantity {
             Quantity::CmSpeed => &["cm_speed_m_per_s"],
             Quantity::ContactGap => &["contact_gap_m"],
             Quantity::Dissipated => &["dissipated_J"],
+            Quantity::ContactPath => &["contact_x_m", "contact_y_m"],
         }
     }
 
@@ -132,6 +136,7 @@ impl Quantity {
             Quantity::CmSpeed => "cm_speed",
             Quantity::ContactGap => "contact_gap",
             Quantity::Dissipated => "dissipated",
+            Quantity::ContactPath => "contact_path",
         }
     }
 }

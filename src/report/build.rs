@@ -481,6 +481,7 @@ pub fn from_results(
             .collect(),
         precision: precision_records,
         corrections: correction_records,
+        friction: results.friction.as_ref().map(|f| f.studies.clone()),
     };
 
     let report = Report {
@@ -505,6 +506,10 @@ pub fn from_results(
         precision: precision_rows,
         experiment,
         paper_numbers: experiment::numbers::paper_numbers().to_string(),
+        friction: results
+            .friction
+            .as_ref()
+            .map_or_else(String::new, |f| super::friction::text(&f.studies)),
         scenes,
         document,
     };

@@ -46,6 +46,8 @@ pub struct Document {
     pub precision: Vec<PrecisionRecord>,
     /// The corrected forms of paper/corrections.yaml, each checked by its equation's check.
     pub corrections: Vec<CorrectionRecord>,
+    /// The friction studies on the sliding model (absent when not computed).
+    pub friction: Option<crate::friction::Studies>,
 }
 
 /// A corrected equation and the verdicts of its printed and corrected forms.

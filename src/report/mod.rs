@@ -3,6 +3,7 @@
 //! by templates (`render`) to HTML, LaTeX or JSON. Templates and figures only read it.
 
 pub mod build;
+pub mod friction;
 pub mod json;
 pub mod mathml;
 pub mod pipeline;
@@ -36,6 +37,8 @@ pub struct Report {
     pub experiment: String,
     /// The paper's own numbers of section 11, recomputed from its fitted constants.
     pub paper_numbers: String,
+    /// The friction studies (sliding model), as text tables.
+    pub friction: String,
     /// The built-in scenes the figures and checks use.
     pub scenes: Vec<SceneView>,
     /// The same results for tools (`report.json`), with numbers as numbers.

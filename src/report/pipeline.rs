@@ -46,11 +46,13 @@ pub enum Study {
     LabFrame,
     /// The corrected forms of paper/corrections.yaml checked (`crate::corrections`).
     Corrections,
+    /// The sliding model's slip-stick scene and the friction studies (`crate::friction`).
+    Friction,
 }
 
 impl Study {
     /// Every study, in the order they are listed in the report.
-    pub const ALL: [Study; 9] = [
+    pub const ALL: [Study; 10] = [
         Study::Checks,
         Study::Experiment,
         Study::Precision,
@@ -60,6 +62,7 @@ impl Study {
         Study::SpinDown,
         Study::LabFrame,
         Study::Corrections,
+        Study::Friction,
     ];
 }
 
@@ -75,6 +78,7 @@ impl fmt::Display for Study {
             Study::SpinDown => "spin-down",
             Study::LabFrame => "lab-frame",
             Study::Corrections => "corrections",
+            Study::Friction => "friction",
         })
     }
 }
@@ -133,6 +137,8 @@ pub struct Results {
     pub lab_frame: Option<Vec<Compared>>,
     /// The corrections and their checks on the corrected paper.
     pub corrections: Option<CorrectionsStudy>,
+    /// The slip-stick run and the friction studies.
+    pub friction: Option<crate::figures::friction::FrictionResults>,
     /// How many times each study was computed to make these results.
     pub computed: BTreeMap<Study, usize>,
 }
@@ -148,6 +154,7 @@ enum Output {
     SpinDown(Box<SpinDown>),
     LabFrame(Vec<Compared>),
     Corrections(Box<CorrectionsStudy>),
+    Friction(Box<crate::figures::friction::FrictionResults>),
 }
 
 /// The corrections study: the corrected forms, their checks on the paper with all of them
@@ -217,6 +224,7 @@ fn one(study: Study, bench: &Bench) -> Result<Output, String> {
         Study::Paths => Output::Paths(studies::runs::paths()?),
         Study::SpinDown => Output::SpinDown(Box::new(studies::runs::spin_down()?)),
         Study::LabFrame => Output::LabFrame(studies::lab_frame::compute()?),
+        Study::Friction => Output::Friction(Box::new(studies::friction::compute()?)),
         Study::Corrections => {
             Output::Corrections(Box::new(corrections_study(bench).unwrap_or_else(|e| {
                 CorrectionsStudy {
@@ -271,6 +279,7 @@ pub fn compute(config: &RunConfig, progress: &(dyn Fn(&str) + Sync)) -> Result<R
             Output::SpinDown(s) => r.spin_down = Some(*s),
             Output::LabFrame(l) => r.lab_frame = Some(l),
             Output::Corrections(c) => r.corrections = Some(*c),
+            Output::Friction(f) => r.friction = Some(*f),
         }
     }
     Ok(r)

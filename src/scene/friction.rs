@@ -118,7 +118,11 @@ impl Validator<'_> {
     pub(super) fn contact_quantity(&self, q: Quantity, model: ModelKind) -> Result<(), SceneError> {
         let contact_only = matches!(
             q,
-            Quantity::SlipSpeed | Quantity::CmSpeed | Quantity::ContactGap | Quantity::Dissipated
+            Quantity::SlipSpeed
+                | Quantity::CmSpeed
+                | Quantity::ContactGap
+                | Quantity::Dissipated
+                | Quantity::ContactPath
         );
         let lab = matches!(
             model,

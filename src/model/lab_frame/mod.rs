@@ -186,6 +186,10 @@ impl Model<13> for LabFrame {
             Quantity::CmSpeed => out.push(s.velocity.norm()),
             Quantity::ContactGap => out.push(s.height),
             Quantity::Dissipated => out.push(0.0),
+            Quantity::ContactPath => {
+                let c = s.centre + s.rho;
+                out.extend_from_slice(&[c.x, c.y]);
+            }
         }
         true
     }

@@ -111,6 +111,10 @@ impl Model<14> for Flow<'_> {
             Quantity::CmSpeed => out.push(s.velocity.norm()),
             Quantity::ContactGap => out.push(s.height),
             Quantity::Dissipated => out.push(y[DISSIPATED]),
+            Quantity::ContactPath => {
+                let c = s.centre + s.rho;
+                out.extend_from_slice(&[c.x, c.y]);
+            }
         }
         true
     }

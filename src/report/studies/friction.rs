@@ -1,0 +1,27 @@
+//! The friction study of the report: the built-in slip-stick scene run by the sliding model
+//! (recording the contact's path too), and the friction studies of [`crate::friction`] at the
+//! scene's solver settings.
+
+use crate::figures::friction::FrictionResults;
+use crate::run::run;
+use crate::scene::Scene;
+
+/// Runs the slip-stick scene and the friction studies.
+pub fn compute() -> Result<FrictionResults, String> {
+    let scene = Scene::load("slip-stick").map_err(|e| e.to_string())?;
+    let mu = scene
+        .friction
+        .ok_or("the slip-stick scene has no friction law")?
+        .mu;
+    let settings = scene.settings;
+    let (slip_stick, studies) = rayon::join(
+        || run(&scene, None).map_err(|e| e.to_string()),
+        || crate::friction::studies(&settings).map_err(|e| e.to_string()),
+    );
+    Ok(FrictionResults {
+        slip_stick: slip_stick?,
+        mu,
+        weight: scene.disk.m * scene.disk.g,
+        studies: studies?,
+    })
+}
