@@ -4,15 +4,35 @@
 use crate::friction::Studies;
 use std::fmt::Write;
 
+/// Width of the section's lines: headings and notes are wrapped to it (the tables are narrower).
+const WIDTH: usize = 100;
+
+/// Appends `text` wrapped at [`WIDTH`], continuation lines indented by four spaces.
+fn heading(o: &mut String, text: &str) {
+    let mut line = String::new();
+    for word in text.split_whitespace() {
+        if !line.is_empty() && line.len() + 1 + word.len() > WIDTH {
+            o.push_str(&line);
+            o.push('\n');
+            line = "    ".into();
+        } else if !line.is_empty() && line != "    " {
+            line.push(' ');
+        }
+        line.push_str(word);
+    }
+    o.push_str(&line);
+    o.push('\n');
+}
+
 /// The section's text.
 pub fn text(s: &Studies) -> String {
     let mut o = String::new();
     let deg = |x: f64| x.to_degrees();
     // Writing to a String cannot fail.
-    let _ = writeln!(
-        o,
+    heading(
+        &mut o,
         "Eq 42 (b > 0): the largest b that rolls, mu a k sin(alpha0) against the sliding model \
-         (bisection on runs of 0.02 s)"
+         (bisection on runs of 0.02 s)",
     );
     let _ = writeln!(
         o,
@@ -29,10 +49,11 @@ pub fn text(s: &Studies) -> String {
             r.relative_error
         );
     }
-    let _ = writeln!(
-        o,
-        "\nEq 43 (b < 0): the part of eq 30's range b_edge < b < 0 a table holds (largest b/b_edge \
-         that rolls), against eq 43's requirement"
+    o.push('\n');
+    heading(
+        &mut o,
+        "Eq 43 (b < 0): the part of eq 30's range b_edge < b < 0 a table holds (largest b/b_edge \
+         that rolls), against eq 43's requirement",
     );
     let _ = writeln!(
         o,
@@ -45,11 +66,14 @@ pub fn text(s: &Studies) -> String {
             r.alpha0, r.mu, r.mu_eq43, r.beta_integrated, r.beta_exact
         );
     }
-    let _ = writeln!(
-        o,
-        "\nSec. 6, radial slippage: steady rolls that eq 42 says must slip, run {} s; the radius \
+    o.push('\n');
+    heading(
+        &mut o,
+        &format!(
+        "Sec. 6, radial slippage: steady rolls that eq 42 says must slip, run {} s; the radius \
          of the centre's path over the last second (|b| of the motion it settles in)",
         crate::friction::spiral::DURATION
+        ),
     );
     let _ = writeln!(
         o,
@@ -83,18 +107,21 @@ pub fn text(s: &Studies) -> String {
         );
     }
     for (i, h) in halted.iter().enumerate() {
-        let _ = writeln!(o, "  note {}: {h}", i + 1);
+        heading(&mut o, &format!("  note {}: {h}", i + 1));
     }
     let ri = &s.rising;
-    let _ = writeln!(
-        o,
-        "\nSec. 10, rising: launched at {:.0} deg turning about the vertical at {:.1} rad/s \
+    o.push('\n');
+    heading(
+        &mut o,
+        &format!(
+            "Sec. 10, rising: launched at {:.0} deg turning about the vertical at {:.1} rad/s \
          (1.5 x sqrt(g/(a k))), centre at rest, contact sliding at {:.3} m/s; lasting gain of \
          tilt = lowest tilt in the second half of {} s minus the launch tilt",
-        ri.launch_tilt_deg,
-        ri.launch_rate,
-        ri.launch_slip,
-        crate::friction::rising::DURATION
+            ri.launch_tilt_deg,
+            ri.launch_rate,
+            ri.launch_slip,
+            crate::friction::rising::DURATION
+        ),
     );
     let _ = writeln!(
         o,
@@ -112,15 +139,15 @@ pub fn text(s: &Studies) -> String {
             c.contact, c.mu, c.rise_deg, c.highest_deg, slid
         );
     }
-    let _ = writeln!(
-        o,
-        "\nEqs 80-81's premise: the built-in spin-down (steady b = 0 at 0.15 rad, eq 75 with \
-         beta = 2, epsilon = 1.2e-6 s^2) on Coulomb tables, with eq 75's power as a torque"
+    o.push('\n');
+    heading(
+        &mut o,
+        "Eqs 80-81's premise: the built-in spin-down (steady b = 0 at 0.15 rad, eq 75 with \
+         beta = 2, epsilon = 1.2e-6 s^2) on Coulomb tables, with eq 75's power as a torque",
     );
     let _ = writeln!(
         o,
-        "    mu   first slip: t (s)   alpha (deg)   Omega (rad/s)   smallest F_z/mg before   \
-         ends"
+        "    mu   first slip: t (s)   alpha (deg)   Omega (rad/s)   min F_z/mg   run ends"
     );
     for c in &s.contact_loss {
         let (t, a, w) = match c.first_slip {
@@ -131,10 +158,18 @@ pub fn text(s: &Studies) -> String {
             ),
             None => ("never".into(), "-".into(), "-".into()),
         };
+        let ends = match (c.first_slip, c.lift_off) {
+            (Some(_), _) => "at the first slip".to_string(),
+            (None, Some(m)) => format!("contact lost at {:.3} s", m.t),
+            (None, None) => format!(
+                "alpha {:.0e} rad at {:.3} s, never lifted",
+                c.end.alpha, c.end.t
+            ),
+        };
         let _ = writeln!(
             o,
-            "  {:>4.2} {:>19} {:>13} {:>15} {:>24.3}   {}",
-            c.mu, t, a, w, c.min_normal_rolling, c.ending
+            "  {:>4.2} {:>19} {:>13} {:>15} {:>12.3}   {ends}",
+            c.mu, t, a, w, c.min_normal_rolling
         );
     }
     o
