@@ -35,8 +35,6 @@ pub const DRAG: PowerLaw = PowerLaw {
 };
 /// The tilt at which a run that neither slips nor lifts off ends (rad).
 pub const TILT_FLOOR: f64 = 1e-4;
-/// Sampling (s).
-const SAMPLE: f64 = 1e-3;
 /// Longest run (s).
 const LONGEST: f64 = 60.0;
 
@@ -112,7 +110,8 @@ pub fn spin_down_contact(
         )]
     };
     let y0 = model.start_state(&start);
-    let run = model.run(&y0, LONGEST, settings, Some(SAMPLE), &stops)?;
+    // The solver's own steps (no resampling): the smallest normal force is read at them.
+    let run = model.run(&y0, LONGEST, settings, None, &stops)?;
     let first_slip = run
         .switches
         .iter()
