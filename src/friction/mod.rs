@@ -62,22 +62,16 @@ pub fn slips(d: &Disk, alpha0: f64, b: f64, mu: f64) -> Option<bool> {
     Some(!contact_events(&run).is_empty() || matches!(run.ending, Ending::Halted { .. }))
 }
 
-/// The boundary between `lo` (predicate false) and `hi` (true) by bisection to `width`.
+/// The boundary between `lo` (predicate false) and `hi` (true), by bisection to an absolute
+/// `width`; `None` when a run of the predicate fails.
 pub(crate) fn bisect(
-    mut lo: f64,
-    mut hi: f64,
+    lo: f64,
+    hi: f64,
     width: f64,
     pred: impl Fn(f64) -> Option<bool>,
 ) -> Option<f64> {
-    while (hi - lo).abs() > width {
-        let mid = 0.5 * (lo + hi);
-        if pred(mid)? {
-            hi = mid;
-        } else {
-            lo = mid;
-        }
-    }
-    Some(0.5 * (lo + hi))
+    let narrow = |lo: f64, hi: f64| (hi - lo).abs() <= width;
+    crate::numerics::oscillation::try_bisect(lo, hi, narrow, pred).map(|(lo, hi)| 0.5 * (lo + hi))
 }
 
 /// The friction studies of the report, for the toy disk (a = 37.5 mm, k = 1/4, m = 0.4 kg).

@@ -54,22 +54,39 @@ fn cubic_root(t: &[f64], x: &[f64], level: f64) -> f64 {
 
 /// Bisection on a predicate that is false at `lo` and true at `hi` (or the reverse): returns the
 /// final bracket, narrowed until its width is below `rel_width` times its upper end.
-pub fn bisect(mut lo: f64, mut hi: f64, rel_width: f64, holds: impl Fn(f64) -> bool) -> (f64, f64) {
+pub fn bisect(lo: f64, hi: f64, rel_width: f64, holds: impl Fn(f64) -> bool) -> (f64, f64) {
     let at_lo = holds(lo);
     assert_ne!(
         at_lo,
         holds(hi),
         "bisect needs a bracket: the predicate must differ at its ends"
     );
-    while (hi - lo).abs() > rel_width * hi.abs().max(lo.abs()) {
+    let narrow = |lo: f64, hi: f64| (hi - lo).abs() <= rel_width * hi.abs().max(lo.abs());
+    try_bisect(lo, hi, narrow, |x| Some(holds(x) != at_lo)).unwrap_or((lo, hi))
+}
+
+/// Bisection on a predicate that may fail to answer (`None`, e.g. an integration that could
+/// not run): `holds` is taken false at `lo` and true at `hi`, the bracket is halved until
+/// `narrow(lo, hi)`, and the first `None` ends it with `None`. The one bisection loop of the
+/// crate: [`bisect`] is this with a predicate that always answers.
+pub fn try_bisect(
+    mut lo: f64,
+    mut hi: f64,
+    narrow: impl Fn(f64, f64) -> bool,
+    holds: impl Fn(f64) -> Option<bool>,
+) -> Option<(f64, f64)> {
+    while !narrow(lo, hi) {
         let mid = 0.5 * (lo + hi);
-        if holds(mid) == at_lo {
-            lo = mid;
-        } else {
+        if mid == lo || mid == hi {
+            break;
+        }
+        if holds(mid)? {
             hi = mid;
+        } else {
+            lo = mid;
         }
     }
-    (lo, hi)
+    Some((lo, hi))
 }
 
 #[cfg(test)]
