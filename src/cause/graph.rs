@@ -233,8 +233,10 @@ impl PremisesGraph {
         &self,
         root: &DrawingArea<DB, Shift>,
         scale: f64,
-    ) -> Result<(), String> {
-        let err = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+    ) -> Result<(), crate::figures::FigureError> {
+        let err = |e: DrawingAreaErrorKind<DB::ErrorType>| {
+            crate::figures::FigureError::Draw(e.to_string())
+        };
         root.fill(&WHITE).map_err(err)?;
         let (w, h) = root.dim_in_pixel();
         let (w, h) = (f64::from(w), f64::from(h));
@@ -285,7 +287,7 @@ impl PremisesGraph {
             root.draw(&Text::new(m.number.to_string(), px(c), style))
                 .map_err(err)?;
         }
-        root.present().map_err(|e| e.to_string())
+        root.present().map_err(err)
     }
 }
 

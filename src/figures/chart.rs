@@ -8,6 +8,7 @@
 
 use super::legend::{self, Layout};
 use super::ticks;
+use crate::figures::{Drawn, FigureError};
 use plotters::coord::ranged1d::{AsRangedCoord, BoldPoints, Ranged, ValueFormatter};
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -249,13 +250,13 @@ impl Plot {
         &self,
         root: &DrawingArea<DB, plotters::coord::Shift>,
         scale: f64,
-    ) -> Result<(), DrawError> {
+    ) -> Result<(), FigureError> {
         self.chart.draw_with(root, scale, &self.options)
     }
 
     /// Where the legend goes and what it covers, and the labelled ticks, when drawn at `dim`
     /// pixels and `scale` (see [`Chart::layout`]).
-    pub fn layout(&self, dim: (u32, u32), scale: f64) -> Result<Layout, DrawError> {
+    pub fn layout(&self, dim: (u32, u32), scale: f64) -> Result<Layout, FigureError> {
         self.chart.layout(dim, scale, &self.options)
     }
 }
@@ -282,9 +283,6 @@ pub(crate) fn register_font() {
         let _ = plotters::style::register_font("sans-serif", FontStyle::Normal, bytes);
     });
 }
-
-/// Errors drawing a chart.
-pub type DrawError = String;
 
 /// A tick label: plain decimals between 1e-3 and 1e4, otherwise `2e-5` style; at most four
 /// significant digits, no trailing zeros.
@@ -376,7 +374,7 @@ fn rgb(c: [u8; 3]) -> RGBColor {
     RGBColor(c[0], c[1], c[2])
 }
 
-fn checked(r: (f64, f64), log: bool, what: &str) -> Result<(f64, f64), DrawError> {
+fn checked(r: (f64, f64), log: bool, what: &str) -> Result<(f64, f64), FigureError> {
     let ok = r.0.is_finite() && r.1.is_finite() && r.1 > r.0 && (!log || r.0 > 0.0);
     if ok {
         Ok(r)
@@ -384,7 +382,7 @@ fn checked(r: (f64, f64), log: bool, what: &str) -> Result<(f64, f64), DrawError
         Err(format!(
             "the {what} range {:?} cannot be drawn (it must be finite, increasing, and positive on a log axis)",
             r
-        ))
+        ).into())
     }
 }
 
@@ -417,7 +415,7 @@ impl Chart {
         &self,
         root: &DrawingArea<DB, plotters::coord::Shift>,
         scale: f64,
-    ) -> Result<(), DrawError> {
+    ) -> Result<(), FigureError> {
         self.draw_with(root, scale, &Options::default())
     }
 
@@ -427,13 +425,13 @@ impl Chart {
         root: &DrawingArea<DB, plotters::coord::Shift>,
         scale: f64,
         o: &Options,
-    ) -> Result<(), DrawError> {
+    ) -> Result<(), FigureError> {
         self.render(root, scale, o).map(|_| ())
     }
 
     /// Where the legend goes and what it covers, and the labelled ticks, when the chart is drawn
     /// at `dim` pixels and `scale`: the same computation as drawing, on a scratch canvas.
-    pub fn layout(&self, dim: (u32, u32), scale: f64, o: &Options) -> Result<Layout, DrawError> {
+    pub fn layout(&self, dim: (u32, u32), scale: f64, o: &Options) -> Result<Layout, FigureError> {
         let mut scratch = String::new();
         let root = SVGBackend::with_string(&mut scratch, dim).into_drawing_area();
         self.render(&root, scale, o)
@@ -446,7 +444,7 @@ impl Chart {
         root: &DrawingArea<DB, plotters::coord::Shift>,
         scale: f64,
         o: &Options,
-    ) -> Result<Layout, DrawError> {
+    ) -> Result<Layout, FigureError> {
         if o.legend == Legend::Hidden || o.y_range.is_some() {
             return self.render_with_headroom(root, scale, o, 0.0);
         }
@@ -472,9 +470,9 @@ impl Chart {
         scale: f64,
         o: &Options,
         headroom: f64,
-    ) -> Result<Layout, DrawError> {
+    ) -> Result<Layout, FigureError> {
         register_font();
-        root.fill(&WHITE).map_err(|e| e.to_string())?;
+        root.fill(&WHITE).drawn()?;
         let (mut x0, mut x1) = checked(self.x_bounds(o), self.x_log, "x")?;
         let (mut y0, mut y1) = checked(self.y_bounds(o), self.y_log, "y")?;
         if headroom > 0.0 {
@@ -538,13 +536,13 @@ impl Chart {
 
     /// The size in pixels of the plotting area inside a drawing of `dim` pixels, measured on a
     /// scratch canvas (the layout depends only on the size, the scale and the font).
-    fn plot_area(&self, dim: (u32, u32), scale: f64) -> Result<(f64, f64), DrawError> {
+    fn plot_area(&self, dim: (u32, u32), scale: f64) -> Result<(f64, f64), FigureError> {
         let mut scratch = String::new();
         let root = SVGBackend::with_string(&mut scratch, dim).into_drawing_area();
         let chart = self
             .builder(&root, scale)
             .build_cartesian_2d(0.0..1.0, 0.0..1.0)
-            .map_err(|e| e.to_string())?;
+            .drawn()?;
         let (w, h) = chart.plotting_area().dim_in_pixel();
         Ok((w.max(1) as f64, h.max(1) as f64))
     }
@@ -559,7 +557,7 @@ impl Chart {
         y: Y,
         xr: (f64, f64),
         yr: (f64, f64),
-    ) -> Result<Layout, DrawError>
+    ) -> Result<Layout, FigureError>
     where
         DB: DrawingBackend,
         X: AsRangedCoord<Value = f64>,
@@ -569,10 +567,7 @@ impl Chart {
     {
         let px = |v: f64| (v * scale).round() as u32;
         let font = |size: f64| ("sans-serif", size * scale).into_font();
-        let mut chart = self
-            .builder(root, scale)
-            .build_cartesian_2d(x, y)
-            .map_err(|e| e.to_string())?;
+        let mut chart = self.builder(root, scale).build_cartesian_2d(x, y).drawn()?;
         // As many tick labels as fit: about one per 60 px across, one per 40 px up.
         let (pw, ph) = chart.plotting_area().dim_in_pixel();
         let fit = |len: u32, per: f64| ((len as f64 / (per * scale)) as usize).clamp(4, 8);
@@ -606,7 +601,7 @@ impl Chart {
             .x_label_formatter(x_fmt)
             .y_label_formatter(y_fmt)
             .draw()
-            .map_err(|e| e.to_string())?;
+            .drawn()?;
         let inside = |(a, b): (f64, f64)| {
             a.is_finite() && b.is_finite() && (!self.x_log || a > 0.0) && (!self.y_log || b > 0.0)
         };
@@ -714,7 +709,7 @@ impl Chart {
                     px(3.0),
                     grey.stroke_width(px(1.2).max(1)),
                 ))
-                .map_err(|e| e.to_string())?;
+                .drawn()?;
             if !m.label.is_empty() {
                 // The label just inside the plot, at the top of a vertical line or the right end
                 // of a horizontal one.
@@ -736,7 +731,7 @@ impl Chart {
                 };
                 let hpos = if left { HPos::Right } else { HPos::Left };
                 // A label the legend would hide moves down below the legend.
-                let (tw, th) = font(11.0).box_size(&m.label).map_err(|e| e.to_string())?;
+                let (tw, th) = font(11.0).box_size(&m.label).drawn()?;
                 let (ax, ay) = chart.backend_coord(&at);
                 let (lx, ly) = (ax - base.0 + dx, ay - base.1 + dy);
                 let lx = if left { lx - tw as i32 } else { lx };
@@ -760,7 +755,7 @@ impl Chart {
                                 font(11.0).color(&grey).pos(Pos::new(hpos, VPos::Top)),
                             ),
                     ))
-                    .map_err(|e| e.to_string())?;
+                    .drawn()?;
             }
         }
         for (i, s) in self.series.iter().enumerate() {
@@ -786,18 +781,18 @@ impl Chart {
                                 .into_iter()
                                 .map(|p| Circle::new(p, half, color.filled())),
                         )
-                        .map_err(|e| e.to_string())?;
+                        .drawn()?;
                     chart
                         .draw_series(
                             pts.windows(2).map(|w| {
                                 PathElement::new(vec![w[0], w[1]], color.stroke_width(width))
                             }),
                         )
-                        .map_err(|e| e.to_string())?
+                        .drawn()?
                 }
                 Style::Line => chart
                     .draw_series(LineSeries::new(pts, color.stroke_width(width)))
-                    .map_err(|e| e.to_string())?,
+                    .drawn()?,
                 Style::Dashed => chart
                     .draw_series(DashedLineSeries::new(
                         pts,
@@ -805,7 +800,7 @@ impl Chart {
                         px(4.0),
                         color.stroke_width(width),
                     ))
-                    .map_err(|e| e.to_string())?,
+                    .drawn()?,
                 Style::Dotted => chart
                     .draw_series(DashedLineSeries::new(
                         pts,
@@ -813,16 +808,16 @@ impl Chart {
                         px(3.0),
                         color.stroke_width(width),
                     ))
-                    .map_err(|e| e.to_string())?,
+                    .drawn()?,
                 Style::Points => chart
                     .draw_series(pts.into_iter().map(|p| Circle::new(p, r, color.filled())))
-                    .map_err(|e| e.to_string())?,
+                    .drawn()?,
                 Style::Squares => chart
                     .draw_series(pts.into_iter().map(|p| {
                         EmptyElement::at(p)
                             + Rectangle::new([(-r, -r), (r, r)], color.stroke_width(px(1.3).max(1)))
                     }))
-                    .map_err(|e| e.to_string())?,
+                    .drawn()?,
                 Style::Triangles => chart
                     .draw_series(pts.into_iter().map(|p| {
                         EmptyElement::at(p)
@@ -831,7 +826,7 @@ impl Chart {
                                 color.filled(),
                             )
                     }))
-                    .map_err(|e| e.to_string())?,
+                    .drawn()?,
                 Style::Crosses => chart
                     .draw_series(pts.into_iter().map(|p| {
                         EmptyElement::at(p)
@@ -844,7 +839,7 @@ impl Chart {
                                 color.stroke_width(px(1.3).max(1)),
                             )
                     }))
-                    .map_err(|e| e.to_string())?,
+                    .drawn()?,
                 Style::Cells => {
                     let hx = 0.5 * grid_step(pts.iter().map(|p| p.0).collect());
                     let hy = 0.5 * grid_step(pts.iter().map(|p| p.1).collect());
@@ -857,7 +852,7 @@ impl Chart {
                         .draw_series(merge_cells(pts, hy).into_iter().map(|(a, b0, b1)| {
                             Rectangle::new([(a - hx, b0 - hy), (a + hx, b1 + hy)], fill)
                         }))
-                        .map_err(|e| e.to_string())?
+                        .drawn()?
                 }
             };
             if s.label.is_empty() {
@@ -891,7 +886,7 @@ impl Chart {
                     EmptyElement::at((n.x, n.y))
                         + Text::new(l, (0, i as i32 * step), font(11.5).color(&BLACK))
                 }))
-                .map_err(|e| e.to_string())?;
+                .drawn()?;
         }
         let labelled = !labels.is_empty();
         let position = match chosen {
@@ -913,7 +908,7 @@ impl Chart {
                 .border_style(RGBColor(180, 180, 180))
                 .position(position)
                 .draw()
-                .map_err(|e| e.to_string())?;
+                .drawn()?;
         }
         // No `present` here: a plot may be one panel of several, and presenting an SVG
         // backend closes its document (the later panels fell outside `</svg>`). The

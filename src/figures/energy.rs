@@ -2,6 +2,7 @@
 //! $E$ from eq 26, which the rolling model conserves exactly.
 
 use crate::figures::chart::{Legend, Plot, Series, Style};
+use crate::figures::FigureError;
 use crate::figures::{max_per_bin, Drawing, Figure};
 
 /// One integration of the benchmark scene and its energy drift.
@@ -26,7 +27,7 @@ pub struct EnergyDrift {
 }
 
 /// The figure, from the study's runs (no integration here).
-pub fn figure(study: &EnergyDrift) -> Result<Figure, String> {
+pub fn figure(study: &EnergyDrift) -> Result<Figure, FigureError> {
     let mut plot = Plot::new(
         "Energy drift on the benchmark scene",
         "time t (s)",

@@ -7,6 +7,7 @@
 
 use crate::experiment::{Analysis, Trace};
 use crate::figures::chart::{Axis, Legend, Plot, Series, Style};
+use crate::figures::FigureError;
 use crate::figures::{min_max_decimate, Drawing, Figure};
 
 /// The synthetic trace and its analysis.
@@ -26,7 +27,7 @@ const SYNTHETIC: &str = "Synthetic data (the paper's are not published): the bui
 
 /// The seven figures of section 11, from the experiment the report's pipeline simulated and
 /// analysed once (no integration here).
-pub fn figures(e: &Experiment) -> Result<Vec<Figure>, String> {
+pub fn figures(e: &Experiment) -> Result<Vec<Figure>, FigureError> {
     Ok(vec![
         tek04(e),
         tek_zoom(e, "tek01", 0.25)?,
@@ -101,7 +102,7 @@ fn tek04(e: &Experiment) -> Figure {
     }
 }
 
-fn tek_zoom(e: &Experiment, name: &'static str, span: f64) -> Result<Figure, String> {
+fn tek_zoom(e: &Experiment, name: &'static str, span: f64) -> Result<Figure, FigureError> {
     let t_end = end_time(e);
     let (from, to) = (t_end - span, t_end + 0.1 * span);
     let pts: Vec<(f64, f64)> = e
@@ -113,9 +114,7 @@ fn tek_zoom(e: &Experiment, name: &'static str, span: f64) -> Result<Figure, Str
         .filter(|(t, _)| *t >= from && *t <= to)
         .collect();
     if pts.len() < 4 {
-        return Err(format!(
-            "{name}: the record holds no samples before its end"
-        ));
+        return Err(format!("{name}: the record holds no samples before its end").into());
     }
     let peaks: Vec<(f64, f64)> = e
         .analysis
@@ -179,7 +178,7 @@ fn tek_zoom(e: &Experiment, name: &'static str, span: f64) -> Result<Figure, Str
     })
 }
 
-fn omega(e: &Experiment) -> Result<Figure, String> {
+fn omega(e: &Experiment) -> Result<Figure, FigureError> {
     let a = &e.analysis;
     let in_fit: Vec<bool> = {
         let mut v = vec![false; a.cycles.len()];
@@ -270,7 +269,7 @@ fn mid_point(pts: &[(f64, f64)]) -> Option<(f64, f64)> {
     s.get(s.len() / 2).copied()
 }
 
-fn inverse_omega(e: &Experiment, name: &'static str, shift: f64) -> Result<Figure, String> {
+fn inverse_omega(e: &Experiment, name: &'static str, shift: f64) -> Result<Figure, FigureError> {
     let a = &e.analysis;
     let t0 = a.eq84.t0 + shift;
     let pts: Vec<(f64, f64)> = a
@@ -281,7 +280,8 @@ fn inverse_omega(e: &Experiment, name: &'static str, shift: f64) -> Result<Figur
         .filter(|c| c.t < t0)
         .map(|c| (t0 - c.t, 1.0 / c.omega))
         .collect();
-    let (xm, ym) = mid_point(&pts).ok_or_else(|| format!("{name}: no cycle before t0"))?;
+    let (xm, ym) =
+        mid_point(&pts).ok_or_else(|| FigureError::from(format!("{name}: no cycle before t0")))?;
     let x0 = pts.iter().map(|p| p.0).fold(f64::INFINITY, f64::min);
     let x1 = pts.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max);
     let mut plot = Plot::new(
@@ -358,7 +358,7 @@ fn loglog_slope(pts: &[(f64, f64)]) -> f64 {
     (n * sxy - sx * sy) / (n * sxx - sx * sx)
 }
 
-fn odot(e: &Experiment) -> Result<Figure, String> {
+fn odot(e: &Experiment) -> Result<Figure, FigureError> {
     let a = &e.analysis;
     let rows: Vec<(f64, f64)> = a
         .window

@@ -4,6 +4,7 @@
 
 use crate::figures::chart::{Legend, Plot, Series, Style};
 use crate::figures::stability::eq54;
+use crate::figures::FigureError;
 use crate::figures::{Drawing, Figure};
 use std::f64::consts::FRAC_PI_2;
 
@@ -50,7 +51,7 @@ fn worst(points: &[(f64, f64)], curve: &dyn Fn(f64) -> Option<f64>) -> (f64, f64
 }
 
 /// The figure, from the measured frequencies (no integration here).
-pub fn figure(m: &Measured) -> Result<Figure, String> {
+pub fn figure(m: &Measured) -> Result<Figure, FigureError> {
     let k = m.k;
     let worst = [
         worst(&m.rolled0, &|a| Some(eq55(k, a))),

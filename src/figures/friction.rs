@@ -5,6 +5,7 @@
 //! contact point on the table.
 
 use crate::figures::chart::{Legend, Plot, Series, Style};
+use crate::figures::FigureError;
 use crate::figures::{min_max_decimate, Drawing, Figure, Panels};
 use crate::friction::Studies;
 use crate::run::Run;
@@ -23,9 +24,9 @@ pub struct FrictionResults {
 }
 
 /// A column of the run, or an error naming it.
-fn column(run: &Run, name: &str) -> Result<Vec<f64>, String> {
+fn column(run: &Run, name: &str) -> Result<Vec<f64>, FigureError> {
     run.column(name)
-        .ok_or_else(|| format!("the slip-stick run did not record {name}"))
+        .ok_or_else(|| format!("the slip-stick run did not record {name}").into())
 }
 
 fn series(t: &[f64], v: &[f64], f: impl Fn(f64) -> f64) -> Vec<(f64, f64)> {
@@ -33,7 +34,7 @@ fn series(t: &[f64], v: &[f64], f: impl Fn(f64) -> f64) -> Vec<(f64, f64)> {
 }
 
 /// The slip-stick run against time: slip speed, normal force, energy and dissipated work.
-pub fn slip_stick(r: &FrictionResults) -> Result<Figure, String> {
+pub fn slip_stick(r: &FrictionResults) -> Result<Figure, FigureError> {
     let run = &r.slip_stick;
     let t = column(run, "t_s")?;
     let slip = column(run, "slip_speed_m_per_s")?;
@@ -124,7 +125,7 @@ pub fn slip_stick(r: &FrictionResults) -> Result<Figure, String> {
 }
 
 /// The paths of the centre and of the contact point on the table.
-pub fn paths(r: &FrictionResults) -> Result<Figure, String> {
+pub fn paths(r: &FrictionResults) -> Result<Figure, FigureError> {
     let run = &r.slip_stick;
     let t = column(run, "t_s")?;
     let slip = column(run, "slip_speed_m_per_s")?;

@@ -16,7 +16,8 @@
 //! any backend.
 
 use crate::disk::Disk;
-use crate::figures::chart::{register_font, DrawError};
+use crate::figures::chart::register_font;
+use crate::figures::FigureError;
 use crate::model::steady::steady_motion;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -207,8 +208,8 @@ impl Geometry {
         b: f64,
         heading: f64,
         view: View,
-    ) -> Result<Self, String> {
-        let m = steady_motion(disk, alpha0, b).map_err(|e| e.to_string())?;
+    ) -> Result<Self, FigureError> {
+        let m = steady_motion(disk, alpha0, b).map_err(|e| FigureError::Data(e.to_string()))?;
         // Eq 28 read backwards: b = a omega_10 / Omega_0; then r = b + a cos(alpha0).
         let b = disk.a * m.spin / m.precession;
         let r = b + disk.a * alpha0.cos();
@@ -399,9 +400,9 @@ impl Geometry {
         &self,
         root: &DrawingArea<DB, plotters::coord::Shift>,
         scale: f64,
-    ) -> Result<(), DrawError> {
+    ) -> Result<(), FigureError> {
         register_font();
-        let err = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+        let err = |e: DrawingAreaErrorKind<DB::ErrorType>| FigureError::Draw(e.to_string());
         root.fill(&WHITE).map_err(err)?;
         let (w, h) = root.dim_in_pixel();
         let (w, h) = (w as f64, h as f64);

@@ -2,6 +2,7 @@
 //! Newton-Euler model, over time: how far apart the two integrations drift.
 
 use crate::figures::chart::{Legend, Plot, Series, Style};
+use crate::figures::FigureError;
 use crate::figures::{max_per_bin, Drawing, Figure, Panels};
 use crate::model::Motion;
 
@@ -64,7 +65,7 @@ fn panel(c: &Compared, title: &str, legend: Legend) -> (Plot, [f64; 4]) {
 
 /// The figure: the nutating coin and the wheel rolling straight, side by side, from the runs
 /// of [`SCENES`] in that order (no integration here).
-pub fn figure(runs: &[Compared]) -> Result<Figure, String> {
+pub fn figure(runs: &[Compared]) -> Result<Figure, FigureError> {
     let [c, w] = runs else {
         return Err("the lab-frame figure needs two compared runs".into());
     };
@@ -72,7 +73,8 @@ pub fn figure(runs: &[Compared]) -> Result<Figure, String> {
         return Err(format!(
             "the lab-frame figure needs the runs of {} and {}, in that order",
             SCENES[0].0, SCENES[1].0
-        ));
+        )
+        .into());
     }
     let (coin, wc) = panel(c, "nutating coin", Legend::Hidden);
     let (wheel, ww) = panel(w, "wheel rolling straight", Legend::UpperRight);

@@ -7,8 +7,8 @@
 //! The geometry is plotters', restated because plotters does not expose it; the placement rule
 //! (first free corner, else the least covered) is this crate's.
 
-use super::chart::DrawError;
 use super::Legend;
+use super::{Drawn, FigureError};
 use plotters::style::{FontDesc, IntoFont};
 
 /// A rectangle in pixels relative to the plotting area's upper left corner, inclusive.
@@ -52,12 +52,12 @@ pub fn size(
     font_px: f64,
     glyph_area: i32,
     margin: i32,
-) -> Result<(i32, i32), DrawError> {
+) -> Result<(i32, i32), FigureError> {
     let font: FontDesc = ("sans-serif", font_px).into_font();
     let line = font_px * 1.25;
     let (mut w, mut h) = (0i32, 0i32);
     for (i, l) in labels.iter().enumerate() {
-        let (dx, dy) = font.box_size(l).map_err(|e| e.to_string())?;
+        let (dx, dy) = font.box_size(l).drawn()?;
         let y = (i as f64 * line).round() as i32;
         w = w.max(dx as i32);
         h = h.max(y + dy as i32);

@@ -24,6 +24,7 @@
 
 pub mod chart;
 pub mod energy;
+pub mod error;
 pub mod experiment;
 pub mod frequency;
 pub mod friction;
@@ -37,6 +38,7 @@ pub mod stability;
 pub mod ticks;
 
 pub use chart::{Axis, Chart, Legend, Mark, Note, Options, Plot, Series, Style};
+pub use error::{Drawn, FigureError};
 pub use geometry::Geometry;
 pub use legend::Layout;
 
@@ -89,21 +91,21 @@ impl Drawing {
         &self,
         root: &DrawingArea<DB, plotters::coord::Shift>,
         scale: f64,
-    ) -> Result<(), String> {
+    ) -> Result<(), FigureError> {
         match self {
             Drawing::Chart(c) => {
                 c.draw(root, scale)?;
-                root.present().map_err(|e| e.to_string())
+                root.present().drawn()
             }
             Drawing::Plot(p) => {
                 p.draw(root, scale)?;
-                root.present().map_err(|e| e.to_string())
+                root.present().drawn()
             }
             Drawing::Geometry(g) => g.draw(root, scale),
             Drawing::Premises(g) => g.draw(root, scale),
             Drawing::Panels(p) => {
                 chart::register_font();
-                root.fill(&WHITE).map_err(|e| e.to_string())?;
+                root.fill(&WHITE).drawn()?;
                 let band = (36.0 * scale).round() as u32;
                 let (top, inner) = root.split_vertically(band);
                 let (w, _) = top.dim_in_pixel();
@@ -115,12 +117,12 @@ impl Drawing {
                         .color(&BLACK)
                         .pos(Pos::new(HPos::Center, VPos::Center)),
                 ))
-                .map_err(|e| e.to_string())?;
+                .drawn()?;
                 let n = p.plots.len().max(1);
                 for (area, plot) in inner.split_evenly((1, n)).iter().zip(&p.plots) {
                     plot.draw(area, scale)?;
                 }
-                root.present().map_err(|e| e.to_string())
+                root.present().drawn()
             }
         }
     }
@@ -129,7 +131,7 @@ impl Drawing {
     /// legend goes, how many plotted pixels it covers, and its labelled ticks per axis, when
     /// drawn at `width` x `height` px and `scale` (the report's sizes: 760 x 480 at 1, and
     /// 1800 x 1200 at 3).
-    pub fn layouts(&self, width: u32, height: u32, scale: f64) -> Result<Vec<Layout>, String> {
+    pub fn layouts(&self, width: u32, height: u32, scale: f64) -> Result<Vec<Layout>, FigureError> {
         chart::register_font();
         match self {
             Drawing::Chart(c) => Ok(vec![c.layout(
@@ -150,7 +152,7 @@ impl Drawing {
     }
 
     /// The drawing as an SVG document, `width` x `height` px.
-    pub fn to_svg(&self, width: u32, height: u32) -> Result<String, String> {
+    pub fn to_svg(&self, width: u32, height: u32) -> Result<String, FigureError> {
         let mut out = String::new();
         {
             let root = SVGBackend::with_string(&mut out, (width, height)).into_drawing_area();
@@ -160,7 +162,7 @@ impl Drawing {
     }
 
     /// The drawing as a PNG file at `path`: 1800 x 1200 px (6 x 4 in at 300 dpi), scale 3.
-    pub fn to_png(&self, path: &std::path::Path) -> Result<(), String> {
+    pub fn to_png(&self, path: &std::path::Path) -> Result<(), FigureError> {
         {
             let root = BitMapBackend::new(path, (1800, 1200)).into_drawing_area();
             self.draw(&root, 3.0)?;
@@ -235,7 +237,7 @@ fn unknown(name: &str) -> String {
 
 /// The studies a figure is drawn from (none for the geometry and the stability map, which are
 /// algebra); an unknown name is an error that lists the figures.
-pub fn needs(name: &str) -> Result<&'static [Study], String> {
+pub fn needs(name: &str) -> Result<&'static [Study], FigureError> {
     Ok(match family(name).ok_or_else(|| unknown(name))? {
         Family::Geometry | Family::Stability => &[],
         Family::Experiment => &[Study::Experiment],
@@ -249,12 +251,12 @@ pub fn needs(name: &str) -> Result<&'static [Study], String> {
     })
 }
 
-fn need<T>(x: &Option<T>, study: Study) -> Result<&T, String> {
+fn need<T>(x: &Option<T>, study: Study) -> Result<&T, FigureError> {
     x.as_ref()
-        .ok_or_else(|| format!("the figures need the {study} study, which was not computed"))
+        .ok_or_else(|| format!("the figures need the {study} study, which was not computed").into())
 }
 
-fn build_family(f: Family, r: &Results) -> Result<Vec<Figure>, String> {
+fn build_family(f: Family, r: &Results) -> Result<Vec<Figure>, FigureError> {
     match f {
         Family::Geometry => Ok(vec![geometry_figure()?]),
         Family::Experiment => experiment::figures(need(&r.experiment, Study::Experiment)?),
@@ -291,7 +293,7 @@ fn build_family(f: Family, r: &Results) -> Result<Vec<Figure>, String> {
 
 /// Figure 1: the geometry of a uniform disk (the toy's a = 37.5 mm) in the steady motion at
 /// alpha0 = 1 rad with b = 0.6 a.
-pub fn geometry_figure() -> Result<Figure, String> {
+pub fn geometry_figure() -> Result<Figure, FigureError> {
     let disk = crate::Disk::uniform(0.0375);
     let view = geometry::View {
         azimuth: -0.95,
@@ -327,7 +329,7 @@ pub fn geometry_figure() -> Result<Figure, String> {
 /// The figures named (each once, in the order given), drawn from `results`; an unknown name is
 /// an error that lists the known ones, and so is a figure whose study was not computed.
 /// Families are built on rayon's threads; the result does not depend on that.
-pub fn some(names: &[&str], results: &Results) -> Result<Vec<Figure>, String> {
+pub fn some(names: &[&str], results: &Results) -> Result<Vec<Figure>, FigureError> {
     use rayon::prelude::*;
     let mut families: Vec<Family> = Vec::new();
     for n in names {
@@ -336,7 +338,7 @@ pub fn some(names: &[&str], results: &Results) -> Result<Vec<Figure>, String> {
             families.push(f);
         }
     }
-    let built: Vec<Result<Vec<Figure>, String>> = families
+    let built: Vec<Result<Vec<Figure>, FigureError>> = families
         .par_iter()
         .map(|&f| build_family(f, results))
         .collect();
@@ -357,7 +359,7 @@ pub fn some(names: &[&str], results: &Results) -> Result<Vec<Figure>, String> {
 }
 
 /// Every figure, in the report's order, drawn from `results`.
-pub fn all(results: &Results) -> Result<Vec<Figure>, String> {
+pub fn all(results: &Results) -> Result<Vec<Figure>, FigureError> {
     some(&NAMES, results)
 }
 
@@ -454,14 +456,18 @@ mod tests {
 
     #[test]
     fn unknown_names_are_errors_that_list_the_figures() {
-        let e = some(&["nope"], &Results::default()).unwrap_err();
+        let e = some(&["nope"], &Results::default())
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("fig1") && e.contains("work-precision"), "{e}");
         assert!(needs("nope").is_err());
     }
 
     #[test]
     fn a_figure_without_its_study_is_an_error_not_a_computation() {
-        let e = some(&["spin-down-alpha"], &Results::default()).unwrap_err();
+        let e = some(&["spin-down-alpha"], &Results::default())
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("spin-down"), "{e}");
         // The algebraic figures need no study.
         let f = some(&["fig1", "stability-map"], &Results::default()).unwrap();

@@ -4,6 +4,7 @@
 //! needs the contact to slip) cannot appear here: the figure shows what the models do.
 
 use crate::figures::chart::{Legend, Plot, Series, Style};
+use crate::figures::FigureError;
 use crate::figures::{Drawing, Figure, Panels};
 use crate::run::Run;
 
@@ -30,13 +31,13 @@ pub struct PathRun {
 
 impl PathRun {
     /// The path read from a run that recorded it (columns `x_m`, `y_m`).
-    pub fn from_run(r: &Run) -> Result<PathRun, String> {
+    pub fn from_run(r: &Run) -> Result<PathRun, FigureError> {
         let missing = |c: &str| format!("the run of {} did not record {c}", r.scene);
         let x = r.column("x_m").ok_or_else(|| missing("x_m"))?;
         let y = r.column("y_m").ok_or_else(|| missing("y_m"))?;
         let t = r.column("t_s").ok_or_else(|| missing("t_s"))?;
         if t.is_empty() {
-            return Err(format!("the run of {} recorded no samples", r.scene));
+            return Err(format!("the run of {} recorded no samples", r.scene).into());
         }
         Ok(PathRun {
             scene: r.scene.clone(),
@@ -89,7 +90,7 @@ fn one_loop(pts: &[(f64, f64)], start: usize) -> &[(f64, f64)] {
 
 /// The figure: three panels side by side, one per run of [`SCENES`] in that order (no
 /// integration here).
-pub fn figure(runs: &[PathRun]) -> Result<Figure, String> {
+pub fn figure(runs: &[PathRun]) -> Result<Figure, FigureError> {
     if runs.len() != SCENES.len()
         || runs
             .iter()
@@ -99,7 +100,8 @@ pub fn figure(runs: &[PathRun]) -> Result<Figure, String> {
         return Err(format!(
             "the path figure needs the runs of {:?}, in that order",
             SCENES.map(|s| s.0)
-        ));
+        )
+        .into());
     }
     let mut plots = Vec::new();
     let mut notes = Vec::new();

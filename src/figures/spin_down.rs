@@ -10,6 +10,7 @@
 //! eq 78 for $c = 2/5$.
 
 use crate::figures::chart::{Legend, Plot, Series, Style};
+use crate::figures::FigureError;
 use crate::figures::{log_thin, Drawing, Figure};
 use crate::run::Run;
 
@@ -37,7 +38,7 @@ pub fn law(c: f64, epsilon: f64, beta: f64, g_ak: f64, tau: f64) -> f64 {
 }
 
 /// The figure, from the spin-down's run (no integration here).
-pub fn figure(sd: &SpinDown) -> Result<Figure, String> {
+pub fn figure(sd: &SpinDown) -> Result<Figure, FigureError> {
     let r = &sd.run;
     let t_stop = sd.t_stop;
     let t = r.column("t_s").ok_or("no time column")?;

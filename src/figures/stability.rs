@@ -10,6 +10,7 @@
 //! discriminant vanishes (71.4 deg, at $b = -aB/4(2k+1) = 0.57a$).
 
 use crate::figures::chart::{Axis, Legend, Plot, Series, Style};
+use crate::figures::FigureError;
 use crate::figures::{Drawing, Figure};
 use std::f64::consts::FRAC_PI_2;
 
@@ -64,7 +65,7 @@ pub fn eq30_bound(k: f64, alpha0: f64) -> f64 {
 }
 
 /// The figure, for the uniform disk (k = 1/4).
-pub fn figure() -> Result<Figure, String> {
+pub fn figure() -> Result<Figure, FigureError> {
     let k = 0.25;
     let top: f64 = 3.0;
     let bottom: f64 = -0.3;

@@ -31,7 +31,7 @@ pub fn paths() -> Result<Vec<PathRun>, String> {
         .map(|(name, _)| {
             let scene = scene_recording(name, &[Quantity::Path])?;
             let r = run(&scene, None).map_err(|e| e.to_string())?;
-            PathRun::from_run(&r)
+            Ok(PathRun::from_run(&r)?)
         })
         .collect()
 }
