@@ -17,6 +17,7 @@ use crate::experiment;
 use crate::figures::{self, Drawing, Figure};
 use crate::finding::{Finding, Verdict};
 use crate::precision;
+use crate::report::error::ReportError;
 use crate::scene::{builtin::BUILTIN, Scene};
 use rayon::prelude::*;
 
@@ -235,7 +236,7 @@ fn missing(study: Study) -> String {
 pub fn build(
     bench: &Bench,
     progress: &(dyn Fn(&str) + Sync),
-) -> Result<(Report, Vec<Figure>), String> {
+) -> Result<(Report, Vec<Figure>), ReportError> {
     let results = compute(&RunConfig::report(*bench), progress)?;
     from_results(bench, &results, progress)
 }
@@ -246,7 +247,7 @@ pub fn from_results(
     bench: &Bench,
     results: &Results,
     progress: &(dyn Fn(&str) + Sync),
-) -> Result<(Report, Vec<Figure>), String> {
+) -> Result<(Report, Vec<Figure>), ReportError> {
     let checked: &[Checked] = results
         .checks
         .as_deref()
@@ -294,7 +295,8 @@ pub fn from_results(
                 return Err(format!(
                     "eq {} is in section {}, which the report does not know",
                     e.number, e.section
-                ))
+                )
+                .into())
             }
         }
     }
@@ -385,7 +387,7 @@ pub fn from_results(
                 file: format!("figures/{}.png", f.name),
             })
         })
-        .collect::<Result<Vec<_>, String>>()?;
+        .collect::<Result<Vec<_>, ReportError>>()?;
 
     let scenes = BUILTIN
         .iter()

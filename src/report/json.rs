@@ -10,6 +10,7 @@
 use crate::cause::Cause;
 use crate::check::{Checked, Subject, Tally};
 use crate::finding::{Finding, Verdict};
+use crate::report::error::ReportError;
 use schemars::JsonSchema;
 use serde::Serialize;
 use sha2::{Digest, Sha256};
@@ -288,7 +289,7 @@ pub fn derivation_outcome(c: &Checked) -> Option<Outcome> {
 }
 
 /// The JSON Schema of [`CheckDocument`], pretty-printed, as published in `schemas/`.
-pub fn check_schema() -> Result<String, String> {
+pub fn check_schema() -> Result<String, ReportError> {
     let mut s = schemars::schema_for!(CheckDocument);
     s.insert("$id".into(), CHECK_SCHEMA_ID.into());
     let mut text =
@@ -491,7 +492,7 @@ pub fn outcome_for<'a>(
 }
 
 /// The JSON Schema of [`Document`], pretty-printed, as published in `schemas/`.
-pub fn schema() -> Result<String, String> {
+pub fn schema() -> Result<String, ReportError> {
     let mut s = schemars::schema_for!(Document);
     s.insert("$id".into(), SCHEMA_ID.into());
     let mut text =
@@ -501,6 +502,7 @@ pub fn schema() -> Result<String, String> {
 }
 
 /// The document as pretty-printed JSON.
-pub fn to_json(d: &Document) -> Result<String, String> {
-    serde_json::to_string_pretty(d).map_err(|e| format!("cannot write report.json: {e}"))
+pub fn to_json(d: &Document) -> Result<String, ReportError> {
+    serde_json::to_string_pretty(d)
+        .map_err(|e| ReportError::Json(format!("cannot write report.json: {e}")))
 }

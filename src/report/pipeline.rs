@@ -19,6 +19,7 @@ use crate::figures::lab_frame::Compared;
 use crate::figures::path::PathRun;
 use crate::figures::spin_down::SpinDown;
 use crate::precision;
+use crate::report::error::ReportError;
 use crate::scene::Scene;
 use std::collections::BTreeMap;
 use std::fmt;
@@ -103,7 +104,7 @@ impl<'p> RunConfig<'p> {
 
     /// What the named figures need, and nothing else (no checks); an unknown name is an error
     /// that lists the figures.
-    pub fn figures(bench: Bench<'p>, names: &[&str]) -> Result<Self, String> {
+    pub fn figures(bench: Bench<'p>, names: &[&str]) -> Result<Self, ReportError> {
         let mut studies = Vec::new();
         for n in names {
             for s in crate::figures::needs(n)? {
@@ -173,13 +174,16 @@ pub struct CorrectionsStudy {
     pub error: Option<String>,
 }
 
-fn corrections_study(bench: &Bench) -> Result<CorrectionsStudy, String> {
-    let corrections = corrections::built_in().map_err(|e| e.to_string())?;
+fn corrections_study(bench: &Bench) -> Result<CorrectionsStudy, ReportError> {
+    let corrections = corrections::built_in().map_err(|e| ReportError::Input(e.to_string()))?;
     let threads = rayon::current_num_threads().max(1);
-    let corrected =
-        corrections::check_corrected(bench, &corrections, threads).map_err(|e| e.to_string())?;
-    let fixed = corrections::apply(bench.paper, &corrections).map_err(|e| e.to_string())?;
-    let disk = Scene::load("spin-down").map_err(|e| e.to_string())?.disk;
+    let corrected = corrections::check_corrected(bench, &corrections, threads)
+        .map_err(|e| ReportError::Input(e.to_string()))?;
+    let fixed = corrections::apply(bench.paper, &corrections)
+        .map_err(|e| ReportError::Input(e.to_string()))?;
+    let disk = Scene::load("spin-down")
+        .map_err(|e| ReportError::Input(e.to_string()))?
+        .disk;
     let downstream = corrections::downstream(bench.paper, &fixed, (disk.a, disk.k, disk.g));
     Ok(CorrectionsStudy {
         corrections,
@@ -189,23 +193,23 @@ fn corrections_study(bench: &Bench) -> Result<CorrectionsStudy, String> {
     })
 }
 
-fn experiment_study() -> Result<Experiment, String> {
-    let scene = Scene::load("spin-down").map_err(|e| e.to_string())?;
-    let trace =
-        experiment::simulate_trace(&scene, &LightModel::default()).map_err(|e| e.to_string())?;
-    let analysis =
-        experiment::analyze(&trace, &AnalysisSettings::default()).map_err(|e| e.to_string())?;
+fn experiment_study() -> Result<Experiment, ReportError> {
+    let scene = Scene::load("spin-down").map_err(|e| ReportError::Input(e.to_string()))?;
+    let trace = experiment::simulate_trace(&scene, &LightModel::default())
+        .map_err(|e| ReportError::Input(e.to_string()))?;
+    let analysis = experiment::analyze(&trace, &AnalysisSettings::default())
+        .map_err(|e| ReportError::Input(e.to_string()))?;
     Ok(Experiment { trace, analysis })
 }
 
-fn precision_study() -> Result<precision::Study, String> {
-    let scene = Scene::load("benchmark").map_err(|e| e.to_string())?;
+fn precision_study() -> Result<precision::Study, ReportError> {
+    let scene = Scene::load("benchmark").map_err(|e| ReportError::Input(e.to_string()))?;
     let mut opts = precision::StudyOptions::quick();
     opts.timing = precision::Timing::ONCE;
-    precision::study(&scene, &opts).map_err(|e| e.to_string())
+    precision::study(&scene, &opts).map_err(|e| ReportError::Input(e.to_string()))
 }
 
-fn one(study: Study, bench: &Bench) -> Result<Output, String> {
+fn one(study: Study, bench: &Bench) -> Result<Output, ReportError> {
     Ok(match study {
         Study::Checks => {
             // The checks share the machine with the other studies: as many threads as cores.
@@ -231,7 +235,7 @@ fn one(study: Study, bench: &Bench) -> Result<Output, String> {
                     corrections: Vec::new(),
                     corrected: Vec::new(),
                     downstream: None,
-                    error: Some(e),
+                    error: Some(e.to_string()),
                 }
             })))
         }
@@ -241,7 +245,10 @@ fn one(study: Study, bench: &Bench) -> Result<Output, String> {
 /// Computes every study of `config` once, in parallel; `progress` receives a line as each
 /// finishes (with its wall time: progress goes to stderr, never into the report's files).
 /// The results do not depend on the threads: each study is deterministic on its own.
-pub fn compute(config: &RunConfig, progress: &(dyn Fn(&str) + Sync)) -> Result<Results, String> {
+pub fn compute(
+    config: &RunConfig,
+    progress: &(dyn Fn(&str) + Sync),
+) -> Result<Results, ReportError> {
     use rayon::prelude::*;
     let mut wanted: Vec<Study> = Vec::new();
     for s in &config.studies {
@@ -265,7 +272,7 @@ pub fn compute(config: &RunConfig, progress: &(dyn Fn(&str) + Sync)) -> Result<R
             ));
             Ok((s, out))
         })
-        .collect::<Result<_, String>>()?;
+        .collect::<Result<_, ReportError>>()?;
     let mut r = Results::default();
     for (s, out) in outputs {
         *r.computed.entry(s).or_insert(0) += 1;

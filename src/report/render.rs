@@ -4,6 +4,7 @@
 use super::Report;
 use crate::figures::Figure;
 use crate::output::write_atomically;
+use crate::report::error::ReportError;
 use std::path::{Path, PathBuf};
 use tera::{Context, Tera};
 
@@ -18,7 +19,7 @@ pub enum Format {
     Json,
 }
 
-fn templates() -> Result<Tera, String> {
+fn templates() -> Result<Tera, ReportError> {
     let mut t = Tera::default();
     t.add_raw_templates(vec![
         (
@@ -38,15 +39,15 @@ fn templates() -> Result<Tera, String> {
             include_str!("../../templates/partials/finding.tex.tera"),
         ),
     ])
-    .map_err(|e| format!("a report template is broken: {e:?}"))?;
+    .map_err(|e| ReportError::Template(format!("a report template is broken: {e:?}")))?;
     t.register_filter("tex", super::tex::filter);
     t.autoescape_on(vec![".html"]);
     Ok(t)
 }
 
-fn render(report: &Report, template: &str) -> Result<String, String> {
+fn render(report: &Report, template: &str) -> Result<String, ReportError> {
     let t = templates()?;
-    let ctx = Context::from_serialize(report).map_err(|e| e.to_string())?;
+    let ctx = Context::from_serialize(report).map_err(|e| ReportError::Input(e.to_string()))?;
     let mut ctx = ctx;
     let svgs: Vec<&str> = report.figures.iter().map(|f| f.svg.as_str()).collect();
     ctx.insert("svgs", &svgs);
@@ -65,22 +66,22 @@ fn render(report: &Report, template: &str) -> Result<String, String> {
             msg.push_str(&format!(": {s}"));
             source = s.source();
         }
-        msg
+        ReportError::Template(msg)
     })
 }
 
 /// The HTML report: one file, math as MathML, figures as inline SVG, nothing fetched.
-pub fn html(report: &Report) -> Result<String, String> {
+pub fn html(report: &Report) -> Result<String, ReportError> {
     render(report, "report.html")
 }
 
 /// The LaTeX report (figures are PNG files under `figures/`).
-pub fn latex(report: &Report) -> Result<String, String> {
+pub fn latex(report: &Report) -> Result<String, ReportError> {
     render(report, "report.tex")
 }
 
 /// The report's data as JSON, following `schemas/report.schema.json` (see [`super::json`]).
-pub fn json(report: &Report) -> Result<String, String> {
+pub fn json(report: &Report) -> Result<String, ReportError> {
     super::json::to_json(&report.document)
 }
 
@@ -90,13 +91,12 @@ pub fn write(
     figures: &[Figure],
     dir: &Path,
     formats: &[Format],
-) -> Result<Vec<PathBuf>, String> {
-    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+) -> Result<Vec<PathBuf>, ReportError> {
+    std::fs::create_dir_all(dir).map_err(|e| ReportError::io("create", dir, e))?;
     let mut written = Vec::new();
-    let put = |name: &str, text: String, written: &mut Vec<PathBuf>| -> Result<(), String> {
+    let put = |name: &str, text: String, written: &mut Vec<PathBuf>| -> Result<(), ReportError> {
         let path = dir.join(name);
-        write_atomically(&path, text.as_bytes())
-            .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        write_atomically(&path, text.as_bytes()).map_err(|e| ReportError::io("write", &path, e))?;
         written.push(path);
         Ok(())
     };
@@ -107,7 +107,7 @@ pub fn write(
             Format::Latex => {
                 let fig_dir = dir.join("figures");
                 std::fs::create_dir_all(&fig_dir)
-                    .map_err(|e| format!("cannot create {}: {e}", fig_dir.display()))?;
+                    .map_err(|e| ReportError::io("create", &fig_dir, e))?;
                 // Each PNG is drawn on its own rayon thread; the files do not depend on that.
                 use rayon::prelude::*;
                 let pngs: Vec<PathBuf> = figures
@@ -117,10 +117,10 @@ pub fn write(
                         let tmp = fig_dir.join(format!(".{}.{}.png", fig.name, std::process::id()));
                         fig.drawing.to_png(&tmp)?;
                         std::fs::rename(&tmp, &path)
-                            .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+                            .map_err(|e| ReportError::io("write", &path, e))?;
                         Ok(path)
                     })
-                    .collect::<Result<_, String>>()?;
+                    .collect::<Result<_, ReportError>>()?;
                 written.extend(pngs);
                 put("report.tex", latex(report)?, &mut written)?;
             }

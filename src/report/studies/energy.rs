@@ -7,6 +7,7 @@ use crate::figures::energy::{DriftRun, EnergyDrift};
 use crate::figures::Style;
 use crate::model::rolling::Rolling;
 use crate::model::{Extras, Model};
+use crate::report::error::ReportError;
 use crate::scene::Scene;
 use crate::solve::{onto_level, solve, Method, Problem, Settings, State};
 
@@ -23,8 +24,8 @@ const RUNS: [(Method, f64, f64, bool); 7] = [
 ];
 
 /// Integrates the benchmark scene by each of [`RUNS`].
-pub fn compute() -> Result<EnergyDrift, String> {
-    let scene = Scene::load("benchmark").map_err(|e| e.to_string())?;
+pub fn compute() -> Result<EnergyDrift, ReportError> {
+    let scene = Scene::load("benchmark").map_err(|e| ReportError::Input(e.to_string()))?;
     let model = Rolling::<4>::new(scene.disk, Extras::default(), None);
     let y0 = model.state(&scene.start);
     let e0 = model.energy(&y0);
@@ -43,7 +44,7 @@ pub fn compute() -> Result<EnergyDrift, String> {
                 onto_level(|y| model.energy(y), e0, y)
             }));
         }
-        let sol = solve(problem, &settings).map_err(|e| e.to_string())?;
+        let sol = solve(problem, &settings).map_err(|e| ReportError::Input(e.to_string()))?;
         let drift: Vec<(f64, f64)> = sol
             .t
             .iter()

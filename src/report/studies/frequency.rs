@@ -11,6 +11,7 @@ use crate::model::rolling::Rolling;
 use crate::model::steady::steady_motion;
 use crate::model::{Extras, Model, Motion};
 use crate::numerics::oscillation::angular_frequency;
+use crate::report::error::ReportError;
 use crate::solve::{solve, Dynamics, Problem, Settings};
 
 /// The relative size of the nudge to alpha that starts the oscillation.
@@ -23,7 +24,7 @@ fn measure<M: Model<N> + Dynamics<N>, const N: usize>(
     model: &M,
     start: &Motion,
     predicted: f64,
-) -> Result<Option<f64>, String> {
+) -> Result<Option<f64>, ReportError> {
     let omega0 = start.precession.abs();
     let period = std::f64::consts::TAU / (predicted * omega0);
     let mut m = *start;
@@ -38,7 +39,7 @@ fn measure<M: Model<N> + Dynamics<N>, const N: usize>(
         Problem::new(model, 0.0, y0, 8.0 * period).sampled(period / 100.0),
         &settings,
     )
-    .map_err(|e| e.to_string())?;
+    .map_err(|e| ReportError::Input(e.to_string()))?;
     if !sol.ending.is_complete() {
         return Ok(None);
     }
@@ -49,7 +50,7 @@ fn measure<M: Model<N> + Dynamics<N>, const N: usize>(
 /// Measures the toy's uniform disk (a = 37.5 mm, k = 1/4) at tilts 5, 10, ..., 85 degrees,
 /// the tilts on rayon's threads (each measurement is independent; the order of the result is
 /// the tilts' whatever the threads do).
-pub fn compute() -> Result<Measured, String> {
+pub fn compute() -> Result<Measured, ReportError> {
     use rayon::prelude::*;
     let disk = Disk::uniform(0.0375);
     let k = disk.k;
@@ -58,12 +59,13 @@ pub fn compute() -> Result<Measured, String> {
     let per_tilt = |i: u32| -> Result<[Option<(f64, f64)>; 3], String> {
         let deg = 5.0 * i as f64;
         let a = deg.to_radians();
-        let m0 = steady_motion(&disk, a, 0.0).map_err(|e| e.to_string())?;
+        let m0 = steady_motion(&disk, a, 0.0).map_err(|e| ReportError::Input(e.to_string()))?;
         let rolled0 = measure(&rolling, &m0, eq55(k, a))?.map(|r| (deg, r));
         let slid0 = measure(&frictionless, &m0, eq71(k, a))?.map(|r| (deg, r));
         let rolled_half = match eq54_half(k, a) {
             Some(p) => {
-                let mh = steady_motion(&disk, a, 0.5 * disk.a).map_err(|e| e.to_string())?;
+                let mh = steady_motion(&disk, a, 0.5 * disk.a)
+                    .map_err(|e| ReportError::Input(e.to_string()))?;
                 measure(&rolling, &mh, p)?.map(|r| (deg, r))
             }
             None => None,

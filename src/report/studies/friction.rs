@@ -3,20 +3,21 @@
 //! scene's solver settings.
 
 use crate::figures::friction::FrictionResults;
+use crate::report::error::ReportError;
 use crate::run::run;
 use crate::scene::Scene;
 
 /// Runs the slip-stick scene and the friction studies.
-pub fn compute() -> Result<FrictionResults, String> {
-    let scene = Scene::load("slip-stick").map_err(|e| e.to_string())?;
+pub fn compute() -> Result<FrictionResults, ReportError> {
+    let scene = Scene::load("slip-stick").map_err(|e| ReportError::Input(e.to_string()))?;
     let mu = scene
         .friction
         .ok_or("the slip-stick scene has no friction law")?
         .mu;
     let settings = scene.settings;
     let (slip_stick, studies) = rayon::join(
-        || run(&scene, None).map_err(|e| e.to_string()),
-        || crate::friction::studies(&settings).map_err(|e| e.to_string()),
+        || run(&scene, None).map_err(|e| ReportError::Input(e.to_string())),
+        || crate::friction::studies(&settings).map_err(|e| ReportError::Input(e.to_string())),
     );
     Ok(FrictionResults {
         slip_stick: slip_stick?,

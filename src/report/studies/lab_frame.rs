@@ -6,11 +6,12 @@ use crate::figures::lab_frame::{Compared, SCENES};
 use crate::model::lab_frame::{Contact, LabFrame};
 use crate::model::rolling::Rolling;
 use crate::model::{Extras, Model};
+use crate::report::error::ReportError;
 use crate::scene::Scene;
 use crate::solve::{solve, Method, Problem, Settings, Solution};
 
 /// Both models integrated from `scene`'s start, sampled every `every` seconds.
-fn both(scene: &Scene, every: f64) -> Result<Compared, String> {
+fn both(scene: &Scene, every: f64) -> Result<Compared, ReportError> {
     let settings = Settings {
         method: Method::Dop853,
         rtol: 1e-12,
@@ -24,7 +25,7 @@ fn both(scene: &Scene, every: f64) -> Result<Compared, String> {
         Problem::new(&reduced, 0.0, reduced.state(&scene.start), t_end).sampled(every),
         &settings,
     )
-    .map_err(|e| e.to_string())?;
+    .map_err(|e| ReportError::Input(e.to_string()))?;
     let b: Solution<13> = solve(
         Problem::new(
             &lab,
@@ -35,12 +36,13 @@ fn both(scene: &Scene, every: f64) -> Result<Compared, String> {
         .sampled(every),
         &settings,
     )
-    .map_err(|e| e.to_string())?;
+    .map_err(|e| ReportError::Input(e.to_string()))?;
     if !(a.ending.is_complete() && b.ending.is_complete()) {
         return Err(format!(
             "{}: the integrations did not finish (reduced: {}; lab frame: {})",
             scene.name, a.ending, b.ending
-        ));
+        )
+        .into());
     }
     let n = a.t.len().min(b.t.len());
     Ok(Compared {
@@ -52,12 +54,12 @@ fn both(scene: &Scene, every: f64) -> Result<Compared, String> {
 }
 
 /// The scenes of the lab-frame figure, compared in parallel, in the figure's order.
-pub fn compute() -> Result<Vec<Compared>, String> {
+pub fn compute() -> Result<Vec<Compared>, ReportError> {
     use rayon::prelude::*;
     SCENES
         .par_iter()
         .map(|(name, every)| {
-            let scene = Scene::load(name).map_err(|e| e.to_string())?;
+            let scene = Scene::load(name).map_err(|e| ReportError::Input(e.to_string()))?;
             both(&scene, *every)
         })
         .collect()

@@ -6,13 +6,14 @@
 use crate::figures::path::{PathRun, SCENES};
 use crate::figures::spin_down::SpinDown;
 use crate::model::Quantity;
+use crate::report::error::ReportError;
 use crate::run::run;
 use crate::scene::Scene;
 use crate::solve::Ending;
 
 /// A built-in scene with `extra` quantities recorded too.
-fn scene_recording(name: &str, extra: &[Quantity]) -> Result<Scene, String> {
-    let mut scene = Scene::load(name).map_err(|e| e.to_string())?;
+fn scene_recording(name: &str, extra: &[Quantity]) -> Result<Scene, ReportError> {
+    let mut scene = Scene::load(name).map_err(|e| ReportError::Input(e.to_string()))?;
     for q in extra {
         if !scene.record.contains(q) {
             scene.record.push(*q);
@@ -23,14 +24,14 @@ fn scene_recording(name: &str, extra: &[Quantity]) -> Result<Scene, String> {
 
 /// The path scenes of the figure but the spin-down (which [`spin_down`] runs), in parallel,
 /// in the figure's order.
-pub fn paths() -> Result<Vec<PathRun>, String> {
+pub fn paths() -> Result<Vec<PathRun>, ReportError> {
     use rayon::prelude::*;
     SCENES
         .par_iter()
         .filter(|(name, _)| *name != "spin-down")
         .map(|(name, _)| {
             let scene = scene_recording(name, &[Quantity::Path])?;
-            let r = run(&scene, None).map_err(|e| e.to_string())?;
+            let r = run(&scene, None).map_err(|e| ReportError::Input(e.to_string()))?;
             Ok(PathRun::from_run(&r)?)
         })
         .collect()
@@ -45,7 +46,7 @@ pub const SPIN_DOWN_SAMPLE: f64 = 5e-4;
 
 /// The one run of the built-in spin-down scene, to its stopping event, sampled every
 /// [`SPIN_DOWN_SAMPLE`].
-pub fn spin_down() -> Result<SpinDown, String> {
+pub fn spin_down() -> Result<SpinDown, ReportError> {
     let mut scene = scene_recording(
         "spin-down",
         &[Quantity::Alpha, Quantity::AlphaDot, Quantity::Path],
@@ -54,10 +55,10 @@ pub fn spin_down() -> Result<SpinDown, String> {
     let law = scene
         .dissipation
         .ok_or("the spin-down scene has no dissipation")?;
-    let r = run(&scene, None).map_err(|e| e.to_string())?;
+    let r = run(&scene, None).map_err(|e| ReportError::Input(e.to_string()))?;
     let t_stop = match &r.ending {
         Ending::Event { t, .. } => *t,
-        other => return Err(format!("the spin-down did not end: {other}")),
+        other => return Err(format!("the spin-down did not end: {other}").into()),
     };
     let d = scene.disk;
     Ok(SpinDown {
