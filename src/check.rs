@@ -43,6 +43,45 @@ impl Subject {
     }
 }
 
+/// Why a selection of checks could not be run.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum CheckError {
+    /// An `--only` range with its ends swapped.
+    #[error("--only: the range {part} runs backwards; write {hi}-{lo}")]
+    Backwards {
+        /// The range as written.
+        part: String,
+        /// Its larger end.
+        lo: u32,
+        /// Its smaller end.
+        hi: u32,
+    },
+    /// An `--only` item that starts like a number but is not an equation number or a range.
+    #[error("--only: {0} is not an equation number from 1 to 85 or a range like 23-25")]
+    NotANumber(String),
+    /// An equation selected that has no check.
+    #[error("--only: equation {0} has no check yet")]
+    NoCheck(u32),
+    /// A claim id that no check has.
+    #[error("--only: {0} is neither an equation number nor the id of a checked claim")]
+    UnknownClaim(String),
+    /// The thread pool could not start.
+    #[error("could not start {threads} threads for the checks: {reason}")]
+    Threads {
+        /// Threads asked for.
+        threads: usize,
+        /// The system's reason.
+        reason: String,
+    },
+}
+
+/// The binary and the report print the sentence.
+impl From<CheckError> for String {
+    fn from(e: CheckError) -> Self {
+        e.to_string()
+    }
+}
+
 /// One check's outcome.
 #[derive(Debug, Clone, Serialize)]
 pub struct Checked {
@@ -69,7 +108,7 @@ pub struct Selection {
 
 impl Selection {
     /// Parses `--only` text: numbers, ranges (`23-25`) and claim ids, comma-separated.
-    pub fn parse(text: &str) -> Result<Self, String> {
+    pub fn parse(text: &str) -> Result<Self, CheckError> {
         let (mut numbers, mut claims) = (Vec::new(), Vec::new());
         for part in text.split(',').map(str::trim).filter(|p| !p.is_empty()) {
             let range: Vec<&str> = part.splitn(2, '-').collect();
@@ -79,14 +118,16 @@ impl Selection {
                 [a, b] if num(a).is_some() && num(b).is_some() => {
                     let (a, b) = (num(a).unwrap_or(0), num(b).unwrap_or(0));
                     if a > b {
-                        return Err(format!("--only: the range {part} runs backwards; write {b}-{a}"));
+                        return Err(CheckError::Backwards {
+                            part: part.to_string(),
+                            lo: a,
+                            hi: b,
+                        });
                     }
                     numbers.extend(a..=b);
                 }
                 _ if part.chars().next().is_some_and(|c| c.is_ascii_digit()) => {
-                    return Err(format!(
-                        "--only: {part} is not an equation number from 1 to 85 or a range like 23-25"
-                    ))
+                    return Err(CheckError::NotANumber(part.to_string()))
                 }
                 _ => claims.push(part.to_string()),
             }
@@ -126,7 +167,7 @@ fn with_premises(bench: &Bench, numbers: &[u32]) -> Vec<u32> {
     all.into_iter().collect()
 }
 
-fn jobs(bench: &Bench, selection: &Selection) -> Result<Vec<Job>, String> {
+fn jobs(bench: &Bench, selection: &Selection) -> Result<Vec<Job>, CheckError> {
     let sections: Vec<u32> = catalogue::equations().iter().map(|e| e.section).collect();
     let claim_sections = catalogue::claims();
     let mut out: Vec<Job> = Vec::new();
@@ -139,7 +180,7 @@ fn jobs(bench: &Bench, selection: &Selection) -> Result<Vec<Job>, String> {
     if let Some(numbers) = &selection.numbers {
         for n in numbers {
             if !registered.iter().any(|e| e.number == *n) {
-                return Err(format!("--only: equation {n} has no check yet"));
+                return Err(CheckError::NoCheck(*n));
             }
         }
     }
@@ -170,9 +211,7 @@ fn jobs(bench: &Bench, selection: &Selection) -> Result<Vec<Job>, String> {
     if let Some(ids) = &selection.claims {
         for id in ids {
             if !all_claims.iter().any(|c| c.id == id) {
-                return Err(format!(
-                    "--only: {id} is neither an equation number nor the id of a checked claim"
-                ));
+                return Err(CheckError::UnknownClaim(id.clone()));
             }
         }
     }
@@ -200,14 +239,17 @@ pub fn run_checks(
     selection: &Selection,
     threads: usize,
     progress: &(dyn Fn(usize, usize) + Sync),
-) -> Result<Vec<Checked>, String> {
+) -> Result<Vec<Checked>, CheckError> {
     let jobs = jobs(bench, selection)?;
     let total = jobs.len();
     let done = AtomicUsize::new(0);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads.max(1))
         .build()
-        .map_err(|e| format!("could not start {threads} threads for the checks: {e}"))?;
+        .map_err(|e| CheckError::Threads {
+            threads,
+            reason: e.to_string(),
+        })?;
     let mut all: Vec<Checked> = pool.install(|| {
         jobs.par_iter()
             .map(|job| {

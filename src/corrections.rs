@@ -48,7 +48,7 @@ pub enum CorrectionError {
     Latex(#[from] PaperError),
     /// The checks could not run.
     #[error("the checks of the corrected equations could not run: {0}")]
-    Checks(String),
+    Checks(crate::check::CheckError),
 }
 
 /// What a check found for one form (printed or corrected).

@@ -261,7 +261,7 @@ fn main() -> ExitCode {
         } => simulate(&scene, csv, compare.as_deref()),
         Command::Scenes { show: Some(name) } => rolling_disk::select::scene_template(&name)
             .map(|t| print!("{t}"))
-            .map_err(|e| e.to_string()),
+            .map_err(anyhow::Error::from),
         Command::Scenes { show: None } => scenes(),
         Command::Mutants { only, json, paper } => mutants(only.as_deref(), json, paper.as_deref()),
         Command::Report {
@@ -302,7 +302,7 @@ fn main() -> ExitCode {
     }
 }
 
-fn mutants(only: Option<&str>, json: bool, paper: Option<&Path>) -> Result<(), String> {
+fn mutants(only: Option<&str>, json: bool, paper: Option<&Path>) -> anyhow::Result<()> {
     let bench = bench_for(None, load_paper(paper)?);
     let numbers: Vec<u32> = match only {
         None => rolling_disk::equations::equations()
@@ -310,11 +310,11 @@ fn mutants(only: Option<&str>, json: bool, paper: Option<&Path>) -> Result<(), S
             .map(|e| e.number)
             .collect(),
         Some(text) => {
-            let selection = rolling_disk::select::parse_only(text).map_err(|e| e.to_string())?;
+            let selection = rolling_disk::select::parse_only(text)?;
             match selection.numbers {
                 Some(n) if !n.is_empty() => n,
                 _ => {
-                    return Err(format!(
+                    return Err(anyhow::anyhow!(
                         "--only {text}: name equation numbers or ranges (claims have no mutants)"
                     ))
                 }
@@ -331,7 +331,8 @@ fn mutants(only: Option<&str>, json: bool, paper: Option<&Path>) -> Result<(), S
     if json {
         println!(
             "{}",
-            serde_json::to_string_pretty(&scores).map_err(|e| format!("cannot write JSON: {e}"))?
+            serde_json::to_string_pretty(&scores)
+                .map_err(|e| anyhow::anyhow!("cannot write JSON: {e}"))?
         );
         return Ok(());
     }
@@ -365,9 +366,9 @@ fn mutants(only: Option<&str>, json: bool, paper: Option<&Path>) -> Result<(), S
     Ok(())
 }
 
-fn scenes() -> Result<(), String> {
+fn scenes() -> anyhow::Result<()> {
     for (name, src) in BUILTIN {
-        let scene = Scene::parse(src, &format!("builtin:{name}")).map_err(|e| e.to_string())?;
+        let scene = Scene::parse(src, &format!("builtin:{name}"))?;
         let first_sentence = scene.description.split(". ").next().unwrap_or("");
         println!("{name:28} {:13} {first_sentence}", scene.model.to_string());
     }
@@ -385,20 +386,18 @@ fn progress_bar(t_end: f64) -> ProgressBar {
     bar
 }
 
-fn simulate(name: &str, csv: Option<PathBuf>, compare: Option<&str>) -> Result<(), String> {
-    let scene = Scene::load(name).map_err(|e| e.to_string())?;
+fn simulate(name: &str, csv: Option<PathBuf>, compare: Option<&str>) -> anyhow::Result<()> {
+    let scene = Scene::load(name)?;
     if let Some(other) = compare {
         let other = match other {
-            "lab-frame" => {
-                rolling_disk::compare::lab_frame_for(scene.model).map_err(|e| e.to_string())?
-            }
+            "lab-frame" => rolling_disk::compare::lab_frame_for(scene.model)?,
             _ => {
-                return Err(format!(
+                return Err(anyhow::anyhow!(
                     "--compare: {other} is not a model to compare with; use lab-frame"
                 ))
             }
         };
-        let c = rolling_disk::compare::compare(&scene, other).map_err(|e| e.to_string())?;
+        let c = rolling_disk::compare::compare(&scene, other)?;
         println!("scene {}: {} against {}", c.scene, c.model, c.other);
         println!(
             "{:<24} {:>14} {:>14} {:>10}",
@@ -421,7 +420,7 @@ fn simulate(name: &str, csv: Option<PathBuf>, compare: Option<&str>) -> Result<(
         bar.set_position((1000.0 * t / t_end) as u64);
         bar.set_message(format!("{t:.3} of {t_end} s"));
     };
-    let result = run(&scene, Some(&report)).map_err(|e| format!("{}: {e}", scene.source));
+    let result = run(&scene, Some(&report)).map_err(|e| anyhow::anyhow!("{}: {e}", scene.source));
     bar.finish_and_clear();
     let result = result?;
     if matches!(
@@ -429,12 +428,12 @@ fn simulate(name: &str, csv: Option<PathBuf>, compare: Option<&str>) -> Result<(
         Ending::Unstable { .. } | Ending::NonFinite { .. }
     ) {
         // No number of such a run means anything: say why, print none.
-        return Err(format!("{}: {}", scene.source, result.ending));
+        return Err(anyhow::anyhow!("{}: {}", scene.source, result.ending));
     }
     print_summary(&scene, &result);
     if let Some(path) = csv {
         write_atomically(&path, result.to_csv().as_bytes())
-            .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+            .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))?;
         println!(
             "trajectory: {} rows written to {}",
             result.rows.len(),
@@ -444,7 +443,7 @@ fn simulate(name: &str, csv: Option<PathBuf>, compare: Option<&str>) -> Result<(
     if result.ending.is_complete() {
         Ok(())
     } else {
-        Err(format!("the run did not finish: {}", result.ending))
+        Err(anyhow::anyhow!("the run did not finish: {}", result.ending))
     }
 }
 
@@ -487,12 +486,12 @@ fn print_summary(scene: &Scene, r: &Run) {
 }
 
 /// The paper to check: the built-in copy, or the one in `dir` (read once for the whole run).
-fn load_paper(dir: Option<&Path>) -> Result<&'static Paper, String> {
+fn load_paper(dir: Option<&Path>) -> anyhow::Result<&'static Paper> {
     match dir {
         None => Ok(built_in_paper()),
         Some(d) => match Paper::from_dir(d) {
             Ok(p) => Ok(Box::leak(Box::new(p))),
-            Err(e) => Err(format!("--paper {}: {e}", d.display())),
+            Err(e) => Err(anyhow::anyhow!("--paper {}: {e}", d.display())),
         },
     }
 }
@@ -514,10 +513,10 @@ fn report(
     out: &Path,
     accuracy: Option<Accuracy>,
     paper: Option<&Path>,
-) -> Result<(), String> {
+) -> anyhow::Result<()> {
     use rolling_disk::report::{build::build, render};
     // Check --out and make room beside it before computing anything.
-    let set = SetWriter::begin(out).map_err(|e| e.to_string())?;
+    let set = SetWriter::begin(out)?;
     let bench = bench_for(accuracy, load_paper(paper)?);
     let status = |s: &str| eprintln!("report: {s}");
     let (report, figures) = build(&bench, &status)?;
@@ -534,7 +533,7 @@ fn report(
     status("writing");
     let written = render::write(&report, &figures, set.dir(), &formats)?;
     let shown: Vec<PathBuf> = written.iter().map(|p| set.final_path(p)).collect();
-    set.commit(&written).map_err(|e| e.to_string())?;
+    set.commit(&written)?;
     let written = shown;
     let t = &report.summary.equations;
     println!(
@@ -565,7 +564,7 @@ fn report(
     Ok(())
 }
 
-fn figures(only: Option<&str>, out: &Path, format: FigureFormat) -> Result<(), String> {
+fn figures(only: Option<&str>, out: &Path, format: FigureFormat) -> anyhow::Result<()> {
     use rolling_disk::report::pipeline::{compute, RunConfig};
     let names: Vec<&str> = rolling_disk::figures::NAMES.to_vec();
     let wanted: Vec<&str> = match only {
@@ -577,7 +576,7 @@ fn figures(only: Option<&str>, out: &Path, format: FigureFormat) -> Result<(), S
         None => names.clone(),
     };
     if wanted.is_empty() {
-        return Err(format!(
+        return Err(anyhow::anyhow!(
             "--only was given no figure name; name some (the figures are: {}) or leave --only out \
              to draw them all",
             names.join(", ")
@@ -585,13 +584,14 @@ fn figures(only: Option<&str>, out: &Path, format: FigureFormat) -> Result<(), S
     }
     for w in &wanted {
         if !names.contains(w) {
-            return Err(format!(
+            return Err(anyhow::anyhow!(
                 "--only: no figure is called {w}; the figures are: {}",
                 names.join(", ")
             ));
         }
     }
-    std::fs::create_dir_all(out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
+    std::fs::create_dir_all(out)
+        .map_err(|e| anyhow::anyhow!("cannot create {}: {e}", out.display()))?;
     // Only the studies the wanted figures are drawn from, each once.
     let config = RunConfig::figures(rolling_disk::equations::Bench::default(), &wanted)?;
     let results = compute(&config, &|s: &str| eprintln!("figures: {s}"))?;
@@ -602,7 +602,7 @@ fn figures(only: Option<&str>, out: &Path, format: FigureFormat) -> Result<(), S
                 let path = out.join(format!("{}.svg", f.name));
                 let svg = f.drawing.to_svg(760, 480)?;
                 write_atomically(&path, svg.as_bytes())
-                    .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+                    .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))?;
                 path
             }
             FigureFormat::Png => {
@@ -610,7 +610,7 @@ fn figures(only: Option<&str>, out: &Path, format: FigureFormat) -> Result<(), S
                 let tmp = out.join(format!(".{}.{}.png", f.name, std::process::id()));
                 f.drawing.to_png(&tmp)?;
                 std::fs::rename(&tmp, &path)
-                    .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+                    .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))?;
                 path
             }
         };
@@ -624,18 +624,17 @@ fn check(
     json: bool,
     accuracy: Option<Accuracy>,
     paper: Option<&Path>,
-) -> Result<(), String> {
+) -> anyhow::Result<()> {
     let bench = bench_for(accuracy, load_paper(paper)?);
     let started = std::time::Instant::now();
     let selection = match only {
         Some(text) if text.split(',').all(|s| s.trim().is_empty()) => {
-            return Err(
+            return Err(anyhow::anyhow!(
                 "--only was given an empty list; name equations, ranges or claim ids \
                  (for example --only 23-25,50) or leave --only out to run every check"
-                    .to_string(),
-            )
+            ))
         }
-        Some(text) => rolling_disk::select::parse_only(text).map_err(|e| e.to_string())?,
+        Some(text) => rolling_disk::select::parse_only(text)?,
         None => Selection::default(),
     };
     let bar = ProgressBar::with_draw_target(None, ProgressDrawTarget::stderr());
@@ -676,7 +675,7 @@ fn check(
         println!(
             "{}",
             serde_json::to_string_pretty(&document)
-                .map_err(|e| format!("cannot write JSON: {e}"))?
+                .map_err(|e| anyhow::anyhow!("cannot write JSON: {e}"))?
         );
     } else {
         print_table(&checked);
@@ -691,7 +690,7 @@ fn check(
     }
     let tally = Tally::of(&checked);
     if tally.not_run > 0 {
-        return Err(format!(
+        return Err(anyhow::anyhow!(
             "{} check(s) could not run (see above)",
             tally.not_run
         ));
@@ -804,12 +803,10 @@ fn print_root_causes(checked: &[Checked]) {
 
 /// States what a preset actually reaches, measured on the benchmark scene against the validated
 /// reference, and what it costs.
-fn print_preset_accuracy(a: Accuracy) -> Result<(), String> {
-    let scene = Scene::load("benchmark").map_err(|e| e.to_string())?;
-    let reference = precision::Reference::compute(&scene, &precision::ReferenceOptions::default())
-        .map_err(|e| e.to_string())?;
-    let m = precision::measure_preset(&scene, a, &reference, &precision::Timing::default())
-        .map_err(|e| e.to_string())?;
+fn print_preset_accuracy(a: Accuracy) -> anyhow::Result<()> {
+    let scene = Scene::load("benchmark")?;
+    let reference = precision::Reference::compute(&scene, &precision::ReferenceOptions::default())?;
+    let m = precision::measure_preset(&scene, a, &reference, &precision::Timing::default())?;
     println!(
         "accuracy {a}: on the benchmark scene this preset reaches {:.1e} over the trajectory \
          ({:.1e} at the end; reference uncertainty {:.1e}) in {:.2e} s and {} evaluations",
@@ -818,8 +815,8 @@ fn print_preset_accuracy(a: Accuracy) -> Result<(), String> {
     Ok(())
 }
 
-fn precision(name: &str, json: bool, quick: bool, target: Option<f64>) -> Result<(), String> {
-    let scene = Scene::load(name).map_err(|e| e.to_string())?;
+fn precision(name: &str, json: bool, quick: bool, target: Option<f64>) -> anyhow::Result<()> {
+    let scene = Scene::load(name)?;
     let opts = if quick {
         precision::StudyOptions::quick()
     } else {
@@ -834,12 +831,9 @@ fn precision(name: &str, json: bool, quick: bool, target: Option<f64>) -> Result
         eprintln!("  [{done:>2}/{total}] {what}");
     };
     let study = precision::study_with_progress(&scene, &opts, &progress)
-        .map_err(|e| format!("{}: {e}", scene.source))?;
+        .map_err(|e| anyhow::anyhow!("{}: {e}", scene.source))?;
     if json {
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&study).map_err(|e| e.to_string())?
-        );
+        println!("{}", serde_json::to_string_pretty(&study)?);
         return Ok(());
     }
     let r = &study.reference;
@@ -888,8 +882,8 @@ fn experiment_simulate(
     csv: Option<&Path>,
     wav: Option<&Path>,
     args: &ArtifactArgs,
-) -> Result<(), String> {
-    let scene = Scene::load(name).map_err(|e| e.to_string())?;
+) -> anyhow::Result<()> {
+    let scene = Scene::load(name)?;
     eprintln!("simulating the recording of {}...", scene.name);
     let (path, bytes, trace) = if let Some(path) = wav {
         let mic = experiment::Microphone {
@@ -897,23 +891,22 @@ fn experiment_simulate(
             ..experiment::Microphone::default()
         };
         let a = args.artifacts(2.0 * mic.amplitude);
-        let trace = experiment::simulate_sound(&scene, &mic, &a).map_err(|e| e.to_string())?;
+        let trace = experiment::simulate_sound(&scene, &mic, &a)?;
         let bytes = experiment::wav_bytes(&trace.v, mic.sample_rate)
-            .map_err(|e| format!("cannot encode the WAV: {e}"))?;
+            .map_err(|e| anyhow::anyhow!("cannot encode the WAV: {e}"))?;
         (path, bytes, trace)
     } else if let Some(path) = csv {
         let mut light = experiment::LightModel::default();
         light.scope.seed = args.seed;
-        let trace = experiment::simulate_trace(&scene, &light).map_err(|e| e.to_string())?;
-        let trace = trace
-            .with_artifacts(&args.artifacts(light.gain))
-            .map_err(|e| e.to_string())?;
+        let trace = experiment::simulate_trace(&scene, &light)?;
+        let trace = trace.with_artifacts(&args.artifacts(light.gain))?;
         let bytes = trace.to_csv().into_bytes();
         (path, bytes, trace)
     } else {
-        return Err("give --csv FILE or --wav FILE".into());
+        return Err(anyhow::anyhow!("give --csv FILE or --wav FILE"));
     };
-    write_atomically(path, &bytes).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    write_atomically(path, &bytes)
+        .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))?;
     println!("{} samples written to {}", trace.t.len(), path.display());
     if let Some(t) = &trace.truth {
         println!(
@@ -924,33 +917,31 @@ fn experiment_simulate(
     Ok(())
 }
 
-fn experiment_analyze(csv: &Path, out: Option<&Path>, json: bool) -> Result<(), String> {
+fn experiment_analyze(csv: &Path, out: Option<&Path>, json: bool) -> anyhow::Result<()> {
     let is_wav = csv
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("wav"));
     if is_wav {
-        let trace = experiment::read_wav(csv).map_err(|e| e.to_string())?;
+        let trace = experiment::read_wav(csv)?;
         let a = experiment::analyze_sound(
             &trace,
             &experiment::TrackSettings::default(),
             &experiment::plausibility::Plausibility::default(),
-        )
-        .map_err(|e| e.to_string())?;
+        )?;
         if json {
             println!("{}", a.to_json());
         } else {
             println!("{a}");
         }
         if let Some(dir) = out {
-            for p in experiment::write_sound_analysis(&a, dir).map_err(|e| e.to_string())? {
+            for p in experiment::write_sound_analysis(&a, dir)? {
                 eprintln!("wrote {}", p.display());
             }
         }
         return Ok(());
     }
-    let trace = experiment::read_trace(csv).map_err(|e| e.to_string())?;
-    let analysis = experiment::analyze(&trace, &experiment::AnalysisSettings::default())
-        .map_err(|e| e.to_string())?;
+    let trace = experiment::read_trace(csv)?;
+    let analysis = experiment::analyze(&trace, &experiment::AnalysisSettings::default())?;
     if json {
         println!("{}", analysis.to_json());
     } else {
@@ -958,8 +949,8 @@ fn experiment_analyze(csv: &Path, out: Option<&Path>, json: bool) -> Result<(), 
     }
     if let Some(dir) = out {
         std::fs::create_dir_all(dir)
-            .map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
-        let written = experiment::write_analysis(&analysis, dir).map_err(|e| e.to_string())?;
+            .map_err(|e| anyhow::anyhow!("cannot create {}: {e}", dir.display()))?;
+        let written = experiment::write_analysis(&analysis, dir)?;
         for p in written {
             eprintln!("wrote {}", p.display());
         }

@@ -10,6 +10,9 @@ pub enum ReportError {
     /// A figure could not be drawn.
     #[error(transparent)]
     Figure(#[from] FigureError),
+    /// The checks could not run.
+    #[error(transparent)]
+    Checks(#[from] crate::check::CheckError),
     /// A study of the pipeline failed.
     #[error("the {study} study failed: {reason}")]
     Study {
