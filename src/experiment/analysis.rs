@@ -6,6 +6,7 @@ use crate::experiment::clean::{remove_glitches, remove_hum};
 use crate::experiment::crossover::{fit_crossover, CrossoverFit};
 use crate::experiment::error::ExperimentError;
 use crate::experiment::fit::{fit_eq84, fit_eq84_fixed, fit_eq85, Eq84Fit, Eq85Fit};
+use crate::experiment::least_squares::FitError;
 use crate::experiment::models::{compare, Comparison};
 use crate::experiment::peaks::{find_peaks, noise_level, Peak, PeakSettings};
 use crate::experiment::plausibility::{Evidence, Plausibility, Verdict};
@@ -257,10 +258,10 @@ pub fn analyze(trace: &Trace, s: &AnalysisSettings) -> Result<Analysis, Experime
     let last_peak = cyc_idx[cyc_idx.len() - 1] + 1;
     let ta: Vec<f64> = cyc_idx.iter().map(|&i| tp[i]).collect();
     let tb: Vec<f64> = cyc_idx.iter().map(|&i| tp[i + 1]).collect();
-    let fit_err = |what: &str, message: String| ExperimentError::Fit {
+    let fit_err = |what: &str, message: FitError| ExperimentError::Fit {
         file: trace.source.clone(),
         what: what.into(),
-        message,
+        message: message.to_string(),
     };
     let refuse = |reason: String| ExperimentError::Refused {
         file: trace.source.clone(),

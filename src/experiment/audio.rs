@@ -14,7 +14,7 @@
 use crate::experiment::band::Row;
 use crate::experiment::error::ExperimentError;
 use crate::experiment::fit::{start84, FixedBeta};
-use crate::experiment::least_squares::{solve, Problem, Scale};
+use crate::experiment::least_squares::{solve, FitError, Problem, Scale};
 use crate::experiment::models::{compare, Comparison};
 use crate::experiment::plausibility::{Evidence, Plausibility, Verdict};
 use crate::experiment::trace::{Trace, Truth};
@@ -147,7 +147,7 @@ pub fn analyze_sound(
         y: &y,
     };
     let fitted = start84(&mid, &inv, bmax)
-        .ok_or_else(|| "the rate does not rise toward an end time".to_string())
+        .ok_or(FitError::Shape("the rate does not rise toward an end time"))
         .and_then(|p0| solve(&law, &w, p0, Scale::Unknown));
     let s = match fitted {
         Ok(s) => s,

@@ -21,7 +21,7 @@
 
 use crate::experiment::band::Row;
 use crate::experiment::fit::{cycle_row, phase, Eq84Fit};
-use crate::experiment::least_squares::{solve, Problem, Scale};
+use crate::experiment::least_squares::{solve, FitError, Problem, Scale};
 use nalgebra::SVector;
 use serde::Serialize;
 use std::f64::consts::PI;
@@ -133,12 +133,15 @@ pub fn fit_crossover(
     start: &[usize],
     w: &[f64],
     free: &Eq84Fit,
-) -> Result<CrossoverFit, String> {
+) -> Result<CrossoverFit, FitError> {
     let n = ta.len();
     if n < 10 {
-        return Err(format!(
-            "{n} cycles in the window, at least 10 are needed for five parameters"
-        ));
+        return Err(FitError::TooFew {
+            what: "cycles",
+            got: n,
+            need: 10,
+            why: " for five parameters",
+        });
     }
     let y: Vec<f64> = ta
         .iter()
@@ -156,7 +159,7 @@ pub fn fit_crossover(
         omega_range: (lo, hi),
     };
     let mut best: Option<crate::experiment::least_squares::Solved<5>> = None;
-    let mut last_err = String::from("no start");
+    let mut last_err = FitError::Shape("no start");
     for frac in [1.0 / 3.0, 2.0 / 3.0] {
         let ln_wc = lo.ln() + frac * (hi / lo).ln();
         // The free law's time left at Omega_c, continued by the branch above.

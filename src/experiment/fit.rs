@@ -18,7 +18,7 @@
 //! whose covariance is scaled by the reduced $\chi^2$ when it exceeds 1 (see there).
 
 use crate::experiment::band::Row;
-use crate::experiment::least_squares::{solve, Problem, Scale, Solved};
+use crate::experiment::least_squares::{solve, FitError, Problem, Scale, Solved};
 use nalgebra::SVector;
 use serde::Serialize;
 use std::f64::consts::PI;
@@ -206,10 +206,15 @@ pub(crate) fn start84(x: &[f64], y: &[f64], xmax: f64) -> Option<SVector<f64, 3>
 
 /// Fits eq 84 to the cycles between peaks `ta[i]` and `tb[i]` (first peak `start[i]`), given
 /// the peak-time variances `w` (indexed by peak).
-pub fn fit_eq84(ta: &[f64], tb: &[f64], start: &[usize], w: &[f64]) -> Result<Eq84Fit, String> {
+pub fn fit_eq84(ta: &[f64], tb: &[f64], start: &[usize], w: &[f64]) -> Result<Eq84Fit, FitError> {
     let n = ta.len();
     if n < 5 {
-        return Err(format!("{n} cycles in the window, at least 5 are needed"));
+        return Err(FitError::TooFew {
+            what: "cycles",
+            got: n,
+            need: 5,
+            why: "",
+        });
     }
     let x: Vec<f64> = ta.iter().zip(tb).map(|(a, b)| 0.5 * (a + b)).collect();
     let y: Vec<f64> = ta
@@ -218,8 +223,9 @@ pub fn fit_eq84(ta: &[f64], tb: &[f64], start: &[usize], w: &[f64]) -> Result<Eq
         .map(|(a, b)| (b - a) / (2.0 * PI))
         .collect();
     let xmax = tb.iter().copied().fold(f64::MIN, f64::max);
-    let p0 = start84(&x, &y, xmax)
-        .ok_or("1/Omega does not fall toward an end time: no start for the fit")?;
+    let p0 = start84(&x, &y, xmax).ok_or(FitError::Shape(
+        "1/Omega does not fall toward an end time: no start for the fit",
+    ))?;
     let pr = Law84 {
         ta,
         tb,
@@ -323,12 +329,15 @@ impl Problem<2> for Law85<'_> {
 
 /// Fits eq 85 to accelerations with first peaks `start`, given all peak times `t` and their
 /// variances `w`.
-pub fn fit_eq85(t: &[f64], start: &[usize], w: &[f64]) -> Result<Eq85Fit, String> {
+pub fn fit_eq85(t: &[f64], start: &[usize], w: &[f64]) -> Result<Eq85Fit, FitError> {
     let n = start.len();
     if n < 4 {
-        return Err(format!(
-            "{n} accelerations in the window, at least 4 are needed"
-        ));
+        return Err(FitError::TooFew {
+            what: "accelerations",
+            got: n,
+            need: 4,
+            why: "",
+        });
     }
     let x: Vec<f64> = start
         .iter()
@@ -354,7 +363,9 @@ pub fn fit_eq85(t: &[f64], start: &[usize], w: &[f64]) -> Result<Eq85Fit, String
         .map(|(a, b)| (*a, b.ln()))
         .collect();
     if pos.len() < 2 {
-        return Err("dOmega/dt is not positive: Omega does not rise".into());
+        return Err(FitError::Shape(
+            "dOmega/dt is not positive: Omega does not rise",
+        ));
     }
     let (mx, my) = (
         mean(&pos.iter().map(|p| p.0).collect::<Vec<_>>()),
@@ -459,7 +470,7 @@ pub fn fit_eq84_fixed(
     w: &[f64],
     beta: f64,
     free: &Eq84Fit,
-) -> Result<FixedFit, String> {
+) -> Result<FixedFit, FitError> {
     let n = ta.len();
     let y: Vec<f64> = ta
         .iter()

@@ -151,19 +151,60 @@ impl<const P: usize, Q: Problem<P>> LeastSquaresProblem<f64, Dyn, Const<P>> for 
     }
 }
 
+/// Why a fit of the experiment could not be made: each sentence is shown to the user (wrapped
+/// by the analysis with the law that was being fitted).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum FitError {
+    /// Not enough data for the law.
+    #[error("{got} {what} in the window, at least {need} are needed{why}")]
+    TooFew {
+        /// What was counted (points, cycles, accelerations).
+        what: &'static str,
+        /// How many there are.
+        got: usize,
+        /// How many the fit needs.
+        need: usize,
+        /// Why that many, or nothing.
+        why: &'static str,
+    },
+    /// No more points than parameters.
+    #[error("{points} points for {params} parameters")]
+    Underdetermined {
+        /// Points.
+        points: usize,
+        /// Parameters.
+        params: usize,
+    },
+    /// The start or the result lies outside the law's domain.
+    #[error("{0}")]
+    Domain(&'static str),
+    /// The data do not have the shape the law needs (no end time ahead, Omega not rising).
+    #[error("{0}")]
+    Shape(&'static str),
+    /// The minimiser or the linear algebra failed (not positive definite, singular, not
+    /// finite, stopped).
+    #[error("{0}")]
+    Numerics(String),
+}
+
 /// Minimises the whitened residuals of `problem` from `p0`, with peak-time variances `w`.
 pub fn solve<const P: usize>(
     problem: &impl Problem<P>,
     w: &[f64],
     p0: SVector<f64, P>,
     scale: Scale,
-) -> Result<Solved<P>, String> {
+) -> Result<Solved<P>, FitError> {
     let n = problem.y().len();
     if n <= P {
-        return Err(format!("{n} points for {P} parameters"));
+        return Err(FitError::Underdetermined {
+            points: n,
+            params: P,
+        });
     }
     if !problem.admissible(&p0) {
-        return Err("the starting point is outside the law's domain".into());
+        return Err(FitError::Domain(
+            "the starting point is outside the law's domain",
+        ));
     }
     let lm = LevenbergMarquardt::new()
         .with_ftol(1e-14)
@@ -172,8 +213,9 @@ pub fn solve<const P: usize>(
     let mut p = p0;
     let mut whitening = None;
     for _round in 0..3 {
-        let ch = BandCholesky::from_rows(&problem.rows(&p), w)
-            .ok_or("the residuals' covariance is not positive definite")?;
+        let ch = BandCholesky::from_rows(&problem.rows(&p), w).ok_or_else(|| {
+            FitError::Numerics("the residuals' covariance is not positive definite".into())
+        })?;
         let (done, report) = lm.minimize(Whitened {
             problem,
             whitening: &ch,
@@ -186,15 +228,18 @@ pub fn solve<const P: usize>(
                     | levenberg_marquardt::TerminationReason::LostPatience
             ))
         {
-            return Err(format!("the minimiser stopped: {:?}", report.termination));
+            return Err(FitError::Numerics(format!(
+                "the minimiser stopped: {:?}",
+                report.termination
+            )));
         }
         if !problem.admissible(&done.p) {
-            return Err("the fit left the law's domain".into());
+            return Err(FitError::Domain("the fit left the law's domain"));
         }
         p = done.p;
         whitening = Some(ch);
     }
-    let ch = whitening.ok_or("no iteration")?;
+    let ch = whitening.ok_or_else(|| FitError::Numerics("no iteration".into()))?;
     let adapter = Whitened {
         problem,
         whitening: &ch,
@@ -202,15 +247,19 @@ pub fn solve<const P: usize>(
     };
     let r = adapter
         .residuals()
-        .ok_or("the residuals are not finite at the minimum")?;
+        .ok_or_else(|| FitError::Numerics("the residuals are not finite at the minimum".into()))?;
     let j = adapter
         .jacobian()
-        .ok_or("the Jacobian is not finite at the minimum")?;
+        .ok_or_else(|| FitError::Numerics("the Jacobian is not finite at the minimum".into()))?;
     let chi2 = r.norm_squared();
     let jtj = j.transpose() * &j;
     let inv = DMatrix::from_fn(P, P, |a, b| jtj[(a, b)])
         .try_inverse()
-        .ok_or("the parameters are not determined by the data (singular normal matrix)")?;
+        .ok_or_else(|| {
+            FitError::Numerics(
+                "the parameters are not determined by the data (singular normal matrix)".into(),
+            )
+        })?;
     let s2 = chi2 / (n - P) as f64;
     let rho = lag_one(r.as_slice());
     let ar1 = ((1.0 + rho) / (1.0 - rho)).max(1.0);
