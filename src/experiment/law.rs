@@ -44,7 +44,7 @@ impl Law {
 
 /// The trace of a disk that follows `law` exactly, seen through `light`.
 pub fn law_trace(law: &Law, disk: &Disk, light: &LightModel) -> Result<Trace, ExperimentError> {
-    light.validate().map_err(ExperimentError::Setting)?;
+    light.validate()?;
     if !(law.beta.is_finite() && law.beta > -1.0 && law.c.is_finite() && law.c > 0.0) {
         return Err(ExperimentError::Setting(format!(
             "the law needs beta > -1 and C > 0, got beta = {}, C = {}",

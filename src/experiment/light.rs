@@ -16,6 +16,7 @@
 //! while $\alpha$ is large, a shallow wave as $\alpha \to 0$. When the disk lies flat the signal is
 //! the constant $V_0 + G(\hat{\mathbf m}_0\cdot\hat{\mathbf D})^q$.
 
+use crate::experiment::error::ExperimentError;
 use crate::experiment::scope::Scope;
 use serde::{Deserialize, Serialize};
 
@@ -79,7 +80,7 @@ impl Default for LightModel {
 
 impl LightModel {
     /// Checks the settings, naming the first one that cannot be used.
-    pub fn validate(&self) -> Result<(), String> {
+    pub fn validate(&self) -> Result<(), ExperimentError> {
         let finite = [
             self.lamp.elevation,
             self.lamp.azimuth,
@@ -88,19 +89,21 @@ impl LightModel {
             self.baseline,
         ];
         if !finite.iter().all(|x| x.is_finite()) {
-            return Err("the light model's directions and baseline must be finite".into());
+            return Err(ExperimentError::Setting(
+                "the light model's directions and baseline must be finite".into(),
+            ));
         }
         if !(self.lobe.is_finite() && self.lobe >= 1.0) {
-            return Err(format!(
+            return Err(ExperimentError::Setting(format!(
                 "the lobe exponent q must be at least 1 (300 is a soft mirror), got {}",
                 self.lobe
-            ));
+            )));
         }
         if !(self.gain.is_finite() && self.gain > 0.0) {
-            return Err(format!(
+            return Err(ExperimentError::Setting(format!(
                 "the gain must be positive volts, got {}",
                 self.gain
-            ));
+            )));
         }
         self.scope.validate()
     }

@@ -2,6 +2,7 @@
 //! electronics add: Gaussian noise (`rand_distr`, seeded ChaCha8: the same seed gives the same
 //! bytes on every machine) and quantisation.
 
+use crate::experiment::error::ExperimentError;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use rand_distr::{Distribution, StandardNormal};
@@ -43,37 +44,43 @@ impl Default for Scope {
 
 impl Scope {
     /// Checks the settings.
-    pub fn validate(&self) -> Result<(), String> {
+    pub fn validate(&self) -> Result<(), ExperimentError> {
         if !(self.sample_rate.is_finite() && self.sample_rate > 0.0) {
-            return Err(format!(
+            return Err(ExperimentError::Setting(format!(
                 "the sample rate must be positive (5000 S/s in the paper), got {}",
                 self.sample_rate
-            ));
+            )));
         }
         if self.samples < 16 {
-            return Err(format!(
+            return Err(ExperimentError::Setting(format!(
                 "a record needs at least 16 samples (50,000 in the paper), got {}",
                 self.samples
-            ));
+            )));
         }
         let span = self.samples as f64 / self.sample_rate;
         if !(self.end_at.is_finite() && self.end_at > 0.0 && self.end_at < span) {
-            return Err(format!(
+            return Err(ExperimentError::Setting(format!(
                 "the end of the spin-down must fall inside the {span} s record, got {} s",
                 self.end_at
-            ));
+            )));
         }
         if !(self.noise.is_finite() && self.noise >= 0.0) {
-            return Err(format!("the noise must be >= 0 V rms, got {}", self.noise));
+            return Err(ExperimentError::Setting(format!(
+                "the noise must be >= 0 V rms, got {}",
+                self.noise
+            )));
         }
         if self.bits > 32 {
-            return Err(format!("at most 32 bits, got {}", self.bits));
+            return Err(ExperimentError::Setting(format!(
+                "at most 32 bits, got {}",
+                self.bits
+            )));
         }
         let (lo, hi) = self.range;
         if !(lo.is_finite() && hi.is_finite() && hi > lo) {
-            return Err(format!(
+            return Err(ExperimentError::Setting(format!(
                 "the input range must be low < high volts, got {lo}..{hi}"
-            ));
+            )));
         }
         Ok(())
     }

@@ -23,7 +23,7 @@ const HEADING: usize = 4;
 /// $t_{stop}$. After $t_{stop}$ the disk lies flat and the signal is constant. The truth's $t_0$
 /// is defined in [`Truth`].
 pub fn simulate_trace(scene: &Scene, light: &LightModel) -> Result<Trace, ExperimentError> {
-    light.validate().map_err(ExperimentError::Setting)?;
+    light.validate()?;
     let scope = &light.scope;
     let m = simulate_motion(scene, scope.end_at, scope.sample_rate, scope.samples)?;
     let flat = light.intensity(0.0, 0.0);

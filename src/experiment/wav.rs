@@ -92,7 +92,7 @@ pub fn parse_wav(bytes: &[u8], file: &str) -> Result<Trace, ExperimentError> {
 }
 
 /// Encodes a uniformly sampled signal (full scale 1, clipped there) as 16-bit mono WAV bytes.
-pub fn wav_bytes(v: &[f64], sample_rate: u32) -> Result<Vec<u8>, String> {
+pub fn wav_bytes(v: &[f64], sample_rate: u32) -> Result<Vec<u8>, hound::Error> {
     let spec = WavSpec {
         channels: 1,
         sample_rate,
@@ -101,12 +101,12 @@ pub fn wav_bytes(v: &[f64], sample_rate: u32) -> Result<Vec<u8>, String> {
     };
     let mut out = Cursor::new(Vec::with_capacity(2 * v.len() + 64));
     {
-        let mut w = WavWriter::new(&mut out, spec).map_err(|e| e.to_string())?;
+        let mut w = WavWriter::new(&mut out, spec)?;
         for &x in v {
             let s = (x.clamp(-1.0, 1.0) * 32767.0).round() as i16;
-            w.write_sample(s).map_err(|e| e.to_string())?;
+            w.write_sample(s)?;
         }
-        w.finalize().map_err(|e| e.to_string())?;
+        w.finalize()?;
     }
     Ok(out.into_inner())
 }
