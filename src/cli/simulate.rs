@@ -1,0 +1,126 @@
+//! `scenes` and `simulate`: the built-in scenes, one run with its progress bar and summary.
+
+use super::*;
+
+pub(crate) fn scenes() -> anyhow::Result<()> {
+    for (name, src) in BUILTIN {
+        let scene = Scene::parse(src, &format!("builtin:{name}"))?;
+        let first_sentence = scene.description.split(". ").next().unwrap_or("");
+        println!("{name:28} {:13} {first_sentence}", scene.model.to_string());
+    }
+    Ok(())
+}
+
+pub(crate) fn progress_bar(t_end: f64) -> ProgressBar {
+    let bar = ProgressBar::with_draw_target(Some(1000), ProgressDrawTarget::stderr());
+    bar.set_style(
+        ProgressStyle::with_template("{spinner} simulated {msg} [{bar:30}] {elapsed}")
+            .expect("a valid template")
+            .progress_chars("=> "),
+    );
+    bar.set_message(format!("0 of {t_end} s"));
+    bar
+}
+
+pub(crate) fn simulate(
+    name: &str,
+    csv: Option<PathBuf>,
+    compare: Option<&str>,
+) -> anyhow::Result<()> {
+    let scene = Scene::load(name)?;
+    if let Some(other) = compare {
+        let other = match other {
+            "lab-frame" => rolling_disk::compare::lab_frame_for(scene.model)?,
+            _ => {
+                return Err(anyhow::anyhow!(
+                    "--compare: {other} is not a model to compare with; use lab-frame"
+                ))
+            }
+        };
+        let c = rolling_disk::compare::compare(&scene, other)?;
+        println!("scene {}: {} against {}", c.scene, c.model, c.other);
+        println!(
+            "{:<24} {:>14} {:>14} {:>10}",
+            "quantity", "largest diff", "of its range", "at t (s)"
+        );
+        for d in &c.differences {
+            let relative = d
+                .relative
+                .map_or("- (zero)".to_string(), |r| format!("{r:.3e}"));
+            println!(
+                "{:<24} {:>14.3e} {:>14} {:>10.4}",
+                d.column, d.largest, relative, d.at_time
+            );
+        }
+        return Ok(());
+    }
+    let bar = progress_bar(scene.stop.time);
+    let t_end = scene.stop.time;
+    let report = |t: f64| {
+        bar.set_position((1000.0 * t / t_end) as u64);
+        bar.set_message(format!("{t:.3} of {t_end} s"));
+    };
+    let result = run(&scene, Some(&report)).map_err(|e| anyhow::anyhow!("{}: {e}", scene.source));
+    bar.finish_and_clear();
+    let result = result?;
+    if matches!(
+        result.ending,
+        Ending::Unstable { .. } | Ending::NonFinite { .. }
+    ) {
+        // No number of such a run means anything: say why, print none.
+        return Err(anyhow::anyhow!("{}: {}", scene.source, result.ending));
+    }
+    print_summary(&scene, &result);
+    if let Some(path) = csv {
+        write_atomically(&path, result.to_csv().as_bytes())
+            .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))?;
+        println!(
+            "trajectory: {} rows written to {}",
+            result.rows.len(),
+            path.display()
+        );
+    }
+    if result.ending.is_complete() {
+        Ok(())
+    } else {
+        Err(anyhow::anyhow!("the run did not finish: {}", result.ending))
+    }
+}
+
+pub(crate) fn print_summary(scene: &Scene, r: &Run) {
+    let (t_end, _) = (r.rows.last().map_or(0.0, |row| row[0]), ());
+    let m = &r.last;
+    println!("scene       {} ({})", scene.name, scene.source);
+    println!("model       {}, {} states integrated", r.model, r.states);
+    println!(
+        "solver      {} rtol {:e} atol {:e}",
+        scene.settings.method, scene.settings.rtol, scene.settings.atol
+    );
+    println!("ended       {} (t = {t_end:.6} s)", r.ending);
+    println!(
+        "final       alpha = {:.12} rad, alpha_dot = {:.12e} rad/s, Omega = {:.12} rad/s, omega_1 = {:.12} rad/s",
+        m.alpha, m.alpha_dot, m.precession, m.spin
+    );
+    let label = if scene.dissipation.is_some() || scene.friction.is_some() {
+        "energy lost"
+    } else {
+        "energy drift"
+    };
+    println!(
+        "{label:11} {:.3e} relative (E0 = {:.9e} J, E_end = {:.9e} J)",
+        r.energy_change, r.energy.0, r.energy.1
+    );
+    println!(
+        "work        {} right-hand-side evaluations ({} more to locate events and sample), {} accepted and {} rejected steps",
+        r.stats.evaluations, r.stats.extra_evaluations, r.stats.accepted, r.stats.rejected
+    );
+    if scene.model == rolling_disk::scene::ModelKind::Sliding {
+        println!(
+            "contact     {} switches and impacts",
+            r.contact_events.len()
+        );
+        for e in &r.contact_events {
+            println!("  t = {:.9} s  {} -> {}: {}", e.t, e.from, e.to, e.what);
+        }
+    }
+}
