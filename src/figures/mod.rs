@@ -22,6 +22,7 @@
 //!
 //! Everything is deterministic: the same build gives the same bytes.
 
+pub mod canvas;
 pub mod chart;
 pub mod energy;
 pub mod error;
@@ -33,6 +34,7 @@ pub mod lab_frame;
 pub mod legend;
 pub mod path;
 pub mod precision;
+pub mod ranges;
 pub mod spin_down;
 pub mod stability;
 pub mod ticks;

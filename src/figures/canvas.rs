@@ -1,0 +1,611 @@
+//! Drawing a [`Chart`] on any plotters backend: ranges with margins, axes and their ticks, the
+//! series in their styles, reference lines, notes and the legend. One routine for the SVG of the
+//! HTML report and the print-resolution PNG of the LaTeX report; the chart itself is plain data
+//! (`chart.rs`).
+
+use super::chart::{
+    nonzero_tick_label, register_font, tick_label, Axis, Chart, Legend, Options, Style, PALETTE,
+};
+use super::legend::{self, Layout};
+use super::ranges::{bounds, checked, grid_step, merge_cells};
+use super::ticks;
+use crate::figures::{Drawn, FigureError};
+use plotters::coord::ranged1d::{AsRangedCoord, BoldPoints, Ranged, ValueFormatter};
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+fn rgb(c: [u8; 3]) -> RGBColor {
+    RGBColor(c[0], c[1], c[2])
+}
+
+impl Chart {
+    fn x_bounds(&self, o: &Options) -> (f64, f64) {
+        o.x_range.unwrap_or_else(|| {
+            bounds(
+                self.series
+                    .iter()
+                    .flat_map(|s| s.points.iter().map(|p| p.0)),
+                self.x_log,
+            )
+        })
+    }
+
+    fn y_bounds(&self, o: &Options) -> (f64, f64) {
+        o.y_range.unwrap_or_else(|| {
+            bounds(
+                self.series
+                    .iter()
+                    .flat_map(|s| s.points.iter().map(|p| p.1)),
+                self.y_log,
+            )
+        })
+    }
+
+    /// Draws the chart on any plotters backend; `scale` multiplies font sizes and line widths
+    /// (1 for the screen's SVG, about 3 for a 300-dpi PNG).
+    pub fn draw<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, plotters::coord::Shift>,
+        scale: f64,
+    ) -> Result<(), FigureError> {
+        self.draw_with(root, scale, &Options::default())
+    }
+
+    /// Draws the chart with `options` on any plotters backend.
+    pub fn draw_with<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, plotters::coord::Shift>,
+        scale: f64,
+        o: &Options,
+    ) -> Result<(), FigureError> {
+        self.render(root, scale, o).map(|_| ())
+    }
+
+    /// Where the legend goes and what it covers, and the labelled ticks, when the chart is drawn
+    /// at `dim` pixels and `scale`: the same computation as drawing, on a scratch canvas.
+    pub fn layout(&self, dim: (u32, u32), scale: f64, o: &Options) -> Result<Layout, FigureError> {
+        let mut scratch = String::new();
+        let root = SVGBackend::with_string(&mut scratch, dim).into_drawing_area();
+        self.render(&root, scale, o)
+    }
+
+    /// Draws with the legend moved to a free corner, or else the y range grown at the top, so
+    /// that the legend covers no data.
+    fn render<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, plotters::coord::Shift>,
+        scale: f64,
+        o: &Options,
+    ) -> Result<Layout, FigureError> {
+        if o.legend == Legend::Hidden || o.y_range.is_some() {
+            return self.render_with_headroom(root, scale, o, 0.0);
+        }
+        let mut scratch = String::new();
+        let probe = SVGBackend::with_string(&mut scratch, root.dim_in_pixel()).into_drawing_area();
+        let first = self.render_with_headroom(&probe, scale, o, 0.0)?;
+        drop(probe);
+        let headroom = match (first.covered, first.rect) {
+            (0, _) | (_, None) => 0.0,
+            (_, Some(r)) => {
+                let (_, ph) = self.plot_area(root.dim_in_pixel(), scale)?;
+                // The share of the plot's height the legend takes from the top, plus a gap.
+                ((r.y1 - r.y0 + 12) as f64 / ph).min(0.6)
+            }
+        };
+        self.render_with_headroom(root, scale, o, headroom)
+    }
+
+    /// Draws with the top `headroom` share of the plot's height kept free of data.
+    fn render_with_headroom<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, plotters::coord::Shift>,
+        scale: f64,
+        o: &Options,
+        headroom: f64,
+    ) -> Result<Layout, FigureError> {
+        register_font();
+        root.fill(&WHITE).drawn()?;
+        let (mut x0, mut x1) = checked(self.x_bounds(o), self.x_log, "x")?;
+        let (mut y0, mut y1) = checked(self.y_bounds(o), self.y_log, "y")?;
+        if headroom > 0.0 {
+            // Grow the top so that the data keep the lower (1 - headroom) of the height.
+            let grow = headroom / (1.0 - headroom);
+            if self.y_log {
+                y1 = 10f64.powf(y1.log10() + grow * (y1.log10() - y0.log10()));
+            } else {
+                y1 += grow * (y1 - y0);
+            }
+        }
+        if o.equal_aspect && !self.x_log && !self.y_log {
+            // Widen one range so that a unit is as long on both axes.
+            let (pw, ph) = self.plot_area(root.dim_in_pixel(), scale)?;
+            let (sx, sy) = ((x1 - x0) / pw, (y1 - y0) / ph);
+            if sx > sy {
+                let (c, h) = (0.5 * (y0 + y1), 0.5 * sx * ph);
+                (y0, y1) = (c - h, c + h);
+            } else {
+                let (c, h) = (0.5 * (x0 + x1), 0.5 * sy * pw);
+                (x0, x1) = (c - h, c + h);
+            }
+        }
+        // Log axes carry their own ticks (see `ticks`).
+        let log_axis = ticks::LogAxis::new;
+        match (self.x_log, self.y_log) {
+            (false, false) => self.draw_in(root, scale, o, x0..x1, y0..y1, (x0, x1), (y0, y1)),
+            (true, false) => {
+                self.draw_in(root, scale, o, log_axis(x0, x1), y0..y1, (x0, x1), (y0, y1))
+            }
+            (false, true) => {
+                self.draw_in(root, scale, o, x0..x1, log_axis(y0, y1), (x0, x1), (y0, y1))
+            }
+            (true, true) => self.draw_in(
+                root,
+                scale,
+                o,
+                log_axis(x0, x1),
+                log_axis(y0, y1),
+                (x0, x1),
+                (y0, y1),
+            ),
+        }
+    }
+
+    /// The chart's frame: title, margins and label areas.
+    fn builder<'a, 'b, DB: DrawingBackend>(
+        &self,
+        root: &'a DrawingArea<DB, plotters::coord::Shift>,
+        scale: f64,
+    ) -> ChartBuilder<'a, 'b, DB> {
+        let px = |v: f64| (v * scale).round() as u32;
+        let mut b = ChartBuilder::on(root);
+        b.caption(&self.title, ("sans-serif", 17.0 * scale).into_font())
+            .margin(px(12.0))
+            .margin_right(px(22.0))
+            .x_label_area_size(px(48.0))
+            .y_label_area_size(px(72.0));
+        b
+    }
+
+    /// The size in pixels of the plotting area inside a drawing of `dim` pixels, measured on a
+    /// scratch canvas (the layout depends only on the size, the scale and the font).
+    fn plot_area(&self, dim: (u32, u32), scale: f64) -> Result<(f64, f64), FigureError> {
+        let mut scratch = String::new();
+        let root = SVGBackend::with_string(&mut scratch, dim).into_drawing_area();
+        let chart = self
+            .builder(&root, scale)
+            .build_cartesian_2d(0.0..1.0, 0.0..1.0)
+            .drawn()?;
+        let (w, h) = chart.plotting_area().dim_in_pixel();
+        Ok((w.max(1) as f64, h.max(1) as f64))
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn draw_in<DB, X, Y>(
+        &self,
+        root: &DrawingArea<DB, plotters::coord::Shift>,
+        scale: f64,
+        o: &Options,
+        x: X,
+        y: Y,
+        xr: (f64, f64),
+        yr: (f64, f64),
+    ) -> Result<Layout, FigureError>
+    where
+        DB: DrawingBackend,
+        X: AsRangedCoord<Value = f64>,
+        Y: AsRangedCoord<Value = f64>,
+        X::CoordDescType: ValueFormatter<f64>,
+        Y::CoordDescType: ValueFormatter<f64>,
+    {
+        let px = |v: f64| (v * scale).round() as u32;
+        let font = |size: f64| ("sans-serif", size * scale).into_font();
+        let mut chart = self.builder(root, scale).build_cartesian_2d(x, y).drawn()?;
+        // As many tick labels as fit: about one per 60 px across, one per 40 px up.
+        let (pw, ph) = chart.plotting_area().dim_in_pixel();
+        let fit = |len: u32, per: f64| ((len as f64 / (per * scale)) as usize).clamp(4, 8);
+        let (nx, ny) = (fit(pw, 60.0), fit(ph, 40.0));
+        // A linear axis asks plotters for more ticks until three fall inside its range; a log
+        // axis has its own (the hint is then ignored).
+        let (x_hint, y_hint) = (
+            ticks::linear_hint(xr.0, xr.1, nx),
+            ticks::linear_hint(yr.0, yr.1, ny),
+        );
+        let plain = |v: &f64| tick_label(*v);
+        let log = |v: &f64| nonzero_tick_label(*v);
+        let x_fmt: &dyn Fn(&f64) -> String = if self.x_log { &log } else { &plain };
+        let y_fmt: &dyn Fn(&f64) -> String = if self.y_log { &log } else { &plain };
+        let spec = chart.as_coord_spec();
+        let labelled = |keys: Vec<f64>, f: &dyn Fn(&f64) -> String| {
+            keys.iter().filter(|k| !f(k).is_empty()).count()
+        };
+        let x_ticks = labelled(spec.x_spec().key_points(BoldPoints(x_hint)), x_fmt);
+        let y_ticks = labelled(spec.y_spec().key_points(BoldPoints(y_hint)), y_fmt);
+        chart
+            .configure_mesh()
+            .x_desc(&self.x_label)
+            .y_desc(&self.y_label)
+            .label_style(font(12.0))
+            .axis_desc_style(font(14.0))
+            .light_line_style(RGBColor(235, 235, 235))
+            .bold_line_style(RGBColor(215, 215, 215))
+            .x_labels(x_hint)
+            .y_labels(y_hint)
+            .x_label_formatter(x_fmt)
+            .y_label_formatter(y_fmt)
+            .draw()
+            .drawn()?;
+        let inside = |(a, b): (f64, f64)| {
+            a.is_finite() && b.is_finite() && (!self.x_log || a > 0.0) && (!self.y_log || b > 0.0)
+        };
+        let width = px(1.6).max(1);
+        let grey = RGBColor(110, 110, 110);
+        // Every plotted pixel, relative to the plotting area, for placing the legend: the
+        // series, the reference lines and their labels.
+        let base = chart.plotting_area().get_base_pixel();
+        let area = chart.plotting_area().dim_in_pixel();
+        let mut pixels: Vec<(i32, i32)> = Vec::new();
+        for m in &o.marks {
+            if !m.at.is_finite() {
+                continue;
+            }
+            let ends = match m.axis {
+                Axis::X => [(m.at, yr.0), (m.at, yr.1)],
+                Axis::Y => [(xr.0, m.at), (xr.1, m.at)],
+            };
+            let line: Vec<(i32, i32)> = ends
+                .iter()
+                .map(|p| {
+                    let (a, b) = chart.backend_coord(p);
+                    (a - base.0, b - base.1)
+                })
+                .collect();
+            pixels.extend(legend::densify(&line));
+        }
+        for s in &self.series {
+            let pts: Vec<(i32, i32)> = s
+                .points
+                .iter()
+                .copied()
+                .filter(|p| inside(*p))
+                .map(|p| {
+                    let (a, b) = chart.backend_coord(&p);
+                    (a - base.0, b - base.1)
+                })
+                .collect();
+            match s.style {
+                Style::Line | Style::Dashed | Style::Dotted => pixels.extend(legend::densify(&pts)),
+                _ => pixels.extend(pts),
+            }
+        }
+        let labels: Vec<&str> = self
+            .series
+            .iter()
+            .filter(|s| !s.label.is_empty())
+            .map(|s| s.label.as_str())
+            .collect();
+        let mut layout = Layout {
+            legend: None,
+            rect: None,
+            covered: 0,
+            x_ticks,
+            y_ticks,
+        };
+        let chosen = if labels.is_empty() {
+            Legend::Hidden
+        } else {
+            let size = legend::size(&labels, 12.0 * scale, px(28.0) as i32, px(8.0) as i32)?;
+            // A position the figure asks for is a preference: if it would hide data and
+            // another corner would not, the legend goes there.
+            let (pos, rect, covered) = match o.legend {
+                Legend::Auto => legend::choose(size, area, &pixels),
+                fixed => match legend::rect(fixed, size, area) {
+                    Some(r) => match legend::covered(&r, &pixels) {
+                        0 => (fixed, r, 0),
+                        c => match legend::choose(size, area, &pixels) {
+                            (p, r2, 0) => (p, r2, 0),
+                            _ => (fixed, r, c),
+                        },
+                    },
+                    None => (
+                        fixed,
+                        legend::Rect {
+                            x0: 0,
+                            y0: 0,
+                            x1: 0,
+                            y1: 0,
+                        },
+                        0,
+                    ),
+                },
+            };
+            if pos != Legend::Hidden {
+                layout.legend = Some(pos);
+                layout.rect = Some(rect);
+                layout.covered = covered;
+            }
+            pos
+        };
+        // Reference lines first, under the data.
+        for m in &o.marks {
+            if !m.at.is_finite() {
+                continue;
+            }
+            let pts = match m.axis {
+                Axis::X => vec![(m.at, yr.0), (m.at, yr.1)],
+                Axis::Y => vec![(xr.0, m.at), (xr.1, m.at)],
+            };
+            chart
+                .draw_series(DashedLineSeries::new(
+                    pts,
+                    px(4.0),
+                    px(3.0),
+                    grey.stroke_width(px(1.2).max(1)),
+                ))
+                .drawn()?;
+            if !m.label.is_empty() {
+                // The label just inside the plot, at the top of a vertical line or the right end
+                // of a horizontal one.
+                let at = match m.axis {
+                    Axis::X => (m.at, yr.1),
+                    Axis::Y => (xr.0, m.at),
+                };
+                // A vertical line in the right part of the plot has its label on its left.
+                let frac = if self.x_log {
+                    (m.at.ln() - xr.0.ln()) / (xr.1.ln() - xr.0.ln())
+                } else {
+                    (m.at - xr.0) / (xr.1 - xr.0)
+                };
+                let left = m.axis == Axis::X && frac > 0.6;
+                let (dx, dy) = match m.axis {
+                    Axis::X if left => (-(px(4.0) as i32), px(4.0) as i32),
+                    Axis::X => (px(4.0) as i32, px(4.0) as i32),
+                    Axis::Y => (px(6.0) as i32, -(px(16.0) as i32)),
+                };
+                let hpos = if left { HPos::Right } else { HPos::Left };
+                // A label the legend would hide moves down below the legend.
+                let (tw, th) = font(11.0).box_size(&m.label).drawn()?;
+                let (ax, ay) = chart.backend_coord(&at);
+                let (lx, ly) = (ax - base.0 + dx, ay - base.1 + dy);
+                let lx = if left { lx - tw as i32 } else { lx };
+                let dy = match layout.rect {
+                    Some(r)
+                        if lx <= r.x1
+                            && lx + tw as i32 >= r.x0
+                            && ly <= r.y1
+                            && ly + th as i32 >= r.y0 =>
+                    {
+                        dy + (r.y1 - ly) + px(4.0) as i32
+                    }
+                    _ => dy,
+                };
+                chart
+                    .draw_series(std::iter::once(
+                        EmptyElement::at(at)
+                            + Text::new(
+                                m.label.clone(),
+                                (dx, dy),
+                                font(11.0).color(&grey).pos(Pos::new(hpos, VPos::Top)),
+                            ),
+                    ))
+                    .drawn()?;
+            }
+        }
+        for (i, s) in self.series.iter().enumerate() {
+            let color = rgb(o
+                .colors
+                .get(i)
+                .copied()
+                .flatten()
+                .unwrap_or(PALETTE[i % PALETTE.len()]));
+            let pts: Vec<(f64, f64)> = s.points.iter().copied().filter(|p| inside(*p)).collect();
+            let r = px(2.6).max(1) as i32;
+            let lw = px(20.0) as i32;
+            let anno = match s.style {
+                // plotters turns a thick polyline into one polygon whose inner corners spike
+                // at sharp reversals (a min/max envelope); at print scale each segment is drawn
+                // alone, with round joins.
+                Style::Line if scale >= 1.5 && pts.len() > 2 => {
+                    let joins: Vec<(f64, f64)> = pts[1..pts.len() - 1].to_vec();
+                    let half = (width / 2).max(1);
+                    chart
+                        .draw_series(
+                            joins
+                                .into_iter()
+                                .map(|p| Circle::new(p, half, color.filled())),
+                        )
+                        .drawn()?;
+                    chart
+                        .draw_series(
+                            pts.windows(2).map(|w| {
+                                PathElement::new(vec![w[0], w[1]], color.stroke_width(width))
+                            }),
+                        )
+                        .drawn()?
+                }
+                Style::Line => chart
+                    .draw_series(LineSeries::new(pts, color.stroke_width(width)))
+                    .drawn()?,
+                Style::Dashed => chart
+                    .draw_series(DashedLineSeries::new(
+                        pts,
+                        px(6.0),
+                        px(4.0),
+                        color.stroke_width(width),
+                    ))
+                    .drawn()?,
+                Style::Dotted => chart
+                    .draw_series(DashedLineSeries::new(
+                        pts,
+                        px(1.6),
+                        px(3.0),
+                        color.stroke_width(width),
+                    ))
+                    .drawn()?,
+                Style::Points => chart
+                    .draw_series(pts.into_iter().map(|p| Circle::new(p, r, color.filled())))
+                    .drawn()?,
+                Style::Squares => chart
+                    .draw_series(pts.into_iter().map(|p| {
+                        EmptyElement::at(p)
+                            + Rectangle::new([(-r, -r), (r, r)], color.stroke_width(px(1.3).max(1)))
+                    }))
+                    .drawn()?,
+                Style::Triangles => chart
+                    .draw_series(pts.into_iter().map(|p| {
+                        EmptyElement::at(p)
+                            + Polygon::new(
+                                vec![(0, -r - 1), (r + 1, r), (-r - 1, r)],
+                                color.filled(),
+                            )
+                    }))
+                    .drawn()?,
+                Style::Crosses => chart
+                    .draw_series(pts.into_iter().map(|p| {
+                        EmptyElement::at(p)
+                            + PathElement::new(
+                                vec![(-r, -r), (r, r)],
+                                color.stroke_width(px(1.3).max(1)),
+                            )
+                            + PathElement::new(
+                                vec![(-r, r), (r, -r)],
+                                color.stroke_width(px(1.3).max(1)),
+                            )
+                    }))
+                    .drawn()?,
+                Style::Cells => {
+                    let hx = 0.5 * grid_step(pts.iter().map(|p| p.0).collect());
+                    let hy = 0.5 * grid_step(pts.iter().map(|p| p.1).collect());
+                    let (hx, hy) = (
+                        if hx.is_finite() { hx } else { 0.0 },
+                        if hy.is_finite() { hy } else { 0.0 },
+                    );
+                    let fill = color.mix(0.45).filled();
+                    chart
+                        .draw_series(merge_cells(pts, hy).into_iter().map(|(a, b0, b1)| {
+                            Rectangle::new([(a - hx, b0 - hy), (a + hx, b1 + hy)], fill)
+                        }))
+                        .drawn()?
+                }
+            };
+            if s.label.is_empty() {
+                continue;
+            }
+            let glyph = Glyph::of(s.style, lw, r);
+            let stroke = color.stroke_width(width);
+            let fill = if s.style == Style::Cells {
+                color.mix(0.45).filled()
+            } else {
+                color.filled()
+            };
+            anno.label(s.label.clone()).legend(move |(x, y)| {
+                let p = |i: usize| PathElement::new(glyph.paths[i].clone(), stroke);
+                EmptyElement::at((x, y))
+                    + p(0)
+                    + p(1)
+                    + p(2)
+                    + p(3)
+                    + Polygon::new(glyph.fill.clone(), fill)
+            });
+        }
+        for n in &o.notes {
+            if !inside((n.x, n.y)) {
+                continue;
+            }
+            let lines: Vec<String> = n.text.lines().map(str::to_string).collect();
+            let step = px(14.0) as i32;
+            chart
+                .draw_series(lines.into_iter().enumerate().map(|(i, l)| {
+                    EmptyElement::at((n.x, n.y))
+                        + Text::new(l, (0, i as i32 * step), font(11.5).color(&BLACK))
+                }))
+                .drawn()?;
+        }
+        let labelled = !labels.is_empty();
+        let position = match chosen {
+            Legend::Auto => Some(SeriesLabelPosition::UpperRight),
+            Legend::UpperRight => Some(SeriesLabelPosition::UpperRight),
+            Legend::UpperLeft => Some(SeriesLabelPosition::UpperLeft),
+            Legend::LowerRight => Some(SeriesLabelPosition::LowerRight),
+            Legend::LowerLeft => Some(SeriesLabelPosition::LowerLeft),
+            Legend::MiddleRight => Some(SeriesLabelPosition::MiddleRight),
+            Legend::Hidden => None,
+        };
+        if let (true, Some(position)) = (labelled, position) {
+            chart
+                .configure_series_labels()
+                .legend_area_size(px(28.0))
+                .margin(px(8.0))
+                .label_font(font(12.0))
+                .background_style(WHITE.mix(0.88))
+                .border_style(RGBColor(180, 180, 180))
+                .position(position)
+                .draw()
+                .drawn()?;
+        }
+        // No `present` here: a plot may be one panel of several, and presenting an SVG
+        // backend closes its document (the later panels fell outside `</svg>`). The
+        // drawing's owner presents once, at the end (`Drawing::draw`).
+        Ok(layout)
+    }
+}
+
+/// A legend glyph in pixels relative to the legend's anchor: four polylines (unused ones empty)
+/// and one filled polygon (possibly empty), one fixed shape for every style.
+#[derive(Clone)]
+struct Glyph {
+    paths: [Vec<(i32, i32)>; 4],
+    fill: Vec<(i32, i32)>,
+}
+
+impl Glyph {
+    /// The glyph of `style`, `len` px long, markers of radius `r` px.
+    fn of(style: Style, len: i32, r: i32) -> Self {
+        let c = len / 2;
+        let mut paths: [Vec<(i32, i32)>; 4] = Default::default();
+        let mut fill = Vec::new();
+        let seg = |a: i32, b: i32| vec![(a, 0), (b, 0)];
+        match style {
+            Style::Line => paths[0] = seg(0, len),
+            Style::Dashed => {
+                let d = len / 4;
+                paths[0] = seg(0, d);
+                paths[1] = seg(3 * d / 2, 5 * d / 2);
+                paths[2] = seg(3 * d, len);
+            }
+            Style::Dotted => {
+                let d = len / 7;
+                for (i, p) in paths.iter_mut().enumerate() {
+                    let a = 2 * d * i as i32;
+                    *p = seg(a, a + d);
+                }
+            }
+            Style::Points => {
+                fill = (0..12)
+                    .map(|i| {
+                        let t = std::f64::consts::TAU * i as f64 / 12.0;
+                        (
+                            c + (r as f64 * t.cos()).round() as i32,
+                            (r as f64 * t.sin()).round() as i32,
+                        )
+                    })
+                    .collect()
+            }
+            Style::Squares => {
+                paths[0] = vec![
+                    (c - r, -r),
+                    (c + r, -r),
+                    (c + r, r),
+                    (c - r, r),
+                    (c - r, -r),
+                ]
+            }
+            Style::Triangles => fill = vec![(c, -r - 1), (c + r + 1, r), (c - r - 1, r)],
+            Style::Crosses => {
+                paths[0] = vec![(c - r, -r), (c + r, r)];
+                paths[1] = vec![(c - r, r), (c + r, -r)];
+            }
+            Style::Cells => fill = vec![(0, -r - 1), (len, -r - 1), (len, r + 1), (0, r + 1)],
+        }
+        Self { paths, fill }
+    }
+}
