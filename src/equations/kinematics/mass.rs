@@ -1,0 +1,338 @@
+//! Eqs 18-22: inertia, angular momentum and the equations of motion, against point-mass bodies.
+
+use super::*;
+
+/// A thin body as point masses in its body frame (plane z = 0, symmetry axis z), with the
+/// inertia factor the paper states (uniform 1/4, ring 1/2) or derived here by hand
+/// (annulus: $I_{22} = m(a^2 + c^2)/4$; a ring of radius $\rho$: $k = \rho^2 / 2a^2$).
+pub(super) struct Body {
+    pub(super) name: &'static str,
+    pub(super) k: f64,
+    pub(super) points: Vec<(V<f64>, f64)>,
+}
+
+pub(super) const MASS: f64 = 0.4;
+pub(super) const G: f64 = 9.81;
+
+/// Point masses of a thin annulus between radii `inner` and `outer` (3-point Gauss-Legendre in
+/// the radius with weight r, exact to degree 5; 12 equal angles, exact for the quadratic
+/// moments), or a ring when they are equal. Total mass `MASS`.
+pub(super) fn plate(inner: f64, outer: f64) -> Vec<(V<f64>, f64)> {
+    let gl = [
+        (-(0.6f64).sqrt(), 5.0 / 9.0),
+        (0.0, 8.0 / 9.0),
+        ((0.6f64).sqrt(), 5.0 / 9.0),
+    ];
+    let radial: Vec<(f64, f64)> = if inner == outer {
+        vec![(outer, 1.0)]
+    } else {
+        gl.iter()
+            .map(|&(x, wt)| {
+                let r = 0.5 * (outer + inner) + 0.5 * (outer - inner) * x;
+                (r, wt * r)
+            })
+            .collect()
+    };
+    let n = 12;
+    let total: f64 = radial.iter().map(|p| p.1).sum::<f64>() * n as f64;
+    let mut out = Vec::new();
+    for &(r, wt) in &radial {
+        for j in 0..n {
+            let th = 0.3 + 2.0 * std::f64::consts::PI * j as f64 / n as f64;
+            out.push(([r * th.cos(), r * th.sin(), 0.0], MASS * wt / total));
+        }
+    }
+    out
+}
+
+pub(super) fn bodies() -> Vec<Body> {
+    vec![
+        Body {
+            name: "uniform disk (k = 1/4)",
+            k: 0.25,
+            points: plate(0.0, A),
+        },
+        Body {
+            name: "ring (k = 1/2)",
+            k: 0.5,
+            points: plate(A, A),
+        },
+        Body {
+            name: "annulus c = a/2 (k = 5/16)",
+            k: 5.0 / 16.0,
+            points: plate(0.5 * A, A),
+        },
+        Body {
+            name: "ring at radius a sqrt(0.2) (k = 0.1)",
+            k: 0.1,
+            points: plate(A * 0.2f64.sqrt(), A * 0.2f64.sqrt()),
+        },
+    ]
+}
+
+/// The inertia tensor about the centre in body axes, summed over the point masses.
+pub(super) fn inertia(points: &[(V<f64>, f64)]) -> M<f64> {
+    let mut i = [[0.0; 3]; 3];
+    for (p, m) in points {
+        let r2 = dot(p, p);
+        for a in 0..3 {
+            for b in 0..3 {
+                i[a][b] += m * (if a == b { r2 } else { 0.0 } - p[a] * p[b]);
+            }
+        }
+    }
+    i
+}
+
+/// Eq 18, $I_{11} = 2kma^2$, $I_{22} = kma^2 = I_{33}$ (definition). Reference: the inertia
+/// tensor summed over point masses of a uniform disk, a ring, an annulus and a smaller ring;
+/// $k$ as the paper states it (1/4, 1/2) or derived by hand; off-diagonal entries must vanish.
+pub(super) fn eq18(b: &Bench) -> Finding {
+    let mut w = Worst::default();
+    for body in bodies() {
+        let i = inertia(&body.points);
+        let unit = body.k * MASS * A * A;
+        // Body axes: symmetry axis z is 1-hat; x and y are diameters.
+        let bind = Bindings::new()
+            .scalar("I_11", i[2][2])
+            .scalar("I_22", i[0][0])
+            .scalar("I_33", i[1][1])
+            .scalar("k", body.k)
+            .scalar("m", MASS)
+            .scalar("a", A);
+        printed_relations(b, 18, &bind, unit, &mut w, &|| {
+            format!("the principal moments of the {}", body.name)
+        });
+        for (p, q) in [(0, 1), (0, 2), (1, 2)] {
+            w.add(0.0, i[p][q], unit, || {
+                format!("off-diagonal I[{p}][{q}] of the {}", body.name)
+            });
+        }
+    }
+    identity(
+        "the principal moments against quadratures of thin disks and rings",
+        w,
+        true,
+    )
+}
+
+/// The inertia tensor in the lab, $R I_{body} R^T$.
+pub(super) fn lab_tensor(rot: &M<f64>, i_body: &M<f64>) -> nalgebra::Matrix3<f64> {
+    let r = nalgebra::Matrix3::from_fn(|i, j| rot[i][j]);
+    let ib = nalgebra::Matrix3::from_fn(|i, j| i_body[i][j]);
+    r * ib * r.transpose()
+}
+
+/// The angular momentum about the centre in the lab, $R I_{body} R^T\vec\omega$.
+pub(super) fn l_lab<T: S>(rot: &M<T>, i_body: &M<f64>, omega: &V<T>) -> V<T> {
+    let body = mat_t_vec(rot, omega);
+    let lb: V<T> =
+        std::array::from_fn(|p| (0..3).fold(c::<T>(0.0), |s, q| s + body[q] * i_body[p][q]));
+    mat_vec(rot, &lb)
+}
+
+/// Eq 19, $\mathbf L_{cm} = \mathbf I\cdot\vec\omega = kma^2(2\omega_1\hat{\mathbf 1} +
+/// \dot\alpha\hat{\mathbf 2} - \Omega\sin\alpha\hat{\mathbf 3})$. Reference: $R I_{body} R^T
+/// \vec\omega$ in the lab, $I_{body}$ summed over point masses, projected on the triad.
+pub(super) fn eq19(b: &Bench) -> Finding {
+    let mut w = Worst::default();
+    for (n, body) in bodies().iter().enumerate() {
+        let i_body = inertia(&body.points);
+        for (h, t) in sample(190 + n as u64, 50, RATE) {
+            let k = kin1(&h, t);
+            let l = l_lab(&k.rot, &i_body, &k.omega);
+            let unit = body.k * MASS * A * A;
+            let i_lab = lab_tensor(&k.rot, &i_body);
+            let bind = kin_bindings(&k)
+                .vector("L_cm", v3(&l))
+                .value("I_tensor", Value::Tensor(i_lab))
+                .scalar("k", body.k)
+                .scalar("m", MASS);
+            printed_relations(b, 19, &bind, unit * rate_scale(&k), &mut w, &|| {
+                at(&k, &format!("L_cm for the {}", body.name))
+            });
+        }
+    }
+    identity(
+        "the triad components of L_cm against R I_body R^T omega (I_body by quadrature)",
+        w,
+        false,
+    )
+}
+
+/// A random rigid motion of a body of point masses: its centre moving on a random cubic path.
+/// Returns, at the sampled instant, the kinematics (with second derivatives), the centre's
+/// acceleration and the point masses' lab offsets and accelerations.
+pub(super) struct Particles {
+    k: Kin<Dual64>,
+    acc_cm: V<f64>,
+    offsets: Vec<(V<f64>, V<f64>, f64)>,
+}
+
+pub(super) fn particles(h: &History, t: f64, rng: &mut Rng, body: &Body) -> Particles {
+    let k = kin2(h, t);
+    let acc_scale = G;
+    let path: Vec<Cubic> = (0..3)
+        .map(|_| {
+            Cubic([
+                0.0,
+                rng.uniform(-1.0, 1.0),
+                rng.uniform(-acc_scale, acc_scale),
+                rng.uniform(-acc_scale, acc_scale),
+            ])
+        })
+        .collect();
+    let td = D2::new(Dual64::new(t, 1.0), Dual64::new(1.0, 0.0));
+    let acc_cm: V<f64> = std::array::from_fn(|i| path[i].at(td).eps.eps);
+    let rot: M<f64> = std::array::from_fn(|i| std::array::from_fn(|j| k.rot[i][j].re));
+    let rot_dd: M<f64> = std::array::from_fn(|i| std::array::from_fn(|j| k.rot_dot[i][j].eps));
+    let offsets = body
+        .points
+        .iter()
+        .map(|(p, m)| (mat_vec(&rot, p), add(&acc_cm, &mat_vec(&rot_dd, p)), *m))
+        .collect();
+    Particles { k, acc_cm, offsets }
+}
+
+/// Eq 20, $m\,d^2\mathbf r_{cm}/dt^2 = \mathbf F - mg\hat{\mathbf z}$. Reference: a body of point
+/// masses in a random rigid motion, each obeying Newton's law under gravity, internal forces
+/// (which cancel in pairs) and its share of the external force; the external non-gravitational
+/// force is then $\mathbf F = \sum_i m_i(\ddot{\mathbf x}_i + g\hat{\mathbf z})$. Claimed:
+/// $m\ddot{\mathbf r}_{cm}$ of the body's centre against $\mathbf F - mg\hat{\mathbf z}$.
+pub(super) fn eq20(b: &Bench) -> Finding {
+    let mut w = Worst::default();
+    let mut rng = Rng::new(20);
+    for body in bodies() {
+        for (h, t) in sample(200, 25, RATE) {
+            let p = particles(&h, t, &mut rng, &body);
+            let force: V<f64> = p.offsets.iter().fold([0.0; 3], |s, (_, acc, m)| {
+                add(&s, &scale(*m, &add(acc, &scale(G, &up()))))
+            });
+            let sc = MASS * (G + norm_f(&p.acc_cm));
+            let bind = Bindings::new()
+                .scalar("m", MASS)
+                .scalar("g", G)
+                .vector("a_cm", v3(&p.acc_cm))
+                .vector("F", v3(&force))
+                .vector("z_hat", Vector3::z());
+            printed_relations(b, 20, &bind, sc, &mut w, &|| {
+                format!("m d2r_cm/dt2 for the {}", body.name)
+            });
+        }
+    }
+    identity(
+        "m d2r_cm/dt2 against F - m g z summed over the point masses of a rigid body",
+        w,
+        false,
+    )
+}
+
+/// Eq 21, $d\mathbf L_{cm}/dt = \mathbf N_{cm} = \mathbf a\times\mathbf F$. Reference: the same
+/// point-mass body; the torque about the centre of the external forces is $\sum_i m_i\boldsymbol
+/// \rho_i\times\ddot{\mathbf x}_i$ (internal central forces give none; gravity's,
+/// $-\sum_i m_i\boldsymbol\rho_i\times g\hat{\mathbf z}$, vanishes about the centre of mass and is
+/// kept in the sum). Claimed: the rate of $\mathbf L_{cm} = R I_{body}R^T\vec\omega$, exact by
+/// dual numbers. When that torque comes from one force at the contact point, it is
+/// $\mathbf a\times\mathbf F$ with $\mathbf a$ the contact point's offset (eq 1): a random motion
+/// needs a general force system, so only the first equality is compared here; the second is the
+/// torque of a force applied at $\mathbf a$, and eq 22 checks its use (tests/mutation.rs lists
+/// the mutants of that relation as not compared here).
+pub(super) fn eq21(b: &Bench) -> Finding {
+    let mut w = Worst::default();
+    let mut rng = Rng::new(21);
+    for body in bodies() {
+        let i_body = inertia(&body.points);
+        for (h, t) in sample(210, 25, RATE) {
+            let p = particles(&h, t, &mut rng, &body);
+            let torque = p.offsets.iter().fold([0.0; 3], |s, (rho, acc, m)| {
+                add(&s, &scale(*m, &cross(rho, &add(acc, &scale(G, &up())))))
+            });
+            let gravity = p.offsets.iter().fold([0.0; 3], |s, (rho, _, m)| {
+                add(&s, &scale(-*m * G, &cross(rho, &up())))
+            });
+            let reference = add(&torque, &gravity);
+            let l = l_lab(&p.k.rot, &i_body, &p.k.omega);
+            let l_dot: V<f64> = std::array::from_fn(|i| l[i].eps);
+            let omega: V<f64> = std::array::from_fn(|i| p.k.omega[i].re);
+            let omega_dot: V<f64> = std::array::from_fn(|i| p.k.omega[i].eps);
+            let rates = norm_f(&omega);
+            let sc =
+                body.k * MASS * A * A * (rates * rates + norm_f(&omega_dot)) + norm_f(&reference);
+            let bind = Bindings::new()
+                .vector("L_cm_rate", v3(&l_dot))
+                .vector("N_cm", v3(&reference));
+            printed_relation(b, 21, 0, &bind, sc, &mut w, &|| {
+                format!("dL_cm/dt for the {}", body.name)
+            });
+        }
+    }
+    identity(
+        "dL_cm/dt of R I R^T omega against the torque summed over point masses",
+        w,
+        false,
+    )
+}
+
+/// Eq 22, $\frac{1}{ma}\frac{d\mathbf L_{cm}}{dt} + \frac{d^2\mathbf r_{cm}}{dt^2}\times
+/// \hat{\mathbf 3} = g\hat{\mathbf 3}\times\hat{\mathbf z}$: eqs 20 and 21 with the force
+/// eliminated. For ANY motion of a rolling disk (built along its rim, second derivatives by
+/// nested duals, $\mathbf L_{cm} = R I_{body}R^T\vec\omega$), eq 20 defines the contact force
+/// $\mathbf F = m(\ddot{\mathbf r}_{cm} + g\hat{\mathbf z})$ and the residual of eq 21 is
+/// $\boldsymbol\rho = \dot{\mathbf L}_{cm} - a\hat{\mathbf 3}\times\mathbf F$; eq 22's residual
+/// (its left side minus its right) must equal $\boldsymbol\rho/ma$, so that eq 22 holds exactly
+/// when eq 21 does. Claimed: eq 22's left side.
+pub(super) fn eq22(b: &Bench) -> Finding {
+    let mut w = Worst::default();
+    for body in bodies() {
+        let i_body = inertia(&body.points);
+        for (h, t) in sample(220, 50, RATE) {
+            let k = kin2(&h, t);
+            let three: V<f64> = std::array::from_fn(|i| k.axes[THREE][i].re);
+            let acc: V<f64> =
+                std::array::from_fn(|i| A * k.contact_rate[i].eps - A * k.rates[THREE][i].eps);
+            let l = l_lab(&k.rot, &i_body, &k.omega);
+            let l_dot: V<f64> = std::array::from_fn(|i| l[i].eps);
+            let force = scale(MASS, &add(&acc, &scale(G, &up())));
+            let residual21 = sub(&l_dot, &cross(&scale(A, &three), &force));
+            let bind = Bindings::new()
+                .scalar("m", MASS)
+                .scalar("a", A)
+                .scalar("g", G)
+                .vector("L_cm_rate", v3(&l_dot))
+                .vector("a_cm", v3(&acc))
+                .vector("e3", v3(&three))
+                .vector("z_hat", Vector3::z());
+            let eq = b.paper.equation(22);
+            let rel = eq.relations()[0];
+            let side = |e| {
+                eq.eval(e, &bind)
+                    .and_then(|v| v.vector())
+                    .map_or([f64::NAN; 3], |v| [v.x, v.y, v.z])
+            };
+            let (lhs, rhs) = (side(rel.lhs), side(rel.rhs));
+            let sc = G + norm_f(&lhs);
+            for i in 0..3 {
+                w.add(
+                    b.claim(lhs[i]) - rhs[i],
+                    residual21[i] / (MASS * A),
+                    sc,
+                    || {
+                        format!(
+                            "component {} of eq 22's residual for the {}, alpha = {:.3}",
+                            ["x", "y", "z"][i],
+                            body.name,
+                            k.alpha.re
+                        )
+                    },
+                );
+            }
+        }
+    }
+    Finding::from_worst(
+        Method::Derivation,
+        "eq 22's residual against eq 21's residual / (m a), F from eq 20, on rolling motions",
+        w,
+        Tolerance::roundoff(),
+        false,
+    )
+}
