@@ -15,6 +15,7 @@ pub mod oscillation;
 pub mod slippage;
 pub mod spin_down;
 pub mod steady;
+mod steady_reference;
 
 use crate::finding::{Finding, Worst};
 use crate::paper::Paper;

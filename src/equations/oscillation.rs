@@ -1,7 +1,7 @@
 //! Small oscillations about steady motion, section 7 of the paper (eqs 44-58).
 //!
 //! References: the exact Jacobian $J$ of the rolling model (eqs 23-25 as implemented, dual
-//! numbers) at a steady motion solved from the model itself (`steady::steady_ref`, Newton on
+//! numbers) at a steady motion solved from the model itself (`steady_reference::steady_ref`, Newton on
 //! eq 24). Its eigenvalues are $\{0, 0, \pm i\varpi\}$ (the steady motions form a two-parameter
 //! family), so the sum of its principal 2x2 minors, the second coefficient $e_2$ of its
 //! characteristic polynomial, is exactly $\varpi^2$ (negative when the motion is unstable);
@@ -9,7 +9,7 @@
 //! on small-amplitude integrations, and thresholds located by bisection on integrations.
 //! $b/a$ enters as the ratio $\omega_{10}/\Omega_0$ (eq 28, checked by measuring the path).
 
-use super::steady::{disk, jac, rho_edge, state, steady_ref, KS};
+use super::steady_reference::{disk, jac, rho_edge, state, steady_ref, KS};
 use super::{
     add_threshold, implied_square, printed_relations, printed_threshold, solve_printed, term_scale,
     Bench, Equation,

@@ -1,12 +1,12 @@
 //! Radial slippage during steady motion, section 6 of the paper (eqs 41-43).
 //!
 //! Reference: the contact force of the model (`model::rolling::contact_force`, eq 20 through the
-//! model's accelerations) at steady motions solved from the model (`steady::steady_ref`, Newton
+//! model's accelerations) at steady motions solved from the model (`steady_reference::steady_ref`, Newton
 //! on eq 24 at a ratio $b/a = \omega_{10}/\Omega_0$, the kinematics verified in eq 28's check).
 //! Exactly, the horizontal force is $-m b\Omega_0^2\hat{\mathbf r}$ and the vertical one $mg$,
 //! so the friction needed is $\mu_* = |b|\Omega_0^2/g$.
 
-use super::steady::{disk, rho_edge, steady_ref};
+use super::steady_reference::{disk, rho_edge, steady_ref};
 use super::{printed_threshold, Bench, Equation};
 use crate::disk::Disk;
 use crate::finding::{Finding, Headline, Method, Tolerance, Worst};
