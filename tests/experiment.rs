@@ -813,3 +813,70 @@ fn figures_of_the_fit_the_residuals_the_sound_and_the_coverage() {
         );
     }
 }
+
+/// Step 1 of the bias hunt (issue 15), candidate "the fit": eq 84's fit alone, on peak times
+/// placed exactly where eq 79's heading passes a multiple of $2\pi$ (no light model, no peak
+/// finder), each shifted by white noise of the stated 20 us. If the fit (its cycle means, its
+/// index of the cycles, its weights) were the source of the early t0, the pulls here would show
+/// it; they must have mean within 4 standard errors of 0 and sd near 1.
+#[test]
+fn the_eq84_fit_alone_is_unbiased_on_exact_peak_times() {
+    use rand::SeedableRng;
+    use rand_distr::{Distribution, Normal};
+    use rolling_disk::experiment::fit::fit_eq84;
+    let law = Law {
+        beta: 2.0,
+        c: 100f64.powi(4) * 7.0,
+    };
+    let t0 = 9.0;
+    // Exact peaks: tau_k with heading(tau_k) = heading(tau_first) + 2 pi k, from tau = 8.5 s
+    // to tau = 0.05 s, found by bisection on the monotonic heading.
+    let h0 = law.heading(8.5);
+    let mut exact = Vec::new();
+    for k in 0.. {
+        let target = h0 + 2.0 * PI * k as f64;
+        if target > law.heading(0.05) {
+            break;
+        }
+        let (mut lo, mut hi) = (0.05, 8.5);
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            // heading rises (toward 0) as tau falls
+            if law.heading(mid) < target {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        exact.push(t0 - 0.5 * (lo + hi));
+    }
+    let sigma = 20e-6;
+    let noise = Normal::new(0.0, sigma).unwrap();
+    let (mut pb, mut pt) = (Vec::new(), Vec::new());
+    for seed in 0..200u64 {
+        let mut rng = rand::rngs::StdRng::seed_from_u64(seed);
+        let t: Vec<f64> = exact.iter().map(|t| t + noise.sample(&mut rng)).collect();
+        let n = t.len();
+        let start: Vec<usize> = (0..n - 1).collect();
+        let w = vec![sigma * sigma; n];
+        let f = fit_eq84(&t[..n - 1], &t[1..], &start, &w).unwrap();
+        pb.push((f.beta - law.beta) / f.beta_sigma);
+        pt.push((f.t0 - t0) / f.t0_sigma);
+    }
+    let moments = |p: &[f64]| {
+        let m = p.iter().sum::<f64>() / p.len() as f64;
+        let v = p.iter().map(|x| (x - m).powi(2)).sum::<f64>() / (p.len() - 1) as f64;
+        (m, v.sqrt())
+    };
+    let ((mb, sb), (mt, st)) = (moments(&pb), moments(&pt));
+    println!(
+        "eq 84 fit alone, {} peaks, 200 runs: beta pulls mean {mb:+.3} sd {sb:.3}; t0 pulls mean {mt:+.3} sd {st:.3}",
+        exact.len()
+    );
+    let se = 4.0 / (200f64).sqrt();
+    assert!(mb.abs() < se && mt.abs() < se, "biased fit");
+    assert!(
+        (sb - 1.0).abs() < 0.2 && (st - 1.0).abs() < 0.2,
+        "wrong spread"
+    );
+}
