@@ -880,3 +880,62 @@ fn the_eq84_fit_alone_is_unbiased_on_exact_peak_times() {
         "wrong spread"
     );
 }
+
+/// Step 1, candidate "the peak timing": on a noise-free, unquantised exact-law trace (the
+/// coverage study's law and light model), each found peak is compared with the time where eq 79's
+/// heading passes the light's peak heading ($\pi/2$ mod $2\pi$; the lamp and detector lie in the
+/// x-z plane, so each pulse is symmetric in heading about it at any tilt). Prints the timing
+/// offset against $\Omega$ (with and without the chirp correction) and the t0 that eq 84's fit
+/// gives from these noise-free peaks.
+#[test]
+fn peak_timing_offsets_on_a_noise_free_law_trace() {
+    use rolling_disk::experiment::fit::fit_eq84;
+    use rolling_disk::experiment::peaks::{find_peaks, noise_level, PeakSettings};
+    let law = Law {
+        beta: 2.0,
+        c: 100f64.powi(4) * 7.0,
+    };
+    let disk = Disk::uniform(0.0375);
+    let mut light = LightModel::default();
+    light.scope.noise = 0.0;
+    light.scope.bits = 0;
+    let trace = law_trace(&law, &disk, &light).unwrap();
+    let t0 = light.scope.end_at;
+    let dt = light.scope.dt();
+    let sigma_v = noise_level(&trace.v).max(1e-6);
+    for chirp in [false, true] {
+        let s = PeakSettings {
+            chirp_correction: chirp,
+            ..PeakSettings::default()
+        };
+        let peaks = find_peaks(&trace.t, &trace.v, dt, sigma_v, &s);
+        let off: Vec<(f64, f64)> = peaks
+            .iter()
+            .filter(|p| p.t < t0)
+            .map(|p| {
+                let tau = t0 - p.t;
+                let e = (law.heading(tau) - PI / 2.0).rem_euclid(2.0 * PI);
+                let e = if e > PI { e - 2.0 * PI } else { e };
+                (law.precession(tau), e / law.precession(tau))
+            })
+            .collect();
+        let n = off.len();
+        for k in [0, n / 4, n / 2, 3 * n / 4, n - 3, n - 2, n - 1] {
+            println!(
+                "chirp correction {chirp}: peak {k}/{n}: Omega {:.1} rad/s, offset {:+.2} us",
+                off[k].0,
+                1e6 * off[k].1
+            );
+        }
+        let t: Vec<f64> = peaks.iter().map(|p| p.t).filter(|t| *t < t0).collect();
+        let m = t.len();
+        let start: Vec<usize> = (0..m - 1).collect();
+        let w = vec![1e-10; m];
+        let f = fit_eq84(&t[..m - 1], &t[1..], &start, &w).unwrap();
+        println!(
+            "chirp correction {chirp}: eq 84 on noise-free peaks: t0 - truth = {:+.3} ms, beta - truth = {:+.5}",
+            1e3 * (f.t0 - t0),
+            f.beta - law.beta
+        );
+    }
+}
