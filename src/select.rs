@@ -270,9 +270,10 @@ mod tests {
         assert!(e("86").contains("1 to 85"), "{}", e("86"));
         assert!(e("eq0").contains("1 to 85"));
         assert!(e("25-23").contains("write 23-25"), "{}", e("25-23"));
-        assert!(e("82").contains("eq 82 cannot be checked"), "{}", e("82"));
+        // Every equation has a check now (eq 82's since the squeeze-film reference).
+        assert_eq!(parse_only("82").unwrap().numbers, Some(vec![82]));
         let range = parse_only("80-85").unwrap();
-        assert_eq!(range.numbers, Some(vec![80, 81, 83, 84, 85]));
+        assert_eq!(range.numbers, Some(vec![80, 81, 82, 83, 84, 85]));
         assert!(
             e("k-uniform-dsk").contains("did you mean k-uniform-disk"),
             "{}",

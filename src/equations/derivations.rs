@@ -39,10 +39,20 @@ pub const DERIVATIONS: &[Derivation] = &[
         check: eq79_from_eqs78_31,
     },
     Derivation {
+        number: 83,
+        check: eq83_from_eq82,
+    },
+    Derivation {
         number: 84,
         check: eq84_from_eq79,
     },
 ];
+
+/// Eq 83 from eq 82 AS PRINTED and the small-angle precession $\Omega^2 = g/ak\alpha$: the check
+/// that lives with the other sec. 11 forms ([`super::friction::eq83`]).
+pub fn eq83_from_eq82(b: &Bench) -> Finding {
+    super::friction::eq83(b)
+}
 
 /// Eq 73 from eq 72 AS PRINTED under the condition the paper attaches to its last form,
 /// $F_z \approx 0$, with the vertical force the same section gives, $F_z \approx m g + m a\ddot\alpha$:

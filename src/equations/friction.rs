@@ -80,11 +80,6 @@ pub const EQUATIONS: &[Equation] = &[
         check: eq81,
     },
     Equation {
-        number: 83,
-        label: "e112",
-        check: eq83,
-    },
-    Equation {
         number: 84,
         label: "e120",
         check: eq84,

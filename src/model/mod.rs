@@ -6,6 +6,7 @@
 //! records them (see [`Layout`]).
 
 pub mod adiabatic;
+pub mod air_film;
 pub mod dissipation;
 pub mod frictionless;
 pub mod lab_frame;
