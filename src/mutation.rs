@@ -12,10 +12,10 @@ use crate::finding::Finding;
 use crate::finding::Verdict;
 use crate::paper::mutate::mutants;
 use rayon::prelude::*;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// The score of one equation.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 pub struct Score {
     /// The printed number.
     pub equation: u32,
@@ -29,7 +29,7 @@ pub struct Score {
     /// already fails "kills" everything), so none are run.
     pub printed_fails: bool,
     /// The check that judged the mutants: `truth` (the equation's own check) or `derivation`.
-    pub judged_by: &'static str,
+    pub judged_by: String,
 }
 
 /// Runs the mutants of the equations `numbers` through their checks (on `bench`'s paper).
@@ -67,7 +67,7 @@ pub fn mutation_scores(
             killed: 0,
             survivors: Vec::new(),
             printed_fails,
-            judged_by,
+            judged_by: judged_by.into(),
         };
         // The mutants of one equation are independent: checked in parallel on rayon's pool,
         // collected in their order, so the score does not depend on the thread count.
@@ -93,4 +93,63 @@ pub fn mutation_scores(
         progress(i + 1, numbers.len());
     }
     out
+}
+
+/// The scores of the whole built-in paper, stored in `snapshots/mutants.json` because the suite
+/// takes about a minute (too long for every report): `tests/mutation.rs` recomputes them and
+/// fails when the stored file differs (re-bless with `ROLLING_DISK_BLESS=1`), so the report can
+/// show them without running them, and they cannot go stale.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct StoredScores {
+    /// SHA-256 of the transcription they were computed on (`report.json`'s `paper.sha256`).
+    pub paper_sha256: String,
+    /// The scores, by equation.
+    pub scores: Vec<Score>,
+}
+
+/// The stored file, as compiled into the binary.
+pub const STORED: &str = include_str!("../snapshots/mutants.json");
+
+impl StoredScores {
+    /// The stored scores; an error only if the file in this build is malformed (a test reads it).
+    pub fn built_in() -> Result<Self, serde_json::Error> {
+        serde_json::from_str(STORED)
+    }
+
+    /// The score of equation `n`, if it has one.
+    pub fn of(&self, n: u32) -> Option<&Score> {
+        self.scores.iter().find(|s| s.equation == n)
+    }
+
+    /// Mutants made and killed over the equations that have a score.
+    pub fn totals(&self) -> (usize, usize) {
+        self.scores
+            .iter()
+            .filter(|s| !s.printed_fails)
+            .fold((0, 0), |(m, k), s| (m + s.mutants, k + s.killed))
+    }
+}
+
+impl Score {
+    /// The score in one sentence, as the report shows it under the equation.
+    pub fn describe(&self) -> String {
+        if self.printed_fails {
+            return "no mutation score: the printed form already fails its own check, so every \
+                    mutant would fail it too"
+                .into();
+        }
+        let by = if self.judged_by == "derivation" {
+            "its derivation from its printed premises (the printed form fails its own check)"
+        } else {
+            "its own check"
+        };
+        let mut text = format!(
+            "mutants of the printed LaTeX: {} of {} killed by {by}",
+            self.killed, self.mutants
+        );
+        if !self.survivors.is_empty() {
+            text.push_str(&format!("; survivors: {}", self.survivors.join("; ")));
+        }
+        text
+    }
 }

@@ -3,7 +3,8 @@
 //! except the survivors listed here with the reason each cannot be told apart.
 
 use rolling_disk::equations::{Bench, FROM_LATEX};
-use rolling_disk::mutation::mutation_scores;
+use rolling_disk::mutation::{mutation_scores, StoredScores};
+use rolling_disk::report::json::PaperSource;
 
 /// Survivors that are not weaknesses: (equation, change, why).
 const EXPLAINED: &[(u32, &str, &str)] = &[];
@@ -35,5 +36,22 @@ fn every_mutant_of_the_printed_equations_is_killed() {
     }
     eprintln!("{killed}/{made} mutants killed");
     assert!(made > 0);
+    // The report shows the stored scores (snapshots/mutants.json): they must be these.
+    let fresh = StoredScores {
+        paper_sha256: PaperSource::built_in("").sha256,
+        scores: scores.clone(),
+    };
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots/mutants.json");
+    let text = serde_json::to_string_pretty(&fresh).unwrap() + "\n";
+    if std::env::var_os("ROLLING_DISK_BLESS").is_some() {
+        // The binary holds the file as it was when built: rebuild and rerun to compare.
+        std::fs::write(path, &text).unwrap();
+        return;
+    }
+    assert_eq!(
+        StoredScores::built_in().unwrap(),
+        fresh,
+        "snapshots/mutants.json is stale: re-bless with ROLLING_DISK_BLESS=1 cargo test --release --test mutation"
+    );
     assert!(unexplained.is_empty(), "survivors: {unexplained:#?}");
 }

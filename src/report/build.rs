@@ -263,6 +263,7 @@ pub fn from_results(
         })
         .collect();
     let mut unchecked = Vec::new();
+    let (stored, mutation) = super::mutation::scores_for(bench.paper);
     for e in &cat {
         let found = checked
             .iter()
@@ -288,6 +289,10 @@ pub fn from_results(
             premises: e.premises.clone(),
             finding: found.map(finding_of),
             uncheckable: why,
+            mutants: stored
+                .as_ref()
+                .and_then(|st| st.of(e.number))
+                .map(crate::mutation::Score::describe),
         };
         match sections.iter_mut().find(|s| s.number == e.section) {
             Some(s) => s.equations.push(v),
@@ -439,6 +444,7 @@ pub fn from_results(
                 cause: equation_checked(checked, e.number).and_then(|c| c.cause.clone()),
                 cause_text: equation_checked(checked, e.number)
                     .and_then(|c| c.cause.as_ref().map(crate::cause::Cause::describe)),
+                mutants: stored.as_ref().and_then(|st| st.of(e.number)).cloned(),
             })
             .collect(),
         claims: bench
@@ -501,6 +507,7 @@ pub fn from_results(
             failing_claims,
             corrections,
             downstream,
+            mutation,
         },
         sections,
         claims,

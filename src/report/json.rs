@@ -420,6 +420,8 @@ pub struct EquationRecord {
     pub cause: Option<Cause>,
     /// The cause in one sentence.
     pub cause_text: Option<String>,
+    /// Its mutation score (the stored scores of the built-in paper; absent for `--paper DIR`).
+    pub mutants: Option<crate::mutation::Score>,
 }
 
 /// One prose claim.

@@ -7,6 +7,7 @@ pub mod error;
 pub mod friction;
 pub mod json;
 pub mod mathml;
+pub mod mutation;
 pub mod pipeline;
 pub mod render;
 pub mod studies;
@@ -83,6 +84,8 @@ pub struct Summary {
     pub corrections: Vec<CorrectionView>,
     /// What the corrections change downstream, in one sentence (empty when not computed).
     pub downstream: String,
+    /// The mutation score in one sentence.
+    pub mutation: String,
 }
 
 /// A corrected equation as the summary shows it.
@@ -177,6 +180,8 @@ pub struct EquationView {
     pub finding: Option<FindingView>,
     /// Why it cannot be checked, when it cannot.
     pub uncheckable: Option<String>,
+    /// Its mutation score in one sentence (built-in paper only).
+    pub mutants: Option<String>,
 }
 
 /// A finding, formatted for reading.
