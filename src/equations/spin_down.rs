@@ -374,3 +374,29 @@ pub(crate) fn time_remaining_on_model(b: &Bench, n: u32, relation: usize, what: 
     f.headline = headline;
     f
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The closed form [`steady_precession`] (eq 24 with $\ddot\alpha = 0$, $\omega_1 = 0$) is
+    /// the steady motion the model itself has: Newton's method on the rolling model's
+    /// $\ddot\alpha$ (`steady_reference::steady_ref`) finds the same $\Omega_0$ to round-off,
+    /// from near the vertical down to the tilts of sec. 11.
+    #[test]
+    fn the_steady_precession_is_the_models_steady_motion() {
+        for k in [0.1, 0.25, 0.5, 0.9] {
+            let d = disk(k);
+            for alpha in [1.5, 1.0, 0.3, 0.05, 1e-3, 1e-5] {
+                let model = super::super::steady_reference::steady_ref(&d, alpha, 0.0)
+                    .expect("a steady motion at b = 0")
+                    .precession;
+                let closed = steady_precession(&d, alpha);
+                assert!(
+                    (closed / model - 1.0).abs() < 1e-12,
+                    "k = {k}, alpha = {alpha}: {closed} against the model's {model}"
+                );
+            }
+        }
+    }
+}
