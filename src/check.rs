@@ -254,10 +254,14 @@ pub fn run_checks(
         jobs.par_iter()
             .map(|job| {
                 let (subject, section, check, derivation, _) = job.clone();
-                let finding = match missing_input(bench, &subject) {
-                    Some(why) => Err(why),
-                    None => Ok(check(bench)),
-                };
+                let finding =
+                    match (missing_input(bench, &subject), &subject) {
+                        (Some(why), _) => Err(why),
+                        (None, Subject::Claim { id }) => Ok(
+                            equations::claims::with_printed_headline(bench, id, check(bench)),
+                        ),
+                        (None, _) => Ok(check(bench)),
+                    };
                 let checked = Checked {
                     subject,
                     section,

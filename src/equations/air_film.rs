@@ -205,14 +205,23 @@ pub fn eq83(b: &Bench) -> Finding {
             });
         }
     }
-    Finding::from_worst(
+    let f = Finding::from_worst(
         Method::Integration,
         "Omega of eq 83 at the squeeze film's time remaining against the steady precession at \
          that tilt",
         worst,
         film_tolerance(film),
         false,
-    )
+    );
+    let h = Headline::new(
+        "precession rate Omega at a given time remaining before t0 (toy disk)",
+        f.claimed,
+        "printed",
+        f.reference,
+        "rad/s",
+        f.at.clone(),
+    );
+    f.with_headline(h)
 }
 
 /// The squeeze film number's relative discretization uncertainty, as a tolerance (the

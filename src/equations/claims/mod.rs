@@ -27,7 +27,7 @@
 
 use super::{Bench, Claim};
 use crate::disk::Disk;
-use crate::finding::{Finding, Method, Tolerance, Worst};
+use crate::finding::{Finding, Headline, Method, Tolerance, Worst};
 use crate::model::adiabatic::Adiabatic;
 use crate::model::dissipation::PowerLaw;
 use crate::model::frictionless::{self as fl, Frictionless};
@@ -239,6 +239,45 @@ pub const CLAIMS: &[Claim] = &[
     },
 ];
 
+/// The unit a claim's comparison is shown in: claims.yaml keeps the paper's "Hz" where it
+/// writes Hz, but those numbers are rad/s (claim `omega-units-hz-vs-rad-per-s`), and the
+/// references compute rad/s.
+fn unit_of(yaml_unit: &str) -> String {
+    if yaml_unit == "Hz" {
+        "rad/s (printed as Hz)".into()
+    } else {
+        yaml_unit.into()
+    }
+}
+
+/// Gives a claim's finding the comparison in the claim's own terms when its check did not: the
+/// number claims.yaml prints, in its unit, against the reference, where the finding's claimed
+/// value IS that printed number (read through [`Bench::claim`]). Findings that compare something
+/// else (a fitted order, a derived threshold) keep their own rendering.
+pub fn with_printed_headline(b: &Bench, id: &str, f: Finding) -> Finding {
+    let Some(c) = b.paper.claims.iter().find(|c| c.id == id) else {
+        return f;
+    };
+    let approximate = matches!(
+        f.verdict,
+        crate::finding::Verdict::HoldsApproximately { .. }
+    );
+    match c.claimed_value {
+        Some(v) if f.headline.is_none() && !approximate && f.claimed == b.claim(v) => {
+            let h = Headline::new(
+                f.compared.clone(),
+                v,
+                "printed",
+                f.reference,
+                &unit_of(&c.unit),
+                f.at.clone(),
+            );
+            f.with_headline(h)
+        }
+        _ => f,
+    }
+}
+
 // ------------------------------------------------------------------------------ helpers
 
 /// Bisections here narrow their bracket to this relative width.
@@ -302,6 +341,33 @@ fn printed_precision(
 /// caught before the check runs (`check::missing_input`), which reports it as one that could
 /// not run and names the key to add.
 fn stated(
+    b: &Bench,
+    id: &str,
+    method: Method,
+    compared: &str,
+    computed: f64,
+    at: String,
+) -> Finding {
+    let f = stated_finding(b, id, method, compared, computed, at.clone());
+    match b.paper.claims.iter().find(|c| c.id == id) {
+        // The comparison in the claim's own unit: the number printed (the lower end of a printed
+        // range) against the computed value, unrounded.
+        Some(c) if f.headline.is_none() => {
+            let paper = c
+                .rule
+                .as_ref()
+                .and_then(|r| r.range.map(|[lo, _]| lo))
+                .or(c.claimed_value)
+                .unwrap_or(f.claimed);
+            let h = Headline::new(compared, paper, "printed", computed, &unit_of(&c.unit), at);
+            f.with_headline(h)
+        }
+        _ => f,
+    }
+}
+
+/// [`stated`] without its headline.
+fn stated_finding(
     b: &Bench,
     id: &str,
     method: Method,

@@ -143,7 +143,16 @@ pub(super) fn center_of_motion_constant(b: &Bench) -> Finding {
         false,
     );
     f.at = format!("{}; {}", f.at, notes.join("; "));
-    f
+    let h = Headline::new(
+        "a coordinate of the centre of motion A at the worst time, against its start (the paper: \
+         constant)",
+        f.claimed,
+        "implied",
+        f.reference,
+        "a",
+        f.at.clone(),
+    );
+    f.with_headline(h)
 }
 
 // ------------------------------------------------------------------------------ sec. 4

@@ -201,19 +201,31 @@ pub(super) fn air_viscosity(b: &Bench) -> Finding {
 /// $2\pi/\Omega$ the paper prints as 0.011 s would be $1/560 = 0.0018$ s. The printed 0.011 s
 /// is $2\pi/560$, so the paper's $\Omega$ values are in rad/s and the label "Hz" is wrong. FAILS.
 pub(super) fn omega_units_hz_vs_rad_per_s(b: &Bench) -> Finding {
-    let period_if_hz = 1.0 / 560.0;
+    // The two printed numbers, as claims.yaml states them for the claims that print them.
+    let omega = printed(b, "one-period-remaining-omega");
+    let period = printed(b, "one-period-remaining-time");
+    let period_if_hz = 1.0 / omega;
+    let at = format!(
+        "as rad/s: 2 pi / {omega} = {:.5} s, matching the paper",
+        2.0 * PI / omega
+    );
     printed_precision(
         b,
         Method::Derivation,
-        "period implied by '560 Hz' against the printed 0.011 s",
+        &format!("period implied by '{omega} Hz' against the printed {period} s"),
         period_if_hz,
-        0.011,
+        period,
         2,
-        format!(
-            "as rad/s: 2 pi / 560 = {:.5} s, matching the paper",
-            2.0 * PI / 560.0
-        ),
+        at.clone(),
     )
+    .with_headline(Headline::new(
+        format!("period 1/Omega if the printed {omega} were in Hz"),
+        period,
+        "printed",
+        period_if_hz,
+        "s",
+        at,
+    ))
 }
 
 /// `one-period-remaining-omega`: $\Omega$ with $t_0 - t = 2\pi/\Omega$ on eq 79 ($\beta = 2$,
