@@ -48,10 +48,49 @@ pub const DERIVATIONS: &[Derivation] = &[
     },
 ];
 
-/// Eq 83 from eq 82 AS PRINTED and the small-angle precession $\Omega^2 = g/ak\alpha$: the check
-/// that lives with the other sec. 11 forms ([`super::friction::eq83`]).
+/// Eq 83 from eq 82 AS PRINTED (the physics is [`super::air_film::eq83`]):
+/// $\Omega = \sqrt{g/ak}\,((m/2\pi\eta a)/(t_0 - t))^{1/6}$ from eq 82's tilt as printed,
+/// $\alpha = ((2\pi\eta a/m)(t_0 - t))^{1/3}$, and the small-angle precession
+/// $\Omega^2 = g/ak\alpha$ that the paper uses, evaluated at times before $t_0$ from 10 s to
+/// 1 ms (air, $\eta = 1.8\times10^{-5}$ Pa s; k = 1/4, 1/2).
 pub fn eq83_from_eq82(b: &Bench) -> Finding {
-    super::friction::eq83(b)
+    let eta = 1.8e-5;
+    let mut worst = Worst::default();
+    for &k in &[0.25, 0.5] {
+        let d = disk(k);
+        for i in 0..20 {
+            let tau = 10f64.powf(1.0 - 4.0 * f64::from(i) / 19.0);
+            let bind = law_bindings(
+                &d,
+                &PowerLaw {
+                    epsilon: 0.0,
+                    beta: 4.0,
+                },
+            )
+            .scalar("eta", eta)
+            .scalar("t_0", 7.27)
+            .scalar("t", 7.27 - tau);
+            // Eq 82 as printed gives alpha; the small-angle precession gives Omega.
+            let eq82 = b.paper.equation(82);
+            let alpha = last_side(eq82, &bind);
+            let reference = (d.g / (d.a * k * alpha)).sqrt();
+            printed_relations(
+                b,
+                83,
+                &bind.scalar("Omega", reference),
+                reference,
+                &mut worst,
+                &|| format!("k = {k}, t0 - t = {tau:.3e} s"),
+            );
+        }
+    }
+    Finding::from_worst(
+        Method::Derivation,
+        "Omega of eq 83 against eq 82's alpha put into Omega^2 = g/(a k alpha)",
+        worst,
+        Tolerance::roundoff(),
+        false,
+    )
 }
 
 /// Eq 73 from eq 72 AS PRINTED under the condition the paper attaches to its last form,
