@@ -1,4 +1,4 @@
-//! Fuzzes the reader of the paper's LaTeX (the expression grammar of `src/paper/parse.rs`) on
+//! Fuzzes the reader of the paper's LaTeX (the expression grammar of `src/paper/parse/`) on
 //! arbitrary text: relations or an error whose column lies in the text, never a panic or a
 //! hang. Corpus: `fuzz/corpus/latex` (the paper's 85 equations, one per file).
 #![no_main]

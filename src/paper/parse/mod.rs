@@ -1,0 +1,358 @@
+//! A reader for the LaTeX the paper prints: the subset its 85 equations use, into [`Chain`]s.
+//!
+//! Written by hand rather than taken from a crate: the LaTeX-to-math crates surveyed (`mathlex`,
+//! `latex2mathml`, `pulldown-latex`) either render (to MathML) without an evaluable tree, or parse
+//! a calculator's grammar that does not know the physicist's conventions this paper relies on:
+//!
+//! - **Juxtaposition binds tighter than `/`** on both sides: `5 g / \epsilon (\beta + 2) a k` is
+//!   $5g / (\epsilon(\beta+2)ak)$ (eq 78) and `1 / 2 (\beta + 1)` is $1/(2(\beta+1))$ (eq 80),
+//!   as the derivations of eqs 78 and 80 require.
+//! - **`\times` and `\cdot` bind looser than juxtaposition**: `a \hat{\mathbf 3} \times m g
+//!   \hat{\mathbf z}` is $(a\hat{\mathbf 3})\times(mg\hat{\mathbf z})$ (eq 33).
+//! - **A function's argument** is a parenthesised group, or else the run of plain scalar symbols
+//!   that follows it: `\cos\varpi t` is $\cos(\varpi t)$ (eq 41) while `\sin\alpha \hat{\mathbf 3}`
+//!   and `\sin\alpha_0 \cos\alpha_0` stop at the vector and at the next function. Write
+//!   `\cos(\alpha) \Omega` if a symbol that follows is not part of the argument.
+//! - `\cos^2\alpha` is $(\cos\alpha)^2$; `\omega^2_{10}` is $(\omega_{10})^2$.
+//! - `\frac{d X}{dt}` and `\frac{d^2 X}{dt^2}` are the time derivatives of the symbol X, symbols in
+//!   their own right that a check binds to measured rates.
+//! - A printed equation may hold several relations separated by a comma (eq 18).
+
+use super::expr::{Chain, Expr, Func, Op, Rel, Symbol};
+
+/// Where and why the reader stopped.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ParseError {
+    /// 1-based column (in characters) of the offending token in the LaTeX.
+    pub column: usize,
+    /// What was expected, in words.
+    pub message: String,
+}
+
+/// One symbol occurrence: the symbol and its column, for messages about unknown symbols.
+pub type Occurrence = (Symbol, usize);
+
+mod lex;
+mod symbols;
+#[cfg(test)]
+mod tests;
+
+use lex::{lex, Tok};
+
+/// Parses the LaTeX of one printed equation into its chains, and lists every symbol occurrence.
+pub fn parse(latex: &str) -> Result<(Vec<Chain>, Vec<Occurrence>), ParseError> {
+    let toks = lex(latex)?;
+    let mut p = Parser {
+        toks,
+        pos: 0,
+        end: latex.chars().count() + 1,
+        seen: Vec::new(),
+    };
+    let mut chains = vec![p.chain()?];
+    while p.eat(&Tok::Comma) {
+        chains.push(p.chain()?);
+    }
+    if p.pos < p.toks.len() {
+        return Err(p.error("an operator or a relation"));
+    }
+    Ok((chains, p.seen))
+}
+
+struct Parser {
+    toks: Vec<(Tok, usize)>,
+    pos: usize,
+    end: usize,
+    seen: Vec<Occurrence>,
+}
+
+type R<T> = Result<T, ParseError>;
+
+impl Parser {
+    fn peek(&self) -> Option<&Tok> {
+        self.toks.get(self.pos).map(|(t, _)| t)
+    }
+
+    fn column(&self) -> usize {
+        self.toks.get(self.pos).map_or(self.end, |(_, c)| *c)
+    }
+
+    fn error(&self, expected: &str) -> ParseError {
+        let found = match self.peek() {
+            None => "the end".to_string(),
+            Some(Tok::Cmd(c)) => format!("\\{c}"),
+            Some(Tok::Num(_, t)) => t.clone(),
+            Some(Tok::Letter(l)) => l.to_string(),
+            Some(t) => format!("{t:?}").to_lowercase(),
+        };
+        ParseError {
+            column: self.column(),
+            message: format!("expected {expected}, found {found}"),
+        }
+    }
+
+    fn eat(&mut self, t: &Tok) -> bool {
+        if self.peek() == Some(t) {
+            self.pos += 1;
+            true
+        } else {
+            false
+        }
+    }
+
+    fn eat_cmd(&mut self, name: &str) -> bool {
+        if matches!(self.peek(), Some(Tok::Cmd(c)) if c == name) {
+            self.pos += 1;
+            true
+        } else {
+            false
+        }
+    }
+
+    fn expect(&mut self, t: &Tok, what: &str) -> R<()> {
+        if self.eat(t) {
+            Ok(())
+        } else {
+            Err(self.error(what))
+        }
+    }
+
+    fn chain(&mut self) -> R<Chain> {
+        let mut sides = vec![self.expr()?];
+        let mut rels = Vec::new();
+        while let Some(rel) = self.relation() {
+            rels.push(rel);
+            sides.push(self.expr()?);
+        }
+        Ok(Chain { sides, rels })
+    }
+
+    fn relation(&mut self) -> Option<Rel> {
+        let rel = match self.peek()? {
+            Tok::Equals => Rel::Eq,
+            Tok::Less => Rel::Lt,
+            Tok::Greater => Rel::Gt,
+            Tok::Cmd(c) => match c.as_str() {
+                "approx" => Rel::Approx,
+                "equiv" => Rel::Equiv,
+                "leq" | "le" => Rel::Le,
+                "geq" | "ge" => Rel::Ge,
+                "propto" => Rel::Propto,
+                _ => return None,
+            },
+            _ => return None,
+        };
+        self.pos += 1;
+        Some(rel)
+    }
+
+    /// Sums and differences, with an optional leading sign.
+    fn expr(&mut self) -> R<Expr> {
+        let mut e = if self.eat(&Tok::Minus) {
+            Expr::Neg(Box::new(self.term()?))
+        } else {
+            self.eat(&Tok::Plus);
+            self.term()?
+        };
+        loop {
+            if self.eat(&Tok::Plus) {
+                e = Expr::bin(Op::Add, e, self.term()?);
+            } else if self.eat(&Tok::Minus) {
+                e = Expr::bin(Op::Sub, e, self.term()?);
+            } else {
+                return Ok(e);
+            }
+        }
+    }
+
+    /// Quotients written with `/`: looser than juxtaposition on both sides.
+    fn term(&mut self) -> R<Expr> {
+        let mut e = self.cross()?;
+        while self.eat(&Tok::Slash) {
+            e = Expr::bin(Op::Div, e, self.cross()?);
+        }
+        Ok(e)
+    }
+
+    /// `\times` and `\cdot` between runs of juxtaposed factors, left to right.
+    fn cross(&mut self) -> R<Expr> {
+        let mut e = self.product()?;
+        loop {
+            if self.eat_cmd("times") {
+                e = Expr::bin(Op::Cross, e, self.product()?);
+            } else if self.eat_cmd("cdot") {
+                e = Expr::bin(Op::Dot, e, self.product()?);
+            } else {
+                return Ok(e);
+            }
+        }
+    }
+
+    fn product(&mut self) -> R<Expr> {
+        let mut e = self.factor()?;
+        while self.starts_factor() {
+            e = Expr::bin(Op::Mul, e, self.factor()?);
+        }
+        Ok(e)
+    }
+
+    fn starts_factor(&self) -> bool {
+        match self.peek() {
+            Some(Tok::Num(..) | Tok::Letter(_) | Tok::LParen | Tok::LBrace) => true,
+            Some(Tok::Cmd(c)) => !matches!(
+                c.as_str(),
+                "times"
+                    | "cdot"
+                    | "right"
+                    | "approx"
+                    | "equiv"
+                    | "leq"
+                    | "le"
+                    | "geq"
+                    | "ge"
+                    | "propto"
+            ),
+            _ => false,
+        }
+    }
+
+    /// An atom and the powers written after it.
+    fn factor(&mut self) -> R<Expr> {
+        let mut e = self.atom()?;
+        while self.eat(&Tok::Caret) {
+            let p = self.script()?;
+            e = Expr::bin(Op::Pow, e, p);
+        }
+        Ok(e)
+    }
+
+    /// A superscript: a braced expression or a single token.
+    fn script(&mut self) -> R<Expr> {
+        if self.eat(&Tok::LBrace) {
+            let e = self.expr()?;
+            self.expect(&Tok::RBrace, "} closing the superscript")?;
+            return Ok(e);
+        }
+        match self.peek().cloned() {
+            Some(Tok::Num(x, t)) => {
+                self.pos += 1;
+                // `^23` would be 2 then 3 in TeX; the paper never writes it.
+                if t.len() > 1 {
+                    return Err(ParseError {
+                        column: self.column(),
+                        message: format!("write ^{{{t}}} with braces"),
+                    });
+                }
+                Ok(Expr::Num(x))
+            }
+            _ => self.atom(),
+        }
+    }
+
+    fn atom(&mut self) -> R<Expr> {
+        let col = self.column();
+        match self.peek().cloned() {
+            Some(Tok::Num(x, _)) => {
+                self.pos += 1;
+                Ok(Expr::Num(x))
+            }
+            Some(Tok::LParen) => {
+                self.pos += 1;
+                let e = self.expr()?;
+                self.expect(&Tok::RParen, ") closing the (")?;
+                Ok(e)
+            }
+            Some(Tok::LBrace) => {
+                self.pos += 1;
+                let e = self.expr()?;
+                self.expect(&Tok::RBrace, "} closing the {")?;
+                Ok(e)
+            }
+            Some(Tok::Letter(_)) => self.symbol_with_scripts(col),
+            Some(Tok::Cmd(c)) => match c.as_str() {
+                "pi" => {
+                    self.pos += 1;
+                    Ok(Expr::Pi)
+                }
+                "frac" => {
+                    self.pos += 1;
+                    self.fraction(col)
+                }
+                "sqrt" => {
+                    self.pos += 1;
+                    let e = self.braced("the argument of \\sqrt")?;
+                    Ok(Expr::Call(Func::Sqrt, Box::new(e)))
+                }
+                "sin" | "cos" | "tan" | "cot" => {
+                    self.pos += 1;
+                    self.function(&c)
+                }
+                "left" => {
+                    self.pos += 1;
+                    self.delimited()
+                }
+                _ => self.symbol_with_scripts(col),
+            },
+            _ => Err(self.error("a number, a symbol or a (")),
+        }
+    }
+
+    fn braced(&mut self, what: &str) -> R<Expr> {
+        self.expect(&Tok::LBrace, &format!("{{ opening {what}"))?;
+        let e = self.expr()?;
+        self.expect(&Tok::RBrace, &format!("}} closing {what}"))?;
+        Ok(e)
+    }
+
+    /// `\left( ... \right)`, `\left[ ... \right]`, `\left| ... \right|`.
+    fn delimited(&mut self) -> R<Expr> {
+        let (close, abs) = match self.peek() {
+            Some(Tok::LParen) => (Tok::RParen, false),
+            Some(Tok::LBrack) => (Tok::RBrack, false),
+            Some(Tok::Pipe) => (Tok::Pipe, true),
+            _ => return Err(self.error("(, [ or | after \\left")),
+        };
+        self.pos += 1;
+        let e = self.expr()?;
+        if !self.eat_cmd("right") {
+            return Err(self.error("\\right"));
+        }
+        self.expect(&close, "the delimiter matching \\left")?;
+        Ok(if abs {
+            Expr::Call(Func::Abs, Box::new(e))
+        } else {
+            e
+        })
+    }
+
+    /// `\sin`, `\cos`, `\tan`, `\cot`, with an optional power and the argument rule of the
+    /// module's documentation.
+    fn function(&mut self, name: &str) -> R<Expr> {
+        let f = match name {
+            "sin" => Func::Sin,
+            "cos" => Func::Cos,
+            "tan" => Func::Tan,
+            _ => Func::Cot,
+        };
+        let power = if self.eat(&Tok::Caret) {
+            Some(self.script()?)
+        } else {
+            None
+        };
+        let arg = match self.peek() {
+            Some(Tok::LParen) => self.atom()?,
+            Some(Tok::Cmd(c)) if c == "left" => self.atom()?,
+            _ => {
+                let mut arg = self.plain_symbol()?;
+                while self.starts_plain_symbol() {
+                    arg = Expr::bin(Op::Mul, arg, self.plain_symbol()?);
+                }
+                arg
+            }
+        };
+        let call = Expr::Call(f, Box::new(arg));
+        Ok(match power {
+            Some(p) => Expr::bin(Op::Pow, call, p),
+            None => call,
+        })
+    }
+}
