@@ -1,0 +1,270 @@
+//! Drawing figure 1's shapes on a plotters backend: projection, lines, arrows, labels, dashes.
+
+use super::*;
+
+impl Geometry {
+    /// Draws the figure on any plotters backend; `scale` multiplies fonts and line widths.
+    pub fn draw<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, plotters::coord::Shift>,
+        scale: f64,
+    ) -> Result<(), FigureError> {
+        register_font();
+        let err = |e: DrawingAreaErrorKind<DB::ErrorType>| FigureError::Draw(e.to_string());
+        root.fill(&WHITE).map_err(err)?;
+        let (w, h) = root.dim_in_pixel();
+        let (w, h) = (w as f64, h as f64);
+        let font = |size: f64| ("sans-serif", size * scale).into_font();
+        let title_band = 34.0 * scale;
+        let foot_band = 30.0 * scale;
+        // Fit the projected scene into the area, same scale on both axes.
+        let shapes = self.shapes();
+        let mut pts = Vec::new();
+        for s in &shapes {
+            match s {
+                Shape::Fill { points, .. } | Shape::Path { points, .. } => {
+                    pts.extend(points.iter().map(|p| self.view.project(*p)))
+                }
+                Shape::Arrow { from, to, .. } => {
+                    pts.push(self.view.project(*from));
+                    pts.push(self.view.project(*to));
+                }
+                Shape::Dot { at, .. } | Shape::Label { at, .. } => pts.push(self.view.project(*at)),
+            }
+        }
+        let (mut x0, mut x1, mut y0, mut y1) = (
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+        );
+        for (x, y) in &pts {
+            x0 = x0.min(*x);
+            x1 = x1.max(*x);
+            y0 = y0.min(*y);
+            y1 = y1.max(*y);
+        }
+        if !(x1 > x0 && y1 > y0) {
+            return Err("the geometry has no extent".into());
+        }
+        let margin = 24.0 * scale;
+        let avail_w = w - 2.0 * margin;
+        let avail_h = h - title_band - foot_band - 2.0 * margin;
+        let k = (avail_w / (x1 - x0)).min(avail_h / (y1 - y0));
+        let cx = 0.5 * w - k * 0.5 * (x0 + x1);
+        let cy = title_band + margin + 0.5 * avail_h + k * 0.5 * (y0 + y1);
+        let px = |p: V3| -> (i32, i32) {
+            let (x, y) = self.view.project(p);
+            ((cx + k * x).round() as i32, (cy - k * y).round() as i32)
+        };
+        let lw = |v: f64| ((v * scale).round() as u32).max(1);
+        let col = |c: [u8; 3]| RGBColor(c[0], c[1], c[2]);
+        let centred = |size: f64, c: [u8; 3]| {
+            font(size)
+                .color(&col(c))
+                .pos(Pos::new(HPos::Center, VPos::Center))
+        };
+        for s in &shapes {
+            match s {
+                Shape::Fill {
+                    points,
+                    color,
+                    opacity,
+                } => {
+                    let poly: Vec<(i32, i32)> = points.iter().map(|p| px(*p)).collect();
+                    root.draw(&Polygon::new(poly, col(*color).mix(*opacity).filled()))
+                        .map_err(err)?;
+                }
+                Shape::Path {
+                    points,
+                    line,
+                    color,
+                } => {
+                    let poly: Vec<(i32, i32)> = points.iter().map(|p| px(*p)).collect();
+                    let c = col(*color);
+                    match line {
+                        Line::Thin => root
+                            .draw(&PathElement::new(poly, c.stroke_width(lw(1.3))))
+                            .map_err(err)?,
+                        Line::Thick => root
+                            .draw(&PathElement::new(poly, c.stroke_width(lw(2.4))))
+                            .map_err(err)?,
+                        Line::Dashed | Line::Dotted => {
+                            let (on, off) = if *line == Line::Dashed {
+                                (7.0 * scale, 5.0 * scale)
+                            } else {
+                                (2.0 * scale, 4.0 * scale)
+                            };
+                            for seg in dash(&poly, on, off) {
+                                root.draw(&PathElement::new(seg, c.stroke_width(lw(1.3))))
+                                    .map_err(err)?;
+                            }
+                        }
+                    }
+                }
+                Shape::Arrow {
+                    from,
+                    to,
+                    label,
+                    color,
+                    nudge,
+                } => {
+                    let (p, q) = (px(*from), px(*to));
+                    let c = col(*color);
+                    let (dx, dy) = ((q.0 - p.0) as f64, (q.1 - p.1) as f64);
+                    let len = (dx * dx + dy * dy).sqrt().max(1e-9);
+                    let (ux, uy) = (dx / len, dy / len);
+                    let head = 11.0 * scale;
+                    let base = (q.0 as f64 - head * ux, q.1 as f64 - head * uy);
+                    let side = 4.5 * scale;
+                    root.draw(&PathElement::new(
+                        vec![p, (base.0.round() as i32, base.1.round() as i32)],
+                        c.stroke_width(lw(2.0)),
+                    ))
+                    .map_err(err)?;
+                    root.draw(&Polygon::new(
+                        vec![
+                            q,
+                            (
+                                (base.0 - side * uy).round() as i32,
+                                (base.1 + side * ux).round() as i32,
+                            ),
+                            (
+                                (base.0 + side * uy).round() as i32,
+                                (base.1 - side * ux).round() as i32,
+                            ),
+                        ],
+                        c.filled(),
+                    ))
+                    .map_err(err)?;
+                    let off = 11.0 * scale;
+                    let at = (
+                        (q.0 as f64 + off * ux + nudge.0 * scale).round() as i32,
+                        (q.1 as f64 + off * uy + nudge.1 * scale).round() as i32,
+                    );
+                    root.draw(&Text::new(label.clone(), at, centred(17.0, *color)))
+                        .map_err(err)?;
+                    // The hat of a unit vector, drawn (a combining circumflex does not render).
+                    let (hw, hy, hh) = (
+                        (4.0 * scale).round() as i32,
+                        at.1 - (12.0 * scale).round() as i32,
+                        (3.5 * scale).round() as i32,
+                    );
+                    root.draw(&PathElement::new(
+                        vec![(at.0 - hw, hy + hh), (at.0, hy), (at.0 + hw, hy + hh)],
+                        c.stroke_width(lw(1.4)),
+                    ))
+                    .map_err(err)?;
+                }
+                Shape::Dot { at, label, offset } => {
+                    let p = px(*at);
+                    root.draw(&Circle::new(p, lw(3.5), BLACK.filled()))
+                        .map_err(err)?;
+                    let hpos = if offset.0 < 0.0 {
+                        HPos::Right
+                    } else {
+                        HPos::Left
+                    };
+                    let q = (
+                        p.0 + (offset.0 * scale).round() as i32,
+                        p.1 + (offset.1 * scale).round() as i32,
+                    );
+                    if offset.0.hypot(offset.1) > 30.0 {
+                        // A leader line from the dot to the label.
+                        let gap = (4.0 * scale).round() as i32;
+                        let end = (q.0 - gap * offset.0.signum() as i32, q.1);
+                        root.draw(&PathElement::new(
+                            vec![p, end],
+                            RGBColor(90, 90, 90).stroke_width(lw(0.8)),
+                        ))
+                        .map_err(err)?;
+                    }
+                    root.draw(&Text::new(
+                        label.clone(),
+                        q,
+                        font(12.5)
+                            .color(&RGBColor(60, 60, 60))
+                            .pos(Pos::new(hpos, VPos::Center)),
+                    ))
+                    .map_err(err)?;
+                }
+                Shape::Label { at, text, color } => {
+                    root.draw(&Text::new(text.clone(), px(*at), centred(16.0, *color)))
+                        .map_err(err)?;
+                }
+            }
+        }
+        root.draw(&Text::new(
+            self.title.clone(),
+            ((0.5 * w) as i32, (16.0 * scale) as i32),
+            font(17.0)
+                .color(&BLACK)
+                .pos(Pos::new(HPos::Center, VPos::Center)),
+        ))
+        .map_err(err)?;
+        let foot = format!(
+            "a = {:.1} mm, α = {:.2} rad, b = {:.2}a, r = b + a cos α = {:.2}a; \
+             Ω0 = {:.2} rad/s, ω10 = {:.2} rad/s (eqs 28-29)",
+            self.a * 1e3,
+            self.alpha,
+            self.b / self.a,
+            self.r / self.a,
+            self.precession,
+            self.spin
+        );
+        root.draw(&Text::new(
+            foot,
+            ((0.5 * w) as i32, (h - 16.0 * scale) as i32),
+            font(12.0)
+                .color(&RGBColor(70, 70, 70))
+                .pos(Pos::new(HPos::Center, VPos::Center)),
+        ))
+        .map_err(err)?;
+        root.present().map_err(err)
+    }
+}
+
+/// Splits a screen polyline into dashes of length `on` separated by gaps `off` (px).
+pub(super) fn dash(poly: &[(i32, i32)], on: f64, off: f64) -> Vec<Vec<(i32, i32)>> {
+    let mut out = Vec::new();
+    let mut cur: Vec<(i32, i32)> = Vec::new();
+    let (mut drawing, mut left) = (true, on);
+    for w in poly.windows(2) {
+        let (p, q) = (
+            (w[0].0 as f64, w[0].1 as f64),
+            (w[1].0 as f64, w[1].1 as f64),
+        );
+        let len = ((q.0 - p.0).powi(2) + (q.1 - p.1).powi(2)).sqrt();
+        let mut s = 0.0;
+        let at = |s: f64| {
+            let f = if len > 0.0 { s / len } else { 0.0 };
+            (
+                (p.0 + f * (q.0 - p.0)).round() as i32,
+                (p.1 + f * (q.1 - p.1)).round() as i32,
+            )
+        };
+        if drawing && cur.is_empty() {
+            cur.push(at(0.0));
+        }
+        while len - s > left {
+            s += left;
+            if drawing {
+                cur.push(at(s));
+                out.push(std::mem::take(&mut cur));
+                left = off;
+            } else {
+                cur.push(at(s));
+                left = on;
+            }
+            drawing = !drawing;
+        }
+        left -= len - s;
+        if drawing {
+            cur.push(at(len));
+        }
+    }
+    if cur.len() > 1 {
+        out.push(cur);
+    }
+    out
+}
