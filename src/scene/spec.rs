@@ -1,0 +1,137 @@
+//! The scene file as written: the YAML keys, their defaults, and nothing checked yet.
+
+use super::*;
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct SceneSpec {
+    pub(super) name: String,
+    #[serde(default)]
+    pub(super) description: String,
+    pub(super) disk: DiskSpec,
+    pub(super) model: ModelKind,
+    #[serde(default)]
+    pub(super) dissipation: Option<PowerLaw>,
+    #[serde(default)]
+    pub(super) friction: Option<friction::FrictionSpec>,
+    pub(super) start: StartSpec,
+    pub(super) stop: StopSpec,
+    #[serde(default)]
+    pub(super) record: Vec<Quantity>,
+    #[serde(default)]
+    pub(super) sample: Option<f64>,
+    #[serde(default)]
+    pub(super) solver: SolverSpec,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct DiskSpec {
+    pub(super) radius: f64,
+    pub(super) k: f64,
+    pub(super) mass: f64,
+    #[serde(default = "earth_gravity")]
+    pub(super) g: f64,
+}
+
+pub(super) fn earth_gravity() -> f64 {
+    9.81
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct StartSpec {
+    pub(super) steady: Option<SteadySpec>,
+    pub(super) vertical_spin: Option<VerticalSpinSpec>,
+    pub(super) rolling_straight: Option<RollingStraightSpec>,
+    pub(super) explicit: Option<MotionSpec>,
+    pub(super) perturb: Option<MotionSpec>,
+    pub(super) slip: Option<friction::SlipSpec>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct SteadySpec {
+    pub(super) alpha0: f64,
+    pub(super) b: f64,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct VerticalSpinSpec {
+    pub(super) precession: f64,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RollingStraightSpec {
+    pub(super) spin: f64,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct MotionSpec {
+    #[serde(default)]
+    pub(super) alpha: f64,
+    #[serde(default)]
+    pub(super) alpha_dot: f64,
+    #[serde(default)]
+    pub(super) precession: f64,
+    #[serde(default)]
+    pub(super) spin: f64,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct StopSpec {
+    pub(super) time: Option<f64>,
+    pub(super) alpha_below: Option<f64>,
+    #[serde(default)]
+    pub(super) lift_off: bool,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct SolverSpec {
+    #[serde(default = "default_method")]
+    pub(super) method: Method,
+    #[serde(default = "default_rtol")]
+    pub(super) rtol: f64,
+    #[serde(default = "default_atol")]
+    pub(super) atol: f64,
+    #[serde(default = "default_step")]
+    pub(super) step: f64,
+    #[serde(default = "default_max_steps")]
+    pub(super) max_steps: u32,
+    #[serde(default)]
+    pub(super) project: Option<Projection>,
+}
+
+pub(super) fn default_method() -> Method {
+    Settings::default().method
+}
+pub(super) fn default_rtol() -> f64 {
+    Settings::default().rtol
+}
+pub(super) fn default_atol() -> f64 {
+    Settings::default().atol
+}
+pub(super) fn default_step() -> f64 {
+    Settings::default().step
+}
+pub(super) fn default_max_steps() -> u32 {
+    Settings::default().max_steps
+}
+
+impl Default for SolverSpec {
+    fn default() -> Self {
+        Self {
+            method: default_method(),
+            rtol: default_rtol(),
+            atol: default_atol(),
+            step: default_step(),
+            max_steps: default_max_steps(),
+            project: None,
+        }
+    }
+}
