@@ -13,7 +13,15 @@ use std::hint::black_box;
 
 fn analysis(c: &mut Criterion) {
     let disk = Disk::uniform(0.0375);
-    let trace = law_trace(&Law::paper(), &disk, &LightModel::default()).expect("a valid law");
+    let fit = rolling_disk::paper::Paper::built_in()
+        .expect("the built-in paper")
+        .fit;
+    let trace = law_trace(
+        &Law::from_fit(fit.beta, fit.c_inv_root),
+        &disk,
+        &LightModel::default(),
+    )
+    .expect("a valid law");
     let settings = AnalysisSettings::default();
     c.bench_function("experiment/analyze 50k samples", |b| {
         b.iter(|| analyze(black_box(&trace), &settings).expect("analysable"))

@@ -245,14 +245,14 @@ pub fn epsilon_from_fit(
     solve_printed(eq, first, "dissipation", &bind, 1e-12, 1e6)
 }
 
-/// [`epsilon_from_fit`] on the printed and the corrected paper, for the paper's fit
-/// ($\beta = 2$, $C^{-1/4} = 0.0055$ s) and disk `(a, k, g)`.
+/// [`epsilon_from_fit`] on the printed and the corrected paper, for the printed paper's fit
+/// (sec. 11, [`crate::paper::Fit`]: $\beta = 2$, $C^{-1/4} = 0.0055$ s) and disk `(a, k, g)`.
 pub fn downstream(
     printed: &Paper,
     corrected: &Paper,
     (a, k, g): (f64, f64, f64),
 ) -> Option<Downstream> {
-    let (beta, c_inv_root) = (2.0, 0.0055);
+    let (beta, c_inv_root) = (printed.fit.beta, printed.fit.c_inv_root);
     Some(Downstream {
         beta,
         c_inv_root,

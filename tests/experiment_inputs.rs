@@ -1,8 +1,9 @@
 //! The experiment of section 11 on files: scope CSVs and WAV recordings read (and refused with
 //! file and line), the command line end to end, the analysis written to a directory, the figures.
 
-use rolling_disk::experiment::numbers::paper_numbers;
+use rolling_disk::experiment::numbers::numbers;
 use rolling_disk::experiment::*;
+use rolling_disk::paper::Paper;
 use rolling_disk::Disk;
 use std::f64::consts::PI;
 
@@ -12,7 +13,7 @@ fn a_trace_survives_its_csv() {
     let mut light = LightModel::default();
     light.scope.samples = 2000;
     light.scope.end_at = 0.3;
-    let trace = law_trace(&Law::paper(), &disk, &light).unwrap();
+    let trace = law_trace(&paper_law(), &disk, &light).unwrap();
     let back = parse_trace(&trace.to_csv(), "x.csv").unwrap();
     assert_eq!(back.t, trace.t);
     assert_eq!(back.v, trace.v);
@@ -89,7 +90,8 @@ fn bad_csvs_are_refused_with_file_and_line() {
 
 #[test]
 fn the_papers_numbers_are_recomputed() {
-    let n = paper_numbers();
+    let f = Paper::built_in().unwrap().fit;
+    let n = numbers(f.beta, f.c_inv_root, rolling_disk::Disk::uniform(1.0).k);
     assert!((n.omega_one_period - 560.0).abs() < 5.0, "{n}");
     assert!((n.time_one_period - 0.011).abs() < 0.0005, "{n}");
     assert!((n.omega_lift_off - 1030.0).abs() < 10.0, "{n}");
@@ -297,7 +299,7 @@ fn a_wav_of_a_spinning_disk_is_analysed_end_to_end() {
         noise: 0.1,
         ..mic
     };
-    let noise = law_sound(&Law::paper(), &silent, &Artifacts::none()).unwrap();
+    let noise = law_sound(&paper_law(), &silent, &Artifacts::none()).unwrap();
     let e = analyze_sound(
         &noise,
         &TrackSettings::default(),
@@ -377,7 +379,7 @@ fn the_cli_simulates_and_analyses_a_wav_and_refuses_noise() {
 fn figures_of_the_fit_the_residuals_the_sound_and_the_coverage() {
     use rolling_disk::figures::experiment as fig;
     let disk = Disk::uniform(0.0375);
-    let trace = law_trace(&Law::paper(), &disk, &LightModel::default()).unwrap();
+    let trace = law_trace(&paper_law(), &disk, &LightModel::default()).unwrap();
     let a = analyze(&trace, &AnalysisSettings::default()).unwrap();
     let band = fig::omega_band(&a);
     let res = fig::residuals(&a);
@@ -409,4 +411,10 @@ fn figures_of_the_fit_the_residuals_the_sound_and_the_coverage() {
             f.name
         );
     }
+}
+
+/// Eq 79's law with the fit the built-in paper prints (paper/claims.yaml).
+fn paper_law() -> Law {
+    let f = Paper::built_in().unwrap().fit;
+    Law::from_fit(f.beta, f.c_inv_root)
 }

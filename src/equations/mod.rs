@@ -182,6 +182,10 @@ pub const UNCHECKABLE_CLAIMS: &[(&str, &str)] = &[
         "a judgement on the authors' unpublished data",
     ),
     (
+        "fit-c-quarter",
+        "a fit to the authors' unpublished data; the constant the other sec. 11 numbers are computed from",
+    ),
+    (
         "nutation-disappears-below-0p1",
         "the equations give no threshold at 0.1 rad: the beat ratio there is about 0.1, not small",
     ),
@@ -335,67 +339,7 @@ pub(crate) fn last_side(eq: &crate::paper::Equation, bind: &crate::paper::Bindin
         .unwrap_or(f64::NAN)
 }
 
-/// The value of `quantity` that makes the printed relation `rel` of `eq` hold, the others bound
-/// by `bind`: the root of (left side - right side) in `[lo, hi]`, located by bisection to the
-/// last bit. `None` when the relation does not change sign there or cannot be evaluated. This is
-/// how a check reads a printed relation as a definition of one of its symbols (the $t_0$ of
-/// eqs 77-79, the $C$ of eq 79) without writing that symbol's formula in Rust.
-pub(crate) fn solve_printed(
-    eq: &crate::paper::Equation,
-    rel: &crate::paper::Relation<'_>,
-    quantity: &'static str,
-    bind: &crate::paper::Bindings<f64>,
-    lo: f64,
-    hi: f64,
-) -> Option<f64> {
-    use crate::paper::Value;
-    let bind_at = |x: f64| {
-        let mut b = bind.clone();
-        b.set(quantity, Value::Scalar(x));
-        b
-    };
-    solve_printed_with(eq, rel, &bind_at, lo, hi)
-}
-
-/// [`solve_printed`] where the bindings depend on the unknown `x` in other ways too (eq 27's
-/// $\omega_{10} = \rho\Omega_0$ with $\Omega_0$ the unknown).
-pub(crate) fn solve_printed_with(
-    eq: &crate::paper::Equation,
-    rel: &crate::paper::Relation<'_>,
-    bind_at: &dyn Fn(f64) -> crate::paper::Bindings<f64>,
-    lo: f64,
-    hi: f64,
-) -> Option<f64> {
-    let residual = |x: f64| -> Option<f64> {
-        let b = bind_at(x);
-        let l = eq.scalar(rel.lhs, &b).ok()?;
-        let r = eq.scalar(rel.rhs, &b).ok()?;
-        let d = l - r;
-        d.is_finite().then_some(d)
-    };
-    let (mut lo, mut hi) = (lo.min(hi), lo.max(hi));
-    let (mut f_lo, f_hi) = (residual(lo)?, residual(hi)?);
-    if f_lo == 0.0 {
-        return Some(lo);
-    }
-    if f_lo.signum() == f_hi.signum() {
-        return None;
-    }
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if mid <= lo || mid >= hi {
-            break;
-        }
-        let f_mid = residual(mid)?;
-        if f_mid.signum() == f_lo.signum() {
-            lo = mid;
-            f_lo = f_mid;
-        } else {
-            hi = mid;
-        }
-    }
-    Some(0.5 * (lo + hi))
-}
+pub(crate) use crate::paper::printed::{solve_printed, solve_printed_with};
 
 /// A printed inequality of eq `n` (its first) read as a threshold on `quantity`: the value where
 /// its two sides meet, solved for in `[lo, hi]` from the printed text (NaN if none), and whether

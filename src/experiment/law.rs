@@ -22,11 +22,12 @@ pub struct Law {
 }
 
 impl Law {
-    /// The paper's fit: $\beta = 2$, $C^{-1/4} = 0.0055$ s.
-    pub fn paper() -> Self {
+    /// The law of a fit $(\beta, C^{-1/(\beta+2)})$, as the paper states its own (sec. 11,
+    /// read from paper/claims.yaml by the paper module; this module never sees the paper).
+    pub fn from_fit(beta: f64, c_inv_root: f64) -> Self {
         Self {
-            beta: 2.0,
-            c: 0.0055f64.powi(-4),
+            beta,
+            c: c_inv_root.powf(-(beta + 2.0)),
         }
     }
 

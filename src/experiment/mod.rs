@@ -16,7 +16,7 @@
 //! - the **analysis** ([`analyze`]) of any such trace, synthetic or a real scope's CSV
 //!   ([`read_trace`]): peak times, $\Omega_i$, $d\Omega_i/dt$, and *fits* with uncertainties of
 //!   $\beta$, $t_0$ and $C$ (eq 84) and of $\beta$ alone (eq 85), where the paper drew lines;
-//! - the paper's own numbers recomputed from its constants ([`numbers::paper_numbers`]).
+//! - the paper's own numbers recomputed from its constants ([`numbers::numbers`] with the fit the paper prints).
 //!
 //! The paper's "Hz" are angular frequencies, rad/s ($\Omega_i = 2\pi/\Delta t$); so are ours.
 

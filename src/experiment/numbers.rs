@@ -103,11 +103,6 @@ pub fn numbers(beta: f64, c_inv_root: f64, k: f64) -> PaperNumbers {
     }
 }
 
-/// The paper's: $\beta = 2$, $C^{-1/4} = 0.0055$ s, $k = 1/4$.
-pub fn paper_numbers() -> PaperNumbers {
-    numbers(2.0, 0.0055, 0.25)
-}
-
 impl fmt::Display for PaperNumbers {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         writeln!(

@@ -3,21 +3,30 @@
 //! of the frictionless model (b = 0), with the curves of eqs 54, 55 and 71.
 
 use crate::figures::chart::{Legend, Plot, Series, Style};
-use crate::figures::stability::eq54;
+use crate::figures::stability::{eq54, onset};
 use crate::figures::FigureError;
 use crate::figures::{Drawing, Figure};
+use crate::paper::printed::printed_ratio;
+use crate::paper::{Bindings, Paper};
 use std::f64::consts::FRAC_PI_2;
 
-/// Eq 55: $\varpi/\Omega_0 = \sqrt{(3k\cos^2\alpha_0 + \sin^2\alpha_0)/(k+1)}$ (b = 0, rolling).
-pub fn eq55(k: f64, alpha0: f64) -> f64 {
-    let (s, c) = alpha0.sin_cos();
-    ((3.0 * k * c * c + s * s) / (k + 1.0)).sqrt()
+/// $\varpi/\Omega_0$ by the printed eq `n` (55 or 71) at tilt `alpha0`, read from the paper.
+fn ratio(paper: &Paper, n: u32, k: f64, alpha0: f64) -> Option<f64> {
+    printed_ratio(
+        paper,
+        n,
+        &Bindings::new().scalar("k", k).scalar("alpha_0", alpha0),
+    )
 }
 
-/// Eq 71: $\varpi/\Omega_0 = \sqrt{3k/(k + \cos^2\alpha_0)}\cos\alpha_0$ (no friction, b = 0).
-pub fn eq71(k: f64, alpha0: f64) -> f64 {
-    let c = alpha0.cos();
-    (3.0 * k / (k + c * c)).sqrt() * c
+/// Eq 54 at b = a/2 solved for $\varpi/\Omega_0$, where it has a real root.
+fn eq54_half(paper: &Paper, k: f64, alpha0: f64) -> Option<f64> {
+    let bind = Bindings::new()
+        .scalar("k", k)
+        .scalar("alpha_0", alpha0)
+        .scalar("a", 1.0)
+        .scalar("b", 0.5);
+    printed_ratio(paper, 54, &bind)
 }
 
 /// The measured frequencies (computed by `report::studies::frequency`): $(\alpha_0$ in
@@ -34,12 +43,6 @@ pub struct Measured {
     pub slid0: Vec<(f64, f64)>,
 }
 
-/// Eq 54 at b = a/2 as a ratio: $\varpi/\Omega_0 = \sqrt{\varpi^2/(k+1)}$ where it is real.
-pub fn eq54_half(k: f64, alpha0: f64) -> Option<f64> {
-    let w2 = eq54(k, alpha0, 0.5);
-    (w2 > 0.0).then(|| (w2 / (k + 1.0)).sqrt())
-}
-
 /// The largest relative difference of measured points from their curve, and its tilt (deg).
 fn worst(points: &[(f64, f64)], curve: &dyn Fn(f64) -> Option<f64>) -> (f64, f64) {
     points
@@ -50,26 +53,27 @@ fn worst(points: &[(f64, f64)], curve: &dyn Fn(f64) -> Option<f64>) -> (f64, f64
         })
 }
 
-/// The figure, from the measured frequencies (no integration here).
-pub fn figure(m: &Measured) -> Result<Figure, FigureError> {
+/// The figure, from the measured frequencies and the paper's eqs 54-56 and 71 (no integration
+/// here).
+pub fn figure(m: &Measured, paper: &Paper) -> Result<Figure, FigureError> {
     let k = m.k;
     let worst = [
-        worst(&m.rolled0, &|a| Some(eq55(k, a))),
-        worst(&m.rolled_half, &|a| eq54_half(k, a)),
-        worst(&m.slid0, &|a| Some(eq71(k, a))),
+        worst(&m.rolled0, &|a| ratio(paper, 55, k, a)),
+        worst(&m.rolled_half, &|a| eq54_half(paper, k, a)),
+        worst(&m.slid0, &|a| ratio(paper, 71, k, a)),
     ];
     let (rolled0, rolled_half, slid0) = (m.rolled0.clone(), m.rolled_half.clone(), m.slid0.clone());
     // Where b = a/2 turns unstable: eq 54 at b = a/2 changes sign (bisection).
-    let (mut lo, mut hi) = (crate::figures::stability::onset(k).0, FRAC_PI_2 - 1e-9);
+    let (mut lo, mut hi) = (onset(paper, k)?.0, FRAC_PI_2 - 1e-9);
     for _ in 0..100 {
         let mid = 0.5 * (lo + hi);
-        if eq54(k, mid, 0.5) < 0.0 {
+        if eq54(paper, k, mid, 0.5)? < 0.0 {
             hi = mid;
         } else {
             lo = mid;
         }
     }
-    let unstable_from = (eq54(k, hi, 0.5) < 0.0).then(|| hi.to_degrees());
+    let unstable_from = (eq54(paper, k, hi, 0.5)? < 0.0).then(|| hi.to_degrees());
     let curve = |f: &dyn Fn(f64) -> Option<f64>| -> Vec<(f64, f64)> {
         (1..=179)
             .filter_map(|i| {
@@ -78,11 +82,13 @@ pub fn figure(m: &Measured) -> Result<Figure, FigureError> {
             })
             .collect()
     };
-    let c55 = curve(&|a| Some(eq55(k, a)));
-    let c54 = curve(&|a| eq54_half(k, a));
-    let c71 = curve(&|a| Some(eq71(k, a)));
+    let c55 = curve(&|a| ratio(paper, 55, k, a));
+    let c54 = curve(&|a| eq54_half(paper, k, a));
+    let c71 = curve(&|a| ratio(paper, 71, k, a));
     let (blue, vermilion, green) = ([0, 114, 178], [213, 94, 0], [0, 158, 115]);
-    let limit = (3.0 * k / (k + 1.0)).sqrt();
+    let limit = paper
+        .right_side(56, &Bindings::new().scalar("k", k))
+        .map_err(|e| FigureError::Data(format!("the frequency figure reads eq 56: {e}")))?;
     let plot = Plot::new(
         "Frequency of small oscillations about steady motion (k = 1/4)",
         "tilt α₀ (degrees)",
@@ -113,11 +119,7 @@ pub fn figure(m: &Measured) -> Result<Figure, FigureError> {
         Series::new("measured, no friction, b = 0", slid0, Style::Triangles),
         green,
     )
-    .mark(
-        crate::figures::Axis::Y,
-        limit,
-        format!("eq 56: sqrt(3k/(k+1)) = {limit:.3}"),
-    )
+    .mark(crate::figures::Axis::Y, limit, format!("eq 56: {limit:.3}"))
     .legend_at(Legend::LowerLeft);
     Ok(Figure {
         name: "frequency",
@@ -129,7 +131,7 @@ pub fn figure(m: &Measured) -> Result<Figure, FigureError> {
              steady motion of eqs 28-29 with alpha raised by 1e-6 of itself, the frequency taken \
              from the mean spacing of alpha's upward crossings over eight periods. Lines are the \
              paper's predictions: eq 55 for rolling with b = 0, eq 54 for rolling with b = a/2, \
-             eq 71 without friction (omega1 = 0); all three tend to eq 56's sqrt(3k/(k+1)) = \
+             eq 71 without friction (omega1 = 0); all three tend to eq 56's \
              {limit:.3} (grey line) as alpha0 -> 0. The largest relative differences between the \
              markers and their curves are {:.1e} (rolling, b = 0, at {:.0} deg), {:.1e} \
              (b = a/2, at {:.0} deg) and {:.1e} (no friction, at {:.0} deg). They are first order in the \

@@ -258,15 +258,21 @@ fn need<T>(x: &Option<T>, study: Study) -> Result<&T, FigureError> {
         .ok_or_else(|| format!("the figures need the {study} study, which was not computed").into())
 }
 
+fn paper(r: &Results) -> Result<&crate::paper::Paper, FigureError> {
+    r.paper
+        .as_ref()
+        .ok_or_else(|| "the figures need the paper the results were computed from".into())
+}
+
 fn build_family(f: Family, r: &Results) -> Result<Vec<Figure>, FigureError> {
     match f {
         Family::Geometry => Ok(vec![geometry_figure()?]),
         Family::Experiment => experiment::figures(need(&r.experiment, Study::Experiment)?),
-        Family::Stability => Ok(vec![stability::figure()?]),
-        Family::Frequency => Ok(vec![frequency::figure(need(
-            &r.frequency,
-            Study::Frequency,
-        )?)?]),
+        Family::Stability => Ok(vec![stability::figure(paper(r)?)?]),
+        Family::Frequency => Ok(vec![frequency::figure(
+            need(&r.frequency, Study::Frequency)?,
+            paper(r)?,
+        )?]),
         Family::Energy => Ok(vec![energy::figure(need(&r.energy, Study::EnergyDrift)?)?]),
         Family::Path => {
             let mut runs = need(&r.paths, Study::Paths)?.clone();
@@ -472,7 +478,11 @@ mod tests {
             .to_string();
         assert!(e.contains("spin-down"), "{e}");
         // The algebraic figures need no study.
-        let f = some(&["fig1", "stability-map"], &Results::default()).unwrap();
+        let with_paper = Results {
+            paper: Some(crate::paper::Paper::built_in().unwrap()),
+            ..Results::default()
+        };
+        let f = some(&["fig1", "stability-map"], &with_paper).unwrap();
         assert_eq!(f.len(), 2);
     }
 }

@@ -32,7 +32,10 @@ pub struct NegativeB {
 /// The surviving fraction of negative $b$ for disk `d` at `alpha0` with coefficient `mu`.
 pub fn negative_b(d: &Disk, alpha0: f64, mu: f64) -> Option<NegativeB> {
     let k = d.k;
-    let b_edge = -d.a * k * alpha0.cos() / (2.0 * k + 1.0);
+    let b_edge = crate::model::steady::b_bound(d, alpha0);
+    // The friction the exact steady force needs at half the edge, which eq 43 happens to print
+    // (derived from the model's contact force: mu >= beta cot(alpha0) / ((2k+1)(1 - beta)) at
+    // b = beta b_edge).
     let mu_eq43 = 1.0 / alpha0.tan() / (2.0 * k + 1.0);
     let beta_integrated = bisect(0.0, 0.999_999, 1e-9, |beta| {
         slips(d, alpha0, beta * b_edge, mu)

@@ -10,9 +10,11 @@ pub mod eval;
 pub mod expr;
 pub mod mutate;
 pub mod parse;
+pub mod printed;
 
 pub use eval::{EvalError, Value};
 pub use expr::{Chain, Expr, Rel, Symbol};
+pub use printed::Fit;
 
 use crate::catalogue::{ClaimEntry, EquationEntry, SymbolInfo};
 use nalgebra::{RealField, Vector3};
@@ -235,6 +237,8 @@ pub struct Paper {
     pub claims: Vec<ClaimEntry>,
     /// A hash of the three files' bytes (FNV-1a, 64 bits, hex), to tell two papers apart.
     pub hash: String,
+    /// The experimental fit of sec. 11, read from the claims.
+    pub fit: Fit,
     /// symbols.yaml resolved, for equations parsed later ([`Paper::with_latex`]).
     global: BTreeMap<Symbol, SymbolInfo>,
 }
@@ -309,6 +313,7 @@ impl Paper {
                 });
             }
         }
+        let fit = printed::read_fit(&claim_entries, &file("claims.yaml"))?;
         let global = resolve_table(&table, &file("symbols.yaml"), 0)?;
         let eqfile = file("equations.yaml");
         let parsed = entries
@@ -320,6 +325,7 @@ impl Paper {
             source,
             equations: parsed,
             claims: claim_entries,
+            fit,
             global,
         })
     }

@@ -514,7 +514,11 @@ pub fn from_results(
         figures: figure_views,
         precision: precision_rows,
         experiment,
-        paper_numbers: experiment::numbers::paper_numbers().to_string(),
+        paper_numbers: {
+            let f = bench.paper.fit;
+            experiment::numbers::numbers(f.beta, f.c_inv_root, crate::Disk::uniform(1.0).k)
+                .to_string()
+        },
         friction: results
             .friction
             .as_ref()

@@ -140,6 +140,9 @@ pub struct Results {
     pub corrections: Option<CorrectionsStudy>,
     /// The slip-stick run and the friction studies.
     pub friction: Option<crate::figures::friction::FrictionResults>,
+    /// The paper the results were computed from (the figures that draw its printed curves read
+    /// it: the stability map, the frequency figure).
+    pub paper: Option<crate::paper::Paper>,
     /// How many times each study was computed to make these results.
     pub computed: BTreeMap<Study, usize>,
 }
@@ -273,7 +276,10 @@ pub fn compute(
             Ok((s, out))
         })
         .collect::<Result<_, ReportError>>()?;
-    let mut r = Results::default();
+    let mut r = Results {
+        paper: Some(config.bench.paper.clone()),
+        ..Results::default()
+    };
     for (s, out) in outputs {
         *r.computed.entry(s).or_insert(0) += 1;
         match out {

@@ -33,7 +33,7 @@ use crate::model::dissipation::PowerLaw;
 use crate::model::frictionless::{self as fl, Frictionless};
 use crate::model::lab_frame::{Contact, LabFrame};
 use crate::model::rolling::{self, Rates, Rolling};
-use crate::model::steady::steady_motion;
+use crate::model::steady::{b_bound, steady_motion};
 use crate::model::{Extras, Model, Motion, Quantity};
 use crate::numerics::fit::log_log_slope;
 use crate::numerics::linearize::{eigenvalues, jacobian};
@@ -247,9 +247,6 @@ pub const CLAIMS: &[Claim] = &[
 /// Bisections here narrow their bracket to this relative width.
 const WIDTH: f64 = 1e-12;
 
-/// The experiment's fit (sec. 11): $C^{-1/4} = 0.0055$ with $\beta = 2$, $C$ in s^-3.
-const C_FIT_QUARTER: f64 = 0.0055;
-
 /// A dimensionless disk: $a = g = m = 1$, so rates are in units of $\sqrt{g/a}$.
 fn unit_disk(k: f64) -> Disk {
     Disk::new(1.0, k, 1.0, 1.0).expect("a valid disk")
@@ -290,13 +287,15 @@ fn q_linearized(k: f64, alpha0: f64, beta: f64) -> f64 {
     (k + 1.0) * varpi2(&j) / (m.precession * m.precession)
 }
 
-/// The right side of eq 54 (the paper's claim), with the claimed value read through `b`.
-fn q_eq54(k: f64, alpha0: f64, beta: f64) -> f64 {
-    let (s, c) = alpha0.sin_cos();
-    3.0 * k * c * c
-        + s * s
-        + beta * ((6.0 * k + 1.0) * c - (2.0 * k + 1.0) * s * s / c)
-        + 2.0 * beta * beta * (2.0 * k + 1.0)
+/// The right side of eq 54 (the paper's claim) at $b = \beta a$, evaluated from the paper's
+/// LaTeX ([`crate::paper::Paper::right_side`]); NaN if it cannot be evaluated.
+fn q_eq54(b: &Bench, k: f64, alpha0: f64, beta: f64) -> f64 {
+    let bind = crate::paper::Bindings::new()
+        .scalar("k", k)
+        .scalar("alpha_0", alpha0)
+        .scalar("a", 1.0)
+        .scalar("b", beta);
+    b.paper.right_side(54, &bind).unwrap_or(f64::NAN)
 }
 
 /// The largest real part of the eigenvalues of eqs 23-25 linearized at a steady motion.
@@ -386,25 +385,26 @@ fn mid((lo, hi): (f64, f64)) -> f64 {
     0.5 * (lo + hi)
 }
 
-/// $C$ of the experimental fit (s^-3).
-fn c_fit() -> f64 {
-    C_FIT_QUARTER.powi(-4)
+/// $C$ of the experimental fit (s^-3), from paper/claims.yaml ([`crate::paper::Fit`]).
+fn c_fit(b: &Bench) -> f64 {
+    b.paper.fit.c()
 }
 
 /// The precession rate at which one period remains, $t_0 - t = 2\pi/\Omega$ on eq 79 with
 /// $\beta = 2$ ($t_0 - t = C/\Omega^4$), by bisection.
-fn one_period_omega() -> f64 {
-    let c = c_fit();
+fn one_period_omega(b: &Bench) -> f64 {
+    let (c, n) = (c_fit(b), b.paper.fit.beta + 2.0);
     mid(bisect(10.0, 1e4, WIDTH, |om| {
-        c / om.powi(4) < 2.0 * PI / om
+        c / om.powf(n) < 2.0 * PI / om
     }))
 }
 
 /// Remaining time $t_0 - t$ at which $d^2(1/\Omega^2)/dt^2 = -k$ on eq 79 ($\beta = 2$, $k = 1/4$),
 /// i.e. the vertical contact force vanishes (sec. 11's premise), by bisection with exact second
 /// derivatives.
-fn contact_loss_remaining() -> f64 {
-    let (c, k, beta) = (c_fit(), 0.25, 2.0);
+fn contact_loss_remaining(b: &Bench) -> f64 {
+    let fit = b.paper.fit;
+    let (c, k, beta) = (fit.c(), 0.25, fit.beta);
     let inv_omega2 = |tau: f64| {
         let (_, _, d2) = second_derivative(
             |t: num_dual::Dual2_64| (t * (1.0 / c)).powf(2.0 / (beta + 2.0)),

@@ -334,9 +334,18 @@ pub(super) fn slip_when_b_large(b: &Bench) -> Finding {
 /// where it does not apply.) FAILS.
 pub(super) fn negative_b_friction_angle(b: &Bench) -> Finding {
     let (k, mu) = (0.25, 1.0);
-    let edge = mid(bisect(0.01, 1.5, WIDTH, |al| {
-        1.0 / al.tan() / (2.0 * k + 1.0) <= mu
-    }));
+    // Eq 43's printed right side (NaN if an edit makes it unreadable: the finding then fails).
+    let eq43 = |al: f64| {
+        let bind = crate::paper::Bindings::new()
+            .scalar("k", k)
+            .scalar("alpha_0", al);
+        b.paper.right_side(43, &bind).unwrap_or(f64::NAN)
+    };
+    let edge = if eq43(0.01) > mu && eq43(1.5) <= mu {
+        mid(bisect(0.01, 1.5, WIDTH, |al| eq43(al) <= mu))
+    } else {
+        f64::NAN
+    };
     stated(
         b,
         "negative-b-friction-angle",
@@ -347,7 +356,7 @@ pub(super) fn negative_b_friction_angle(b: &Bench) -> Finding {
             "edge {:.4} rad = {:.2} deg; the claimed pi/3 implies mu = {:.3}",
             edge,
             edge.to_degrees(),
-            1.0 / FRAC_PI_3.tan() / (2.0 * k + 1.0)
+            eq43(FRAC_PI_3)
         ),
     )
 }

@@ -16,11 +16,11 @@ pub(super) fn bracket_root_linearized(k: f64) -> f64 {
 
 /// `bracket-negative-angle`: the tilt where eq 54's bracketed $b$-coefficient turns negative,
 /// measured on the linearized eqs 23-25 (independent of eq 54): 52.24 deg at $k = 1/4$ (the
-/// closed form $\tan^{-1}\sqrt{(6k+1)/(2k+1)}$ agrees), 13 % below "roughly 60", outside the
+/// zero of eq 54's printed bracket agrees), 13 % below "roughly 60", outside the
 /// stated 5 %. It is below 60 deg for every $k$ (it tends to 60 only as $k \to \infty$). FAILS.
 pub(super) fn bracket_negative_angle(b: &Bench) -> Finding {
     let root = bracket_root_linearized(0.25);
-    let closed = ((6.0f64 * 0.25 + 1.0) / (2.0 * 0.25 + 1.0)).sqrt().atan();
+    let printed = b.paper.eq54_bracket_zero(0.25).unwrap_or(f64::NAN);
     let others: Vec<String> = [0.1, 0.5, 0.9]
         .iter()
         .map(|&k| format!("k={k}: {:.2} deg", bracket_root_linearized(k).to_degrees()))
@@ -32,9 +32,9 @@ pub(super) fn bracket_negative_angle(b: &Bench) -> Finding {
         "tilt where eq 54's b-coefficient turns negative, k = 1/4 (deg)",
         root.to_degrees(),
         format!(
-            "linearization {:.4} deg, closed form {:.4} deg; {}",
+            "linearization {:.4} deg, eq 54's printed bracket {:.4} deg; {}",
             root.to_degrees(),
-            closed.to_degrees(),
+            printed.to_degrees(),
             others.join(", ")
         ),
     )
@@ -59,14 +59,9 @@ pub(super) fn positive_b_unstable_large_tilt(b: &Bench) -> Finding {
     let k = 0.25;
     let onset = instability_onset(k);
     let (beta_at_onset, _) = golden_min(1e-6, 40.0, |beta| q_linearized(k, onset, beta));
-    // Band at 80 degrees from eq 54's quadratic (A beta^2 + B beta + C0 < 0).
+    // Band at 80 degrees from eq 54's printed quadratic (qc + qb beta + qa beta^2 < 0).
     let al80 = 80f64.to_radians();
-    let (s, c) = al80.sin_cos();
-    let (qa, qb, qc) = (
-        2.0 * (2.0 * k + 1.0),
-        (6.0 * k + 1.0) * c - (2.0 * k + 1.0) * s * s / c,
-        3.0 * k * c * c + s * s,
-    );
+    let [qc, qb, qa] = b.paper.eq54_quadratic(k, al80).unwrap_or([f64::NAN; 3]);
     let disc = (qb * qb - 4.0 * qa * qc).sqrt();
     let (b1, b2) = ((-qb - disc) / (2.0 * qa), (-qb + disc) / (2.0 * qa));
     let inside = max_growth(k, al80, 0.5 * (b1 + b2));
@@ -110,14 +105,14 @@ pub(super) fn negative_b_always_stable(b: &Bench) -> Finding {
     let mut lowest = f64::INFINITY;
     for &k in &[0.1, 0.25, 0.5, 0.9, 1.0] {
         for &al in &[0.05, 0.2, 0.5, 0.8, 1.1, 1.4, 1.55] {
-            let bound = -k * al.cos() / (2.0 * k + 1.0);
+            let bound = b_bound(&unit_disk(k), al);
             for &f in &[0.01, 0.25, 0.5, 0.75, 0.99] {
                 let beta = f * bound;
                 let lin = q_linearized(k, al, beta);
                 let floor = 2.0 * k * al.cos().powi(2) / (2.0 * k + 1.0) + al.sin().powi(2);
                 lowest = lowest.min(lin / floor);
                 let claimed = if lin > 0.0 {
-                    b.claim(q_eq54(k, al, beta))
+                    b.claim(q_eq54(b, k, al, beta))
                 } else {
                     f64::NAN
                 };
@@ -246,12 +241,14 @@ pub(super) fn coincidence_eq58(b: &Bench) -> Finding {
 
 /// The tilt where $\varpi = \Omega_0$ with $b = \alpha_0 a$, $k = 1/4$, from the linearized eqs
 /// 23-25 (and from eq 54, for comparison).
-pub(super) fn coincidence_tilts() -> (f64, f64) {
+pub(super) fn coincidence_tilts(b: &Bench) -> (f64, f64) {
     let k = 0.25;
     let lin = mid(bisect(0.01, 0.6, WIDTH, |al| {
         q_linearized(k, al, al) > k + 1.0
     }));
-    let eq54 = mid(bisect(0.01, 0.6, WIDTH, |al| q_eq54(k, al, al) > k + 1.0));
+    let eq54 = mid(bisect(0.01, 0.6, WIDTH, |al| {
+        q_eq54(b, k, al, al) > k + 1.0
+    }));
     (lin, eq54)
 }
 
@@ -259,7 +256,7 @@ pub(super) fn coincidence_tilts() -> (f64, f64) {
 /// from the linearized eqs 23-25 (eq 54 agrees), which rounds to the printed 0.2 at its one
 /// significant digit (eq 58's linearization in $\alpha_0$ moves it to 0.2).
 pub(super) fn coincidence_eq54(b: &Bench) -> Finding {
-    let (lin, eq54) = coincidence_tilts();
+    let (lin, eq54) = coincidence_tilts(b);
     stated(
         b,
         "coincidence-eq54",

@@ -231,7 +231,7 @@ pub(super) fn omega_units_hz_vs_rad_per_s(b: &Bench) -> Finding {
 /// `one-period-remaining-omega`: $\Omega$ with $t_0 - t = 2\pi/\Omega$ on eq 79 ($\beta = 2$,
 /// $C^{-1/4} = 0.0055$) by bisection: 558.2 rad/s, printed 560 (two digits).
 pub(super) fn one_period_remaining_omega(b: &Bench) -> Finding {
-    let om = one_period_omega();
+    let om = one_period_omega(b);
     stated(
         b,
         "one-period-remaining-omega",
@@ -240,14 +240,14 @@ pub(super) fn one_period_remaining_omega(b: &Bench) -> Finding {
         om,
         format!(
             "bisection gives {om:.3}; closed form (C/2pi)^(1/3) = {:.3}",
-            (c_fit() / (2.0 * PI)).cbrt()
+            (c_fit(b) / (2.0 * PI)).cbrt()
         ),
     )
 }
 
 /// `one-period-remaining-time`: that period, $2\pi/\Omega = 0.01126$ s, printed 0.011.
 pub(super) fn one_period_remaining_time(b: &Bench) -> Finding {
-    let period = 2.0 * PI / one_period_omega();
+    let period = 2.0 * PI / one_period_omega(b);
     stated(
         b,
         "one-period-remaining-time",
@@ -263,9 +263,10 @@ pub(super) fn one_period_remaining_time(b: &Bench) -> Finding {
 /// eq 79's $\Omega(t)$ for the time at which it reaches 680 (not the closed form): 0.0051 s,
 /// within the claimed "at most about 0.01 s", read as a bound with 5 % slack (claims.yaml).
 pub(super) fn t0_after_last_peak(b: &Bench) -> Finding {
-    let c = c_fit();
+    let c = c_fit(b);
     // Omega(t0 - tau) = (C / tau)^(1/4) falls as tau grows: the tau at which it is 680.
-    let remaining = mid(bisect(1e-9, 1.0, WIDTH, |tau| (c / tau).powf(0.25) < 680.0));
+    let n = 1.0 / (b.paper.fit.beta + 2.0);
+    let remaining = mid(bisect(1e-9, 1.0, WIDTH, |tau| (c / tau).powf(n) < 680.0));
     stated(
         b,
         "t0-after-last-peak",
@@ -283,7 +284,7 @@ pub(super) fn t0_after_last_peak(b: &Bench) -> Finding {
 /// ($F_z = 0$ by sec. 11's premise; $\beta = 2$, $k = 1/4$), by bisection with exact second
 /// derivatives: $9.71\times10^{-4}$ s, printed 0.001 (one digit).
 pub(super) fn contact_loss_time(b: &Bench) -> Finding {
-    let tau = contact_loss_remaining();
+    let tau = contact_loss_remaining(b);
     stated(
         b,
         "contact-loss-time",
@@ -292,14 +293,14 @@ pub(super) fn contact_loss_time(b: &Bench) -> Finding {
         tau,
         format!(
             "bisection {tau:.6e} s; C^(-1/3) = {:.6e} s",
-            c_fit().powf(-1.0 / 3.0)
+            c_fit(b).powf(-1.0 / 3.0)
         ),
     )
 }
 
 /// `contact-loss-omega`: eq 79 at that remaining time: 1030.0 rad/s, printed 1030 (three digits).
 pub(super) fn contact_loss_omega(b: &Bench) -> Finding {
-    let om = (c_fit() / contact_loss_remaining()).powf(0.25);
+    let om = (c_fit(b) / contact_loss_remaining(b)).powf(1.0 / (b.paper.fit.beta + 2.0));
     stated(
         b,
         "contact-loss-omega",
@@ -308,7 +309,7 @@ pub(super) fn contact_loss_omega(b: &Bench) -> Finding {
         om,
         format!(
             "eq 79 at the bisected time: {om:.4}; C^(1/3) = {:.4}",
-            c_fit().cbrt()
+            c_fit(b).cbrt()
         ),
     )
 }
@@ -319,16 +320,19 @@ pub(super) fn contact_loss_omega(b: &Bench) -> Finding {
 /// is the generating $\beta = 2$ at $t_0' = t_0$ (the paper's value, the comparison that carries
 /// the claimed side).
 pub(super) fn larger_t0_lowers_beta(b: &Bench) -> Finding {
-    let c = c_fit();
+    let (c, beta) = (c_fit(b), b.paper.fit.beta);
     let taus: Vec<f64> = (0..40)
         .map(|i| {
             let om = 200.0 + 480.0 * i as f64 / 39.0;
-            c / om.powi(4)
+            c / om.powf(beta + 2.0)
         })
         .collect();
     let apparent = |shift: f64| {
         let x: Vec<f64> = taus.iter().map(|t| t + shift).collect();
-        let y: Vec<f64> = taus.iter().map(|t| (t / c).powf(0.25)).collect();
+        let y: Vec<f64> = taus
+            .iter()
+            .map(|t| (t / c).powf(1.0 / (beta + 2.0)))
+            .collect();
         1.0 / log_log_slope(&x, &y) - 2.0
     };
     let shifts = [0.0, 0.005, 0.01, 0.02];
@@ -337,7 +341,7 @@ pub(super) fn larger_t0_lowers_beta(b: &Bench) -> Finding {
     let mut f = single(
         Method::Derivation,
         "apparent beta of synthetic eq 79 data refitted with a later t0",
-        b.claim(2.0),
+        b.claim(beta),
         betas[0],
         Tolerance::roundoff(),
         format!(
@@ -363,7 +367,7 @@ pub(super) fn larger_t0_lowers_beta(b: &Bench) -> Finding {
 /// Euler's Disk; "a few degrees" (read as 1 to 9 degrees, claims.yaml) needs $a \lesssim 2$
 /// mm. FAILS.
 pub(super) fn summary_contact_lost_few_degrees(b: &Bench) -> Finding {
-    let om = (c_fit() / contact_loss_remaining()).powf(0.25);
+    let om = (c_fit(b) / contact_loss_remaining(b)).powf(1.0 / (b.paper.fit.beta + 2.0));
     let (g, k) = (9.81, 0.25);
     let tilt = |a: f64| (g / (a * k * om * om)).to_degrees();
     let largest = [0.005, 0.0125, 0.0375, 0.05]

@@ -162,7 +162,7 @@ fn linearization_has_one_oscillating_pair() {
         assert_eq!(big.len(), 2, "{ev:?}");
         let lam2 = big[0] * big[0];
         assert!((lam2.re + w2).abs() < 1e-9 * w2.abs(), "{lam2} vs {w2}");
-        assert!((q_linearized(k, al, beta) - q_eq54(k, al, beta)).abs() < 1e-9);
+        assert!((q_linearized(k, al, beta) - q_eq54(&Bench::default(), k, al, beta)).abs() < 1e-9);
     }
 }
 

@@ -11,8 +11,8 @@
 
 use super::steady_reference::{disk, jac, rho_edge, state, steady_ref, KS};
 use super::{
-    add_threshold, implied_square, printed_relations, printed_threshold, solve_printed, term_scale,
-    Bench, Equation,
+    add_threshold, implied_square, printed_relations, printed_threshold, term_scale, Bench,
+    Equation,
 };
 use crate::disk::Disk;
 use crate::finding::{Finding, Method, Tolerance, Worst};

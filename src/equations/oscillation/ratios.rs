@@ -41,19 +41,10 @@ pub(super) fn ratio_ref(d: &Disk, alpha0: f64, rho: f64) -> f64 {
 }
 
 /// The ratio $\varpi/\Omega_0$ that the printed eq `n` gives (its first relation solved for
-/// $\varpi$), read through [`Bench::claim`].
+/// $\varpi$, [`crate::paper::printed::printed_ratio`]), read through [`Bench::claim`].
 pub(super) fn printed_ratio(b: &Bench, n: u32, k: f64, alpha0: f64) -> f64 {
-    let eq = b.paper.equation(n);
-    // Any Omega_0 other than 1 will do (a ratio); 1 would hide a dropped factor.
-    let omega0 = 3.7;
-    let bind = Bindings::new()
-        .scalar("k", k)
-        .scalar("alpha_0", alpha0)
-        .scalar("Omega_0", omega0);
-    eq.relations()
-        .first()
-        .and_then(|rel| solve_printed(eq, rel, "varpi", &bind, 0.0, 100.0 * omega0))
-        .map_or(f64::NAN, |x| b.claim(x / omega0))
+    let bind = Bindings::new().scalar("k", k).scalar("alpha_0", alpha0);
+    crate::paper::printed::printed_ratio(b.paper, n, &bind).map_or(f64::NAN, |x| b.claim(x))
 }
 
 /// Eq 55, $\dfrac{\varpi}{\Omega_0} = \sqrt{\dfrac{3k\cos^2\alpha_0 + \sin^2\alpha_0}{k+1}}$ for

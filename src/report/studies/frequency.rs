@@ -5,17 +5,41 @@
 //! over eight predicted periods.
 
 use crate::disk::Disk;
-use crate::figures::frequency::{eq54_half, eq55, eq71, Measured};
+use crate::figures::frequency::Measured;
 use crate::model::frictionless::Frictionless;
 use crate::model::rolling::Rolling;
 use crate::model::steady::steady_motion;
 use crate::model::{Extras, Model, Motion};
 use crate::numerics::oscillation::angular_frequency;
 use crate::report::error::ReportError;
-use crate::solve::{solve, Dynamics, Problem, Settings};
+use crate::solve::{solve, Dynamics, Problem, Settings, State};
 
 /// The relative size of the nudge to alpha that starts the oscillation.
 pub const NUDGE: f64 = 1e-6;
+
+/// $\varpi/|\Omega_0|$ of the model linearized at the steady motion `start` (central differences
+/// of its right side; $\varpi^2 = -\mathrm{tr}(J^2)/2$, the other eigenvalues being zero), to
+/// size the integration window without reading the paper; `None` where $\varpi^2 \le 0$ (an
+/// unstable steady motion has no frequency to measure).
+fn linearized_ratio<M: Model<N> + Dynamics<N>, const N: usize>(
+    model: &M,
+    start: &Motion,
+) -> Option<f64> {
+    let y0 = model.state(start);
+    let mut jac = nalgebra::SMatrix::<f64, N, N>::zeros();
+    for j in 0..N {
+        let h = 1e-6 * y0[j].abs().max(1.0);
+        let (mut up, mut down) = (y0, y0);
+        up[j] += h;
+        down[j] -= h;
+        let (mut f_up, mut f_down) = (State::<N>::zeros(), State::<N>::zeros());
+        model.rhs(&up, &mut f_up);
+        model.rhs(&down, &mut f_down);
+        jac.set_column(j, &((f_up - f_down) / (2.0 * h)));
+    }
+    let w2 = -(jac * jac).trace() / 2.0;
+    (w2 > 0.0).then(|| w2.sqrt() / start.precession.abs())
+}
 
 /// $\varpi/\Omega_0$ measured on an integration of `model` from `start` nudged, over 8 periods
 /// of the `predicted` ratio sampled 100 times per period; `None` when the run does not finish
@@ -60,14 +84,18 @@ pub fn compute() -> Result<Measured, ReportError> {
         let deg = 5.0 * i as f64;
         let a = deg.to_radians();
         let m0 = steady_motion(&disk, a, 0.0).map_err(|e| ReportError::Input(e.to_string()))?;
-        let rolled0 = measure(&rolling, &m0, eq55(k, a))?.map(|r| (deg, r));
-        let slid0 = measure(&frictionless, &m0, eq71(k, a))?.map(|r| (deg, r));
-        let rolled_half = match eq54_half(k, a) {
-            Some(p) => {
-                let mh = steady_motion(&disk, a, 0.5 * disk.a)
-                    .map_err(|e| ReportError::Input(e.to_string()))?;
-                measure(&rolling, &mh, p)?.map(|r| (deg, r))
-            }
+        let rolled0 = match linearized_ratio(&rolling, &m0) {
+            Some(p) => measure(&rolling, &m0, p)?.map(|r| (deg, r)),
+            None => None,
+        };
+        let slid0 = match linearized_ratio(&frictionless, &m0) {
+            Some(p) => measure(&frictionless, &m0, p)?.map(|r| (deg, r)),
+            None => None,
+        };
+        let mh =
+            steady_motion(&disk, a, 0.5 * disk.a).map_err(|e| ReportError::Input(e.to_string()))?;
+        let rolled_half = match linearized_ratio(&rolling, &mh) {
+            Some(p) => measure(&rolling, &mh, p)?.map(|r| (deg, r)),
             None => None,
         };
         Ok([rolled0, rolled_half, slid0])
