@@ -16,8 +16,8 @@ pub struct Mutant {
 /// Every mutant of an equation: each numeric constant scaled by 1 + 1e-3 and increased by 1,
 /// each sign flipped (a minus dropped, a sum made a difference and back), each sine swapped
 /// with a cosine (and tangent with cotangent), each term of a sum and each factor of a product
-/// dropped, each integer power
-/// raised by one, each inequality reversed.
+/// dropped, the two factors of each cross product swapped (the handedness error), each integer
+/// power raised by one, each inequality reversed.
 pub fn mutants(chains: &[Chain]) -> Vec<Mutant> {
     let mut out = Vec::new();
     for (ci, chain) in chains.iter().enumerate() {
@@ -118,6 +118,10 @@ fn node_mutants(e: &Expr, target: usize) -> Vec<(String, Expr)> {
                 (**b).clone(),
             );
         }
+        Expr::Bin(Op::Cross, a, b) => push(
+            format!("{} x {} swapped", a.to_latex(), b.to_latex()),
+            Expr::Bin(Op::Cross, b.clone(), a.clone()),
+        ),
         Expr::Bin(Op::Pow, a, b) => {
             if let Expr::Num(n) = **b {
                 push(
@@ -193,5 +197,26 @@ mod tests {
         );
         // Every mutant differs from the printed chain.
         assert!(m.iter().all(|m| m.chains != chains));
+    }
+
+    #[test]
+    fn a_cross_product_has_its_factors_swapped() {
+        let (chains, _) =
+            parse(r"\mathbf{N}_{\mathrm{cm}} = \mathbf{a} \times \mathbf{F}").unwrap();
+        let m = mutants(&chains);
+        assert_eq!(
+            m.len(),
+            1,
+            "{:?}",
+            m.iter().map(|m| &m.change).collect::<Vec<_>>()
+        );
+        assert!(m[0].change.contains("swapped"), "{}", m[0].change);
+        let Expr::Bin(Op::Cross, a, f) = &chains[0].sides[1] else {
+            panic!("parsed as {:?}", chains[0].sides[1]);
+        };
+        assert_eq!(
+            m[0].chains[0].sides[1],
+            Expr::Bin(Op::Cross, f.clone(), a.clone())
+        );
     }
 }

@@ -232,11 +232,16 @@ pub(super) fn eq20(b: &Bench) -> Finding {
 /// \rho_i\times\ddot{\mathbf x}_i$ (internal central forces give none; gravity's,
 /// $-\sum_i m_i\boldsymbol\rho_i\times g\hat{\mathbf z}$, vanishes about the centre of mass and is
 /// kept in the sum). Claimed: the rate of $\mathbf L_{cm} = R I_{body}R^T\vec\omega$, exact by
-/// dual numbers. When that torque comes from one force at the contact point, it is
-/// $\mathbf a\times\mathbf F$ with $\mathbf a$ the contact point's offset (eq 1): a random motion
-/// needs a general force system, so only the first equality is compared here; the second is the
-/// torque of a force applied at $\mathbf a$, and eq 22 checks its use (tests/mutation.rs lists
-/// the mutants of that relation as not compared here).
+/// dual numbers.
+///
+/// The second equality, $\mathbf N_{cm} = \mathbf a\times\mathbf F$, is the torque of the one
+/// force the table exerts, at the contact point. Reference, without a cross product of
+/// $\mathbf a$ and $\mathbf F$: the torque is the generalized force of a rotation, the gradient
+/// in $\vec\omega$ of the power $\mathbf F\cdot\mathbf v_P$ that the force delivers at the body
+/// point $P$ it acts on, whose velocity relative to the centre is $\vec\omega\times\mathbf r_P$;
+/// $P$ is found on the rim (its lowest point, [`lowest_rim_point`]), and $\mathbf F = m(\ddot
+/// {\mathbf r}_{cm} + g\hat{\mathbf z})$ on rolling motions (eq 20's reference). The gradient is
+/// taken by dual numbers, one seed per component of $\vec\omega$.
 pub(super) fn eq21(b: &Bench) -> Finding {
     let mut w = Worst::default();
     let mut rng = Rng::new(21);
@@ -266,11 +271,41 @@ pub(super) fn eq21(b: &Bench) -> Finding {
             });
         }
     }
+    for (h, t) in sample(211, 25, RATE) {
+        let k = kin1(&h, t);
+        let k2 = kin2(&h, t);
+        let acc: V<f64> =
+            std::array::from_fn(|i| A * k2.contact_rate[i].eps - A * k2.rates[THREE][i].eps);
+        let force = v3(&scale(MASS, &add(&acc, &scale(G, &up()))));
+        let r_p = v3(&lowest_rim_point(&k));
+        let torque = power_gradient(&force, &r_p);
+        let bind = Bindings::new()
+            .vector("N_cm", torque)
+            .vector("a_vec", r_p)
+            .vector("F", force);
+        let sc = A * force.norm();
+        printed_relation(b, 21, 1, &bind, sc, &mut w, &|| {
+            format!("N_cm of the contact force, alpha = {:.3}", k.alpha)
+        });
+    }
     identity(
-        "dL_cm/dt of R I R^T omega against the torque summed over point masses",
+        "dL_cm/dt of R I R^T omega against the torque summed over point masses; the contact \
+         force's torque against the gradient in omega of the power it delivers",
         w,
         false,
     )
+}
+
+/// The torque of a force `f` acting at the body point `r_p` (from the centre): the gradient in
+/// $\vec\omega$ of the power $\mathbf f\cdot(\vec\omega\times\mathbf r_P)$, by dual numbers.
+fn power_gradient(f: &Vector3<f64>, r_p: &Vector3<f64>) -> Vector3<f64> {
+    Vector3::from_fn(|i, _| {
+        let omega: V<Dual64> =
+            std::array::from_fn(|j| Dual64::new(0.0, if i == j { 1.0 } else { 0.0 }));
+        let r: V<Dual64> = std::array::from_fn(|j| Dual64::from(r_p[j]));
+        let v = cross(&omega, &r);
+        (0..3).fold(Dual64::from(0.0), |s, j| s + v[j] * f[j]).eps
+    })
 }
 
 /// Eq 22, $\frac{1}{ma}\frac{d\mathbf L_{cm}}{dt} + \frac{d^2\mathbf r_{cm}}{dt^2}\times
