@@ -26,7 +26,7 @@ use crate::numerics::oscillation::{angular_frequency, bisect};
 use crate::numerics::rng::Rng;
 use crate::paper::Bindings;
 use crate::solve::{solve, Dynamics, Ending, Event, Problem, State};
-use nalgebra::{Complex, SMatrix, Vector3};
+use nalgebra::{Complex, Matrix3, SMatrix, Vector3};
 use num_dual::{Dual, Dual64, DualNum, HyperDual};
 use std::f64::consts::{FRAC_PI_2, PI};
 
@@ -118,23 +118,9 @@ fn disk(k: f64) -> Disk {
 
 // ------------------------------------------------------------------ the Lagrangian reference
 
-type V3<S> = [S; 3];
-
-fn dot<S: DualNum<f64> + Copy>(a: V3<S>, b: V3<S>) -> S {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-fn cross<S: DualNum<f64> + Copy>(a: V3<S>, b: V3<S>) -> V3<S> {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
-fn axpy<S: DualNum<f64> + Copy>(s: S, x: V3<S>, y: V3<S>) -> V3<S> {
-    [s * x[0] + y[0], s * x[1] + y[1], s * x[2] + y[2]]
-}
+/// Vectors of the reference, over dual numbers of any order (nalgebra's arithmetic, cross and
+/// dot need only a ring, which nested duals are).
+type V3<S> = Vector3<S>;
 
 /// The triad of the disk at tilt `alpha` and heading `psi`, built from its verbal definition:
 /// $\hat{\mathbf 2} = (\cos\psi, \sin\psi, 0)$ the horizontal diameter, $\hat{\mathbf 1}$ the
@@ -144,13 +130,12 @@ fn axpy<S: DualNum<f64> + Copy>(s: S, x: V3<S>, y: V3<S>) -> V3<S> {
 fn triad<S: DualNum<f64> + Copy>(alpha: S, psi: S) -> ([V3<S>; 3], [V3<S>; 3]) {
     let (sp, cp) = psi.sin_cos();
     let (sa, ca) = alpha.sin_cos();
-    let zero = S::zero();
-    let e1 = [-(sa * sp), sa * cp, -ca];
-    let e2 = [cp, sp, zero];
-    let e3 = [ca * sp, -(ca * cp), -sa];
-    let d1 = [-(ca * sp), ca * cp, sa];
-    let d3 = [-(sa * sp), sa * cp, -ca];
-    ([e1, e2, e3], [d1, [zero; 3], d3])
+    let e1 = V3::new(-(sa * sp), sa * cp, -ca);
+    let e2 = V3::new(cp, sp, S::zero());
+    let e3 = V3::new(ca * sp, -(ca * cp), -sa);
+    let d1 = V3::new(-(ca * sp), ca * cp, sa);
+    let d3 = V3::new(-(sa * sp), sa * cp, -ca);
+    ([e1, e2, e3], [d1, V3::zeros(), d3])
 }
 
 /// Angular velocities of the triad and of the disk, and the triad, at coordinates `q` and rates
@@ -164,24 +149,15 @@ struct Kinematics<S> {
 
 fn kinematics<S: DualNum<f64> + Copy>(q: V3<S>, qd: V3<S>) -> Kinematics<S> {
     let (e, d_alpha) = triad(q[0], q[1]);
-    let z = [S::zero(), S::zero(), S::one()];
-    let rate = |i: usize| {
-        axpy(qd[0], d_alpha[i], {
-            let c = cross(z, e[i]);
-            [qd[1] * c[0], qd[1] * c[1], qd[1] * c[2]]
-        })
-    };
-    let dots = [rate(0), rate(1), rate(2)];
-    let mut w = [S::zero(); 3];
-    for i in 0..3 {
-        let c = cross(e[i], dots[i]);
-        w = axpy(S::from(0.5), c, w);
-    }
+    let z = V3::z();
+    let dots: [V3<S>; 3] = std::array::from_fn(|i| d_alpha[i] * qd[0] + z.cross(&e[i]) * qd[1]);
+    // The axial vector of the frame's rotation: (1/2) sum_i e_i x de_i/dt.
+    let w = (0..3).fold(V3::zeros(), |w, i| w + e[i].cross(&dots[i]) * S::from(0.5));
     Kinematics {
         e,
         e1_dot: dots[0],
         w_triad: w,
-        w_disk: axpy(qd[2], e[0], w),
+        w_disk: w + e[0] * qd[2],
     }
 }
 
@@ -195,73 +171,80 @@ fn lagrangian<S: DualNum<f64> + Copy>(d: &Disk, q: V3<S>, qd: V3<S>) -> S {
     let h = (S::one() - nz * nz).sqrt(); // h / a
     let h_dot = -(nz * nz_dot) / h;
     let w = kin.w_disk;
-    let w1 = dot(w, kin.e[0]);
-    h_dot * h_dot * 0.5 + (dot(w, w) + w1 * w1) * (0.5 * d.k) - h * d.g_over_a()
+    let w1 = w.dot(&kin.e[0]);
+    h_dot * h_dot * 0.5 + (w.dot(&w) + w1 * w1) * (0.5 * d.k) - h * d.g_over_a()
 }
 
 /// The paper's variables $(\dot\alpha, \Omega, \omega_1)$ at coordinates `q` and rates `qd`.
 fn paper_rates<S: DualNum<f64> + Copy>(q: V3<S>, qd: V3<S>) -> V3<S> {
     let kin = kinematics(q, qd);
-    [qd[0], kin.w_triad[2], dot(kin.w_disk, kin.e[0])]
+    V3::new(qd[0], kin.w_triad[2], kin.w_disk.dot(&kin.e[0]))
 }
 
-fn solve3<S: DualNum<f64> + Copy>(m: [[S; 3]; 3], r: V3<S>) -> V3<S> {
-    let det3 = |c0: V3<S>, c1: V3<S>, c2: V3<S>| dot(c0, cross(c1, c2));
-    let col = |j: usize| [m[0][j], m[1][j], m[2][j]];
+/// The solution of the 3x3 system `m x = r` by Cramer's rule. Written here because nalgebra's
+/// LU and inverse need a `ComplexField`, which nested dual numbers are not.
+fn solve3<S: DualNum<f64> + Copy>(m: &Matrix3<S>, r: V3<S>) -> V3<S> {
+    let det3 = |c0: V3<S>, c1: V3<S>, c2: V3<S>| c0.dot(&c1.cross(&c2));
+    let col = |j: usize| -> V3<S> { m.column(j).into_owned() };
     let d = det3(col(0), col(1), col(2));
-    [
+    V3::new(
         det3(r, col(1), col(2)) / d,
         det3(col(0), r, col(2)) / d,
         det3(col(0), col(1), r) / d,
-    ]
+    )
 }
 
 /// The Euler-Lagrange equations solved for $\ddot q$.
 fn euler_lagrange<T: DualNum<f64> + Copy>(d: &Disk, q: V3<T>, qd: V3<T>) -> V3<T> {
     type H<T> = HyperDual<T, f64>;
     let lift = |x: V3<T>| x.map(H::<T>::from_re);
-    let mut mass = [[T::zero(); 3]; 3];
-    let mut mixed = [[T::zero(); 3]; 3];
-    let mut force = [T::zero(); 3];
+    let mut mass = Matrix3::<T>::zeros();
+    let mut mixed = Matrix3::<T>::zeros();
+    let mut force = V3::<T>::zeros();
     for i in 0..3 {
         for j in 0..3 {
             if j >= i {
                 let (qh, mut qdh) = (lift(q), lift(qd));
                 qdh[i].eps1 = T::one();
                 qdh[j].eps2 = T::one();
-                mass[i][j] = lagrangian(d, qh, qdh).eps1eps2;
-                mass[j][i] = mass[i][j];
+                mass[(i, j)] = lagrangian(d, qh, qdh).eps1eps2;
+                mass[(j, i)] = mass[(i, j)];
             }
             let (mut qh, mut qdh) = (lift(q), lift(qd));
             qdh[i].eps1 = T::one();
             qh[j].eps2 = T::one();
             let l = lagrangian(d, qh, qdh);
-            mixed[i][j] = l.eps1eps2;
+            mixed[(i, j)] = l.eps1eps2;
             force[j] = l.eps2;
         }
     }
-    let r = [0, 1, 2].map(|i| force[i] - dot(mixed[i], qd));
-    solve3(mass, r)
+    solve3(&mass, force - mixed * qd)
+}
+
+/// The coordinate rates $\dot q$ at coordinates `q` that give the paper's variables of `m`: the
+/// paper's rates are linear in $\dot q$, the columns of the map its images of unit rates.
+fn coordinate_rates<T: DualNum<f64> + Copy>(q: V3<T>, m: &Motion<T>) -> V3<T> {
+    let cols: [V3<T>; 3] = std::array::from_fn(|j| {
+        let mut u = V3::zeros();
+        u[j] = T::one();
+        paper_rates(q, u)
+    });
+    solve3(
+        &Matrix3::from_columns(&cols),
+        V3::new(m.alpha_dot, m.precession, m.spin),
+    )
 }
 
 /// The reference accelerations $(\ddot\alpha, \dot\Omega, \dot\omega_1)$ of the frictionless
 /// disk from the Lagrangian, at the paper's variables `m` (heading and face angle are cyclic;
 /// they are set to arbitrary values).
 fn reference_rates<T: DualNum<f64> + Copy>(d: &Disk, m: &Motion<T>) -> V3<T> {
-    let q = [m.alpha, T::from(0.7), T::from(-1.3)];
-    // The paper's rates are linear in qd: columns of the map are its images of unit rates.
-    let unit = |j: usize| {
-        let mut u = [T::zero(); 3];
-        u[j] = T::one();
-        paper_rates(q, u)
-    };
-    let cols = [unit(0), unit(1), unit(2)];
-    let a = [0, 1, 2].map(|i| [cols[0][i], cols[1][i], cols[2][i]]);
-    let qd = solve3(a, [m.alpha_dot, m.precession, m.spin]);
+    let q = V3::new(m.alpha, T::from(0.7), T::from(-1.3));
+    let qd = coordinate_rates(q, m);
     let qdd = euler_lagrange(d, q, qd);
     // d/dt of the paper's variables along (qd, qdd).
-    let qdual = [0, 1, 2].map(|i| Dual::<T, f64>::new(q[i], qd[i]));
-    let qddual = [0, 1, 2].map(|i| Dual::<T, f64>::new(qd[i], qdd[i]));
+    let qdual = V3::from_fn(|i, _| Dual::<T, f64>::new(q[i], qd[i]));
+    let qddual = V3::from_fn(|i, _| Dual::<T, f64>::new(qd[i], qdd[i]));
     paper_rates(qdual, qddual).map(|x| x.eps)
 }
 
@@ -357,7 +340,7 @@ fn linear(d: &Disk, alpha0: f64) -> Linear {
 
 /// The paper's variables of the frictionless disk at state `m`, with the rates
 /// `[alpha_ddot, Omega_dot, omega_1_dot]`, bound to the quantities of paper/symbols.yaml.
-fn state_bindings(d: &Disk, m: &Motion, rates: [f64; 3]) -> Bindings<f64> {
+fn state_bindings(d: &Disk, m: &Motion, rates: V3<f64>) -> Bindings<f64> {
     Bindings::new()
         .scalar("alpha", m.alpha)
         .scalar("alpha_dot", m.alpha_dot)

@@ -37,7 +37,7 @@ pub(super) fn eq59(b: &Bench) -> Finding {
         // Any orthonormal pair in the disk's plane: the horizontal diameter and its normal in
         // the plane, n x u.
         let u = e[1];
-        let v = cross(e[0], u);
+        let v = e[0].cross(&u);
         let height = a * (u[2] * u[2] + v[2] * v[2]).sqrt();
         let bind = Bindings::new()
             .vector("r_cm", Vector3::new(0.0, 0.0, height))
@@ -209,18 +209,10 @@ pub(super) fn eq62(b: &Bench) -> Finding {
 /// $\hat{\mathbf z}\cdot\mathbf I\vec\omega$ with $\mathbf I\vec\omega = k m a^2(\vec\omega + (\vec\omega\cdot\hat{\mathbf 1})\hat{\mathbf 1})$,
 /// the disk's angular velocity from the reference kinematics.
 pub(super) fn lz_geometric(d: &Disk, m: &Motion) -> f64 {
-    let q = [m.alpha, 0.4, 0.0];
-    let unit = |j: usize| {
-        let mut u = [0.0; 3];
-        u[j] = 1.0;
-        paper_rates(q, u)
-    };
-    let cols = [unit(0), unit(1), unit(2)];
-    let a = [0, 1, 2].map(|i| [cols[0][i], cols[1][i], cols[2][i]]);
-    let qd = solve3(a, [m.alpha_dot, m.precession, m.spin]);
-    let kin = kinematics(q, qd);
+    let q = V3::new(m.alpha, 0.4, 0.0);
+    let kin = kinematics(q, coordinate_rates(q, m));
     let w = kin.w_disk;
-    let w1 = dot(w, kin.e[0]);
+    let w1 = w.dot(&kin.e[0]);
     d.i22() * (w[2] + w1 * kin.e[0][2])
 }
 
@@ -251,7 +243,7 @@ pub(super) fn eq63(b: &Bench) -> Finding {
             };
             for (t, y) in sol.t.iter().zip(&sol.y) {
                 let s = model.motion(y);
-                let bind = state_bindings(&d, &s, [f64::NAN; 3])
+                let bind = state_bindings(&d, &s, V3::repeat(f64::NAN))
                     .scalar("L_z", lz_geometric(&d, &s))
                     .scalar("L_z_initial", initial);
                 printed_relations(b, 63, &bind, scale, &mut worst, &|| {
