@@ -91,10 +91,10 @@ pub(super) fn eq8(b: &Bench) -> Finding {
         let k = kin1(&h, t);
         let mut bind = kin_bindings(&k);
         let t3 = k.axes[THREE];
-        let horizontal = [t3[0], t3[1], 0.0];
+        let horizontal = V::new(t3[0], t3[1], 0.0);
         if k.alpha.cos() > 0.1 {
-            let dir = scale(1.0 / norm_f(&horizontal), &horizontal);
-            bind.set("r_hat", Value::Vector(v3(&dir)));
+            let dir = horizontal / horizontal.norm();
+            bind.set("r_hat", Value::Vector(dir));
         }
         printed_relations(b, 8, &bind, 1.0, &mut w, &|| at(&k, "r-hat"));
     }

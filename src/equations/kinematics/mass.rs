@@ -39,7 +39,7 @@ pub(super) fn plate(inner: f64, outer: f64) -> Vec<(V<f64>, f64)> {
     for &(r, wt) in &radial {
         for j in 0..n {
             let th = 0.3 + 2.0 * std::f64::consts::PI * j as f64 / n as f64;
-            out.push(([r * th.cos(), r * th.sin(), 0.0], MASS * wt / total));
+            out.push((V::new(r * th.cos(), r * th.sin(), 0.0), MASS * wt / total));
         }
     }
     out
@@ -72,16 +72,9 @@ pub(super) fn bodies() -> Vec<Body> {
 
 /// The inertia tensor about the centre in body axes, summed over the point masses.
 pub(super) fn inertia(points: &[(V<f64>, f64)]) -> M<f64> {
-    let mut i = [[0.0; 3]; 3];
-    for (p, m) in points {
-        let r2 = dot(p, p);
-        for a in 0..3 {
-            for b in 0..3 {
-                i[a][b] += m * (if a == b { r2 } else { 0.0 } - p[a] * p[b]);
-            }
-        }
-    }
-    i
+    points.iter().fold(M::zeros(), |i, (p, m)| {
+        i + (M::identity() * p.dot(p) - p * p.transpose()) * *m
+    })
 }
 
 /// Eq 18, $I_{11} = 2kma^2$, $I_{22} = kma^2 = I_{33}$ (definition). Reference: the inertia
@@ -94,9 +87,9 @@ pub(super) fn eq18(b: &Bench) -> Finding {
         let unit = body.k * MASS * A * A;
         // Body axes: symmetry axis z is 1-hat; x and y are diameters.
         let bind = Bindings::new()
-            .scalar("I_11", i[2][2])
-            .scalar("I_22", i[0][0])
-            .scalar("I_33", i[1][1])
+            .scalar("I_11", i[(2, 2)])
+            .scalar("I_22", i[(0, 0)])
+            .scalar("I_33", i[(1, 1)])
             .scalar("k", body.k)
             .scalar("m", MASS)
             .scalar("a", A);
@@ -104,7 +97,7 @@ pub(super) fn eq18(b: &Bench) -> Finding {
             format!("the principal moments of the {}", body.name)
         });
         for (p, q) in [(0, 1), (0, 2), (1, 2)] {
-            w.add(0.0, i[p][q], unit, || {
+            w.add(0.0, i[(p, q)], unit, || {
                 format!("off-diagonal I[{p}][{q}] of the {}", body.name)
             });
         }
@@ -117,18 +110,14 @@ pub(super) fn eq18(b: &Bench) -> Finding {
 }
 
 /// The inertia tensor in the lab, $R I_{body} R^T$.
-pub(super) fn lab_tensor(rot: &M<f64>, i_body: &M<f64>) -> nalgebra::Matrix3<f64> {
-    let r = nalgebra::Matrix3::from_fn(|i, j| rot[i][j]);
-    let ib = nalgebra::Matrix3::from_fn(|i, j| i_body[i][j]);
-    r * ib * r.transpose()
+pub(super) fn lab_tensor(rot: &M<f64>, i_body: &M<f64>) -> M<f64> {
+    rot * i_body * rot.transpose()
 }
 
 /// The angular momentum about the centre in the lab, $R I_{body} R^T\vec\omega$.
 pub(super) fn l_lab<T: S>(rot: &M<T>, i_body: &M<f64>, omega: &V<T>) -> V<T> {
-    let body = mat_t_vec(rot, omega);
-    let lb: V<T> =
-        std::array::from_fn(|p| (0..3).fold(c::<T>(0.0), |s, q| s + body[q] * i_body[p][q]));
-    mat_vec(rot, &lb)
+    // I_body is of plain numbers: lifted entry by entry to the duals of the motion.
+    rot * (i_body.map(T::from) * rot.tr_mul(omega))
 }
 
 /// Eq 19, $\mathbf L_{cm} = \mathbf I\cdot\vec\omega = kma^2(2\omega_1\hat{\mathbf 1} +
@@ -144,7 +133,7 @@ pub(super) fn eq19(b: &Bench) -> Finding {
             let unit = body.k * MASS * A * A;
             let i_lab = lab_tensor(&k.rot, &i_body);
             let bind = kin_bindings(&k)
-                .vector("L_cm", v3(&l))
+                .vector("L_cm", l)
                 .value("I_tensor", Value::Tensor(i_lab))
                 .scalar("k", body.k)
                 .scalar("m", MASS);
@@ -183,13 +172,13 @@ pub(super) fn particles(h: &History, t: f64, rng: &mut Rng, body: &Body) -> Part
         })
         .collect();
     let td = D2::new(Dual64::new(t, 1.0), Dual64::new(1.0, 0.0));
-    let acc_cm: V<f64> = std::array::from_fn(|i| path[i].at(td).eps.eps);
-    let rot: M<f64> = std::array::from_fn(|i| std::array::from_fn(|j| k.rot[i][j].re));
-    let rot_dd: M<f64> = std::array::from_fn(|i| std::array::from_fn(|j| k.rot_dot[i][j].eps));
+    let acc_cm: V<f64> = V::from_fn(|i, _| path[i].at(td).eps.eps);
+    let rot: M<f64> = k.rot.map(|x| x.re);
+    let rot_dd: M<f64> = k.rot_dot.map(|x| x.eps);
     let offsets = body
         .points
         .iter()
-        .map(|(p, m)| (mat_vec(&rot, p), add(&acc_cm, &mat_vec(&rot_dd, p)), *m))
+        .map(|(p, m)| (rot * p, acc_cm + rot_dd * p, *m))
         .collect();
     Particles { k, acc_cm, offsets }
 }
@@ -205,15 +194,16 @@ pub(super) fn eq20(b: &Bench) -> Finding {
     for body in bodies() {
         for (h, t) in sample(200, 25, RATE) {
             let p = particles(&h, t, &mut rng, &body);
-            let force: V<f64> = p.offsets.iter().fold([0.0; 3], |s, (_, acc, m)| {
-                add(&s, &scale(*m, &add(acc, &scale(G, &up()))))
-            });
-            let sc = MASS * (G + norm_f(&p.acc_cm));
+            let force: V<f64> = p
+                .offsets
+                .iter()
+                .fold(V::zeros(), |s, (_, acc, m)| s + (acc + V::z() * G) * *m);
+            let sc = MASS * (G + p.acc_cm.norm());
             let bind = Bindings::new()
                 .scalar("m", MASS)
                 .scalar("g", G)
-                .vector("a_cm", v3(&p.acc_cm))
-                .vector("F", v3(&force))
+                .vector("a_cm", p.acc_cm)
+                .vector("F", force)
                 .vector("z_hat", Vector3::z());
             printed_relations(b, 20, &bind, sc, &mut w, &|| {
                 format!("m d2r_cm/dt2 for the {}", body.name)
@@ -249,23 +239,22 @@ pub(super) fn eq21(b: &Bench) -> Finding {
         let i_body = inertia(&body.points);
         for (h, t) in sample(210, 25, RATE) {
             let p = particles(&h, t, &mut rng, &body);
-            let torque = p.offsets.iter().fold([0.0; 3], |s, (rho, acc, m)| {
-                add(&s, &scale(*m, &cross(rho, &add(acc, &scale(G, &up())))))
+            let torque = p.offsets.iter().fold(V::zeros(), |s, (rho, acc, m)| {
+                s + rho.cross(&(acc + V::z() * G)) * *m
             });
-            let gravity = p.offsets.iter().fold([0.0; 3], |s, (rho, _, m)| {
-                add(&s, &scale(-*m * G, &cross(rho, &up())))
+            let gravity = p.offsets.iter().fold(V::zeros(), |s, (rho, _, m)| {
+                s + rho.cross(&V::z()) * (-*m * G)
             });
-            let reference = add(&torque, &gravity);
+            let reference = torque + gravity;
             let l = l_lab(&p.k.rot, &i_body, &p.k.omega);
-            let l_dot: V<f64> = std::array::from_fn(|i| l[i].eps);
-            let omega: V<f64> = std::array::from_fn(|i| p.k.omega[i].re);
-            let omega_dot: V<f64> = std::array::from_fn(|i| p.k.omega[i].eps);
-            let rates = norm_f(&omega);
-            let sc =
-                body.k * MASS * A * A * (rates * rates + norm_f(&omega_dot)) + norm_f(&reference);
+            let l_dot: V<f64> = l.map(|x| x.eps);
+            let omega: V<f64> = p.k.omega.map(|x| x.re);
+            let omega_dot: V<f64> = p.k.omega.map(|x| x.eps);
+            let rates = omega.norm();
+            let sc = body.k * MASS * A * A * (rates * rates + omega_dot.norm()) + reference.norm();
             let bind = Bindings::new()
-                .vector("L_cm_rate", v3(&l_dot))
-                .vector("N_cm", v3(&reference));
+                .vector("L_cm_rate", l_dot)
+                .vector("N_cm", reference);
             printed_relation(b, 21, 0, &bind, sc, &mut w, &|| {
                 format!("dL_cm/dt for the {}", body.name)
             });
@@ -274,10 +263,9 @@ pub(super) fn eq21(b: &Bench) -> Finding {
     for (h, t) in sample(211, 25, RATE) {
         let k = kin1(&h, t);
         let k2 = kin2(&h, t);
-        let acc: V<f64> =
-            std::array::from_fn(|i| A * k2.contact_rate[i].eps - A * k2.rates[THREE][i].eps);
-        let force = v3(&scale(MASS, &add(&acc, &scale(G, &up()))));
-        let r_p = v3(&lowest_rim_point(&k));
+        let acc: V<f64> = (k2.contact_rate - k2.rates[THREE]).map(|x| x.eps) * A;
+        let force = (acc + V::z() * G) * MASS;
+        let r_p = lowest_rim_point(&k);
         let torque = power_gradient(&force, &r_p);
         let bind = Bindings::new()
             .vector("N_cm", torque)
@@ -300,11 +288,9 @@ pub(super) fn eq21(b: &Bench) -> Finding {
 /// $\vec\omega$ of the power $\mathbf f\cdot(\vec\omega\times\mathbf r_P)$, by dual numbers.
 fn power_gradient(f: &Vector3<f64>, r_p: &Vector3<f64>) -> Vector3<f64> {
     Vector3::from_fn(|i, _| {
-        let omega: V<Dual64> =
-            std::array::from_fn(|j| Dual64::new(0.0, if i == j { 1.0 } else { 0.0 }));
-        let r: V<Dual64> = std::array::from_fn(|j| Dual64::from(r_p[j]));
-        let v = cross(&omega, &r);
-        (0..3).fold(Dual64::from(0.0), |s, j| s + v[j] * f[j]).eps
+        let omega: V<Dual64> = V::from_fn(|j, _| Dual64::new(0.0, if i == j { 1.0 } else { 0.0 }));
+        let r: V<Dual64> = r_p.map(Dual64::from);
+        omega.cross(&r).dot(&f.map(Dual64::from)).eps
     })
 }
 
@@ -322,30 +308,29 @@ pub(super) fn eq22(b: &Bench) -> Finding {
         let i_body = inertia(&body.points);
         for (h, t) in sample(220, 50, RATE) {
             let k = kin2(&h, t);
-            let three: V<f64> = std::array::from_fn(|i| k.axes[THREE][i].re);
-            let acc: V<f64> =
-                std::array::from_fn(|i| A * k.contact_rate[i].eps - A * k.rates[THREE][i].eps);
+            let three: V<f64> = k.axes[THREE].map(|x| x.re);
+            let acc: V<f64> = (k.contact_rate - k.rates[THREE]).map(|x| x.eps) * A;
             let l = l_lab(&k.rot, &i_body, &k.omega);
-            let l_dot: V<f64> = std::array::from_fn(|i| l[i].eps);
-            let force = scale(MASS, &add(&acc, &scale(G, &up())));
-            let residual21 = sub(&l_dot, &cross(&scale(A, &three), &force));
+            let l_dot: V<f64> = l.map(|x| x.eps);
+            let force = (acc + V::z() * G) * MASS;
+            let residual21 = l_dot - (three * A).cross(&force);
             let bind = Bindings::new()
                 .scalar("m", MASS)
                 .scalar("a", A)
                 .scalar("g", G)
-                .vector("L_cm_rate", v3(&l_dot))
-                .vector("a_cm", v3(&acc))
-                .vector("e3", v3(&three))
+                .vector("L_cm_rate", l_dot)
+                .vector("a_cm", acc)
+                .vector("e3", three)
                 .vector("z_hat", Vector3::z());
             let eq = b.paper.equation(22);
             let rel = eq.relations()[0];
             let side = |e| {
                 eq.eval(e, &bind)
                     .and_then(|v| v.vector())
-                    .map_or([f64::NAN; 3], |v| [v.x, v.y, v.z])
+                    .unwrap_or(V::repeat(f64::NAN))
             };
             let (lhs, rhs) = (side(rel.lhs), side(rel.rhs));
-            let sc = G + norm_f(&lhs);
+            let sc = G + lhs.norm();
             for i in 0..3 {
                 w.add(
                     b.claim(lhs[i]) - rhs[i],

@@ -34,7 +34,7 @@ use super::{printed_relation, printed_relations, Bench, Equation};
 use crate::finding::{Finding, Method, Tolerance, Worst};
 use crate::numerics::rng::Rng;
 use crate::paper::{Bindings, Value};
-use nalgebra::Vector3;
+use nalgebra::{Matrix3, Vector3};
 use num_dual::{Dual, Dual64, DualNum};
 
 mod axes;
@@ -165,9 +165,10 @@ pub const EQUATIONS: &[Equation] = &[
 // Small vector algebra, generic over dual numbers
 // ------------------------------------------------------------------------------------------
 
-type V<T> = [T; 3];
-/// Row-major: `m[i][j]`.
-type M<T> = [[T; 3]; 3];
+/// Vectors and matrices of the construction, over dual numbers of any order (nalgebra's
+/// arithmetic, cross and dot need only a ring, which nested duals are).
+type V<T> = Vector3<T>;
+type M<T> = Matrix3<T>;
 /// Second-order time derivatives: an outer dual over an inner one.
 type D2 = Dual<Dual64, f64>;
 
@@ -175,76 +176,23 @@ type D2 = Dual<Dual64, f64>;
 trait S: DualNum<f64> + Copy {}
 impl<T: DualNum<f64> + Copy> S for T {}
 
-fn c<T: S>(x: f64) -> T {
-    T::from(x)
-}
-
-fn dot<T: S>(a: &V<T>, b: &V<T>) -> T {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-fn cross<T: S>(a: &V<T>, b: &V<T>) -> V<T> {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
-fn add<T: S>(a: &V<T>, b: &V<T>) -> V<T> {
-    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
-}
-
-fn sub<T: S>(a: &V<T>, b: &V<T>) -> V<T> {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-fn scale<T: S>(s: T, v: &V<T>) -> V<T> {
-    [v[0] * s, v[1] * s, v[2] * s]
-}
-
-fn norm<T: S>(v: &V<T>) -> T {
-    dot(v, v).sqrt()
-}
-
-fn mat_vec<T: S>(m: &M<T>, v: &V<T>) -> V<T> {
-    std::array::from_fn(|i| m[i][0] * v[0] + m[i][1] * v[1] + m[i][2] * v[2])
-}
-
-fn mat_t_vec<T: S>(m: &M<T>, v: &V<T>) -> V<T> {
-    std::array::from_fn(|j| m[0][j] * v[0] + m[1][j] * v[1] + m[2][j] * v[2])
-}
-
-fn column<T: S>(m: &M<T>, j: usize) -> V<T> {
-    [m[0][j], m[1][j], m[2][j]]
-}
-
-fn up<T: S>() -> V<T> {
-    [c(0.0), c(0.0), c(1.0)]
-}
-
 /// The axial vector of the antisymmetric part of $\dot A A^T$: the angular velocity of a frame
 /// whose columns are $A$, from the values `a` and rates `a_dot` of its entries.
 fn axial<T: S>(a: &M<T>, a_dot: &M<T>) -> V<T> {
-    let w =
-        |i: usize, k: usize| -> T { (0..3).fold(c::<T>(0.0), |s, j| s + a_dot[i][j] * a[k][j]) };
-    [
-        (w(2, 1) - w(1, 2)) * 0.5,
-        (w(0, 2) - w(2, 0)) * 0.5,
-        (w(1, 0) - w(0, 1)) * 0.5,
-    ]
+    let w = a_dot * a.transpose();
+    V::new(
+        (w[(2, 1)] - w[(1, 2)]) * 0.5,
+        (w[(0, 2)] - w[(2, 0)]) * 0.5,
+        (w[(1, 0)] - w[(0, 1)]) * 0.5,
+    )
 }
 
 fn re<T: S>(v: &V<Dual<T, f64>>) -> V<T> {
-    std::array::from_fn(|i| v[i].re)
+    v.map(|x| x.re)
 }
 
 fn eps<T: S>(v: &V<Dual<T, f64>>) -> V<T> {
-    std::array::from_fn(|i| v[i].eps)
-}
-
-fn norm_f(v: &V<f64>) -> f64 {
-    norm(v)
+    v.map(|x| x.eps)
 }
 
 // ------------------------------------------------------------------------------------------
@@ -307,22 +255,28 @@ fn euler<T: S>(psi: T, theta: T, phi: T) -> M<T> {
     let (sp, cp) = psi.sin_cos();
     let (st, ct) = theta.sin_cos();
     let (sf, cf) = phi.sin_cos();
-    [
-        [cp * cf - sp * ct * sf, -cp * sf - sp * ct * cf, sp * st],
-        [sp * cf + cp * ct * sf, -sp * sf + cp * ct * cf, -cp * st],
-        [st * sf, st * cf, ct],
-    ]
+    M::new(
+        cp * cf - sp * ct * sf,
+        -cp * sf - sp * ct * cf,
+        sp * st,
+        sp * cf + cp * ct * sf,
+        -sp * sf + cp * ct * cf,
+        -cp * st,
+        st * sf,
+        st * cf,
+        ct,
+    )
 }
 
 /// The triad constructed from the orientation: $(\hat{\mathbf 1}, \hat{\mathbf 2},
 /// \hat{\mathbf 3}, \hat{\mathbf r})$.
 fn triad<T: S>(rot: &M<T>) -> [V<T>; 4] {
-    let one = scale(c(-1.0), &column(rot, 2));
-    let z = up::<T>();
-    let down_in_plane = add(&scale(c(-1.0), &z), &scale(dot(&z, &one), &one));
-    let three = scale(norm(&down_in_plane).recip(), &down_in_plane);
-    let two = cross(&three, &one);
-    let r_hat = cross(&two, &z);
+    let one = -rot.column(2).into_owned();
+    let z = V::<T>::z();
+    let down_in_plane = one * z.dot(&one) - z;
+    let three = down_in_plane * down_in_plane.dot(&down_in_plane).sqrt().recip();
+    let two = three.cross(&one);
+    let r_hat = two.cross(&z);
     [one, two, three, r_hat]
 }
 
@@ -358,13 +312,13 @@ fn kin<T: S>(h: &History, t: Dual<T, f64>) -> Kin<T> {
     let axes = triad(&rot);
     let [_, two, three, _] = axes;
     let heading = two[1].atan2(two[0]);
-    let mark = column(&rot, 0);
-    let face = dot(&mark, &three).atan2(dot(&mark, &two));
-    let rot_re: M<T> = std::array::from_fn(|i| std::array::from_fn(|j| rot[i][j].re));
-    let rot_dot: M<T> = std::array::from_fn(|i| std::array::from_fn(|j| rot[i][j].eps));
-    let frame: M<T> = std::array::from_fn(|i| std::array::from_fn(|j| axes[j][i].re));
-    let frame_dot: M<T> = std::array::from_fn(|i| std::array::from_fn(|j| axes[j][i].eps));
-    let u = mat_t_vec(&rot, &three);
+    let mark = rot.column(0).into_owned();
+    let face = mark.dot(&three).atan2(mark.dot(&two));
+    let rot_re: M<T> = rot.map(|x| x.re);
+    let rot_dot: M<T> = rot.map(|x| x.eps);
+    let columns = M::from_columns(&axes[..3]);
+    let (frame, frame_dot): (M<T>, M<T>) = (columns.map(|x| x.re), columns.map(|x| x.eps));
+    let u = rot.tr_mul(&three);
     Kin {
         alpha: theta.re,
         alpha_dot: theta.eps,
@@ -376,7 +330,7 @@ fn kin<T: S>(h: &History, t: Dual<T, f64>) -> Kin<T> {
         rates: std::array::from_fn(|i| eps(&axes[i])),
         omega: axial(&rot_re, &rot_dot),
         omega_123: axial(&frame, &frame_dot),
-        contact_rate: mat_vec(&rot_re, &eps(&u)),
+        contact_rate: rot_re * eps(&u),
     }
 }
 
@@ -403,7 +357,7 @@ fn sample(seed: u64, n: usize, rate: f64) -> Vec<(History, f64)> {
 
 /// A characteristic angular rate at a point (for relative errors of rates and velocities).
 fn rate_scale(k: &Kin<f64>) -> f64 {
-    k.precession.abs() + k.alpha_dot.abs() + norm_f(&k.omega)
+    k.precession.abs() + k.alpha_dot.abs() + k.omega.norm()
 }
 
 fn at(k: &Kin<f64>, what: &str) -> String {
@@ -412,7 +366,7 @@ fn at(k: &Kin<f64>, what: &str) -> String {
         k.alpha,
         k.alpha_dot,
         k.precession,
-        dot(&k.omega, &k.axes[0])
+        k.omega.dot(&k.axes[0])
     )
 }
 
@@ -442,12 +396,8 @@ fn identity(compared: &str, w: Worst, definition: bool) -> Finding {
 /// point $aR(\cos\vartheta, \sin\vartheta, 0)$ whose height is least): the reference for
 /// $\mathbf a$.
 fn lowest_rim_point(k: &Kin<f64>) -> V<f64> {
-    let angle = (-k.rot[2][1]).atan2(-k.rot[2][0]);
-    scale(A, &mat_vec(&k.rot, &[angle.cos(), angle.sin(), 0.0]))
-}
-
-fn v3(v: &V<f64>) -> Vector3<f64> {
-    Vector3::new(v[0], v[1], v[2])
+    let angle = (-k.rot[(2, 1)]).atan2(-k.rot[(2, 0)]);
+    k.rot * V::new(angle.cos(), angle.sin(), 0.0) * A
 }
 
 /// Every kinematic quantity of the paper's sec. 3, MEASURED on the constructed motion (see the
@@ -461,21 +411,21 @@ fn kin_bindings(k: &Kin<f64>) -> Bindings<f64> {
         .scalar("alpha_dot", k.alpha_dot)
         .scalar("Omega", k.precession)
         .scalar("omega_rel", k.omega_rel)
-        .scalar("omega_1", dot(&k.omega, &k.axes[ONE]))
+        .scalar("omega_1", k.omega.dot(&k.axes[ONE]))
         .scalar("a", A)
-        .vector("e1", v3(&k.axes[ONE]))
-        .vector("e2", v3(&k.axes[TWO]))
-        .vector("e3", v3(&k.axes[THREE]))
-        .vector("r_hat", v3(&k.axes[R_HAT]))
+        .vector("e1", k.axes[ONE])
+        .vector("e2", k.axes[TWO])
+        .vector("e3", k.axes[THREE])
+        .vector("r_hat", k.axes[R_HAT])
         .vector("z_hat", Vector3::z())
-        .vector("e1_rate", v3(&k.rates[ONE]))
-        .vector("e2_rate", v3(&k.rates[TWO]))
-        .vector("e3_rate", v3(&k.rates[THREE]))
-        .vector("r_hat_rate", v3(&k.rates[R_HAT]))
-        .vector("omega_vec", v3(&k.omega))
-        .vector("omega_123", v3(&k.omega_123))
-        .vector("a_vec", v3(&lowest_rim_point(k)))
-        .vector("v_cm", v3(&v_cm))
+        .vector("e1_rate", k.rates[ONE])
+        .vector("e2_rate", k.rates[TWO])
+        .vector("e3_rate", k.rates[THREE])
+        .vector("r_hat_rate", k.rates[R_HAT])
+        .vector("omega_vec", k.omega)
+        .vector("omega_123", k.omega_123)
+        .vector("a_vec", lowest_rim_point(k))
+        .vector("v_cm", v_cm)
         .vector("v_contact", Vector3::zeros())
 }
 

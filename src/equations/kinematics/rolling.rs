@@ -8,7 +8,7 @@ pub(super) const A: f64 = 0.0375;
 /// The centre of mass's velocity of a disk rolling without slipping: $\dot C - a\dot{\hat{\mathbf
 /// 3}}$, the contact point advancing on the table as it advances along the rim.
 pub(super) fn v_cm_rolling(k: &Kin<f64>) -> V<f64> {
-    sub(&scale(A, &k.contact_rate), &scale(A, &k.rates[THREE]))
+    (k.contact_rate * A) - (k.rates[THREE] * A)
 }
 
 /// Eq 12, $\mathbf v_{contact} = \mathbf v_{cm} + \vec\omega\times\mathbf a = 0$. Reference: a disk
@@ -39,8 +39,8 @@ pub(super) fn eq13(b: &Bench) -> Finding {
 /// (relative to the contact point): $(\hat{\mathbf z}\times\dot C)\,|\dot C|^2/((\dot C\times
 /// \ddot C)\cdot\hat{\mathbf z})$.
 pub(super) fn curvature_centre(v: &V<f64>, acc: &V<f64>) -> V<f64> {
-    let turn = cross(v, acc)[2];
-    scale(dot(v, v) / turn, &cross(&up(), v))
+    let turn = v.cross(acc)[2];
+    (V::z().cross(v)) * (v.dot(v) / turn)
 }
 
 /// Eq 14, $\mathbf r_{cm} = x_A\hat{\mathbf x} + y_A\hat{\mathbf y} + r\hat{\mathbf r} -
@@ -56,18 +56,18 @@ pub(super) fn eq14(b: &Bench) -> Finding {
     let points = sample(14, POINTS, RATE);
     for (h, t) in &points {
         let k2 = kin2(h, *t);
-        let v: V<f64> = std::array::from_fn(|i| A * k2.contact_rate[i].re);
-        let acc: V<f64> = std::array::from_fn(|i| A * k2.contact_rate[i].eps);
+        let v: V<f64> = k2.contact_rate.map(|x| x.re) * A;
+        let acc: V<f64> = k2.contact_rate.map(|x| x.eps) * A;
         let k = kin1(h, *t);
-        let contact = [0.0; 3];
-        let centre = add(&contact, &curvature_centre(&v, &acc));
-        let r = dot(&sub(&contact, &centre), &k.axes[R_HAT]);
+        let contact = V::zeros();
+        let centre = contact + curvature_centre(&v, &acc);
+        let r = (contact - centre).dot(&k.axes[R_HAT]);
         if r < 0.0 {
             negative += 1;
         }
-        let r_cm = sub(&contact, &scale(A, &k.axes[THREE]));
+        let r_cm = contact - (k.axes[THREE] * A);
         let bind = kin_bindings(&k)
-            .vector("r_cm", v3(&r_cm))
+            .vector("r_cm", r_cm)
             .scalar("x_A", centre[0])
             .scalar("y_A", centre[1])
             .scalar("r", r)
@@ -110,13 +110,11 @@ pub(super) fn eq15(b: &Bench) -> Finding {
             (x.re, x.eps)
         };
         let ((_, xa_dot), (_, ya_dot), (r, r_dot)) = (d(&xa), d(&ya), d(&rr));
-        let reference = add(
-            &add(&[xa_dot, ya_dot, 0.0], &scale(r_dot, &k.axes[R_HAT])),
-            &sub(&scale(r, &k.rates[R_HAT]), &scale(A, &k.rates[THREE])),
-        );
-        let sc = norm_f(&reference) + (A + r.abs()) * rate_scale(&k);
+        let reference = (V::new(xa_dot, ya_dot, 0.0) + (k.axes[R_HAT] * r_dot))
+            + ((k.rates[R_HAT] * r) - (k.rates[THREE] * A));
+        let sc = reference.norm() + (A + r.abs()) * rate_scale(&k);
         let bind = kin_bindings(&k)
-            .vector("v_cm", v3(&reference))
+            .vector("v_cm", reference)
             .scalar("x_A_dot", xa_dot)
             .scalar("y_A_dot", ya_dot)
             .scalar("r", r)
@@ -152,17 +150,17 @@ pub(super) fn steady(alpha: f64, precession: f64, omega_rel: f64) -> Steady {
     };
     let k2 = kin2(&h, 0.3);
     let k = kin1(&h, 0.3);
-    let v: V<f64> = std::array::from_fn(|i| A * k2.contact_rate[i].re);
-    let acc: V<f64> = std::array::from_fn(|i| A * k2.contact_rate[i].eps);
-    let contact = [0.0; 3];
-    let centre = add(&contact, &curvature_centre(&v, &acc));
-    let r_cm = sub(&contact, &scale(A, &k.axes[THREE]));
+    let v: V<f64> = k2.contact_rate.map(|x| x.re) * A;
+    let acc: V<f64> = k2.contact_rate.map(|x| x.eps) * A;
+    let contact = V::zeros();
+    let centre = contact + curvature_centre(&v, &acc);
+    let r_cm = contact - (k.axes[THREE] * A);
     Steady {
         alpha,
         precession: k.precession,
-        spin: dot(&k.omega, &k.axes[ONE]),
-        r: dot(&sub(&contact, &centre), &k.axes[R_HAT]),
-        b: dot(&sub(&r_cm, &centre), &k.axes[R_HAT]),
+        spin: k.omega.dot(&k.axes[ONE]),
+        r: (contact - centre).dot(&k.axes[R_HAT]),
+        b: (r_cm - centre).dot(&k.axes[R_HAT]),
     }
 }
 

@@ -54,7 +54,7 @@ fn the_constructed_triad_is_right_handed_and_alpha_is_the_tilt() {
     for (h, t) in sample(99, 50, RATE) {
         let k = kin1(&h, t);
         let [one, two, three, r] = k.axes;
-        let e = norm_f(&sub(&cross(&one, &two), &three));
+        let e = (one.cross(&two) - three).norm();
         assert!(e < 1e-14, "{e}");
         assert!(two[2].abs() < 1e-14 && r[2].abs() < 1e-14);
         // 3 dips below the horizontal by the plane's tilt.
