@@ -6,6 +6,7 @@ use crate::figures::chart::{Legend, Plot, Series, Style};
 use crate::figures::stability::{eq54, onset};
 use crate::figures::FigureError;
 use crate::figures::{Drawing, Figure};
+use crate::numerics::oscillation::try_bisect;
 use crate::paper::printed::printed_ratio;
 use crate::paper::{Bindings, Paper};
 use std::f64::consts::FRAC_PI_2;
@@ -64,15 +65,10 @@ pub fn figure(m: &Measured, paper: &Paper) -> Result<Figure, FigureError> {
     ];
     let (rolled0, rolled_half, slid0) = (m.rolled0.clone(), m.rolled_half.clone(), m.slid0.clone());
     // Where b = a/2 turns unstable: eq 54 at b = a/2 changes sign (bisection).
-    let (mut lo, mut hi) = (onset(paper, k)?.0, FRAC_PI_2 - 1e-9);
-    for _ in 0..100 {
-        let mid = 0.5 * (lo + hi);
-        if eq54(paper, k, mid, 0.5)? < 0.0 {
-            hi = mid;
-        } else {
-            lo = mid;
-        }
-    }
+    let (lo, hi) = (onset(paper, k)?.0, FRAC_PI_2 - 1e-9);
+    let negative = |al: f64| eq54(paper, k, al, 0.5).ok().map(|q| q < 0.0);
+    let (_, hi) = try_bisect(lo, hi, |_, _| false, negative)
+        .ok_or("the frequency figure: eq 54 cannot be evaluated at b = a/2")?;
     let unstable_from = (eq54(paper, k, hi, 0.5)? < 0.0).then(|| hi.to_degrees());
     let curve = |f: &dyn Fn(f64) -> Option<f64>| -> Vec<(f64, f64)> {
         (1..=179)

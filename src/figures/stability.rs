@@ -12,6 +12,7 @@
 use crate::figures::chart::{Axis, Legend, Plot, Series, Style};
 use crate::figures::FigureError;
 use crate::figures::{Drawing, Figure};
+use crate::numerics::oscillation::try_bisect;
 use crate::paper::{Bindings, Paper};
 use std::f64::consts::FRAC_PI_2;
 
@@ -52,18 +53,13 @@ pub fn bracket_zero(paper: &Paper, k: f64) -> Result<f64, FigureError> {
 /// The lowest tilt at which some b > 0 is unstable (rad) and the b/a there (the vertex
 /// $-B/2C$), by bisection on the discriminant between the bracket's zero and pi/2.
 pub fn onset(paper: &Paper, k: f64) -> Result<(f64, f64), FigureError> {
-    let (mut lo, mut hi) = (bracket_zero(paper, k)?, FRAC_PI_2 - 1e-9);
+    let (lo, hi) = (bracket_zero(paper, k)?, FRAC_PI_2 - 1e-9);
     if unstable_band(paper, k, hi)?.is_none() {
         return Err("the stability map: eq 54 is nowhere negative for b > 0".into());
     }
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if unstable_band(paper, k, mid)?.is_some() {
-            hi = mid;
-        } else {
-            lo = mid;
-        }
-    }
+    let band = |al: f64| unstable_band(paper, k, al).ok().map(|b| b.is_some());
+    let (_, hi) = try_bisect(lo, hi, |_, _| false, band)
+        .ok_or("the stability map: eq 54 cannot be evaluated near the onset")?;
     let [_, b, c] = quadratic(paper, k, hi)?;
     Ok((hi, -b / (2.0 * c)))
 }

@@ -67,8 +67,12 @@ pub fn bisect(lo: f64, hi: f64, rel_width: f64, holds: impl Fn(f64) -> bool) -> 
 
 /// Bisection on a predicate that may fail to answer (`None`, e.g. an integration that could
 /// not run): `holds` is taken false at `lo` and true at `hi`, the bracket is halved until
-/// `narrow(lo, hi)`, and the first `None` ends it with `None`. The one bisection loop of the
-/// crate: [`bisect`] is this with a predicate that always answers.
+/// `narrow(lo, hi)` or until the midpoint is one of the ends (the last bit), and the first
+/// `None` ends it with `None`. The one bisection loop of the crate: [`bisect`] is this with a
+/// predicate that always answers. Written here rather than taken from a root-finding crate
+/// (`roots`, `argmin`) because what the crate locates are the edges of predicates (a run slips
+/// or does not, a Jacobian has a growing mode or not, a printed relation's two sides change
+/// order), which those crates, built for real-valued functions, do not take.
 pub fn try_bisect(
     mut lo: f64,
     mut hi: f64,

@@ -9,6 +9,7 @@
 
 use super::{Bindings, EvalError, Paper, PaperError, Relation};
 use crate::catalogue::ClaimEntry;
+use crate::numerics::oscillation::try_bisect;
 
 /// The experimental fit of sec. 11 as the paper prints it (claims `beta-two-fits-data` and
 /// `fit-c-quarter`). Its disk is the uniform one, whose $k = 1/4$ the model computes
@@ -95,7 +96,7 @@ impl Paper {
     /// from positive to negative (rad), by bisection on its sign.
     pub fn eq54_bracket_zero(&self, k: f64) -> Result<f64, EvalError> {
         let negative = |al: f64| self.eq54_quadratic(k, al).map(|q| q[1] < 0.0);
-        let (mut lo, mut hi) = (1e-9, std::f64::consts::FRAC_PI_2 - 1e-9);
+        let (lo, hi) = (1e-9, std::f64::consts::FRAC_PI_2 - 1e-9);
         if negative(lo)? || !negative(hi)? {
             return Err(EvalError::Unbound(
                 "eq 54's coefficient of b/a does not turn from positive to negative between 0 \
@@ -103,15 +104,12 @@ impl Paper {
                     .into(),
             ));
         }
-        for _ in 0..200 {
-            let mid = 0.5 * (lo + hi);
-            if negative(mid)? {
-                hi = mid;
-            } else {
-                lo = mid;
-            }
-        }
-        Ok(0.5 * (lo + hi))
+        // To the last bit (the loop ends when the midpoint is an end).
+        try_bisect(lo, hi, |_, _| false, |al| negative(al).ok())
+            .map(|(lo, hi)| 0.5 * (lo + hi))
+            .ok_or_else(|| {
+                EvalError::Unbound("eq 54 cannot be evaluated near its bracket's zero".into())
+            })
     }
 }
 
@@ -153,28 +151,17 @@ pub fn solve_printed_with(
         let d = l - r;
         d.is_finite().then_some(d)
     };
-    let (mut lo, mut hi) = (lo.min(hi), lo.max(hi));
-    let (mut f_lo, f_hi) = (residual(lo)?, residual(hi)?);
+    let (lo, hi) = (lo.min(hi), lo.max(hi));
+    let (f_lo, f_hi) = (residual(lo)?, residual(hi)?);
     if f_lo == 0.0 {
         return Some(lo);
     }
     if f_lo.signum() == f_hi.signum() {
         return None;
     }
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if mid <= lo || mid >= hi {
-            break;
-        }
-        let f_mid = residual(mid)?;
-        if f_mid.signum() == f_lo.signum() {
-            lo = mid;
-            f_lo = f_mid;
-        } else {
-            hi = mid;
-        }
-    }
-    Some(0.5 * (lo + hi))
+    // To the last bit (the loop ends when the midpoint is an end).
+    let side = |x: f64| residual(x).map(|f| f.signum() != f_lo.signum());
+    try_bisect(lo, hi, |_, _| false, side).map(|(lo, hi)| 0.5 * (lo + hi))
 }
 
 /// $\varpi/\Omega_0$ that the printed eq `n` gives (its first relation solved for $\varpi$ with

@@ -19,7 +19,7 @@ pub fn scores_for(paper: &Paper) -> (Option<StoredScores>, String) {
             let sentence = format!(
                 "Mutation score: {killed} of {made} mutants of the printed equations killed, each \
                  by its own equation's check (a constant scaled by 1.001 or raised by 1, a sign \
-                 flipped, sin for cos, a term or factor dropped, a power raised, an inequality \
+                 flipped, sin for cos, a term or factor dropped, a cross product's factors swapped, a power raised, an inequality \
                  reversed); no score for eqs {}, whose printed forms already fail. Stored from \
                  rolling-disk mutants --json and recomputed by the test suite; each equation \
                  below gives its own.",
