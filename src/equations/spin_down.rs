@@ -9,7 +9,7 @@ use crate::finding::{Finding, Headline, Method, Tolerance, Worst};
 use crate::model::dissipation::PowerLaw;
 use crate::model::rolling::Rolling;
 use crate::model::steady::steady_motion;
-use crate::model::{Extras, Motion};
+use crate::model::Extras;
 use crate::paper::{Bindings, Relation};
 use crate::solve::{solve, Dynamics, Event, Problem, State};
 use num_dual::DualNum;
@@ -21,17 +21,8 @@ pub(crate) fn disk(k: f64) -> Disk {
     Disk::new(0.0375, k, 0.4, 9.81).expect("a valid disk")
 }
 
-/// The exact energy of the disk rolling without slipping (eq 26's content), generic so that its
-/// rate along a motion is exact by a dual number:
-/// $E = \frac{ma^2}{2}\left[(2k+1)\omega_1^2 + (k+1)\dot\alpha^2 + k\Omega^2\sin^2\alpha\right] + mga\sin\alpha$.
-pub(crate) fn energy<T: DualNum<f64> + Copy>(d: &Disk, m: &Motion<T>) -> T {
-    let k = d.k;
-    let s = m.alpha.sin();
-    let kinetic = m.spin * m.spin * (2.0 * k + 1.0)
-        + m.alpha_dot * m.alpha_dot * (k + 1.0)
-        + m.precession * m.precession * s * s * k;
-    kinetic * (0.5 * d.m * d.a * d.a) + s * (d.m * d.g * d.a)
-}
+/// The exact energy of the disk rolling without slipping (eq 26's content), the model's.
+pub(crate) use crate::model::rolling::energy;
 
 /// Steady precession with the centre of mass at rest ($b = 0$, $\omega_1 = 0$), from eq 24 with
 /// $\ddot\alpha = 0$: $\Omega^2 = g/(a k\sin\alpha)$, generic in alpha.

@@ -46,17 +46,16 @@ pub fn rates<T: DualNum<f64> + Copy>(
 }
 
 /// Eq 26: the total energy of a disk rolling without slipping,
-/// $E = \frac{m a^2}{2}\left[(2k+1)\omega_1^2 + (k+1)\dot\alpha^2 + k\Omega^2\sin^2\alpha + \frac{2g}{a}\sin\alpha\right]$.
-pub fn energy(disk: &Disk, m: &Motion) -> f64 {
+/// $E = \frac{m a^2}{2}\left[(2k+1)\omega_1^2 + (k+1)\dot\alpha^2 + k\Omega^2\sin^2\alpha + \frac{2g}{a}\sin\alpha\right]$,
+/// generic so that its rate along a motion is exact by a dual number (the checks of sec. 11
+/// differentiate it).
+pub fn energy<T: DualNum<f64> + Copy>(disk: &Disk, m: &Motion<T>) -> T {
     let k = disk.k;
     let s = m.alpha.sin();
-    0.5 * disk.m
-        * disk.a
-        * disk.a
-        * ((2.0 * k + 1.0) * m.spin * m.spin
-            + (k + 1.0) * m.alpha_dot * m.alpha_dot
-            + k * m.precession * m.precession * s * s
-            + 2.0 * disk.g_over_a() * s)
+    let kinetic = m.spin * m.spin * (2.0 * k + 1.0)
+        + m.alpha_dot * m.alpha_dot * (k + 1.0)
+        + m.precession * m.precession * s * s * k;
+    (kinetic + s * (2.0 * disk.g_over_a())) * (0.5 * disk.m * disk.a * disk.a)
 }
 
 /// Eq 63's $L_z = k m a^2(\Omega\sin^2\alpha - 2\omega_1\cos\alpha)$, the vertical component of
