@@ -1,7 +1,9 @@
-//! The one rule of the layout, enforced: the references (models, the solver and its events,
-//! numerics, the friction studies, the experiment's analysis) never see the paper's claims. A
-//! reference that imported `paper`, `equations` (the checks), `mutation` or `catalogue` could
-//! end up checking a claim against itself.
+//! The rules of the layout, enforced. First, the references (models, the solver and its
+//! events, numerics, the friction studies, the experiment's analysis) never see the paper's
+//! claims: a reference that imported `paper`, `equations` (the checks), `mutation` or
+//! `catalogue` could end up checking a claim against itself. Then: figures and renderers never
+//! integrate; no check file imports another (what checks share lives in the harness); no source
+//! file is much over 600 lines. Each rule has a test showing that its scan can fail.
 
 use std::path::Path;
 
@@ -201,4 +203,84 @@ fn the_length_rule_would_catch_a_long_file() {
     std::fs::remove_dir_all(&dir).unwrap();
     assert_eq!(long.len(), 1, "{long:?}");
     assert!(long[0].contains("over.rs"), "{long:?}");
+}
+
+/// The check modules of src/equations, one per part of the paper. The shared machinery they
+/// may all use (mod.rs's harness, spin_down.rs for sec. 11, steady_reference.rs for steady
+/// motions) is not among them.
+const CHECKS: &[&str] = &[
+    "air_film",
+    "claims",
+    "derivations",
+    "friction",
+    "frictionless",
+    "kinematics",
+    "motion",
+    "oscillation",
+    "slippage",
+    "steady",
+];
+
+/// The check modules other than `own` that a line of code imports.
+fn other_checks(own: &str, line: &str) -> Vec<&'static str> {
+    CHECKS
+        .iter()
+        .copied()
+        .filter(|c| *c != own)
+        .filter(|c| {
+            [
+                format!("super::{c}::"),
+                format!("super::super::{c}::"),
+                format!("equations::{c}::"),
+                format!("super::{c};"),
+                format!("equations::{c};"),
+            ]
+            .iter()
+            .any(|p| line.contains(p.as_str()))
+        })
+        .collect()
+}
+
+#[test]
+fn no_check_imports_another() {
+    let eqs = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/equations");
+    let mut files = Vec::new();
+    rust_files(&eqs, &mut files);
+    assert!(files.len() > 30, "only {} files found", files.len());
+    let mut offenders = Vec::new();
+    for f in &files {
+        let rel = f.strip_prefix(&eqs).unwrap();
+        let own = rel
+            .components()
+            .next()
+            .unwrap()
+            .as_os_str()
+            .to_string_lossy()
+            .trim_end_matches(".rs")
+            .to_string();
+        if !CHECKS.contains(&own.as_str()) || rel.ends_with("tests.rs") {
+            continue;
+        }
+        let text = std::fs::read_to_string(f).unwrap();
+        for (n, line) in code_lines(&text) {
+            for c in other_checks(&own, line) {
+                offenders.push(format!("{}:{n}: imports {c}: {}", f.display(), line.trim()));
+            }
+        }
+    }
+    assert!(
+        offenders.is_empty(),
+        "check files importing other checks (move what they share into the harness):\n{}",
+        offenders.join("\n")
+    );
+}
+
+#[test]
+fn the_check_rule_would_catch_an_import() {
+    assert_eq!(
+        other_checks("air_film", "use super::oscillation::{eq54};"),
+        vec!["oscillation"]
+    );
+    assert!(other_checks("oscillation", "use super::oscillation::eq54;").is_empty());
+    assert!(other_checks("air_film", "use super::spin_down::{disk};").is_empty());
 }
