@@ -146,3 +146,30 @@ fn the_precision_studys_printed_eq_54_is_eq_54() {
         assert!(close(printed, rust, scale), "eq 54: {printed} vs {rust}");
     }
 }
+
+#[test]
+fn the_experiments_law_is_eq_79_as_printed() {
+    use rolling_disk::experiment::Law;
+    let paper = built_in_paper();
+    let eq = paper.equation(79);
+    let last = eq.chains[0].sides.last().unwrap();
+    let mut p = Points::seeded(79);
+    for _ in 0..300 {
+        let law = Law {
+            beta: p.next(0.0, 4.0),
+            c: 10f64.powf(p.next(3.0, 12.0)),
+        };
+        let tau = 10f64.powf(p.next(-4.0, 0.0));
+        let bind = Bindings::new()
+            .scalar("C", law.c)
+            .scalar("beta", law.beta)
+            .scalar("t_0", tau)
+            .scalar("t", 0.0);
+        let printed = eq.scalar(last, &bind).unwrap();
+        let rust = law.precession(tau);
+        assert!(
+            close(printed, rust, rust.abs()),
+            "eq 79: {printed} vs {rust}"
+        );
+    }
+}
