@@ -41,6 +41,30 @@ pub enum Accent {
     Vec,
 }
 
+impl Symbol {
+    /// The symbol in the plain words the findings use elsewhere (`alpha_dot`, `Omega_0`,
+    /// `3-hat`, `dL_cm/dt`, `omega_rel`): readable as text in the HTML and the PDF alike, where
+    /// the canonical text of [`fmt::Display`] (`hat:bf:3`) is for symbol tables.
+    pub fn plain(&self) -> String {
+        let mut x = self.base.clone();
+        if !self.sub.is_empty() {
+            x = format!("{x}_{}", self.sub);
+        }
+        x = match self.accent {
+            Accent::None => x,
+            Accent::Dot => format!("{x}_dot"),
+            Accent::Ddot => format!("{x}_ddot"),
+            Accent::Hat => format!("{x}-hat"),
+            Accent::Vec => format!("vec {x}"),
+        };
+        match self.derivative {
+            0 => x,
+            1 => format!("d{x}/dt"),
+            n => format!("d{n}{x}/dt{n}"),
+        }
+    }
+}
+
 impl fmt::Display for Symbol {
     /// The canonical text of a symbol, as written in symbol tables: `alpha`, `dot:alpha`,
     /// `Omega_0`, `omega_10`, `bf:v_cm`, `hat:bf:1`, `vec:omega_123`, `d/dt:bf:r_cm`.
@@ -162,19 +186,41 @@ impl Expr {
     /// shows how the reader understood the printed text (`5 g / \epsilon (\beta+2) a k` is
     /// `(5 g) / (\epsilon (\beta+2) a k)`).
     pub fn to_latex(&self) -> String {
+        self.render(false)
+    }
+
+    /// [`Expr::to_latex`] in plain words ([`Symbol::plain`], `cos` for `\cos`, `x` for
+    /// `\times`): what messages and findings show a reader.
+    pub fn to_plain(&self) -> String {
+        self.render(true)
+    }
+
+    /// The rendering: plain words (`plain`) or the canonical symbol text.
+    fn render(&self, plain: bool) -> String {
         match self {
             Expr::Num(x) => format_number(*x),
+            Expr::Pi if plain => "pi".into(),
             Expr::Pi => r"\pi".into(),
+            Expr::Sym(s) if plain => s.plain(),
             Expr::Sym(s) => s.to_string(),
-            Expr::Neg(a) => format!("-({})", a.to_latex()),
-            Expr::Call(f, a) => format!("{}({})", f.latex(), a.to_latex()),
+            Expr::Neg(a) => format!("-({})", a.render(plain)),
+            Expr::Call(f, a) if plain => {
+                format!(
+                    "{}({})",
+                    f.latex().trim_start_matches('\\'),
+                    a.render(plain)
+                )
+            }
+            Expr::Call(f, a) => format!("{}({})", f.latex(), a.render(plain)),
             Expr::Bin(op, a, b) => {
-                let (a, b) = (a.to_latex(), b.to_latex());
+                let (a, b) = (a.render(plain), b.render(plain));
                 match op {
                     Op::Add => format!("({a} + {b})"),
                     Op::Sub => format!("({a} - {b})"),
                     Op::Mul => format!("{a} {b}"),
                     Op::Div => format!("({a})/({b})"),
+                    Op::Dot if plain => format!("({a} . {b})"),
+                    Op::Cross if plain => format!("({a} x {b})"),
                     Op::Dot => format!("({a} \\cdot {b})"),
                     Op::Cross => format!("({a} \\times {b})"),
                     Op::Pow => format!("({a})^{{{b}}}"),
@@ -264,4 +310,32 @@ pub struct Chain {
     pub sides: Vec<Expr>,
     /// The relations between adjacent sides (one fewer than the sides).
     pub rels: Vec<Rel>,
+}
+
+#[cfg(test)]
+mod plain_tests {
+    use crate::paper::parse::parse;
+
+    fn plain(latex: &str) -> String {
+        let (chains, _) = parse(latex).unwrap();
+        chains[0]
+            .sides
+            .iter()
+            .map(|s| s.to_plain())
+            .collect::<Vec<_>>()
+            .join(" | ")
+    }
+
+    #[test]
+    fn symbols_read_back_in_plain_words() {
+        assert_eq!(plain(r"\mathbf{a} = a \hat{\mathbf{3}}"), "a | a 3-hat");
+        assert_eq!(
+            plain(r"\dot{\alpha} = \Omega_0 \cos\alpha"),
+            "alpha_dot | Omega_0 cos(alpha)"
+        );
+        assert_eq!(
+            plain(r"\frac{d \mathbf{L}_{\mathrm{cm}}}{dt} = \mathbf{a} \times \mathbf{F}"),
+            "dL_cm/dt | (a x F)"
+        );
+    }
 }

@@ -120,9 +120,9 @@ impl Relation<'_> {
         format!(
             "relation {} ({} {} {})",
             self.index + 1,
-            self.lhs.to_latex(),
+            self.lhs.to_plain(),
             self.rel.latex(),
-            self.rhs.to_latex()
+            self.rhs.to_plain()
         )
     }
 }

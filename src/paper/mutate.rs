@@ -81,7 +81,7 @@ fn node_mutants(e: &Expr, target: usize) -> Vec<(String, Expr)> {
             );
         }
         Expr::Neg(a) => push(
-            format!("the sign of -{} dropped", a.to_latex()),
+            format!("the sign of -{} dropped", a.to_plain()),
             (**a).clone(),
         ),
         Expr::Call(f, a) => {
@@ -102,24 +102,24 @@ fn node_mutants(e: &Expr, target: usize) -> Vec<(String, Expr)> {
         Expr::Bin(op @ (Op::Add | Op::Sub), a, b) => {
             let flipped = if *op == Op::Add { Op::Sub } else { Op::Add };
             push(
-                format!("{:?} -> {:?} before {}", op, flipped, b.to_latex()),
+                format!("{:?} -> {:?} before {}", op, flipped, b.to_plain()),
                 Expr::Bin(flipped, a.clone(), b.clone()),
             );
-            push(format!("the term {} dropped", b.to_latex()), (**a).clone());
-            push(format!("the term {} dropped", a.to_latex()), (**b).clone());
+            push(format!("the term {} dropped", b.to_plain()), (**a).clone());
+            push(format!("the term {} dropped", a.to_plain()), (**b).clone());
         }
         Expr::Bin(Op::Mul, a, b) => {
             push(
-                format!("the factor {} dropped", b.to_latex()),
+                format!("the factor {} dropped", b.to_plain()),
                 (**a).clone(),
             );
             push(
-                format!("the factor {} dropped", a.to_latex()),
+                format!("the factor {} dropped", a.to_plain()),
                 (**b).clone(),
             );
         }
         Expr::Bin(Op::Cross, a, b) => push(
-            format!("{} x {} swapped", a.to_latex(), b.to_latex()),
+            format!("{} x {} swapped", a.to_plain(), b.to_plain()),
             Expr::Bin(Op::Cross, b.clone(), a.clone()),
         ),
         Expr::Bin(Op::Pow, a, b) => {
