@@ -241,6 +241,36 @@ pub fn run_checks(
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<Vec<Checked>, CheckError> {
     let jobs = jobs(bench, selection)?;
+    let mut all = run_jobs(bench, &jobs, threads, progress)?;
+    attach_causes(bench, &mut all);
+    Ok(all
+        .into_iter()
+        .zip(&jobs)
+        .filter_map(|(c, job)| job.4.then_some(c))
+        .collect())
+}
+
+/// The checks of the selection alone: no premise is run and no cause attached, for a study that
+/// reads only the findings (the corrections' verdicts), at a fraction of the cost.
+pub fn run_findings(
+    bench: &Bench,
+    selection: &Selection,
+    threads: usize,
+) -> Result<Vec<Checked>, CheckError> {
+    let jobs: Vec<Job> = jobs(bench, selection)?
+        .into_iter()
+        .filter(|job| job.4)
+        .collect();
+    run_jobs(bench, &jobs, threads, &|_, _| {})
+}
+
+/// Runs `jobs` on a pool of `threads` threads, in their order.
+fn run_jobs(
+    bench: &Bench,
+    jobs: &[Job],
+    threads: usize,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<Vec<Checked>, CheckError> {
     let total = jobs.len();
     let done = AtomicUsize::new(0);
     let pool = rayon::ThreadPoolBuilder::new()
@@ -250,7 +280,7 @@ pub fn run_checks(
             threads,
             reason: e.to_string(),
         })?;
-    let mut all: Vec<Checked> = pool.install(|| {
+    let all: Vec<Checked> = pool.install(|| {
         jobs.par_iter()
             .map(|job| {
                 let (subject, section, check, derivation, _) = job.clone();
@@ -274,12 +304,7 @@ pub fn run_checks(
             })
             .collect()
     });
-    attach_causes(bench, &mut all);
-    Ok(all
-        .into_iter()
-        .zip(&jobs)
-        .filter_map(|(c, job)| job.4.then_some(c))
-        .collect())
+    Ok(all)
 }
 
 /// Why the check of `subject` cannot run on `bench`'s paper, if it cannot: its claim is missing

@@ -13,7 +13,7 @@
 //! $C = 5g/\epsilon(\beta + 2)ak$ as printed, for the paper's fit
 //! ($\beta = 2$, $C^{-1/4} = 0.0055$ s).
 
-use crate::check::{run_checks, Checked, Selection, Subject};
+use crate::check::{run_findings, Checked, Selection, Subject};
 use crate::equations::{solve_printed, Bench};
 use crate::finding::{Finding, Headline, Verdict};
 use crate::paper::{Bindings, Paper, PaperError};
@@ -133,9 +133,8 @@ pub fn verify(
     corrections: &[Correction],
     threads: usize,
 ) -> Result<Vec<Verified>, CorrectionError> {
-    let quiet = |_: usize, _: usize| {};
-    let before = run_checks(bench, &selection(corrections), threads, &quiet)
-        .map_err(CorrectionError::Checks)?;
+    let before =
+        run_findings(bench, &selection(corrections), threads).map_err(CorrectionError::Checks)?;
     let after = check_corrected(bench, corrections, threads)?;
     Ok(assemble(bench.paper, corrections, &before, &after))
 }
@@ -149,7 +148,8 @@ fn selection(corrections: &[Correction]) -> Selection {
 }
 
 /// Runs the check of every corrected equation on `bench`'s paper with all the corrections
-/// substituted (the printed forms' checks are the report's own).
+/// substituted (the printed forms' checks are the report's own). Only the findings are read,
+/// so their premises are not re-run and no causes are attached.
 pub fn check_corrected(
     bench: &Bench,
     corrections: &[Correction],
@@ -160,8 +160,7 @@ pub fn check_corrected(
         paper: &corrected,
         ..*bench
     };
-    run_checks(&after_bench, &selection(corrections), threads, &|_, _| {})
-        .map_err(CorrectionError::Checks)
+    run_findings(&after_bench, &selection(corrections), threads).map_err(CorrectionError::Checks)
 }
 
 /// Each correction with the printed form's check (from `printed`, the checks of `paper`) and

@@ -78,17 +78,21 @@ pub(crate) fn slope(x: &[f64], y: &[f64]) -> f64 {
 
 pub(crate) fn descent(b: &Bench, d: &Disk, beta: f64, alpha0: f64) -> Option<Arc<Descent>> {
     type Key = ([u64; 4], crate::solve::Method);
-    static RUNS: OnceLock<Mutex<HashMap<Key, Option<Arc<Descent>>>>> = OnceLock::new();
+    type Slot = Arc<OnceLock<Option<Arc<Descent>>>>;
+    static RUNS: OnceLock<Mutex<HashMap<Key, Slot>>> = OnceLock::new();
     let key = ([b.rtol, d.k, beta, alpha0].map(f64::to_bits), b.method);
-    let runs = RUNS.get_or_init(Default::default);
-    if let Some(found) = runs.lock().unwrap_or_else(|p| p.into_inner()).get(&key) {
-        return found.clone();
-    }
-    let run = run_descent(b, d, beta, alpha0).map(Arc::new);
-    runs.lock()
+    // One slot per run, taken under the map's lock and filled outside it: a second caller
+    // (the corrections study runs beside the checks) waits for the first instead of
+    // integrating the same run again.
+    let slot: Slot = RUNS
+        .get_or_init(Default::default)
+        .lock()
         .unwrap_or_else(|p| p.into_inner())
-        .insert(key, run.clone());
-    run
+        .entry(key)
+        .or_default()
+        .clone();
+    slot.get_or_init(|| run_descent(b, d, beta, alpha0).map(Arc::new))
+        .clone()
 }
 
 /// [`descent`] without the cache.
