@@ -161,7 +161,7 @@ pub fn eq82(b: &Bench) -> Finding {
     .with_headline(Headline::new(
         "rate K of alpha^3 = K (t0 - t), uniform disk (k = 1/4), toy disk",
         paper_rate,
-        "printed",
+        "implied",
         paper_rate * ratio_uniform,
         "1/s",
         "alpha to 1e-3 rad",
@@ -216,7 +216,7 @@ pub fn eq83(b: &Bench) -> Finding {
     let h = Headline::new(
         "precession rate Omega at a given time remaining before t0 (toy disk)",
         f.claimed,
-        "printed",
+        "implied",
         f.reference,
         "rad/s",
         f.at.clone(),

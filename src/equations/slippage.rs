@@ -213,7 +213,7 @@ fn eq43(b: &Bench) -> Finding {
     let h = Headline::new(
         "friction coefficient mu that steady motion with negative b needs (eq 43 bounds it)",
         f.claimed,
-        "printed",
+        "implied",
         f.reference,
         "1",
         f.at.clone(),

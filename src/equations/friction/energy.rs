@@ -55,7 +55,7 @@ pub(super) fn eq72_at(b: &Bench, c0: f64) -> Finding {
                         "U / (m g a alpha) at alpha_dot^2 = {c0} g alpha / a (eq 72's last form)"
                     ),
                     printed / unit,
-                    "printed",
+                    "implied",
                     reference / unit,
                     "1",
                     format!("uniform disk (k = 1/4), alpha = {alpha}, b = 0"),
