@@ -325,7 +325,9 @@ impl Chart {
             }
             pos
         };
-        // Reference lines first, under the data.
+        // Reference lines first, under the data. Their labels' boxes, so that a label that
+        // would overlap one already placed (two marks close together) moves down below it.
+        let mut placed: Vec<(i32, i32, i32, i32)> = Vec::new();
         for m in &o.marks {
             if !m.at.is_finite() {
                 continue;
@@ -378,6 +380,15 @@ impl Chart {
                     }
                     _ => dy,
                 };
+                let (tw, th) = (tw as i32, th as i32);
+                let top = |dy: i32| ay - base.1 + dy;
+                let mut dy = dy;
+                while placed.iter().any(|&(x0, y0, x1, y1)| {
+                    lx <= x1 && lx + tw >= x0 && top(dy) <= y1 && top(dy) + th >= y0
+                }) {
+                    dy += th + px(2.0) as i32;
+                }
+                placed.push((lx, top(dy), lx + tw, top(dy) + th));
                 chart
                     .draw_series(std::iter::once(
                         EmptyElement::at(at)
