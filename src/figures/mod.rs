@@ -485,4 +485,25 @@ mod tests {
         let f = some(&["fig1", "stability-map"], &with_paper).unwrap();
         assert_eq!(f.len(), 2);
     }
+
+    #[test]
+    fn labels_of_close_reference_lines_do_not_overlap() {
+        use chart::{Axis, Plot, Series, Style};
+        let plot = Plot::new("t", "x", "y")
+            .with(Series::new("s", vec![(0.0, 0.0), (1.0, 1.0)], Style::Line))
+            .mark(Axis::X, 0.80, "first label")
+            .mark(Axis::X, 0.81, "second label");
+        chart::register_font();
+        let svg = Drawing::Plot(plot).to_svg(900, 600).unwrap();
+        // The y of the <text> holding each label.
+        let y_of = |label: &str| -> f64 {
+            let end = svg.find(label).unwrap();
+            let start = svg[..end].rfind("<text").unwrap();
+            let tag = &svg[start..end];
+            let y = tag.find(" y=\"").unwrap() + 4;
+            tag[y..y + tag[y..].find('"').unwrap()].parse().unwrap()
+        };
+        let (a, b) = (y_of("first label"), y_of("second label"));
+        assert!((a - b).abs() >= 10.0, "labels at y = {a} and {b}");
+    }
 }
