@@ -196,3 +196,60 @@ fn write_pngs_for_inspection() {
         println!("{}: {}\n  {}\n", f.name, f.title, f.caption);
     }
 }
+
+/// The characters of every `<text>` of an SVG (entities decoded).
+fn svg_text_chars(svg: &str) -> Vec<char> {
+    let mut out = Vec::new();
+    let mut rest = svg;
+    while let Some(i) = rest.find("<text") {
+        let Some(open) = rest[i..].find('>') else {
+            break;
+        };
+        let body = &rest[i + open + 1..];
+        let end = body.find("</text>").unwrap_or(body.len());
+        let text = body[..end]
+            .replace("&lt;", "<")
+            .replace("&gt;", ">")
+            .replace("&quot;", "\"")
+            .replace("&#39;", "'")
+            .replace("&amp;", "&");
+        out.extend(text.chars());
+        rest = &body[end..];
+    }
+    out
+}
+
+/// Every character any figure draws has a glyph in the figure font (no tofu boxes in the PNGs,
+/// no fallback to another font in the SVGs), and the check can fail: a character the font
+/// lacks (a CJK ideograph) is caught.
+#[test]
+fn every_character_of_every_figure_is_in_the_figure_font() {
+    use ab_glyph::Font;
+    let font = ab_glyph::FontRef::try_from_slice(rolling_disk::figures::chart::FIGURE_FONT_FILE)
+        .expect("the figure font parses");
+    let missing = |chars: &[char]| -> Vec<char> {
+        let mut m: Vec<char> = chars
+            .iter()
+            .copied()
+            .filter(|c| !c.is_whitespace() && font.glyph_id(*c).0 == 0)
+            .collect();
+        m.sort();
+        m.dedup();
+        m
+    };
+    let mut seen = 0;
+    for f in all() {
+        let svg = f.drawing.to_svg(760, 480).expect("draws");
+        assert!(
+            !svg.contains("font-family=\"sans-serif\""),
+            "{}: a text is not in the figure font",
+            f.name
+        );
+        let chars = svg_text_chars(&svg);
+        seen += chars.len();
+        let m = missing(&chars);
+        assert!(m.is_empty(), "{}: no glyph for {m:?}", f.name);
+    }
+    assert!(seen > 1000, "only {seen} characters of text found");
+    assert_eq!(missing(&['α', 'Ω', '₀', '图']), vec!['图']);
+}

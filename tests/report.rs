@@ -4,7 +4,7 @@
 
 use rolling_disk::catalogue;
 use rolling_disk::equations::Bench;
-use rolling_disk::report::{build::build, json, mathml, render};
+use rolling_disk::report::{build::build, fonts, json, mathml, render};
 use std::path::PathBuf;
 use std::process::Command;
 use std::sync::OnceLock;
@@ -84,15 +84,14 @@ fn html_refers_to_nothing_outside_itself() {
             "the report refers outside itself: {bad}"
         );
     }
-    // The one url() is the figures' font, embedded as data.
+    // The two url() are the text's and the math's fonts, embedded as data.
     let urls: Vec<&str> = html
         .match_indices("url(")
         .map(|(i, _)| &html[i..])
         .collect();
-    assert_eq!(urls.len(), 1, "one embedded font, no other url()");
-    assert!(urls
-        .iter()
-        .all(|u| u.starts_with("url(data:font/ttf;base64,")));
+    assert_eq!(urls.len(), 2, "two embedded fonts, no other url()");
+    assert!(urls[0].starts_with("url(data:font/ttf;base64,"));
+    assert!(urls[1].starts_with("url(data:font/otf;base64,"));
     // The only absolute URIs are XML namespace names, which nothing fetches.
     let namespaces = [
         "http://www.w3.org/1998/Math/MathML",
@@ -407,16 +406,18 @@ fn pdflatex_builds_the_latex_report_with_a_clean_log() {
 /// functions the raw converter got wrong, and one with a stretched bracket raised to a fraction.
 const SHOT_EQUATIONS: [u32; 4] = [26, 50, 54, 76];
 
-/// A page with one equation, white, in the browser's default math font at 24 px.
+/// A page with one equation, white, at 24 px, in the report's own embedded math font (so that
+/// the rendering does not depend on the fonts of the machine).
 fn equation_page(mathml: &str) -> String {
     format!(
-        "<!DOCTYPE html><html><head><meta charset=\"utf-8\"><style>html,body{{margin:0;\
+        "<!DOCTYPE html><html><head><meta charset=\"utf-8\"><style>{}html,body{{margin:0;\
          background:#fff;color:#000}}body{{padding:4px 8px;font-size:24px}}math{{margin:0}}\
-         </style></head><body>{mathml}</body></html>"
+         </style></head><body>{mathml}</body></html>",
+        fonts::css()
     )
 }
 
-/// Screenshots `page` in headless Chromium at 1100 x 150 CSS pixels, scale 1.
+/// Screenshots `page` in headless Chromium at 1500 x 150 CSS pixels, scale 1.
 fn screenshot(dir: &std::path::Path, name: &str, page: &str) -> PathBuf {
     let html = dir.join(format!("{name}.html"));
     let png = dir.join(format!("{name}.png"));
@@ -432,7 +433,7 @@ fn screenshot(dir: &std::path::Path, name: &str, page: &str) -> PathBuf {
             "--no-first-run",
             "--hide-scrollbars",
             "--force-device-scale-factor=1",
-            "--window-size=1100,150",
+            "--window-size=1500,150",
         ])
         .arg(format!(
             "--user-data-dir={}",

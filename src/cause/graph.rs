@@ -214,7 +214,7 @@ impl PremisesGraph {
             let (fill, stroke) = m.status.colours();
             let _ = write!(
                 s,
-                r##"<a href="#eq-{n}"><title>{note}</title><circle cx="{cx:.1}" cy="{cy:.1}" r="{r}" fill="{fill}" stroke="{stroke}" stroke-width="{sw}"/><text x="{cx:.1}" y="{ty:.1}" font-size="10" font-family="DejaVu Sans, sans-serif" text-anchor="middle" fill="{stroke}">{n}</text></a>"##,
+                r##"<a href="#eq-{n}"><title>{note}</title><circle cx="{cx:.1}" cy="{cy:.1}" r="{r}" fill="{fill}" stroke="{stroke}" stroke-width="{sw}"/><text x="{cx:.1}" y="{ty:.1}" font-size="10" font-family="DejaVu Serif, serif" text-anchor="middle" fill="{stroke}">{n}</text></a>"##,
                 n = m.number,
                 note = escape(&m.note),
                 fill = hex(fill),

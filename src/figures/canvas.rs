@@ -158,11 +158,14 @@ impl Chart {
     ) -> ChartBuilder<'a, 'b, DB> {
         let px = |v: f64| (v * scale).round() as u32;
         let mut b = ChartBuilder::on(root);
-        b.caption(&self.title, ("sans-serif", 17.0 * scale).into_font())
-            .margin(px(12.0))
-            .margin_right(px(22.0))
-            .x_label_area_size(px(48.0))
-            .y_label_area_size(px(72.0));
+        b.caption(
+            &self.title,
+            (super::chart::FIGURE_FONT, 17.0 * scale).into_font(),
+        )
+        .margin(px(12.0))
+        .margin_right(px(22.0))
+        .x_label_area_size(px(48.0))
+        .y_label_area_size(px(72.0));
         b
     }
 
@@ -198,7 +201,7 @@ impl Chart {
         Y::CoordDescType: ValueFormatter<f64>,
     {
         let px = |v: f64| (v * scale).round() as u32;
-        let font = |size: f64| ("sans-serif", size * scale).into_font();
+        let font = |size: f64| (super::chart::FIGURE_FONT, size * scale).into_font();
         let mut chart = self.builder(root, scale).build_cartesian_2d(x, y).drawn()?;
         // As many tick labels as fit: about one per 60 px across, one per 40 px up.
         let (pw, ph) = chart.plotting_area().dim_in_pixel();

@@ -53,7 +53,7 @@ pub fn size(
     glyph_area: i32,
     margin: i32,
 ) -> Result<(i32, i32), FigureError> {
-    let font: FontDesc = ("sans-serif", font_px).into_font();
+    let font: FontDesc = (super::chart::FIGURE_FONT, font_px).into_font();
     let line = font_px * 1.25;
     let (mut w, mut h) = (0i32, 0i32);
     for (i, l) in labels.iter().enumerate() {

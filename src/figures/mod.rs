@@ -114,7 +114,7 @@ impl Drawing {
                 top.draw(&Text::new(
                     p.title.clone(),
                     ((w / 2) as i32, (band / 2) as i32),
-                    ("sans-serif", 17.0 * scale)
+                    (chart::FIGURE_FONT, 17.0 * scale)
                         .into_font()
                         .color(&BLACK)
                         .pos(Pos::new(HPos::Center, VPos::Center)),

@@ -4,6 +4,7 @@
 
 pub mod build;
 pub mod error;
+pub mod fonts;
 pub mod friction;
 pub mod json;
 pub mod mathml;

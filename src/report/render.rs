@@ -52,12 +52,7 @@ fn render(report: &Report, template: &str) -> Result<String, ReportError> {
     let svgs: Vec<&str> = report.figures.iter().map(|f| f.svg.as_str()).collect();
     ctx.insert("svgs", &svgs);
     if template == "report.html" {
-        use base64::Engine;
-        let font: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
-        ctx.insert(
-            "figure_font",
-            &base64::engine::general_purpose::STANDARD.encode(font),
-        );
+        ctx.insert("fonts", super::fonts::css());
     }
     t.render(template, &ctx).map_err(|e| {
         let mut msg = format!("cannot render {template}: {e}");

@@ -14,7 +14,7 @@ impl Geometry {
         root.fill(&WHITE).map_err(err)?;
         let (w, h) = root.dim_in_pixel();
         let (w, h) = (w as f64, h as f64);
-        let font = |size: f64| ("sans-serif", size * scale).into_font();
+        let font = |size: f64| (crate::figures::chart::FIGURE_FONT, size * scale).into_font();
         let title_band = 34.0 * scale;
         let foot_band = 30.0 * scale;
         // Fit the projected scene into the area, same scale on both axes.
