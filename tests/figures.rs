@@ -102,14 +102,23 @@ fn axis_labels(f: &Figure) -> Vec<(String, String)> {
     }
 }
 
-/// Every plot, at both sizes the report draws (SVG 760 x 480 at scale 1, PNG 1800 x 1200 at
-/// scale 3): its legend covers no plotted pixel (bounding boxes, as plotters lays the legend
-/// out), each axis has at least three labelled ticks and a label.
+/// Every plot, at every size the report draws (SVG 760 x 480 at scale 1, PNG 1800 x 1200 at
+/// scale 3, and the paper's figures again at the paper's 3.0 in: SVG 360 x 270, PNG 1080 x 810):
+/// its legend covers no plotted pixel (bounding boxes, as plotters lays the legend out), each
+/// axis has at least three labelled ticks and a label.
 #[test]
 fn legends_cover_no_data_and_every_axis_has_ticks_and_a_label() {
+    use rolling_disk::figures::paper_scale;
     let mut defects = Vec::new();
     for f in all() {
-        for (w, h, scale) in [(760, 480, 1.0), (1800, 1200, 3.0)] {
+        let mut sizes = vec![(760, 480, 1.0), (1800, 1200, 3.0)];
+        if paper_scale::paper_figure(f.name).is_some() {
+            let (w, h) = paper_scale::size(f.name);
+            let s = paper_scale::PAPER_WIDTH_IN * 360.0 / w as f64;
+            sizes.push((w, h, 1.0));
+            sizes.push(((w as f64 * s) as u32, (h as f64 * s) as u32, s));
+        }
+        for (w, h, scale) in sizes {
             for (i, l) in f
                 .drawing
                 .layouts(w, h, scale)

@@ -7,6 +7,7 @@ use super::chart::{
     nonzero_tick_label, register_font, tick_label, Axis, Chart, Legend, Options, Style, PALETTE,
 };
 use super::legend::{self, Layout};
+use super::mark_label;
 use super::ranges::{bounds, checked, grid_step, merge_cells};
 use super::ticks;
 use crate::figures::{Drawn, FigureError};
@@ -328,9 +329,8 @@ impl Chart {
             }
             pos
         };
-        // Reference lines first, under the data. Their labels' boxes, so that a label that
-        // would overlap one already placed (two marks close together) moves down below it.
-        let mut placed: Vec<(i32, i32, i32, i32)> = Vec::new();
+        // Reference lines first, under the data; their labels placed by `mark_label`.
+        let mut placed: Vec<legend::Rect> = Vec::new();
         for m in &o.marks {
             if !m.at.is_finite() {
                 continue;
@@ -348,50 +348,43 @@ impl Chart {
                 ))
                 .drawn()?;
             if !m.label.is_empty() {
-                // The label just inside the plot, at the top of a vertical line or the right end
+                // The label just inside the plot, at the top of a vertical line or the left end
                 // of a horizontal one.
                 let at = match m.axis {
                     Axis::X => (m.at, yr.1),
                     Axis::Y => (xr.0, m.at),
                 };
-                // A vertical line in the right part of the plot has its label on its left.
                 let frac = if self.x_log {
                     (m.at.ln() - xr.0.ln()) / (xr.1.ln() - xr.0.ln())
                 } else {
                     (m.at - xr.0) / (xr.1 - xr.0)
                 };
-                let left = m.axis == Axis::X && frac > 0.6;
-                let (dx, dy) = match m.axis {
-                    Axis::X if left => (-(px(4.0) as i32), px(4.0) as i32),
-                    Axis::X => (px(4.0) as i32, px(4.0) as i32),
-                    Axis::Y => (px(6.0) as i32, -(px(16.0) as i32)),
-                };
-                let hpos = if left { HPos::Right } else { HPos::Left };
-                // A label the legend would hide moves down below the legend.
                 let (tw, th) = font(11.0).box_size(&m.label).drawn()?;
                 let (ax, ay) = chart.backend_coord(&at);
-                let (lx, ly) = (ax - base.0 + dx, ay - base.1 + dy);
-                let lx = if left { lx - tw as i32 } else { lx };
-                let dy = match layout.rect {
-                    Some(r)
-                        if lx <= r.x1
-                            && lx + tw as i32 >= r.x0
-                            && ly <= r.y1
-                            && ly + th as i32 >= r.y0 =>
-                    {
-                        dy + (r.y1 - ly) + px(4.0) as i32
-                    }
-                    _ => dy,
+                let x_edge = |x: f64| chart.backend_coord(&(x, yr.1)).0 - base.0;
+                let covered = |r: &legend::Rect| {
+                    self.series
+                        .iter()
+                        .flat_map(|s| s.points.iter())
+                        .filter(|p| inside(**p))
+                        .filter(|p| {
+                            let (x, y) = chart.backend_coord(p);
+                            r.contains((x - base.0, y - base.1))
+                        })
+                        .count()
                 };
-                let (tw, th) = (tw as i32, th as i32);
-                let top = |dy: i32| ay - base.1 + dy;
-                let mut dy = dy;
-                while placed.iter().any(|&(x0, y0, x1, y1)| {
-                    lx <= x1 && lx + tw >= x0 && top(dy) <= y1 && top(dy) + th >= y0
-                }) {
-                    dy += th + px(2.0) as i32;
-                }
-                placed.push((lx, top(dy), lx + tw, top(dy) + th));
+                let label = mark_label::Label {
+                    vertical: m.axis == Axis::X,
+                    at: (ax - base.0, ay - base.1),
+                    size: (tw as i32, th as i32),
+                    frac,
+                    plot_x: (x_edge(xr.0), x_edge(xr.1)),
+                    unit: scale,
+                };
+                let p = mark_label::place(&label, layout.rect, &placed, &covered);
+                placed.push(p.rect);
+                let hpos = if p.left { HPos::Right } else { HPos::Left };
+                let (dx, dy) = p.offset;
                 chart
                     .draw_series(std::iter::once(
                         EmptyElement::at(at)

@@ -68,22 +68,11 @@ fn tek04(e: &Experiment) -> Figure {
         "time t (s)",
         "phototransistor signal V (V)",
     )
-    .with(Series::new(
-        "signal (min and max per 1/900 of the record)",
-        shown,
-        Style::Line,
-    ))
-    .mark(Axis::X, t_end, format!("spin-down ends, {t_end:.3} s"))
+    .with(Series::new("signal envelope", shown, Style::Line))
+    .mark(Axis::X, t_end, format!("ends {t_end:.3} s"))
     .legend_at(Legend::UpperLeft);
-    let (vmin, vmax) = e
-        .trace
-        .v
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-            (a.min(*v), b.max(*v))
-        });
-    let span = vmax - vmin;
-    let plot = plot.y_range(vmin - 0.04 * span, vmax + 0.22 * span);
+    // No fixed y range: the automatic one grows at the top just enough for the legend, at
+    // every size the figure is drawn (the paper's 3 in included).
     Figure {
         name: "tek04",
         title: "The light signal over 10 s (the paper's tek04)".into(),
@@ -139,27 +128,13 @@ fn tek_zoom(e: &Experiment, name: &'static str, span: f64) -> Result<Figure, Fig
         "phototransistor signal V (V)",
     )
     .with(Series::new("signal", pts, Style::Line))
-    .with(Series::new(
-        "peak times t_i found by the analysis",
-        peaks,
-        Style::Triangles,
-    ))
+    .with(Series::new("peak times tᵢ", peaks, Style::Triangles))
     .mark(Axis::X, t_end, "spin-down ends")
     .legend_at(Legend::UpperLeft);
     if fit_t0 > from && fit_t0 < to {
-        plot = plot.mark(Axis::X, fit_t0, "fitted t0");
+        plot = plot.mark(Axis::X, fit_t0, "fitted t₀");
     }
-    let (vmin, vmax) = e
-        .trace
-        .v
-        .iter()
-        .zip(&e.trace.t)
-        .filter(|(_, t)| **t >= from && **t <= to)
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), (v, _)| {
-            (a.min(*v), b.max(*v))
-        });
-    let v_span = vmax - vmin;
-    plot = plot.y_range(vmin - 0.05 * v_span, vmax + 0.45 * v_span);
+    // No fixed y range (see tek04).
     let paper = if name == "tek01" { "tek01" } else { "tek02" };
     Ok(Figure {
         name,
@@ -217,16 +192,16 @@ fn omega(e: &Experiment) -> Result<Figure, FigureError> {
     let plot = Plot::new(
         "Precession rate per cycle",
         "time t (s)",
-        "Omega_i = 2 pi / (t_{i+1} - t_i) (rad/s)",
+        "Ωᵢ = 2π / (tᵢ₊₁ − tᵢ) (rad/s)",
     )
-    .with(Series::new("Omega_i, fitted cycles", fitted, Style::Points))
+    .with(Series::new("Ωᵢ, fitted cycles", fitted, Style::Points))
     .with(Series::new(
-        "Omega_i, left out (last peaks)",
+        "Ωᵢ, left out (last peaks)",
         left_out.clone(),
         Style::Crosses,
     ))
     .with(Series::new(
-        format!("eq 79 fitted: beta = {:.3}, t0 = {:.4} s", f.beta, f.t0),
+        format!("eq 79 fitted: β = {:.3}, t₀ = {:.4} s", f.beta, f.t0),
         law,
         Style::Dashed,
     ))
@@ -285,19 +260,19 @@ fn inverse_omega(e: &Experiment, name: &'static str, shift: f64) -> Result<Figur
     let x0 = pts.iter().map(|p| p.0).fold(f64::INFINITY, f64::min);
     let x1 = pts.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max);
     let mut plot = Plot::new(
-        format!("1/Omega against t0 - t, t0 = {t0:.3} s"),
-        "t0 - t (s)",
-        "1/Omega_i (s)",
+        format!("1/Ω against t₀ − t, t₀ = {t0:.3} s"),
+        "t₀ − t (s)",
+        "1/Ωᵢ (s)",
     )
     .log(true, true)
     .with(Series::new(
-        "1/Omega_i (fitted cycles)",
+        "1/Ωᵢ (fitted cycles)",
         pts.clone(),
         Style::Points,
     ));
     for beta in 0..=4 {
         plot = plot.with(Series::new(
-            format!("eq 84, beta = {beta}"),
+            format!("eq 84, β = {beta}"),
             line_through(xm, ym, 1.0 / (beta as f64 + 2.0), x0, x1),
             Style::Dashed,
         ));
@@ -383,19 +358,19 @@ fn odot(e: &Experiment) -> Result<Figure, FigureError> {
     let xm = (x0 * x1).sqrt();
     let ym = f.ln_k.exp() * (xm / f.omega_ref).powf(f.slope);
     let mut plot = Plot::new(
-        "Rate of change of Omega against Omega",
-        "Omega (rad/s)",
-        "dOmega/dt (rad/s^2)",
+        "Rate of change of Ω against Ω",
+        "Ω (rad/s)",
+        "dΩ/dt (rad/s²)",
     )
     .log(true, true)
     .with(Series::new(
-        "dOmega_i/dt (fitted cycles)",
+        "dΩᵢ/dt (fitted cycles)",
         positive.clone(),
         Style::Points,
     ));
     for beta in 0..=4 {
         plot = plot.with(Series::new(
-            format!("eq 85, beta = {beta}"),
+            format!("eq 85, β = {beta}"),
             line_through(xm, ym, beta as f64 + 3.0, x0, x1),
             Style::Dashed,
         ));
@@ -464,20 +439,16 @@ pub fn omega_band(a: &crate::experiment::Analysis) -> Figure {
         lo.push((t, om - d));
         hi.push((t, om + d));
     }
-    let plot = Plot::new(
-        "Omega_i with eq 79 and its 95 % band",
-        "time t (s)",
-        "Omega (rad/s)",
-    )
-    .with(Series::new("Omega_i, fitted cycles", pts, Style::Points))
-    .with(Series::new(
-        format!("eq 79: beta = {:.4} +- {:.4}", f.beta, f.beta_sigma),
-        law,
-        Style::Line,
-    ))
-    .with(Series::new("95 % band", lo, Style::Dotted))
-    .with(Series::new("", hi, Style::Dotted))
-    .legend_at(Legend::UpperLeft);
+    let plot = Plot::new("Ωᵢ with eq 79 and its 95 % band", "time t (s)", "Ω (rad/s)")
+        .with(Series::new("Ωᵢ, fitted cycles", pts, Style::Points))
+        .with(Series::new(
+            format!("eq 79: β = {:.4} ± {:.4}", f.beta, f.beta_sigma),
+            law,
+            Style::Line,
+        ))
+        .with(Series::new("95 % band", lo, Style::Dotted))
+        .with(Series::new("", hi, Style::Dotted))
+        .legend_at(Legend::UpperLeft);
     Figure {
         name: "omega_band",
         title: "The frequency track with the fitted law and its band".into(),
@@ -550,8 +521,8 @@ pub fn coverage(c: &crate::experiment::coverage::Coverage) -> Figure {
         "z (stated standard uncertainties)",
         "fraction inside +- z",
     )
-    .with(Series::new("beta", curve(&c.beta_pulls), Style::Points))
-    .with(Series::new("t0", curve(&c.t0_pulls), Style::Squares))
+    .with(Series::new("β", curve(&c.beta_pulls), Style::Points))
+    .with(Series::new("t₀", curve(&c.t0_pulls), Style::Squares))
     .with(Series::new("claimed (normal)", claimed, Style::Dashed))
     .mark(Axis::X, 1.96, "95 %")
     .legend_at(Legend::LowerRight);
@@ -574,21 +545,17 @@ pub fn sound_track(s: &crate::experiment::SoundAnalysis) -> Figure {
         .zip(&s.fit.model)
         .map(|(p, m)| (mid(p), *m))
         .collect();
-    let plot = Plot::new(
-        "The sound's fundamental, Omega",
-        "time t (s)",
-        "Omega (rad/s)",
-    )
-    .with(Series::new("spectral track (frames)", pts, Style::Points))
-    .with(Series::new(
-        format!(
-            "eq 79: beta = {:.3} +- {:.3}, t0 = {:.4} s",
-            s.fit.beta, s.fit.beta_sigma, s.fit.t0
-        ),
-        fit,
-        Style::Line,
-    ))
-    .legend_at(Legend::UpperLeft);
+    let plot = Plot::new("The sound's fundamental, Ω", "time t (s)", "Ω (rad/s)")
+        .with(Series::new("spectral track (frames)", pts, Style::Points))
+        .with(Series::new(
+            format!(
+                "eq 79: β = {:.3} ± {:.3}, t₀ = {:.4} s",
+                s.fit.beta, s.fit.beta_sigma, s.fit.t0
+            ),
+            fit,
+            Style::Line,
+        ))
+        .legend_at(Legend::UpperLeft);
     Figure {
         name: "sound_track",
         title: "Frequency track of a sound recording".into(),

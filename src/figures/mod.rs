@@ -32,6 +32,8 @@ pub mod friction;
 pub mod geometry;
 pub mod lab_frame;
 pub mod legend;
+mod mark_label;
+pub mod paper_scale;
 pub mod path;
 pub mod precision;
 pub mod ranges;
@@ -165,9 +167,21 @@ impl Drawing {
 
     /// The drawing as a PNG file at `path`: 1800 x 1200 px (6 x 4 in at 300 dpi), scale 3.
     pub fn to_png(&self, path: &std::path::Path) -> Result<(), FigureError> {
+        self.to_png_sized(path, (600, 400), 3.0)
+    }
+
+    /// The drawing as a PNG file at `path` laid out on `size` px with fonts and lines of their
+    /// usual size, every length then multiplied by `scale` for resolution.
+    pub fn to_png_sized(
+        &self,
+        path: &std::path::Path,
+        size: (u32, u32),
+        scale: f64,
+    ) -> Result<(), FigureError> {
+        let px = |v: u32| (v as f64 * scale).round() as u32;
         {
-            let root = BitMapBackend::new(path, (1800, 1200)).into_drawing_area();
-            self.draw(&root, 3.0)?;
+            let root = BitMapBackend::new(path, (px(size.0), px(size.1))).into_drawing_area();
+            self.draw(&root, scale)?;
         }
         Ok(())
     }

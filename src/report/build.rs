@@ -390,6 +390,15 @@ pub fn from_results(
                     d => d.to_svg(760, 480)?,
                 },
                 file: format!("figures/{}.png", f.name),
+                paper: match crate::figures::paper_scale::paper_figure(f.name) {
+                    Some((label, says)) => Some(super::PaperScaleView {
+                        label: label.to_string(),
+                        says: says.to_string(),
+                        svg: f.paper_svg()?,
+                        file: format!("figures/paper/{}.png", f.name),
+                    }),
+                    None => None,
+                },
             })
         })
         .collect::<Result<Vec<_>, ReportError>>()?;

@@ -253,6 +253,23 @@ pub struct FigureView {
     pub svg: String,
     /// File name of its PNG (LaTeX report), relative to the report.
     pub file: String,
+    /// For one of the paper's figures: its version at the paper's size, beside what the
+    /// paper's figure shows.
+    pub paper: Option<PaperScaleView>,
+}
+
+/// One of the paper's figures at the paper's 3.0 in width ([`crate::figures::paper_scale`]).
+#[derive(Debug, Clone, Serialize)]
+pub struct PaperScaleView {
+    /// Its label in the paper's LaTeX.
+    pub label: String,
+    /// What the paper's figure shows, in our words.
+    pub says: String,
+    /// Inline SVG at the paper's size (HTML report).
+    #[serde(skip)]
+    pub svg: String,
+    /// File name of its paper-size PNG (LaTeX report), relative to the report.
+    pub file: String,
 }
 
 /// A row of the speed/accuracy study.

@@ -51,6 +51,12 @@ fn render(report: &Report, template: &str) -> Result<String, ReportError> {
     let mut ctx = ctx;
     let svgs: Vec<&str> = report.figures.iter().map(|f| f.svg.as_str()).collect();
     ctx.insert("svgs", &svgs);
+    let paper_svgs: Vec<&str> = report
+        .figures
+        .iter()
+        .map(|f| f.paper.as_ref().map_or("", |p| p.svg.as_str()))
+        .collect();
+    ctx.insert("paper_svgs", &paper_svgs);
     if template == "report.html" {
         ctx.insert("fonts", super::fonts::css());
     }
@@ -105,18 +111,28 @@ pub fn write(
                     .map_err(|e| ReportError::io("create", &fig_dir, e))?;
                 // Each PNG is drawn on its own rayon thread; the files do not depend on that.
                 use rayon::prelude::*;
-                let pngs: Vec<PathBuf> = figures
+                let paper_dir = fig_dir.join("paper");
+                std::fs::create_dir_all(&paper_dir)
+                    .map_err(|e| ReportError::io("create", &paper_dir, e))?;
+                let png = |dir: &Path, name: &str, draw: &dyn Fn(&Path) -> Result<(), crate::figures::FigureError>| {
+                    let path = dir.join(format!("{name}.png"));
+                    let tmp = dir.join(format!(".{name}.{}.png", std::process::id()));
+                    draw(&tmp)?;
+                    std::fs::rename(&tmp, &path).map_err(|e| ReportError::io("write", &path, e))?;
+                    Ok::<_, ReportError>(path)
+                };
+                let pngs: Vec<Vec<PathBuf>> = figures
                     .par_iter()
                     .map(|fig| {
-                        let path = fig_dir.join(format!("{}.png", fig.name));
-                        let tmp = fig_dir.join(format!(".{}.{}.png", fig.name, std::process::id()));
-                        fig.drawing.to_png(&tmp)?;
-                        std::fs::rename(&tmp, &path)
-                            .map_err(|e| ReportError::io("write", &path, e))?;
-                        Ok(path)
+                        let mut out = vec![png(&fig_dir, fig.name, &|p| fig.drawing.to_png(p))?];
+                        // The paper's figures again at the paper's size.
+                        if crate::figures::paper_scale::paper_figure(fig.name).is_some() {
+                            out.push(png(&paper_dir, fig.name, &|p| fig.paper_png(p))?);
+                        }
+                        Ok(out)
                     })
                     .collect::<Result<_, ReportError>>()?;
-                written.extend(pngs);
+                written.extend(pngs.into_iter().flatten());
                 put("report.tex", latex(report)?, &mut written)?;
             }
         }

@@ -67,6 +67,8 @@ fn unicode_symbol(c: char) -> Option<&'static str> {
         '³' => r"$^3$",
         '₀' => r"$_0$",
         '₁' => r"$_1$",
+        'ᵢ' => r"$_i$",
+        '₊' => r"$_+$",
         '…' => r"\ldots{}",
         _ => return None,
     })

@@ -16,7 +16,29 @@ impl Geometry {
         let (w, h) = (w as f64, h as f64);
         let font = |size: f64| (crate::figures::chart::FIGURE_FONT, size * scale).into_font();
         let title_band = 34.0 * scale;
-        let foot_band = 30.0 * scale;
+        // The footnote of lengths and rates, on one line, or on two where one does not fit
+        // (the figure at the paper's 3 in width).
+        let lengths = format!(
+            "a = {:.1} mm, α = {:.2} rad, b = {:.2}a, r = b + a cos α = {:.2}a",
+            self.a * 1e3,
+            self.alpha,
+            self.b / self.a,
+            self.r / self.a,
+        );
+        let rates = format!(
+            "Ω₀ = {:.2} rad/s, ω₁₀ = {:.2} rad/s (eqs 28-29)",
+            self.precession, self.spin
+        );
+        let one = format!("{lengths}; {rates}");
+        let fits = root
+            .estimate_text_size(&one, &font(12.0).into_text_style(root))
+            .map_or(true, |(tw, _)| (tw as f64) < w - 16.0 * scale);
+        let foot = if fits {
+            vec![one]
+        } else {
+            vec![lengths, rates]
+        };
+        let foot_band = (30.0 + 15.0 * (foot.len() - 1) as f64) * scale;
         // Fit the projected scene into the area, same scale on both axes.
         let shapes = self.shapes();
         let mut pts = Vec::new();
@@ -202,24 +224,17 @@ impl Geometry {
                 .pos(Pos::new(HPos::Center, VPos::Center)),
         ))
         .map_err(err)?;
-        let foot = format!(
-            "a = {:.1} mm, α = {:.2} rad, b = {:.2}a, r = b + a cos α = {:.2}a; \
-             Ω0 = {:.2} rad/s, ω10 = {:.2} rad/s (eqs 28-29)",
-            self.a * 1e3,
-            self.alpha,
-            self.b / self.a,
-            self.r / self.a,
-            self.precession,
-            self.spin
-        );
-        root.draw(&Text::new(
-            foot,
-            ((0.5 * w) as i32, (h - 16.0 * scale) as i32),
-            font(12.0)
-                .color(&RGBColor(70, 70, 70))
-                .pos(Pos::new(HPos::Center, VPos::Center)),
-        ))
-        .map_err(err)?;
+        for (i, line) in foot.iter().enumerate() {
+            let from_bottom = (16.0 + 15.0 * (foot.len() - 1 - i) as f64) * scale;
+            root.draw(&Text::new(
+                line.clone(),
+                ((0.5 * w) as i32, (h - from_bottom) as i32),
+                font(12.0)
+                    .color(&RGBColor(70, 70, 70))
+                    .pos(Pos::new(HPos::Center, VPos::Center)),
+            ))
+            .map_err(err)?;
+        }
         root.present().map_err(err)
     }
 }
