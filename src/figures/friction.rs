@@ -118,7 +118,7 @@ pub fn slip_stick(r: &FrictionResults) -> Result<Figure, FigureError> {
             events = run.contact_events.len(),
         ),
         drawing: Drawing::Panels(Panels {
-            title: format!("Slip-stick scene, mu = {}", r.mu),
+            title: format!("Slip-stick scene, μ = {}", r.mu),
             plots: vec![speed, force, energy],
         }),
     })

@@ -123,7 +123,7 @@ pub fn figure(paper: &Paper) -> Result<Figure, FigureError> {
     let zero = bracket_zero(paper, k)?.to_degrees();
     let plot = Plot::new(
         "Where small oscillations about steady motion grow (k = 1/4)",
-        "tilt α0 (degrees)",
+        "tilt α₀ (degrees)",
         "b/a (centre of mass's circle / disk radius)",
     )
     .x_range(0.0, 90.0)
