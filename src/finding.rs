@@ -142,6 +142,9 @@ pub struct Worst {
     pub at: String,
     /// How many points were compared.
     pub points: usize,
+    /// The unit of `claimed` and `reference` there, as paper/symbols.yaml writes it (`1` for a
+    /// pure number); empty when the comparison did not say.
+    pub unit: String,
 }
 
 impl Default for Worst {
@@ -152,6 +155,7 @@ impl Default for Worst {
             reference: f64::NAN,
             at: String::new(),
             points: 0,
+            unit: String::new(),
         }
     }
 }
@@ -160,6 +164,18 @@ impl Worst {
     /// Records one comparison; `scale` turns the difference into a relative error (pass
     /// `reference.abs()` for a plain relative error, or a characteristic size of the quantity).
     pub fn add(&mut self, claimed: f64, reference: f64, scale: f64, at: impl FnOnce() -> String) {
+        self.add_in(claimed, reference, scale, "", at);
+    }
+
+    /// [`Worst::add`] for values in `unit` (kept with the worst point).
+    pub fn add_in(
+        &mut self,
+        claimed: f64,
+        reference: f64,
+        scale: f64,
+        unit: &str,
+        at: impl FnOnce() -> String,
+    ) {
         self.points += 1;
         let mut e = (claimed - reference).abs() / scale;
         if !e.is_finite() {
@@ -170,6 +186,7 @@ impl Worst {
             self.claimed = claimed;
             self.reference = reference;
             self.at = at();
+            self.unit = unit.to_string();
         }
     }
 }
@@ -185,6 +202,12 @@ pub struct Finding {
     pub claimed: f64,
     /// The reference value at the worst point.
     pub reference: f64,
+    /// The unit of `claimed` and `reference` as paper/symbols.yaml writes it (`1` for a pure
+    /// number; `order` when they are the claimed and fitted orders of an approximation), where
+    /// the comparison knows it: the printed relations compared side by side take it from a side
+    /// of the chain that is one symbol, the other checks state it ([`Finding::in_unit`]). Empty
+    /// where a check does not say.
+    pub unit: String,
     /// The error there (relative unless `compared` says otherwise).
     pub error: f64,
     /// The tolerance and its rule.
@@ -260,6 +283,7 @@ impl Finding {
             compared: compared.into(),
             claimed: worst.claimed,
             reference: worst.reference,
+            unit: worst.unit,
             error: worst.error,
             at: format!("{} (worst of {} points)", worst.at, worst.points),
             tolerance,
@@ -299,6 +323,7 @@ impl Finding {
             compared: compared.into(),
             claimed: claimed_order,
             reference: measured,
+            unit: "order".into(),
             error: err,
             at: format!(
                 "small parameter from {:.3e} to {:.3e}; error {:.3e} at the smallest",
@@ -322,7 +347,22 @@ impl Finding {
 
     /// Sets the headline comparison.
     pub fn with_headline(mut self, h: Headline) -> Self {
+        // The headline's unit is the finding's where the two compare the same values.
+        let same = |a: f64, b: f64| a.to_bits() == b.to_bits();
+        if self.unit.is_empty() && same(h.paper, self.claimed) && same(h.reference, self.reference)
+        {
+            self.unit = h.unit.clone();
+        }
         self.headline = Some(h);
+        self
+    }
+
+    /// States the unit of `claimed` and `reference` (as paper/symbols.yaml writes units; `1`
+    /// for a pure number), unless the comparison already recorded one.
+    pub fn in_unit(mut self, unit: &str) -> Self {
+        if self.unit.is_empty() {
+            self.unit = unit.to_string();
+        }
         self
     }
 

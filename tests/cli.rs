@@ -189,6 +189,44 @@ fn check_json_validates_and_says_root_causes_and_inherited_errors() {
     assert_eq!(checks.len(), 9);
 }
 
+/// Issue 18: every checked finding says what unit its printed and true values are in (the
+/// unit of a printed relation's sides from the chain's one-symbol side, `order` for an
+/// approximation's orders, otherwise stated by the check), and the report shows it.
+#[test]
+fn every_checked_finding_states_the_unit_of_its_values() {
+    let (ok, out, err) = cli(&["check", "--json"]);
+    assert!(ok, "{err}");
+    let doc: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let mut missing = Vec::new();
+    let mut checked = 0;
+    for c in doc["checks"].as_array().unwrap() {
+        let o = &c["outcome"];
+        if o["status"] != "checked" {
+            continue;
+        }
+        checked += 1;
+        if o["unit"].as_str().is_none_or(|u| u.is_empty()) {
+            missing.push(c["name"].to_string());
+        }
+    }
+    assert!(checked > 100, "{checked}");
+    assert!(missing.is_empty(), "no unit: {missing:?}");
+    let unit = |name: &str| {
+        doc["checks"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|c| c["name"] == name)
+            .map(|c| c["outcome"]["unit"].clone())
+    };
+    // From a one-symbol side of the chain: eq 26's E, eq 3's omega_123, eq 29's Omega_0^2 (the
+    // check states it: no side is one symbol), eq 55's orders.
+    assert_eq!(unit("eq 26"), Some(serde_json::json!("J")));
+    assert_eq!(unit("eq 3"), Some(serde_json::json!("rad/s")));
+    assert_eq!(unit("eq 29"), Some(serde_json::json!("rad^2/s^2")));
+    assert_eq!(unit("eq 55"), Some(serde_json::json!("order")));
+}
+
 #[test]
 fn experiment_simulate_then_analyze_round_trips_and_bad_csvs_are_refused() {
     let dir = temp_dir("experiment");

@@ -194,8 +194,12 @@ pub(crate) fn print_table(checked: &[Checked]) {
     for c in checked {
         if let Ok(f) = &c.finding {
             if !f.verdict.passes() {
+                let unit = match f.unit.as_str() {
+                    "" | "1" => String::new(),
+                    u => format!(" {u}"),
+                };
                 println!(
-                    "\n{} FAILS: {}\n  claimed {:.9e}, reference {:.9e}, error {:.3e} > {:.3e} ({})\n  at {}",
+                    "\n{} FAILS: {}\n  claimed {:.9e}{unit}, reference {:.9e}{unit}, error {:.3e} > {:.3e} ({})\n  at {}",
                     c.subject.name(),
                     f.compared,
                     f.claimed,

@@ -158,6 +158,7 @@ pub fn eq82(b: &Bench) -> Finding {
         film_tolerance(film),
         false,
     )
+    .in_unit("s")
     .with_headline(Headline::new(
         "rate K of alpha^3 = K (t0 - t), uniform disk (k = 1/4), toy disk",
         paper_rate,

@@ -308,14 +308,25 @@ pub(crate) fn printed_relation(
         .eval(r.lhs, bind)
         .and_then(|l| eq.eval(r.rhs, bind).map(|rr| (l, rr)));
     let name = || format!("eq {n} {}", r.name());
+    // The sides' unit: that of a side of the chain that is one symbol (every side of a chain
+    // of equalities has the same), this relation's own sides first.
+    let chain = &eq.chains[r.chain].sides;
+    let unit = [r.lhs, r.rhs]
+        .into_iter()
+        .chain(chain.iter())
+        .find_map(|e| match e {
+            crate::paper::Expr::Sym(s) => eq.symbols.get(s).map(|i| i.unit.as_str()),
+            _ => None,
+        })
+        .unwrap_or("");
     match sides {
-        Ok((Value::Scalar(l), Value::Scalar(rr))) => {
-            w.add(b.claim(rr), l, scale, || format!("{}: {}", name(), at()))
-        }
+        Ok((Value::Scalar(l), Value::Scalar(rr))) => w.add_in(b.claim(rr), l, scale, unit, || {
+            format!("{}: {}", name(), at())
+        }),
         Ok((l, rr)) => match (l.vector(), rr.vector()) {
             (Ok(l), Ok(rr)) => {
                 for i in 0..3 {
-                    w.add(b.claim(rr[i]), l[i], scale, || {
+                    w.add_in(b.claim(rr[i]), l[i], scale, unit, || {
                         format!("{}, lab component {}: {}", name(), ["x", "y", "z"][i], at())
                     });
                 }

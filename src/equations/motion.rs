@@ -151,6 +151,10 @@ fn residuals(b: &Bench, n: u32) -> Finding {
         flow_differences(),
         false,
     )
+    .in_unit(match n {
+        24 => "1/s^2",
+        _ => "rad/s^2",
+    })
     .shown_by("figure lab-frame-difference")
 }
 

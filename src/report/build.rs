@@ -47,13 +47,21 @@ const SECTIONS: [(u32, &str); 10] = [
 /// Claimed and reference values as a reader should see them: for an approximation these are
 /// the claimed and the fitted orders.
 fn values(f: &Finding) -> (String, String) {
-    if f.method == crate::finding::Method::Asymptotic {
+    if f.method == crate::finding::Method::Asymptotic || f.unit == "order" {
         (
             format!("order {}", fmt_num(f.claimed)),
             format!("order {:.2}", f.reference),
         )
     } else {
-        (fmt_num(f.claimed), fmt_num(f.reference))
+        // With the unit where the check knows it (none shown for a pure number).
+        let unit = match f.unit.as_str() {
+            "" | "1" | "order" => String::new(),
+            u => format!(" {u}"),
+        };
+        (
+            format!("{}{unit}", fmt_num(f.claimed)),
+            format!("{}{unit}", fmt_num(f.reference)),
+        )
     }
 }
 

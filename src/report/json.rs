@@ -328,6 +328,11 @@ pub enum Outcome {
         claimed: f64,
         /// The reference value there (for an approximation: the fitted order).
         reference: f64,
+        /// The unit of `claimed` and `reference` as paper/symbols.yaml or claims.yaml writes it
+        /// (`1` for a pure number), or null where the comparison does not carry one (an
+        /// approximation's orders; a check whose values are an error or a derived ratio, named
+        /// by `compared` and its headline).
+        unit: Option<String>,
         /// The error there.
         error: f64,
         /// The largest error accepted.
@@ -379,6 +384,7 @@ impl Outcome {
             compared: f.compared.clone(),
             claimed: f.claimed,
             reference: f.reference,
+            unit: (!f.unit.is_empty()).then(|| f.unit.clone()),
             error: f.error,
             tolerance: f.tolerance.value,
             tolerance_rule: f.tolerance.rule.clone(),

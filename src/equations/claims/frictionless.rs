@@ -109,7 +109,8 @@ pub(super) fn rolling_threshold_uniform(b: &Bench) -> Finding {
         thr,
         Tolerance::bisection(WIDTH),
         "bisection on varpi^2 of the linearized eqs 23-25 at alpha = pi/2".into(),
-    );
+    )
+    .in_unit("sqrt(g/a)");
     let printed = stated(
         b,
         "rolling-threshold-uniform",
@@ -134,7 +135,8 @@ pub(super) fn thresholds_ratio(b: &Bench) -> Finding {
         ratio,
         Tolerance::bisection(2.0 * WIDTH),
         format!("ratio {ratio:.6} {} 2", if ratio > 2.0 { ">" } else { "<=" }),
-    );
+    )
+    .in_unit("1");
     if ratio <= 2.0 {
         f.verdict = crate::finding::Verdict::Fails;
     }

@@ -132,6 +132,7 @@ pub(super) fn stated_finding(
     let Some(rule) = &c.rule else {
         unreachable!("check::missing_input runs the check only when `{id}` has its rule")
     };
+    let unit = unit_of(&c.unit);
     let tolerance = |value: f64| Tolerance {
         value,
         rule: rule.describe(c.claimed_value, &c.unit),
@@ -153,6 +154,7 @@ pub(super) fn stated_finding(
             reference: computed,
             at: format!("{at}; the stated range is {lo} to {hi}"),
             points: 1,
+            unit: unit.clone(),
         };
         return Finding::from_worst(method, compared, w, tolerance(0.0), false);
     }
@@ -163,7 +165,7 @@ pub(super) fn stated_finding(
     let mut w = Worst::default();
     if let Some(digits) = rule.digits {
         let rounded = round_sig(computed, digits as i32);
-        w.add(claimed, rounded, printed.abs(), || {
+        w.add_in(claimed, rounded, printed.abs(), &unit, || {
             format!(
                 "{at}; computed {computed:.6} rounds to {rounded} at {digits} significant digit(s)"
             )
@@ -185,6 +187,7 @@ pub(super) fn stated_finding(
                 error.exp()
             ),
             points: 1,
+            unit: unit.clone(),
         };
         return Finding::from_worst(method, compared, w, tolerance(f.ln()), false);
     }
@@ -201,11 +204,12 @@ pub(super) fn stated_finding(
             reference: computed,
             at: format!("{at}; the bound with its slack is {limit:.6e}"),
             points: 1,
+            unit: unit.clone(),
         };
         return Finding::from_worst(method, compared, w, tolerance(0.0), false);
     }
     let within = rule.within.unwrap_or(0.0);
-    w.add(claimed, computed, claimed.abs(), || at);
+    w.add_in(claimed, computed, claimed.abs(), &unit, || at);
     Finding::from_worst(method, compared, w, tolerance(within), false)
 }
 

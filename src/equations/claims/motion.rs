@@ -206,7 +206,8 @@ pub(super) fn no_steady_motion_beyond_vertical(b: &Bench) -> Finding {
         w,
         Tolerance::bisection(WIDTH),
         false,
-    );
+    )
+    .in_unit("rad");
     f.at = format!("{}; no equilibrium on 464 grid points in (pi/2, pi)", f.at);
     f
 }

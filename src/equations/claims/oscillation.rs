@@ -128,7 +128,8 @@ pub(super) fn negative_b_always_stable(b: &Bench) -> Finding {
         w,
         linearization_tolerance(),
         false,
-    );
+    )
+    .in_unit("1");
     f.at = format!(
         "{}; smallest ratio to the derived positive lower bound {lowest:.4}",
         f.at
@@ -330,7 +331,8 @@ pub(super) fn rattling_needs_more_friction(b: &Bench) -> Finding {
                 "NOT RISING with the amplitude"
             }
         ),
-    );
+    )
+    .in_unit("1");
     if !rising {
         f.verdict = crate::finding::Verdict::Fails;
     }

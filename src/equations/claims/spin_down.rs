@@ -218,6 +218,7 @@ pub(super) fn omega_units_hz_vs_rad_per_s(b: &Bench) -> Finding {
         2,
         at.clone(),
     )
+    .in_unit("s")
     .with_headline(Headline::new(
         format!("period 1/Omega if the printed {omega} were in Hz"),
         period,
@@ -404,7 +405,8 @@ pub(super) fn larger_t0_lowers_beta(b: &Bench) -> Finding {
                 .collect::<Vec<_>>()
                 .join(", ")
         ),
-    );
+    )
+    .in_unit("1");
     if !falls {
         f.verdict = crate::finding::Verdict::Fails;
     }

@@ -60,4 +60,5 @@ pub fn eq85(b: &Bench) -> Finding {
         Tolerance::roundoff(),
         false,
     )
+    .in_unit("rad^-(beta+2) s^(beta+1)")
 }

@@ -88,4 +88,5 @@ pub(super) fn lift_off_check(b: &Bench, n: u32) -> Finding {
         Tolerance::bisection(WIDTH),
         false,
     )
+    .in_unit(if n == 80 { "rad/s" } else { "s" })
 }

@@ -145,7 +145,7 @@ pub(super) fn eq60(b: &Bench) -> Finding {
                         *spin += 0.5 * (r0 + rate) * (t - t0);
                     }
                     *prev = Some((*t, rate));
-                    worst.add(b.claim(*spin), y[3], m.spin.abs(), || {
+                    worst.add_in(b.claim(*spin), y[3], m.spin.abs(), "rad/s", || {
                         format!("spin implied by eq 60 {}: {}", r.name(), at())
                     });
                 }
@@ -191,6 +191,7 @@ pub(super) fn eq61(b: &Bench) -> Finding {
         Tolerance::roundoff(),
         false,
     )
+    .in_unit("1/s^2")
 }
 
 /// Eq 62, $\dot\Omega\sin\alpha + 2\dot\alpha\Omega\cos\alpha + 2\omega_1\dot\alpha = 0$, as
@@ -203,6 +204,7 @@ pub(super) fn eq62(b: &Bench) -> Finding {
         Tolerance::roundoff(),
         false,
     )
+    .in_unit("rad/s^2")
 }
 
 /// The vertical angular momentum about the centre of mass from geometry:

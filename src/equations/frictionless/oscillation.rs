@@ -181,7 +181,7 @@ pub(super) fn eq69(b: &Bench) -> Finding {
                 format!("{}, delta = {delta:.4}", at())
             });
         }
-        worst.add(0.0, j_ad, j_a.abs().sqrt(), at);
+        worst.add_in(0.0, j_ad, j_a.abs().sqrt(), "1/s", at);
     });
     Finding::from_worst(
         Method::Linearization,
@@ -190,6 +190,7 @@ pub(super) fn eq69(b: &Bench) -> Finding {
         Tolerance::roundoff(),
         false,
     )
+    .in_unit("rad/s^2")
 }
 
 /// Eq 70, $\varpi^2(k + \cos^2\alpha_0) = k\Omega_0^2(1 + 2\cos^2\alpha_0) - \frac ga\sin\alpha_0 = 3k\Omega_0^2\cos^2\alpha_0$:
@@ -213,6 +214,7 @@ pub(super) fn eq70(b: &Bench) -> Finding {
         Tolerance::roundoff(),
         false,
     )
+    .in_unit("rad^2/s^2")
 }
 
 /// Eq 71, $\varpi/\Omega_0 = \sqrt{3k/(k + \cos^2\alpha_0)}\cos\alpha_0$, evaluated from its
@@ -250,4 +252,5 @@ pub(super) fn eq71(b: &Bench) -> Finding {
         Tolerance::solver(b.rtol),
         false,
     )
+    .in_unit("1")
 }

@@ -31,8 +31,9 @@ pub(super) fn eq64(b: &Bench) -> Finding {
                     format!("{}, epsilon = {eps}", at())
                 });
             }
-            worst.add(0.0, jac[(1, 1)], scale.sqrt(), at);
-            worst.add(0.0, jac[(1, 2)], scale.sqrt(), at);
+            // d(alpha_ddot)/d(alpha_dot) and d(alpha_ddot)/d(Omega), both in 1/s, must vanish.
+            worst.add_in(0.0, jac[(1, 1)], scale.sqrt(), "1/s", at);
+            worst.add_in(0.0, jac[(1, 2)], scale.sqrt(), "1/s", at);
         }
     }
     Finding::from_worst(
@@ -42,6 +43,7 @@ pub(super) fn eq64(b: &Bench) -> Finding {
         Tolerance::roundoff(),
         false,
     )
+    .in_unit("rad/s^2")
 }
 
 /// Eq 65, stable spinning about a vertical diameter for $|\Omega| > \sqrt{g/ak}$.
@@ -120,4 +122,5 @@ pub(super) fn eq65(b: &Bench) -> Finding {
         tolerance,
         false,
     )
+    .in_unit("rad/s")
 }

@@ -215,6 +215,7 @@ pub(super) fn eq20(b: &Bench) -> Finding {
         w,
         false,
     )
+    .in_unit("N")
 }
 
 /// Eq 21, $d\mathbf L_{cm}/dt = \mathbf N_{cm} = \mathbf a\times\mathbf F$. Reference: the same
@@ -355,4 +356,5 @@ pub(super) fn eq22(b: &Bench) -> Finding {
         Tolerance::roundoff(),
         false,
     )
+    .in_unit("m/s^2")
 }

@@ -89,6 +89,7 @@ pub(super) fn ansatz(b: &Bench, which: usize) -> Finding {
         Tolerance::order(),
         true,
     )
+    .in_unit("order")
 }
 
 /// Eq 44, $\alpha = \alpha_0 + \epsilon\cos\varpi t$ (the ansatz; a definition).

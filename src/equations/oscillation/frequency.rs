@@ -41,14 +41,16 @@ pub(super) fn eq50(b: &Bench) -> Finding {
         lin,
         Tolerance::roundoff(),
         false,
-    );
+    )
+    .in_unit("rad^2/s^2");
     let bfind = Finding::from_worst(
         Method::Integration,
         "varpi against the frequency of alpha measured on small-amplitude integrations",
         int,
         Tolerance::solver(b.rtol),
         false,
-    );
+    )
+    .in_unit("rad/s");
     worse(a, bfind)
 }
 
@@ -141,6 +143,7 @@ pub(super) fn eq49(b: &Bench) -> Finding {
         Tolerance::roundoff(),
         false,
     )
+    .in_unit("rad^2/s^2")
 }
 
 /// Eq 51, $\varpi^2(k+1) = 2(2k+1)\omega_{10}^2 - \frac{g}{a}$ for a wheel rolling straight
@@ -175,4 +178,5 @@ pub(super) fn eq51(b: &Bench) -> Finding {
         Tolerance::roundoff(),
         false,
     )
+    .in_unit("rad^2/s^2")
 }

@@ -32,6 +32,7 @@ pub(super) fn eq54(b: &Bench) -> Finding {
         Tolerance::roundoff(),
         false,
     )
+    .in_unit("1")
 }
 
 /// The reference ratio $\varpi/\Omega_0$ at a steady motion of the model.

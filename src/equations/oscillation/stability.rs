@@ -133,7 +133,8 @@ pub(super) fn threshold_check(b: &Bench, which: u32) -> Finding {
             finite_time_tolerance(k, width_int, false),
             false,
         );
-        let f = worse(fi, fl);
+        // Both edges are angular rates (omega_10 or |Omega_0|).
+        let f = worse(fi, fl).in_unit("rad/s");
         out = Some(match out {
             None => f,
             Some(o) => worse(o, f),

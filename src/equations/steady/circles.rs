@@ -54,6 +54,7 @@ pub(super) fn eq27(b: &Bench) -> Finding {
         Tolerance::solver(b.rtol),
         false,
     )
+    .in_unit("1")
 }
 
 /// Eq 28, $\omega_{10} = \frac{b}{a}\Omega_0 = \Omega_0\left(\frac{r}{a} - \cos\alpha_0\right)$.
@@ -124,6 +125,7 @@ pub(super) fn eq29(b: &Bench) -> Finding {
         Tolerance::solver(b.rtol),
         false,
     )
+    .in_unit("rad^2/s^2")
 }
 
 /// Eq 30, $b > -\dfrac{a k\cos\alpha_0}{2k+1}$.
@@ -159,6 +161,7 @@ pub(super) fn eq30(b: &Bench) -> Finding {
         Tolerance::bisection(width),
         false,
     )
+    .in_unit("m")
 }
 
 /// Eq 31, $\Omega_0^2 = \dfrac{g}{a k\sin\alpha_0}$ for $b = 0$.
@@ -199,6 +202,7 @@ pub(super) fn eq31(b: &Bench) -> Finding {
         Tolerance::solver(b.rtol),
         false,
     )
+    .in_unit("1")
 }
 
 /// The rate of the face angle (the disk's spin relative to the triad) measured on an
@@ -339,6 +343,7 @@ pub(super) fn eq40(b: &Bench) -> Finding {
         Tolerance::roundoff(),
         false,
     )
+    .in_unit("rad^2/s^2")
 }
 
 // ------------------------------------------------------------------------------------------

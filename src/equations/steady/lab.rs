@@ -234,6 +234,7 @@ pub(super) fn eq33(b: &Bench) -> Finding {
         Tolerance::solver(b.rtol),
         false,
     )
+    .in_unit("kg m^2/s")
 }
 
 /// Eq 34, $\mathbf N = a\hat{\mathbf 3}\times m g\hat{\mathbf z} = \dfrac{d\mathbf L}{dt}$ at $b = 0$.
