@@ -57,6 +57,11 @@ pub struct ClaimEntry {
     pub claim: String,
     /// The number as printed, if any.
     pub claimed_value: Option<f64>,
+    /// True when `claimed_value` is not a number the paper prints but one its words imply (the
+    /// "only" constants of the motion: 0 more; "approaches the precession rate": a ratio of 1);
+    /// the report then says "implied" instead of "printed".
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub implied: bool,
     /// Its unit as printed.
     pub unit: String,
     /// What must be computed.

@@ -76,8 +76,8 @@ fn view(f: &Finding) -> FindingView {
     FindingView {
         method: f.method.to_string(),
         compared: f.compared.clone(),
-        claimed,
-        reference,
+        claimed: claimed.clone(),
+        reference: reference.clone(),
         error: format!("{:.2e}", f.error),
         tolerance: format!("{:.1e}", f.tolerance.value),
         rule: f.tolerance.rule.clone(),
@@ -126,8 +126,8 @@ fn failure_view(c: &Checked) -> Option<FailureView> {
             Subject::Claim { id } => format!("claim-{id}"),
         },
         compared: f.compared.clone(),
-        claimed,
-        reference,
+        claimed: claimed.clone(),
+        reference: reference.clone(),
         error: format!("{:.2e}", f.error),
         headline: f.headline.as_ref().map(|h| {
             let unit = if h.unit == "1" {
@@ -144,6 +144,21 @@ fn failure_view(c: &Checked) -> Option<FailureView> {
             )
         }),
         headline_at: f.headline.as_ref().map(|h| h.at.clone()),
+        row: match &f.headline {
+            Some(h) => {
+                let unit = if h.unit == "1" {
+                    String::new()
+                } else {
+                    format!(" {}", h.unit)
+                };
+                [
+                    h.quantity.clone(),
+                    format!("{}{unit} ({})", fmt_num(h.paper), h.paper_is),
+                    format!("{}{unit}", fmt_num(h.reference)),
+                ]
+            }
+            None => [f.compared.clone(), claimed.clone(), reference.clone()],
+        },
     })
 }
 

@@ -145,6 +145,10 @@ pub struct FailureView {
     pub headline: Option<String>,
     /// Where the headline comparison is made.
     pub headline_at: Option<String>,
+    /// The row of a table in the paper's terms: what is compared, the paper's value (with its
+    /// unit, and whether printed or implied), the true value; the headline's where there is
+    /// one, else the finding's own.
+    pub row: [String; 3],
 }
 
 /// A section of the paper.

@@ -31,7 +31,7 @@ pub fn with_printed_headline(b: &Bench, id: &str, f: Finding) -> Finding {
             let h = Headline::new(
                 f.compared.clone(),
                 v,
-                "printed",
+                &paper_is(c),
                 f.reference,
                 &unit_of(&c.unit),
                 f.at.clone(),
@@ -39,6 +39,25 @@ pub fn with_printed_headline(b: &Bench, id: &str, f: Finding) -> Finding {
             f.with_headline(h)
         }
         _ => f,
+    }
+}
+
+/// How the paper gives a claim's number, for its headline: "printed", "implied" (by its words,
+/// claims.yaml's `implied`), or, for a range read from vague words, the reading itself (the
+/// headline's value is then the range's lower end).
+fn paper_is(c: &crate::catalogue::ClaimEntry) -> String {
+    match c
+        .rule
+        .as_ref()
+        .and_then(|r| r.range.map(|range| (r, range)))
+    {
+        Some((r, [lo, hi])) => format!(
+            "lower end of '{}', read as {lo} to {hi} {}",
+            r.words,
+            unit_of(&c.unit)
+        ),
+        None if c.implied => "implied".into(),
+        None => "printed".into(),
     }
 }
 
@@ -110,7 +129,14 @@ pub(super) fn stated(
                 .and_then(|r| r.range.map(|[lo, _]| lo))
                 .or(c.claimed_value)
                 .unwrap_or(f.claimed);
-            let h = Headline::new(compared, paper, "printed", computed, &unit_of(&c.unit), at);
+            let h = Headline::new(
+                compared,
+                paper,
+                &paper_is(c),
+                computed,
+                &unit_of(&c.unit),
+                at,
+            );
             f.with_headline(h)
         }
         _ => f,
@@ -253,5 +279,25 @@ pub(super) fn worse(first: Finding, second: Finding) -> Finding {
             );
             f
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_headline_says_how_the_paper_gives_its_number() {
+        let paper = crate::paper::Paper::built_in().unwrap();
+        let claim = |id: &str| paper.claims.iter().find(|c| c.id == id).unwrap().clone();
+        assert_eq!(paper_is(&claim("k-uniform-disk")), "printed");
+        assert_eq!(paper_is(&claim("rolling-extra-integrals")), "implied");
+        assert_eq!(
+            paper_is(&claim("summary-contact-lost-few-degrees")),
+            "lower end of 'a few', read as 1 to 9 deg"
+        );
+        let mut edited = claim("k-uniform-disk");
+        edited.implied = true;
+        assert_eq!(paper_is(&edited), "implied");
     }
 }
