@@ -118,15 +118,33 @@ pub fn remove_hum(t: &[f64], v: &mut [f64], sigma_v: f64) -> f64 {
             .then_some(mean_amp)
     };
     let (f50, f60) = (coherent(2), coherent(8));
-    for (block, t_mid, x, _) in &blocks {
+    // A coherent family is stationary (its phase agrees from block to block), so one set of
+    // coefficients is subtracted everywhere: each the median over the blocks. A block's own fit
+    // would carry the pulses' leakage where they sweep past the mains line (the last block,
+    // where Omega reaches 2 pi x 60 Hz), and subtracting it left a hum of the leakage's size
+    // after t0, timed as pulses (t0 +19 ms with 60 Hz hum).
+    let median = |k: usize| -> f64 {
+        let mut c: Vec<f64> = blocks.iter().map(|(_, _, x, _)| x[k]).collect();
+        c.sort_by(f64::total_cmp);
+        let m = c.len();
+        if m % 2 == 1 {
+            c[m / 2]
+        } else {
+            0.5 * (c[m / 2 - 1] + c[m / 2])
+        }
+    };
+    let global: Vec<f64> = (0..14)
+        .map(|k| if k < 2 { 0.0 } else { median(k) })
+        .collect();
+    for (block, t_mid, _, _) in &blocks {
         for j in block.clone() {
             let r = hum_row(t[j], *t_mid);
             let mut hum = 0.0;
             if f50.is_some() {
-                hum += (2..8).map(|k| r[k] * x[k]).sum::<f64>();
+                hum += (2..8).map(|k| r[k] * global[k]).sum::<f64>();
             }
             if f60.is_some() {
-                hum += (8..14).map(|k| r[k] * x[k]).sum::<f64>();
+                hum += (8..14).map(|k| r[k] * global[k]).sum::<f64>();
             }
             v[j] -= hum;
         }
