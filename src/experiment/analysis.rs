@@ -3,11 +3,11 @@
 //! from the truth.
 
 use crate::experiment::clean::{remove_glitches, remove_hum};
-use crate::experiment::crossover::{fit_crossover, CrossoverFit};
+use crate::experiment::crossover::CrossoverFit;
 use crate::experiment::error::ExperimentError;
-use crate::experiment::fit::{fit_eq84, fit_eq84_fixed, fit_eq85, Eq84Fit, Eq85Fit};
+use crate::experiment::fit::{fit_eq84, fit_eq85, Eq84Fit, Eq85Fit};
 use crate::experiment::least_squares::FitError;
-use crate::experiment::models::{compare, Comparison};
+use crate::experiment::models::{compare_laws, Comparison};
 use crate::experiment::peaks::{find_peaks, noise_level, Peak, PeakSettings};
 use crate::experiment::plausibility::{Evidence, Plausibility, Verdict};
 use crate::experiment::rates::{accelerations, cycles, Acceleration, Cycle};
@@ -290,43 +290,7 @@ pub fn analyze(trace: &Trace, s: &AnalysisSettings) -> Result<Analysis, Experime
         return Err(refuse(verdict.refusals.join("; ")));
     }
     let eq85 = fit_eq85(&tp, &acc_idx, &w).map_err(|m| fit_err("eq 85", m))?;
-    let mut candidates = vec![(
-        "beta free".to_string(),
-        format!("beta = {:.3} +- {:.3}", eq84.beta, eq84.beta_sigma),
-        3,
-        eq84.chi2,
-        eq84.ln_det_sigma,
-    )];
-    for beta in [1.0, 2.0, 3.0, 4.0] {
-        if let Ok(f) = fit_eq84_fixed(&ta, &tb, &cyc_idx, &w, beta, &eq84) {
-            candidates.push((
-                format!("beta = {beta}"),
-                format!("t0 = {:.5} +- {:.5} s", f.t0, f.t0_sigma),
-                2,
-                f.chi2,
-                f.ln_det_sigma,
-            ));
-        }
-    }
-    let crossover = fit_crossover(&ta, &tb, &cyc_idx, &w, &eq84).ok();
-    if let Some(x) = &crossover {
-        candidates.push((
-            "two mechanisms".to_string(),
-            format!(
-                "beta = {:.2} +- {:.2} below Omega_c = {:.0} +- {:.0} rad/s, {:.2} +- {:.2} above",
-                x.beta_below,
-                x.beta_below_sigma,
-                x.omega_c,
-                x.omega_c_sigma,
-                x.beta_above,
-                x.beta_above_sigma
-            ),
-            5,
-            x.chi2,
-            x.ln_det_sigma,
-        ));
-    }
-    let models = compare(cyc_idx.len(), candidates);
+    let (models, crossover) = compare_laws(&ta, &tb, &cyc_idx, &w, &eq84);
     let window = Window {
         rule: format!(
             "cycles between peaks {first_peak} and {last_peak}: all but the last {} peaks, \

@@ -13,6 +13,8 @@
 //! A difference $\Delta$ from the best of 0-2 is "as good", 2-6 "positive", 6-10 "strong" and
 //! above 10 "decisive" evidence against (Kass & Raftery's scale, read for $\Delta\mathrm{BIC}$).
 
+use crate::experiment::crossover::{fit_crossover, CrossoverFit};
+use crate::experiment::fit::{fit_eq84_fixed, Eq84Fit};
 use serde::Serialize;
 use std::f64::consts::PI;
 
@@ -114,4 +116,53 @@ pub fn compare(n: usize, fits: Vec<(String, String, usize, f64, f64)>) -> Compar
         candidates: c,
         summary,
     }
+}
+
+/// The comparison of the laws above on eq 84's cycles (`ta`, `tb`: the peaks that open and
+/// close each cycle, `start` their indices, `w` the peak-time variances), given the free fit:
+/// beta free, beta fixed at 1, 2, 3 and 4, and the two-mechanism law (also returned).
+pub fn compare_laws(
+    ta: &[f64],
+    tb: &[f64],
+    cyc_idx: &[usize],
+    w: &[f64],
+    eq84: &Eq84Fit,
+) -> (Comparison, Option<CrossoverFit>) {
+    let mut candidates = vec![(
+        "beta free".to_string(),
+        format!("beta = {:.3} +- {:.3}", eq84.beta, eq84.beta_sigma),
+        3,
+        eq84.chi2,
+        eq84.ln_det_sigma,
+    )];
+    for beta in [1.0, 2.0, 3.0, 4.0] {
+        if let Ok(f) = fit_eq84_fixed(ta, tb, cyc_idx, w, beta, eq84) {
+            candidates.push((
+                format!("beta = {beta}"),
+                format!("t0 = {:.5} +- {:.5} s", f.t0, f.t0_sigma),
+                2,
+                f.chi2,
+                f.ln_det_sigma,
+            ));
+        }
+    }
+    let crossover = fit_crossover(ta, tb, cyc_idx, w, eq84).ok();
+    if let Some(x) = &crossover {
+        candidates.push((
+            "two mechanisms".to_string(),
+            format!(
+                "beta = {:.2} +- {:.2} below Omega_c = {:.0} +- {:.0} rad/s, {:.2} +- {:.2} above",
+                x.beta_below,
+                x.beta_below_sigma,
+                x.omega_c,
+                x.omega_c_sigma,
+                x.beta_above,
+                x.beta_above_sigma
+            ),
+            5,
+            x.chi2,
+            x.ln_det_sigma,
+        ));
+    }
+    (compare(cyc_idx.len(), candidates), crossover)
 }

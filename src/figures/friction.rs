@@ -178,3 +178,87 @@ pub fn paths(r: &FrictionResults) -> Result<Figure, FigureError> {
         drawing: Drawing::Plot(plot),
     })
 }
+
+/// The power range of the mechanisms figure (W): curves are cut, not clamped, at its edges.
+const LOWEST: f64 = 1e-6;
+/// (W)
+const HIGHEST: f64 = 10.0;
+
+fn inside(p: &[(f64, f64)]) -> Vec<(f64, f64)> {
+    p.iter()
+        .copied()
+        .filter(|(_, y)| (LOWEST..=HIGHEST).contains(y))
+        .collect()
+}
+
+/// Dissipation mechanisms side by side: the power each takes along steady rolling with
+/// $b = 0$ against $\Omega$ (log-log, so a mechanism's $\beta$ is its slope), with the power the
+/// paper's record needs (eq 79 with its fit, through eq 26's energy).
+pub fn mechanisms(r: &FrictionResults) -> Result<Figure, FigureError> {
+    let s = &r.studies.mechanisms;
+    let (need, rest) = s
+        .curves
+        .split_first()
+        .ok_or("the mechanisms study drew no curves")?;
+    let styles = [
+        Style::Dashed,
+        Style::Dotted,
+        Style::Dashed,
+        Style::Dotted,
+        Style::Line,
+        Style::Line,
+    ];
+    let mut plot = Plot::new(
+        "Dissipation mechanisms along the spin-down",
+        "Ω (rad/s)",
+        "|P| (W)",
+    )
+    .log(true, true)
+    .y_range(LOWEST, HIGHEST)
+    .with(Series::new(
+        "the record's need",
+        inside(&need.points),
+        Style::Line,
+    ));
+    for (c, style) in rest.iter().zip(styles) {
+        let label = c.name.split(" (").next().unwrap_or(&c.name).to_string();
+        plot = plot.with(Series::new(label, inside(&c.points), style));
+    }
+    if s.film_valid_above.is_finite() {
+        plot = plot.mark(
+            crate::figures::chart::Axis::X,
+            s.film_valid_above,
+            "gap = viscous layer",
+        );
+    }
+    let fits: Vec<String> = s
+        .spin_downs
+        .iter()
+        .map(|m| match (m.beta, &m.refused) {
+            (Some((b, e)), None) => format!("{} {:.2} +- {:.2}", m.mechanism, b, e),
+            (_, Some(_)) => format!("{} refused", m.mechanism),
+            (None, None) => format!("{} not fitted", m.mechanism),
+        })
+        .collect();
+    Ok(Figure {
+        name: "mechanisms",
+        title: "Which mechanism gives beta = 2?".into(),
+        caption: format!(
+            "The power each dissipation mechanism takes from the toy disk rolling steadily with \
+             b = 0, against Omega (log-log: the slope is the beta of eq 75), and the power the \
+             paper's record needs (eq 79 with beta = {}, through eq 26's energy). The friction \
+             mechanisms (rolling friction by hysteresis, beta 1; viscous rolling friction, 2; \
+             rolling resistance with a lever, -1; pivoting friction, -3) are calibrated to supply that need at Omega = {:.0} rad/s, where the \
+             10 s record starts; the two air mechanisms use air's viscosity and have no free \
+             coefficient (the film by lubrication, beta 4; the boundary layer, beta 2.5, up to a \
+             factor of order one). Lubrication holds \
+             right of the mark, where the gap under the disk is thinner than the viscous layer. \
+             Each calibrated mechanism, run alone through a spin-down and fitted by the \
+             experiment's eq 84 over its last 10 s, gives beta = {}.",
+            s.data_beta,
+            s.omega_cal,
+            fits.join("; ")
+        ),
+        drawing: Drawing::Plot(plot),
+    })
+}

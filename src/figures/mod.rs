@@ -19,6 +19,7 @@
 //! | `lab-frame-difference` | eqs 23-25 against the lab-frame model | `lab_frame.rs` |
 //! | `work-precision` | error against work of each method (the speed/accuracy study) | `precision.rs` |
 //! | `slip-stick`, `slip-stick-path` | the sliding model's slip-stick scene: slip, normal force, energy; paths | `friction.rs` |
+//! | `mechanisms` | the power of each dissipation mechanism against $\Omega$, and what the record needs | `friction.rs` |
 //!
 //! Everything is deterministic: the same build gives the same bytes.
 
@@ -188,7 +189,7 @@ impl Drawing {
 }
 
 /// Every figure's name, in the report's order.
-pub const NAMES: [&str; 17] = [
+pub const NAMES: [&str; 18] = [
     "fig1",
     "tek04",
     "tek01",
@@ -206,6 +207,7 @@ pub const NAMES: [&str; 17] = [
     "work-precision",
     "slip-stick",
     "slip-stick-path",
+    "mechanisms",
 ];
 
 /// Every figure's name, in the report's order.
@@ -239,7 +241,7 @@ fn family(name: &str) -> Option<Family> {
         "spin-down-alpha" => Family::SpinDown,
         "lab-frame-difference" => Family::LabFrame,
         "work-precision" => Family::Precision,
-        "slip-stick" | "slip-stick-path" => Family::Friction,
+        "slip-stick" | "slip-stick-path" | "mechanisms" => Family::Friction,
         _ => return None,
     })
 }
@@ -308,7 +310,11 @@ fn build_family(f: Family, r: &Results) -> Result<Vec<Figure>, FigureError> {
         )?)]),
         Family::Friction => {
             let f = need(&r.friction, Study::Friction)?;
-            Ok(vec![friction::slip_stick(f)?, friction::paths(f)?])
+            Ok(vec![
+                friction::slip_stick(f)?,
+                friction::paths(f)?,
+                friction::mechanisms(f)?,
+            ])
         }
     }
 }

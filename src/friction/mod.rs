@@ -8,17 +8,21 @@
 //! - [`rising`]: whether a disk spun about a nearly vertical diameter rises only when it slides
 //!   (sec. 10);
 //! - [`contact_loss`]: whether a spin-down with eq 75's drag and Coulomb friction loses contact
-//!   (the premise of eqs 80-81) or slips first.
+//!   (the premise of eqs 80-81) or slips first;
+//! - [`mechanisms`]: dissipation mechanisms from their physics, side by side: the exponent each
+//!   gives a spin-down through the experiment's fits, and where each would dominate.
 //!
 //! [`studies`] runs them all for the report, each over a range of $\mu$.
 
 pub mod contact_loss;
+pub mod mechanisms;
 pub mod negative_b;
 pub mod rising;
 pub mod slip_onset;
 pub mod spiral;
 
 use crate::disk::Disk;
+use crate::experiment::law::Law;
 use crate::model::sliding::{scene::contact_events, Friction, Mode, Sliding};
 use crate::model::steady::steady_motion;
 use crate::solve::SettingsError;
@@ -89,6 +93,8 @@ pub struct Studies {
     pub rising: rising::Rising,
     /// The spin-down on Coulomb tables, to the first slip (eqs 80-81's premise).
     pub contact_loss: Vec<contact_loss::SpinDownContact>,
+    /// Dissipation mechanisms side by side, held against the record's law.
+    pub mechanisms: mechanisms::Mechanisms,
 }
 
 /// Tilts of the slip-onset and negative-b studies (rad).
@@ -98,8 +104,9 @@ pub const ONSET_MUS: [f64; 3] = [0.1, 0.3, 0.6];
 /// Coulomb coefficients of the negative-b study.
 pub const NEGATIVE_B_MUS: [f64; 2] = [0.3, 1.0];
 
-/// Runs every friction study (a few seconds of computing), the studies in parallel.
-pub fn studies(settings: &Settings) -> Result<Studies, SettingsError> {
+/// Runs every friction study (a few seconds of computing), the studies in parallel; `record`
+/// is the law of sec. 11's record (the paper's fit) the mechanisms are held against.
+pub fn studies(settings: &Settings, record: &Law) -> Result<Studies, SettingsError> {
     let d = toy_disk();
     let onset = || -> Vec<slip_onset::SlipOnset> {
         ONSET_TILTS
@@ -124,8 +131,13 @@ pub fn studies(settings: &Settings) -> Result<Studies, SettingsError> {
         }
         Ok(out)
     };
-    let ((slip_onset, negative_b), (spiral, (rising, contact_loss))) = rayon::join(
-        || rayon::join(onset, negative),
+    let (((slip_onset, negative_b), mechanisms), (spiral, (rising, contact_loss))) = rayon::join(
+        || {
+            rayon::join(
+                || rayon::join(onset, negative),
+                || mechanisms::mechanisms(&d, record, settings),
+            )
+        },
         || {
             rayon::join(spirals, || {
                 let rising = rising::rising(&d, (d.g / (d.a * d.k)).sqrt(), settings);
@@ -143,6 +155,7 @@ pub fn studies(settings: &Settings) -> Result<Studies, SettingsError> {
         spiral: spiral?,
         rising: rising?,
         contact_loss: contact_loss?,
+        mechanisms: mechanisms?,
     })
 }
 

@@ -11,6 +11,7 @@ pub mod dissipation;
 pub mod frictionless;
 pub mod lab_frame;
 pub mod layout;
+pub mod mechanism;
 pub mod rolling;
 pub mod sliding;
 pub mod steady;

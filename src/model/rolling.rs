@@ -11,6 +11,7 @@
 
 use crate::disk::Disk;
 use crate::model::dissipation::PowerLaw;
+use crate::model::mechanism::Mechanism;
 use crate::model::{Extras, Layout, Model, Motion, Quantity};
 use crate::solve::{Dynamics, State};
 use num_dual::DualNum;
@@ -119,6 +120,9 @@ pub struct Rolling<const N: usize> {
     pub disk: Disk,
     /// The dissipation, if any.
     pub dissipation: Option<PowerLaw>,
+    /// Mechanisms of dissipation from their physics, added to eq 75's law
+    /// ([`crate::model::mechanism`]).
+    pub mechanisms: Vec<Mechanism>,
     layout: Layout,
 }
 
@@ -135,13 +139,28 @@ impl<const N: usize> Rolling<N> {
         Self {
             disk,
             dissipation,
+            mechanisms: Vec::new(),
             layout,
         }
     }
 
+    /// The same model with these mechanisms of dissipation as well.
+    pub fn with_mechanisms(mut self, mechanisms: &[Mechanism]) -> Self {
+        self.mechanisms = mechanisms.to_vec();
+        self
+    }
+
     fn torque(&self, m: &Motion) -> [f64; 3] {
-        self.dissipation
-            .map_or([0.0; 3], |d| d.torque_per_ma2(&self.disk, m))
+        let mut n = self
+            .dissipation
+            .map_or([0.0; 3], |d| d.torque_per_ma2(&self.disk, m));
+        for mech in &self.mechanisms {
+            let t = mech.torque_per_ma2(&self.disk, m);
+            for (n, t) in n.iter_mut().zip(t) {
+                *n += t;
+            }
+        }
+        n
     }
 
     /// The accelerations in state `y`.

@@ -231,7 +231,9 @@ fn one(study: Study, bench: &Bench) -> Result<Output, ReportError> {
         Study::Paths => Output::Paths(studies::runs::paths()?),
         Study::SpinDown => Output::SpinDown(Box::new(studies::runs::spin_down()?)),
         Study::LabFrame => Output::LabFrame(studies::lab_frame::compute()?),
-        Study::Friction => Output::Friction(Box::new(studies::friction::compute()?)),
+        Study::Friction => {
+            Output::Friction(Box::new(studies::friction::compute(&bench.paper.fit)?))
+        }
         Study::Corrections => {
             Output::Corrections(Box::new(corrections_study(bench).unwrap_or_else(|e| {
                 CorrectionsStudy {
