@@ -235,7 +235,7 @@ pub fn mechanisms(r: &FrictionResults) -> Result<Figure, FigureError> {
         .spin_downs
         .iter()
         .map(|m| match (m.beta, &m.refused) {
-            (Some((b, e)), None) => format!("{} {:.2} +- {:.2}", m.mechanism, b, e),
+            (Some((b, e)), None) => format!("{}, beta = {:.2} +- {:.2}", m.mechanism, b, e),
             (_, Some(_)) => format!("{} refused", m.mechanism),
             (None, None) => format!("{} not fitted", m.mechanism),
         })
@@ -254,7 +254,7 @@ pub fn mechanisms(r: &FrictionResults) -> Result<Figure, FigureError> {
              factor of order one). Lubrication holds \
              right of the mark, where the gap under the disk is thinner than the viscous layer. \
              Each calibrated mechanism, run alone through a spin-down and fitted by the \
-             experiment's eq 84 over its last 10 s, gives beta = {}.",
+             experiment's eq 84 over its last 10 s, gives: {}.",
             s.data_beta,
             s.omega_cal,
             fits.join("; ")

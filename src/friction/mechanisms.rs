@@ -51,7 +51,7 @@ pub const MAX_TIME: f64 = 60.0;
 /// The timing uncertainty given to each turn (s); the fits scale it by their $\chi^2$.
 pub const TIMING: f64 = 1e-5;
 /// The most turns fitted (disjoint, evenly spread).
-const FITTED: usize = 60;
+const FITTED: usize = 40;
 /// The sampling interval of the record (s).
 const SAMPLE: f64 = 1e-3;
 
