@@ -235,7 +235,7 @@ pub fn mechanisms(r: &FrictionResults) -> Result<Figure, FigureError> {
         .spin_downs
         .iter()
         .map(|m| match (m.beta, &m.refused) {
-            (Some((b, e)), None) => format!("{}, beta = {:.2} +- {:.2}", m.mechanism, b, e),
+            (Some((b, e)), None) => format!("{}, beta = {:.3} +- {:.3}", m.mechanism, b, e),
             (_, Some(_)) => format!("{} refused", m.mechanism),
             (None, None) => format!("{} not fitted", m.mechanism),
         })

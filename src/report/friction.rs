@@ -193,7 +193,8 @@ fn mechanisms(o: &mut String, m: &crate::friction::mechanisms::Mechanisms) {
     );
     let _ = writeln!(
         o,
-        "  mechanism                       coefficient   beta (physics)   beta (fitted)   turns fitted   Omega (rad/s)"
+        "  {:<30}{:>12}{:>9}{:>17}{:>7}  Omega (rad/s)",
+        "mechanism", "coefficient", "beta", "beta fitted", "turns"
     );
     for r in &m.spin_downs {
         let fitted = match (r.beta, &r.refused) {
@@ -208,7 +209,7 @@ fn mechanisms(o: &mut String, m: &crate::friction::mechanisms::Mechanisms) {
         };
         let _ = writeln!(
             o,
-            "  {:<30} {:>12} {:>16.1} {:>15} {:>14} {:>7.0}-{:<6.0}",
+            "  {:<30}{:>12}{:>9.1}{:>17}{:>7}  {:>4.0}-{:.0}",
             r.mechanism,
             format!("{:.2e}{unit}", r.coefficient),
             r.exponent,
