@@ -257,9 +257,9 @@ fn mechanisms(o: &mut String, m: &crate::friction::mechanisms::Mechanisms) {
         o,
         &format!(
             "Gives the paper's beta = 2 (within 3 sigma or 0.15): {}. Slip friction takes \
-             nothing here: with b = 0 the centre of mass stays put, the table pushes only up, \
-             and Coulomb's law has nothing to resist (the spin-down table above: it slips only \
-             at the end). Air with its own viscosity, over what the record needs: {} (the \
+             next to nothing here: with b = 0 the centre of mass barely moves, so the table's \
+             push is nearly vertical and the disk rolls without slipping until late in the \
+             spin-down (the table above). Air with its own viscosity, over what the record needs: {} (the \
              layer's factor of order one set to 1; the film holds only above {:.0} rad/s, \
              where the gap is thinner than the viscous layer).",
             if two.is_empty() {
