@@ -3,7 +3,7 @@
 //! from the truth.
 
 use crate::experiment::clean::{remove_glitches, remove_hum};
-use crate::experiment::crossover::CrossoverFit;
+use crate::experiment::crossover::{fit_crossover, CrossoverFit};
 use crate::experiment::error::ExperimentError;
 use crate::experiment::fit::{fit_eq84, fit_eq85, Eq84Fit, Eq85Fit};
 use crate::experiment::least_squares::FitError;
@@ -275,12 +275,14 @@ pub fn analyze(trace: &Trace, s: &AnalysisSettings) -> Result<Analysis, Experime
     let om: Vec<f64> = cyc_idx.iter().map(|&i| cyc[i].omega).collect();
     let ys: Vec<f64> = eq84.points.iter().map(|p| p.y).collect();
     let rs: Vec<f64> = eq84.points.iter().map(|p| p.residual).collect();
+    let crossover = fit_crossover(&ta, &tb, &cyc_idx, &w, &eq84).ok();
     let verdict = s.plausibility.judge(&Evidence {
         t: &t_mid,
         omega: &om,
         anomalous,
         y: &ys,
         residual: &rs,
+        crossover_residual_ss: crossover.as_ref().map(|x| x.residual_ss),
         beta: eq84.beta,
         t0: eq84.t0,
         t_first: tp[cyc_idx[0]],
@@ -290,7 +292,7 @@ pub fn analyze(trace: &Trace, s: &AnalysisSettings) -> Result<Analysis, Experime
         return Err(refuse(verdict.refusals.join("; ")));
     }
     let eq85 = fit_eq85(&tp, &acc_idx, &w).map_err(|m| fit_err("eq 85", m))?;
-    let (models, crossover) = compare_laws(&ta, &tb, &cyc_idx, &w, &eq84);
+    let models = compare_laws(&ta, &tb, &cyc_idx, &w, &eq84, crossover.as_ref());
     let window = Window {
         rule: format!(
             "cycles between peaks {first_peak} and {last_peak}: all but the last {} peaks, \

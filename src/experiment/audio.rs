@@ -170,6 +170,7 @@ pub fn analyze_sound(
         anomalous: track.stray,
         y: &y,
         residual: &s.residual,
+        crossover_residual_ss: None,
         beta: fit.beta,
         t0: fit.t0,
         t_first: a[0],

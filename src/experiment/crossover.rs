@@ -49,6 +49,9 @@ pub struct CrossoverFit {
     pub ln_det_sigma: f64,
     /// Points fitted.
     pub n: usize,
+    /// $\sum_i (y_i - \hat y_i)^2$ of $y_i = 1/\Omega_i$ at the solution (s^2), unweighted as
+    /// the plausibility checks' $R^2$ takes it.
+    pub residual_ss: f64,
 }
 
 /// The law on cycles $[t_a, t_b]$.
@@ -182,6 +185,7 @@ pub fn fit_crossover(
     }
     let s = best.ok_or(last_err)?;
     let wc = s.p[4].exp();
+    let residual_ss = (0..n).map(|i| (y[i] - pr.mean(&s.p, i).0).powi(2)).sum();
     Ok(CrossoverFit {
         beta_below: s.p[0],
         beta_below_sigma: s.cov[(0, 0)].sqrt(),
@@ -193,6 +197,7 @@ pub fn fit_crossover(
         chi2: s.chi2,
         ln_det_sigma: s.ln_det_sigma,
         n,
+        residual_ss,
     })
 }
 

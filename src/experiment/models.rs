@@ -13,7 +13,9 @@
 //! A difference $\Delta$ from the best of 0-2 is "as good", 2-6 "positive", 6-10 "strong" and
 //! above 10 "decisive" evidence against (Kass & Raftery's scale, read for $\Delta\mathrm{BIC}$).
 
-use crate::experiment::crossover::{fit_crossover, CrossoverFit};
+#[cfg(doc)]
+use crate::experiment::crossover::fit_crossover;
+use crate::experiment::crossover::CrossoverFit;
 use crate::experiment::fit::{fit_eq84_fixed, Eq84Fit};
 use serde::Serialize;
 use std::f64::consts::PI;
@@ -119,15 +121,17 @@ pub fn compare(n: usize, fits: Vec<(String, String, usize, f64, f64)>) -> Compar
 }
 
 /// The comparison of the laws above on eq 84's cycles (`ta`, `tb`: the peaks that open and
-/// close each cycle, `start` their indices, `w` the peak-time variances), given the free fit:
-/// beta free, beta fixed at 1, 2, 3 and 4, and the two-mechanism law (also returned).
+/// close each cycle, `start` their indices, `w` the peak-time variances), given the free fit
+/// and the two-mechanism law's ([`fit_crossover`], when it converged): beta free, beta fixed at
+/// 1, 2, 3 and 4, and the two-mechanism law.
 pub fn compare_laws(
     ta: &[f64],
     tb: &[f64],
     cyc_idx: &[usize],
     w: &[f64],
     eq84: &Eq84Fit,
-) -> (Comparison, Option<CrossoverFit>) {
+    crossover: Option<&CrossoverFit>,
+) -> Comparison {
     let mut candidates = vec![(
         "beta free".to_string(),
         format!("beta = {:.3} +- {:.3}", eq84.beta, eq84.beta_sigma),
@@ -146,8 +150,7 @@ pub fn compare_laws(
             ));
         }
     }
-    let crossover = fit_crossover(ta, tb, cyc_idx, w, eq84).ok();
-    if let Some(x) = &crossover {
+    if let Some(x) = crossover {
         candidates.push((
             "two mechanisms".to_string(),
             format!(
@@ -164,5 +167,5 @@ pub fn compare_laws(
             x.ln_det_sigma,
         ));
     }
-    (compare(cyc_idx.len(), candidates), crossover)
+    compare(cyc_idx.len(), candidates)
 }

@@ -26,6 +26,7 @@
 
 use crate::disk::Disk;
 use crate::experiment::analysis::AnalysisSettings;
+use crate::experiment::crossover::fit_crossover;
 use crate::experiment::fit::fit_eq84;
 use crate::experiment::law::Law;
 use crate::experiment::models::compare_laws;
@@ -256,12 +257,14 @@ pub fn spin_down(
     let om: Vec<f64> = cyc.iter().map(|c| c.omega).collect();
     let ys: Vec<f64> = eq84.points.iter().map(|p| p.y).collect();
     let rs: Vec<f64> = eq84.points.iter().map(|p| p.residual).collect();
+    let crossover = fit_crossover(ta, tb, &idx, &w, &eq84).ok();
     let verdict = AnalysisSettings::default().plausibility.judge(&Evidence {
         t: &t_mid,
         omega: &om,
         anomalous: 0,
         y: &ys,
         residual: &rs,
+        crossover_residual_ss: crossover.as_ref().map(|x| x.residual_ss),
         beta: eq84.beta,
         t0: eq84.t0,
         t_first: ta[0],
@@ -273,7 +276,7 @@ pub fn spin_down(
         out.refused = Some(verdict.refusals.join("; "));
         return Ok(out);
     }
-    let (models, _) = compare_laws(ta, tb, &idx, &w, &eq84);
+    let models = compare_laws(ta, tb, &idx, &w, &eq84, crossover.as_ref());
     out.best_law = models
         .candidates
         .first()
