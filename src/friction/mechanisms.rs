@@ -37,6 +37,7 @@ use crate::model::mechanism::{Mechanism, AIR_KINEMATIC_VISCOSITY, AIR_VISCOSITY}
 use crate::model::rolling::Rolling;
 use crate::model::steady::steady_motion;
 use crate::model::{Extras, Model, Motion};
+use crate::numerics::oscillation::bisect;
 use crate::solve::{solve, Ending, Event, Problem, Settings, SettingsError, Solution, State};
 use serde::Serialize;
 use std::f64::consts::TAU;
@@ -169,15 +170,7 @@ fn turns(run: &Solution<5>) -> Vec<f64> {
                 + (s3 - s2) * m1
                 - target
         };
-        let (mut lo, mut hi) = (0.0, 1.0);
-        for _ in 0..60 {
-            let mid = 0.5 * (lo + hi);
-            if hermite(mid) < 0.0 {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
+        let (lo, hi) = bisect(0.0, 1.0, 1e-14, |s| hermite(s) >= 0.0);
         out.push(tw[0] + 0.5 * (lo + hi) * h);
     }
     out
