@@ -35,13 +35,23 @@ impl PowerLaw {
     /// $(\hat{\mathbf 1}, \hat{\mathbf 2}, \hat{\mathbf 3})$, whose power is eq 75.
     /// Zero when the disk does not rotate.
     pub fn torque_per_ma2<T: DualNum<f64> + Copy>(&self, disk: &Disk, m: &Motion<T>) -> [T; 3] {
-        let w = [m.spin, m.alpha_dot, -(m.precession * m.alpha.sin())];
-        let w2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
-        if w2.re() == 0.0 {
-            return [T::zero(); 3];
-        }
-        // |P| / (m a^2 |w|^2)
-        let c = m.precession.abs().powf(self.beta) * (self.epsilon * disk.g_over_a()) / w2;
-        [-(c * w[0]), -(c * w[1]), -(c * w[2])]
+        // P / (m a^2) = -epsilon (g/a) |Omega|^beta
+        let power = -(m.precession.abs().powf(self.beta) * (self.epsilon * disk.g_over_a()));
+        against_omega(m, power)
     }
+}
+
+/// The torque about the centre of mass divided by $m a^2$, in the triad, anti-parallel to
+/// $\vec\omega = (\omega_1, \dot\alpha, -\Omega\sin\alpha)$, whose power is `power_per_ma2`
+/// (W per kg m^2, zero or negative): $\mathbf N/ma^2 = (P/ma^2)\,\vec\omega/|\vec\omega|^2$.
+/// Zero when the disk does not rotate. The one home of this construction: eq 75's law and the
+/// mechanisms of [`crate::model::mechanism`] both act through it.
+pub fn against_omega<T: DualNum<f64> + Copy>(m: &Motion<T>, power_per_ma2: T) -> [T; 3] {
+    let w = [m.spin, m.alpha_dot, -(m.precession * m.alpha.sin())];
+    let w2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+    if w2.re() == 0.0 {
+        return [T::zero(); 3];
+    }
+    let c = power_per_ma2 / w2;
+    [c * w[0], c * w[1], c * w[2]]
 }

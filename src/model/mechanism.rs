@@ -34,6 +34,7 @@
 
 use crate::disk::Disk;
 use crate::model::air_film::SqueezeFilm;
+use crate::model::dissipation::against_omega;
 use crate::model::Motion;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -211,13 +212,7 @@ impl Mechanism {
     /// The torque about the centre of mass divided by $m a^2$, in the triad, anti-parallel to
     /// $\vec\omega = (\omega_1, \dot\alpha, -\Omega\sin\alpha)$ with power [`Mechanism::power`].
     pub fn torque_per_ma2(&self, disk: &Disk, m: &Motion) -> [f64; 3] {
-        let w = [m.spin, m.alpha_dot, -(m.precession * m.alpha.sin())];
-        let w2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
-        if w2 == 0.0 {
-            return [0.0; 3];
-        }
-        let c = self.power(disk, m) / (disk.m * disk.a * disk.a * w2);
-        [c * w[0], c * w[1], c * w[2]]
+        against_omega(m, self.power(disk, m) / (disk.m * disk.a * disk.a))
     }
 
     /// True when the coefficient is finite and non-negative (and air's $\nu$ positive).

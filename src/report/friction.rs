@@ -236,11 +236,7 @@ fn mechanisms(o: &mut String, m: &crate::friction::mechanisms::Mechanisms) {
     let two: Vec<&str> = m
         .spin_downs
         .iter()
-        .filter(|r| {
-            r.refused.is_none()
-                && r.beta
-                    .is_some_and(|(b, e)| (b - 2.0).abs() < 3.0 * e.max(0.05))
-        })
+        .filter(|r| r.gives(2.0))
         .map(|r| r.mechanism.as_str())
         .collect();
     let air: Vec<String> = m
