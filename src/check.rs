@@ -102,7 +102,7 @@ pub struct Checked {
 pub struct Selection {
     /// Equation numbers; `None` for all.
     pub numbers: Option<Vec<u32>>,
-    /// Claim ids; `None` for all (when no numbers are given) .
+    /// Claim ids; `None` for all, an empty list for none.
     pub claims: Option<Vec<String>>,
 }
 

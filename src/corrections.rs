@@ -141,9 +141,11 @@ pub fn verify(
 
 /// The checks of the corrected equations only.
 fn selection(corrections: &[Correction]) -> Selection {
+    // The claims are not re-run on the corrected paper: the study reads the corrected
+    // equations' findings alone.
     Selection {
         numbers: Some(corrections.iter().map(|c| c.number).collect()),
-        claims: None,
+        claims: Some(Vec::new()),
     }
 }
 

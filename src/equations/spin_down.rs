@@ -10,12 +10,12 @@ use crate::model::dissipation::PowerLaw;
 use crate::model::rolling::Rolling;
 use crate::model::steady::steady_motion;
 use crate::model::Extras;
+use crate::numerics::memo::{bits, Memo};
 use crate::paper::{Bindings, Relation};
 use crate::solve::{solve, Dynamics, Event, Problem, State};
 use num_dual::DualNum;
-use std::collections::HashMap;
 use std::f64::consts::PI;
-use std::sync::{Arc, Mutex, OnceLock};
+use std::sync::Arc;
 
 pub(crate) fn disk(k: f64) -> Disk {
     Disk::new(0.0375, k, 0.4, 9.81).expect("a valid disk")
@@ -78,21 +78,10 @@ pub(crate) fn slope(x: &[f64], y: &[f64]) -> f64 {
 
 pub(crate) fn descent(b: &Bench, d: &Disk, beta: f64, alpha0: f64) -> Option<Arc<Descent>> {
     type Key = ([u64; 4], crate::solve::Method);
-    type Slot = Arc<OnceLock<Option<Arc<Descent>>>>;
-    static RUNS: OnceLock<Mutex<HashMap<Key, Slot>>> = OnceLock::new();
-    let key = ([b.rtol, d.k, beta, alpha0].map(f64::to_bits), b.method);
-    // One slot per run, taken under the map's lock and filled outside it: a second caller
-    // (the corrections study runs beside the checks) waits for the first instead of
-    // integrating the same run again.
-    let slot: Slot = RUNS
-        .get_or_init(Default::default)
-        .lock()
-        .unwrap_or_else(|p| p.into_inner())
-        .entry(key)
-        .or_default()
-        .clone();
-    slot.get_or_init(|| run_descent(b, d, beta, alpha0).map(Arc::new))
-        .clone()
+    static RUNS: Memo<Key, Option<Arc<Descent>>> = Memo::new();
+    RUNS.get((bits([b.rtol, d.k, beta, alpha0]), b.method), || {
+        run_descent(b, d, beta, alpha0).map(Arc::new)
+    })
 }
 
 /// [`descent`] without the cache.

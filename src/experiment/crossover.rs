@@ -107,6 +107,9 @@ impl Problem<5> for Crossover<'_> {
         }
         (m, g)
     }
+    fn value(&self, p: &SVector<f64, 5>, i: usize) -> f64 {
+        self.mean(p, i).0
+    }
     fn rows(&self, p: &SVector<f64, 5>) -> Vec<Row> {
         (0..self.y.len())
             .map(|i| {

@@ -40,6 +40,11 @@ pub trait Problem<const P: usize> {
     fn y(&self) -> &[f64];
     /// The model at datum `i` and its gradient in the parameters.
     fn model(&self, p: &SVector<f64, P>, i: usize) -> (f64, SVector<f64, P>);
+    /// The model at datum `i` alone (the residuals need no gradient); a problem whose gradient
+    /// costs more than its value (by differences) computes the value only.
+    fn value(&self, p: &SVector<f64, P>, i: usize) -> f64 {
+        self.model(p, i).0
+    }
     /// The rows of $B$: the residuals' dependence on the (independent) peak-time errors.
     fn rows(&self, p: &SVector<f64, P>) -> Vec<Row>;
     /// Whether the parameters are inside the law's domain.
@@ -123,7 +128,7 @@ impl<const P: usize, Q: Problem<P>> LeastSquaresProblem<f64, Dyn, Const<P>> for 
         }
         let y = self.problem.y();
         let mut r: Vec<f64> = (0..n)
-            .map(|i| self.problem.model(&self.p, i).0 - y[i])
+            .map(|i| self.problem.value(&self.p, i) - y[i])
             .collect();
         self.whitening.whiten(&mut r);
         r.iter()
@@ -268,7 +273,7 @@ pub fn solve<const P: usize>(
         Scale::Unknown => s2 * ar1,
     };
     let cov = SMatrix::<f64, P, P>::from_fn(|a, b| inv[(a, b)] * scale);
-    let model: Vec<f64> = (0..n).map(|i| problem.model(&p, i).0).collect();
+    let model: Vec<f64> = (0..n).map(|i| problem.value(&p, i)).collect();
     let residual = (0..n).map(|i| problem.y()[i] - model[i]).collect();
     Ok(Solved {
         p,

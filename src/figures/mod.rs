@@ -180,12 +180,30 @@ impl Drawing {
         scale: f64,
     ) -> Result<(), FigureError> {
         let px = |v: u32| (v as f64 * scale).round() as u32;
+        let (w, h) = (px(size.0), px(size.1));
+        let mut rgb = vec![0u8; 3 * w as usize * h as usize];
         {
-            let root = BitMapBackend::new(path, (px(size.0), px(size.1))).into_drawing_area();
+            let root = BitMapBackend::with_buffer(&mut rgb, (w, h)).into_drawing_area();
             self.draw(&root, scale)?;
+            root.present().drawn()?;
         }
-        Ok(())
+        write_png(path, &rgb, (w, h))
     }
+}
+
+/// Writes 8-bit RGB pixels as a PNG file: deflate at its fast setting with the Paeth filter
+/// (flat colour and line art). Measured on the 18 figures, 2026-11-25: 0.05 s to encode and
+/// 3.9 MB, against 0.43 s and 2.6 MB at the default level; the report's time was mostly this.
+fn write_png(path: &std::path::Path, rgb: &[u8], (w, h): (u32, u32)) -> Result<(), FigureError> {
+    let file = std::fs::File::create(path).drawn()?;
+    let mut encoder = png::Encoder::new(std::io::BufWriter::new(file), w, h);
+    encoder.set_color(png::ColorType::Rgb);
+    encoder.set_depth(png::BitDepth::Eight);
+    encoder.set_compression(png::Compression::Fast);
+    encoder.set_filter(png::FilterType::Paeth);
+    let mut writer = encoder.write_header().drawn()?;
+    writer.write_image_data(rgb).drawn()?;
+    writer.finish().drawn()
 }
 
 /// Every figure's name, in the report's order.

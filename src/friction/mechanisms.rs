@@ -201,25 +201,19 @@ pub fn spin_down(
     };
     let model = Rolling::<5>::new(*d, extras, None).with_mechanisms(&[*mech]);
     let y0 = model.state(&steady_at(d, START_RATE));
-    let run = |t0: f64, y0: State<5>, t_end: f64, every: f64| {
-        let p = Problem::new(&model, t0, y0, t_end)
+    // One run sampled finely throughout: its length is known only at its end, and a second
+    // run over the record would integrate the last seconds twice.
+    let fine = solve(
+        Problem::new(&model, 0.0, y0, MAX_TIME)
             .stop_when(Event::new("alpha_end", |y: &State<5>| y[0] - ALPHA_END))
-            .sampled(every);
-        solve(p, settings)
-    };
-    let coarse = run(0.0, y0, MAX_TIME, 0.01)?;
-    let duration = match coarse.ending {
+            .sampled(SAMPLE),
+        settings,
+    )?;
+    let duration = match fine.ending {
         Ending::Event { t, .. } => t,
         _ => MAX_TIME,
     };
     let from = (duration - RECORD).max(0.0);
-    let i = coarse.t.iter().rposition(|&t| t <= from).unwrap_or(0);
-    let fine = run(
-        coarse.t[i],
-        coarse.y[i],
-        duration.min(coarse.t[i] + 2.0 * RECORD),
-        SAMPLE,
-    )?;
     let tp: Vec<f64> = turns(&fine).into_iter().filter(|&t| t >= from).collect();
     let mut out = MechanismSpinDown {
         mechanism: mech.name().into(),

@@ -1,7 +1,9 @@
 //! Small numerical tools shared by the checks: a seeded random source, fits, linearization,
-//! oscillation frequencies measured on trajectories, bisection.
+//! oscillation frequencies measured on trajectories, bisection, references computed once per
+//! process.
 
 pub mod fit;
 pub mod linearize;
+pub mod memo;
 pub mod oscillation;
 pub mod rng;

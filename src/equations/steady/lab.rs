@@ -1,6 +1,8 @@
 //! Eqs 33-37: section 5's vector relations at b = 0, against the lab-frame Newton-Euler model.
 
 use super::*;
+use crate::numerics::memo::{bits, Memo};
+use std::sync::Arc;
 
 /// Tilts of the section 5 checks.
 pub(super) const LAB_ALPHAS: [f64; 3] = [0.1, 0.8, 1.4];
@@ -100,7 +102,17 @@ impl LabSteady {
 
     /// Every lab run of the section 5 checks: the inertia factors [`KS`], tilts
     /// [`LAB_ALPHAS`], both senses of precession.
-    pub(super) fn all(bench: &Bench) -> Vec<Self> {
+    /// Computed once per solver setting and shared by eqs 33-37 (they differ only in what they
+    /// compare along the runs).
+    pub(super) fn all(bench: &Bench) -> Arc<Vec<Self>> {
+        type Key = ([u64; 1], crate::solve::Method);
+        static RUNS: Memo<Key, Arc<Vec<LabSteady>>> = Memo::new();
+        RUNS.get((bits([bench.rtol]), bench.method), || {
+            Arc::new(Self::integrate_all(bench))
+        })
+    }
+
+    fn integrate_all(bench: &Bench) -> Vec<Self> {
         let mut out = Vec::new();
         for k in KS {
             for alpha0 in LAB_ALPHAS {
@@ -200,17 +212,12 @@ pub(super) fn lab_relations(
     what: &str,
 ) -> Worst {
     let mut w = Worst::default();
-    for run in LabSteady::all(b) {
+    for run in LabSteady::all(b).iter() {
         run.add_steadiness(&mut w);
         for i in run.points() {
-            printed_relations(
-                b,
-                n,
-                &lab_bindings(&run, i),
-                scale(&run, i),
-                &mut w,
-                &|| run.at(i, what),
-            );
+            printed_relations(b, n, &lab_bindings(run, i), scale(run, i), &mut w, &|| {
+                run.at(i, what)
+            });
         }
     }
     w

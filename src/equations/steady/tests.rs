@@ -51,7 +51,7 @@ fn section_5_holds_in_the_lab_frame_and_fails_when_perturbed() {
 fn lab_runs_are_steady() {
     let runs = LabSteady::all(&Bench::default());
     assert_eq!(runs.len(), KS.len() * LAB_ALPHAS.len() * 2);
-    for run in &runs {
+    for run in runs.iter() {
         assert!(run.unsteadiness < 1e-9, "{}", run.unsteadiness);
         let m = steady_ref(&run.disk, run.alpha0, 0.0).unwrap();
         assert!((run.precession.abs() - m.precession).abs() < 1e-9 * m.precession);
