@@ -10,6 +10,7 @@ use crate::disk::Disk;
 use crate::experiment::error::ExperimentError;
 use crate::experiment::light::LightModel;
 use crate::experiment::trace::{Trace, Truth};
+use crate::model::steady::tilt_at_b0;
 use serde::{Deserialize, Serialize};
 
 /// Eq 79's law: $\Omega = (C/(t_0 - t))^{1/(\beta + 2)}$, with $t_0$ the scope's `end_at`.
@@ -64,8 +65,7 @@ pub fn law_trace(law: &Law, disk: &Disk, light: &LightModel) -> Result<Trace, Ex
                 return flat;
             }
             let om = law.precession(tau);
-            let s = (disk.g / (disk.k * disk.a * om * om)).min(1.0);
-            light.intensity(s.asin(), law.heading(tau))
+            light.intensity(tilt_at_b0(disk, om), law.heading(tau))
         })
         .collect();
     scope.record(&mut v);

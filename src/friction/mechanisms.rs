@@ -35,7 +35,7 @@ use crate::experiment::rates::cycles;
 use crate::model::air_film::SqueezeFilm;
 use crate::model::mechanism::{Mechanism, AIR_KINEMATIC_VISCOSITY, AIR_VISCOSITY};
 use crate::model::rolling::Rolling;
-use crate::model::steady::steady_motion;
+use crate::model::steady::{steady_motion, tilt_at_b0};
 use crate::model::{Extras, Model, Motion};
 use crate::numerics::oscillation::bisect;
 use crate::solve::{solve, Ending, Event, Problem, Settings, SettingsError, Solution, State};
@@ -148,8 +148,7 @@ pub fn data_power(d: &Disk, law: &Law, omega: f64) -> f64 {
 
 /// Steady motion with $b = 0$ at rate $\Omega$.
 fn steady_at(d: &Disk, omega: f64) -> Motion {
-    let alpha = (d.g / (d.k * d.a * omega * omega)).min(1.0).asin();
-    let Ok(m) = steady_motion(d, alpha, 0.0) else {
+    let Ok(m) = steady_motion(d, tilt_at_b0(d, omega), 0.0) else {
         unreachable!("b = 0 is inside eq 30's range at every tilt")
     };
     m

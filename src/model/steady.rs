@@ -40,6 +40,15 @@ pub fn precession_squared(disk: &Disk, alpha0: f64, b: f64) -> f64 {
     disk.g / alpha0.tan() / (k * disk.a * alpha0.cos() + (2.0 * k + 1.0) * b)
 }
 
+/// Eq 29 at $b = 0$ inverted for the tilt: $\Omega_0^2 = g/(k a\sin\alpha_0)$, so
+/// $\sin\alpha_0 = g/(k a\Omega_0^2)$; $\pi/2$ (upright) where $\Omega_0^2 \le g/(ka)$, below
+/// which no tilted $b = 0$ steady motion turns that slowly.
+pub fn tilt_at_b0(disk: &Disk, precession: f64) -> f64 {
+    (disk.g / (disk.k * disk.a * precession * precession))
+        .min(1.0)
+        .asin()
+}
+
 /// Steady motion at tilt $\alpha_0$ with the centre of mass on a circle of radius $b$: $\Omega_0$
 /// from eq 29 and $\omega_{10} = b\Omega_0/a$ from eq 28. Following the paper's convention
 /// $\omega_1 \ge 0$, a negative $b$ comes with a negative $\Omega_0$.
