@@ -89,3 +89,21 @@ pub fn rolling_straight(spin: f64) -> Motion {
         spin,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The inverse gives back the tilt of eq 29's b = 0 motion, and upright below the slowest
+    /// tilted motion.
+    #[test]
+    fn tilt_at_b0_inverts_eq_29() {
+        let d = Disk::uniform(0.0375);
+        for alpha0 in [0.01, 0.3, 1.0, 1.5] {
+            let m = steady_motion(&d, alpha0, 0.0).unwrap();
+            assert!((tilt_at_b0(&d, m.precession) - alpha0).abs() < 1e-12);
+        }
+        let slowest = (d.g / (d.k * d.a)).sqrt();
+        assert_eq!(tilt_at_b0(&d, 0.9 * slowest), FRAC_PI_2);
+    }
+}
