@@ -25,7 +25,11 @@ pub(crate) fn dispatch<V: Visit>(scene: &Scene, v: V) -> V::Out {
     macro_rules! rolling {
         ($($n:literal),*) => {
             match Layout::new(4, extras).len {
-                $($n => v.visit(&Rolling::<$n>::new(d, extras, scene.dissipation), scene),)*
+                $($n => v.visit(
+                    &Rolling::<$n>::new(d, extras, scene.dissipation)
+                        .with_mechanisms(&scene.mechanisms),
+                    scene,
+                ),)*
                 n => unreachable!("a rolling layout has 4 to 8 states, not {n}"),
             }
         };

@@ -223,10 +223,17 @@ pub fn scene_template(name: &str) -> Result<String, SelectError> {
         "# The built-in scene {name}, to edit: save it (rolling-disk scenes --show {name} > my.yaml),\n\
          # change it, and run it with `rolling-disk simulate my.yaml`. Units are SI.\n\
          # model:  rolling | frictionless | dissipative | adiabatic | lab-frame | lab-frame-frictionless\n\
+         #         | sliding (with friction: {{ mu, restitution }})\n\
+         # dissipation: {{ epsilon, beta }} (eq 75; dissipative, adiabatic)\n\
+         # mechanisms: [ {{ viscous_rolling: {{ time }} }}, ... ] (dissipative): rolling_friction: {{ coefficient }},\n\
+         #         rolling_resistance: {{ lever }}, pivoting: {{ mu_radius }}, air_film: {{ viscosity }},\n\
+         #         air_layer: {{ viscosity, kinematic }}\n\
          # start:  steady: {{ alpha0, b }} (+ perturb) | vertical_spin: {{ precession }}\n\
          #         | rolling_straight: {{ spin }} | explicit: {{ alpha, alpha_dot, precession, spin }}\n\
+         #         (+ slip: {{ forward, sideways }} for sliding)\n\
          # stop:   time (required), alpha_below, lift_off\n\
          # record: alpha, alpha_dot, precession, spin, energy, heading, path, face, lz, normal_force, friction\n\
+         #         (sliding: slip_speed, cm_speed, contact_gap, dissipated)\n\
          # solver: method rk4 (with step) | dopri5 | dop853; rtol; atol\n\n"
     );
     out.push_str(src);

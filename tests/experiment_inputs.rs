@@ -418,3 +418,21 @@ fn paper_law() -> Law {
     let f = Paper::built_in().unwrap().fit;
     Law::from_fit(f.beta, f.c_inv_root)
 }
+
+/// A scene with dissipation mechanisms is refused by the synthetic recording (its truth is eq
+/// 75's law alone), not simulated with the mechanisms silently left out.
+#[test]
+fn a_scene_with_mechanisms_is_refused_by_the_synthetic_recording() {
+    let src = rolling_disk::scene::builtin::source("spin-down")
+        .unwrap()
+        .replace(
+            "dissipation: { epsilon: 1.2e-6, beta: 2.0 }",
+            "dissipation: { epsilon: 1.2e-6, beta: 2.0 }\nmechanisms: [ { air_film: {} } ]",
+        );
+    let scene = rolling_disk::scene::Scene::parse(&src, "film.yaml").unwrap();
+    assert_eq!(scene.mechanisms.len(), 1);
+    let e = simulate_trace(&scene, &LightModel::default())
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("remove `mechanisms`"), "{e}");
+}

@@ -281,3 +281,87 @@ fn projection_onto_the_energy_holds_it_and_is_refused_where_it_means_nothing() {
     let e = error_of(&unknown);
     assert!(e.contains("energy"), "{e}");
 }
+
+const MECHANISM: &str = "name: viscous
+disk: { radius: 0.0375, k: 0.25, mass: 0.4, g: 9.81 }
+model: dissipative
+mechanisms: [ { viscous_rolling: { time: 2.0e-7 } } ]
+start: { steady: { alpha0: 0.15, b: 0.0 } }
+stop: { time: 0.02 }
+record: [energy]
+sample: 1.0e-4
+solver: { method: dop853, rtol: 1.0e-12, atol: 1.0e-14 }
+";
+
+/// A scene asks for a mechanism by its key: the run loses energy at the mechanism's own rate,
+/// $P = -\tau F_z v_p^2/a$ with $v_p = a\Omega\cos\alpha$ the contact point's speed along the
+/// table and $F_z = mg$ at steady $b = 0$ (computed here from the steady motion, not by the
+/// model), measured as the slope of the recorded energy over the first 20 ms.
+#[test]
+fn a_scene_asks_for_a_mechanism_by_name_and_loses_energy_at_its_rate() {
+    let scene = Scene::parse(MECHANISM, "viscous.yaml").unwrap();
+    assert_eq!(scene.mechanisms.len(), 1);
+    assert!(scene.dissipation.is_none());
+    let r = run(&scene, None).unwrap();
+    let (t, e) = (r.column("t_s").unwrap(), r.column("energy_J").unwrap());
+    let n = t.len() - 1;
+    let slope = (e[n] - e[0]) / (t[n] - t[0]);
+    let d = scene.disk;
+    let (alpha, omega) = (scene.start.alpha, scene.start.precession);
+    let v_p = d.a * omega * alpha.cos();
+    let expected = -2.0e-7 * d.m * d.g * v_p * v_p / d.a;
+    assert!(
+        (slope / expected - 1.0).abs() < 1e-3,
+        "slope {slope} W, expected {expected} W"
+    );
+    // With eq 75's law besides, the two losses add.
+    let both = MECHANISM.replace(
+        "mechanisms:",
+        "dissipation: { epsilon: 1.0e-6, beta: 2.0 }\nmechanisms:",
+    );
+    let s2 = Scene::parse(&both, "both.yaml").unwrap();
+    assert!(s2.dissipation.is_some() && s2.mechanisms.len() == 1);
+    let r2 = run(&s2, None).unwrap();
+    let e2 = r2.column("energy_J").unwrap();
+    assert!(e2[e2.len() - 1] < e[n], "the law adds its own loss");
+}
+
+#[test]
+fn bad_mechanisms_are_refused_with_the_key_and_the_fix() {
+    let cases: Vec<(String, &[&str])> = vec![
+        (
+            MECHANISM.replace("model: dissipative", "model: rolling"),
+            &[
+                "bad.yaml:4",
+                "the rolling model has no dissipation mechanisms",
+                "model: dissipative",
+            ],
+        ),
+        (
+            MECHANISM.replace("time: 2.0e-7", "time: -1.0"),
+            &[
+                "bad.yaml:4",
+                "viscous rolling friction",
+                "`time` in s",
+                "got -1",
+            ],
+        ),
+        (
+            MECHANISM.replace("viscous_rolling", "viscous_drag"),
+            &["bad.yaml:4", "viscous_drag", "viscous_rolling"],
+        ),
+        (
+            MECHANISM.replace(
+                "mechanisms: [ { viscous_rolling: { time: 2.0e-7 } } ]\n",
+                "",
+            ),
+            &["needs a dissipation law", "or a list of `mechanisms`"],
+        ),
+    ];
+    for (src, wanted) in cases {
+        let e = error_of(&src);
+        for w in wanted {
+            assert!(e.contains(w), "`{w}` not in: {e}");
+        }
+    }
+}

@@ -101,7 +101,10 @@ pub(crate) fn print_summary(scene: &Scene, r: &Run) {
         "final       alpha = {:.12} rad, alpha_dot = {:.12e} rad/s, Omega = {:.12} rad/s, omega_1 = {:.12} rad/s",
         m.alpha, m.alpha_dot, m.precession, m.spin
     );
-    let label = if scene.dissipation.is_some() || scene.friction.is_some() {
+    let label = if scene.dissipation.is_some()
+        || !scene.mechanisms.is_empty()
+        || scene.friction.is_some()
+    {
         "energy lost"
     } else {
         "energy drift"

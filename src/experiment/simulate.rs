@@ -85,6 +85,15 @@ pub fn simulate_motion(
             scene.model
         )));
     }
+    // The trace's truth (beta, t0) is eq 75's law; mechanisms would add torques it does not
+    // describe.
+    if !scene.mechanisms.is_empty() {
+        return Err(scene_err(
+            "the experiment's synthetic record follows eq 75's law alone: remove `mechanisms` \
+             (the mechanisms' spin-downs are in the report's friction section)"
+                .into(),
+        ));
+    }
     let law = scene
         .dissipation
         .ok_or_else(|| scene_err("a dissipative scene needs a dissipation law".into()))?;

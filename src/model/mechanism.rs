@@ -148,6 +148,17 @@ impl Mechanism {
         }
     }
 
+    /// The scene key of [`Mechanism::coefficient`] (the YAML field under the mechanism's name).
+    pub fn key(&self) -> &'static str {
+        match self {
+            Mechanism::RollingFriction { .. } => "coefficient",
+            Mechanism::ViscousRolling { .. } => "time",
+            Mechanism::RollingResistance { .. } => "lever",
+            Mechanism::Pivoting { .. } => "mu_radius",
+            Mechanism::AirFilm { .. } | Mechanism::AirLayer { .. } => "viscosity",
+        }
+    }
+
     /// The unit of [`Mechanism::coefficient`].
     pub fn unit(&self) -> &'static str {
         match self {

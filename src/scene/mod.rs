@@ -17,6 +17,7 @@ pub mod builtin;
 pub mod depth;
 mod friction;
 pub mod locate;
+mod mechanisms;
 pub mod message;
 pub mod range;
 mod spec;
@@ -29,6 +30,7 @@ use crate::budget;
 use crate::disk::{Disk, DiskError};
 use crate::input;
 use crate::model::dissipation::PowerLaw;
+use crate::model::mechanism::Mechanism;
 use crate::model::sliding::{Friction, Slip};
 use crate::model::steady::{rolling_straight, steady_motion, vertical_spin, SteadyError};
 use crate::model::{Extras, Motion, Quantity};
@@ -123,6 +125,9 @@ pub struct Scene {
     pub model: ModelKind,
     /// The dissipation law (dissipative and adiabatic models).
     pub dissipation: Option<PowerLaw>,
+    /// Dissipation mechanisms from their physics (`crate::model::mechanism`), each a torque
+    /// of the dissipative model besides or instead of eq 75's law.
+    pub mechanisms: Vec<Mechanism>,
     /// The friction law (sliding model).
     pub friction: Option<Friction>,
     /// The contact point's velocity relative to rolling at the start (sliding model).

@@ -13,6 +13,8 @@ pub(super) struct SceneSpec {
     #[serde(default)]
     pub(super) dissipation: Option<PowerLaw>,
     #[serde(default)]
+    pub(super) mechanisms: Vec<mechanisms::MechanismSpec>,
+    #[serde(default)]
     pub(super) friction: Option<friction::FrictionSpec>,
     pub(super) start: StartSpec,
     pub(super) stop: StopSpec,

@@ -91,6 +91,7 @@ impl Validator<'_> {
             self.err(&["disk", key], format!("disk: {e}"))
         })?;
         let dissipation = self.dissipation(&s)?;
+        let mechanisms = self.mechanisms(&s)?;
         let (friction, slip) = self.friction(&s)?;
         let start = self.start(&s.start, &disk, s.model)?;
         let stop = self.stop(&s.stop, &start, s.model)?;
@@ -128,6 +129,7 @@ impl Validator<'_> {
             disk,
             model: s.model,
             dissipation,
+            mechanisms,
             friction,
             slip,
             start,
@@ -174,43 +176,53 @@ impl Validator<'_> {
     }
 
     pub(super) fn dissipation(&self, s: &SceneSpec) -> Result<Option<PowerLaw>, SceneError> {
-        let needs = matches!(s.model, ModelKind::Dissipative | ModelKind::Adiabatic);
-        match (needs, s.dissipation) {
-            (true, None) => Err(self.err(
-                &["model"],
-                format!(
-                    "the {} model needs a dissipation law: add `dissipation: {{ epsilon: 1.0e-6, beta: 2 }}` (eq 75)",
-                    s.model
-                ),
-            )),
-            (false, Some(_)) => Err(self.err(
+        let allowed = matches!(s.model, ModelKind::Dissipative | ModelKind::Adiabatic);
+        // Mechanisms alone make a dissipative model too; the adiabatic model is eq 76, the law.
+        let required = s.model == ModelKind::Adiabatic
+            || (s.model == ModelKind::Dissipative && s.mechanisms.is_empty());
+        let Some(d) = s.dissipation else {
+            if required {
+                let or = if s.model == ModelKind::Dissipative {
+                    ", or a list of `mechanisms`"
+                } else {
+                    ""
+                };
+                return Err(self.err(
+                    &["model"],
+                    format!(
+                        "the {} model needs a dissipation law: add `dissipation: {{ epsilon: 1.0e-6, beta: 2 }}` (eq 75){or}",
+                        s.model
+                    ),
+                ));
+            }
+            return Ok(None);
+        };
+        if !allowed {
+            return Err(self.err(
                 &["dissipation"],
                 format!(
                     "the {} model does not dissipate: remove `dissipation`, or use model: dissipative",
                     s.model
                 ),
-            )),
-            (true, Some(d)) => {
-                if !(d.epsilon.is_finite() && d.epsilon > 0.0) {
-                    return Err(self.err(
-                        &["dissipation", "epsilon"],
-                        format!("dissipation: epsilon must be positive, got {}", d.epsilon),
-                    ));
-                }
-                if !(d.beta.is_finite() && d.beta > -2.0) {
-                    return Err(self.err(
-                        &["dissipation", "beta"],
-                        format!(
-                            "dissipation: beta must be a number above -2 (eq 79 has no finite-time \
-                             end otherwise), got {}",
-                            d.beta
-                        ),
-                    ));
-                }
-                Ok(Some(d))
-            }
-            (false, None) => Ok(None),
+            ));
         }
+        if !(d.epsilon.is_finite() && d.epsilon > 0.0) {
+            return Err(self.err(
+                &["dissipation", "epsilon"],
+                format!("dissipation: epsilon must be positive, got {}", d.epsilon),
+            ));
+        }
+        if !(d.beta.is_finite() && d.beta > -2.0) {
+            return Err(self.err(
+                &["dissipation", "beta"],
+                format!(
+                    "dissipation: beta must be a number above -2 (eq 79 has no finite-time \
+                     end otherwise), got {}",
+                    d.beta
+                ),
+            ));
+        }
+        Ok(Some(d))
     }
 
     pub(super) fn start(
