@@ -347,6 +347,10 @@ fn bad_mechanisms_are_refused_with_the_key_and_the_fix() {
             ],
         ),
         (
+            MECHANISM.replace("time: 2.0e-7 } }", "time: 2.0e-7 }, air_film: {} }"),
+            &["bad.yaml:4", "entry 1 names 2 mechanisms", "its own entry"],
+        ),
+        (
             MECHANISM.replace("viscous_rolling", "viscous_drag"),
             &["bad.yaml:4", "viscous_drag", "viscous_rolling"],
         ),
