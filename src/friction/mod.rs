@@ -9,12 +9,15 @@
 //!   (sec. 10);
 //! - [`contact_loss`]: whether a spin-down with eq 75's drag and Coulomb friction loses contact
 //!   (the premise of eqs 80-81) or slips first;
+//! - [`fall`]: where a disk in unstable steady motion ($b > 0$, large tilt) falls to, rolling
+//!   and on Coulomb tables ("falls to about 60 degrees", sec. 7 and the summary);
 //! - [`mechanisms`]: dissipation mechanisms from their physics, side by side: the exponent each
 //!   gives a spin-down through the experiment's fits, and where each would dominate.
 //!
 //! [`studies`] runs them all for the report, each over a range of $\mu$.
 
 pub mod contact_loss;
+pub mod fall;
 pub mod mechanisms;
 pub mod negative_b;
 pub mod rising;
