@@ -20,6 +20,9 @@
 //!   centripetal force of the centre over the weight), 0.06 to 0.17 at these starts, so every
 //!   table holds the start; whether it slides during the fall is what the runs show.
 //!
+//! The rolling model is also started across each band ([`ACROSS`]), to show how much the tilt
+//! it falls to depends on $b$.
+//!
 //! **Definitions** (checkable on the tilt sampled every [`SAMPLE`] s, with $\dot\alpha$):
 //! - the disk *has fallen* once $\alpha < \alpha_0 - 5°$ ([`LEFT`]);
 //! - it *falls to* the first local minimum of $\alpha$ after that: the first sample interval
@@ -51,6 +54,9 @@ use serde::Serialize;
 
 /// The steady tilts started from (deg).
 pub const TILTS_DEG: [f64; 3] = [75.0, 80.0, 85.0];
+/// Where across the band the rolling model is also started: $\beta = \beta_- +
+/// f(\beta_+ - \beta_-)$ for each fraction $f$.
+pub const ACROSS: [f64; 5] = [0.1, 0.25, 0.5, 0.75, 0.9];
 /// The Coulomb coefficients tried.
 pub const MUS: [f64; 4] = [0.2, 0.4, 0.6, 1.0];
 /// How long each run lasts (s).
@@ -124,6 +130,8 @@ pub struct Fall {
     pub bands: Vec<Band>,
     /// Every run: per band, rolling first, then each $\mu$ of [`MUS`].
     pub cases: Vec<FallCase>,
+    /// Rolling runs across each band, at the fractions [`ACROSS`] of its width.
+    pub across: Vec<FallCase>,
     /// The tilt the paper says the disk falls to (deg), from `paper/claims.yaml`.
     pub claimed_deg: f64,
     /// The claim's reading: within this relative distance of `claimed_deg`.
@@ -386,15 +394,26 @@ pub fn claimed() -> Option<(f64, f64)> {
     Some((c.claimed_value?, c.rule?.within?))
 }
 
-/// The whole study for disk `d`: the band at each tilt of [`TILTS_DEG`], and from each the
-/// rolling run and a sliding run for each $\mu$ of [`MUS`].
+/// The whole study for disk `d`: the band at each tilt of [`TILTS_DEG`], from each the rolling
+/// run and a sliding run for each $\mu$ of [`MUS`], and rolling runs across the band.
 pub fn fall(d: &Disk, settings: &Settings) -> Result<Fall, SettingsError> {
     let bands: Vec<Band> = TILTS_DEG
         .iter()
         .filter_map(|a| band(d, a.to_radians()))
         .collect();
     let mut cases = Vec::new();
+    let mut across = Vec::new();
     for b in &bands {
+        for f in ACROSS {
+            let beta = b.lower + f * (b.upper - b.lower);
+            across.extend(fall_from(
+                d,
+                b.alpha0_deg.to_radians(),
+                beta,
+                None,
+                settings,
+            )?);
+        }
         let alpha0 = b.alpha0_deg.to_radians();
         cases.extend(fall_from(d, alpha0, b.start, None, settings)?);
         for mu in MUS {
@@ -405,6 +424,7 @@ pub fn fall(d: &Disk, settings: &Settings) -> Result<Fall, SettingsError> {
     Ok(Fall {
         bands,
         cases,
+        across,
         claimed_deg,
         within,
     })
@@ -512,6 +532,24 @@ mod tests {
             let low = of(Some(MUS[0]));
             assert!(low.slipped && !low.lifted, "{low:?}");
             assert!(low.fell_to_deg.unwrap() < rolling.fell_to_deg.unwrap() - 10.0);
+        }
+    }
+
+    #[test]
+    fn the_tilt_it_falls_to_depends_on_b_across_the_band() {
+        let d = super::super::toy_disk();
+        let f = fall(&d, &settings()).unwrap();
+        assert_eq!(f.across.len(), f.bands.len() * ACROSS.len());
+        for a in [80.0, 85.0] {
+            let to: Vec<f64> = f
+                .across
+                .iter()
+                .filter(|c| c.alpha0_deg == a)
+                .filter_map(|c| c.fell_to_deg)
+                .collect();
+            let spread = to.iter().copied().fold(f64::NEG_INFINITY, f64::max)
+                - to.iter().copied().fold(f64::INFINITY, f64::min);
+            assert!(to.len() == ACROSS.len() && spread > 15.0, "{a}: {to:?}");
         }
     }
 

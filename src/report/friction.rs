@@ -239,6 +239,32 @@ fn fall(o: &mut String, f: &crate::friction::fall::Fall) {
             f.holds(c).map_or("-", yes)
         );
     }
+    let fractions: Vec<String> = crate::friction::fall::ACROSS
+        .iter()
+        .map(|x| format!("{x:.2}"))
+        .collect();
+    heading(
+        o,
+        &format!(
+            "  Rolling across the band: the tilt it falls to (deg), b/a in brackets, at {} of the \
+             band's width from its lower edge",
+            fractions.join(", ")
+        ),
+    );
+    for b in &f.bands {
+        let _ = write!(o, "  {:>12.0}  ", b.alpha0_deg);
+        for c in f.across.iter().filter(|c| c.alpha0_deg == b.alpha0_deg) {
+            let to = c.fell_to_deg.map_or("-".into(), |x| format!("{x:.1}"));
+            let _ = write!(o, " {:>6} ({:.2})", to, c.b_over_a);
+        }
+        o.push('\n');
+    }
+    let spread = |pick: fn(f64, f64) -> f64, start: f64| {
+        f.across
+            .iter()
+            .filter_map(|c| c.fell_to_deg)
+            .fold(start, pick)
+    };
     let claimed = f.claimed_deg;
     let held = f.cases.iter().filter(|c| f.holds(c) == Some(true)).count();
     let below = f
@@ -299,15 +325,19 @@ fn fall(o: &mut String, f: &crate::friction::fall::Fall) {
              paper's LaTeX writes it, 'alpha0 \\lsim {claimed:.0} deg' (at most {hi:.0}), in \
              {below}. Rolling, and on every table that never slides (the same numbers): {}; with \
              no dissipation it then swings back up toward alpha0 (the tilt at the end). Where \
-             the contact slides during the fall: {}. The tilt it falls to depends on the start \
-             (alpha0 and b), not on a tilt near {claimed:.0} deg.",
+             the contact slides during the fall: {}. Across the bands the rolling disk falls \
+             to anywhere from {:.1} to {:.1} deg: the tilt depends on the start (alpha0 and b), \
+             not on a tilt near {claimed:.0} deg; a dash: it did not fall {LEFT:.0} deg within \
+             {DURATION} s.",
             f.cases.len(),
             rolling.join("; "),
             if slid.is_empty() {
                 "none".into()
             } else {
                 slid.join("; ")
-            }
+            },
+            spread(f64::min, f64::INFINITY),
+            spread(f64::max, f64::NEG_INFINITY)
         ),
     );
 }
