@@ -568,6 +568,7 @@ mod tests {
         let d = super::super::toy_disk();
         let t0 = std::time::Instant::now();
         let f = fall(&d, &settings()).unwrap();
-        eprintln!("fall study: {:?} for {} runs", t0.elapsed(), f.cases.len());
+        let runs = f.cases.len() + f.across.len();
+        eprintln!("fall study: {:?} for {runs} runs", t0.elapsed());
     }
 }
