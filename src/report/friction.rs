@@ -177,15 +177,32 @@ pub fn text(s: &Studies) -> String {
     o
 }
 
+/// The claim the fall study answers (paper/claims.yaml).
+const FALL_CLAIM: &str = "positive-b-unstable-large-tilt";
+
+/// The fall claim's printed tilt (deg) and its reading `within` (a relative distance), from the
+/// built-in claims; `None` if the claim or that reading is missing.
+fn fall_claim() -> Option<(f64, f64)> {
+    let c = crate::catalogue::claims()
+        .into_iter()
+        .find(|c| c.id == FALL_CLAIM)?;
+    Some((c.claimed_value?, c.rule?.within?))
+}
+
 /// Sec. 7 and the summary: the fall from unstable steady motion at large tilt, the tilt it
 /// falls to against the claim's "about 60 degrees", rolling and on Coulomb tables.
 fn fall(o: &mut String, f: &crate::friction::fall::Fall) {
     use crate::friction::fall::{DURATION, LEFT, NUDGE};
-    let (lo, hi) = (
-        f.claimed_deg * (1.0 - f.within),
-        f.claimed_deg * (1.0 + f.within),
-    );
     o.push('\n');
+    let Some((claimed, within)) = fall_claim() else {
+        heading(
+            o,
+            &format!("The fall study: claim `{FALL_CLAIM}` has no `within` reading in claims.yaml"),
+        );
+        return;
+    };
+    let (lo, hi) = (claimed * (1.0 - within), claimed * (1.0 + within));
+    let holds = |c: &crate::friction::fall::FallCase| c.fell_to_deg.map(|x| (lo..=hi).contains(&x));
     heading(
         o,
         &format!(
@@ -195,7 +212,7 @@ fn fall(o: &mut String, f: &crate::friction::fall::Fall) {
              and on Coulomb tables. Falls to: the first minimum of the tilt once it is {LEFT:.0} \
              deg below alpha0; 'about' read as {lo:.0} to {hi:.0} deg (claims.yaml). 1/lambda: \
              the instability's e-folding time; mu steady: the friction the steady start needs",
-            f.claimed_deg
+            claimed
         ),
     );
     let _ = writeln!(
@@ -218,7 +235,7 @@ fn fall(o: &mut String, f: &crate::friction::fall::Fall) {
     let _ = writeln!(
         o,
         "  alpha0 (deg)  contact     mu   falls to (deg)   t (s)   periods   slid   lifted   lowest (deg)   at {DURATION} s (deg)   about {:.0}",
-        f.claimed_deg
+        claimed
     );
     let yes = |x: bool| if x { "yes" } else { "no" };
     for c in &f.cases {
@@ -236,7 +253,7 @@ fn fall(o: &mut String, f: &crate::friction::fall::Fall) {
             yes(c.lifted),
             c.lowest_deg,
             c.end_deg,
-            f.holds(c).map_or("-", yes)
+            holds(c).map_or("-", yes)
         );
     }
     let fractions: Vec<String> = crate::friction::fall::ACROSS
@@ -265,8 +282,7 @@ fn fall(o: &mut String, f: &crate::friction::fall::Fall) {
             .filter_map(|c| c.fell_to_deg)
             .fold(start, pick)
     };
-    let claimed = f.claimed_deg;
-    let held = f.cases.iter().filter(|c| f.holds(c) == Some(true)).count();
+    let held = f.cases.iter().filter(|c| holds(c) == Some(true)).count();
     let below = f
         .cases
         .iter()
@@ -433,4 +449,12 @@ fn mechanisms(o: &mut String, m: &crate::friction::mechanisms::Mechanisms) {
             m.film_valid_above
         ),
     );
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn the_fall_claim_and_its_reading_are_found() {
+        assert_eq!(super::fall_claim(), Some((60.0, 0.05)));
+    }
 }
