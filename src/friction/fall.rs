@@ -537,7 +537,7 @@ mod tests {
     }
 
     #[test]
-    #[ignore = "a timing, run with --nocapture"]
+    #[ignore = "a timing: prints what the study costs"]
     fn cost() {
         let d = super::super::toy_disk();
         let t0 = std::time::Instant::now();
