@@ -9,12 +9,15 @@
 //!   (sec. 10);
 //! - [`contact_loss`]: whether a spin-down with eq 75's drag and Coulomb friction loses contact
 //!   (the premise of eqs 80-81) or slips first;
+//! - [`fall`]: where a disk in unstable steady motion ($b > 0$, large tilt) falls to, rolling
+//!   and on Coulomb tables ("falls to about 60 degrees", sec. 7 and the summary);
 //! - [`mechanisms`]: dissipation mechanisms from their physics, side by side: the exponent each
 //!   gives a spin-down through the experiment's fits, and where each would dominate.
 //!
 //! [`studies`] runs them all for the report, each over a range of $\mu$.
 
 pub mod contact_loss;
+pub mod fall;
 pub mod mechanisms;
 pub mod negative_b;
 pub mod rising;
@@ -95,6 +98,8 @@ pub struct Studies {
     pub contact_loss: Vec<contact_loss::SpinDownContact>,
     /// Dissipation mechanisms side by side, held against the record's law.
     pub mechanisms: mechanisms::Mechanisms,
+    /// The fall from unstable steady motion at large tilt (sec. 7, summary).
+    pub fall: fall::Fall,
 }
 
 /// Tilts of the slip-onset and negative-b studies (rad).
@@ -131,24 +136,25 @@ pub fn studies(settings: &Settings, record: &Law) -> Result<Studies, SettingsErr
         }
         Ok(out)
     };
-    let (((slip_onset, negative_b), mechanisms), (spiral, (rising, contact_loss))) = rayon::join(
-        || {
-            rayon::join(
-                || rayon::join(onset, negative),
-                || mechanisms::mechanisms(&d, record, settings),
-            )
-        },
-        || {
-            rayon::join(spirals, || {
-                let rising = rising::rising(&d, (d.g / (d.a * d.k)).sqrt(), settings);
-                let losses: Result<Vec<_>, SettingsError> = contact_loss::MUS
-                    .iter()
-                    .map(|&mu| contact_loss::spin_down_contact(&d, mu, settings, false))
-                    .collect();
-                (rising, losses)
-            })
-        },
-    );
+    let (((slip_onset, negative_b), mechanisms), (spiral, (rising, (contact_loss, fall)))) =
+        rayon::join(
+            || {
+                rayon::join(
+                    || rayon::join(onset, negative),
+                    || mechanisms::mechanisms(&d, record, settings),
+                )
+            },
+            || {
+                rayon::join(spirals, || {
+                    let rising = rising::rising(&d, (d.g / (d.a * d.k)).sqrt(), settings);
+                    let losses: Result<Vec<_>, SettingsError> = contact_loss::MUS
+                        .iter()
+                        .map(|&mu| contact_loss::spin_down_contact(&d, mu, settings, false))
+                        .collect();
+                    (rising, (losses, fall::fall(&d, settings)))
+                })
+            },
+        );
     Ok(Studies {
         slip_onset,
         negative_b,
@@ -156,6 +162,7 @@ pub fn studies(settings: &Settings, record: &Law) -> Result<Studies, SettingsErr
         rising: rising?,
         contact_loss: contact_loss?,
         mechanisms: mechanisms?,
+        fall: fall?,
     })
 }
 
