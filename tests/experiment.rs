@@ -345,12 +345,15 @@ fn sixty_hertz_hum_leaves_beta_and_t0_within_the_targets() {
 /// tilts, its nutation): the fit's scatter is far above the peak-timing noise and the scaled
 /// errors are reported; the targets are checked as measured.
 ///
-/// KNOWN FAILURE (not met): with seed 4 the analysis refuses the trace (R^2 = 0.85, beta
-/// -0.60, measured 2026-11-24 after the hum subtraction was made stationary; the cause is not
-/// the hum's leakage, which that change removed, and is not yet found). Without artifacts the same trace gives
-/// beta 2.055 +- 0.003 and t0 -20 ms (`model_spin_downs_give_back_their_beta_and_t0`).
+/// With seed 4 this trace used to be refused (R^2 0.85, beta -0.60): the drift and the hum
+/// together hid the hum from its detection. The pulses' harmonics leak into the 1 s blocks'
+/// hum fits where they sweep past 50 Hz, and one leaking block (0.08 V, against the 0.04 V
+/// hum) broke the old test on the sum of the blocks' amplitudes; the unsubtracted hum after
+/// t0 was then timed as pulses up to 9.9 s. The hum is now judged by the blocks' median.
+/// Measured 2026-11-25: whole record beta 2.0418 +- 0.0073, t0 -14.7 ms +- 2.0; last 2.5 s beta
+/// 1.9818 +- 0.0030, t0 -5.3 ms +- 0.5; the 3 ms for t0 is not met (the model's own
+/// t0 offset, see `model_spin_downs_give_back_their_beta_and_t0`), 30 ms is checked.
 #[test]
-#[ignore = "target not met: the model trace with all artifacts is refused"]
 fn the_model_spin_down_with_artifacts_gives_beta_and_t0() {
     let trace = simulate_trace(&spin_down(2.0), &LightModel::default())
         .unwrap()
@@ -374,6 +377,7 @@ fn the_model_spin_down_with_artifacts_gives_beta_and_t0() {
         );
         assert!((a.eq84.beta - tr.beta).abs() < 0.1, "{a}");
         assert!((a.eq84.t0 - tr.t0).abs() < 0.03, "{a}");
+        assert!(a.hum > 0.5 * 0.04 && a.hum < 1.5 * 0.04, "hum {}", a.hum);
     }
 }
 
