@@ -12,7 +12,7 @@
 //! **Hum.** Mains hum is a sum of lines at $h f_m$ ($f_m$ = 50 or 60 Hz, $h = 1, 2, 3$). Where the
 //! pulses are shallow (near $t_0$, and after it when the disk lies flat) it would be timed as
 //! pulses of its own. In each block of 1 s the baseline samples (within four robust deviations
-//! of the block's median, so not the pulses) are fitted by least squares (nalgebra's SVD) with
+//! of the block's median, then of the fit's residuals, so not the pulses) are fitted by least squares (nalgebra's SVD) with
 //! an offset, a slope and the six sines and cosines of each mains family; the fitted lines
 //! are subtracted from the whole block when the family is coherent across blocks (see
 //! [`remove_hum`]), so that a clean trace is left alone.
@@ -82,24 +82,48 @@ pub fn remove_hum(t: &[f64], v: &mut [f64], sigma_v: f64) -> f64 {
         if block.len() < 100 {
             continue;
         }
-        let mut sorted: Vec<f64> = v[block.clone()].to_vec();
-        sorted.sort_by(f64::total_cmp);
-        let med = sorted[sorted.len() / 2];
-        let mut dev: Vec<f64> = sorted.iter().map(|x| (x - med).abs()).collect();
-        dev.sort_by(f64::total_cmp);
-        let mad = 1.4826 * dev[dev.len() / 2];
-        let quiet: Vec<usize> = block
-            .clone()
-            .filter(|&j| (v[j] - med).abs() <= 4.0 * mad + 3.0 * sigma_v)
-            .collect();
-        if quiet.len() < 4 * 14 {
-            continue;
-        }
         let t_mid = t[block.start];
-        let a = DMatrix::from_fn(quiet.len(), 14, |i, k| hum_row(t[quiet[i]], t_mid)[k]);
-        let b = DVector::from_fn(quiet.len(), |i, _| v[quiet[i]]);
-        if let Ok(x) = a.svd(true, true).solve(&b, 1e-12) {
+        let robust = |r: &[f64]| -> (f64, f64) {
+            let mut sorted = r.to_vec();
+            sorted.sort_by(f64::total_cmp);
+            let med = sorted[sorted.len() / 2];
+            let mut dev: Vec<f64> = sorted.iter().map(|x| (x - med).abs()).collect();
+            dev.sort_by(f64::total_cmp);
+            (med, 1.4826 * dev[dev.len() / 2])
+        };
+        // The quiet samples (not the pulses): within four robust deviations (and three noise
+        // deviations) of the block's median, then of the fit's residuals, three passes. Chosen
+        // on the signal itself, the selection depends on the hum: a pulse's foot near the cut
+        // is kept where the hum is low and dropped where it is high, which shrinks the fitted
+        // hum (by 10-25 %, more with drift, on the coverage study's traces; up to 9.5 mV left
+        // of a 40 mV line). Chosen on the residuals, with the hum fitted out, it does not
+        // (0.7 mV left at most, measured 2026-11-25 on seeds 2000, 2002, 2004).
+        let mut resid: Vec<f64> = v[block.clone()].to_vec();
+        let mut fit = None;
+        for _ in 0..3 {
+            let (med, mad) = robust(&resid);
+            let quiet: Vec<usize> = block
+                .clone()
+                .filter(|&j| (resid[j - block.start] - med).abs() <= 4.0 * mad + 3.0 * sigma_v)
+                .collect();
+            if quiet.len() < 4 * 14 {
+                fit = None;
+                break;
+            }
+            let a = DMatrix::from_fn(quiet.len(), 14, |i, k| hum_row(t[quiet[i]], t_mid)[k]);
+            let b = DVector::from_fn(quiet.len(), |i, _| v[quiet[i]]);
+            let Ok(x) = a.svd(true, true).solve(&b, 1e-12) else {
+                fit = None;
+                break;
+            };
+            for j in block.clone() {
+                let r = hum_row(t[j], t_mid);
+                resid[j - block.start] = v[j] - (0..14).map(|k| r[k] * x[k]).sum::<f64>();
+            }
             let se = sigma_v.max(mad) * (2.0 / quiet.len() as f64).sqrt();
+            fit = Some((x, se));
+        }
+        if let Some((x, se)) = fit {
             blocks.push((block, t_mid, x, se));
         }
     }
