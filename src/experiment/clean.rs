@@ -2,7 +2,8 @@
 //!
 //! A glitch is one sample far off the line through its two neighbours while the neighbours
 //! agree with each other: $|v_j - \tfrac12(v_{j-1} + v_{j+1})| > \max(8\sigma_v,\ 4|v_{j+1} - v_{j-1}|)$,
-//! with $\sigma_v$ the noise. It is replaced by the mean of its neighbours. On a monotonic edge
+//! with $\sigma_v$ the noise. It is replaced by the mean of its neighbours (at the record's two
+//! ends, by the line through the two samples on its one side). On a monotonic edge
 //! the neighbours differ by more than the sample departs, so edges (and the half-height
 //! crossings timed on them) are never touched; at a sharp pulse top the top may be lowered,
 //! which moves both crossings of the pulse alike and leaves their mean, the peak time, in place.
@@ -30,6 +31,20 @@ pub fn remove_glitches(v: &mut [f64], sigma_v: f64) -> usize {
         if d > (8.0 * sigma_v).max(4.0 * (b - a).abs()) {
             v[j] = 0.5 * (a + b);
             count += 1;
+        }
+    }
+    // The first and the last sample have one side only: each is compared with the line through
+    // its two neighbours on that side, against the same thresholds. (A glitch on the first
+    // sample of a record that began inside a pulse was timed as that pulse's rise: seed 4025 of
+    // the artifact-laden coverage study, a 5.7 ms residual, refused with R^2 0.939.)
+    if n >= 4 {
+        for (j, k, l) in [(0, 1, 2), (n - 1, n - 2, n - 3)] {
+            let (a, b) = (v[k], v[l]);
+            let line = 2.0 * a - b;
+            if (v[j] - line).abs() > (8.0 * sigma_v).max(4.0 * (b - a).abs()) {
+                v[j] = line;
+                count += 1;
+            }
         }
     }
     count
@@ -307,5 +322,13 @@ mod tests {
         v[7] += 3.0;
         assert_eq!(remove_glitches(&mut v, 0.01), 1);
         assert!((v[7] - 0.7).abs() < 1e-12, "{}", v[7]);
+        // At either end of the record.
+        v[0] -= 1.0;
+        v[19] += 1.0;
+        assert_eq!(remove_glitches(&mut v, 0.01), 2);
+        assert!(
+            (v[0] - 0.0).abs() < 1e-12 && (v[19] - 1.9).abs() < 1e-12,
+            "{v:?}"
+        );
     }
 }
