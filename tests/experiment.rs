@@ -48,6 +48,37 @@ fn model_spin_downs_give_back_their_beta_and_t0() {
     }
 }
 
+/// Why the model's t0 comes out early (issue 15): not the light or the analysis, the model
+/// itself. The truth's t0 is where the tilt alpha vanishes (`Truth`); eq 79 says
+/// $\alpha \propto (t_0 - t)^{2/(\beta+2)}$, so each instant gives its own estimate
+/// $t + 2\alpha/((\beta+2)|\dot\alpha|)$ of t0. On the model's tilt, without light or noise,
+/// that estimate is 9.1 ms early one second before the end, 4.8 ms at 0.2 s and 2.7 ms at
+/// 0.01 s (measured 2026-11-25; +70 ms six seconds before): the model reaches eq 79 only as
+/// alpha goes to 0, and a fit of eq 79 to cycles seconds before the end inherits that
+/// (beta free, whole record: t0 -20 ms, beta 2.055; from 1 s before the end: -3.4 ms, beta
+/// 1.96). The heading rate keeps to the adiabatic $\Omega^2 = g/(k a \sin\alpha)$ within 0.8 %
+/// throughout, a near-constant factor that goes into C, not t0.
+#[test]
+fn the_models_tilt_reaches_eq_79_only_at_the_end() {
+    use rolling_disk::experiment::simulate::simulate_motion;
+    let m = simulate_motion(&spin_down(2.0), 7.27, 5000.0, 50_000).unwrap();
+    let t0 = m.truth.t0;
+    let local_t0 = |back: f64| {
+        let j = m.t.iter().position(|&x| x >= t0 - back).unwrap();
+        let h = 25;
+        let rate = (m.alpha[j + h] - m.alpha[j - h]) / (m.t[j + h] - m.t[j - h]);
+        m.t[j] + 2.0 * m.alpha[j] / (4.0 * rate.abs()) - t0
+    };
+    let (far, near) = (local_t0(1.0), local_t0(0.01));
+    println!(
+        "local t0 from the tilt: {:+.2} ms one second before the end, {:+.2} ms at 10 ms",
+        1e3 * far,
+        1e3 * near
+    );
+    assert!(far < -3e-3, "{far}");
+    assert!(near.abs() < 0.5 * far.abs(), "{near} {far}");
+}
+
 #[test]
 fn law_traces_give_back_their_beta_and_t0() {
     let disk = Disk::uniform(0.0375);
@@ -76,7 +107,9 @@ fn law_traces_give_back_their_beta_and_t0() {
 
 /// Coverage on exact-law traces with the scope's noise (5 mV, 8 bits), `runs` seeds: the
 /// fraction of pulls of beta and t0 inside 1 and 1.96 standard uncertainties must be 68.3 % and
-/// 95 % within about 3 binomial standard deviations (at 120 runs: 4.2 % and 2.0 %).
+/// 95 % within 3 binomial standard deviations (at 120 runs: 4.2 % and 2.0 %; at 30 runs: 8.5 %
+/// and 4.0 %), and the pulls' mean must be 0 within 3 standard errors ($3/\sqrt{n}$: 0.27 at
+/// 120 runs, 0.55 at 30), which a bias of one sigma fails at either size.
 fn check_coverage(runs: usize, seed0: u64) {
     let c = coverage::coverage(runs, seed0, false).unwrap();
     println!("{}", c.summary());
@@ -87,19 +120,29 @@ fn check_coverage(runs: usize, seed0: u64) {
         let (one, two) = (c.fraction(pulls, 1.0), c.fraction(pulls, 1.96));
         assert!((one - 0.683).abs() < 3.0 * sd(0.683), "{}", c.summary());
         assert!((two - 0.95).abs() < 3.0 * sd(0.95), "{}", c.summary());
+        let (mean, _) = coverage::Coverage::moments(pulls);
+        assert!(mean.abs() < 3.0 / n.sqrt(), "{}", c.summary());
     }
 }
 
-/// KNOWN FAILURE (not met), measured this session on seeds 1000-1119 (with a Newey-West
-/// sandwich covariance in place of the AR(1) inflation; that change was then withdrawn as it
-/// did not help): beta inside 1 sigma 59.2 %, 1.96 sigma 85.0 %; t0 52.5 %, 78.3 %. The pulls'
-/// mean and sd were beta (+0.46, 1.20), t0 (-0.98, 1.25): the shortfall is mostly a bias (t0
-/// about one sigma early, worst 0.24 ms), not too narrow a covariance, so no error model alone
-/// can fix it. It takes 9 minutes on the shared machine, too slow for the normal run.
+/// Met (measured 2026-11-25, seeds 1000-1119, 253 s on the shared 2-core machine): beta inside
+/// 1 sigma 65.0 %, 1.96 sigma 92.5 %; t0 66.7 %, 92.5 %; pulls (mean, sd) beta (+0.08, 1.09), t0
+/// (-0.11, 1.03); worst errors beta 0.0004, t0 0.144 ms. Before each pulse's drift was removed
+/// from its timing (`pulse_drift`) the same seeds gave beta 59.2 %, 85.0 %; t0 52.5 %, 78.3 %,
+/// pulls beta (+0.46, 1.20), t0 (-0.98, 1.25): t0 about one sigma early. Too slow for the normal
+/// run: `stated_intervals_cover_the_truth_30_recordings` runs there instead.
 #[test]
-#[ignore = "target not met: the fits are biased by about one sigma (t0 early)"]
+#[ignore = "slow: 120 recordings, about 4 minutes"]
 fn stated_intervals_cover_the_truth() {
     check_coverage(120, 1000);
+}
+
+/// The fast version of [`stated_intervals_cover_the_truth`] for the normal run: 30 other
+/// recordings, with the bounds that size allows (3 binomial sd: 68.3 +- 25.5 %, 95 +- 11.9 %;
+/// pulls' mean within 0.55).
+#[test]
+fn stated_intervals_cover_the_truth_30_recordings() {
+    check_coverage(30, 3000);
 }
 
 /// The full study: 400 other recordings (binomial sd 2.3 % at 68 %, 1.1 % at 95 %).
@@ -345,12 +388,17 @@ fn sixty_hertz_hum_leaves_beta_and_t0_within_the_targets() {
 /// tilts, its nutation): the fit's scatter is far above the peak-timing noise and the scaled
 /// errors are reported; the targets are checked as measured.
 ///
-/// KNOWN FAILURE (not met): with seed 4 the analysis refuses the trace (R^2 = 0.85, beta
-/// -0.60, measured 2026-11-24 after the hum subtraction was made stationary; the cause is not
-/// the hum's leakage, which that change removed, and is not yet found). Without artifacts the same trace gives
-/// beta 2.055 +- 0.003 and t0 -20 ms (`model_spin_downs_give_back_their_beta_and_t0`).
+/// With seed 4 this trace used to be refused (R^2 0.85, beta -0.60): the drift and the hum
+/// together hid the hum from its detection. The pulses' harmonics leak into the 1 s blocks'
+/// hum fits where they sweep past 50 Hz, and one leaking block (0.08 V, against the 0.04 V
+/// hum) broke the old test on the sum of the blocks' amplitudes; the unsubtracted hum after
+/// t0 was then timed as pulses up to 9.9 s. The hum is now judged by the blocks' median.
+/// Measured 2026-11-25 (with the pulses' drift removed from their timing): whole record beta
+/// 2.0537 +- 0.0103, t0 -20.0 ms +- 3.9; last 2.5 s beta 1.9861 +- 0.0031, t0 -6.3 ms +- 0.6
+/// (without artifacts: 2.0546 and -20.3 ms); the issue's 3 ms for t0 is not met: the model's own
+/// tilt reaches eq 79 only at the end (`the_models_tilt_reaches_eq_79_only_at_the_end`). 30 ms
+/// is checked.
 #[test]
-#[ignore = "target not met: the model trace with all artifacts is refused"]
 fn the_model_spin_down_with_artifacts_gives_beta_and_t0() {
     let trace = simulate_trace(&spin_down(2.0), &LightModel::default())
         .unwrap()
@@ -374,29 +422,56 @@ fn the_model_spin_down_with_artifacts_gives_beta_and_t0() {
         );
         assert!((a.eq84.beta - tr.beta).abs() < 0.1, "{a}");
         assert!((a.eq84.t0 - tr.t0).abs() < 0.03, "{a}");
+        assert!(a.hum > 0.5 * 0.04 && a.hum < 1.5 * 0.04, "hum {}", a.hum);
     }
 }
 
-/// KNOWN FAILURE (not met): measured 11 of 120 refused (85 before the hum was subtracted as one
-/// stationary line, 2026-11-24); beta inside 1.96 sigma 80.8 %, t0 76.7 % (refusals count as
-/// misses; pulls' sd 1.27 and 1.25: the stated errors are about a quarter too small); worst
-/// errors beta 0.0006, t0 0.25 ms.
-#[test]
-#[ignore = "target not met: most artifact-laden traces are refused"]
-fn stated_intervals_cover_the_truth_on_artifact_laden_traces() {
-    let c = coverage::coverage(120, 2000, true).unwrap();
+/// Coverage on artifact-laden exact-law traces (realistic drift, 50 Hz hum, clipping, glitches,
+/// 1 % of samples dropped, each trace its own seeds): none refused, the 95 % intervals within
+/// about 3 binomial sd of 95 %, the 68 % ones of 68.3 %, the pulls' mean within 3 standard
+/// errors of 0, and the worst errors within the issue's targets.
+fn check_artifact_coverage(runs: usize, seed0: u64) {
+    let c = coverage::coverage(runs, seed0, true).unwrap();
     println!("{}", c.summary());
-    // Binomial sd at 120 runs: 4.3 % at 68 %, 2.0 % at 95 %; bounds at about 3 sd.
+    assert_eq!(c.refused, 0, "{}", c.summary());
+    let n = runs as f64;
+    let sd = |p: f64| (p * (1.0 - p) / n).sqrt();
     for pulls in [&c.beta_pulls, &c.t0_pulls] {
         let (one, two) = (c.fraction(pulls, 1.0), c.fraction(pulls, 1.96));
-        assert!((0.55..=0.82).contains(&one), "{}", c.summary());
-        assert!((0.89..=1.0).contains(&two), "{}", c.summary());
+        assert!((one - 0.683).abs() < 3.0 * sd(0.683), "{}", c.summary());
+        assert!((two - 0.95).abs() < 3.0 * sd(0.95), "{}", c.summary());
+        let (mean, _) = coverage::Coverage::moments(pulls);
+        assert!(mean.abs() < 3.0 / n.sqrt(), "{}", c.summary());
     }
     assert!(
         c.worst_beta_error < 0.1 && c.worst_t0_error < 3e-3,
         "{}",
         c.summary()
     );
+}
+
+/// Met (measured 2026-11-25, seeds 2000-2119, 250 s): none of 120 refused; beta inside 1 sigma
+/// 63.3 %, 1.96 sigma 91.7 %; t0 64.2 %, 91.7 %; pulls (mean, sd) beta (+0.17, 1.14), t0
+/// (-0.19, 1.14); worst errors beta 0.0004, t0 0.161 ms. Before (2026-11-24): 11 refused, 1.96
+/// sigma beta 80.8 %, t0 76.7 %; the drift re-timing alone (issue-15 patch) made it 61.7 % and
+/// 60.8 % (worst t0 1.51 ms). The cause was the hum: fitted on samples chosen from the signal it
+/// came out 10-25 % short (more with drift), and where drift and hum met, one block's leakage
+/// could hide it; what was left of it threw both timings off. With the hum fitted on samples
+/// chosen from its residuals and judged by the blocks' median (plain crossings: 0 refused,
+/// 86.7 % and 82.5 %), and a re-timed pulse kept only where its two neighbours agree.
+#[test]
+#[ignore = "slow: 120 recordings, about 4 minutes"]
+fn stated_intervals_cover_the_truth_on_artifact_laden_traces() {
+    check_artifact_coverage(120, 2000);
+}
+
+/// The fast version for the normal run: 30 other artifact-laden recordings, with the bounds
+/// that size allows. Measured 2026-11-25 (seeds 4000-4029): none refused; 1.96 sigma beta
+/// 90.0 %, t0 93.3 %; worst t0 0.140 ms. Seed 4025 was refused (R^2 0.939) until a glitch on
+/// the record's first sample, which begins inside a pulse, was removed like the others.
+#[test]
+fn stated_intervals_cover_the_truth_on_30_artifact_laden_traces() {
+    check_artifact_coverage(30, 4000);
 }
 
 #[test]

@@ -13,6 +13,7 @@ use crate::experiment::artifacts::Artifacts;
 use crate::experiment::error::ExperimentError;
 use crate::experiment::law::{law_trace, Law};
 use crate::experiment::light::LightModel;
+use rayon::prelude::*;
 use serde::Serialize;
 
 /// The outcome of a coverage study.
@@ -86,7 +87,9 @@ pub fn coverage(runs: usize, seed0: u64, artifacts: bool) -> Result<Coverage, Ex
         worst_t0_error: 0.0,
     };
     let settings = AnalysisSettings::default();
-    for k in 0..runs as u64 {
+    // Each recording is independent and seeded by its index: analysed in parallel, gathered in
+    // order, so the result does not depend on the number of threads.
+    let one = |k: u64| -> Result<Option<(f64, f64, f64, f64)>, ExperimentError> {
         let mut light = LightModel::default();
         light.scope.seed = seed0 + k;
         let mut trace = law_trace(&law, &disk, &light)?;
@@ -97,13 +100,22 @@ pub fn coverage(runs: usize, seed0: u64, artifacts: bool) -> Result<Coverage, Ex
         match analyze(&trace, &settings) {
             Ok(a) => {
                 let (db, dt) = (a.eq84.beta - law.beta, a.eq84.t0 - light.scope.end_at);
-                c.beta_pulls.push(db / a.eq84.beta_sigma);
-                c.t0_pulls.push(dt / a.eq84.t0_sigma);
+                Ok(Some((db, dt, a.eq84.beta_sigma, a.eq84.t0_sigma)))
+            }
+            Err(ExperimentError::Refused { .. }) => Ok(None),
+            Err(e) => Err(e),
+        }
+    };
+    let results: Vec<_> = (0..runs as u64).into_par_iter().map(one).collect();
+    for r in results {
+        match r? {
+            Some((db, dt, sb, st)) => {
+                c.beta_pulls.push(db / sb);
+                c.t0_pulls.push(dt / st);
                 c.worst_beta_error = c.worst_beta_error.max(db.abs());
                 c.worst_t0_error = c.worst_t0_error.max(dt.abs());
             }
-            Err(ExperimentError::Refused { .. }) => c.refused += 1,
-            Err(e) => return Err(e),
+            None => c.refused += 1,
         }
     }
     Ok(c)

@@ -38,6 +38,7 @@ pub mod models;
 pub mod numbers;
 pub mod peaks;
 pub mod plausibility;
+pub mod pulse_drift;
 pub mod rates;
 pub mod scope;
 pub mod simulate;

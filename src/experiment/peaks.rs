@@ -14,7 +14,13 @@
 //! the cubic's Lagrange weights $\ell_j$ and slope $p'$ at the root:
 //! $\sigma_\times^2 = \sigma_v^2 \sum_j \ell_j^2 / p'^2$, and
 //! $\sigma_{t_i}^2 = \tfrac14(\sigma_\uparrow^2 + \sigma_\downarrow^2)$.
+//!
+//! The mean of two crossings is the centre of a pulse that keeps its shape; the light's pulses
+//! drift (the tilt follows $\Omega$), so by default each pulse is then re-timed with its drift,
+//! measured by its neighbours, removed ([`pulse_drift`](crate::experiment::pulse_drift)), and
+//! last corrected for the change of $\Omega$ within the pulse ([`correct_chirp`]).
 
+use crate::experiment::pulse_drift::retime_drifting_pulses;
 use serde::{Deserialize, Serialize};
 
 /// How peaks are found.
@@ -31,9 +37,9 @@ pub struct PeakSettings {
     /// Correct the mean of the crossings for the change of $\Omega$ within a pulse (see
     /// [`correct_chirp`]); false gives the paper's plain mean.
     pub chirp_correction: bool,
-    /// Correct the mean of the crossings for the change of the pulses' height within a pulse
-    /// (the tilt's drift; see [`correct_height_drift`]). Off by default: it removes the early
-    /// shift at low $\Omega$ but over-corrects near $t_0$ (issue 15, see the function).
+    /// Re-time each pulse with its drift (of height, width, troughs: the tilt's drift with
+    /// $\Omega$), measured by its neighbours, removed (see
+    /// [`pulse_drift`](crate::experiment::pulse_drift)); false gives the crossings of one level.
     #[serde(default)]
     pub height_correction: bool,
 }
@@ -46,7 +52,7 @@ impl Default for PeakSettings {
             hysteresis: 0.15,
             min_span_sigmas: 10.0,
             chirp_correction: true,
-            height_correction: false,
+            height_correction: true,
         }
     }
 }
@@ -197,7 +203,7 @@ fn crossing(t: &[f64], v: &[f64], k: usize, level: f64, sigma_v: f64) -> (f64, f
 /// The crossing of an edge that noise may cross several times: the mean of its first and last
 /// crossings in the direction of the edge between `from` and `last` (the last one), so that
 /// the choice leans neither early nor late.
-fn edge(
+pub(crate) fn edge(
     t: &[f64],
     v: &[f64],
     from: usize,
@@ -347,43 +353,12 @@ pub fn find_peaks(t: &[f64], v: &[f64], dt: f64, sigma_v: f64, s: &PeakSettings)
         peaks = pass(t, v, &half, sigma_v, s);
     }
     if s.height_correction {
-        correct_height_drift(&mut peaks);
+        retime_drifting_pulses(t, v, sigma_v, &mut peaks);
     }
     if s.chirp_correction {
         correct_chirp(&mut peaks);
     }
     peaks
-}
-
-/// Removes the bias a pulse height that changes through the pulse gives the mean of two
-/// crossings (in the light signal the tilt $lpha$ of eq 29 drifts with $\Omega$, and the
-/// reflection's lobe is steep in $lpha$, so successive pulses differ in height).
-///
-/// With the height above the baseline $A(t) = A_c(1 + \gamma(t - t_c))$, the signal at both
-/// crossings of the level $h$ (above the baseline) is off by $\mp\gamma w h$, $w$ the half-width:
-/// both crossings move later by $\gamma w h / S$ ($S$ the absolute slope there) when $\gamma > 0$,
-/// and so does their mean. $\gamma = d\ln A/dt$ is taken from the neighbouring pulses' spans.
-/// Found by the test `peak_timing_offsets_on_a_noise_free_law_trace` (issue 15): on a
-/// noise-free exact-law trace it takes the offset at $\Omega$ = 99 rad/s from +14.7 us to 0.0 us,
-/// but at 378-440 rad/s from -19 us to +99..+127 us, so eq 84's t0 goes from 0.125 ms early to
-/// 0.092 ms late. The linear height model (or $\gamma$ from the lagging envelope spans) is not
-/// good enough near $t_0$; hence not yet on by default.
-pub fn correct_height_drift(peaks: &mut [Peak]) {
-    let n = peaks.len();
-    if n < 3 {
-        return;
-    }
-    let snap: Vec<(f64, f64)> = peaks.iter().map(|p| (p.t, p.span)).collect();
-    for (i, peak) in peaks.iter_mut().enumerate() {
-        let j = i.clamp(1, n - 2);
-        let ((ta, sa), (tb, sb)) = (snap[j - 1], snap[j + 1]);
-        if !(tb > ta && sa > 0.0 && sb > 0.0 && peak.slope > 0.0 && peak.height > 0.0) {
-            continue;
-        }
-        let gamma = (sb / sa).ln() / (tb - ta);
-        let w = 0.5 * (peak.fall - peak.rise);
-        peak.t -= gamma * w * peak.height / peak.slope;
-    }
 }
 
 /// Removes the bias a changing rate gives the mean of two crossings.
