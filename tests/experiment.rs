@@ -132,7 +132,7 @@ fn check_coverage(runs: usize, seed0: u64) {
 /// pulls beta (+0.46, 1.20), t0 (-0.98, 1.25): t0 about one sigma early. Too slow for the normal
 /// run: `stated_intervals_cover_the_truth_30_recordings` runs there instead.
 #[test]
-#[ignore = "slow: 120 recordings, about 4 minutes"]
+#[ignore = "slow: 120 recordings, about a minute"]
 fn stated_intervals_cover_the_truth() {
     check_coverage(120, 1000);
 }
@@ -460,7 +460,7 @@ fn check_artifact_coverage(runs: usize, seed0: u64) {
 /// chosen from its residuals and judged by the blocks' median (plain crossings: 0 refused,
 /// 86.7 % and 82.5 %), and a re-timed pulse kept only where its two neighbours agree.
 #[test]
-#[ignore = "slow: 120 recordings, about 4 minutes"]
+#[ignore = "slow: 120 recordings, about a minute"]
 fn stated_intervals_cover_the_truth_on_artifact_laden_traces() {
     check_artifact_coverage(120, 2000);
 }

@@ -45,11 +45,9 @@ use crate::model::lab_frame::Snapshot;
 use crate::model::rolling::{self, Rolling};
 use crate::model::sliding::{Friction, Mode, Sliding};
 use crate::model::steady::steady_motion;
-use crate::model::{Extras, Model, Motion};
-use crate::numerics::linearize::jacobian;
+use crate::model::{Extras, Model};
 use crate::numerics::oscillation::bisect;
 use crate::solve::{solve, Event, Problem, Settings, SettingsError, State};
-use num_dual::Dual64;
 use serde::Serialize;
 
 /// The steady tilts started from (deg).
@@ -138,17 +136,7 @@ pub struct Fall {
 /// with growth rate $\sqrt{-\varpi^2}$. `None` where no steady motion exists (eq 30).
 pub fn varpi_squared(d: &Disk, alpha0: f64, beta: f64) -> Option<f64> {
     let m = steady_motion(d, alpha0, beta * d.a).ok()?;
-    let field = |y: &[Dual64; 4]| {
-        let m = Motion {
-            alpha: y[0],
-            alpha_dot: y[1],
-            precession: y[2],
-            spin: y[3],
-        };
-        let r = rolling::rates(d, &m, [Dual64::from(0.0); 3]);
-        [y[1], r.alpha_ddot, r.precession_dot, r.spin_dot]
-    };
-    let j = jacobian(field, &[m.alpha, m.alpha_dot, m.precession, m.spin]);
+    let j = rolling::jacobian(d, &m);
     Some(-(j * j).trace() / 2.0)
 }
 
@@ -423,17 +411,7 @@ mod tests {
     /// The largest real part of the eigenvalues of eqs 23-25 linearized at $(\alpha_0, \beta a)$.
     fn growth(d: &Disk, alpha0: f64, beta: f64) -> f64 {
         let m = steady_motion(d, alpha0, beta * d.a).unwrap();
-        let field = |y: &[Dual64; 4]| {
-            let m = Motion {
-                alpha: y[0],
-                alpha_dot: y[1],
-                precession: y[2],
-                spin: y[3],
-            };
-            let r = rolling::rates(d, &m, [Dual64::from(0.0); 3]);
-            [y[1], r.alpha_ddot, r.precession_dot, r.spin_dot]
-        };
-        let j = jacobian(field, &[m.alpha, m.alpha_dot, m.precession, m.spin]);
+        let j = rolling::jacobian(d, &m);
         eigenvalues(&j)
             .iter()
             .map(|z| z.re)

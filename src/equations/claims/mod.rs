@@ -252,24 +252,9 @@ fn unit_disk(k: f64) -> Disk {
     Disk::new(1.0, k, 1.0, 1.0).expect("a valid disk")
 }
 
-/// Rates of eqs 23-25 as a first-order system (no torque), for the Jacobian.
-fn rolling_field(disk: &Disk, y: &[Dual64; 4]) -> [Dual64; 4] {
-    let m = Motion {
-        alpha: y[0],
-        alpha_dot: y[1],
-        precession: y[2],
-        spin: y[3],
-    };
-    let r = rolling::rates(disk, &m, [Dual64::from(0.0); 3]);
-    [y[1], r.alpha_ddot, r.precession_dot, r.spin_dot]
-}
-
 /// The exact Jacobian of eqs 23-25 at a state.
 fn rolling_jacobian(disk: &Disk, m: &Motion) -> SMatrix<f64, 4, 4> {
-    jacobian(
-        |y| rolling_field(disk, y),
-        &[m.alpha, m.alpha_dot, m.precession, m.spin],
-    )
+    rolling::jacobian(disk, m)
 }
 
 /// The squared small-oscillation frequency at an equilibrium whose Jacobian has one pair of
