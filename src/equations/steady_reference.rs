@@ -6,14 +6,12 @@
 
 use super::Bench;
 use crate::disk::Disk;
-use crate::model::rolling::{rates, Rolling};
+use crate::model::rolling::{field, Rolling};
 use crate::model::{Extras, Model, Motion};
-use crate::numerics::linearize::jacobian;
 use crate::numerics::oscillation::bisect;
 use crate::paper::Bindings;
 use crate::solve::{solve, Problem, State};
-use nalgebra::SMatrix;
-use num_dual::{Dual64, DualNum};
+use num_dual::Dual64;
 use std::f64::consts::PI;
 
 // ------------------------------------------------------------------------------------------
@@ -29,24 +27,6 @@ pub(crate) fn disk(k: f64) -> Disk {
     Disk::new(0.0375, k, 0.4, 9.81).expect("a valid disk")
 }
 
-/// The model's accelerations (eqs 23-25 as implemented in `model::rolling`, no torque) as a
-/// function of the state $(\alpha, \dot\alpha, \Omega, \omega_1)$, generic over dual numbers.
-pub(crate) fn rhs<T: DualNum<f64> + Copy>(d: &Disk, y: &[T; 4]) -> [T; 4] {
-    let m = Motion {
-        alpha: y[0],
-        alpha_dot: y[1],
-        precession: y[2],
-        spin: y[3],
-    };
-    let r = rates(d, &m, [T::zero(); 3]);
-    [y[1], r.alpha_ddot, r.precession_dot, r.spin_dot]
-}
-
-/// The exact Jacobian of the rolling model at state `y`.
-pub(crate) fn jac(d: &Disk, y: &[f64; 4]) -> SMatrix<f64, 4, 4> {
-    jacobian(|x: &[Dual64; 4]| rhs(d, x), y)
-}
-
 /// A steady motion found from the model alone: at tilt `alpha0` with $\omega_{10} = \rho\,\Omega_0$,
 /// Newton's method on $\ddot\alpha(\Omega) = 0$ (eq 24 of the model), exact derivative by a dual
 /// number. $\Omega_0$ has the sign of $\rho$ (or is positive for $\rho = 0$) so that
@@ -56,7 +36,7 @@ pub(crate) fn steady_ref(d: &Disk, alpha0: f64, rho: f64) -> Option<Motion> {
     let sign = if rho < 0.0 { -1.0 } else { 1.0 };
     let f = |om: Dual64| {
         let y = [Dual64::from(alpha0), Dual64::from(0.0), om, om * rho];
-        rhs(d, &y)[1]
+        field(d, &y)[1]
     };
     let mut om = sign * d.g_over_a().sqrt();
     // Walk outwards until alpha_ddot > 0 (the convex branch to the right of the root).
@@ -184,6 +164,6 @@ pub(crate) fn steady_bindings(d: &Disk, alpha0: f64) -> Bindings<f64> {
 
 /// Whether the model has a steady motion at `alpha0` with $\omega_{10} = \rho\Omega_0$.
 pub(crate) fn steady_exists(d: &Disk, alpha0: f64, rho: f64) -> bool {
-    let f = |om: f64| rhs(d, &[alpha0, 0.0, om, rho * om])[1];
+    let f = |om: f64| field(d, &[alpha0, 0.0, om, rho * om])[1];
     f(1.0) - f(0.0) > 0.0
 }

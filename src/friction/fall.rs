@@ -46,6 +46,7 @@ use crate::model::rolling::{self, Rolling};
 use crate::model::sliding::{Friction, Mode, Sliding};
 use crate::model::steady::steady_motion;
 use crate::model::{Extras, Model};
+use crate::numerics::minimize::golden_min;
 use crate::numerics::oscillation::bisect;
 use crate::solve::{solve, Event, Problem, Settings, SettingsError, State};
 use serde::Serialize;
@@ -136,7 +137,7 @@ pub struct Fall {
 /// with growth rate $\sqrt{-\varpi^2}$. `None` where no steady motion exists (eq 30).
 pub fn varpi_squared(d: &Disk, alpha0: f64, beta: f64) -> Option<f64> {
     let m = steady_motion(d, alpha0, beta * d.a).ok()?;
-    let j = rolling::jacobian(d, &m);
+    let j = rolling::jacobian(d, &[m.alpha, m.alpha_dot, m.precession, m.spin]);
     Some(-(j * j).trace() / 2.0)
 }
 
@@ -149,7 +150,7 @@ pub fn band(d: &Disk, alpha0: f64) -> Option<Band> {
         Some(varpi_squared(d, alpha0, beta)? / (w0 * w0))
     };
     let (lo, hi) = (1e-6, 40.0);
-    let deepest = golden_min(lo, hi, |b| q(b).unwrap_or(f64::INFINITY));
+    let (deepest, _) = golden_min(lo, hi, 1e-10, |b| q(b).unwrap_or(f64::INFINITY));
     if q(deepest)? >= 0.0 || q(lo)? <= 0.0 || q(hi)? <= 0.0 {
         return None;
     }
@@ -169,25 +170,6 @@ pub fn band(d: &Disk, alpha0: f64) -> Option<Band> {
         precession: m.precession,
         mu_needed: f[1].hypot(f[2]) / f[0],
     })
-}
-
-/// Minimum of a unimodal function on `[lo, hi]` by golden section (its abscissa).
-fn golden_min(mut lo: f64, mut hi: f64, f: impl Fn(f64) -> f64) -> f64 {
-    let r = (5f64.sqrt() - 1.0) / 2.0;
-    let (mut x1, mut x2) = (hi - r * (hi - lo), lo + r * (hi - lo));
-    let (mut f1, mut f2) = (f(x1), f(x2));
-    while hi - lo > 1e-10 * (1.0 + hi.abs()) {
-        if f1 < f2 {
-            (hi, x2, f2) = (x2, x1, f1);
-            x1 = hi - r * (hi - lo);
-            f1 = f(x1);
-        } else {
-            (lo, x1, f1) = (x1, x2, f2);
-            x2 = lo + r * (hi - lo);
-            f2 = f(x2);
-        }
-    }
-    0.5 * (lo + hi)
 }
 
 /// What a run's samples say: times, tilts (rad), tilt rates (rad/s) and, per sample, whether
@@ -342,10 +324,14 @@ pub fn fall_from(
                 Some(SAMPLE),
                 &no_stops,
             )?;
-            let motion = |y: &State<14>| Snapshot::of(d.a, y).motion();
+            let motions: Vec<_> = run
+                .y
+                .iter()
+                .map(|y: &State<14>| Snapshot::of(d.a, y).motion())
+                .collect();
             let s = Samples {
-                alpha: run.y.iter().map(|y| motion(y).alpha).collect(),
-                alpha_dot: run.y.iter().map(|y| motion(y).alpha_dot).collect(),
+                alpha: motions.iter().map(|m| m.alpha).collect(),
+                alpha_dot: motions.iter().map(|m| m.alpha_dot).collect(),
                 t: run.t,
                 slid: run
                     .mode
@@ -411,7 +397,7 @@ mod tests {
     /// The largest real part of the eigenvalues of eqs 23-25 linearized at $(\alpha_0, \beta a)$.
     fn growth(d: &Disk, alpha0: f64, beta: f64) -> f64 {
         let m = steady_motion(d, alpha0, beta * d.a).unwrap();
-        let j = rolling::jacobian(d, &m);
+        let j = rolling::jacobian(d, &[m.alpha, m.alpha_dot, m.precession, m.spin]);
         eigenvalues(&j)
             .iter()
             .map(|z| z.re)

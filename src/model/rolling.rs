@@ -27,21 +27,24 @@ pub struct Rates<T = f64> {
     pub spin_dot: T,
 }
 
-/// The exact Jacobian of eqs 23-25 (no torque) as a first-order system in
-/// $(\alpha, \dot\alpha, \Omega, \omega_1)$ at state `m`, by dual numbers through [`rates`]:
-/// the linearization the stability checks and studies read (eq 54's independent reference).
-pub fn jacobian(disk: &Disk, m: &Motion) -> nalgebra::SMatrix<f64, 4, 4> {
-    let field = |y: &[num_dual::Dual64; 4]| {
-        let m = Motion {
-            alpha: y[0],
-            alpha_dot: y[1],
-            precession: y[2],
-            spin: y[3],
-        };
-        let r = rates(disk, &m, [num_dual::Dual64::from(0.0); 3]);
-        [y[1], r.alpha_ddot, r.precession_dot, r.spin_dot]
+/// Eqs 23-25 (no torque) as a first-order system in the state
+/// $(\alpha, \dot\alpha, \Omega, \omega_1)$, generic over dual numbers (the linearizations and
+/// Newton's method on steady motions read it).
+pub fn field<T: DualNum<f64> + Copy>(disk: &Disk, y: &[T; 4]) -> [T; 4] {
+    let m = Motion {
+        alpha: y[0],
+        alpha_dot: y[1],
+        precession: y[2],
+        spin: y[3],
     };
-    crate::numerics::linearize::jacobian(field, &[m.alpha, m.alpha_dot, m.precession, m.spin])
+    let r = rates(disk, &m, [T::zero(); 3]);
+    [y[1], r.alpha_ddot, r.precession_dot, r.spin_dot]
+}
+
+/// The exact Jacobian of [`field`] at state `y`, by dual numbers: the linearization of eqs
+/// 23-25 that the stability checks and studies read (eq 54's independent reference).
+pub fn jacobian(disk: &Disk, y: &[f64; 4]) -> nalgebra::SMatrix<f64, 4, 4> {
+    crate::numerics::linearize::jacobian(|x: &[num_dual::Dual64; 4]| field(disk, x), y)
 }
 
 /// Eqs 23-25 solved for the accelerations, with an optional torque $\mathbf N / m a^2$ in the

@@ -5,5 +5,6 @@
 pub mod fit;
 pub mod linearize;
 pub mod memo;
+pub mod minimize;
 pub mod oscillation;
 pub mod rng;

@@ -37,6 +37,7 @@ use crate::model::steady::{b_bound, steady_motion};
 use crate::model::{Extras, Model, Motion, Quantity};
 use crate::numerics::fit::log_log_slope;
 use crate::numerics::linearize::{eigenvalues, jacobian};
+use crate::numerics::minimize::golden_min;
 use crate::numerics::oscillation::bisect;
 use crate::solve::{solve, Dynamics, Event, Problem, State};
 use nalgebra::SMatrix;
@@ -254,7 +255,7 @@ fn unit_disk(k: f64) -> Disk {
 
 /// The exact Jacobian of eqs 23-25 at a state.
 fn rolling_jacobian(disk: &Disk, m: &Motion) -> SMatrix<f64, 4, 4> {
-    rolling::jacobian(disk, m)
+    rolling::jacobian(disk, &[m.alpha, m.alpha_dot, m.precession, m.spin])
 }
 
 /// The squared small-oscillation frequency at an equilibrium whose Jacobian has one pair of
@@ -291,31 +292,6 @@ fn max_growth(k: f64, alpha0: f64, beta: f64) -> f64 {
         .iter()
         .map(|z| z.re)
         .fold(f64::NEG_INFINITY, f64::max)
-}
-
-/// Minimum of a unimodal function on `[lo, hi]` by golden-section search.
-fn golden_min(mut lo: f64, mut hi: f64, f: impl Fn(f64) -> f64) -> (f64, f64) {
-    let r = (5f64.sqrt() - 1.0) / 2.0;
-    let mut x1 = hi - r * (hi - lo);
-    let mut x2 = lo + r * (hi - lo);
-    let (mut f1, mut f2) = (f(x1), f(x2));
-    while hi - lo > 1e-9 * (1.0 + hi.abs()) {
-        if f1 < f2 {
-            hi = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = hi - r * (hi - lo);
-            f1 = f(x1);
-        } else {
-            lo = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = lo + r * (hi - lo);
-            f2 = f(x2);
-        }
-    }
-    let x = 0.5 * (lo + hi);
-    (x, f(x))
 }
 
 /// The required friction coefficient $|F_{horizontal}|/F_z$ of a steady motion, from the exact

@@ -44,7 +44,7 @@ pub(super) fn bracket_negative_angle(b: &Bench) -> Finding {
 /// minimum over $b/a \in (0, 40]$ by golden section, the tilt by bisection.
 pub(super) fn instability_onset(k: f64) -> f64 {
     mid(bisect(0.9, 1.55, 1e-9, |al| {
-        golden_min(1e-6, 40.0, |beta| q_linearized(k, al, beta)).1 < 0.0
+        golden_min(1e-6, 40.0, 1e-9, |beta| q_linearized(k, al, beta)).1 < 0.0
     }))
 }
 
@@ -58,7 +58,7 @@ pub(super) fn instability_onset(k: f64) -> f64 {
 pub(super) fn positive_b_unstable_large_tilt(b: &Bench) -> Finding {
     let k = 0.25;
     let onset = instability_onset(k);
-    let (beta_at_onset, _) = golden_min(1e-6, 40.0, |beta| q_linearized(k, onset, beta));
+    let (beta_at_onset, _) = golden_min(1e-6, 40.0, 1e-9, |beta| q_linearized(k, onset, beta));
     // Band at 80 degrees from eq 54's printed quadratic (qc + qb beta + qa beta^2 < 0).
     let al80 = 80f64.to_radians();
     let [qc, qb, qa] = b.paper.eq54_quadratic(k, al80).unwrap_or([f64::NAN; 3]);

@@ -26,7 +26,7 @@ pub(super) fn ansatz(b: &Bench, which: usize) -> Finding {
                 continue;
             }
             let varpi = v2.sqrt();
-            let (dl, ga) = mode(&jac(&d, &y), varpi);
+            let (dl, ga) = mode(&rolling::jacobian(&d, &y), varpi);
             let amp_per_eps = [1.0, 0.0, dl.re, ga.re][which];
             let model = Rolling::<4>::new(d, Extras::default(), None);
             let period = 2.0 * PI / varpi;

@@ -89,7 +89,7 @@ pub(super) fn ratio_check(b: &Bench, which: u32) -> Finding {
         if v2 <= 0.0 {
             return;
         }
-        let j = jac(d, &state(m));
+        let j = rolling::jacobian(d, &state(m));
         let (dl, ga) = mode(&j, v2.sqrt());
         let (om, w10) = (m.precession, m.spin);
         let sc = om.abs() / alpha0.sin() + w10.abs();
@@ -128,7 +128,7 @@ pub(super) fn eq49(b: &Bench) -> Finding {
         if v2 <= 0.0 {
             return;
         }
-        let j = jac(d, &state(m));
+        let j = rolling::jacobian(d, &state(m));
         let (dl, ga) = mode(&j, v2.sqrt());
         let bind = steady_bindings(d, m)
             .scalar("delta", EPSILON * dl.re)

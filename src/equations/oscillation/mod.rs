@@ -9,14 +9,14 @@
 //! on small-amplitude integrations, and thresholds located by bisection on integrations.
 //! $b/a$ enters as the ratio $\omega_{10}/\Omega_0$ (eq 28, checked by measuring the path).
 
-use super::steady_reference::{disk, jac, rho_edge, state, steady_ref, KS};
+use super::steady_reference::{disk, rho_edge, state, steady_ref, KS};
 use super::{
     add_threshold, implied_square, printed_relations, printed_threshold, term_scale, Bench,
     Equation,
 };
 use crate::disk::Disk;
 use crate::finding::{Finding, Method, Tolerance, Worst};
-use crate::model::rolling::Rolling;
+use crate::model::rolling::{self, Rolling};
 use crate::model::{Extras, Model, Motion};
 use crate::numerics::oscillation::{angular_frequency, bisect};
 use crate::paper::Bindings;
@@ -118,7 +118,7 @@ use stability::*;
 /// $\varpi^2$ of the linearized model at state `y`: the sum of the principal 2x2 minors of the
 /// Jacobian (the product of the two non-zero eigenvalues $\pm i\varpi$).
 fn varpi2(d: &Disk, y: &[f64; 4]) -> f64 {
-    let j = jac(d, y);
+    let j = rolling::jacobian(d, y);
     let mut e2 = 0.0;
     for i in 0..4 {
         for l in i + 1..4 {
@@ -181,7 +181,7 @@ fn scale(d: &Disk, m: &Motion) -> f64 {
 /// The angular frequency of $\alpha(t)$ measured on an integration started from steady motion
 /// `m` displaced by `eps` along the oscillation mode, over 4 periods at 300 samples each.
 fn measured_frequency(b: &Bench, d: &Disk, m: &Motion, varpi: f64, eps: f64) -> Option<f64> {
-    let j = jac(d, &state(m));
+    let j = rolling::jacobian(d, &state(m));
     let (dl, ga) = mode(&j, varpi);
     let model = Rolling::<4>::new(*d, Extras::default(), None);
     let mut start = *m;
