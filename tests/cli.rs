@@ -250,6 +250,62 @@ fn experiment_simulate_then_analyze_round_trips_and_bad_csvs_are_refused() {
     assert!(!err.contains("panicked"), "{err}");
 }
 
+/// A user's own sliding spin-down (friction, eq 75's law as a drag) recorded as a scope trace
+/// and as a WAV with every artifact, and analysed: the truth line says when the disk first
+/// slips; a rolling scene with friction is refused with the key named.
+#[test]
+fn experiment_simulate_records_a_sliding_spin_down() {
+    let dir = temp_dir("sliding-experiment");
+    let scene = dir.join("sliding.yaml");
+    std::fs::write(
+        &scene,
+        "name: sliding-spin-down\n\
+         disk: { radius: 0.0375, k: 0.25, mass: 0.4, g: 9.81 }\n\
+         model: sliding\n\
+         friction: { mu: 0.6, restitution: 0.0 }\n\
+         dissipation: { epsilon: 1.14e-6, beta: 2 }\n\
+         start: { steady: { alpha0: 0.12, b: 0.0 } }\n\
+         stop: { time: 30.0, alpha_below: 1.0e-4 }\n",
+    )
+    .unwrap();
+    for (flag, file) in [("--csv", "sliding.csv"), ("--wav", "sliding.wav")] {
+        let out_file = dir.join(file);
+        let (ok, out, err) = cli(&[
+            "experiment",
+            "simulate",
+            scene.to_str().unwrap(),
+            flag,
+            out_file.to_str().unwrap(),
+            "--realistic",
+        ]);
+        assert!(ok, "{err}");
+        assert!(
+            out.contains("sliding model") && out.contains("first slips at record time"),
+            "{out}"
+        );
+        let (ok, out, err) = cli(&["experiment", "analyze", out_file.to_str().unwrap()]);
+        assert!(ok, "{file}: {err}");
+        assert!(out.contains("beta"), "{out}");
+    }
+    let rolling = dir.join("rolling.yaml");
+    let text = std::fs::read_to_string(&scene)
+        .unwrap()
+        .replace("model: sliding", "model: dissipative");
+    std::fs::write(&rolling, text).unwrap();
+    let (ok, _, err) = cli(&[
+        "experiment",
+        "simulate",
+        rolling.to_str().unwrap(),
+        "--csv",
+        dir.join("r.csv").to_str().unwrap(),
+    ]);
+    assert!(!ok);
+    assert!(
+        err.contains("rolling.yaml") && err.contains("friction"),
+        "{err}"
+    );
+}
+
 #[test]
 fn simulate_compares_a_scene_with_the_lab_frame_model() {
     let (ok, out, err) = cli(&["simulate", "nutating-coin", "--compare", "lab-frame"]);

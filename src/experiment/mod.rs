@@ -11,7 +11,8 @@
 //!   \frac{d\Omega}{dt} \propto \Omega^{\beta+3} \quad (85).$$
 //!
 //! This module does both ends:
-//! - the **synthetic experiment** ([`simulate_trace`], [`law_trace`]): a spin-down seen through a
+//! - the **synthetic experiment** ([`simulate_trace`], [`law_trace`]): a spin-down (the
+//!   dissipative rolling model, or the sliding model with friction and lift-off) seen through a
 //!   [`LightModel`] (lamp, mirror-like face, detector, scope with noise and quantisation);
 //! - the **analysis** ([`analyze`]) of any such trace, synthetic or a real scope's CSV
 //!   ([`read_trace`]): peak times, $\Omega_i$, $d\Omega_i/dt$, and *fits* with uncertainties of
@@ -35,6 +36,7 @@ pub mod law;
 pub mod least_squares;
 pub mod light;
 pub mod models;
+pub mod motion_law;
 pub mod numbers;
 pub mod peaks;
 pub mod plausibility;
@@ -42,6 +44,7 @@ pub mod pulse_drift;
 pub mod rates;
 pub mod scope;
 pub mod simulate;
+pub mod sliding_record;
 pub mod sound;
 pub mod trace;
 pub mod track;

@@ -1,8 +1,11 @@
 //! The synthetic experiment: the dissipative spin-down (eq 75 as a torque on eqs 23-25),
-//! integrated with the heading so that the face normal is known, seen through a [`LightModel`].
+//! integrated with the heading so that the face normal is known, seen through a [`LightModel`];
+//! or the same spin-down in the sliding model (Coulomb friction, lift-off and landing; see
+//! [`sliding_motion`]).
 
 use crate::experiment::error::ExperimentError;
 use crate::experiment::light::LightModel;
+use crate::experiment::sliding_record::sliding_motion;
 use crate::experiment::trace::{Trace, Truth};
 use crate::model::rolling::Rolling;
 use crate::model::{Extras, Model};
@@ -16,7 +19,8 @@ const HEADING: usize = 4;
 
 /// Simulates the scope trace of a dissipative scene.
 ///
-/// The scene's model must be `dissipative`, and its stop must end the spin-down: `alpha_below`
+/// The scene's model must be `dissipative` or `sliding` (with `dissipation`), and its stop must
+/// end the spin-down: `alpha_below`
 /// (the floor $\alpha_{min}$) and/or `lift_off`. Three integrations through [`solve`]: one to
 /// find when the spin-down ends ($t_{stop}$), one to the start of the record,
 /// $t_{stop}$ minus the scope's `end_at`, and one sampled at the scope's rate from there to
@@ -26,6 +30,13 @@ pub fn simulate_trace(scene: &Scene, light: &LightModel) -> Result<Trace, Experi
     light.validate()?;
     let scope = &light.scope;
     let m = simulate_motion(scene, scope.end_at, scope.sample_rate, scope.samples)?;
+    Ok(trace_of_motion(&m, light, &scene.name))
+}
+
+/// The scope trace of a simulated motion (sampled at the light's scope rate) seen through
+/// `light`; `name` is the scene's.
+pub fn trace_of_motion(m: &Motion, light: &LightModel, name: &str) -> Trace {
+    let scope = &light.scope;
     let flat = light.intensity(0.0, 0.0);
     let mut v: Vec<f64> = m
         .alpha
@@ -40,12 +51,12 @@ pub fn simulate_trace(scene: &Scene, light: &LightModel) -> Result<Trace, Experi
         })
         .collect();
     scope.record(&mut v);
-    Ok(Trace {
-        source: format!("synthetic:{}", scene.name),
-        t: m.t,
+    Trace {
+        source: format!("synthetic:{name}"),
+        t: m.t.clone(),
         v,
-        truth: Some(m.truth),
-    })
+        truth: Some(m.truth.clone()),
+    }
 }
 
 /// The sampled motion of a spin-down: tilt and heading at the record's times, NaN after the
@@ -79,9 +90,10 @@ pub fn simulate_motion(
             "the record needs a positive sample rate and end time, got {rate} S/s and {end_at} s"
         )));
     }
-    if scene.model != ModelKind::Dissipative {
+    if !matches!(scene.model, ModelKind::Dissipative | ModelKind::Sliding) {
         return Err(scene_err(format!(
-            "the experiment needs a spinning-down disk: model must be dissipative, not {}",
+            "the experiment needs a spinning-down disk: model must be dissipative (rolling) or \
+             sliding (with friction), not {}",
             scene.model
         )));
     }
@@ -103,6 +115,9 @@ pub fn simulate_motion(
              stop.lift_off: true"
                 .into(),
         ));
+    }
+    if scene.model == ModelKind::Sliding {
+        return sliding_motion(scene, law, end_at, rate, samples);
     }
     let extras = Extras {
         heading: true,
@@ -168,23 +183,19 @@ pub fn simulate_motion(
         heading[j] = y[HEADING];
     }
 
-    let beta = law.beta;
-    let tau_rem = 2.0 * y_end[0] / ((beta + 2.0) * y_end[1].abs().max(f64::MIN_POSITIVE));
-    let t_stop_rec = t_end - t_start;
     Ok(Motion {
         t: times,
         alpha,
         heading,
-        truth: Truth {
-            beta,
-            t0: t_stop_rec + tau_rem,
-            t_stop: t_stop_rec,
-            tau_rem,
-            c: None,
-            origin: format!(
-                "dissipative model, beta = {beta}, epsilon = {}, scene {}",
-                law.epsilon, scene.name
+        truth: Truth::at_stop(
+            law.beta,
+            t_end - t_start,
+            y_end[0],
+            y_end[1],
+            format!(
+                "dissipative model, beta = {}, epsilon = {}, scene {}",
+                law.beta, law.epsilon, scene.name
             ),
-        },
+        ),
     })
 }

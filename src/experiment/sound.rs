@@ -154,7 +154,7 @@ pub fn law_sound(
     )
 }
 
-/// The sound of a dissipative scene's spin-down.
+/// The sound of a dissipative or sliding scene's spin-down.
 pub fn simulate_sound(
     scene: &Scene,
     mic: &Microphone,

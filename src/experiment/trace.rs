@@ -5,7 +5,7 @@ use serde::Serialize;
 /// What a synthetic trace was made from, so that an analysis can be scored against it.
 ///
 /// **How $t_0$ is defined.** Eq 79 (the law $\Omega = (C/(t_0 - t))^{1/(\beta+2)}$) has a
-/// finite-time singularity at $t_0$. The dissipative model is integrated until $\alpha$ falls to
+/// finite-time singularity at $t_0$. The dissipative (or sliding) model is integrated until $\alpha$ falls to
 /// a floor $\alpha_{min}$ (the scene's `stop.alpha_below`; or until lift-off if the scene asks),
 /// at time `t_stop`. Near the end the model follows
 /// $\alpha \propto (t_0 - t)^{2/(\beta+2)}$, so the time still missing to the singularity is
@@ -13,6 +13,10 @@ use serde::Serialize;
 /// and the truth is $t_0 = t_{stop} + \tau_{rem}$. With $\alpha_{min}$ small (1e-4 or less),
 /// $\tau_{rem}$ is far below one sample period for $\beta \ge 1$; it is reported so that this
 /// can be seen. Times are record times (the first sample at 0).
+///
+/// A model is not eq 79 exactly, so eq 84 fitted even to its exact motion finds another $t_0$
+/// (20 ms earlier over the built-in record; [`crate::experiment::motion_law`] computes it and
+/// tells the law's part of an analysis's error from the analysis's own).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Truth {
     /// The dissipation exponent $\beta$ of eq 75 that made the trace.
@@ -28,6 +32,27 @@ pub struct Truth {
     pub c: Option<f64>,
     /// Where the truth came from.
     pub origin: String,
+}
+
+impl Truth {
+    /// The truth of a spin-down integrated until record time `t_stop`, where the tilt is
+    /// `alpha` and falls at `alpha_dot`: $t_0 = t_{stop} + \tau_{rem}$ with
+    /// $\tau_{rem} = 2\alpha/((\beta+2)|\dot\alpha|)$ (zero once the disk is flat).
+    pub fn at_stop(beta: f64, t_stop: f64, alpha: f64, alpha_dot: f64, origin: String) -> Self {
+        let tau_rem = if alpha > 0.0 {
+            2.0 * alpha / ((beta + 2.0) * alpha_dot.abs().max(f64::MIN_POSITIVE))
+        } else {
+            0.0
+        };
+        Self {
+            beta,
+            t0: t_stop + tau_rem,
+            t_stop,
+            tau_rem,
+            c: None,
+            origin,
+        }
+    }
 }
 
 /// A recorded (or simulated) light signal.

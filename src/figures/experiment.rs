@@ -17,6 +17,9 @@ pub struct Experiment {
     pub trace: Trace,
     /// Its analysis.
     pub analysis: Analysis,
+    /// Eq 84 fitted to the simulated motion's exact passage times over the analysis's cycles
+    /// ([`crate::experiment::motion_law`]): what the law says of the model without the light.
+    pub motion_law: Option<crate::experiment::fit::Eq84Fit>,
 }
 
 const SYNTHETIC: &str = "Synthetic data (the paper's are not published): the built-in spin-down \

@@ -394,12 +394,17 @@ pub fn from_results(
             .as_ref()
             .ok_or_else(|| missing(Study::Precision))?,
     );
-    let experiment = results
-        .experiment
-        .as_ref()
-        .ok_or_else(|| missing(Study::Experiment))?
-        .analysis
-        .to_string();
+    let experiment = {
+        let e = results
+            .experiment
+            .as_ref()
+            .ok_or_else(|| missing(Study::Experiment))?;
+        let mut text = e.analysis.to_string();
+        if let (Some(law), Some(truth)) = (&e.motion_law, &e.trace.truth) {
+            text.push_str(&experiment::motion_law::split(&e.analysis, law, truth));
+        }
+        text
+    };
 
     let figure_views = figures
         .par_iter()

@@ -198,11 +198,24 @@ fn corrections_study(bench: &Bench) -> Result<CorrectionsStudy, ReportError> {
 
 fn experiment_study() -> Result<Experiment, ReportError> {
     let scene = Scene::load("spin-down").map_err(|e| ReportError::Input(e.to_string()))?;
-    let trace = experiment::simulate_trace(&scene, &LightModel::default())
-        .map_err(|e| ReportError::Input(e.to_string()))?;
+    let light = LightModel::default();
+    let scope = &light.scope;
+    let motion = experiment::simulate::simulate_motion(
+        &scene,
+        scope.end_at,
+        scope.sample_rate,
+        scope.samples,
+    )
+    .map_err(|e| ReportError::Input(e.to_string()))?;
+    let trace = experiment::simulate::trace_of_motion(&motion, &light, &scene.name);
     let analysis = experiment::analyze(&trace, &AnalysisSettings::default())
         .map_err(|e| ReportError::Input(e.to_string()))?;
-    Ok(Experiment { trace, analysis })
+    let motion_law = experiment::motion_law::law_of_motion(&motion, &light, &analysis).ok();
+    Ok(Experiment {
+        trace,
+        analysis,
+        motion_law,
+    })
 }
 
 fn precision_study() -> Result<precision::Study, ReportError> {

@@ -176,7 +176,11 @@ impl Validator<'_> {
     }
 
     pub(super) fn dissipation(&self, s: &SceneSpec) -> Result<Option<PowerLaw>, SceneError> {
-        let allowed = matches!(s.model, ModelKind::Dissipative | ModelKind::Adiabatic);
+        // The sliding model takes eq 75's law as a drag torque (a spin-down with friction).
+        let allowed = matches!(
+            s.model,
+            ModelKind::Dissipative | ModelKind::Adiabatic | ModelKind::Sliding
+        );
         // Mechanisms alone make a dissipative model too; the adiabatic model is eq 76, the law.
         let required = s.model == ModelKind::Adiabatic
             || (s.model == ModelKind::Dissipative && s.mechanisms.is_empty());
@@ -201,7 +205,8 @@ impl Validator<'_> {
             return Err(self.err(
                 &["dissipation"],
                 format!(
-                    "the {} model does not dissipate: remove `dissipation`, or use model: dissipative",
+                    "the {} model does not dissipate: remove `dissipation`, or use model: \
+                     dissipative (or sliding)",
                     s.model
                 ),
             ));

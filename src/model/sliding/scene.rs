@@ -37,13 +37,17 @@ pub fn contact_events(run: &SlidingRun) -> Vec<ContactEvent> {
         .collect()
 }
 
-/// The sliding model a validated scene asks for.
+/// The sliding model a validated scene asks for, with eq 75's law as a drag torque when the
+/// scene gives `dissipation`.
 pub fn model(scene: &Scene) -> Sliding {
     let friction = scene.friction.unwrap_or(super::Friction {
         mu: 0.0,
         restitution: 0.0,
     });
     let mut m = Sliding::new(scene.disk, friction).with_slip(scene.slip);
+    if let Some(law) = scene.dissipation {
+        m = m.with_drag(law);
+    }
     m.stop_at_lift_off = scene.stop.lift_off;
     m
 }
@@ -51,6 +55,18 @@ pub fn model(scene: &Scene) -> Sliding {
 /// Runs a sliding scene: the scene's stop events hold in every mode.
 pub fn run(scene: &Scene) -> Result<Run, SettingsError> {
     let model = model(scene);
+    let sol = integrate(&model, scene, scene.sample)?;
+    Ok(record(&model, scene, &sol))
+}
+
+/// Integrates `model` (built by [`model`]) from the scene's start to its stop, sampled every
+/// `sample` seconds if given: the scene's stop events (the disk flat on the table, `alpha_below`)
+/// hold in every mode.
+pub fn integrate(
+    model: &Sliding,
+    scene: &Scene,
+    sample: Option<f64>,
+) -> Result<SlidingRun, SettingsError> {
     let alpha = |y: &State<14>| tilt(y);
     let below = scene.stop.alpha_below;
     let stops = move || {
@@ -70,8 +86,7 @@ pub fn run(scene: &Scene) -> Result<Run, SettingsError> {
         v
     };
     let y0 = model.start_state(&scene.start);
-    let sol = model.run(&y0, scene.stop.time, &scene.settings, scene.sample, &stops)?;
-    Ok(record(&model, scene, &sol))
+    model.run(&y0, scene.stop.time, &scene.settings, sample, &stops)
 }
 
 /// The paper's $\alpha$ straight from the quaternion (the stop events are evaluated at every
