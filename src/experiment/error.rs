@@ -174,3 +174,13 @@ pub enum ExperimentError {
         message: String,
     },
 }
+
+impl ExperimentError {
+    /// The scene `name` cannot make a synthetic spin-down, for the reason `message`.
+    pub fn in_scene(name: &str, message: String) -> Self {
+        Self::Scene {
+            scene: name.to_string(),
+            message,
+        }
+    }
+}

@@ -73,7 +73,7 @@ pub struct Motion {
     pub truth: Truth,
 }
 
-/// Integrates a dissipative scene and samples its tilt and heading at `rate` for `samples`
+/// Integrates a dissipative or sliding scene and samples its tilt and heading at `rate` for `samples`
 /// samples, the spin-down ending at record time `end_at` (see [`simulate_trace`]).
 pub fn simulate_motion(
     scene: &Scene,
@@ -81,10 +81,7 @@ pub fn simulate_motion(
     rate: f64,
     samples: usize,
 ) -> Result<Motion, ExperimentError> {
-    let scene_err = |message: String| ExperimentError::Scene {
-        scene: scene.name.clone(),
-        message,
-    };
+    let scene_err = |message: String| ExperimentError::in_scene(&scene.name, message);
     if !(rate.is_finite() && rate > 0.0 && end_at.is_finite() && end_at > 0.0) {
         return Err(scene_err(format!(
             "the record needs a positive sample rate and end time, got {rate} S/s and {end_at} s"

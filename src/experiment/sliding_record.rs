@@ -36,10 +36,7 @@ pub fn sliding_motion(
     rate: f64,
     samples: usize,
 ) -> Result<Motion, ExperimentError> {
-    let scene_err = |message: String| ExperimentError::Scene {
-        scene: scene.name.clone(),
-        message,
-    };
+    let scene_err = |message: String| ExperimentError::in_scene(&scene.name, message);
     let m = model(scene);
     let dt = 1.0 / rate;
     let run = integrate(&m, scene, Some(dt)).map_err(|e| scene_err(e.to_string()))?;
