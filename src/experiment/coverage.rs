@@ -14,10 +14,10 @@ use crate::experiment::error::ExperimentError;
 use crate::experiment::law::{law_trace, Law};
 use crate::experiment::light::LightModel;
 use rayon::prelude::*;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// The outcome of a coverage study.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Coverage {
     /// Recordings analysed.
     pub runs: usize,

@@ -27,6 +27,7 @@ pub mod audio;
 pub mod band;
 pub mod clean;
 pub mod coverage;
+pub mod coverage_record;
 pub mod crossover;
 pub mod csv;
 pub mod error;

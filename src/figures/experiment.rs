@@ -10,6 +10,8 @@ use crate::figures::chart::{Axis, Legend, Plot, Series, Style};
 use crate::figures::FigureError;
 use crate::figures::{min_max_decimate, Drawing, Figure};
 
+pub use crate::figures::coverage::coverage;
+
 /// The synthetic trace and its analysis.
 #[derive(Debug, Clone)]
 pub struct Experiment {
@@ -28,7 +30,7 @@ const SYNTHETIC: &str = "Synthetic data (the paper's are not published): the bui
     velocity), seen by a phototransistor through the default light model and recorded at 5 kS/s \
     for 10 s with 5 mV noise and 8-bit quantisation.";
 
-/// The seven figures of section 11, from the experiment the report's pipeline simulated and
+/// The seven figures of section 11 and the fit's residuals, from the experiment the report's pipeline simulated and
 /// analysed once (no integration here).
 pub fn figures(e: &Experiment) -> Result<Vec<Figure>, FigureError> {
     Ok(vec![
@@ -39,6 +41,7 @@ pub fn figures(e: &Experiment) -> Result<Vec<Figure>, FigureError> {
         inverse_omega(e, "tek726", 0.0)?,
         inverse_omega(e, "tek728", 0.02)?,
         odot(e)?,
+        residuals(&e.analysis),
     ])
 }
 
@@ -486,53 +489,6 @@ pub fn residuals(a: &crate::experiment::Analysis) -> Figure {
              (unit variance when the noise model holds). Reduced chi2 {:.2}; R^2 {:.6}.",
             a.source, a.eq84.reduced_chi2, a.verdict.r2
         ),
-        drawing: Drawing::Plot(plot),
-    }
-}
-
-/// $P(|Z| \le z)$ for a standard normal $Z$, by Simpson's rule on $e^{-x^2/2}$ (400 panels;
-/// accurate to 1e-10 for $z \le 4$): the claimed coverage curve.
-fn normal_inside(z: f64) -> f64 {
-    let n = 400;
-    let h = z / n as f64;
-    let f = |x: f64| (-0.5 * x * x).exp();
-    let s: f64 = (0..=n)
-        .map(|k| {
-            let w = if k == 0 || k == n {
-                1.0
-            } else if k % 2 == 1 {
-                4.0
-            } else {
-                2.0
-            };
-            w * f(k as f64 * h)
-        })
-        .sum();
-    2.0 * s * h / 3.0 / (2.0 * std::f64::consts::PI).sqrt()
-}
-
-/// The coverage study: the fraction of recordings whose truth lies inside $\pm z$ stated
-/// standard uncertainties, against $z$, for beta and t0, with the claimed normal curve.
-pub fn coverage(c: &crate::experiment::coverage::Coverage) -> Figure {
-    let zs: Vec<f64> = (1..=30).map(|k| 0.1 * k as f64).collect();
-    let curve = |pulls: &[f64]| -> Vec<(f64, f64)> {
-        zs.iter().map(|&z| (z, c.fraction(pulls, z))).collect()
-    };
-    let claimed: Vec<(f64, f64)> = zs.iter().map(|&z| (z, normal_inside(z))).collect();
-    let plot = Plot::new(
-        "Coverage of the stated intervals",
-        "z (stated standard uncertainties)",
-        "fraction inside +- z",
-    )
-    .with(Series::new("β", curve(&c.beta_pulls), Style::Points))
-    .with(Series::new("t₀", curve(&c.t0_pulls), Style::Squares))
-    .with(Series::new("claimed (normal)", claimed, Style::Dashed))
-    .mark(Axis::X, 1.96, "95 %")
-    .legend_at(Legend::LowerRight);
-    Figure {
-        name: "coverage",
-        title: "Monte Carlo coverage of the stated uncertainties".into(),
-        caption: c.summary(),
         drawing: Drawing::Plot(plot),
     }
 }

@@ -25,6 +25,7 @@
 
 pub mod canvas;
 pub mod chart;
+pub mod coverage;
 pub mod energy;
 pub mod error;
 pub mod experiment;
@@ -207,7 +208,7 @@ fn write_png(path: &std::path::Path, rgb: &[u8], (w, h): (u32, u32)) -> Result<(
 }
 
 /// Every figure's name, in the report's order.
-pub const NAMES: [&str; 18] = [
+pub const NAMES: [&str; 20] = [
     "fig1",
     "tek04",
     "tek01",
@@ -216,6 +217,8 @@ pub const NAMES: [&str; 18] = [
     "tek726",
     "tek728",
     "Odot",
+    "residuals",
+    "coverage",
     "stability-map",
     "frequency",
     "energy-drift",
@@ -237,6 +240,7 @@ pub fn names() -> &'static [&'static str] {
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Family {
     Geometry,
+    Coverage,
     Experiment,
     Stability,
     Frequency,
@@ -251,7 +255,10 @@ enum Family {
 fn family(name: &str) -> Option<Family> {
     Some(match name {
         "fig1" => Family::Geometry,
-        "tek04" | "tek01" | "tek02" | "Omega" | "tek726" | "tek728" | "Odot" => Family::Experiment,
+        "tek04" | "tek01" | "tek02" | "Omega" | "tek726" | "tek728" | "Odot" | "residuals" => {
+            Family::Experiment
+        }
+        "coverage" => Family::Coverage,
         "stability-map" => Family::Stability,
         "frequency" => Family::Frequency,
         "energy-drift" => Family::Energy,
@@ -275,7 +282,9 @@ fn unknown(name: &str) -> String {
 /// algebra); an unknown name is an error that lists the figures.
 pub fn needs(name: &str) -> Result<&'static [Study], FigureError> {
     Ok(match family(name).ok_or_else(|| unknown(name))? {
-        Family::Geometry | Family::Stability => &[],
+        // The coverage studies are stored, not computed by a run (see
+        // `experiment::coverage_record`).
+        Family::Geometry | Family::Stability | Family::Coverage => &[],
         Family::Experiment => &[Study::Experiment],
         Family::Frequency => &[Study::Frequency],
         Family::Energy => &[Study::EnergyDrift],
@@ -301,6 +310,9 @@ fn paper(r: &Results) -> Result<&crate::paper::Paper, FigureError> {
 fn build_family(f: Family, r: &Results) -> Result<Vec<Figure>, FigureError> {
     match f {
         Family::Geometry => Ok(vec![geometry_figure()?]),
+        Family::Coverage => Ok(vec![coverage::studies(
+            &crate::experiment::coverage_record::stored().map_err(|e| e.to_string())?,
+        )]),
         Family::Experiment => experiment::figures(need(&r.experiment, Study::Experiment)?),
         Family::Stability => Ok(vec![stability::figure(paper(r)?)?]),
         Family::Frequency => Ok(vec![frequency::figure(

@@ -1,0 +1,69 @@
+//! The stored coverage studies the report draws (`snapshots/coverage.json`) are this code's:
+//! the first recordings of each are run again and must give the same pulls.
+
+use rolling_disk::experiment::coverage::coverage;
+use rolling_disk::experiment::coverage_record::{run, stored, StoredCoverage};
+
+/// The studies, as `ROLLING_DISK_BLESS=1 cargo test --release --test coverage_record --
+/// --ignored` runs and stores them: 400 clean recordings (seeds 5000-5399) and 500 with every
+/// artifact (seeds 10000-10499), the same as the full studies of `tests/experiment.rs`.
+const STUDIES: [(&str, usize, u64, bool); 2] = [
+    ("clean", 400, 5000, false),
+    ("artifact-laden", 500, 10_000, true),
+];
+
+#[test]
+fn the_stored_coverage_studies_are_this_codes() {
+    let s = stored().unwrap();
+    assert_eq!(s.len(), STUDIES.len(), "run the studies: see STUDIES");
+    for (st, (name, runs, seed0, artifacts)) in s.iter().zip(STUDIES) {
+        assert_eq!(
+            (
+                st.recordings.as_str(),
+                st.coverage.runs,
+                st.seed0,
+                st.artifacts
+            ),
+            (name, runs, seed0, artifacts)
+        );
+        assert_eq!(st.coverage.beta_pulls.len() + st.coverage.refused, runs);
+        // The first recordings again: the same pulls (a refusal among them would shift the
+        // stored ones, and fails here too).
+        let again = coverage(3, seed0, artifacts).unwrap();
+        assert_eq!(again.refused, 0, "{}", st.line());
+        for (a, b) in [
+            (&again.beta_pulls, &st.coverage.beta_pulls),
+            (&again.t0_pulls, &st.coverage.t0_pulls),
+        ] {
+            for (x, y) in a.iter().zip(b.iter()) {
+                assert!(
+                    (x - y).abs() <= 1e-12 * y.abs().max(1.0),
+                    "{x} vs stored {y}"
+                );
+            }
+        }
+        println!("{}", st.line());
+    }
+}
+
+/// Runs the studies and, with ROLLING_DISK_BLESS=1, stores them. Several minutes.
+#[test]
+#[ignore = "slow: 900 recordings; run with ROLLING_DISK_BLESS=1 to store them"]
+fn record_the_coverage_studies() {
+    let date = std::env::var("ROLLING_DISK_DATE").unwrap_or_else(|_| "undated".into());
+    let command = "ROLLING_DISK_BLESS=1 cargo test --release --test coverage_record -- --ignored";
+    let studies: Vec<StoredCoverage> = STUDIES
+        .iter()
+        .map(|&(name, runs, seed0, artifacts)| {
+            let s = run(name, runs, seed0, artifacts, command, &date).unwrap();
+            println!("{}", s.line());
+            s
+        })
+        .collect();
+    if std::env::var("ROLLING_DISK_BLESS").is_ok() {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("snapshots/coverage.json");
+        let text = serde_json::to_string_pretty(&studies).unwrap() + "\n";
+        std::fs::write(&path, text).unwrap();
+        println!("stored in {}", path.display());
+    }
+}
