@@ -10,24 +10,31 @@
 //!
 //! **Uncertainties.** Two estimates, chosen by [`Scale`]:
 //!
-//! - [`Scale::Hac`], for the fits to peak times (eqs 84, 85, the fixed-beta and the
-//!   two-mechanism fits): the Newey-West heteroscedasticity- and autocorrelation-consistent
-//!   (HAC) sandwich on the whitened residuals $r_i$ and the whitened Jacobian's rows $J_i$,
-//!   $$\mathrm{Cov}(\hat{\mathbf p}) = \frac{n}{n - p}\,A\,S\,A, \quad A = (J^{\mathsf T}J)^{-1},
-//!     \quad S = \sum_{|l| \le L} \Bigl(1 - \frac{|l|}{L + 1}\Bigr) \sum_i g_i\,g_{i-l}^{\mathsf T},
-//!     \quad g_i = J_i^{\mathsf T} r_i,$$
-//!   with the Bartlett weights and the bandwidth $L = \lfloor 4 (n/100)^{2/9} \rfloor$ of Newey and
-//!   West (1987, 1994) and the factor $n/(n - p)$ for the fitted parameters. The prior peak-time
-//!   variances only weight and whiten; the size of the errors comes from the residuals, so an
-//!   error model that is too optimistic or too pessimistic, in all peaks or in some (the slow
-//!   start), or errors correlated between neighbouring peaks that the whitening does not know,
-//!   give intervals that still mean what they say. When the whitening is right, $S \to J^{\mathsf T}J$
-//!   and this is $(J^{\mathsf T}J)^{-1}$. Why not the former $\max(s^2, 1)\,(J^{\mathsf T}J)^{-1}$ times
-//!   an AR(1) factor: on the coverage study's traces (2026-11-25) the whitened residuals of eq 84
-//!   are anti-correlated (lag one and two about -0.045 each), which makes the scores' long-run
-//!   variance about 0.7 of what their number says; the floor and the clamp of the AR(1)
-//!   correlation to $\ge 0$ could only widen, so the intervals came out 1.2 times too wide once
-//!   the peak-time variances were right (pulls' sd 0.83 and 0.77 for beta and t0 on 40 traces).
+//! - [`Scale::Stationary`], for the fits to peak times (eqs 84, 85, the fixed-beta and the
+//!   two-mechanism fits): the sandwich with the whitened residuals' own stationary covariance.
+//!   If the whitened errors $\varepsilon$ have covariance $\Sigma_\varepsilon$ instead of $I$, the
+//!   estimate's is $A\,J^{\mathsf T}\Sigma_\varepsilon J\,A$ with $A = (J^{\mathsf T}J)^{-1}$ and $J$ the
+//!   whitened Jacobian. $\Sigma_\varepsilon$ is taken as stationary, estimated from the residuals'
+//!   autocovariances $\hat\gamma_l = \sum_i r_i r_{i-l}/(n - p)$ tapered by Bartlett's weights
+//!   (which keep it positive semi-definite):
+//!   $$\mathrm{Cov}(\hat{\mathbf p}) = A \Bigl(\sum_{|l| \le L} \Bigl(1 - \frac{|l|}{L + 1}\Bigr)
+//!     \hat\gamma_{|l|} \sum_i J_i J_{i-l}^{\mathsf T}\Bigr) A,$$
+//!   with Newey and West's (1994) bandwidth $L = \lfloor 4 (n/100)^{2/9} \rfloor$ (4 at 150 cycles).
+//!   Without correlation this is $s^2 (J^{\mathsf T}J)^{-1}$, $s^2 = |r|^2/(n - p)$: the covariance
+//!   scaled by $\chi^2$/dof both ways, the peak-time variances being relative weights whose common
+//!   size (the noise estimate's) the residuals measure. The errors are therefore **the
+//!   covariance scaled by the residuals**, $\chi^2$/dof and the residuals' correlation, not a
+//!   bootstrap. Why not the former $\max(s^2, 1)\,(J^{\mathsf T}J)^{-1}$ times an AR(1) factor with
+//!   the correlation clamped to $\ge 0$: on the coverage study's traces (2026-11-25) the whitened
+//!   residuals of eq 84 are anti-correlated (about -0.045 at lags one and two), so the errors of
+//!   smooth combinations (beta) are smaller than $\chi^2$/dof says; the floor and the clamp could
+//!   only widen, and once the peak-time variances were right (see
+//!   [`peaks`](crate::experiment::peaks)) the pulls' sd was 0.83 (beta) and 0.77 (t0) on 40
+//!   traces. Why not the heteroscedastic Newey-West sandwich ($r_i r_k$ in place of
+//!   $\hat\gamma_{|i-k|}$): $t_0$ is decided by the last few cycles, so its variance then rests
+//!   on a few squared residuals; on 120 clean traces its pulls' sd was 1.21 and only 85 % fell
+//!   within 1.96 sigma. Pooled over all $n$ residuals, $\hat\gamma_l$ is steady; what it cannot
+//!   see (a misstated variance in one part of the record) the peak-time variances must get right.
 //! - [`Scale::Unknown`], with no prior variances (unit weights, the sound track's fit):
 //!   $s^2 (J^{\mathsf T}J)^{-1}$ with $s^2 = |r|^2/(n - p)$, further multiplied by the AR(1) variance
 //!   inflation $(1 + \rho)/(1 - \rho)$, $\rho$ the residuals' lag-one autocorrelation clamped to
@@ -98,38 +105,37 @@ fn lag_one(r: &[f64]) -> f64 {
 /// How the covariance is estimated (see the module's documentation).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Scale {
-    /// The Newey-West (HAC) sandwich on the whitened residuals: the prior variances weight,
-    /// the residuals give the size and the correlation of the errors.
-    Hac,
+    /// The sandwich with the whitened residuals' stationary covariance: the prior variances
+    /// weight, the residuals give the errors' common size and their correlation.
+    Stationary,
     /// $s^2 (J^T J)^{-1}$ times the AR(1) inflation: the prior variances are relative weights.
     Unknown,
 }
 
-/// The Newey-West sandwich $\frac{n}{n-p} A S A$ of the whitened residuals `r` and Jacobian `j`
-/// with $A = (J^T J)^{-1}$ given as `inv` (see the module's documentation).
-fn newey_west<const P: usize>(
+/// The sandwich $A\,J^{\mathsf T}\hat\Sigma J\,A$ of the whitened residuals `r` and Jacobian `j`,
+/// $A = (J^T J)^{-1}$ given as `inv`, with $\hat\Sigma$ the residuals' stationary covariance
+/// $\hat\Sigma_{ik} = w_{|i-k|}\hat\gamma_{|i-k|}$ (see the module's documentation).
+fn stationary_sandwich<const P: usize>(
     r: &OVector<f64, Dyn>,
     j: &OMatrix<f64, Dyn, Const<P>>,
     inv: &DMatrix<f64>,
 ) -> DMatrix<f64> {
     let n = r.len();
-    let lags = (4.0 * (n as f64 / 100.0).powf(2.0 / 9.0)).floor() as usize;
-    let g: Vec<SVector<f64, P>> = (0..n)
-        .map(|i| SVector::<f64, P>::from_fn(|k, _| j[(i, k)] * r[i]))
-        .collect();
+    let lags = ((4.0 * (n as f64 / 100.0).powf(2.0 / 9.0)).floor() as usize).min(n - 1);
+    let dof = (n - P) as f64;
+    let row = |i: usize| SVector::<f64, P>::from_fn(|k, _| j[(i, k)]);
     let mut s = SMatrix::<f64, P, P>::zeros();
-    for gi in &g {
-        s += gi * gi.transpose();
-    }
-    for l in 1..=lags.min(n.saturating_sub(1)) {
+    for l in 0..=lags {
+        let gamma = (l..n).map(|i| r[i] * r[i - l]).sum::<f64>() / dof;
         let w = 1.0 - l as f64 / (lags + 1) as f64;
+        let mut c = SMatrix::<f64, P, P>::zeros();
         for i in l..n {
-            let c = g[i] * g[i - l].transpose();
-            s += (c + c.transpose()) * w;
+            c += row(i) * row(i - l).transpose();
         }
+        s += if l == 0 { c } else { c + c.transpose() } * (w * gamma);
     }
     let s = DMatrix::from_fn(P, P, |a, b| s[(a, b)]);
-    inv * s * inv * (n as f64 / (n - P) as f64)
+    inv * s * inv
 }
 
 /// Cost assigned to parameters outside the law's domain: the crate's step is then rejected and
@@ -302,8 +308,8 @@ pub fn solve<const P: usize>(
         })?;
     let s2 = chi2 / (n - P) as f64;
     let cov = match scale {
-        Scale::Hac => {
-            let c = newey_west(&r, &j, &inv);
+        Scale::Stationary => {
+            let c = stationary_sandwich(&r, &j, &inv);
             SMatrix::<f64, P, P>::from_fn(|a, b| c[(a, b)])
         }
         Scale::Unknown => {

@@ -10,9 +10,10 @@
 //! the cubic through the four samples around it. Where the envelope spans less than
 //! `min_span_sigmas` noise deviations there is no signal, and no crossing.
 //!
-//! Each crossing's uncertainty follows from the noise $\sigma_v$ (estimated from the data) and
-//! the cubic's Lagrange weights $\ell_j$ and slope $p'$ at the root:
-//! $\sigma_\times^2 = \sigma_v^2 \sum_j \ell_j^2 / p'^2$, and
+//! Each crossing's uncertainty follows from the noise $\sigma_v$ (estimated from the data), the
+//! cubic's Lagrange weights $\ell_j$ at the root and the edge's slope $g$ (the least-squares line
+//! through the six samples around the crossing, see [`edge_slope`]):
+//! $\sigma_\times^2 = \sigma_v^2 \sum_j \ell_j^2 / g^2$, and
 //! $\sigma_{t_i}^2 = \tfrac14(\sigma_\uparrow^2 + \sigma_\downarrow^2)$.
 //!
 //! The mean of two crossings is the centre of a pulse that keeps its shape; the light's pulses
