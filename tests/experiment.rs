@@ -491,8 +491,13 @@ fn stated_intervals_cover_the_truth_on_30_artifact_laden_traces() {
     check_artifact_coverage(30, 4000);
 }
 
+/// The full study: 500 other artifact-laden recordings. Met (measured 2026-11-25, seeds
+/// 10000-10499, `cargo test --release --test experiment -- stated_intervals_cover_the_truth_full_study
+/// --exact --include-ignored --nocapture`, 18 min beside the 400-trace study on the shared
+/// machine): none refused; beta inside 1 sigma 67.4 %, 1.96 sigma 94.8 %; t0 67.0 %, 94.4 %; pulls
+/// (mean, sd) beta (+0.15, 1.02), t0 (-0.15, 1.04); worst errors beta 0.0016, t0 1.813 ms.
 #[test]
-#[ignore]
+#[ignore = "slow: 500 artifact-laden recordings, about 15 minutes"]
 fn stated_intervals_cover_the_truth_full_study() {
     let c = coverage::coverage(500, 10_000, true).unwrap();
     println!("{}", c.summary());
