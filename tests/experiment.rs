@@ -139,7 +139,7 @@ fn check_coverage(runs: usize, seed0: u64) {
 /// 1.25): t0 about one sigma early. Too slow for the normal run:
 /// `stated_intervals_cover_the_truth_30_recordings` runs there instead.
 #[test]
-#[ignore = "slow: 120 recordings, about a minute"]
+#[ignore = "slow: 120 recordings, about four minutes on the shared machine"]
 fn stated_intervals_cover_the_truth() {
     check_coverage(120, 1000);
 }
@@ -161,7 +161,7 @@ fn stated_intervals_cover_the_truth_30_recordings() {
 /// than 95 %, the pulls' sd is 1.7 standard errors above 1: within this test's bounds, a shade
 /// narrow still.
 #[test]
-#[ignore = "slow: 400 recordings"]
+#[ignore = "slow: 400 recordings, about ten minutes"]
 fn stated_intervals_cover_the_truth_400_recordings() {
     check_coverage(400, 5000);
 }
@@ -477,7 +477,7 @@ fn check_artifact_coverage(runs: usize, seed0: u64) {
 /// chosen from its residuals and judged by the blocks' median (plain crossings: 0 refused,
 /// 86.7 % and 82.5 %), and a re-timed pulse kept only where its two neighbours agree.
 #[test]
-#[ignore = "slow: 120 recordings, about a minute"]
+#[ignore = "slow: 120 recordings, about four minutes on the shared machine"]
 fn stated_intervals_cover_the_truth_on_artifact_laden_traces() {
     check_artifact_coverage(120, 2000);
 }

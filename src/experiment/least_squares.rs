@@ -18,7 +18,7 @@
 //!   autocovariances $\hat\gamma_l = \sum_i r_i r_{i-l}/(n - p)$ tapered by Bartlett's weights
 //!   (which keep it positive semi-definite):
 //!   $$\mathrm{Cov}(\hat{\mathbf p}) = A \Bigl(\sum_{|l| \le L} \Bigl(1 - \frac{|l|}{L + 1}\Bigr)
-//!     \hat\gamma_{|l|} \sum_i J_i J_{i-l}^{\mathsf T}\Bigr) A,$$
+//!   \hat\gamma_{|l|} \sum_i J_i J_{i-l}^{\mathsf T}\Bigr) A,$$
 //!   with Newey and West's (1994) bandwidth $L = \lfloor 4 (n/100)^{2/9} \rfloor$ (4 at 150 cycles).
 //!   Without correlation this is $s^2 (J^{\mathsf T}J)^{-1}$, $s^2 = |r|^2/(n - p)$: the covariance
 //!   scaled by $\chi^2$/dof both ways, the peak-time variances being relative weights whose common

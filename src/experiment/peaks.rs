@@ -12,7 +12,7 @@
 //!
 //! Each crossing's uncertainty follows from the noise $\sigma_v$ (estimated from the data), the
 //! cubic's Lagrange weights $\ell_j$ at the root and the edge's slope $g$ (the least-squares line
-//! through the six samples around the crossing, see [`edge_slope`]):
+//! through the six samples around the crossing, `edge_slope`):
 //! $\sigma_\times^2 = \sigma_v^2 \sum_j \ell_j^2 / g^2$, and
 //! $\sigma_{t_i}^2 = \tfrac14(\sigma_\uparrow^2 + \sigma_\downarrow^2)$.
 //!
