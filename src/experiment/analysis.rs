@@ -399,13 +399,12 @@ impl fmt::Display for Analysis {
             "  spin-down checks: Kendall tau {:.3}, Omega rises x{:.2}, R^2 {:.6}, t0 gap {:.4} of the window",
             self.verdict.kendall, self.verdict.rise, self.verdict.r2, self.verdict.gap
         )?;
-        if self.eq84.reduced_chi2 > 1.0 {
-            writeln!(
-                f,
-                "  uncertainties: scaled by sqrt(reduced chi2) = {:.2}: the scatter exceeds the peak-timing noise",
-                self.eq84.reduced_chi2.sqrt()
-            )?;
-        }
+        writeln!(
+            f,
+            "  uncertainties: scaled by the whitened residuals' covariance (their scatter is {:.2} \
+             of the peak-timing noise's, and their correlation)",
+            self.eq84.reduced_chi2.sqrt()
+        )?;
         if let (Some(t), Some(s)) = (&self.truth, &self.score) {
             writeln!(
                 f,

@@ -179,7 +179,7 @@ pub fn fit_crossover(
                 ln_tau_c + (b2 + 2.0) * ln_wc,
                 ln_wc,
             ]);
-            match solve(&pr, w, p0, Scale::Floored) {
+            match solve(&pr, w, p0, Scale::Stationary) {
                 Ok(s) if best.as_ref().is_none_or(|b| s.chi2 < b.chi2) => best = Some(s),
                 Ok(_) => {}
                 Err(e) => last_err = e,

@@ -15,7 +15,9 @@
 //! of the rows, which share peaks, propagated from $t_i, t_{i+1}, t_{i+2}$ in the same way.
 //!
 //! Both are minimised by [`least_squares::solve`](crate::experiment::least_squares::solve),
-//! whose covariance is scaled by the reduced $\chi^2$ when it exceeds 1 (see there).
+//! whose covariance is the sandwich with the whitened residuals' stationary covariance (see
+//! there): the peak-time variances weight and whiten, the residuals give the errors' common size
+//! ($\chi^2$/dof) and their correlation.
 
 use crate::experiment::band::Row;
 use crate::experiment::least_squares::{solve, FitError, Problem, Scale, Solved};
@@ -232,7 +234,7 @@ pub fn fit_eq84(ta: &[f64], tb: &[f64], start: &[usize], w: &[f64]) -> Result<Eq
         y: &y,
         start,
     };
-    let s = solve(&pr, w, p0, Scale::Floored)?;
+    let s = solve(&pr, w, p0, Scale::Stationary)?;
     let (beta, t0, ln_c) = (s.p[0], s.p[1], s.p[2]);
     let q = 1.0 / (beta + 2.0);
     let inv = (-q * ln_c).exp();
@@ -382,7 +384,7 @@ pub fn fit_eq85(t: &[f64], start: &[usize], w: &[f64]) -> Result<Eq85Fit, FitErr
         start,
         t,
     };
-    let s = solve(&pr, w, p0, Scale::Floored)?;
+    let s = solve(&pr, w, p0, Scale::Stationary)?;
     let sigma = s.cov[(0, 0)].sqrt();
     Ok(Eq85Fit {
         slope: s.p[0],
@@ -494,7 +496,7 @@ pub fn fit_eq84_fixed(
         &pr,
         w,
         SVector::<f64, 2>::new(free.t0, ln_c),
-        Scale::Floored,
+        Scale::Stationary,
     )?;
     Ok(FixedFit {
         beta,

@@ -461,8 +461,8 @@ pub fn omega_band(a: &crate::experiment::Analysis) -> Figure {
         caption: format!(
             "{}: the rate of each fitted cycle and eq 79 with the parameters of eq 84's fit, \
              beta = {:.4} +- {:.4}, t0 = {:.5} +- {:.5} s; the dotted lines are the 95 % band \
-             of the curve from the fit's stated covariance (scaled by the reduced chi2 {:.2} \
-             and by the residuals' lag-one correlation).",
+             of the curve from the fit's stated covariance (scaled by the whitened \
+             residuals' own covariance: reduced chi2 {:.2} and their correlation).",
             a.source, f.beta, f.beta_sigma, f.t0, f.t0_sigma, f.reduced_chi2
         ),
         drawing: Drawing::Plot(plot),
