@@ -318,6 +318,15 @@ fn every_option_and_key_that_advice_names_exists() {
     let mut options: Vec<&str> = Vec::new();
     let mut keys: Vec<(&str, &str)> = Vec::new();
     for (i, _) in sources.match_indices("--") {
+        // A cargo command quoted in the sources names cargo's options (and, after `cargo test
+        // ... --`, the test harness's); after `cargo run ... --` they are this tool's again.
+        let line = &sources[sources[..i].rfind('\n').map_or(0, |j| j + 1)..i];
+        if let Some(c) = line.rfind("cargo ") {
+            let command = &line[c..];
+            if command.starts_with("cargo test") || !command.contains(" -- ") {
+                continue;
+            }
+        }
         let rest = &sources[i + 2..];
         let name_len = rest
             .find(|c: char| !(c.is_ascii_alphanumeric() || c == '-'))

@@ -7,8 +7,8 @@
 //! by one: the suite re-runs the first recordings of each study and asserts the same pulls to
 //! the last bit (`tests/coverage_record.rs`). A stored file made by other code, or edited by
 //! hand, fails that test; a change to the analysis that moves any pull makes it fail until the
-//! studies are run again (`ROLLING_DISK_BLESS=1 cargo test --release --test coverage_record --
-//! --ignored`).
+//! studies are run again:
+//! `ROLLING_DISK_BLESS=1 cargo test --release --test coverage_record -- --ignored`.
 
 use crate::experiment::coverage::{coverage, Coverage};
 use crate::experiment::error::ExperimentError;

@@ -41,8 +41,10 @@ pub struct CrossoverFit {
     pub omega_c: f64,
     /// Its standard uncertainty (rad/s).
     pub omega_c_sigma: f64,
-    /// $t_0$ (s).
+    /// $t_0$ (s), where the law above $\Omega_c$ ends.
     pub t0: f64,
+    /// Its standard uncertainty (s).
+    pub t0_sigma: f64,
     /// Whitened $\chi^2$ (unscaled).
     pub chi2: f64,
     /// $\ln\det\Sigma$ at the solution.
@@ -197,6 +199,7 @@ pub fn fit_crossover(
         omega_c: wc,
         omega_c_sigma: wc * s.cov[(4, 4)].sqrt(),
         t0: s.p[2],
+        t0_sigma: s.cov[(2, 2)].sqrt(),
         chi2: s.chi2,
         ln_det_sigma: s.ln_det_sigma,
         n,

@@ -154,13 +154,16 @@ pub fn compare_laws(
         candidates.push((
             "two mechanisms".to_string(),
             format!(
-                "beta = {:.2} +- {:.2} below Omega_c = {:.0} +- {:.0} rad/s, {:.2} +- {:.2} above",
+                "beta = {:.2} +- {:.2} below Omega_c = {:.0} +- {:.0} rad/s, {:.2} +- {:.2} \
+                 above, t0 = {:.5} +- {:.5} s",
                 x.beta_below,
                 x.beta_below_sigma,
                 x.omega_c,
                 x.omega_c_sigma,
                 x.beta_above,
-                x.beta_above_sigma
+                x.beta_above_sigma,
+                x.t0,
+                x.t0_sigma
             ),
             5,
             x.chi2,

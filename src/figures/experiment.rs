@@ -486,11 +486,40 @@ pub fn residuals(a: &crate::experiment::Analysis) -> Figure {
         title: "Residuals of eq 84's fit".into(),
         caption: format!(
             "{}: each fitted cycle's residual in 1/Omega, whitened by the peak-time covariance \
-             (unit variance when the noise model holds). Reduced chi2 {:.2}; R^2 {:.6}.",
-            a.source, a.eq84.reduced_chi2, a.verdict.r2
+             (unit variance when the noise model holds). Reduced chi2 {:.2}; R^2 {:.6}; \
+             neighbouring residuals' correlation {:.2}{}",
+            a.source,
+            a.eq84.reduced_chi2,
+            a.verdict.r2,
+            lag_one(&a.eq84.points),
+            if a.eq84.reduced_chi2 > 3.0 && lag_one(&a.eq84.points) > 0.5 {
+                ": a slow wave far above the noise, so eq 79 itself misses the recorded motion \
+                 (the fit's stated errors are widened by it, but a law that does not hold can \
+                 still place t0 wrongly)."
+            } else {
+                "."
+            }
         ),
         drawing: Drawing::Plot(plot),
     }
+}
+
+/// The correlation of neighbouring whitened residuals (lag one): near 0 for noise, near 1 for a
+/// slow wave that the law does not follow.
+fn lag_one(points: &[crate::experiment::fit::FitPoint]) -> f64 {
+    let r: Vec<f64> = points.iter().map(|p| p.normalized).collect();
+    if r.len() < 3 {
+        return 0.0;
+    }
+    let mean = r.iter().sum::<f64>() / r.len() as f64;
+    let var: f64 = r.iter().map(|x| (x - mean).powi(2)).sum();
+    if var == 0.0 {
+        return 0.0;
+    }
+    r.windows(2)
+        .map(|w| (w[0] - mean) * (w[1] - mean))
+        .sum::<f64>()
+        / var
 }
 
 /// A sound recording's frequency track with eq 79's fitted frame means.
