@@ -8,8 +8,11 @@ use tera::{Result, Value};
 /// sentences spelled as TeX.
 pub fn escape(s: &str) -> String {
     let mut out = String::with_capacity(s.len() + 16);
-    for c in s.chars() {
+    let mut chars = s.chars().peekable();
+    while let Some(c) = chars.next() {
         match c {
+            // A command's `--option` must not become TeX's en or em dash.
+            '-' if chars.peek() == Some(&'-') => out.push_str("-{}"),
             '\\' => out.push_str(r"\textbackslash{}"),
             '&' | '%' | '$' | '#' | '_' | '{' | '}' => {
                 out.push('\\');
@@ -94,6 +97,15 @@ mod tests {
     #[test]
     fn a_slash_may_end_a_line() {
         assert_eq!(escape("1/2"), r"1/\allowbreak{}2");
+    }
+
+    #[test]
+    fn double_hyphens_stay_two_hyphens() {
+        assert_eq!(
+            escape("cargo test --release -- --ignored"),
+            "cargo test -{}-release -{}- -{}-ignored"
+        );
+        assert_eq!(escape("a - b, x-y, ---"), "a - b, x-y, -{}-{}-");
     }
 
     #[test]
