@@ -105,8 +105,10 @@ fn law_traces_give_back_their_beta_and_t0() {
     }
 }
 
-/// Coverage on exact-law traces with the scope's noise (5 mV, 8 bits), `runs` seeds: the
-/// fraction of pulls of beta and t0 inside 1 and 1.96 standard uncertainties must be 68.3 % and
+/// Coverage on exact-law traces with the scope's noise (5 mV, 8 bits), `runs` seeds: eq 79
+/// (which holds exactly) is taken to drift over the window on at most 2 + 2 % of them (the
+/// test's false alarms, 3 sigmas on each of two parameters: 2 of 400 and 3 of 500 measured in
+/// the stored studies, 2026-11-25), and the fraction of pulls of beta and t0 inside 1 and 1.96 standard uncertainties must be 68.3 % and
 /// 95 % within 3 binomial standard deviations (at 120 runs: 4.2 % and 2.0 %; at 30 runs: 8.5 %
 /// and 4.0 %), and the pulls' mean must be 0 within 3 standard errors ($3/\sqrt{n}$: 0.27 at
 /// 120 runs, 0.55 at 30), which a bias of one sigma fails at either size.
@@ -114,6 +116,7 @@ fn check_coverage(runs: usize, seed0: u64) {
     let c = coverage::coverage(runs, seed0, false).unwrap();
     println!("{}", c.summary());
     assert_eq!(c.refused, 0, "{}", c.summary());
+    assert!(c.law_drifts <= 2 + runs / 50, "{}", c.summary());
     let n = runs as f64;
     let sd = |p: f64| (p * (1.0 - p) / n).sqrt();
     for pulls in [&c.beta_pulls, &c.t0_pulls] {
@@ -157,7 +160,7 @@ fn stated_intervals_cover_the_truth_30_recordings() {
 /// (measured 2026-11-25, seeds 5000-5399, `cargo test --release --test experiment --
 /// stated_intervals_cover_the_truth_400_recordings --exact --include-ignored --nocapture`, 11 min
 /// beside the 500-trace study on the shared machine): none refused; beta inside 1 sigma 66.8 %,
-/// 1.96 sigma 93.5 %; t0 68.8 %, 93.8 %; pulls (mean, sd) beta (+0.06, 1.06), t0 (-0.04, 1.06);
+/// 1.96 sigma 93.5 %; t0 69.0 %, 93.8 %; pulls (mean, sd) beta (+0.06, 1.06), t0 (-0.04, 1.05);
 /// worst errors beta 0.0004, t0 0.165 ms. The 95 % intervals hold 1.4 and 1.1 binomial sd less
 /// than 95 %, the pulls' sd is 1.7 standard errors above 1: within this test's bounds, a shade
 /// narrow still.
@@ -442,13 +445,15 @@ fn the_model_spin_down_with_artifacts_gives_beta_and_t0() {
 }
 
 /// Coverage on artifact-laden exact-law traces (realistic drift, 50 Hz hum, clipping, glitches,
-/// 1 % of samples dropped, each trace its own seeds): none refused, the 95 % intervals within
+/// 1 % of samples dropped, each trace its own seeds): none refused, eq 79 taken to drift on at
+/// most 2 + 2 % of them (as for clean traces), the 95 % intervals within
 /// about 3 binomial sd of 95 %, the 68 % ones of 68.3 %, the pulls' mean within 3 standard
 /// errors of 0, and the worst errors within the targets.
 fn check_artifact_coverage(runs: usize, seed0: u64) {
     let c = coverage::coverage(runs, seed0, true).unwrap();
     println!("{}", c.summary());
     assert_eq!(c.refused, 0, "{}", c.summary());
+    assert!(c.law_drifts <= 2 + runs / 50, "{}", c.summary());
     let n = runs as f64;
     let sd = |p: f64| (p * (1.0 - p) / n).sqrt();
     for pulls in [&c.beta_pulls, &c.t0_pulls] {
@@ -496,13 +501,16 @@ fn stated_intervals_cover_the_truth_on_30_artifact_laden_traces() {
 /// The full study: 500 other artifact-laden recordings. Met (measured 2026-11-25, seeds
 /// 10000-10499, `cargo test --release --test experiment -- stated_intervals_cover_the_truth_full_study
 /// --exact --include-ignored --nocapture`, 18 min beside the 400-trace study on the shared
-/// machine): none refused; beta inside 1 sigma 67.4 %, 1.96 sigma 94.8 %; t0 67.0 %, 94.4 %; pulls
-/// (mean, sd) beta (+0.15, 1.02), t0 (-0.15, 1.04); worst errors beta 0.0016, t0 1.813 ms.
+/// machine): none refused; beta inside 1 sigma 67.6 %, 1.96 sigma 94.8 %; t0 67.2 %, 94.6 %; pulls
+/// (mean, sd) beta (+0.15, 1.02), t0 (-0.15, 1.03); worst errors beta 0.0016, t0 1.813 ms; eq 79
+/// taken to drift on 3 (their intervals widened by the law's part). Before the law's drift was
+/// tested: 67.4 %, 94.8 %; t0 67.0 %, 94.4 %.
 #[test]
 #[ignore = "slow: 500 artifact-laden recordings, about 15 minutes"]
 fn stated_intervals_cover_the_truth_full_study() {
     let c = coverage::coverage(500, 10_000, true).unwrap();
     println!("{}", c.summary());
+    assert!(c.law_drifts <= 12, "{}", c.summary());
     // Binomial sd at 500 runs: 2.1 % at 68 %, 1.0 % at 95 %; bounds at 3 sd.
     for pulls in [&c.beta_pulls, &c.t0_pulls] {
         let (one, two) = (c.fraction(pulls, 1.0), c.fraction(pulls, 1.96));

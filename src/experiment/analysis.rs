@@ -6,6 +6,7 @@ use crate::experiment::clean::{remove_glitches, remove_hum};
 use crate::experiment::crossover::{fit_crossover, CrossoverFit};
 use crate::experiment::error::ExperimentError;
 use crate::experiment::fit::{fit_eq84, fit_eq85, Eq84Fit, Eq85Fit};
+use crate::experiment::law_stability::{later_half, LawStability};
 use crate::experiment::least_squares::FitError;
 use crate::experiment::models::{compare_laws, Comparison};
 use crate::experiment::peaks::{find_peaks, noise_level, Peak, PeakSettings};
@@ -92,6 +93,11 @@ pub struct Score {
     pub t0_error_samples: f64,
     /// (beta_85 - beta) / sigma.
     pub beta85_pull: f64,
+    /// (beta_84 - beta) / sigma with the law's systematic uncertainty added in quadrature
+    /// ([`LawStability`]).
+    pub beta84_pull_with_law: f64,
+    /// (t0_84 - t0) / sigma with the law's systematic uncertainty added in quadrature.
+    pub t0_pull_with_law: f64,
 }
 
 /// Everything the analysis found.
@@ -127,6 +133,9 @@ pub struct Analysis {
     pub models: Comparison,
     /// The two-mechanism law's fit ([`crossover`](crate::experiment::crossover)), when it converged.
     pub crossover: Option<CrossoverFit>,
+    /// Eq 84 on the later half of the window: whether the law drifts, and its systematic
+    /// uncertainty if it does.
+    pub law_stability: Option<LawStability>,
     /// The plausibility checks (passed, or the analysis would have been refused).
     pub verdict: Verdict,
     /// The truth, if the trace carries one.
@@ -293,6 +302,7 @@ pub fn analyze(trace: &Trace, s: &AnalysisSettings) -> Result<Analysis, Experime
     }
     let eq85 = fit_eq85(&tp, &acc_idx, &w).map_err(|m| fit_err("eq 85", m))?;
     let models = compare_laws(&ta, &tb, &cyc_idx, &w, &eq84, crossover.as_ref());
+    let law_stability = later_half(&ta, &tb, &cyc_idx, &w, &eq84);
     let window = Window {
         rule: format!(
             "cycles between peaks {first_peak} and {last_peak}: all but the last {} peaks, \
@@ -317,11 +327,14 @@ pub fn analyze(trace: &Trace, s: &AnalysisSettings) -> Result<Analysis, Experime
         too_short,
         faint,
     };
+    let (beta_stated, t0_stated) = stated_sigmas(&eq84, law_stability.as_ref());
     let score = trace.truth.as_ref().map(|tr| Score {
         beta84_pull: (eq84.beta - tr.beta) / eq84.beta_sigma,
         t0_pull: (eq84.t0 - tr.t0) / eq84.t0_sigma,
         t0_error_samples: (eq84.t0 - tr.t0) / dt,
         beta85_pull: (eq85.beta - tr.beta) / eq85.beta_sigma,
+        beta84_pull_with_law: (eq84.beta - tr.beta) / beta_stated,
+        t0_pull_with_law: (eq84.t0 - tr.t0) / t0_stated,
     });
     Ok(Analysis {
         source: trace.source.clone(),
@@ -339,10 +352,26 @@ pub fn analyze(trace: &Trace, s: &AnalysisSettings) -> Result<Analysis, Experime
         eq85,
         models,
         crossover,
+        law_stability,
         verdict,
         truth: trace.truth.clone(),
         score,
     })
+}
+
+/// The uncertainties of eq 84's $\beta$ and $t_0$ the analysis states: the fit's, with the
+/// law's systematic uncertainty ([`LawStability`]) in quadrature where the law drifts.
+fn stated_sigmas(eq84: &Eq84Fit, law: Option<&LawStability>) -> (f64, f64) {
+    let (beta_sys, t0_sys) = law.map_or((0.0, 0.0), |l| (l.beta_systematic(), l.t0_systematic()));
+    (eq84.beta_sigma.hypot(beta_sys), eq84.t0_sigma.hypot(t0_sys))
+}
+
+impl Analysis {
+    /// The stated standard uncertainties of eq 84's $\beta$ and $t_0$ (s): the fit's, and the
+    /// law's where it drifts over the window.
+    pub fn stated_sigmas(&self) -> (f64, f64) {
+        stated_sigmas(&self.eq84, self.law_stability.as_ref())
+    }
 }
 
 impl fmt::Display for Analysis {
@@ -405,12 +434,54 @@ impl fmt::Display for Analysis {
              of the peak-timing noise's, and their correlation)",
             self.eq84.reduced_chi2.sqrt()
         )?;
+        if let Some(l) = &self.law_stability {
+            writeln!(
+                f,
+                "  the law across the window: eq 84 on the later {} cycles (from t = {:.4} s): \
+                 beta = {:.4} +- {:.4}, t0 = {:.6} +- {:.6} s; shifts beta {:+.4}, t0 {:+.3} ms \
+                 ({:.1} and {:.1} times its uncertainty, which bounds what noise moves them): {}",
+                l.cycles,
+                l.t_from,
+                l.beta,
+                l.beta_sigma,
+                l.t0,
+                l.t0_sigma,
+                l.beta_shift,
+                l.t0_shift * 1e3,
+                l.beta_shift.abs() / l.beta_sigma,
+                l.t0_shift.abs() / l.t0_sigma,
+                if l.drifts {
+                    format!(
+                        "eq 79 drifts over the record, so the shifts are the law's systematic \
+                         uncertainty: beta = {:.4} +- {:.4} (stat) +- {:.4} (law), t0 = {:.6} +- \
+                         {:.6} (stat) +- {:.6} (law) s",
+                        a.beta,
+                        a.beta_sigma,
+                        l.beta_systematic(),
+                        a.t0,
+                        a.t0_sigma,
+                        l.t0_systematic()
+                    )
+                } else {
+                    "eq 79 holds across the window as far as the noise can tell".to_string()
+                }
+            )?;
+        }
         if let (Some(t), Some(s)) = (&self.truth, &self.score) {
             writeln!(
                 f,
                 "  truth: beta = {}, t0 = {:.6} s ({}); pulls: beta84 {:+.2}, t0 {:+.2} \
-                 ({:+.2} samples), beta85 {:+.2}",
-                t.beta, t.t0, t.origin, s.beta84_pull, s.t0_pull, s.t0_error_samples, s.beta85_pull
+                 ({:+.2} samples), beta85 {:+.2}; with the law's uncertainty: beta84 {:+.2}, \
+                 t0 {:+.2}",
+                t.beta,
+                t.t0,
+                t.origin,
+                s.beta84_pull,
+                s.t0_pull,
+                s.t0_error_samples,
+                s.beta85_pull,
+                s.beta84_pull_with_law,
+                s.t0_pull_with_law
             )?;
         }
         Ok(())

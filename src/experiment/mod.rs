@@ -34,6 +34,7 @@ pub mod error;
 pub mod fit;
 pub mod input;
 pub mod law;
+pub mod law_stability;
 pub mod least_squares;
 pub mod light;
 pub mod models;
