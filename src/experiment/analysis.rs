@@ -439,7 +439,7 @@ impl fmt::Display for Analysis {
                 f,
                 "  the law across the window: eq 84 on the later {} cycles (from t = {:.4} s): \
                  beta = {:.4} +- {:.4}, t0 = {:.6} +- {:.6} s; shifts beta {:+.4}, t0 {:+.3} ms \
-                 ({:.1} and {:.1} times its uncertainty, which bounds what noise moves them): {}",
+                 ({:.1} and {:.1} times the later half's uncertainty, which bounds what noise moves them): {}",
                 l.cycles,
                 l.t_from,
                 l.beta,

@@ -22,7 +22,8 @@
 use crate::experiment::fit::{fit_eq84, Eq84Fit};
 use serde::Serialize;
 
-/// A shift this many times its noise's standard deviation says the law drifts over the window.
+/// A shift this many times the later half's own standard uncertainty (which bounds the noise's
+/// part of the shift) says the law drifts over the window.
 pub const DRIFT_SIGMAS: f64 = 3.0;
 
 /// Eq 84 on the later half of the window, against the whole window's fit.
