@@ -207,7 +207,8 @@ fn crossover_trace() -> (Trace, f64) {
 }
 
 /// Model choice: a two-mechanism trace is recognised as such, with its crossover and both
-/// exponents; a single law (eq 79, beta = 2) is not taken for two mechanisms.
+/// exponents; a single law (eq 79, beta = 2) is not taken for two mechanisms. The later half's
+/// refit (`law_stability`) sees the first drift and not the second.
 #[test]
 fn the_crossover_law_is_chosen_when_and_only_when_the_data_have_one() {
     let (trace, wc) = crossover_trace();
@@ -222,6 +223,10 @@ fn the_crossover_law_is_chosen_when_and_only_when_the_data_have_one() {
     assert!((x.beta_below - 1.0).abs() < 0.3, "{x:?}");
     assert!((x.beta_above - 4.0).abs() < 0.3, "{x:?}");
     assert!((x.omega_c / wc - 1.0).abs() < 0.1, "{x:?}");
+    // A law whose exponent changes inside the window is seen to drift by the later half's fit.
+    let l = a.law_stability.clone().unwrap();
+    println!("{l:?}");
+    assert!(l.drifts, "{a}");
 
     let disk = Disk::uniform(0.0375);
     let law = Law {
@@ -238,6 +243,9 @@ fn the_crossover_law_is_chosen_when_and_only_when_the_data_have_one() {
         println!("  {} ({}): dBIC {:.1}", c.name, c.parameters, c.delta_bic);
     }
     assert_ne!(a.models.candidates[0].name, "two mechanisms", "{a}");
+    let l = a.law_stability.clone().unwrap();
+    println!("{l:?}");
+    assert!(!l.drifts, "{a}");
 }
 
 /// A trace of `n` samples at 5 kS/s with signal `f(t)` plus 5 mV of seeded noise.
