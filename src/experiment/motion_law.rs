@@ -17,7 +17,8 @@
 //! x-z plane, the pulse is symmetric about $\psi_p = \pi/2$ at every tilt).
 //!
 //! **Exact passage times.** Near each analysed peak $t_i$ the heading samples are interpolated by
-//! the cubic through four samples and solved for $\psi(t) = \psi_p + 2\pi n$, $n$ the turn
+//! the cubic through four samples ([`cubic_root`], the crossing finder of the oscillation
+//! checks) and solved for $\psi(t) = \psi_p + 2\pi n$, $n$ the turn
 //! nearest to $\psi(t_i)$. At 5 kS/s and $\Omega$ = 700 rad/s the cubic's error is below
 //! $10^{-9}$ rad (it is the fourth derivative of $\psi$ times $\Delta t^4$).
 
@@ -28,6 +29,7 @@ use crate::experiment::light::LightModel;
 use crate::experiment::simulate::Motion;
 use crate::experiment::trace::Truth;
 use crate::numerics::minimize::golden_min;
+use crate::numerics::oscillation::cubic_root;
 use std::f64::consts::TAU;
 
 /// Eq 84 fitted, as the analysis fitted it, to the exact passage times of the motion's heading
@@ -118,44 +120,12 @@ fn passage(motion: &Motion, light: &LightModel, t: f64) -> Option<f64> {
     let hi = (j + 20).min(ts.len() - 3);
     (lo..=hi)
         .filter(|&k| (psi[k] - target) * (psi[k + 1] - target) <= 0.0)
-        .filter_map(|k| cubic_root(&ts[k - 1..=k + 2], &psi[k - 1..=k + 2], target, sign))
+        .map(|k| {
+            // The shared crossing finder takes a rising signal: a falling heading is negated.
+            let up: Vec<f64> = psi[k - 1..=k + 2].iter().map(|p| sign * p).collect();
+            cubic_root(&ts[k - 1..=k + 2], &up, sign * target)
+        })
         .min_by(|a, b| (a - t).abs().total_cmp(&(b - t).abs()))
-}
-
-/// The time in $[x_1, x_2]$ at which the cubic through four samples reaches `target`
-/// (Newton from the linear guess; the heading is monotonic there).
-fn cubic_root(x: &[f64], y: &[f64], target: f64, sign: f64) -> Option<f64> {
-    let value = |s: f64| -> (f64, f64) {
-        // Lagrange basis on x[0..4] and its derivative.
-        let mut v = 0.0;
-        let mut d = 0.0;
-        for i in 0..4 {
-            let mut l = 1.0;
-            let mut dl = 0.0;
-            for j in (0..4).filter(|&j| j != i) {
-                let f = (s - x[j]) / (x[i] - x[j]);
-                dl = dl * f + l / (x[i] - x[j]);
-                l *= f;
-            }
-            v += y[i] * l;
-            d += y[i] * dl;
-        }
-        (v, d)
-    };
-    let (a, b) = (x[1], x[2]);
-    let mut s = a + (b - a) * (target - y[1]) / (y[2] - y[1]);
-    for _ in 0..20 {
-        let (v, d) = value(s);
-        if d * sign <= 0.0 {
-            return None;
-        }
-        let step = (v - target) / d;
-        s -= step;
-        if step.abs() < 1e-15 * b.abs().max(1.0) {
-            break;
-        }
-    }
-    (s >= a - 1e-9 && s <= b + 1e-9).then_some(s)
 }
 
 #[cfg(test)]
@@ -170,16 +140,5 @@ mod tests {
             let p = peak_heading(&light, alpha);
             assert!((p - PI / 2.0).abs() < 1e-6, "{alpha}: {p}");
         }
-    }
-
-    #[test]
-    fn a_cubic_heading_is_solved_exactly() {
-        let f = |t: f64| 3.0 + 40.0 * t + 7.0 * t * t + 2.0 * t * t * t;
-        let x = [0.0, 0.1, 0.2, 0.3];
-        let y = x.map(f);
-        let s = cubic_root(&x, &y, f(0.137), 1.0).unwrap();
-        assert!((s - 0.137).abs() < 1e-13, "{s}");
-        // Outside the middle interval: none.
-        assert!(cubic_root(&x, &y, f(0.25), 1.0).is_none());
     }
 }

@@ -473,6 +473,7 @@ pub fn omega_band(a: &crate::experiment::Analysis) -> Figure {
 /// and the noise model hold.
 pub fn residuals(a: &crate::experiment::Analysis) -> Figure {
     let pts: Vec<(f64, f64)> = a.eq84.points.iter().map(|p| (p.x, p.normalized)).collect();
+    let lag = lag_one(&a.eq84.points);
     let plot = Plot::new(
         "Whitened residuals of eq 84",
         "time t (s)",
@@ -491,8 +492,8 @@ pub fn residuals(a: &crate::experiment::Analysis) -> Figure {
             a.source,
             a.eq84.reduced_chi2,
             a.verdict.r2,
-            lag_one(&a.eq84.points),
-            if a.eq84.reduced_chi2 > 3.0 && lag_one(&a.eq84.points) > 0.5 {
+            lag,
+            if a.eq84.reduced_chi2 > 3.0 && lag > 0.5 {
                 ": a slow wave far above the noise, so eq 79 itself misses the recorded motion \
                  (the fit's stated errors are widened by it, but a law that does not hold can \
                  still place t0 wrongly)."

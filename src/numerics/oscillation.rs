@@ -24,9 +24,9 @@ pub fn angular_frequency(t: &[f64], x: &[f64]) -> Option<f64> {
     Some(2.0 * std::f64::consts::PI / period)
 }
 
-/// Where the cubic through four points `(t, x)` crosses `level` between the middle two, by
-/// bisection on the Lagrange interpolant.
-fn cubic_root(t: &[f64], x: &[f64], level: f64) -> f64 {
+/// Where the cubic through four points `(t, x)` crosses `level` upward between the middle two
+/// (`x[1] <= level <= x[2]`), by bisection on the Lagrange interpolant.
+pub fn cubic_root(t: &[f64], x: &[f64], level: f64) -> f64 {
     let p = |s: f64| {
         let mut sum = 0.0;
         for i in 0..4 {
@@ -96,6 +96,14 @@ pub fn try_bisect(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_cubic_crossing_is_found_exactly() {
+        let f = |t: f64| 3.0 + 40.0 * t + 7.0 * t * t + 2.0 * t * t * t;
+        let x = [0.0, 0.1, 0.2, 0.3];
+        let s = cubic_root(&x, &x.map(f), f(0.137));
+        assert!((s - 0.137).abs() < 1e-13, "{s}");
+    }
 
     #[test]
     fn measures_the_frequency_of_a_sine() {

@@ -210,7 +210,10 @@ fn experiment_study() -> Result<Experiment, ReportError> {
     let trace = experiment::simulate::trace_of_motion(&motion, &light, &scene.name);
     let analysis = experiment::analyze(&trace, &AnalysisSettings::default())
         .map_err(|e| ReportError::Input(e.to_string()))?;
-    let motion_law = experiment::motion_law::law_of_motion(&motion, &light, &analysis).ok();
+    let motion_law = Some(
+        experiment::motion_law::law_of_motion(&motion, &light, &analysis)
+            .map_err(|e| ReportError::Input(e.to_string()))?,
+    );
     Ok(Experiment {
         trace,
         analysis,
