@@ -7,7 +7,6 @@
 //! mutation suite runs every mutant of every printed equation through the checks without a
 //! panic), so a panic in a check is a defect of this program and is not caught.
 
-use crate::catalogue;
 use crate::cause::{classify, Cause, Node};
 use crate::equations::{self, Bench};
 use crate::finding::Finding;
@@ -168,8 +167,13 @@ fn with_premises(bench: &Bench, numbers: &[u32]) -> Vec<u32> {
 }
 
 fn jobs(bench: &Bench, selection: &Selection) -> Result<Vec<Job>, CheckError> {
-    let sections: Vec<u32> = catalogue::equations().iter().map(|e| e.section).collect();
-    let claim_sections = catalogue::claims();
+    let sections: Vec<u32> = bench
+        .paper
+        .equations
+        .iter()
+        .map(|e| e.entry.section)
+        .collect();
+    let claim_sections = &bench.paper.claims;
     let mut out: Vec<Job> = Vec::new();
     let registered = equations::equations();
     let derivations = equations::derivations();
@@ -243,6 +247,7 @@ pub fn run_checks(
     let jobs = jobs(bench, selection)?;
     let mut all = run_jobs(bench, &jobs, threads, progress)?;
     attach_causes(bench, &mut all);
+    attach_premises(bench, &mut all);
     Ok(all
         .into_iter()
         .zip(&jobs)
@@ -319,7 +324,10 @@ fn missing_input(bench: &Bench, subject: &Subject) -> Option<String> {
             "claims.yaml has no claim `{id}`: add it back (its check reads the printed value there)"
         ));
     };
-    let built_in = catalogue::claims().into_iter().find(|c| c.id == *id);
+    let built_in = crate::paper::Paper::built_in_shared()
+        .claims
+        .iter()
+        .find(|c| c.id == *id);
     if found.rule.is_some() && built_in.as_ref().is_some_and(|c| c.rule.is_none()) {
         return Some(format!(
             "claims.yaml, claim `{id}`: its check makes its own comparison and reads no `rule`; \
@@ -381,6 +389,66 @@ fn attach_causes(bench: &Bench, checked: &mut [Checked]) {
     }
 }
 
+/// What `subject` rests on besides its numbered premises: the `rests_on` of its entry.
+fn rests_on<'a>(bench: &'a Bench, subject: &Subject) -> &'a [String] {
+    match subject {
+        Subject::Equation { number, .. } => &bench.paper.equation(*number).entry.rests_on,
+        Subject::Claim { id } => bench
+            .paper
+            .claims
+            .iter()
+            .find(|c| c.id == *id)
+            .map_or(&[], |c| c.rests_on.as_slice()),
+    }
+}
+
+/// The name a `rests_on` list uses for `subject`: its claim id, or `eq N`.
+fn premise_name(subject: &Subject) -> String {
+    match subject {
+        Subject::Equation { number, .. } => format!("eq {number}"),
+        Subject::Claim { id } => id.to_string(),
+    }
+}
+
+/// A finding that would pass but rests on a claim or equation that fails (or itself rests on
+/// one) becomes [`Verdict::PremiseFails`], naming them; a failing finding keeps its verdict and
+/// names them too. Premises that were not run leave it as it is. Repeated to a fixed point, so
+/// a premise's premise counts.
+fn attach_premises(bench: &Bench, checked: &mut [Checked]) {
+    use crate::finding::Verdict;
+    for _ in 0..checked.len() {
+        let failing_names: Vec<String> = checked
+            .iter()
+            .filter(|c| {
+                c.finding
+                    .as_ref()
+                    .is_ok_and(|f| matches!(f.verdict, Verdict::Fails | Verdict::PremiseFails))
+            })
+            .map(|c| premise_name(&c.subject))
+            .collect();
+        let mut changed = false;
+        for c in checked.iter_mut() {
+            let failing: Vec<String> = rests_on(bench, &c.subject)
+                .iter()
+                .filter(|p| failing_names.contains(p))
+                .cloned()
+                .collect();
+            let Ok(f) = c.finding.as_mut() else { continue };
+            if failing.is_empty() || f.premises_failing == failing {
+                continue;
+            }
+            if f.verdict.passes() {
+                f.verdict = Verdict::PremiseFails;
+            }
+            f.premises_failing = failing;
+            changed = true;
+        }
+        if !changed {
+            break;
+        }
+    }
+}
+
 /// Counts of verdicts, for the summary line.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize)]
 pub struct Tally {
@@ -390,6 +458,10 @@ pub struct Tally {
     pub approximately: usize,
     /// Definitions.
     pub definitions: usize,
+    /// Order-of-magnitude estimates whose scaling holds.
+    pub estimates: usize,
+    /// Would hold, but only under a premise that fails.
+    pub premise_fails: usize,
     /// Fail.
     pub fails: usize,
     /// Could not run.
@@ -408,6 +480,8 @@ impl Tally {
                     Verdict::Holds => t.holds += 1,
                     Verdict::HoldsApproximately { .. } => t.approximately += 1,
                     Verdict::Definition => t.definitions += 1,
+                    Verdict::Estimate { .. } => t.estimates += 1,
+                    Verdict::PremiseFails => t.premise_fails += 1,
                     Verdict::Fails => t.fails += 1,
                 },
             }

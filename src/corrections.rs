@@ -1,5 +1,5 @@
 //! The numbers a referee writes back: for each equation the checks find wrong at the root, a
-//! corrected form as LaTeX (`paper/corrections.yaml`), checked by the equation's own check
+//! corrected form as LaTeX (`corrections.yaml`, read with the paper: [`Paper::corrections`]), checked by the equation's own check
 //! against the same reference as the printed form, and the numbers downstream that change.
 //!
 //! A correction is not taken on trust either: it is substituted into the paper
@@ -16,35 +16,14 @@
 use crate::check::{run_findings, Checked, Selection, Subject};
 use crate::equations::{solve_printed, Bench};
 use crate::finding::{Finding, Headline, Verdict};
-use crate::paper::{Bindings, Paper, PaperError};
-use serde::{Deserialize, Serialize};
+use crate::paper::{Bindings, Correction, Paper, PaperError};
+use serde::Serialize;
 
-/// The built-in corrections.
-const BUILT_IN: &str = include_str!("../paper/corrections.yaml");
-
-/// One corrected equation, as `paper/corrections.yaml` gives it.
-#[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
-#[serde(deny_unknown_fields)]
-pub struct Correction {
-    /// The printed number.
-    pub number: u32,
-    /// The whole equation, corrected, in the paper's LaTeX.
-    pub latex: String,
-    /// Why, in one or two sentences.
-    pub why: String,
-}
-
-/// Why the corrections could not be read or checked.
+/// Why the corrections could not be checked.
 #[derive(Debug, thiserror::Error)]
 pub enum CorrectionError {
-    /// The YAML does not read.
-    #[error("paper/corrections.yaml: {0}")]
-    Yaml(String),
-    /// An entry names no equation, or one twice.
-    #[error("paper/corrections.yaml: eq {0} is not an equation of the paper (1-85) or is corrected twice: give each equation once")]
-    Number(u32),
     /// A corrected LaTeX does not parse or uses an unknown symbol.
-    #[error("paper/corrections.yaml: {0}")]
+    #[error("corrections.yaml: {0}")]
     Latex(#[from] PaperError),
     /// The checks could not run.
     #[error("the checks of the corrected equations could not run: {0}")]
@@ -98,24 +77,6 @@ pub struct Downstream {
     pub epsilon_printed: f64,
     /// $\epsilon$ from the corrected eq 79.
     pub epsilon_corrected: f64,
-}
-
-/// The corrections compiled into the binary.
-pub fn built_in() -> Result<Vec<Correction>, CorrectionError> {
-    parse(BUILT_IN)
-}
-
-/// Reads corrections from YAML text; each equation at most once.
-pub fn parse(text: &str) -> Result<Vec<Correction>, CorrectionError> {
-    let cs: Vec<Correction> =
-        serde_yaml::from_str(text).map_err(|e| CorrectionError::Yaml(e.to_string()))?;
-    let mut seen = std::collections::BTreeSet::new();
-    for c in &cs {
-        if !(1..=85).contains(&c.number) || !seen.insert(c.number) {
-            return Err(CorrectionError::Number(c.number));
-        }
-    }
-    Ok(cs)
 }
 
 /// `paper` with every correction substituted.
@@ -272,7 +233,7 @@ mod tests {
 
     #[test]
     fn the_built_in_corrections_read_and_substitute() {
-        let cs = built_in().unwrap();
+        let cs = built_in_paper().corrections.clone();
         assert!(cs.len() >= 6, "{}", cs.len());
         let p = apply(built_in_paper(), &cs).unwrap();
         for c in &cs {
@@ -284,20 +245,15 @@ mod tests {
     #[test]
     fn a_bad_correction_is_refused_with_the_equation_and_column() {
         let bad = "- number: 76\n  latex: '\\dot{\\alpha} = - \\frac{2 \\zeta}{3}'\n  why: x\n";
-        let e = apply(built_in_paper(), &parse(bad).unwrap())
-            .unwrap_err()
-            .to_string();
+        let cs = crate::paper::correction::parse(bad).unwrap();
+        let e = apply(built_in_paper(), &cs).unwrap_err().to_string();
         assert!(e.contains("eq 76") && e.contains("column"), "{e}");
-        let twice = "- { number: 76, latex: 'a', why: x }\n- { number: 76, latex: 'a', why: x }\n";
-        assert!(matches!(parse(twice), Err(CorrectionError::Number(76))));
-        let zero = "- { number: 0, latex: 'a', why: x }\n";
-        assert!(matches!(parse(zero), Err(CorrectionError::Number(0))));
     }
 
     #[test]
     fn the_corrected_eq_79_means_three_fifths_of_the_papers_epsilon() {
-        let cs = built_in().unwrap();
-        let corrected = apply(built_in_paper(), &cs).unwrap();
+        let cs = &built_in_paper().corrections;
+        let corrected = apply(built_in_paper(), cs).unwrap();
         let d = downstream(built_in_paper(), &corrected, (0.0375, 0.25, 9.81)).unwrap();
         // As printed: epsilon = 5 g C^{-1} / ((beta + 2) a k), C = 0.0055^-4.
         let c = 0.0055f64.powi(-4);

@@ -58,6 +58,19 @@ pub enum Verdict {
     Fails,
     /// A convention, consistent with the rest of the paper.
     Definition,
+    /// It would hold, but only as a consequence of a premise that another finding rejects (the
+    /// finding's `premises_failing` names them): not a verdict on the paper's conclusion.
+    PremiseFails,
+    /// An order-of-magnitude estimate, read as the paper's data file says it is
+    /// (`estimate:` in equations.yaml): its scaling (the exponent) is confirmed and its constant
+    /// is within the reading's factor of the reference's, but not within the reference's own
+    /// tolerance (the finding's `claimed` and `reference` say by how much).
+    Estimate {
+        /// The printed constant over the reference's.
+        constant_ratio: f64,
+        /// The factor the reading allows, either way.
+        factor: f64,
+    },
 }
 
 impl Verdict {
@@ -76,6 +89,12 @@ impl fmt::Display for Verdict {
             }
             Verdict::Fails => write!(f, "FAILS"),
             Verdict::Definition => write!(f, "definition"),
+            Verdict::PremiseFails => write!(f, "holds only under a premise that fails"),
+            Verdict::Estimate { constant_ratio, .. } => write!(
+                f,
+                "order-of-magnitude estimate (scaling confirmed; constant {constant_ratio:.3} \
+                 times the reference's)"
+            ),
         }
     }
 }
@@ -116,6 +135,17 @@ impl Tolerance {
         Self {
             value: 2.0 * width,
             rule: format!("bisection: twice the final bracket's relative width ({width:e})"),
+        }
+    }
+
+    /// Two power laws scale alike when their log-log slopes, fitted over the same window,
+    /// agree within 5 % (relative): the window's small-parameter corrections move a slope by
+    /// far less, and a different exponent of the forms the paper uses (1/3 against 1/2, 1/6
+    /// against 1/4) by far more.
+    pub fn exponent() -> Self {
+        Self {
+            value: 0.05,
+            rule: "scaling: log-log slopes within 5 % of each other".into(),
         }
     }
 
@@ -221,6 +251,9 @@ pub struct Finding {
     /// The one comparison a reader needs, in the paper's terms (set by the checks whose
     /// `claimed` and `reference` are orders or errors rather than the quantity itself).
     pub headline: Option<Headline>,
+    /// The premises (claim ids, or `eq N`) that rest under it and fail, when its verdict is
+    /// [`Verdict::PremiseFails`].
+    pub premises_failing: Vec<String>,
 }
 
 /// One comparison in the paper's terms: a named quantity, the value the paper prints (or
@@ -290,6 +323,7 @@ impl Finding {
             verdict,
             shown_by: None,
             headline: None,
+            premises_failing: Vec::new(),
         }
     }
 
@@ -342,6 +376,7 @@ impl Finding {
             },
             shown_by: None,
             headline: None,
+            premises_failing: Vec::new(),
         }
     }
 

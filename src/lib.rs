@@ -6,7 +6,6 @@
 //! `ode_solvers`.
 
 pub mod budget;
-pub mod catalogue;
 pub mod cause;
 pub mod check;
 pub mod compare;

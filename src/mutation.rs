@@ -25,6 +25,11 @@ pub struct Score {
     pub killed: usize,
     /// What was changed in each survivor.
     pub survivors: Vec<String>,
+    /// Mutants of an equation read as an order-of-magnitude estimate that its check still
+    /// reads as one: a constant moved within the estimate's factor, which the reading accepts
+    /// by design (neither killed nor survivors).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub within_reading: Vec<String>,
     /// The printed equation itself fails its check: its mutants say nothing (a check that
     /// already fails "kills" everything), so none are run.
     pub printed_fails: bool,
@@ -48,13 +53,20 @@ pub fn mutation_scores(
         };
         let mut check: fn(&Bench) -> Finding = truth;
         let mut judged_by = "truth";
-        let mut printed_fails = check(bench).verdict == Verdict::Fails;
+        let printed = check(bench).verdict;
+        let estimate = matches!(printed, Verdict::Estimate { .. });
+        // An estimate is judged by its derivation where it has one (a constant moved by 1e-3
+        // cannot leave an estimate's reading, but it no longer follows from its premises).
+        let mut printed_fails = printed == Verdict::Fails || estimate;
         if printed_fails {
             if let Some(d) = derived.iter().find(|d| d.number == n) {
                 if (d.check)(bench).verdict != Verdict::Fails {
                     (check, judged_by, printed_fails) = (d.check, "derivation", false);
                 }
             }
+        }
+        if printed_fails && estimate {
+            (judged_by, printed_fails) = ("truth, as an estimate", false);
         }
         let ms = if printed_fails {
             Vec::new()
@@ -66,12 +78,13 @@ pub fn mutation_scores(
             mutants: ms.len(),
             killed: 0,
             survivors: Vec::new(),
+            within_reading: Vec::new(),
             printed_fails,
             judged_by: judged_by.into(),
         };
         // The mutants of one equation are independent: checked in parallel on rayon's pool,
         // collected in their order, so the score does not depend on the thread count.
-        let verdicts: Vec<(bool, _)> = ms
+        let verdicts: Vec<(Verdict, _)> = ms
             .into_par_iter()
             .map(|m| {
                 let paper = bench.paper.with_chains(n, m.chains);
@@ -79,14 +92,14 @@ pub fn mutation_scores(
                     paper: &paper,
                     ..*bench
                 };
-                (check(&b).verdict == Verdict::Fails, m.change)
+                (check(&b).verdict, m.change)
             })
             .collect();
-        for (killed, change) in verdicts {
-            if killed {
-                score.killed += 1;
-            } else {
-                score.survivors.push(change);
+        for (verdict, change) in verdicts {
+            match verdict {
+                Verdict::Fails => score.killed += 1,
+                Verdict::Estimate { .. } => score.within_reading.push(change),
+                _ => score.survivors.push(change),
             }
         }
         out.push(score);
@@ -121,12 +134,16 @@ impl StoredScores {
         self.scores.iter().find(|s| s.equation == n)
     }
 
-    /// Mutants made and killed over the equations that have a score.
-    pub fn totals(&self) -> (usize, usize) {
+    /// Mutants made and killed over the equations that have a score, leaving out those an
+    /// estimate's reading accepts; and how many those are.
+    pub fn totals(&self) -> (usize, usize, usize) {
         self.scores
             .iter()
             .filter(|s| !s.printed_fails)
-            .fold((0, 0), |(m, k), s| (m + s.mutants, k + s.killed))
+            .fold((0, 0, 0), |(m, k, w), s| {
+                let within = s.within_reading.len();
+                (m + s.mutants - within, k + s.killed, w + within)
+            })
     }
 }
 
@@ -138,15 +155,25 @@ impl Score {
                     mutant would fail it too"
                 .into();
         }
-        let by = if self.judged_by == "derivation" {
-            "its derivation from its printed premises (the printed form fails its own check)"
-        } else {
-            "its own check"
+        let by = match self.judged_by.as_str() {
+            "derivation" => {
+                "its derivation from its printed premises (the printed form fails its own check \
+                 or is an estimate)"
+            }
+            "truth, as an estimate" => "its own check, read as an estimate",
+            _ => "its own check",
         };
         let mut text = format!(
             "mutants of the printed LaTeX: {} of {} killed by {by}",
             self.killed, self.mutants
         );
+        if !self.within_reading.is_empty() {
+            text.push_str(&format!(
+                "; {} within the estimate's reading (a constant moved inside its factor): {}",
+                self.within_reading.len(),
+                self.within_reading.join("; ")
+            ));
+        }
         if !self.survivors.is_empty() {
             text.push_str(&format!("; survivors: {}", self.survivors.join("; ")));
         }

@@ -12,9 +12,9 @@
 //! but that cannot be checked, an unknown id) is rejected with one sentence that says what to
 //! write instead.
 
-use crate::catalogue;
 use crate::check::Selection;
 use crate::equations::{self, UNCHECKABLE_CLAIMS, UNCHECKABLE_EQUATIONS};
+use crate::paper::Paper;
 use crate::scene::builtin::BUILTIN;
 use thiserror::Error;
 
@@ -112,10 +112,10 @@ fn number(s: &str) -> Option<Result<u32, ()>> {
     )
 }
 
-/// Parses the `--only` list against the paper's catalogue and the registered checks.
-pub fn parse_only(text: &str) -> Result<Selection, SelectError> {
+/// Parses the `--only` list against `paper`'s claims and the registered checks.
+pub fn parse_only(text: &str, paper: &Paper) -> Result<Selection, SelectError> {
     let checked: Vec<u32> = equations::equations().iter().map(|e| e.number).collect();
-    let claim_ids: Vec<String> = catalogue::claims().into_iter().map(|c| c.id).collect();
+    let claim_ids: Vec<String> = paper.claims.iter().map(|c| c.id.clone()).collect();
     let (mut numbers, mut claims) = (Vec::<u32>::new(), Vec::<String>::new());
     let items: Vec<&str> = text
         .split(',')
@@ -247,8 +247,12 @@ pub fn scene_template(name: &str) -> Result<String, SelectError> {
 mod tests {
     use super::*;
 
+    fn paper() -> &'static Paper {
+        Paper::built_in_shared()
+    }
+
     fn nums(s: &str) -> Vec<u32> {
-        parse_only(s).unwrap().numbers.unwrap()
+        parse_only(s, paper()).unwrap().numbers.unwrap()
     }
 
     #[test]
@@ -263,7 +267,11 @@ mod tests {
 
     #[test]
     fn claims_with_or_without_a_prefix() {
-        let s = parse_only("k-uniform-disk,claim:k-rim-disk,claim-k-uniform-disk,3").unwrap();
+        let s = parse_only(
+            "k-uniform-disk,claim:k-rim-disk,claim-k-uniform-disk,3",
+            paper(),
+        )
+        .unwrap();
         assert_eq!(
             s.claims.unwrap(),
             ["k-uniform-disk".to_string(), "k-rim-disk".to_string()]
@@ -273,13 +281,13 @@ mod tests {
 
     #[test]
     fn rejects_with_a_sentence() {
-        let e = |s: &str| parse_only(s).unwrap_err().to_string();
+        let e = |s: &str| parse_only(s, paper()).unwrap_err().to_string();
         assert!(e("86").contains("1 to 85"), "{}", e("86"));
         assert!(e("eq0").contains("1 to 85"));
         assert!(e("25-23").contains("write 23-25"), "{}", e("25-23"));
         // Every equation has a check now (eq 82's since the squeeze-film reference).
-        assert_eq!(parse_only("82").unwrap().numbers, Some(vec![82]));
-        let range = parse_only("80-85").unwrap();
+        assert_eq!(parse_only("82", paper()).unwrap().numbers, Some(vec![82]));
+        let range = parse_only("80-85", paper()).unwrap();
         assert_eq!(range.numbers, Some(vec![80, 81, 82, 83, 84, 85]));
         assert!(
             e("k-uniform-dsk").contains("did you mean k-uniform-disk"),

@@ -284,3 +284,79 @@ fn the_check_rule_would_catch_an_import() {
     assert!(other_checks("oscillation", "use super::oscillation::eq54;").is_empty());
     assert!(other_checks("air_film", "use super::spin_down::{disk};").is_empty());
 }
+
+/// The paper's files: only `src/paper/` embeds or opens them, so every consumer reads the one
+/// [`rolling_disk::paper::Paper`] it was given (a `--paper DIR` then reaches every output).
+const PAPER_FILES: &[&str] = &[
+    "equations.yaml",
+    "symbols.yaml",
+    "claims.yaml",
+    "corrections.yaml",
+];
+
+/// The lines of `text` (code, not comments) that embed or open one of the paper's files: a
+/// string literal naming it passed straight to `include_str!`, a read, an open or a path join.
+fn paper_file_uses(text: &str) -> Vec<(usize, String)> {
+    const READERS: &[&str] = &[
+        "include_str!(",
+        "read_to_string(",
+        "read(",
+        "open(",
+        "join(",
+    ];
+    code_lines(text)
+        .into_iter()
+        .filter(|(_, line)| {
+            READERS.iter().any(|r| {
+                line.match_indices(r).any(|(i, _)| {
+                    let rest = &line[i + r.len()..];
+                    rest.starts_with('"')
+                        && rest[1..].split('"').next().is_some_and(|lit| {
+                            PAPER_FILES
+                                .iter()
+                                .any(|f| lit == *f || lit.ends_with(&format!("/{f}")))
+                        })
+                })
+            })
+        })
+        .map(|(n, line)| (n, line.trim().to_string()))
+        .collect()
+}
+
+#[test]
+fn only_the_paper_module_reads_the_paper() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut files = Vec::new();
+    rust_files(&src, &mut files);
+    let paper = src.join("paper");
+    let mut offenders = Vec::new();
+    for f in files.iter().filter(|f| !f.starts_with(&paper)) {
+        let text = std::fs::read_to_string(f).unwrap();
+        for (n, line) in paper_file_uses(&text) {
+            offenders.push(format!("{}:{n}: {line}", f.display()));
+        }
+    }
+    assert!(
+        offenders.is_empty(),
+        "read the paper through rolling_disk::paper::Paper, not its files:\n{}",
+        offenders.join("\n")
+    );
+    // The paper module itself embeds the four and opens them in a directory (else the scan
+    // looks for the wrong thing).
+    let own = std::fs::read_to_string(paper.join("mod.rs")).unwrap();
+    assert_eq!(
+        paper_file_uses(&own).len(),
+        8,
+        "{:?}",
+        paper_file_uses(&own)
+    );
+}
+
+#[test]
+fn the_paper_rule_would_catch_a_second_reader() {
+    let planted = "fn f() {\n    let t = include_str!(\"../paper/claims.yaml\");\n    \
+                   let u = std::fs::read_to_string(dir.join(\"equations.yaml\"));\n}\n";
+    assert_eq!(paper_file_uses(planted).len(), 2);
+    assert!(paper_file_uses("// the claims of paper/claims.yaml\n").is_empty());
+    assert!(paper_file_uses("let s = format!(\"no reading in claims.yaml\");\n").is_empty());
+}

@@ -1,12 +1,14 @@
 //! The corrections of paper/corrections.yaml, each checked by its equation's own check against
 //! the same reference as the printed form: the printed form fails, the corrected one holds.
 
-use rolling_disk::corrections::{built_in, verify};
+use rolling_disk::corrections::verify;
 use rolling_disk::equations::Bench;
 
 #[test]
 fn every_correction_holds_where_the_printed_form_fails() {
-    let cs = built_in().unwrap();
+    let cs = rolling_disk::paper::Paper::built_in_shared()
+        .corrections
+        .clone();
     let verified = verify(&Bench::default(), &cs, 2).unwrap();
     assert_eq!(verified.len(), cs.len());
     let mut wrong = Vec::new();

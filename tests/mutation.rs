@@ -4,7 +4,6 @@
 
 use rolling_disk::equations::{Bench, FROM_LATEX};
 use rolling_disk::mutation::{mutation_scores, StoredScores};
-use rolling_disk::report::json::PaperSource;
 
 /// Survivors that are not weaknesses: (equation, change, why).
 const EXPLAINED: &[(u32, &str, &str)] = &[];
@@ -38,7 +37,7 @@ fn every_mutant_of_the_printed_equations_is_killed() {
     assert!(made > 0);
     // The report shows the stored scores (snapshots/mutants.json): they must be these.
     let fresh = StoredScores {
-        paper_sha256: PaperSource::built_in("").sha256,
+        paper_sha256: rolling_disk::paper::Paper::built_in_shared().sha256.clone(),
         scores: scores.clone(),
     };
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots/mutants.json");

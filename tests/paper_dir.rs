@@ -7,14 +7,17 @@ use rolling_disk::cause::Cause;
 use rolling_disk::check::{run_checks, Selection, Subject};
 use rolling_disk::equations::{equations, Bench};
 use rolling_disk::finding::Verdict;
-use rolling_disk::paper::{Paper, PaperSource};
+use rolling_disk::paper::{Paper, PaperSource, Texts};
 
-const EQUATIONS: &str = include_str!("../paper/equations.yaml");
-const SYMBOLS: &str = include_str!("../paper/symbols.yaml");
-const CLAIMS: &str = include_str!("../paper/claims.yaml");
+const EQUATIONS: &str = Texts::BUILT_IN.equations;
+const CLAIMS: &str = Texts::BUILT_IN.claims;
 
 fn paper(equations: &str) -> Paper {
-    Paper::from_texts(PaperSource::BuiltIn, equations, SYMBOLS, CLAIMS).unwrap()
+    let texts = Texts {
+        equations,
+        ..Texts::BUILT_IN
+    };
+    Paper::from_texts(PaperSource::BuiltIn, texts).unwrap()
 }
 
 fn verdicts(p: &Paper, numbers: &[u32]) -> Vec<(u32, Verdict)> {
@@ -148,7 +151,14 @@ fn a_claim_missing_its_rule_or_its_entry_cannot_run_and_says_what_to_add() {
     let end = start + CLAIMS[start..].find("\n\n").unwrap() + 2;
     let edited = format!("{}{}", &no_rule[..start], &no_rule[end..]);
     assert!(!edited.contains("k-rim-disk"));
-    let p = Paper::from_texts(PaperSource::BuiltIn, EQUATIONS, SYMBOLS, &edited).unwrap();
+    let p = Paper::from_texts(
+        PaperSource::BuiltIn,
+        Texts {
+            claims: &edited,
+            ..Texts::BUILT_IN
+        },
+    )
+    .unwrap();
     let bench = Bench::with_paper(&p);
     let selection = Selection {
         numbers: Some(Vec::new()),
@@ -184,7 +194,14 @@ fn a_claim_missing_its_rule_or_its_entry_cannot_run_and_says_what_to_add() {
         &CLAIMS[..end],
         &CLAIMS[end..]
     );
-    let p = Paper::from_texts(PaperSource::BuiltIn, EQUATIONS, SYMBOLS, &with_rule).unwrap();
+    let p = Paper::from_texts(
+        PaperSource::BuiltIn,
+        Texts {
+            claims: &with_rule,
+            ..Texts::BUILT_IN
+        },
+    )
+    .unwrap();
     let bench = Bench::with_paper(&p);
     let selection = Selection {
         numbers: Some(Vec::new()),
@@ -196,4 +213,73 @@ fn a_claim_missing_its_rule_or_its_entry_cannot_run_and_says_what_to_add() {
         e.contains("k-uniform-disk") && e.contains("reads no `rule`"),
         "{e}"
     );
+}
+
+/// `report --paper DIR` with eq 76's 5 made a 3: the HTML (its MathML's LaTeX annotation), the
+/// LaTeX and the JSON all show the edited equation, and none shows the printed one. The
+/// corrections of the built-in paper are read from the same directory, so the printed form of
+/// eq 76 appears nowhere.
+#[test]
+fn a_report_on_an_edited_paper_shows_the_edit_everywhere() {
+    let printed = r"\frac{2 \epsilon}{5}";
+    let edited = r"\frac{2 \epsilon}{3}";
+    assert_eq!(
+        EQUATIONS.matches(printed).count(),
+        2,
+        "eq 76 prints it twice"
+    );
+    let root = std::env::temp_dir().join(format!("rolling-disk-edited-{}", std::process::id()));
+    let dir = root.join("paper");
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(
+        dir.join("equations.yaml"),
+        EQUATIONS.replace(printed, edited),
+    )
+    .unwrap();
+    let out = root.join("report");
+    let status = std::process::Command::new(env!("CARGO_BIN_EXE_rolling-disk"))
+        .args(["report", "--format", "all", "--paper"])
+        .arg(&dir)
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(
+        status.status.success(),
+        "{}",
+        String::from_utf8_lossy(&status.stderr)
+    );
+    let read = |f: &str| std::fs::read_to_string(out.join(f)).unwrap();
+    let (html, tex) = (read("report.html"), read("report.tex"));
+    let json: serde_json::Value = serde_json::from_str(&read("report.json")).unwrap();
+    let mut strings = Vec::new();
+    collect_strings(&json, &mut strings);
+    let in_json = |needle: &str| strings.iter().filter(|s| s.contains(needle)).count();
+    std::fs::remove_dir_all(&root).unwrap();
+    for (what, printed_seen, edited_seen) in [
+        (
+            "HTML",
+            html.matches(printed).count(),
+            html.matches(edited).count(),
+        ),
+        (
+            "LaTeX",
+            tex.matches(printed).count(),
+            tex.matches(edited).count(),
+        ),
+        ("JSON", in_json(printed), in_json(edited)),
+    ] {
+        assert_eq!(printed_seen, 0, "{what} shows the printed eq 76");
+        assert!(edited_seen > 0, "{what} does not show the edited eq 76");
+    }
+    assert_eq!(json["paper"]["source"].as_str(), dir.to_str());
+}
+
+fn collect_strings(v: &serde_json::Value, out: &mut Vec<String>) {
+    match v {
+        serde_json::Value::String(s) => out.push(s.clone()),
+        serde_json::Value::Array(a) => a.iter().for_each(|x| collect_strings(x, out)),
+        serde_json::Value::Object(o) => o.values().for_each(|x| collect_strings(x, out)),
+        _ => {}
+    }
 }

@@ -1,14 +1,18 @@
 //! The registry of checks against the catalogue, and the mutation sweep: every check must fail
 //! when the paper's claimed side is perturbed by a relative 1e-3, in either direction.
 
-use rolling_disk::catalogue;
 use rolling_disk::equations::claims::mutation_moves;
 use rolling_disk::equations::{claims, equations, Bench, FROM_LATEX};
 use rolling_disk::finding::Verdict;
+use rolling_disk::paper::Paper;
 
 #[test]
 fn registered_checks_match_the_catalogue() {
-    let cat = catalogue::equations();
+    let cat: Vec<_> = Paper::built_in_shared()
+        .equations
+        .iter()
+        .map(|e| &e.entry)
+        .collect();
     let eqs = equations();
     let mut numbers: Vec<u32> = eqs.iter().map(|e| e.number).collect();
     numbers.dedup();
@@ -17,11 +21,15 @@ fn registered_checks_match_the_catalogue() {
         let entry = &cat[e.number as usize - 1];
         assert_eq!(entry.label, e.label, "eq {}: label", e.number);
     }
-    let ids: Vec<String> = catalogue::claims().into_iter().map(|c| c.id).collect();
+    let ids: Vec<&str> = Paper::built_in_shared()
+        .claims
+        .iter()
+        .map(|c| c.id.as_str())
+        .collect();
     let checked = claims();
     for c in &checked {
         assert!(
-            ids.iter().any(|i| i == c.id),
+            ids.contains(&c.id),
             "claim {} is not in paper/claims.yaml",
             c.id
         );
@@ -57,7 +65,12 @@ fn every_check_fails_when_its_claim_is_perturbed() {
     // (`mutation_moves`).
     for c in claims() {
         let holds = (c.check)(&Bench::default()).verdict.passes();
-        for p in mutation_moves(c.id, holds) {
+        let rule = Paper::built_in_shared()
+            .claims
+            .iter()
+            .find(|k| k.id == c.id)
+            .and_then(|k| k.rule.as_ref());
+        for p in mutation_moves(rule, holds) {
             let f = (c.check)(&Bench::perturbed(p));
             if f.verdict != Verdict::Fails {
                 survivors.push(format!("{} under {p:+e}: {}", c.id, f.verdict));
@@ -84,7 +97,7 @@ fn every_equation_and_claim_is_checked_or_says_why_not() {
         );
     }
     let checked = claims();
-    for c in catalogue::claims() {
+    for c in &Paper::built_in_shared().claims {
         let has = checked.iter().filter(|k| k.id == c.id).count();
         let excused = UNCHECKABLE_CLAIMS.iter().any(|(id, _)| *id == c.id);
         assert!(

@@ -2,8 +2,8 @@
 //! tools installed (`.ci/run` installs them; run with `--include-ignored`), loaded by headless
 //! Chromium without a console error and compiled by pdflatex without an error.
 
-use rolling_disk::catalogue;
 use rolling_disk::equations::Bench;
+use rolling_disk::paper::Paper;
 use rolling_disk::report::{build::build, fonts, json, mathml, render};
 use std::path::PathBuf;
 use std::process::Command;
@@ -52,7 +52,7 @@ fn html_holds_every_equation_claim_and_figure_as_mathml_and_svg() {
     for n in 1..=85 {
         assert!(html.contains(&format!("id=\"eq-{n}\"")), "eq {n} missing");
     }
-    for c in catalogue::claims() {
+    for c in &Paper::built_in_shared().claims {
         assert!(
             html.contains(&format!("id=\"claim-{}\"", c.id)),
             "claim {} missing",
@@ -66,7 +66,7 @@ fn html_holds_every_equation_claim_and_figure_as_mathml_and_svg() {
             "figure {f} missing"
         );
     }
-    let corrections = rolling_disk::corrections::built_in().unwrap().len();
+    let corrections = Paper::built_in_shared().corrections.len();
     assert_eq!(
         html.matches("<math").count(),
         85 + corrections,
@@ -141,7 +141,7 @@ fn count(hay: &str, needle: &str) -> usize {
 #[test]
 fn every_equation_is_well_formed_mathml_that_keeps_the_printed_structure() {
     let (html, _, _, _) = built();
-    for e in catalogue::equations() {
+    for e in Paper::built_in_shared().equations.iter().map(|e| &e.entry) {
         let m = math_of(html, e.number);
         let defects = mathml::arity_defects(m)
             .unwrap_or_else(|err| panic!("eq {}: MathML is not well formed: {err}", e.number));
@@ -502,7 +502,11 @@ fn equations_render_as_their_reference_images_in_chromium() {
     let dir = out_dir("shots");
     let refs = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/reference");
     let bless = std::env::var_os("ROLLING_DISK_BLESS").is_some();
-    let cat = catalogue::equations();
+    let cat: Vec<_> = Paper::built_in_shared()
+        .equations
+        .iter()
+        .map(|e| &e.entry)
+        .collect();
     let latex = |n: u32| {
         cat.iter()
             .find(|e| e.number == n)

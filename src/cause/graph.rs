@@ -26,6 +26,10 @@ pub enum Status {
     Approx,
     /// A consistent definition.
     Definition,
+    /// An order-of-magnitude estimate whose scaling holds.
+    Estimate,
+    /// Would hold, but only under a premise that fails.
+    PremiseFails,
     /// Fails.
     Fails,
     /// Not checkable, or could not run.
@@ -39,6 +43,8 @@ impl Status {
             Status::Holds => (RGBColor(0xe3, 0xf4, 0xea), RGBColor(0x0b, 0x5d, 0x2a)),
             Status::Approx => (RGBColor(0xe6, 0xf0, 0xfb), RGBColor(0x12, 0x46, 0x7a)),
             Status::Definition => (RGBColor(0xf0, 0xf0, 0xf0), RGBColor(0x44, 0x44, 0x44)),
+            Status::Estimate => (RGBColor(0xf3, 0xe8, 0xfb), RGBColor(0x5b, 0x2a, 0x86)),
+            Status::PremiseFails => (RGBColor(0xfc, 0xec, 0xdc), RGBColor(0x8a, 0x4b, 0x08)),
             Status::Fails => (RGBColor(0xfd, 0xe4, 0xe1), RGBColor(0x9b, 0x1c, 0x0c)),
             Status::Unchecked => (RGBColor(0xff, 0xf4, 0xd6), RGBColor(0x7a, 0x52, 0x00)),
         }
@@ -49,6 +55,8 @@ impl Status {
             Status::Holds => "holds",
             Status::Approx => "holds approximately",
             Status::Definition => "definition",
+            Status::Estimate => "estimate",
+            Status::PremiseFails => "premise fails",
             Status::Fails => "fails",
             Status::Unchecked => "not checked",
         }

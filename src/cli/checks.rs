@@ -10,7 +10,7 @@ pub(crate) fn mutants(only: Option<&str>, json: bool, paper: Option<&Path>) -> a
             .map(|e| e.number)
             .collect(),
         Some(text) => {
-            let selection = rolling_disk::select::parse_only(text)?;
+            let selection = rolling_disk::select::parse_only(text, bench.paper)?;
             match selection.numbers {
                 Some(n) if !n.is_empty() => n,
                 _ => {
@@ -104,7 +104,7 @@ pub(crate) fn check(
                  (for example --only 23-25,50) or leave --only out to run every check"
             ))
         }
-        Some(text) => rolling_disk::select::parse_only(text)?,
+        Some(text) => rolling_disk::select::parse_only(text, bench.paper)?,
         None => Selection::default(),
     };
     let bar = ProgressBar::with_draw_target(None, ProgressDrawTarget::stderr());
@@ -221,8 +221,15 @@ pub(crate) fn print_table(checked: &[Checked]) {
         .partition(|c| matches!(c.subject, rolling_disk::check::Subject::Equation { .. }));
     let line = |what: &str, t: Tally, n: usize| {
         format!(
-            "{n} {what}: {} hold, {} hold approximately, {} definitions, {} fail, {} could not run",
-            t.holds, t.approximately, t.definitions, t.fails, t.not_run
+            "{n} {what}: {} hold, {} hold approximately, {} definitions, {} estimates (scaling \
+             confirmed), {} hold only under a premise that fails, {} fail, {} could not run",
+            t.holds,
+            t.approximately,
+            t.definitions,
+            t.estimates,
+            t.premise_fails,
+            t.fails,
+            t.not_run
         )
     };
     println!();

@@ -83,6 +83,47 @@ impl SqueezeFilm {
     }
 }
 
+/// The tilts over which the idealized squeeze film describes a disk that still rolls: above the
+/// tilt where its suction reaches one atmosphere and above the tilt where the disk, falling by
+/// the film's law, would leave the table; below the tilt where the air's inertia counts.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Window {
+    /// Where the suction $12\eta\Omega/\alpha^2$ equals `p_atm` (rad); below it the air cavitates.
+    pub suction: f64,
+    /// Where $a|\ddot\alpha| = g$ along $\alpha^3 = K\tau$, $K = 24I\eta a/km$:
+    /// $\alpha^5 = (2/9)K^2 a/g$ (rad); below it the disk leaves the table.
+    pub contact: f64,
+    /// Where the reduced Reynolds number $\Omega a^2\alpha^2/\nu$ is 1 (rad); above it the air's
+    /// inertia counts.
+    pub inertia: f64,
+}
+
+impl Window {
+    /// The window for `disk` in air of viscosity `eta` (Pa s), kinematic viscosity `nu`
+    /// (m^2/s) and pressure `p_atm` (Pa), with $\Omega^2 = g/(ak\alpha)$ (steady $b = 0$ motion
+    /// at small tilt).
+    pub fn of(film: SqueezeFilm, disk: &Disk, eta: f64, nu: f64, p_atm: f64) -> Self {
+        let (a, k, g, m) = (disk.a, disk.k, disk.g, disk.m);
+        let omega_scale = (g / (a * k)).sqrt(); // Omega = omega_scale alpha^(-1/2)
+        let rate = 24.0 * film.coefficient * eta * a / (k * m);
+        Self {
+            suction: (12.0 * eta * omega_scale / p_atm).powf(0.4),
+            contact: (2.0 / 9.0 * rate * rate * a / g).powf(0.2),
+            inertia: (nu / (omega_scale * a * a)).powf(2.0 / 3.0),
+        }
+    }
+
+    /// The lowest tilt of the window (rad).
+    pub fn low(&self) -> f64 {
+        self.suction.max(self.contact)
+    }
+
+    /// True when some tilt satisfies all three conditions.
+    pub fn is_open(&self) -> bool {
+        self.low() < self.inertia
+    }
+}
+
 /// $I$ by cell-centred finite volumes on the half disk $0 < \theta < \pi$ ($P$ is odd in
 /// $\rho_\perp$, so $P = 0$ on the diameter), `nr` radial cells and `2 nr` angular ones, with
 /// $\hat{\mathbf e} = \hat{\mathbf x}$, so $H = 1 - \rho\cos\theta$.
@@ -179,6 +220,29 @@ mod tests {
         // The stated uncertainty (extrapolated minus finer grid, 3.6 %) is conservative: the
         // extrapolations from 25/50, 50/100 and 100/200 cells agree to 0.25 %.
         assert!(film.uncertainty < 0.05 * film.coefficient, "{film:?}");
+    }
+
+    #[test]
+    fn the_toy_disks_window_is_open_and_its_edges_are_where_their_conditions_turn() {
+        let film = SqueezeFilm::solved();
+        let toy = Disk {
+            a: 0.0375,
+            k: 0.25,
+            m: 0.4,
+            g: 9.81,
+        };
+        let w = Window::of(film, &toy, 1.8e-5, 1.5e-5, 101_325.0);
+        assert!(w.is_open(), "{w:?}");
+        let omega = |alpha: f64| (toy.g / (toy.a * toy.k * alpha)).sqrt();
+        // At each edge its own condition is met with equality.
+        let suction = 12.0 * 1.8e-5 * omega(w.suction) / (w.suction * w.suction);
+        assert!((suction / 101_325.0 - 1.0).abs() < 1e-12, "{suction}");
+        let reynolds = omega(w.inertia) * toy.a * toy.a * w.inertia * w.inertia / 1.5e-5;
+        assert!((reynolds - 1.0).abs() < 1e-12, "{reynolds}");
+        // alpha = (K tau)^(1/3): a |alpha''| = (2/9) a K^2 / alpha^5 = g at the contact edge.
+        let k_rate = 24.0 * film.coefficient * 1.8e-5 * toy.a / (toy.k * toy.m);
+        let accel = 2.0 / 9.0 * toy.a * k_rate * k_rate / w.contact.powi(5);
+        assert!((accel / toy.g - 1.0).abs() < 1e-12, "{accel}");
     }
 
     #[test]

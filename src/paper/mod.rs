@@ -6,17 +6,20 @@
 //! it with `rolling-disk check --paper DIR`, without touching Rust. The references (models,
 //! integration, linearization) never import this module; `tests/architecture.rs` enforces it.
 
+pub mod catalogue;
+pub mod correction;
 pub mod eval;
 pub mod expr;
 pub mod mutate;
 pub mod parse;
 pub mod printed;
 
+pub use catalogue::{ClaimEntry, EquationEntry, EstimateReading, Location, Rule, SymbolInfo};
+pub use correction::Correction;
 pub use eval::{EvalError, Value};
 pub use expr::{Chain, Expr, Rel, Symbol};
 pub use printed::Fit;
 
-use crate::catalogue::{ClaimEntry, EquationEntry, SymbolInfo};
 use nalgebra::{RealField, Vector3};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -245,8 +248,14 @@ pub struct Paper {
     pub equations: Vec<Equation>,
     /// The prose claims.
     pub claims: Vec<ClaimEntry>,
+    /// The corrected forms of `corrections.yaml` (their LaTeX is read when they are substituted,
+    /// [`Paper::with_latex`], so a paper whose symbols no longer fit them still loads).
+    pub corrections: Vec<Correction>,
     /// A hash of the three files' bytes (FNV-1a, 64 bits, hex), to tell two papers apart.
     pub hash: String,
+    /// SHA-256 (hex) of the four files as read: equations.yaml, symbols.yaml, claims.yaml and
+    /// corrections.yaml, in that order; what a report or a check's JSON names the paper by.
+    pub sha256: String,
     /// The experimental fit of sec. 11, read from the claims.
     pub fit: Fit,
     /// symbols.yaml resolved, for equations parsed later ([`Paper::with_latex`]).
@@ -256,15 +265,48 @@ pub struct Paper {
 const EQUATIONS: &str = include_str!("../../paper/equations.yaml");
 const SYMBOLS: &str = include_str!("../../paper/symbols.yaml");
 const CLAIMS: &str = include_str!("../../paper/claims.yaml");
+const CORRECTIONS: &str = include_str!("../../paper/corrections.yaml");
+
+/// The four texts of a paper: `equations.yaml`, `symbols.yaml`, `claims.yaml` and
+/// `corrections.yaml`.
+#[derive(Debug, Clone, Copy)]
+pub struct Texts<'a> {
+    /// The 85 equations.
+    pub equations: &'a str,
+    /// The symbol table.
+    pub symbols: &'a str,
+    /// The prose claims.
+    pub claims: &'a str,
+    /// The corrected forms.
+    pub corrections: &'a str,
+}
+
+impl Texts<'static> {
+    /// The texts compiled into the binary.
+    pub const BUILT_IN: Texts<'static> = Texts {
+        equations: EQUATIONS,
+        symbols: SYMBOLS,
+        claims: CLAIMS,
+        corrections: CORRECTIONS,
+    };
+}
 
 impl Paper {
     /// The built-in paper.
     pub fn built_in() -> Result<Paper, PaperError> {
-        Self::from_texts(PaperSource::BuiltIn, EQUATIONS, SYMBOLS, CLAIMS)
+        Self::from_texts(PaperSource::BuiltIn, Texts::BUILT_IN)
+    }
+
+    /// The built-in paper, read once per process and shared: what a user's paper is compared
+    /// with where a check must know what the built-in claim gives (its `rule`, its number).
+    pub fn built_in_shared() -> &'static Paper {
+        static PAPER: std::sync::OnceLock<Paper> = std::sync::OnceLock::new();
+        PAPER.get_or_init(|| Paper::built_in().expect("the built-in paper is read by the tests"))
     }
 
     /// The paper of a directory holding equations.yaml, symbols.yaml (optional: the built-in
-    /// table otherwise) and claims.yaml (optional: the built-in claims otherwise).
+    /// table otherwise), claims.yaml (optional: the built-in claims otherwise) and
+    /// corrections.yaml (optional: the built-in corrections otherwise).
     pub fn from_dir(dir: &Path) -> Result<Paper, PaperError> {
         let read = |name: &str, fallback: Option<&str>| -> Result<String, PaperError> {
             let path = dir.join(name);
@@ -280,16 +322,24 @@ impl Paper {
         let eqs = read("equations.yaml", None)?;
         let syms = read("symbols.yaml", Some(SYMBOLS))?;
         let claims = read("claims.yaml", Some(CLAIMS))?;
-        Self::from_texts(PaperSource::Dir(dir.to_path_buf()), &eqs, &syms, &claims)
+        let corrections = read("corrections.yaml", Some(CORRECTIONS))?;
+        let texts = Texts {
+            equations: &eqs,
+            symbols: &syms,
+            claims: &claims,
+            corrections: &corrections,
+        };
+        Self::from_texts(PaperSource::Dir(dir.to_path_buf()), texts)
     }
 
-    /// Parses the three texts.
-    pub fn from_texts(
-        source: PaperSource,
-        equations: &str,
-        symbols: &str,
-        claims: &str,
-    ) -> Result<Paper, PaperError> {
+    /// Parses the four texts.
+    pub fn from_texts(source: PaperSource, texts: Texts<'_>) -> Result<Paper, PaperError> {
+        let Texts {
+            equations,
+            symbols,
+            claims,
+            corrections,
+        } = texts;
         let file = |name: &str| match &source {
             PaperSource::BuiltIn => format!("paper/{name} (built in)"),
             PaperSource::Dir(d) => d.join(name).display().to_string(),
@@ -315,11 +365,67 @@ impl Paper {
                 message: "the entries must be the paper's 85 numbered equations, numbers 1 to 85 in order".into(),
             });
         }
+        if let Some(e) = entries.iter().find(|e| {
+            e.estimate
+                .as_ref()
+                .is_some_and(|r| !(r.factor.is_finite() && r.factor > 1.0))
+        }) {
+            return Err(PaperError::Structure {
+                file: file("equations.yaml"),
+                message: format!(
+                    "eq {}, key `estimate`: `factor` must be a finite number above 1 (for \
+                     example `estimate: {{ words: quoted, factor: 3 }}`)",
+                    e.number
+                ),
+            });
+        }
+        let mut ids = std::collections::BTreeSet::new();
         for c in &claim_entries {
+            if !ids.insert(c.id.as_str()) {
+                return Err(PaperError::Structure {
+                    file: file("claims.yaml"),
+                    message: format!(
+                        "claim `{}` is given twice: keep one (a fact stated in several places \
+                         lists the others under `also_at`)",
+                        c.id
+                    ),
+                });
+            }
             if let Some(problem) = c.rule.as_ref().and_then(|r| r.problem()) {
                 return Err(PaperError::Structure {
                     file: file("claims.yaml"),
                     message: format!("claim `{}`, key `rule`: {problem}", c.id),
+                });
+            }
+        }
+        for c in &claim_entries {
+            if let Some(bad) = c
+                .rests_on
+                .iter()
+                .find(|p| !premise_exists(p, &claim_entries))
+            {
+                return Err(PaperError::Structure {
+                    file: file("claims.yaml"),
+                    message: format!(
+                        "claim `{}`, key `rests_on`: `{bad}` is neither a claim id of this file \
+                         nor `eq N` with N from 1 to 85",
+                        c.id
+                    ),
+                });
+            }
+        }
+        for e in &entries {
+            if let Some(bad) = e
+                .rests_on
+                .iter()
+                .find(|p| !premise_exists(p, &claim_entries))
+            {
+                return Err(PaperError::Structure {
+                    file: file("equations.yaml"),
+                    message: format!(
+                        "eq {}, key `rests_on`: `{bad}` is not a claim id of claims.yaml",
+                        e.number
+                    ),
                 });
             }
         }
@@ -330,11 +436,17 @@ impl Paper {
             .into_iter()
             .map(|entry| parse_entry(entry, &global, &eqfile))
             .collect::<Result<Vec<_>, _>>()?;
+        let corrections = correction::parse(corrections).map_err(|message| PaperError::Yaml {
+            path: file("corrections.yaml"),
+            message,
+        })?;
         Ok(Paper {
             hash: fnv(&[equations, symbols, claims]),
+            sha256: sha256(&[equations, symbols, claims, texts.corrections]),
             source,
             equations: parsed,
             claims: claim_entries,
+            corrections,
             fit,
             global,
         })
@@ -435,6 +547,24 @@ fn resolve_table(
     Ok(out)
 }
 
+/// True when `premise` names a claim of `claims` or is `eq N` with N from 1 to 85.
+fn premise_exists(premise: &str, claims: &[ClaimEntry]) -> bool {
+    match premise.strip_prefix("eq ") {
+        Some(n) => n.parse::<u32>().is_ok_and(|n| (1..=85).contains(&n)),
+        None => claims.iter().any(|c| c.id == premise),
+    }
+}
+
+/// SHA-256 over the texts, one after another, as lowercase hex.
+fn sha256(texts: &[&str]) -> String {
+    use sha2::{Digest, Sha256};
+    let mut h = Sha256::new();
+    for t in texts {
+        h.update(t.as_bytes());
+    }
+    h.finalize().iter().map(|b| format!("{b:02x}")).collect()
+}
+
 /// FNV-1a over the texts, each followed by a zero byte.
 fn fnv(texts: &[&str]) -> String {
     let mut h: u64 = 0xcbf2_9ce4_8422_2325;
@@ -469,7 +599,14 @@ mod tests {
             r"'\mathbf{a} = q \hat{\mathbf{3}}'",
             1,
         );
-        let err = Paper::from_texts(PaperSource::BuiltIn, &eqs, SYMBOLS, CLAIMS).unwrap_err();
+        let err = Paper::from_texts(
+            PaperSource::BuiltIn,
+            Texts {
+                equations: &eqs,
+                ..Texts::BUILT_IN
+            },
+        )
+        .unwrap_err();
         let msg = err.to_string();
         assert!(
             msg.contains("eq 1: column 14") && msg.contains("symbol q"),
@@ -484,7 +621,14 @@ mod tests {
             r"'\mathbf{a} = \frac{a}{'",
             1,
         );
-        let err = Paper::from_texts(PaperSource::BuiltIn, &eqs, SYMBOLS, CLAIMS).unwrap_err();
+        let err = Paper::from_texts(
+            PaperSource::BuiltIn,
+            Texts {
+                equations: &eqs,
+                ..Texts::BUILT_IN
+            },
+        )
+        .unwrap_err();
         let msg = err.to_string();
         assert!(msg.contains("eq 1: column"), "{msg}");
     }

@@ -7,8 +7,8 @@
 //! Nothing here writes a paper formula: every number comes from the parsed LaTeX or the YAML, so
 //! a `--paper DIR` with an edited eq 54 redraws the map from the edit.
 
+use super::ClaimEntry;
 use super::{Bindings, EvalError, Paper, PaperError, Relation};
-use crate::catalogue::ClaimEntry;
 use crate::numerics::oscillation::try_bisect;
 
 /// The experimental fit of sec. 11 as the paper prints it (claims `beta-two-fits-data` and
@@ -256,12 +256,14 @@ mod tests {
 
     #[test]
     fn a_claims_file_without_the_fit_is_refused_naming_the_entry() {
-        let claims = include_str!("../../paper/claims.yaml").replace("id: fit-c-quarter", "id: x");
+        let built_in = super::super::Texts::BUILT_IN;
+        let claims = built_in.claims.replace("id: fit-c-quarter", "id: x");
         let e = Paper::from_texts(
             super::super::PaperSource::BuiltIn,
-            include_str!("../../paper/equations.yaml"),
-            include_str!("../../paper/symbols.yaml"),
-            &claims,
+            super::super::Texts {
+                claims: &claims,
+                ..built_in
+            },
         )
         .unwrap_err()
         .to_string();

@@ -10,7 +10,6 @@ use super::{
     fmt_num, ClaimView, EquationView, FailureView, FigureView, FindingView, PrecisionRow, Report,
     RootCauseView, RunSettings, SceneView, SectionView, Summary,
 };
-use crate::catalogue;
 use crate::check::{Checked, Subject, Tally};
 use crate::equations::{Bench, UNCHECKABLE_CLAIMS, UNCHECKABLE_EQUATIONS};
 use crate::experiment;
@@ -71,6 +70,8 @@ fn view(f: &Finding) -> FindingView {
         Verdict::Holds => "holds",
         Verdict::HoldsApproximately { .. } => "approx",
         Verdict::Definition => "definition",
+        Verdict::Estimate { .. } => "estimate",
+        Verdict::PremiseFails => "premise",
         Verdict::Fails => "fails",
     };
     FindingView {
@@ -203,6 +204,8 @@ fn premises_figure(bench: &Bench, checked: &[Checked]) -> Figure {
             Verdict::Holds => Status::Holds,
             Verdict::HoldsApproximately { .. } => Status::Approx,
             Verdict::Definition => Status::Definition,
+            Verdict::Estimate { .. } => Status::Estimate,
+            Verdict::PremiseFails => Status::PremiseFails,
             Verdict::Fails => Status::Fails,
         },
         _ => Status::Unchecked,
@@ -276,7 +279,8 @@ pub fn from_results(
         .as_deref()
         .ok_or_else(|| missing(Study::Checks))?;
 
-    let cat = catalogue::equations();
+    let cat: Vec<&crate::paper::EquationEntry> =
+        bench.paper.equations.iter().map(|e| &e.entry).collect();
     let mut sections: Vec<SectionView> = SECTIONS
         .iter()
         .map(|(n, t)| SectionView {
@@ -454,7 +458,7 @@ pub fn from_results(
             name: env!("CARGO_PKG_NAME").into(),
             version: env!("CARGO_PKG_VERSION").into(),
         },
-        paper: json::PaperSource::built_in(paper),
+        paper: json::PaperSource::of(paper, bench.paper),
         settings: json::Settings {
             method: settings.method.clone(),
             rtol: settings.rtol,
@@ -556,10 +560,9 @@ pub fn from_results(
             experiment::numbers::numbers(f.beta, f.c_inv_root, crate::Disk::uniform(1.0).k)
                 .to_string()
         },
-        friction: results
-            .friction
-            .as_ref()
-            .map_or_else(String::new, |f| super::friction::text(&f.studies)),
+        friction: results.friction.as_ref().map_or_else(String::new, |f| {
+            super::friction::text(&f.studies, bench.paper)
+        }),
         scenes,
         document,
     };

@@ -24,8 +24,8 @@ fn heading(o: &mut String, text: &str) {
     o.push('\n');
 }
 
-/// The section's text.
-pub fn text(s: &Studies) -> String {
+/// The section's text; the fall study is read against `paper`'s claim.
+pub fn text(s: &Studies, paper: &crate::paper::Paper) -> String {
     let mut o = String::new();
     let deg = |x: f64| x.to_degrees();
     // Writing to a String cannot fail.
@@ -172,7 +172,7 @@ pub fn text(s: &Studies) -> String {
             c.mu, t, a, w, c.min_normal_rolling
         );
     }
-    fall(&mut o, &s.fall);
+    fall(&mut o, &s.fall, paper);
     mechanisms(&mut o, &s.mechanisms);
     o
 }
@@ -180,21 +180,19 @@ pub fn text(s: &Studies) -> String {
 /// The claim the fall study answers (paper/claims.yaml).
 const FALL_CLAIM: &str = "positive-b-unstable-large-tilt";
 
-/// The fall claim's printed tilt (deg) and its reading `within` (a relative distance), from the
-/// built-in claims; `None` if the claim or that reading is missing.
-fn fall_claim() -> Option<(f64, f64)> {
-    let c = crate::catalogue::claims()
-        .into_iter()
-        .find(|c| c.id == FALL_CLAIM)?;
-    Some((c.claimed_value?, c.rule?.within?))
+/// The fall claim's printed tilt (deg) and its reading `within` (a relative distance), from
+/// `paper`'s claims; `None` if the claim or that reading is missing.
+fn fall_claim(paper: &crate::paper::Paper) -> Option<(f64, f64)> {
+    let c = paper.claims.iter().find(|c| c.id == FALL_CLAIM)?;
+    Some((c.claimed_value?, c.rule.as_ref()?.within?))
 }
 
 /// Sec. 7 and the summary: the fall from unstable steady motion at large tilt, the tilt it
 /// falls to against the claim's "about 60 degrees", rolling and on Coulomb tables.
-fn fall(o: &mut String, f: &crate::friction::fall::Fall) {
+fn fall(o: &mut String, f: &crate::friction::fall::Fall, paper: &crate::paper::Paper) {
     use crate::friction::fall::{DURATION, LEFT, NUDGE};
     o.push('\n');
-    let Some((claimed, within)) = fall_claim() else {
+    let Some((claimed, within)) = fall_claim(paper) else {
         heading(
             o,
             &format!("The fall study: claim `{FALL_CLAIM}` has no `within` reading in claims.yaml"),
@@ -455,6 +453,7 @@ fn mechanisms(o: &mut String, m: &crate::friction::mechanisms::Mechanisms) {
 mod tests {
     #[test]
     fn the_fall_claim_and_its_reading_are_found() {
-        assert_eq!(super::fall_claim(), Some((60.0, 0.05)));
+        let paper = crate::paper::Paper::built_in_shared();
+        assert_eq!(super::fall_claim(paper), Some((60.0, 0.05)));
     }
 }

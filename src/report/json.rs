@@ -13,7 +13,6 @@ use crate::finding::{Finding, Verdict};
 use crate::report::error::ReportError;
 use schemars::JsonSchema;
 use serde::Serialize;
-use sha2::{Digest, Sha256};
 
 /// The version of the document's schema.
 pub const SCHEMA_VERSION: u32 = 1;
@@ -87,41 +86,22 @@ pub struct PaperSource {
     pub title: String,
     /// `built-in` (compiled into the binary) or the directory it was read from.
     pub source: String,
-    /// SHA-256 (hex) of the transcription: equations.yaml followed by claims.yaml.
+    /// SHA-256 (hex) of the paper's files as read: equations.yaml, symbols.yaml, claims.yaml
+    /// and corrections.yaml, one after another.
     pub sha256: String,
 }
 
 impl PaperSource {
-    /// The transcription `paper` came from: the built-in one, or the directory it was read from
-    /// (hashed as read now; the checks read the same files moments before).
+    /// The paper the checks read, named by where it came from and the hash of its files as
+    /// they were read ([`crate::paper::Paper::sha256`]).
     pub fn of(title: &str, paper: &crate::paper::Paper) -> Self {
-        match &paper.source {
-            crate::paper::PaperSource::BuiltIn => Self::built_in(title),
-            crate::paper::PaperSource::Dir(dir) => {
-                let mut h = Sha256::new();
-                for file in ["equations.yaml", "claims.yaml"] {
-                    h.update(std::fs::read(dir.join(file)).unwrap_or_default());
-                }
-                let digest = h.finalize();
-                Self {
-                    title: title.into(),
-                    source: dir.display().to_string(),
-                    sha256: digest.iter().map(|b| format!("{b:02x}")).collect(),
-                }
-            }
-        }
-    }
-
-    /// The transcription compiled into the binary.
-    pub fn built_in(title: &str) -> Self {
-        let mut h = Sha256::new();
-        h.update(include_str!("../../paper/equations.yaml"));
-        h.update(include_str!("../../paper/claims.yaml"));
-        let digest = h.finalize();
         Self {
             title: title.into(),
-            source: "built-in".into(),
-            sha256: digest.iter().map(|b| format!("{b:02x}")).collect(),
+            source: match &paper.source {
+                crate::paper::PaperSource::BuiltIn => "built-in".into(),
+                crate::paper::PaperSource::Dir(dir) => dir.display().to_string(),
+            },
+            sha256: paper.sha256.clone(),
         }
     }
 }
@@ -146,6 +126,11 @@ pub struct Counts {
     pub holds_approximately: usize,
     /// Definitions consistent with the rest.
     pub definitions: usize,
+    /// Order-of-magnitude estimates whose scaling holds and whose constant is within the
+    /// estimate's reading.
+    pub estimates: usize,
+    /// Would hold, but only under a premise that fails.
+    pub premise_fails: usize,
     /// Fail.
     pub fails: usize,
     /// Could not run.
@@ -158,6 +143,8 @@ impl From<Tally> for Counts {
             holds: t.holds,
             holds_approximately: t.approximately,
             definitions: t.definitions,
+            estimates: t.estimates,
+            premise_fails: t.premise_fails,
             fails: t.fails,
             not_run: t.not_run,
         }
@@ -308,13 +295,28 @@ pub enum VerdictKind {
     HoldsApproximately,
     /// A consistent convention.
     Definition,
+    /// An order-of-magnitude estimate: scaling confirmed, constant within its reading.
+    Estimate,
+    /// Would hold, but only under a premise that fails (`premises_failing` names them).
+    PremiseFails,
     /// Outside tolerance.
     Fails,
+}
+
+/// An order-of-magnitude estimate's constant, against the reference's.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, JsonSchema)]
+pub struct EstimateOutcome {
+    /// The printed constant over the reference's.
+    pub constant_ratio: f64,
+    /// The factor the estimate's reading allows, either way.
+    pub factor: f64,
 }
 
 /// The outcome of one check.
 #[derive(Debug, Clone, PartialEq, Serialize, JsonSchema)]
 #[serde(tag = "status", rename_all = "snake_case")]
+// Built once per check and serialized at once: the size of the checked variant costs nothing.
+#[allow(clippy::large_enum_variant)]
 pub enum Outcome {
     /// The check ran.
     Checked {
@@ -349,6 +351,12 @@ pub enum Outcome {
         shown_by: Option<String>,
         /// The one comparison a reader needs, in the paper's terms, when the check gives one.
         headline: Option<Box<crate::finding::Headline>>,
+        /// The claims or equations (`eq N`) it rests on that fail.
+        #[serde(default, skip_serializing_if = "Vec::is_empty")]
+        premises_failing: Vec<String>,
+        /// For an order-of-magnitude estimate: its constant against the reference's.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        estimate: Option<EstimateOutcome>,
     },
     /// The check could not run.
     Error {
@@ -376,6 +384,8 @@ impl Outcome {
                 Some(claimed_order),
             ),
             Verdict::Definition => (VerdictKind::Definition, None, None),
+            Verdict::Estimate { .. } => (VerdictKind::Estimate, None, None),
+            Verdict::PremiseFails => (VerdictKind::PremiseFails, None, None),
             Verdict::Fails => (VerdictKind::Fails, None, None),
         };
         Outcome::Checked {
@@ -393,6 +403,17 @@ impl Outcome {
             at: f.at.clone(),
             shown_by: f.shown_by.clone(),
             headline: f.headline.clone().map(Box::new),
+            premises_failing: f.premises_failing.clone(),
+            estimate: match f.verdict {
+                Verdict::Estimate {
+                    constant_ratio,
+                    factor,
+                } => Some(EstimateOutcome {
+                    constant_ratio,
+                    factor,
+                }),
+                _ => None,
+            },
         }
     }
 

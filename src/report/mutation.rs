@@ -9,7 +9,7 @@ use crate::paper::{Paper, PaperSource};
 pub fn scores_for(paper: &Paper) -> (Option<StoredScores>, String) {
     match (&paper.source, StoredScores::built_in()) {
         (PaperSource::BuiltIn, Ok(stored)) => {
-            let (made, killed) = stored.totals();
+            let (made, killed, within) = stored.totals();
             let unscored: Vec<String> = stored
                 .scores
                 .iter()
@@ -20,9 +20,18 @@ pub fn scores_for(paper: &Paper) -> (Option<StoredScores>, String) {
                 "Mutation score: {killed} of {made} mutants of the printed equations killed, each \
                  by its own equation's check (a constant scaled by 1.001 or raised by 1, a sign \
                  flipped, sin for cos, a term or factor dropped, a cross product's factors swapped, a power raised, an inequality \
-                 reversed); no score for eqs {}, whose printed forms already fail. Stored from \
+                 reversed){}; no score for eqs {}, whose printed forms already fail. Stored from \
                  rolling-disk mutants --json and recomputed by the test suite; each equation \
                  below gives its own.",
+                if within > 0 {
+                    format!(
+                        "; {within} more, of equations read as order-of-magnitude estimates, \
+                         move a constant within the estimate's factor and are accepted by its \
+                         reading"
+                    )
+                } else {
+                    String::new()
+                },
                 unscored.join(", ")
             );
             (Some(stored), sentence)

@@ -9,7 +9,7 @@
 
 use super::studies;
 use crate::check::{run_checks, Checked, Selection};
-use crate::corrections::{self, Correction, Downstream};
+use crate::corrections::{self, Downstream};
 use crate::equations::Bench;
 use crate::experiment::{self, AnalysisSettings, LightModel};
 use crate::figures::energy::EnergyDrift;
@@ -18,6 +18,7 @@ use crate::figures::frequency::Measured;
 use crate::figures::lab_frame::Compared;
 use crate::figures::path::PathRun;
 use crate::figures::spin_down::SpinDown;
+use crate::paper::Correction;
 use crate::precision;
 use crate::report::error::ReportError;
 use crate::scene::Scene;
@@ -178,7 +179,7 @@ pub struct CorrectionsStudy {
 }
 
 fn corrections_study(bench: &Bench) -> Result<CorrectionsStudy, ReportError> {
-    let corrections = corrections::built_in().map_err(|e| ReportError::Input(e.to_string()))?;
+    let corrections = bench.paper.corrections.clone();
     let threads = rayon::current_num_threads().max(1);
     let corrected = corrections::check_corrected(bench, &corrections, threads)
         .map_err(|e| ReportError::Input(e.to_string()))?;

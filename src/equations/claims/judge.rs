@@ -45,7 +45,7 @@ pub fn with_printed_headline(b: &Bench, id: &str, f: Finding) -> Finding {
 /// How the paper gives a claim's number, for its headline: "printed", "implied" (by its words,
 /// claims.yaml's `implied`), or, for a range read from vague words, the reading itself (the
 /// headline's value is then the range's lower end).
-fn paper_is(c: &crate::catalogue::ClaimEntry) -> String {
+fn paper_is(c: &crate::paper::ClaimEntry) -> String {
     match c
         .rule
         .as_ref()

@@ -63,16 +63,12 @@ use oscillation::*;
 use rising::*;
 use spin_down::*;
 
-/// How far the mutation test moves the printed number of the built-in claim `id` (relative, two
+/// How far the mutation test moves the printed number of a claim read by `rule` (relative, two
 /// moves) to see its check fail: 1e-3 either way; but a loose reading that `holds` is moved
 /// beyond itself (twice its distance, its factor squared, a bound ten times tighter), since a
 /// 1e-3 move inside "within 5 %" rightly changes nothing. A failing claim is moved by 1e-3 only:
 /// a large move could carry a wrong number into the reading by chance.
-pub fn mutation_moves(id: &str, holds: bool) -> [f64; 2] {
-    let rule = crate::catalogue::claims()
-        .into_iter()
-        .find(|c| c.id == id)
-        .and_then(|c| c.rule);
+pub fn mutation_moves(rule: Option<&crate::paper::Rule>, holds: bool) -> [f64; 2] {
     match rule.filter(|_| holds) {
         Some(r) if r.within.is_some() => {
             let w = r.within.unwrap_or_default();
@@ -204,6 +200,10 @@ pub const CLAIMS: &[Claim] = &[
     Claim {
         id: "t0-after-last-peak",
         check: t0_after_last_peak,
+    },
+    Claim {
+        id: "disk-leaves-table",
+        check: disk_leaves_table,
     },
     Claim {
         id: "contact-loss-time",
