@@ -143,7 +143,15 @@ impl Parser {
         })
     }
 
+    /// The symbol itself: its accent, boldness and base (accents nest, counted as groups).
     pub(super) fn symbol_base(&mut self) -> R<Symbol> {
+        self.enter()?;
+        let s = self.symbol_core();
+        self.depth -= 1;
+        s
+    }
+
+    fn symbol_core(&mut self) -> R<Symbol> {
         let plain = |base: String| Symbol {
             derivative: 0,
             accent: Accent::None,
