@@ -295,8 +295,8 @@ fn run_jobs(
                 let checked = Checked {
                     subject,
                     section,
-                    finding: finding.and_then(evaluated),
-                    derivation: derivation.map(|d| evaluated(d(bench))),
+                    finding: finding.and_then(|f| evaluated(f, bench)),
+                    derivation: derivation.map(|d| evaluated(d(bench), bench)),
                     cause: None,
                 };
                 progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
@@ -311,11 +311,15 @@ fn run_jobs(
 /// could not be evaluated (a symbol without a value, an operation on values of the wrong kinds,
 /// a square root of a negative number), so the check reports that instead of failing the paper,
 /// and the finding can be neither a failure nor a root cause.
-pub fn evaluated(f: Finding) -> Result<Finding, String> {
+pub fn evaluated(f: Finding, bench: &Bench) -> Result<Finding, String> {
     if f.claimed.is_finite() {
         Ok(f)
     } else {
-        Err(format!("could not evaluate the claim: {}", f.at))
+        Err(format!(
+            "could not evaluate the claim ({}): {}",
+            bench.paper.origin(),
+            f.at
+        ))
     }
 }
 

@@ -186,6 +186,20 @@ impl Expr {
         }
     }
 
+    /// True when the expression is a vector (or tensor) by its notation: a vector symbol, or a
+    /// sum, product, quotient or vector product with one. A scalar product, which may be
+    /// either, is not counted.
+    pub fn is_vector(&self) -> bool {
+        match self {
+            Expr::Num(_) | Expr::Pi | Expr::Call(..) => false,
+            Expr::Bin(Op::Pow | Op::Dot, ..) => false,
+            Expr::Bin(Op::Cross, ..) => true,
+            Expr::Sym(s) => s.is_vector(),
+            Expr::Neg(a) | Expr::Bin(Op::Div, a, _) => a.is_vector(),
+            Expr::Bin(Op::Add | Op::Sub | Op::Mul, a, b) => a.is_vector() || b.is_vector(),
+        }
+    }
+
     /// Every symbol of the expression, in order of first appearance.
     pub fn symbols(&self, out: &mut Vec<Symbol>) {
         match self {

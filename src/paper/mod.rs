@@ -100,6 +100,8 @@ pub struct Equation {
     /// evaluation looks a symbol up at every node, and an ordered map's string comparisons
     /// were half the time of the sec. 11 checks (perf, 2026-11-24).
     pub symbols: rustc_hash::FxHashMap<Symbol, SymbolInfo>,
+    /// The column of each symbol's first occurrence in the LaTeX, for messages.
+    pub columns: rustc_hash::FxHashMap<Symbol, usize>,
 }
 
 /// One printed relation: `lhs rel rhs`, adjacent sides of a chain.
@@ -225,7 +227,13 @@ impl Equation {
                 .get(s)
                 .ok_or_else(|| EvalError::Unbound(format!("{s} (not in any symbol table)")))?;
             b.get(&info.quantity).ok_or_else(|| {
-                EvalError::Unbound(format!("{s} (quantity {}, {})", info.quantity, info.means))
+                EvalError::Unbound(format!(
+                    "{s} at column {} of eq {}'s latex (quantity {}, {})",
+                    self.columns.get(s).copied().unwrap_or(0),
+                    self.entry.number,
+                    info.quantity,
+                    info.means
+                ))
             })
         };
         eval::eval(e, &lookup)
@@ -369,6 +377,14 @@ impl Paper {
         Ok(p)
     }
 
+    /// Where the paper was read from, in words: "the built-in paper" or "--paper DIR".
+    pub fn origin(&self) -> String {
+        match &self.source {
+            PaperSource::BuiltIn => "the built-in paper".into(),
+            PaperSource::Dir(d) => format!("--paper {}", d.display()),
+        }
+    }
+
     /// Equation `n` (1-85).
     pub fn equation(&self, n: u32) -> &Equation {
         &self.equations[(n.clamp(1, 85) - 1) as usize]
@@ -464,7 +480,9 @@ fn parse_entry(
         parse::parse(&entry.latex).map_err(|e| latex_error(e.column, e.message))?;
     let local = resolve_table(&entry.symbols, eqfile, entry.number)?;
     let mut symbols = rustc_hash::FxHashMap::default();
+    let mut columns = rustc_hash::FxHashMap::default();
     for (s, col) in seen {
+        columns.entry(s.clone()).or_insert(col);
         let info =
             local
                 .get(&s)
@@ -481,6 +499,7 @@ fn parse_entry(
         entry,
         chains,
         symbols,
+        columns,
     })
 }
 

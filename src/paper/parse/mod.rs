@@ -111,6 +111,21 @@ struct Parser {
     depth: usize,
 }
 
+/// An error at `column` when `e` raises a vector to a power.
+fn powers_of_scalars(e: &Expr, column: usize) -> R<()> {
+    if let Expr::Bin(Op::Pow, base, _) = e {
+        if base.is_vector() {
+            return Err(ParseError {
+                column,
+                message: "a vector to a power: write a square as \\mathbf{v} \\cdot \\mathbf{v}, \
+                          or the length's as \\left| \\mathbf{v} \\right|^2"
+                    .into(),
+            });
+        }
+    }
+    Ok(())
+}
+
 /// The depth of the deepest node of `e`, measured without recursion (up to `limit + 1`).
 fn tree_depth(e: &Expr, limit: usize) -> usize {
     let mut deepest = 0;
@@ -264,13 +279,23 @@ impl Parser {
             self.term()?
         };
         loop {
-            if self.eat(&Tok::Plus) {
-                e = Expr::bin(Op::Add, e, self.term()?);
-            } else if self.eat(&Tok::Minus) {
-                e = Expr::bin(Op::Sub, e, self.term()?);
-            } else {
-                return Ok(e);
+            let (column, op) = (self.column(), self.peek().cloned());
+            let op = match op {
+                Some(Tok::Plus) => Op::Add,
+                Some(Tok::Minus) => Op::Sub,
+                _ => return Ok(e),
+            };
+            self.pos += 1;
+            let t = self.term()?;
+            if (e.is_scalar() && t.is_vector()) || (e.is_vector() && t.is_scalar()) {
+                return Err(ParseError {
+                    column,
+                    message: "a sum of a scalar and a vector: both terms must be scalars or \
+                              both vectors (a vector is written bold, with a hat or an arrow)"
+                        .into(),
+                });
             }
+            e = Expr::bin(op, e, t);
         }
     }
 
@@ -335,11 +360,13 @@ impl Parser {
 
     /// An atom and the powers written after it.
     fn factor(&mut self) -> R<Expr> {
+        let column = self.column();
         let mut e = self.atom()?;
         while self.eat(&Tok::Caret) {
             let p = self.script()?;
             e = Expr::bin(Op::Pow, e, p);
         }
+        powers_of_scalars(&e, column)?;
         Ok(e)
     }
 
@@ -451,6 +478,7 @@ impl Parser {
     /// `\sin`, `\cos`, `\tan`, `\cot`, with an optional power and the argument rule of the
     /// module's documentation.
     fn function(&mut self, name: &str) -> R<Expr> {
+        let column = self.column();
         let f = match name {
             "sin" => Func::Sin,
             "cos" => Func::Cos,
@@ -473,6 +501,15 @@ impl Parser {
                 arg
             }
         };
+        if arg.is_vector() {
+            return Err(ParseError {
+                column,
+                message: format!(
+                    "\\{name} of a vector: its argument must be a scalar (an angle, or \
+                     \\left| \\mathbf{{v}} \\right| for a vector's length)"
+                ),
+            });
+        }
         let call = Expr::Call(f, Box::new(arg));
         Ok(match power {
             Some(p) => Expr::bin(Op::Pow, call, p),

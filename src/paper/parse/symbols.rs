@@ -137,10 +137,12 @@ impl Parser {
         }
         self.seen.push((sym.clone(), col));
         let e = Expr::Sym(sym);
-        Ok(match power {
+        let e = match power {
             Some(p) => Expr::bin(Op::Pow, e, p),
             None => e,
-        })
+        };
+        super::powers_of_scalars(&e, col)?;
+        Ok(e)
     }
 
     /// The symbol itself: its accent, boldness and base (accents nest, counted as groups).
