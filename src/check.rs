@@ -300,8 +300,8 @@ fn run_jobs(
                 let checked = Checked {
                     subject,
                     section,
-                    finding,
-                    derivation: derivation.map(|d| Ok(d(bench))),
+                    finding: finding.and_then(|f| evaluated(f, bench)),
+                    derivation: derivation.map(|d| evaluated(d(bench), bench)),
                     cause: None,
                 };
                 progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
@@ -310,6 +310,22 @@ fn run_jobs(
             .collect()
     });
     Ok(all)
+}
+
+/// A finding whose claimed value is not a number (NaN or infinite) gives no verdict: the claim
+/// could not be evaluated (a symbol without a value, an operation on values of the wrong kinds,
+/// a square root of a negative number), so the check reports that instead of failing the paper,
+/// and the finding can be neither a failure nor a root cause.
+pub fn evaluated(f: Finding, bench: &Bench) -> Result<Finding, String> {
+    if f.claimed.is_finite() {
+        Ok(f)
+    } else {
+        Err(format!(
+            "could not evaluate the claim ({}): {}",
+            bench.paper.origin(),
+            f.at
+        ))
+    }
 }
 
 /// Why the check of `subject` cannot run on `bench`'s paper, if it cannot: its claim is missing

@@ -134,10 +134,14 @@ pub fn premises_first(premises: &dyn Fn(u32) -> Vec<u32>, numbers: &[u32]) -> Ve
 /// premise that is not in `nodes` (unchecked, like eq 82) is not counted as failing.
 pub fn classify(nodes: &BTreeMap<u32, Node<'_>>) -> BTreeMap<u32, Cause> {
     let mut out: BTreeMap<u32, Cause> = BTreeMap::new();
+    // A finding whose claimed value is not a number is no verdict (the claim could not be
+    // evaluated): it neither fails nor decides a derivation.
+    let evaluated = |f: &&Finding| f.claimed.is_finite();
     let fails = |n: u32| {
         nodes
             .get(&n)
             .and_then(|x| x.truth)
+            .filter(evaluated)
             .is_some_and(|f| !f.verdict.passes())
     };
     let numbers: Vec<u32> = nodes.keys().copied().collect();
@@ -146,6 +150,7 @@ pub fn classify(nodes: &BTreeMap<u32, Node<'_>>) -> BTreeMap<u32, Cause> {
         let Some(node) = nodes.get(&n) else {
             continue;
         };
+        let derivation = node.derivation.filter(evaluated);
         if !fails(n) {
             continue;
         }
@@ -158,10 +163,10 @@ pub fn classify(nodes: &BTreeMap<u32, Node<'_>>) -> BTreeMap<u32, Cause> {
         let cause = if failed.is_empty() {
             Cause::RootCause {
                 also_inherits_from: Vec::new(),
-                own_error: node.derivation.map(|d| d.error),
+                own_error: derivation.map(|d| d.error),
             }
         } else {
-            match node.derivation {
+            match derivation {
                 Some(d) if d.verdict.passes() => {
                     let mut roots = BTreeSet::new();
                     for p in &failed {

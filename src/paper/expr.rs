@@ -65,6 +65,14 @@ impl Symbol {
     }
 }
 
+impl Symbol {
+    /// A vector (or tensor) by its notation: bold, with a hat or with an arrow, as the paper
+    /// writes every vector and tensor it uses; otherwise a scalar.
+    pub fn is_vector(&self) -> bool {
+        self.bold || matches!(self.accent, Accent::Hat | Accent::Vec)
+    }
+}
+
 impl fmt::Display for Symbol {
     /// The canonical text of a symbol, as written in symbol tables: `alpha`, `dot:alpha`,
     /// `Omega_0`, `omega_10`, `bf:v_cm`, `hat:bf:1`, `vec:omega_123`, `d/dt:bf:r_cm`.
@@ -163,6 +171,33 @@ impl Expr {
     /// A binary node.
     pub fn bin(op: Op, a: Expr, b: Expr) -> Expr {
         Expr::Bin(op, Box::new(a), Box::new(b))
+    }
+
+    /// True when the expression is a scalar by its notation ([`Symbol::is_vector`]): numbers,
+    /// functions, powers, and sums, products and quotients of scalars. A scalar or vector
+    /// product of two vectors, which may be either, is not counted.
+    pub fn is_scalar(&self) -> bool {
+        match self {
+            Expr::Num(_) | Expr::Pi | Expr::Call(..) | Expr::Bin(Op::Pow, ..) => true,
+            Expr::Sym(s) => !s.is_vector(),
+            Expr::Neg(a) | Expr::Bin(Op::Div, a, _) => a.is_scalar(),
+            Expr::Bin(Op::Add | Op::Sub | Op::Mul, a, b) => a.is_scalar() && b.is_scalar(),
+            Expr::Bin(Op::Dot | Op::Cross, ..) => false,
+        }
+    }
+
+    /// True when the expression is a vector (or tensor) by its notation: a vector symbol, or a
+    /// sum, product, quotient or vector product with one. A scalar product, which may be
+    /// either, is not counted.
+    pub fn is_vector(&self) -> bool {
+        match self {
+            Expr::Num(_) | Expr::Pi | Expr::Call(..) => false,
+            Expr::Bin(Op::Pow | Op::Dot, ..) => false,
+            Expr::Bin(Op::Cross, ..) => true,
+            Expr::Sym(s) => s.is_vector(),
+            Expr::Neg(a) | Expr::Bin(Op::Div, a, _) => a.is_vector(),
+            Expr::Bin(Op::Add | Op::Sub | Op::Mul, a, b) => a.is_vector() || b.is_vector(),
+        }
     }
 
     /// Every symbol of the expression, in order of first appearance.

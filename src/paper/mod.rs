@@ -11,6 +11,7 @@ pub mod correction;
 pub mod eval;
 pub mod expr;
 pub mod mutate;
+pub mod notation;
 pub mod parse;
 pub mod printed;
 
@@ -64,7 +65,7 @@ pub enum PaperError {
         column: usize,
         /// What was expected.
         message: String,
-        /// The LaTeX.
+        /// The LaTeX around the column, on one line.
         latex: String,
         /// A caret under the column.
         caret: String,
@@ -102,6 +103,8 @@ pub struct Equation {
     /// evaluation looks a symbol up at every node, and an ordered map's string comparisons
     /// were half the time of the sec. 11 checks (perf, 2026-11-24).
     pub symbols: rustc_hash::FxHashMap<Symbol, SymbolInfo>,
+    /// The column of each symbol's first occurrence in the LaTeX, for messages.
+    pub columns: rustc_hash::FxHashMap<Symbol, usize>,
 }
 
 /// One printed relation: `lhs rel rhs`, adjacent sides of a chain.
@@ -227,7 +230,13 @@ impl Equation {
                 .get(s)
                 .ok_or_else(|| EvalError::Unbound(format!("{s} (not in any symbol table)")))?;
             b.get(&info.quantity).ok_or_else(|| {
-                EvalError::Unbound(format!("{s} (quantity {}, {})", info.quantity, info.means))
+                EvalError::Unbound(format!(
+                    "{s} at column {} of eq {}'s latex (quantity {}, {})",
+                    self.columns.get(s).copied().unwrap_or(0),
+                    self.entry.number,
+                    info.quantity,
+                    info.means
+                ))
             })
         };
         eval::eval(e, &lookup)
@@ -310,6 +319,12 @@ impl Paper {
     pub fn from_dir(dir: &Path) -> Result<Paper, PaperError> {
         let read = |name: &str, fallback: Option<&str>| -> Result<String, PaperError> {
             let path = dir.join(name);
+            // The size is checked before the file is read.
+            if let Ok(meta) = std::fs::metadata(&path) {
+                if meta.len() > MAX_FILE_BYTES as u64 {
+                    return Err(too_large(&path.display().to_string(), meta.len()));
+                }
+            }
             match (std::fs::read_to_string(&path), fallback) {
                 (Ok(s), _) => Ok(s),
                 (Err(e), Some(f)) if e.kind() == std::io::ErrorKind::NotFound => Ok(f.to_string()),
@@ -344,9 +359,18 @@ impl Paper {
             PaperSource::BuiltIn => format!("paper/{name} (built in)"),
             PaperSource::Dir(d) => d.join(name).display().to_string(),
         };
+        for (name, text) in [
+            ("equations.yaml", equations),
+            ("symbols.yaml", symbols),
+            ("claims.yaml", claims),
+        ] {
+            if text.len() > MAX_FILE_BYTES {
+                return Err(too_large(&file(name), text.len() as u64));
+            }
+        }
         let yaml = |name: &str, e: serde_yaml::Error| PaperError::Yaml {
             path: file(name),
-            message: e.to_string(),
+            message: yaml_message(&e),
         };
         let entries: Vec<EquationEntry> =
             serde_yaml::from_str(equations).map_err(|e| yaml("equations.yaml", e))?;
@@ -465,6 +489,14 @@ impl Paper {
         Ok(p)
     }
 
+    /// Where the paper was read from, in words: "the built-in paper" or "--paper DIR".
+    pub fn origin(&self) -> String {
+        match &self.source {
+            PaperSource::BuiltIn => "the built-in paper".into(),
+            PaperSource::Dir(d) => format!("--paper {}", d.display()),
+        }
+    }
+
     /// Equation `n` (1-85).
     pub fn equation(&self, n: u32) -> &Equation {
         &self.equations[(n.clamp(1, 85) - 1) as usize]
@@ -478,6 +510,66 @@ impl Paper {
     }
 }
 
+/// The largest file of the paper the reader takes (the built-in equations.yaml is about 40 KB).
+pub const MAX_FILE_BYTES: usize = 1 << 20;
+
+fn too_large(file: &str, bytes: u64) -> PaperError {
+    PaperError::Structure {
+        file: file.to_string(),
+        message: format!(
+            "{bytes} bytes, more than the {MAX_FILE_BYTES} the reader takes for one of the \
+             paper's files: is it the right file? (the built-in ones are under 40 KB)"
+        ),
+    }
+}
+
+/// At most `max` characters of `text`, on one line: what a message may quote of an input.
+fn quote(text: &str, max: usize) -> String {
+    let line = text.lines().next().unwrap_or("");
+    let mut out: String = line.chars().take(max).collect();
+    if out.len() < text.len() {
+        out.push_str(" ...");
+    }
+    out
+}
+
+/// serde's message about a YAML file on one line, a value it quotes shortened, with its line
+/// and column.
+fn yaml_message(e: &serde_yaml::Error) -> String {
+    let full = e.to_string();
+    let location = e
+        .location()
+        .map(|l| format!(" at line {} column {}", l.line(), l.column()));
+    let body = match &location {
+        Some(l) if full.ends_with(l.as_str()) => &full[..full.len() - l.len()],
+        _ => full.as_str(),
+    };
+    format!("{}{}", quote(body, 200), location.unwrap_or_default())
+}
+
+/// The LaTeX around `column` (1-based) and a caret under it, each on one line of at most about
+/// 120 characters: what an error quotes of an equation.
+fn latex_window(latex: &str, column: usize) -> (String, String) {
+    let chars: Vec<char> = latex
+        .chars()
+        .map(|c| if c == '\n' { ' ' } else { c })
+        .collect();
+    let at = column.saturating_sub(1).min(chars.len());
+    let start = at.saturating_sub(60);
+    let end = (at + 60).min(chars.len());
+    let mut shown: String = chars[start..end].iter().collect();
+    let mut caret = " ".repeat(at - start);
+    if start > 0 {
+        shown = format!("... {shown}");
+        caret = format!("    {caret}");
+    }
+    if end < chars.len() {
+        shown.push_str(" ...");
+    }
+    caret.push('^');
+    (shown, caret)
+}
+
 /// One entry of equations.yaml parsed, its symbols resolved against its own `symbols` map and
 /// then the paper's table `global`.
 fn parse_entry(
@@ -485,19 +577,24 @@ fn parse_entry(
     global: &BTreeMap<Symbol, SymbolInfo>,
     eqfile: &str,
 ) -> Result<Equation, PaperError> {
-    let latex_error = |column: usize, message: String| PaperError::Latex {
-        file: eqfile.to_string(),
-        number: entry.number,
-        column,
-        message,
-        latex: entry.latex.clone(),
-        caret: format!("{}^", " ".repeat(column.saturating_sub(1))),
+    let latex_error = |column: usize, message: String| {
+        let (latex, caret) = latex_window(&entry.latex, column);
+        PaperError::Latex {
+            file: eqfile.to_string(),
+            number: entry.number,
+            column,
+            message,
+            latex,
+            caret,
+        }
     };
     let (chains, seen) =
         parse::parse(&entry.latex).map_err(|e| latex_error(e.column, e.message))?;
     let local = resolve_table(&entry.symbols, eqfile, entry.number)?;
     let mut symbols = rustc_hash::FxHashMap::default();
+    let mut columns = rustc_hash::FxHashMap::default();
     for (s, col) in seen {
+        columns.entry(s.clone()).or_insert(col);
         let info =
             local
                 .get(&s)
@@ -506,7 +603,7 @@ fn parse_entry(
                     file: eqfile.to_string(),
                     number: entry.number,
                     column: col,
-                    symbol: s.to_string(),
+                    symbol: quote(&s.to_string(), 80),
                 })?;
         symbols.insert(s, info.clone());
     }
@@ -514,6 +611,7 @@ fn parse_entry(
         entry,
         chains,
         symbols,
+        columns,
     })
 }
 
@@ -528,9 +626,12 @@ fn resolve_table(
         let bad = |message: String| PaperError::Structure {
             file: file.to_string(),
             message: if number == 0 {
-                format!("the key '{key}' is not one symbol: {message}")
+                format!("the key '{}' is not one symbol: {message}", quote(key, 80))
             } else {
-                format!("eq {number}: the symbols key '{key}' is not one symbol: {message}")
+                format!(
+                    "eq {number}: the symbols key '{}' is not one symbol: {message}",
+                    quote(key, 80)
+                )
             },
         };
         let (chains, _) = parse::parse(key).map_err(|e| bad(e.message))?;

@@ -16,7 +16,20 @@
 //! - `\cos^2\alpha` is $(\cos\alpha)^2$; `\omega^2_{10}` is $(\omega_{10})^2$.
 //! - `\frac{d X}{dt}` and `\frac{d^2 X}{dt^2}` are the time derivatives of the symbol X, symbols in
 //!   their own right that a check binds to measured rates.
-//! - A printed equation may hold several relations separated by a comma (eq 18).
+//! - A printed equation may hold several relations separated by a comma or a semicolon (eq 18),
+//!   and may end with a comma, a full stop or a semicolon.
+//! - **`\cdot` and `\times` next to a scalar are products**: `k \cdot a`, `g \cdot 1` and
+//!   `2 \times k` are $ka$, $g$ and $2k$; between vectors they are the scalar and the vector
+//!   products. A symbol is a vector when the paper writes it as one, as every vector and tensor of
+//!   paper/symbols.yaml is: bold (`\mathbf{a}`), with a hat (`\hat{\mathbf{1}}`) or an arrow
+//!   (`\vec{\omega}`).
+//! - The same mathematics in an author's other notations reads the same: `\dfrac` and `\tfrac`
+//!   are `\frac`; `\left( \right)`, `\bigl( \bigr)`, `\Big(` and the like, `[ ]` and braces
+//!   group; `\,`, `\;`, `\!`, `\ `, `~`, `\quad` are spaces.
+//!
+//! Limits, checked before any recursion so that no input can exhaust the stack: at most
+//! [`MAX_CHARS`] characters per equation, and groups (parentheses, braces, fractions, powers)
+//! nested at most [`MAX_DEPTH`] deep, the parsed sides too.
 
 use super::expr::{Chain, Expr, Func, Op, Rel, Symbol};
 
@@ -29,6 +42,13 @@ pub struct ParseError {
     pub message: String,
 }
 
+/// The most characters one equation's LaTeX may have (the paper's longest has under 300).
+pub const MAX_CHARS: usize = 4096;
+
+/// The deepest nesting of groups the reader follows, and of operations in a parsed side (the
+/// paper's deepest side is nested about 20 deep).
+pub const MAX_DEPTH: usize = 256;
+
 /// One symbol occurrence: the symbol and its column, for messages about unknown symbols.
 pub type Occurrence = (Symbol, usize);
 
@@ -37,20 +57,44 @@ mod symbols;
 #[cfg(test)]
 mod tests;
 
+pub(crate) use lex::GREEK;
 use lex::{lex, Tok};
 
 /// Parses the LaTeX of one printed equation into its chains, and lists every symbol occurrence.
 pub fn parse(latex: &str) -> Result<(Vec<Chain>, Vec<Occurrence>), ParseError> {
+    let chars = latex.chars().count();
+    if chars > MAX_CHARS {
+        return Err(ParseError {
+            column: MAX_CHARS + 1,
+            message: format!(
+                "the equation has {chars} characters, more than the {MAX_CHARS} the reader takes \
+                 for one equation: split it into several relations or simplify it"
+            ),
+        });
+    }
     let toks = lex(latex)?;
     let mut p = Parser {
         toks,
         pos: 0,
-        end: latex.chars().count() + 1,
+        end: chars + 1,
         seen: Vec::new(),
+        depth: 0,
     };
     let mut chains = vec![p.chain()?];
-    while p.eat(&Tok::Comma) {
-        chains.push(p.chain()?);
+    loop {
+        if p.eat(&Tok::Comma) || p.eat(&Tok::Semicolon) {
+            if p.pos == p.toks.len() {
+                break;
+            }
+            chains.push(p.chain()?);
+        } else if p.eat(&Tok::Period) {
+            if p.pos < p.toks.len() {
+                return Err(p.error("the end after the full stop"));
+            }
+            break;
+        } else {
+            break;
+        }
     }
     if p.pos < p.toks.len() {
         return Err(p.error("an operator or a relation"));
@@ -63,6 +107,44 @@ struct Parser {
     pos: usize,
     end: usize,
     seen: Vec<Occurrence>,
+    /// How many groups deep the reader is (see [`MAX_DEPTH`]).
+    depth: usize,
+}
+
+/// An error at `column` when `e` raises a vector to a power.
+fn powers_of_scalars(e: &Expr, column: usize) -> R<()> {
+    if let Expr::Bin(Op::Pow, base, _) = e {
+        if base.is_vector() {
+            return Err(ParseError {
+                column,
+                message: "a vector to a power: write a square as \\mathbf{v} \\cdot \\mathbf{v}, \
+                          or the length's as \\left| \\mathbf{v} \\right|^2"
+                    .into(),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// The depth of the deepest node of `e`, measured without recursion (up to `limit + 1`).
+fn tree_depth(e: &Expr, limit: usize) -> usize {
+    let mut deepest = 0;
+    let mut stack = vec![(e, 1usize)];
+    while let Some((node, d)) = stack.pop() {
+        deepest = deepest.max(d);
+        if deepest > limit {
+            break;
+        }
+        match node {
+            Expr::Num(_) | Expr::Pi | Expr::Sym(_) => {}
+            Expr::Neg(a) | Expr::Call(_, a) => stack.push((a, d + 1)),
+            Expr::Bin(_, a, b) => {
+                stack.push((a, d + 1));
+                stack.push((b, d + 1));
+            }
+        }
+    }
+    deepest
 }
 
 type R<T> = Result<T, ParseError>;
@@ -79,7 +161,11 @@ impl Parser {
     fn error(&self, expected: &str) -> ParseError {
         let found = match self.peek() {
             None => "the end".to_string(),
-            Some(Tok::Cmd(c)) => format!("\\{c}"),
+            Some(Tok::Cmd(c)) => match lex::hint(c) {
+                Some(h) => format!("\\{c} ({h})"),
+                None => format!("\\{c}"),
+            },
+            Some(Tok::Num(_, t)) if t.len() > 40 => format!("{}...", &t[..40]),
             Some(Tok::Num(_, t)) => t.clone(),
             Some(Tok::Letter(l)) => l.to_string(),
             Some(t) => format!("{t:?}").to_lowercase(),
@@ -117,13 +203,45 @@ impl Parser {
     }
 
     fn chain(&mut self) -> R<Chain> {
-        let mut sides = vec![self.expr()?];
+        let mut sides = vec![self.side()?];
         let mut rels = Vec::new();
         while let Some(rel) = self.relation() {
             rels.push(rel);
-            sides.push(self.expr()?);
+            sides.push(self.side()?);
         }
         Ok(Chain { sides, rels })
+    }
+
+    /// One side of a relation, no deeper than [`MAX_DEPTH`] operations (a side is evaluated,
+    /// printed and mutated by recursion).
+    fn side(&mut self) -> R<Expr> {
+        let column = self.column();
+        let e = self.expr()?;
+        if tree_depth(&e, MAX_DEPTH) > MAX_DEPTH {
+            return Err(ParseError {
+                column,
+                message: format!(
+                    "the side starting here is nested more than {MAX_DEPTH} operations deep (a \
+                     long run of terms or factors, or groups within groups): split it"
+                ),
+            });
+        }
+        Ok(e)
+    }
+
+    /// Enters a group: an error once more than [`MAX_DEPTH`] deep, before recursing further.
+    fn enter(&mut self) -> R<()> {
+        self.depth += 1;
+        if self.depth > MAX_DEPTH {
+            return Err(ParseError {
+                column: self.column(),
+                message: format!(
+                    "groups (parentheses, braces, fractions, powers) nested more than \
+                     {MAX_DEPTH} deep: simplify the expression"
+                ),
+            });
+        }
+        Ok(())
     }
 
     fn relation(&mut self) -> Option<Rel> {
@@ -147,6 +265,13 @@ impl Parser {
 
     /// Sums and differences, with an optional leading sign.
     fn expr(&mut self) -> R<Expr> {
+        self.enter()?;
+        let e = self.sum();
+        self.depth -= 1;
+        e
+    }
+
+    fn sum(&mut self) -> R<Expr> {
         let mut e = if self.eat(&Tok::Minus) {
             Expr::Neg(Box::new(self.term()?))
         } else {
@@ -154,13 +279,23 @@ impl Parser {
             self.term()?
         };
         loop {
-            if self.eat(&Tok::Plus) {
-                e = Expr::bin(Op::Add, e, self.term()?);
-            } else if self.eat(&Tok::Minus) {
-                e = Expr::bin(Op::Sub, e, self.term()?);
-            } else {
-                return Ok(e);
+            let (column, op) = (self.column(), self.peek().cloned());
+            let op = match op {
+                Some(Tok::Plus) => Op::Add,
+                Some(Tok::Minus) => Op::Sub,
+                _ => return Ok(e),
+            };
+            self.pos += 1;
+            let t = self.term()?;
+            if (e.is_scalar() && t.is_vector()) || (e.is_vector() && t.is_scalar()) {
+                return Err(ParseError {
+                    column,
+                    message: "a sum of a scalar and a vector: both terms must be scalars or \
+                              both vectors (a vector is written bold, with a hat or an arrow)"
+                        .into(),
+                });
             }
+            e = Expr::bin(op, e, t);
         }
     }
 
@@ -173,17 +308,25 @@ impl Parser {
         Ok(e)
     }
 
-    /// `\times` and `\cdot` between runs of juxtaposed factors, left to right.
+    /// `\times` and `\cdot` between runs of juxtaposed factors, left to right: the vector and
+    /// scalar products, or a plain product where a side is a scalar.
     fn cross(&mut self) -> R<Expr> {
         let mut e = self.product()?;
         loop {
-            if self.eat_cmd("times") {
-                e = Expr::bin(Op::Cross, e, self.product()?);
+            let op = if self.eat_cmd("times") {
+                Op::Cross
             } else if self.eat_cmd("cdot") {
-                e = Expr::bin(Op::Dot, e, self.product()?);
+                Op::Dot
             } else {
                 return Ok(e);
-            }
+            };
+            let rhs = self.product()?;
+            let op = if e.is_scalar() || rhs.is_scalar() {
+                Op::Mul
+            } else {
+                op
+            };
+            e = Expr::bin(op, e, rhs);
         }
     }
 
@@ -197,7 +340,7 @@ impl Parser {
 
     fn starts_factor(&self) -> bool {
         match self.peek() {
-            Some(Tok::Num(..) | Tok::Letter(_) | Tok::LParen | Tok::LBrace) => true,
+            Some(Tok::Num(..) | Tok::Letter(_) | Tok::LParen | Tok::LBrace | Tok::LBrack) => true,
             Some(Tok::Cmd(c)) => !matches!(
                 c.as_str(),
                 "times"
@@ -217,11 +360,13 @@ impl Parser {
 
     /// An atom and the powers written after it.
     fn factor(&mut self) -> R<Expr> {
+        let column = self.column();
         let mut e = self.atom()?;
         while self.eat(&Tok::Caret) {
             let p = self.script()?;
             e = Expr::bin(Op::Pow, e, p);
         }
+        powers_of_scalars(&e, column)?;
         Ok(e)
     }
 
@@ -265,6 +410,12 @@ impl Parser {
                 self.pos += 1;
                 let e = self.expr()?;
                 self.expect(&Tok::RBrace, "} closing the {")?;
+                Ok(e)
+            }
+            Some(Tok::LBrack) => {
+                self.pos += 1;
+                let e = self.expr()?;
+                self.expect(&Tok::RBrack, "] closing the [")?;
                 Ok(e)
             }
             Some(Tok::Letter(_)) => self.symbol_with_scripts(col),
@@ -327,6 +478,7 @@ impl Parser {
     /// `\sin`, `\cos`, `\tan`, `\cot`, with an optional power and the argument rule of the
     /// module's documentation.
     fn function(&mut self, name: &str) -> R<Expr> {
+        let column = self.column();
         let f = match name {
             "sin" => Func::Sin,
             "cos" => Func::Cos,
@@ -349,6 +501,15 @@ impl Parser {
                 arg
             }
         };
+        if arg.is_vector() {
+            return Err(ParseError {
+                column,
+                message: format!(
+                    "\\{name} of a vector: its argument must be a scalar (an angle, or \
+                     \\left| \\mathbf{{v}} \\right| for a vector's length)"
+                ),
+            });
+        }
         let call = Expr::Call(f, Box::new(arg));
         Ok(match power {
             Some(p) => Expr::bin(Op::Pow, call, p),

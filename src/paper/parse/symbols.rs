@@ -137,13 +137,23 @@ impl Parser {
         }
         self.seen.push((sym.clone(), col));
         let e = Expr::Sym(sym);
-        Ok(match power {
+        let e = match power {
             Some(p) => Expr::bin(Op::Pow, e, p),
             None => e,
-        })
+        };
+        super::powers_of_scalars(&e, col)?;
+        Ok(e)
     }
 
+    /// The symbol itself: its accent, boldness and base (accents nest, counted as groups).
     pub(super) fn symbol_base(&mut self) -> R<Symbol> {
+        self.enter()?;
+        let s = self.symbol_core();
+        self.depth -= 1;
+        s
+    }
+
+    fn symbol_core(&mut self) -> R<Symbol> {
         let plain = |base: String| Symbol {
             derivative: 0,
             accent: Accent::None,

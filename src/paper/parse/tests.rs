@@ -73,3 +73,67 @@ fn errors_name_the_column() {
     let e = parse(r"a = b )").unwrap_err();
     assert_eq!(e.column, 7, "{e:?}");
 }
+
+#[test]
+fn other_notations_read_the_same() {
+    let same =
+        |a: &str, b: &str| assert_eq!(parse(a).unwrap().0, parse(b).unwrap().0, "{a} vs {b}");
+    same(
+        r"\frac{g}{k \cdot a \sin(\alpha_{0})}",
+        r"\frac{g}{k (a \sin\alpha_0)}",
+    );
+    same(r"g \cdot 1", "g 1");
+    same(r"2 \times k", "2 k");
+    same(r"\dfrac{a}{b} + \tfrac{a}{b}", r"\frac{a}{b} + \frac{a}{b}");
+    same(r"\bigl( a + b \bigr) \Big[ c \Big]", "(a + b) (c)");
+    same(r"a \, b \; c \! d \ e ~ f \quad g", "a b c d e f g");
+    same(r"x = a, \quad y = b.", "x = a, y = b");
+    same(r"x = a; y = b;", "x = a, y = b");
+    same(r"x = 0.5.", "x = 0.5");
+    // Between vectors, the scalar and the vector products.
+    let (c, _) = parse(r"\mathbf{a} \times \hat{\mathbf{3}} \cdot \vec{\omega}").unwrap();
+    assert_eq!(
+        c[0].sides[0].to_latex(),
+        r"((bf:a \times hat:bf:3) \cdot vec:omega)"
+    );
+}
+
+#[test]
+fn what_cannot_be_evaluated_is_refused_where_it_is_written() {
+    let e = parse(r"x = a + \hat{\mathbf{1}}").unwrap_err();
+    assert_eq!(e.column, 7, "{e:?}");
+    assert!(e.message.contains("a scalar and a vector"), "{e:?}");
+    let e = parse(r"x = \mathbf{v}^2").unwrap_err();
+    assert!(e.message.contains("a vector to a power"), "{e:?}");
+    let e = parse(r"x = \sin(\mathbf{a})").unwrap_err();
+    assert!(e.message.contains("of a vector"), "{e:?}");
+    let e = parse(r"x = a \div b").unwrap_err();
+    assert!(
+        e.message.contains(r"\frac{numerator}{denominator}"),
+        "{e:?}"
+    );
+    let e = parse("x = a * b").unwrap_err();
+    assert!(e.message.contains(r"\cdot"), "{e:?}");
+    let e = parse("x = a. b").unwrap_err();
+    assert!(e.message.contains("after the full stop"), "{e:?}");
+}
+
+#[test]
+fn nesting_and_size_are_limited_before_recursing() {
+    let deep = format!(
+        "{}a{}",
+        "(".repeat(MAX_DEPTH + 5),
+        ")".repeat(MAX_DEPTH + 5)
+    );
+    let e = parse(&deep).unwrap_err();
+    assert_eq!(e.column, MAX_DEPTH + 1, "{e:?}");
+    let fracs = format!("{}1{}", r"\frac{1}{".repeat(3000), "}".repeat(3000));
+    assert!(parse(&fracs).unwrap_err().message.contains("characters"));
+    let long = vec!["a"; 300].join(" + ");
+    assert!(parse(&long)
+        .unwrap_err()
+        .message
+        .contains("operations deep"));
+    let ok = format!("{}a{}", "(".repeat(100), ")".repeat(100));
+    assert!(parse(&ok).is_ok());
+}
