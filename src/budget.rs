@@ -23,6 +23,27 @@ pub const MAX_ROWS: u64 = 1_000_000;
 /// The largest `max_steps` a scene may ask for, whatever its number of states.
 pub const MAX_STEPS_LIMIT: u64 = 50_000_000;
 
+/// Most entries a scene's `mechanisms` list may hold. Every right-hand-side evaluation sums
+/// them all; the paper's mechanisms are a handful, so a longer list is a mistake, refused before
+/// anything is computed.
+pub const MAX_MECHANISMS: usize = 64;
+
+/// `x` rounded up to three significant digits: a least value to suggest in a message, so that
+/// the number printed (with `{:.3e}`) is itself within the limit it was computed from.
+pub fn round_up_3(x: f64) -> f64 {
+    if !(x.is_finite() && x > 0.0) {
+        return x;
+    }
+    let unit = 10f64.powf(x.log10().floor() - 2.0);
+    let up = (x / unit).ceil() * unit;
+    // The product may round below x; one more unit keeps it above.
+    if up < x {
+        up + unit
+    } else {
+        up
+    }
+}
+
 /// A budget the user asked for that cannot be set.
 #[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
 pub enum BudgetError {
@@ -91,6 +112,16 @@ pub fn trajectory_bytes(steps: u64, n: usize) -> u64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_suggested_least_value_prints_at_or_above_the_limit() {
+        for x in [5.000_010_000_02e-6, 1e-3, 0.123_456_7, 7.0, 9.999_9e10] {
+            let up = round_up_3(x);
+            let printed: f64 = format!("{up:.3e}").parse().unwrap_or(0.0);
+            assert!(printed >= x, "{x} -> {up} printed {printed}");
+            assert!(up <= x * 1.01 + 1e-300, "{x} -> {up}");
+        }
+    }
 
     #[test]
     fn the_budget_refuses_nonsense_and_keeps_the_last_good_value() {

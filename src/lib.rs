@@ -23,6 +23,7 @@ pub mod model;
 pub mod mutation;
 pub mod numerics;
 pub mod output;
+pub mod output_file;
 pub mod paper;
 pub mod precision;
 pub mod report;

@@ -15,6 +15,19 @@ use std::path::Path;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
+/// `print!` through [`cli::stdout::write`]: a closed pipe ends the program quietly.
+macro_rules! print {
+    ($($arg:tt)*) => { $crate::cli::stdout::write(format_args!($($arg)*)) };
+}
+
+/// `println!` through [`cli::stdout::write`]: a closed pipe ends the program quietly.
+macro_rules! println {
+    () => { $crate::cli::stdout::write(format_args!("\n")) };
+    ($($arg:tt)*) => {
+        $crate::cli::stdout::write(format_args!("{}\n", format_args!($($arg)*)))
+    };
+}
+
 mod cli;
 use cli::*;
 
@@ -124,7 +137,7 @@ enum Command {
         /// Print the study as JSON.
         #[arg(long)]
         json: bool,
-        /// A coarse sweep timed once (seconds instead of a minute).
+        /// A coarse sweep, each setting timed once.
         #[arg(long)]
         quick: bool,
         /// Also name the cheapest method and tolerance reaching this accuracy (e.g. 1e-8).
@@ -296,6 +309,7 @@ fn main() -> ExitCode {
             experiment_analyze(&csv, out.as_deref(), json)
         }
     };
+    cli::stdout::flush();
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(message) => {

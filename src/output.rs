@@ -40,8 +40,19 @@ pub const MANIFEST: &str = ".rolling-disk-set";
 #[derive(Debug, thiserror::Error)]
 pub enum SetError {
     /// The target exists and holds files this tool did not write.
-    #[error("--out {0}: exists and is not a report set written by this tool (it has no {MANIFEST}); give a new or empty directory so that nothing of yours is replaced")]
+    #[error("--out {0}: exists and is not a set of outputs written by this tool (it has no {MANIFEST}); give a new or empty directory so that nothing of yours is replaced")]
     Foreign(String),
+    /// The target is a set written by this tool that now also holds a file the set does not list.
+    #[error("--out {path}: holds {file}, which this tool did not write (its {MANIFEST} does not list it); move that file elsewhere or give another directory, since the whole set is replaced")]
+    Unlisted {
+        /// The target.
+        path: String,
+        /// The file not in the manifest, relative to the target.
+        file: String,
+    },
+    /// The target directory cannot be written by the user (its mode or its owner says so).
+    #[error("--out {0}: is a directory you cannot write to (read-only or another user's); give a directory of your own")]
+    ReadOnly(String),
     /// The target has no name of its own (`.`, `..`, `/`).
     #[error("--out {0}: name a directory of its own (for example --out report), not . or .. or /, since the whole set is replaced")]
     NoName(String),
@@ -108,6 +119,56 @@ fn is_stale(file_name: &str, prefix: &str) -> bool {
     !proc_fs.exists() || !Path::new(&format!("/proc/{pid}")).exists()
 }
 
+/// The files a set's manifest lists, relative to the set's directory; `None` without a manifest.
+fn read_manifest(target: &Path) -> Option<std::collections::BTreeSet<PathBuf>> {
+    let text = std::fs::read_to_string(target.join(MANIFEST)).ok()?;
+    let mut files: std::collections::BTreeSet<PathBuf> = text
+        .lines()
+        .filter(|l| !l.starts_with('#'))
+        .filter_map(|l| l.split_once(' ').map(|(_, rel)| PathBuf::from(rel)))
+        .collect();
+    files.insert(PathBuf::from(MANIFEST));
+    Some(files)
+}
+
+/// The first file under `dir` (`rel` inside the set) that `listed` does not hold, or a
+/// subdirectory that holds none of the listed files; walked in name order.
+fn first_unlisted(
+    dir: &Path,
+    rel: &Path,
+    listed: &std::collections::BTreeSet<PathBuf>,
+) -> Option<String> {
+    let Ok(entries) = std::fs::read_dir(dir.join(rel)) else {
+        return Some(rel.display().to_string());
+    };
+    let mut names: Vec<_> = entries.flatten().map(|e| e.file_name()).collect();
+    names.sort();
+    for name in names {
+        let path = rel.join(&name);
+        let is_dir = std::fs::symlink_metadata(dir.join(&path)).is_ok_and(|m| m.is_dir());
+        if is_dir && listed.iter().any(|f| f.starts_with(&path)) {
+            if let Some(found) = first_unlisted(dir, &path, listed) {
+                return Some(found);
+            }
+        } else if is_dir || !listed.contains(&path) {
+            return Some(path.display().to_string());
+        }
+    }
+    None
+}
+
+/// Whether the calling user may write `path` (the kernel's answer; for root it ignores the
+/// mode, whose write bits are checked beside it).
+#[cfg(target_os = "linux")]
+fn writable(path: &Path) -> bool {
+    rustix::fs::access(path, rustix::fs::Access::WRITE_OK).is_ok()
+}
+
+#[cfg(not(target_os = "linux"))]
+fn writable(_path: &Path) -> bool {
+    true
+}
+
 impl SetWriter {
     /// Checks the target, cleans the temporaries of dead runs, and creates the temporary
     /// directory to write into: all before any computing, so that a target that cannot be
@@ -131,13 +192,19 @@ impl SetWriter {
         Self::clean_stale(target, &parent, &name)?;
         match std::fs::symlink_metadata(target) {
             Ok(m) if !m.is_dir() => return Err(SetError::NotDirectory(shown)),
-            Ok(_) => {
+            Ok(m) => {
+                if m.permissions().readonly() || !writable(target) {
+                    return Err(SetError::ReadOnly(shown));
+                }
                 let empty = std::fs::read_dir(target)
                     .map_err(io_err(target, "reading the target"))?
                     .next()
                     .is_none();
-                if !empty && !target.join(MANIFEST).is_file() {
-                    return Err(SetError::Foreign(shown));
+                if !empty {
+                    let listed = read_manifest(target).ok_or(SetError::Foreign(shown.clone()))?;
+                    if let Some(file) = first_unlisted(target, Path::new(""), &listed) {
+                        return Err(SetError::Unlisted { path: shown, file });
+                    }
                 }
             }
             Err(_) => {}
@@ -371,6 +438,27 @@ mod tests {
             })
             .unwrap_or_default();
         assert_eq!(names, vec!["report".to_string()]);
+        let _ = std::fs::remove_dir_all(&root);
+    }
+
+    #[test]
+    fn a_set_holding_a_file_it_does_not_list_is_refused_and_the_file_kept() {
+        let root = scratch("unlisted");
+        let target = root.join("report");
+        assert!(write_set(&target, "one").is_ok());
+        assert!(write_set(&target, "two").is_ok());
+        std::fs::write(target.join("figures/mine.svg"), "mine").ok();
+        assert!(matches!(
+            write_set(&target, "three"),
+            Err(SetError::Unlisted { ref file, .. }) if file == "figures/mine.svg"
+        ));
+        assert!(target.join("figures/mine.svg").is_file());
+        std::fs::remove_file(target.join("figures/mine.svg")).ok();
+        std::fs::create_dir_all(target.join("drafts")).ok();
+        assert!(matches!(
+            write_set(&target, "three"),
+            Err(SetError::Unlisted { ref file, .. }) if file == "drafts"
+        ));
         let _ = std::fs::remove_dir_all(&root);
     }
 }

@@ -2,7 +2,7 @@
 
 use crate::budget;
 use crate::dispatch::{dispatch, problem, Visit};
-use crate::model::{Model, Motion};
+use crate::model::{Model, Motion, Quantity};
 use crate::scene::{ModelKind, Scene};
 use crate::solve::{solve, Ending, SettingsError, Solution, State, Stats};
 use serde::Serialize;
@@ -34,6 +34,32 @@ pub struct Run {
     /// The contact's switches, flights and impacts (sliding model; empty otherwise).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub contact_events: Vec<crate::model::sliding::scene::ContactEvent>,
+    /// The first recorded time at which a contact-only model's normal force is negative: from
+    /// there on the table would have to pull the disk down, and the motion is not physics.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub contact_lost: Option<ContactLost>,
+}
+
+/// Where a model that keeps the rim on the table needs the table to pull: $F_z < 0$.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ContactLost {
+    /// The time (s).
+    pub t: f64,
+    /// The normal force there (N).
+    pub normal_force: f64,
+}
+
+impl std::fmt::Display for ContactLost {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "the normal force is {:.3} N at t = {:.6} s: the rim would leave the table there, \
+             which this model (the rim always on the table) cannot follow, so the motion after \
+             it is not physics; use model: sliding (with friction: {{ mu, restitution }}), which \
+             lets the disk fly and land",
+            self.normal_force, self.t
+        )
+    }
 }
 
 /// Runs a scene. `progress` receives the simulated time now and then. A run records at most
@@ -85,7 +111,26 @@ fn record<M: Model<N>, const N: usize>(
     let mut rows = Vec::with_capacity(sol.t.len());
     let e0 = model.energy(y0);
     let mut energy_change: f64 = 0.0;
-    for (t, y) in sol.t.iter().zip(&sol.y) {
+    let mut contact_lost = None;
+    let mut force = Vec::with_capacity(1);
+    // A run stopped by an event (lift_off: F_z = 0) ends on the located zero, whose sign is
+    // the root finder's: that last row is not a loss of contact within the run.
+    let checked = match sol.ending {
+        Ending::Event { .. } => sol.t.len().saturating_sub(1),
+        _ => sol.t.len(),
+    };
+    for (i, (t, y)) in sol.t.iter().zip(&sol.y).enumerate() {
+        force.clear();
+        if contact_lost.is_none()
+            && i < checked
+            && model.record(y, Quantity::NormalForce, &mut force)
+            && force.first().is_some_and(|&n| n < 0.0)
+        {
+            contact_lost = Some(ContactLost {
+                t: *t,
+                normal_force: force[0],
+            });
+        }
         let mut row = Vec::with_capacity(columns.len());
         row.push(*t);
         for &q in &scene.record {
@@ -108,6 +153,7 @@ fn record<M: Model<N>, const N: usize>(
         energy: (e0, model.energy(&y_end)),
         energy_change,
         contact_events: Vec::new(),
+        contact_lost,
     }
 }
 

@@ -307,7 +307,7 @@ fn what_is_not_a_spin_down_is_refused_with_a_reason() {
         println!("{msg}");
         assert!(msg.starts_with(&format!("{}:", t.source)), "{msg}");
         match t.source.as_str() {
-            "noise" => assert!(msg.contains("no pulses to time"), "{msg}"),
+            "noise" => assert!(msg.contains("no pulse stands out of the noise"), "{msg}"),
             _ => assert!(msg.contains("not a spin-down"), "{msg}"),
         }
     }

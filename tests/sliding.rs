@@ -348,7 +348,12 @@ fn a_user_sliding_scene_runs_and_records_the_contact_quantities() {
 fn bad_sliding_scenes_are_refused_with_the_key_and_the_fix() {
     use rolling_disk::scene::Scene;
     let cases: [(&str, &str, &str, usize); 6] = [
-        ("mu: 0.3", "mu: -0.1", "mu must be a number of 0 or more", 4),
+        (
+            "mu: 0.3",
+            "mu: -0.1",
+            "mu must be a number from 0 (frictionless) to 10",
+            4,
+        ),
         (
             "restitution: 0.0",
             "restitution: 1.5",

@@ -7,6 +7,7 @@ pub(crate) mod report;
 pub(crate) mod section11;
 pub(crate) mod simulate;
 pub(crate) mod speed;
+pub(crate) mod stdout;
 
 pub(crate) use super::*;
 pub(crate) use checks::*;

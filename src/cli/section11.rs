@@ -30,14 +30,18 @@ pub(crate) fn experiment_simulate(
     } else {
         return Err(anyhow::anyhow!("give --csv FILE or --wav FILE"));
     };
-    write_atomically(path, &bytes)
-        .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))?;
-    println!("{} samples written to {}", trace.t.len(), path.display());
+    let to_stdout = stdout::write_to(path, &bytes)?;
+    let mut said = format!("{} samples written to {}", trace.t.len(), path.display());
     if let Some(t) = &trace.truth {
-        println!(
-            "truth: beta = {}, t0 = {:.6} s ({})",
+        said.push_str(&format!(
+            "\ntruth: beta = {}, t0 = {:.6} s ({})",
             t.beta, t.t0, t.origin
-        );
+        ));
+    }
+    if to_stdout {
+        eprintln!("{said}");
+    } else {
+        println!("{said}");
     }
     Ok(())
 }
@@ -46,39 +50,42 @@ pub(crate) fn experiment_analyze(csv: &Path, out: Option<&Path>, json: bool) -> 
     let is_wav = csv
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("wav"));
-    if is_wav {
+    // The output set is checked before any work, and written whole or not at all.
+    let set = out.map(SetWriter::begin).transpose()?;
+    let (text, files) = if is_wav {
         let trace = experiment::read_wav(csv)?;
         let a = experiment::analyze_sound(
             &trace,
             &experiment::TrackSettings::default(),
             &experiment::plausibility::Plausibility::default(),
         )?;
-        if json {
-            println!("{}", a.to_json());
-        } else {
-            println!("{a}");
-        }
-        if let Some(dir) = out {
-            for p in experiment::write_sound_analysis(&a, dir)? {
-                eprintln!("wrote {}", p.display());
-            }
-        }
-        return Ok(());
-    }
-    let trace = experiment::read_trace(csv)?;
-    let analysis = experiment::analyze(&trace, &experiment::AnalysisSettings::default())?;
-    if json {
-        println!("{}", analysis.to_json());
+        let text = if json { a.to_json() } else { a.to_string() };
+        let files = match &set {
+            Some(set) => experiment::write_sound_analysis(&a, set.dir())?,
+            None => Vec::new(),
+        };
+        (text, files)
     } else {
-        println!("{analysis}");
-    }
-    if let Some(dir) = out {
-        std::fs::create_dir_all(dir)
-            .map_err(|e| anyhow::anyhow!("cannot create {}: {e}", dir.display()))?;
-        let written = experiment::write_analysis(&analysis, dir)?;
-        for p in written {
+        let trace = experiment::read_trace(csv)?;
+        let analysis = experiment::analyze(&trace, &experiment::AnalysisSettings::default())?;
+        let text = if json {
+            analysis.to_json()
+        } else {
+            analysis.to_string()
+        };
+        let files = match &set {
+            Some(set) => experiment::write_analysis(&analysis, set.dir())?,
+            None => Vec::new(),
+        };
+        (text, files)
+    };
+    if let Some(set) = set {
+        let shown: Vec<PathBuf> = files.iter().map(|p| set.final_path(p)).collect();
+        set.commit(&files)?;
+        for p in shown {
             eprintln!("wrote {}", p.display());
         }
     }
+    println!("{text}");
     Ok(())
 }

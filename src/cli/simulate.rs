@@ -70,15 +70,27 @@ pub(crate) fn simulate(
         // No number of such a run means anything: say why, print none.
         return Err(anyhow::anyhow!("{}: {}", scene.source, result.ending));
     }
-    print_summary(&scene, &result);
+    if let Some(lost) = &result.contact_lost {
+        eprintln!("warning: {}: {lost}", scene.source);
+    }
+    let to_stdout = csv.as_ref().is_some_and(|p| p.as_os_str() == "-");
+    if to_stdout {
+        eprint!("{}", summary(&scene, &result));
+    } else {
+        print!("{}", summary(&scene, &result));
+    }
     if let Some(path) = csv {
-        write_atomically(&path, result.to_csv().as_bytes())
-            .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))?;
-        println!(
+        let to_stdout = stdout::write_to(&path, result.to_csv().as_bytes())?;
+        let said = format!(
             "trajectory: {} rows written to {}",
             result.rows.len(),
             path.display()
         );
+        if to_stdout {
+            eprintln!("{said}");
+        } else {
+            println!("{said}");
+        }
     }
     if result.ending.is_complete() {
         Ok(())
@@ -87,17 +99,33 @@ pub(crate) fn simulate(
     }
 }
 
-pub(crate) fn print_summary(scene: &Scene, r: &Run) {
+/// The summary of a run, one line per item.
+pub(crate) fn summary(scene: &Scene, r: &Run) -> String {
+    use std::fmt::Write as _;
+    let mut s = String::new();
     let (t_end, _) = (r.rows.last().map_or(0.0, |row| row[0]), ());
     let m = &r.last;
-    println!("scene       {} ({})", scene.name, scene.source);
-    println!("model       {}, {} states integrated", r.model, r.states);
-    println!(
-        "solver      {} rtol {:e} atol {:e}",
-        scene.settings.method, scene.settings.rtol, scene.settings.atol
-    );
-    println!("ended       {} (t = {t_end:.6} s)", r.ending);
-    println!(
+    let _ = writeln!(s, "scene       {} ({})", scene.name, scene.source);
+    let _ = writeln!(s, "model       {}, {} states integrated", r.model, r.states);
+    if scene.settings.method == rolling_disk::solve::Method::Rk4 {
+        let _ = writeln!(
+            s,
+            "solver      rk4, fixed step {:e} s (rtol and atol are not used)",
+            scene.settings.step
+        );
+    } else {
+        let _ = writeln!(
+            s,
+            "solver      {} rtol {:e} atol {:e}",
+            scene.settings.method, scene.settings.rtol, scene.settings.atol
+        );
+    }
+    let _ = writeln!(s, "ended       {} (t = {t_end:.6} s)", r.ending);
+    if let Some(lost) = &r.contact_lost {
+        let _ = writeln!(s, "not physics {lost}");
+    }
+    let _ = writeln!(
+        s,
         "final       alpha = {:.12} rad, alpha_dot = {:.12e} rad/s, Omega = {:.12} rad/s, omega_1 = {:.12} rad/s",
         m.alpha, m.alpha_dot, m.precession, m.spin
     );
@@ -109,21 +137,30 @@ pub(crate) fn print_summary(scene: &Scene, r: &Run) {
     } else {
         "energy drift"
     };
-    println!(
+    let _ = writeln!(
+        s,
         "{label:11} {:.3e} relative (E0 = {:.9e} J, E_end = {:.9e} J)",
         r.energy_change, r.energy.0, r.energy.1
     );
-    println!(
+    let _ = writeln!(
+        s,
         "work        {} right-hand-side evaluations ({} more to locate events and sample), {} accepted and {} rejected steps",
         r.stats.evaluations, r.stats.extra_evaluations, r.stats.accepted, r.stats.rejected
     );
     if scene.model == rolling_disk::scene::ModelKind::Sliding {
-        println!(
+        let _ = writeln!(
+            s,
             "contact     {} switches and impacts",
             r.contact_events.len()
         );
         for e in &r.contact_events {
-            println!("  t = {:.9} s  {} -> {}: {}", e.t, e.from, e.to, e.what);
+            let arrow = format!("{} -> {}", e.from, e.to);
+            if e.what.starts_with(&arrow) {
+                let _ = writeln!(s, "  t = {:.9} s  {}", e.t, e.what);
+            } else {
+                let _ = writeln!(s, "  t = {:.9} s  {arrow}: {}", e.t, e.what);
+            }
         }
     }
+    s
 }

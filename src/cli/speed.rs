@@ -22,17 +22,20 @@ pub(crate) fn precision(
     quick: bool,
     target: Option<f64>,
 ) -> anyhow::Result<()> {
+    if let Some(t) = target {
+        if !(t.is_finite() && t > 0.0 && t < 1.0) {
+            return Err(anyhow::anyhow!(
+                "--target {t}: give the error to reach as a number between 0 and 1, such as 1e-8"
+            ));
+        }
+    }
     let scene = Scene::load(name)?;
     let opts = if quick {
         precision::StudyOptions::quick()
     } else {
         precision::StudyOptions::default()
     };
-    eprintln!(
-        "measuring {} (this takes {})...",
-        scene.name,
-        if quick { "seconds" } else { "about a minute" }
-    );
+    eprintln!("measuring {}, progress below...", scene.name);
     let progress = |done: usize, total: usize, what: &str| {
         eprintln!("  [{done:>2}/{total}] {what}");
     };

@@ -186,6 +186,7 @@ pub fn analyze(trace: &Trace, s: &AnalysisSettings) -> Result<Analysis, Experime
             file,
             span: if span.is_finite() { span } else { 0.0 },
             noise,
+            min_span_sigmas: p.min_span_sigmas,
         });
     }
     let mut v = trace.v.clone();
@@ -402,7 +403,7 @@ impl fmt::Display for Analysis {
         )?;
         writeln!(
             f,
-            "  eq 84: beta = {:.4} +- {:.4}, t0 = {:.6} +- {:.6} s, C^(-1/(beta+2)) = {:.5} +- {:.5} s \
+            "  eq 84: beta = {:.4} +- {:.4}, t0 = {:.6} +- {:.6} s, C^(-1/(beta+2)) = {:.6e} +- {:.1e} s \
              (reduced chi2 {:.2}, n = {})",
             a.beta, a.beta_sigma, a.t0, a.t0_sigma, a.inv_omega_1s, a.inv_omega_1s_sigma, a.reduced_chi2, a.n
         )?;

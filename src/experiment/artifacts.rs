@@ -12,6 +12,10 @@ use rand_distr::{Distribution, StandardNormal};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::TAU;
 
+/// Most glitches per second a recording may be given: isolated spikes, each far from the next
+/// at any sample rate the experiment uses (the scope's and the microphone's are kHz).
+pub const MAX_GLITCHES_PER_S: f64 = 1000.0;
+
 /// The artifacts to add. All amplitudes are in the signal's unit (V for a scope trace, full
 /// scale 1 for sound).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -65,12 +69,19 @@ impl Artifacts {
         }
     }
 
-    /// Checks the settings.
+    /// Checks the settings (each bounded, so that the work of [`Artifacts::apply`] is too).
     pub fn validate(&self) -> Result<(), ExperimentError> {
         let bad = |what: &str| Err(ExperimentError::Setting(what.into()));
         let ok = |x: f64| x.is_finite() && x >= 0.0;
         if !(ok(self.drift) && ok(self.hum) && ok(self.glitch) && ok(self.glitches_per_s)) {
             return bad("drift, hum, glitch and glitches_per_s must be finite and >= 0");
+        }
+        if self.glitches_per_s > MAX_GLITCHES_PER_S {
+            return Err(ExperimentError::Setting(format!(
+                "--glitches {}: at most {MAX_GLITCHES_PER_S} isolated glitches per second; a \
+                 higher rate is noise, not glitches (give --glitches 2 for a realistic bench)",
+                self.glitches_per_s
+            )));
         }
         if !(self.mains.is_finite() && self.mains > 0.0) {
             return bad("the mains frequency must be positive (50 or 60 Hz)");

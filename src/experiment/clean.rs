@@ -88,8 +88,10 @@ pub fn remove_hum(t: &[f64], v: &mut [f64], sigma_v: f64) -> f64 {
     let mut blocks: Vec<(std::ops::Range<usize>, f64, DVector<f64>, f64)> = Vec::new();
     let mut start = 0;
     while start < n {
-        let mut end = start;
-        while end < n && t[end] < t[start] + 1.0 {
+        // A block holds its first sample whatever the clock: at times so large that
+        // t + 1 s rounds to t (1e16 s and beyond), each sample is a block of its own.
+        let mut end = start + 1;
+        while end < n && t[end] - t[start] < 1.0 {
             end += 1;
         }
         let block = start..end;

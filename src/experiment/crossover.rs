@@ -56,12 +56,16 @@ pub struct CrossoverFit {
     pub residual_ss: f64,
 }
 
-/// The law on cycles $[t_a, t_b]$.
+/// The law on cycles $[t_a, t_b]$, times counted from the record's first fitted peak (so that
+/// an absolute clock, such as epoch seconds, costs no precision).
 struct Crossover<'a> {
     ta: &'a [f64],
     tb: &'a [f64],
     y: &'a [f64],
     start: &'a [usize],
+    /// The span of the fitted times, $t_b^{last} - t_a^{first}$: the scale of $t_0$'s
+    /// difference step, so that the gradient does not depend on the unit of time.
+    span: f64,
     /// The range of the data's rates: $\Omega_c$ must fall inside it.
     omega_range: (f64, f64),
 }
@@ -101,7 +105,11 @@ impl Problem<5> for Crossover<'_> {
         let m = self.mean(p, i).0;
         let mut g = SVector::<f64, 5>::zeros();
         for k in 0..5 {
-            let h = 1e-6 * p[k].abs().max(1.0);
+            let h = if k == 2 {
+                1e-6 * self.span
+            } else {
+                1e-6 * p[k].abs().max(1.0)
+            };
             let (mut up, mut down) = (*p, *p);
             up[k] += h;
             down[k] -= h;
@@ -151,6 +159,11 @@ pub fn fit_crossover(
             why: " for five parameters",
         });
     }
+    // Times from the first fitted peak: the fit is the same whatever the clock's origin.
+    let origin = ta[0];
+    let ta: Vec<f64> = ta.iter().map(|t| t - origin).collect();
+    let tb: Vec<f64> = tb.iter().map(|t| t - origin).collect();
+    let (ta, tb) = (&ta[..], &tb[..]);
     let y: Vec<f64> = ta
         .iter()
         .zip(tb)
@@ -165,6 +178,7 @@ pub fn fit_crossover(
         y: &y,
         start,
         omega_range: (lo, hi),
+        span: tb[n - 1] - ta[0],
     };
     let mut best: Option<crate::experiment::least_squares::Solved<5>> = None;
     let mut last_err = FitError::Shape("no start");
@@ -177,7 +191,7 @@ pub fn fit_crossover(
             let p0 = SVector::<f64, 5>::from_column_slice(&[
                 b1,
                 b2,
-                free.t0,
+                free.t0 - origin,
                 ln_tau_c + (b2 + 2.0) * ln_wc,
                 ln_wc,
             ]);
@@ -198,7 +212,7 @@ pub fn fit_crossover(
         beta_above_sigma: s.cov[(1, 1)].sqrt(),
         omega_c: wc,
         omega_c_sigma: wc * s.cov[(4, 4)].sqrt(),
-        t0: s.p[2],
+        t0: s.p[2] + origin,
         t0_sigma: s.cov[(2, 2)].sqrt(),
         chi2: s.chi2,
         ln_det_sigma: s.ln_det_sigma,

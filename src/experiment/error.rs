@@ -129,7 +129,7 @@ pub enum ExperimentError {
         reason: String,
     },
     /// The signal never varies above its noise.
-    #[error("{file}: the signal is flat (it varies by {span:.3e} V peak to peak, against a noise of {noise:.3e} V rms): there are no pulses to time")]
+    #[error("{file}: no pulse stands out of the noise: the signal varies by {span:.3e} V peak to peak, {} times its noise of {noise:.3e} V rms, and a pulse must span more than {min_span_sigmas} times it{}", ratio(*span, *noise), flat_or_noise(*span, *noise))]
     FlatSignal {
         /// The file.
         file: String,
@@ -137,6 +137,8 @@ pub enum ExperimentError {
         span: f64,
         /// The estimated noise.
         noise: f64,
+        /// The span a pulse must have, in noise deviations.
+        min_span_sigmas: f64,
     },
     /// Too few peaks (or too few in the fitting window).
     #[error("{file}: {found} {what}, fewer than the {needed} needed to fit: {hint}")]
@@ -182,5 +184,23 @@ impl ExperimentError {
             scene: name.to_string(),
             message,
         }
+    }
+}
+
+/// `span / noise` in words for a message, `-` when the noise is zero.
+fn ratio(span: f64, noise: f64) -> String {
+    if noise > 0.0 {
+        format!("{:.1}", span / noise)
+    } else {
+        "-".into()
+    }
+}
+
+/// What a signal without pulses is: flat (no more than rounding) or noise alone.
+fn flat_or_noise(span: f64, noise: f64) -> &'static str {
+    if span <= 2.0 * noise || span == 0.0 {
+        ": the signal is flat; check that the photodiode is connected and lit"
+    } else {
+        ": the record is noise alone; check the photodiode's gain and that the disk passes it"
     }
 }

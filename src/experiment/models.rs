@@ -67,6 +67,15 @@ pub fn strength(delta: f64) -> &'static str {
     }
 }
 
+/// Kass & Raftery's verdict on a BIC difference as a phrase: "decisive evidence against it",
+/// or, below 2, "evidence against it not worth more than a mention".
+fn evidence(delta: f64) -> String {
+    match strength(delta) {
+        weak if delta < 2.0 => format!("evidence against it {weak}"),
+        word => format!("{word} evidence against it"),
+    }
+}
+
 /// Scores candidates `(name, parameters, law parameters, chi2, ln det Sigma)` fitted to the
 /// same `n` points.
 pub fn compare(n: usize, fits: Vec<(String, String, usize, f64, f64)>) -> Comparison {
@@ -103,12 +112,12 @@ pub fn compare(n: usize, fits: Vec<(String, String, usize, f64, f64)>) -> Compar
     c.sort_by(|a, b| a.bic.total_cmp(&b.bic));
     let summary = match (c.first(), c.get(1)) {
         (Some(a), Some(b)) => format!(
-            "the data support {} ({}); the next, {}, is {:.1} higher in BIC: {} evidence against it",
+            "the data support {} ({}); the next, {}, is {:.1} higher in BIC: {}",
             a.name,
             a.parameters,
             b.name,
             b.delta_bic,
-            strength(b.delta_bic)
+            evidence(b.delta_bic)
         ),
         (Some(a), None) => format!("only {} could be fitted", a.name),
         _ => "no law could be fitted".into(),

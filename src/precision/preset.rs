@@ -22,7 +22,7 @@ use std::fmt;
 pub enum Accuracy {
     /// DOPRI5 at rtol 1e-6: figures and quick looks.
     Fast,
-    /// DOP853 at rtol 1e-10: the default for checks.
+    /// DOP853 at rtol 1e-10, looser than the checks' default (rtol 1e-12).
     Standard,
     /// DOP853 at rtol 1e-13: near the limit of double precision.
     High,

@@ -16,6 +16,10 @@ use crate::model::Quantity;
 use crate::scene::SceneError;
 use serde::Deserialize;
 
+/// The largest Coulomb coefficient a scene may give: far above real pairs of surfaces (below
+/// about 1.5).
+const MU_MOST: f64 = 10.0;
+
 /// `friction:` as written.
 #[derive(Debug, Clone, Copy, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -75,11 +79,12 @@ impl Validator<'_> {
                 "the sliding model needs a friction law: add `friction: { mu: 0.3, restitution: 0.0 }`",
             ));
         };
-        if !(f.mu.is_finite() && f.mu >= 0.0) {
+        if !(f.mu.is_finite() && f.mu >= 0.0 && f.mu <= MU_MOST) {
             return Err(self.err(
                 &["friction", "mu"],
                 format!(
-                    "friction: mu must be a number of 0 or more (0 is frictionless), got {}",
+                    "friction: mu must be a number from 0 (frictionless) to {MU_MOST} (real \
+                     pairs of surfaces have mu below about 1.5), got {}",
                     f.mu
                 ),
             ));

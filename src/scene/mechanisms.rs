@@ -134,6 +134,17 @@ impl Validator<'_> {
                 ),
             ));
         }
+        if s.mechanisms.len() > crate::budget::MAX_MECHANISMS {
+            return Err(self.err(
+                &["mechanisms"],
+                format!(
+                    "mechanisms: {} entries, more than the limit of {}; list each kind \
+                     of mechanism once, with its coefficient",
+                    s.mechanisms.len(),
+                    crate::budget::MAX_MECHANISMS
+                ),
+            ));
+        }
         let mut out = Vec::new();
         for (i, entry) in s.mechanisms.iter().enumerate() {
             let named = entry.named();

@@ -140,6 +140,22 @@ fn found(what: &str) -> String {
     }
 }
 
+/// The 1-based line where a top-level key named in a "duplicate field" complaint (`raw`, with
+/// no key path before it) appears for the second time in `src`.
+pub fn repeated_top_key(raw: &str, src: &str) -> Option<usize> {
+    let key = ticked(raw.strip_prefix("duplicate field ")?)
+        .first()
+        .copied()?;
+    src.lines()
+        .enumerate()
+        .filter(|(_, l)| {
+            l.strip_prefix(key)
+                .is_some_and(|rest| rest.trim_start().starts_with(':'))
+        })
+        .nth(1)
+        .map(|(i, _)| i + 1)
+}
+
 /// One sentence in the tool's terms for a complaint of the YAML reader. `raw` is the reader's
 /// message without its trailing position.
 pub fn translate(raw: &str) -> String {
@@ -193,6 +209,14 @@ pub fn translate(raw: &str) -> String {
         .or_else(|| msg.strip_prefix("invalid value: "))
     {
         match rest.rsplit_once(", expected ") {
+            // Decimal whole numbers are read as numbers; only 0x, 0o and 0b forms come here.
+            Some((got, want)) if expected(want) == "a number" && got.starts_with("integer ") => {
+                place(&format!(
+                    "expected a number written in decimal (such as 0.0375 or 3.75e-2), found a \
+                     whole number in another base ({}, written 0x, 0o or 0b): write it in decimal",
+                    found(got).trim_start_matches("the number ")
+                ))
+            }
             Some((got, want)) => place(&format!(
                 "expected {}, found {}",
                 expected(want),

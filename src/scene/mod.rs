@@ -209,6 +209,12 @@ impl Scene {
                 Some(l) => (Some(l.line()), Some(l.column())),
                 None => (None, None),
             };
+            // The reader places a top-level duplicate at the mapping's start: name the line
+            // that repeats the key instead.
+            let (line, column) = match message::repeated_top_key(raw, src) {
+                Some(l) => (Some(l), Some(1)),
+                None => (line, column),
+            };
             let at = line.zip(column).and_then(|(l, c)| {
                 let text = src.lines().nth(l.checked_sub(1)?)?;
                 text.chars().nth(c.checked_sub(1)?)

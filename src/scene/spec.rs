@@ -103,7 +103,7 @@ pub(super) struct SolverSpec {
     pub(super) atol: f64,
     #[serde(default = "default_step")]
     pub(super) step: f64,
-    #[serde(default = "default_max_steps")]
+    #[serde(default = "default_max_steps", deserialize_with = "whole_u32")]
     pub(super) max_steps: u32,
     #[serde(default)]
     pub(super) project: Option<Projection>,
@@ -121,6 +121,18 @@ pub(super) fn default_atol() -> f64 {
 pub(super) fn default_step() -> f64 {
     Settings::default().step
 }
+/// A whole number of at least 0 written as an integer or in floating-point form (`5e7`, as the
+/// README writes the limits).
+fn whole_u32<'de, D: serde::Deserializer<'de>>(d: D) -> Result<u32, D::Error> {
+    use serde::de::{Error, Unexpected};
+    let x = f64::deserialize(d)?;
+    if x.fract() == 0.0 && (0.0..=f64::from(u32::MAX)).contains(&x) {
+        Ok(x as u32)
+    } else {
+        Err(D::Error::invalid_value(Unexpected::Float(x), &"u32"))
+    }
+}
+
 pub(super) fn default_max_steps() -> u32 {
     Settings::default().max_steps
 }

@@ -3,6 +3,17 @@
 use super::spec::*;
 use super::*;
 
+/// The fewest steps an adaptive method takes per turn of the disk's fastest rate (DOP853
+/// with the default settings takes about 32 on a vertical spin at 1.5e7 rad/s).
+const STEPS_PER_TURN_LEAST: f64 = 4.0;
+
+/// The steps per turn a suggested stop time allows.
+const STEPS_PER_TURN_SUGGESTED: f64 = 64.0;
+
+/// The largest exponent of eq 75's law a scene may give: well above the paper's mechanisms
+/// (beta from 0 to 4); a steeper law ends the spin-down within the first steps.
+const BETA_MOST: f64 = 10.0;
+
 pub(super) struct Validator<'s> {
     pub(super) src: &'s str,
     pub(super) file: &'s str,
@@ -55,12 +66,16 @@ impl Validator<'_> {
                         "sample: {dt:e} s over stop.time = {time} s records {rows:.3e} rows, more \
                          than the limit of {}: raise sample to {:.3e} s or more",
                         budget::MAX_ROWS,
-                        time / (budget::MAX_ROWS as f64 - 2.0)
+                        budget::round_up_3(time / (budget::MAX_ROWS as f64 - 2.0))
                     ),
                 ));
             }
         }
         let sv = &s.solver;
+        if sv.method != Method::Rk4 && s.model != ModelKind::Adiabatic {
+            let rows = s.sample.is_none().then_some(budget::MAX_ROWS);
+            self.turns(start, time, u64::from(sv.max_steps), rows)?;
+        }
         if sv.method == Method::Rk4 && sv.step.is_finite() && sv.step > 0.0 {
             let needed = (time / sv.step).ceil();
             if needed > f64::from(sv.max_steps) {
@@ -72,12 +87,46 @@ impl Validator<'_> {
                          method: dop853",
                         sv.step,
                         sv.max_steps,
-                        time / f64::from(sv.max_steps)
+                        budget::round_up_3(time / f64::from(sv.max_steps))
                     ),
                 ));
             }
         }
         Ok(())
+    }
+
+    /// The steps a run needs at the least, from its fastest rate $w$ = max($|\Omega|$,
+    /// $|\omega_1|$): an adaptive step resolves each turn with [`STEPS_PER_TURN_LEAST`] steps
+    /// or more, so $w\,t/(2\pi)$ turns that need more steps than `max_steps` (or, unsampled,
+    /// more rows than `rows`) are refused before integrating. The stop time it suggests allows
+    /// [`STEPS_PER_TURN_SUGGESTED`] a turn, twice what DOP853 takes with the default settings.
+    fn turns(
+        &self,
+        start: &Motion,
+        time: f64,
+        max_steps: u64,
+        rows: Option<u64>,
+    ) -> Result<(), SceneError> {
+        let rate = start.precession.abs().max(start.spin.abs());
+        let per_s = rate / std::f64::consts::TAU;
+        let least = per_s * time * STEPS_PER_TURN_LEAST;
+        let (limit, what) = match rows {
+            Some(r) if r < max_steps => (r, "rows (an unsampled run records every step)"),
+            _ => (max_steps, "steps (solver.max_steps)"),
+        };
+        if least <= limit as f64 {
+            return Ok(());
+        }
+        Err(self.err(
+            &["start"],
+            format!(
+                "start: a rate of {rate:.3e} rad/s over stop.time = {time} s is {:.3e} turns, which \
+                 need at least {least:.3e} steps ({STEPS_PER_TURN_LEAST} a turn), more than the \
+                 limit of {limit} {what}: lower stop.time to {:.3e} s or less, or start slower",
+                per_s * time,
+                limit as f64 / (per_s * STEPS_PER_TURN_SUGGESTED)
+            ),
+        ))
     }
 
     pub(super) fn scene(&self, s: SceneSpec) -> Result<Scene, SceneError> {
@@ -217,12 +266,13 @@ impl Validator<'_> {
                 format!("dissipation: epsilon must be positive, got {}", d.epsilon),
             ));
         }
-        if !(d.beta.is_finite() && d.beta > -2.0) {
+        if !(d.beta.is_finite() && d.beta > -2.0 && d.beta <= BETA_MOST) {
             return Err(self.err(
                 &["dissipation", "beta"],
                 format!(
                     "dissipation: beta must be a number above -2 (eq 79 has no finite-time \
-                     end otherwise), got {}",
+                     end otherwise) and at most {BETA_MOST} (the paper's mechanisms have beta \
+                     from 0 to 4, sec. 11), got {}",
                     d.beta
                 ),
             ));
@@ -363,7 +413,10 @@ impl Validator<'_> {
         model: ModelKind,
     ) -> Result<Vec<Quantity>, SceneError> {
         let mut out: Vec<Quantity> = Vec::new();
-        let list = if r.is_empty() {
+        // The default records what every model has: the adiabatic law has no spin.
+        let list = if r.is_empty() && model == ModelKind::Adiabatic {
+            &[Quantity::Alpha, Quantity::Precession][..]
+        } else if r.is_empty() {
             &[Quantity::Alpha, Quantity::Precession, Quantity::Spin][..]
         } else {
             r

@@ -165,7 +165,7 @@ pub fn solve_with<D: Dynamics<N>, const N: usize>(
                 span,
                 rows,
                 limit: budget::MAX_ROWS,
-                least: span / (budget::MAX_ROWS as f64 - 2.0),
+                least: budget::round_up_3(span / (budget::MAX_ROWS as f64 - 2.0)),
             });
         }
     }
@@ -183,9 +183,9 @@ pub fn solve_with<D: Dynamics<N>, const N: usize>(
                 limit: settings.max_steps,
             });
         }
-        needed as u64 + 1
+        needed as u64
     } else {
-        u64::from(settings.max_steps) + 1
+        u64::from(settings.max_steps)
     };
     Settings::check_memory(stored, N)?;
     let (t0, y0) = (problem.t0, problem.y0);

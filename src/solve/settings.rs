@@ -62,6 +62,9 @@ pub enum SettingsError {
     /// so the numbers would mean nothing.
     #[error("rtol must lie strictly between 0 and 1 (for example 1e-10; at 1 or above any step is accepted and the result means nothing), got {0}")]
     Rtol(f64),
+    /// rtol below [`RTOL_LEAST`] asks for more than double precision holds.
+    #[error("rtol {0:e} asks for more than double precision holds (numbers are stored to 2.2e-16 relative, and rounding adds up over the steps): use rtol 1e-14 or more")]
+    RtolBelowPrecision(f64),
     /// atol must be zero or positive, and finite.
     #[error("atol must be zero or a positive number (for example 1e-12), got {0}")]
     Atol(f64),
@@ -138,6 +141,10 @@ pub enum SettingsError {
     Start(Vec<f64>),
 }
 
+/// The smallest rtol accepted: ten times double precision's spacing (2.2e-16); a step can
+/// meet no tighter one, and the step size collapses instead.
+pub const RTOL_LEAST: f64 = 1e-15;
+
 impl Settings {
     /// Checks that the settings can be used: rtol in (0, 1), atol >= 0, a positive finite rk4
     /// step, and max_steps between 1 and [`budget::MAX_STEPS_LIMIT`]. The memory the steps may
@@ -156,6 +163,9 @@ impl Settings {
             Method::Dopri5 | Method::Dop853 if !(ok(self.rtol) && self.rtol < 1.0) => {
                 Err(SettingsError::Rtol(self.rtol))
             }
+            Method::Dopri5 | Method::Dop853 if self.rtol < RTOL_LEAST => {
+                Err(SettingsError::RtolBelowPrecision(self.rtol))
+            }
             Method::Dopri5 | Method::Dop853 if !(self.atol.is_finite() && self.atol >= 0.0) => {
                 Err(SettingsError::Atol(self.atol))
             }
@@ -163,9 +173,10 @@ impl Settings {
         }
     }
 
-    /// Checks that `steps` stored steps of an `n`-state system fit the memory budget.
+    /// Checks that `steps` steps of an `n`-state system, stored with the start point, fit the
+    /// memory budget.
     pub(super) fn check_memory(steps: u64, n: usize) -> Result<(), SettingsError> {
-        let bytes = budget::trajectory_bytes(steps, n);
+        let bytes = budget::trajectory_bytes(steps.saturating_add(1), n);
         if bytes <= budget::TRAJECTORY_BYTES {
             return Ok(());
         }
@@ -174,7 +185,7 @@ impl Settings {
             states: n,
             mib: bytes >> 20,
             limit_mib: budget::TRAJECTORY_BYTES >> 20,
-            fits: budget::TRAJECTORY_BYTES / budget::trajectory_bytes(1, n),
+            fits: budget::TRAJECTORY_BYTES / budget::trajectory_bytes(1, n) - 1,
         })
     }
 }

@@ -47,6 +47,9 @@ struct Bridge<'p, 'a, D, const N: usize> {
     scale: f64,
     deadline: Option<Deadline>,
     timed_out: Option<f64>,
+    /// Right-hand-side evaluations, counted here since `ode_solvers` reports its own count only
+    /// for a run that ends without an error.
+    evaluations: std::cell::Cell<u64>,
 }
 
 impl<'p, 'a, D: Dynamics<N>, const N: usize> Bridge<'p, 'a, D, N> {
@@ -65,6 +68,7 @@ impl<'p, 'a, D: Dynamics<N>, const N: usize> Bridge<'p, 'a, D, N> {
             scale: 0.0,
             deadline: None,
             timed_out: None,
+            evaluations: std::cell::Cell::new(0),
         }
     }
 
@@ -87,6 +91,7 @@ impl<'p, 'a, D: Dynamics<N>, const N: usize> Bridge<'p, 'a, D, N> {
 
 impl<D: Dynamics<N>, const N: usize> System<f64, State<N>> for &mut Bridge<'_, '_, D, N> {
     fn system(&self, _t: f64, y: &State<N>, dy: &mut State<N>) {
+        self.evaluations.set(self.evaluations.get() + 1);
         self.dynamics.rhs(y, dy);
     }
 
@@ -258,6 +263,7 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
                 IntegrationError::StiffnessDetected { x } => Ending::Stiff { t: x },
             };
             stats.accepted = ts.len().saturating_sub(1) as u64;
+            stats.evaluations = bridge.evaluations.get();
         }
     }
     if let Some(t) = non_finite {

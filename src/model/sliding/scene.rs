@@ -136,5 +136,6 @@ fn record(model: &Sliding, scene: &Scene, sol: &SlidingRun) -> Run {
         energy: (e0, model.energy(&sol.y[last])),
         energy_change,
         contact_events: contact_events(sol),
+        contact_lost: None,
     }
 }

@@ -1,0 +1,50 @@
+//! Standard output as a careful tool writes it: a reader that stops reading (`| head`, a closed
+//! pipe) ends the program quietly with the conventional status 141 (128 + SIGPIPE) instead of a
+//! panic. The binary's `print!` and `println!` (defined in `main.rs`, before every module) come
+//! here, so that every line of every command is covered by this one place.
+
+use std::io::Write;
+
+/// The exit status of a program whose reader closed the pipe: 128 + SIGPIPE (13).
+pub(crate) const CLOSED_PIPE_STATUS: i32 = 141;
+
+/// Writes `args` to standard output. A closed pipe exits quietly with
+/// [`CLOSED_PIPE_STATUS`]; any other failure to write (a full disk behind a redirection) is
+/// said in one sentence on standard error, with a non-zero exit.
+pub(crate) fn write(args: std::fmt::Arguments<'_>) {
+    let mut out = std::io::stdout().lock();
+    if let Err(e) = out.write_fmt(args) {
+        exit_on(e);
+    }
+}
+
+/// Flushes standard output; the same endings as [`write`].
+pub(crate) fn flush() {
+    if let Err(e) = std::io::stdout().lock().flush() {
+        exit_on(e);
+    }
+}
+
+fn exit_on(e: std::io::Error) -> ! {
+    if e.kind() == std::io::ErrorKind::BrokenPipe {
+        std::process::exit(CLOSED_PIPE_STATUS);
+    }
+    eprintln!("error: cannot write to standard output ({e})");
+    std::process::exit(1);
+}
+
+/// Writes `bytes` to the output file `path` of an option such as `--csv` or `--wav`: `-` is
+/// standard output, any other path goes through [`rolling_disk::output_file::write_output`].
+/// Returns whether standard output was used, so that the caller says what it did on standard
+/// error instead.
+pub(crate) fn write_to(path: &std::path::Path, bytes: &[u8]) -> anyhow::Result<bool> {
+    if path.as_os_str() == "-" {
+        let mut out = std::io::stdout().lock();
+        if let Err(e) = out.write_all(bytes).and_then(|()| out.flush()) {
+            exit_on(e);
+        }
+        return Ok(true);
+    }
+    rolling_disk::output_file::write_output(path, bytes)?;
+    Ok(false)
+}
