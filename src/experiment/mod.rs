@@ -37,6 +37,8 @@ pub mod law;
 pub mod law_stability;
 pub mod least_squares;
 pub mod light;
+pub mod mechanism_record;
+pub mod model_choice;
 pub mod models;
 pub mod motion_law;
 pub mod numbers;

@@ -155,7 +155,7 @@ fn steady_at(d: &Disk, omega: f64) -> Motion {
 }
 
 /// The mechanism scaled to supply the record's power at $\Omega_{\rm cal}$.
-fn calibrated(d: &Disk, law: &Law, mech: &Mechanism, omega_cal: f64) -> Mechanism {
+pub fn calibrated(d: &Disk, law: &Law, mech: &Mechanism, omega_cal: f64) -> Mechanism {
     let unit = -mech.power(d, &steady_at(d, omega_cal));
     mech.scaled(data_power(d, law, omega_cal) / unit)
 }
