@@ -220,6 +220,9 @@ fn the_crossover_law_is_chosen_when_and_only_when_the_data_have_one() {
     let x = a.crossover.clone().unwrap();
     assert_eq!(a.models.candidates[0].name, "two mechanisms", "{a}");
     assert!(a.models.candidates[1].delta_bic > 10.0, "{a}");
+    // Its exponents differ as two mechanisms' do: called, decisively, not read as drift.
+    assert!(a.models.calls_two() && !a.models.drift, "{a}");
+    assert!(a.models.summary.contains("decisive evidence"), "{a}");
     assert!((x.beta_below - 1.0).abs() < 0.3, "{x:?}");
     assert!((x.beta_above - 4.0).abs() < 0.3, "{x:?}");
     assert!((x.omega_c / wc - 1.0).abs() < 0.1, "{x:?}");
@@ -243,6 +246,7 @@ fn the_crossover_law_is_chosen_when_and_only_when_the_data_have_one() {
         println!("  {} ({}): dBIC {:.1}", c.name, c.parameters, c.delta_bic);
     }
     assert_ne!(a.models.candidates[0].name, "two mechanisms", "{a}");
+    assert!(!a.models.calls_two(), "{a}");
     let l = a.law_stability.clone().unwrap();
     println!("{l:?}");
     assert!(!l.drifts, "{a}");

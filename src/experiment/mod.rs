@@ -30,6 +30,7 @@ pub mod coverage;
 pub mod coverage_record;
 pub mod crossover;
 pub mod csv;
+pub mod early_end;
 pub mod error;
 pub mod fit;
 pub mod input;
