@@ -220,6 +220,9 @@ fn the_crossover_law_is_chosen_when_and_only_when_the_data_have_one() {
     let x = a.crossover.clone().unwrap();
     assert_eq!(a.models.candidates[0].name, "two mechanisms", "{a}");
     assert!(a.models.candidates[1].delta_bic > 10.0, "{a}");
+    // Its exponents differ as two mechanisms' do: called, decisively, not read as drift.
+    assert!(a.models.calls_two() && !a.models.drift, "{a}");
+    assert!(a.models.summary.contains("decisive evidence"), "{a}");
     assert!((x.beta_below - 1.0).abs() < 0.3, "{x:?}");
     assert!((x.beta_above - 4.0).abs() < 0.3, "{x:?}");
     assert!((x.omega_c / wc - 1.0).abs() < 0.1, "{x:?}");
@@ -243,6 +246,7 @@ fn the_crossover_law_is_chosen_when_and_only_when_the_data_have_one() {
         println!("  {} ({}): dBIC {:.1}", c.name, c.parameters, c.delta_bic);
     }
     assert_ne!(a.models.candidates[0].name, "two mechanisms", "{a}");
+    assert!(!a.models.calls_two(), "{a}");
     let l = a.law_stability.clone().unwrap();
     println!("{l:?}");
     assert!(!l.drifts, "{a}");
@@ -525,4 +529,33 @@ fn stated_intervals_cover_the_truth_full_study() {
         assert!((0.62..=0.75).contains(&one), "{}", c.summary());
         assert!((0.92..=0.98).contains(&two), "{}", c.summary());
     }
+}
+
+/// On the report's own record (the built-in spin-down scene, eq 75 with beta = 2) eq 84 ends
+/// before the last pulse the disk makes: flagged in the text and the JSON; the eq 84 line quotes
+/// the total uncertainty; the model choice reads the two-mechanism law's small change of
+/// exponent as the single law's drift and does not call two mechanisms.
+#[test]
+fn the_reports_record_is_flagged_for_an_early_end_and_not_called_two_mechanisms() {
+    let scene = Scene::load("spin-down").unwrap();
+    let trace = simulate_trace(&scene, &LightModel::default()).unwrap();
+    let a = analyze(&trace, &AnalysisSettings::default()).unwrap();
+    let text = a.to_string();
+    println!("{text}");
+    let e = a.early_end.clone().unwrap_or_else(|| panic!("{text}"));
+    assert!(e.before > 0.005 && e.before < 0.02, "{e:?}");
+    assert!(e.last_peak <= trace.truth.as_ref().unwrap().t0, "{e:?}");
+    assert!(text.contains("the law ends too early"), "{text}");
+    assert!(a.to_json().contains("\"early_end\": {"), "{text}");
+    let (_, t0_total) = a.stated_sigmas();
+    assert!(t0_total > 2.0 * a.eq84.t0_sigma, "{text}");
+    assert!(text.contains(&format!(
+        "t0 = {:.6} +- {:.6} s (total",
+        a.eq84.t0, t0_total
+    )));
+    assert!(a.models.drift && !a.models.calls_two(), "{text}");
+    assert!(
+        text.contains("one law that drifts over the window"),
+        "{text}"
+    );
 }

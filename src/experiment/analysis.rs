@@ -4,6 +4,7 @@
 
 use crate::experiment::clean::{remove_glitches, remove_hum};
 use crate::experiment::crossover::{fit_crossover, CrossoverFit};
+use crate::experiment::early_end::{early_end, EarlyEnd};
 use crate::experiment::error::ExperimentError;
 use crate::experiment::fit::{fit_eq84, fit_eq85, Eq84Fit, Eq85Fit};
 use crate::experiment::law_stability::{later_half, LawStability};
@@ -136,6 +137,8 @@ pub struct Analysis {
     /// Eq 84 on the later half of the window: whether the law drifts, and its systematic
     /// uncertainty if it does.
     pub law_stability: Option<LawStability>,
+    /// Set when the fitted $t_0$ lies before the last detected pulse (physically impossible).
+    pub early_end: Option<EarlyEnd>,
     /// The plausibility checks (passed, or the analysis would have been refused).
     pub verdict: Verdict,
     /// The truth, if the trace carries one.
@@ -329,6 +332,7 @@ pub fn analyze(trace: &Trace, s: &AnalysisSettings) -> Result<Analysis, Experime
         faint,
     };
     let (beta_stated, t0_stated) = stated_sigmas(&eq84, law_stability.as_ref());
+    let early_end = early_end(eq84.t0, t0_stated, &peaks, min_span);
     let score = trace.truth.as_ref().map(|tr| Score {
         beta84_pull: (eq84.beta - tr.beta) / eq84.beta_sigma,
         t0_pull: (eq84.t0 - tr.t0) / eq84.t0_sigma,
@@ -354,6 +358,7 @@ pub fn analyze(trace: &Trace, s: &AnalysisSettings) -> Result<Analysis, Experime
         models,
         crossover,
         law_stability,
+        early_end,
         verdict,
         truth: trace.truth.clone(),
         score,
@@ -401,12 +406,16 @@ impl fmt::Display for Analysis {
             w.faint,
             w.omega_last
         )?;
+        let (beta_total, t0_total) = self.stated_sigmas();
         writeln!(
             f,
-            "  eq 84: beta = {:.4} +- {:.4}, t0 = {:.6} +- {:.6} s, C^(-1/(beta+2)) = {:.6e} +- {:.1e} s \
-             (reduced chi2 {:.2}, n = {})",
-            a.beta, a.beta_sigma, a.t0, a.t0_sigma, a.inv_omega_1s, a.inv_omega_1s_sigma, a.reduced_chi2, a.n
+            "  eq 84: beta = {:.4} +- {:.4}, t0 = {:.6} +- {:.6} s (total: statistical and the law's), \
+             C^(-1/(beta+2)) = {:.6e} +- {:.1e} s (reduced chi2 {:.2}, n = {})",
+            a.beta, beta_total, a.t0, t0_total, a.inv_omega_1s, a.inv_omega_1s_sigma, a.reduced_chi2, a.n
         )?;
+        if let Some(e) = &self.early_end {
+            writeln!(f, "  impossible end: {}", e.message)?;
+        }
         writeln!(
             f,
             "  eq 85: slope = {:.4} +- {:.4}, so beta = {:.4} +- {:.4} (reduced chi2 {:.2}, n = {})",

@@ -12,11 +12,16 @@
 //! $\mathrm{AIC} = -2\ln\hat L + 2k$, $\mathrm{BIC} = -2\ln\hat L + k\ln n$.
 //! A difference $\Delta$ from the best of 0-2 is "as good", 2-6 "positive", 6-10 "strong" and
 //! above 10 "decisive" evidence against (Kass & Raftery's scale, read for $\Delta\mathrm{BIC}$).
+//! The two-mechanism law is called only where its exponents differ as two mechanisms' do,
+//! calibrated on records of one mechanism ([`model_choice`](crate::experiment::model_choice)).
 
 #[cfg(doc)]
 use crate::experiment::crossover::fit_crossover;
 use crate::experiment::crossover::CrossoverFit;
 use crate::experiment::fit::{fit_eq84_fixed, Eq84Fit};
+use crate::experiment::model_choice::{
+    admits_two, calibration_sentence, MIN_EXPONENT_CHANGE, TWO_MECHANISMS,
+};
 use serde::Serialize;
 use std::f64::consts::PI;
 
@@ -52,6 +57,29 @@ pub struct Comparison {
     pub candidates: Vec<Candidate>,
     /// The verdict in words.
     pub summary: String,
+    /// True when the two-mechanism law has the least BIC but its exponents differ by less than
+    /// two mechanisms' do ([`admits_two`]): read as one law that drifts over the window, and
+    /// the best single law chosen.
+    pub drift: bool,
+}
+
+impl Comparison {
+    /// Whether the comparison calls two mechanisms: their law first by BIC and admitted.
+    pub fn calls_two(&self) -> bool {
+        !self.drift
+            && self
+                .candidates
+                .first()
+                .is_some_and(|c| c.name == TWO_MECHANISMS)
+    }
+
+    /// The law chosen: the least BIC, or the best single law where the two-mechanism law is
+    /// read as drift.
+    pub fn chosen(&self) -> Option<&Candidate> {
+        self.candidates
+            .iter()
+            .find(|c| !(self.drift && c.name == TWO_MECHANISMS))
+    }
 }
 
 /// The words of Kass & Raftery's scale for a BIC difference.
@@ -126,6 +154,7 @@ pub fn compare(n: usize, fits: Vec<(String, String, usize, f64, f64)>) -> Compar
         n,
         candidates: c,
         summary,
+        drift: false,
     }
 }
 
@@ -161,7 +190,7 @@ pub fn compare_laws(
     }
     if let Some(x) = crossover {
         candidates.push((
-            "two mechanisms".to_string(),
+            TWO_MECHANISMS.to_string(),
             format!(
                 "beta = {:.2} +- {:.2} below Omega_c = {:.0} +- {:.0} rad/s, {:.2} +- {:.2} \
                  above, t0 = {:.5} +- {:.5} s",
@@ -179,5 +208,55 @@ pub fn compare_laws(
             x.ln_det_sigma,
         ));
     }
-    compare(cyc_idx.len(), candidates)
+    let mut c = compare(cyc_idx.len(), candidates);
+    if let Some(x) = crossover {
+        judge_two(&mut c, x);
+    }
+    c
+}
+
+/// Where the two-mechanism law has the least BIC: admitted ([`admits_two`]), the summary says
+/// so with the calibration's false-alarm rate; not admitted, the comparison is marked as drift
+/// and its summary chooses the best single law.
+fn judge_two(c: &mut Comparison, x: &CrossoverFit) {
+    if c.candidates
+        .first()
+        .is_none_or(|b| b.name != TWO_MECHANISMS)
+    {
+        return;
+    }
+    if admits_two(
+        (x.beta_below, x.beta_below_sigma),
+        (x.beta_above, x.beta_above_sigma),
+    ) {
+        c.summary = format!(
+            "{} (the exponents differ by {:.2}, at least the {MIN_EXPONENT_CHANGE} between two \
+             mechanisms'; {})",
+            c.summary,
+            (x.beta_above - x.beta_below).abs(),
+            calibration_sentence()
+        );
+        return;
+    }
+    c.drift = true;
+    let two_by = c
+        .candidates
+        .iter()
+        .find(|s| s.name != TWO_MECHANISMS)
+        .map_or(f64::NAN, |s| s.delta_bic);
+    let single = c.chosen().map_or(String::from("none"), |s| {
+        format!("{} ({})", s.name, s.parameters)
+    });
+    c.summary = format!(
+        "one law that drifts over the window, not two mechanisms: the two-mechanism law has \
+         the least BIC (by {two_by:.1}), but its exponents, {:.2} +- {:.2} and {:.2} +- {:.2}, \
+         differ by less than the {MIN_EXPONENT_CHANGE} between two mechanisms' or than three \
+         of their uncertainties, as a single law's drift makes them ({}); the best single law \
+         is {single}",
+        x.beta_below,
+        x.beta_below_sigma,
+        x.beta_above,
+        x.beta_above_sigma,
+        calibration_sentence()
+    );
 }

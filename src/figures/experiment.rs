@@ -221,14 +221,19 @@ fn omega(e: &Experiment) -> Result<Figure, FigureError> {
              2 pi/period, an angular frequency). {} cycles; the last {} peaks are left out of the \
              fits, where the law breaks as the spin-down ends. The fastest fitted cycle is \
              {:.0} rad/s (the paper's last analysable cycle: 680). The dashed curve is eq 79 with \
-             the parameters fitted to eq 84: beta = {:.3} +- {:.3}, t0 = {:.4} +- {:.4} s.",
+             the parameters fitted to eq 84: beta = {:.3} +- {:.3}, t0 = {:.4} +- {:.4} s (total \
+             uncertainties: the fit's and the law's drift over the window).{}",
             a.cycles.len(),
             a.settings.drop_last,
             a.window.omega_last,
             f.beta,
-            f.beta_sigma,
+            a.stated_sigmas().0,
             f.t0,
-            f.t0_sigma
+            a.stated_sigmas().1,
+            a.early_end.as_ref().map_or(String::new(), |e| format!(
+                " Impossible end: {}.",
+                e.message
+            ))
         ),
         drawing: Drawing::Plot(plot),
     })
@@ -460,10 +465,16 @@ pub fn omega_band(a: &crate::experiment::Analysis) -> Figure {
         title: "The frequency track with the fitted law and its band".into(),
         caption: format!(
             "{}: the rate of each fitted cycle and eq 79 with the parameters of eq 84's fit, \
-             beta = {:.4} +- {:.4}, t0 = {:.5} +- {:.5} s; the dotted lines are the 95 % band \
-             of the curve from the fit's stated covariance (scaled by the whitened \
-             residuals' own covariance: reduced chi2 {:.2} and their correlation).",
-            a.source, f.beta, f.beta_sigma, f.t0, f.t0_sigma, f.reduced_chi2
+             beta = {:.4} +- {:.4}, t0 = {:.5} +- {:.5} s (total uncertainties: the fit's and \
+             the law's drift over the window); the dotted lines are the 95 % band of the curve \
+             from the fit's covariance (scaled by the whitened residuals' own covariance: \
+             reduced chi2 {:.2} and their correlation), without the law's drift.",
+            a.source,
+            f.beta,
+            a.stated_sigmas().0,
+            f.t0,
+            a.stated_sigmas().1,
+            f.reduced_chi2
         ),
         drawing: Drawing::Plot(plot),
     }

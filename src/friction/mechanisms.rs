@@ -79,7 +79,7 @@ pub struct MechanismSpinDown {
     /// Eq 84's $\beta$ with its standard uncertainty, when it could be fitted (also when the
     /// plausibility checks then refuse the fit).
     pub beta: Option<(f64, f64)>,
-    /// The law the comparison prefers, in words (not when refused).
+    /// The law the comparison chooses ([`Comparison::chosen`](crate::experiment::models::Comparison::chosen)), in words (not when refused).
     pub best_law: Option<String>,
     /// BIC of $\beta = 2$ above the best law's (0 when it is the best).
     pub delta_bic_beta_two: Option<f64>,
@@ -155,7 +155,7 @@ fn steady_at(d: &Disk, omega: f64) -> Motion {
 }
 
 /// The mechanism scaled to supply the record's power at $\Omega_{\rm cal}$.
-fn calibrated(d: &Disk, law: &Law, mech: &Mechanism, omega_cal: f64) -> Mechanism {
+pub fn calibrated(d: &Disk, law: &Law, mech: &Mechanism, omega_cal: f64) -> Mechanism {
     let unit = -mech.power(d, &steady_at(d, omega_cal));
     mech.scaled(data_power(d, law, omega_cal) / unit)
 }
@@ -276,8 +276,7 @@ pub fn spin_down(
     }
     let models = compare_laws(ta, tb, &idx, &w, &eq84, crossover.as_ref());
     out.best_law = models
-        .candidates
-        .first()
+        .chosen()
         .map(|c| format!("{} ({})", c.name, c.parameters));
     out.delta_bic_beta_two = models
         .candidates

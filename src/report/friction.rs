@@ -405,7 +405,7 @@ fn mechanisms(o: &mut String, m: &crate::friction::mechanisms::Mechanisms) {
             (None, Some(best)) => heading(
                 o,
                 &format!(
-                    "  {}: BIC prefers {best}; beta = 2 is {:.0} higher",
+                    "  {}: the model choice takes {best}; beta = 2's BIC is {:.0} above the least",
                     r.mechanism,
                     r.delta_bic_beta_two.unwrap_or(f64::NAN)
                 ),
