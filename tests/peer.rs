@@ -202,3 +202,30 @@ fn scenes_the_peer_cannot_run_are_refused_with_a_fix() {
         assert!(e.starts_with("x.yaml: ") && e.contains(words), "{e}");
     }
 }
+
+/// The accuracy both integrators reach: the fast slide run by both at rtol = atol = 1e-6, 1e-8 and
+/// 1e-10 (the peer with $\varepsilon = 10^{-7}$ m/s, so that only the integrators differ). The
+/// difference falls with the tolerance until it meets the peer's printed digits.
+#[test]
+fn tightening_both_tolerances_closes_the_gap_to_the_printed_digits() {
+    let d = dir("thick-sliding");
+    let mut tilt = Vec::new();
+    for (scene, result) in [
+        ("rtol-1e-6/scene.yaml", "rtol-1e-6/result.txt"),
+        ("rtol-1e-8/scene.yaml", "rtol-1e-8/result.txt"),
+        ("scene.yaml", "eps-1e-7/result.txt"),
+    ] {
+        let s = Scene::load(d.join(scene).to_str().unwrap()).unwrap();
+        let c = compare_file(&s, &d.join(result)).unwrap();
+        println!(
+            "{scene}: tilt {:.3e} rad, spin {:.3e} rad/s, heading {:.3e} rad",
+            c.tilt.value, c.spin.value, c.heading.value
+        );
+        tilt.push(c.tilt.value);
+    }
+    assert!(
+        tilt[0] > 10.0 * tilt[1] && tilt[1] > 10.0 * tilt[2],
+        "{tilt:?}"
+    );
+    assert!(tilt[2] < 1e-7);
+}
