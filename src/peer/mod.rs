@@ -18,6 +18,12 @@
 //! - it leaves rolling when the friction needed exceeds $\mu_s F_z$ by a margin of
 //!   $5\times10^{-3}\max(F_z/m, 1)$ (m/s², i.e. $\mu_s$ raised by about 0.005), and starts the slip
 //!   with a seed velocity of $5\varepsilon = 5$ mm/s against the friction;
+//! - it starts every run sliding; a relock it finds at its first print step is not carried out
+//!   and the run restarts sliding with the seed, so a scene that starts rolling starts there
+//!   with a 5 mm/s slip;
+//! - its resistance moments take the sign of the rotation they oppose, like this tool's, and
+//!   neither program has a phase in which that rotation stays stopped: where it passes through
+//!   zero and the moment could hold it, both stall;
 //! - it locates switches on a quadratic through three print points, so a switch time is known
 //!   to a fraction of the print step;
 //! - within $|\theta| < 0.02$ rad of upright it smooths the contact point's axial offset (a cubic

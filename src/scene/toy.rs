@@ -7,7 +7,9 @@
 //! resistance: { rolling: 1e-5, boring: 1e-4 }  # lever arms of the contact moments (m)
 //! ```
 //!
-//! See [`crate::model::sliding`]'s `toy.rs` for what each means.
+//! See [`crate::model::sliding`]'s `toy.rs` for what each means. A thick disk's `steady` start
+//! is the thin disk's eqs 29-30 with $k = I_{22}/ma^2$ and the solid's contact at rest: a start,
+//! not a steady motion of the solid.
 
 use super::{ModelKind, SceneSpec, Validator};
 use crate::model::sliding::{Resistance, Solid, Toy};
