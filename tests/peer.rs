@@ -229,3 +229,51 @@ fn tightening_both_tolerances_closes_the_gap_to_the_printed_digits() {
     );
     assert!(tilt[2] < 1e-7);
 }
+
+/// `peer export` and `peer compare` on the command line: the export is the stored response,
+/// the comparison prints its figures, and a file that is not the peer's is refused with its line.
+#[test]
+fn the_peer_commands_export_compare_and_refuse() {
+    let exe = env!("CARGO_BIN_EXE_rolling-disk");
+    let d = dir("thick-fall");
+    let scene = d.join("scene.yaml");
+    let out = std::process::Command::new(exe)
+        .args(["peer", "export", scene.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    let stored = std::fs::read_to_string(d.join("response.txt")).unwrap();
+    let body = |t: &str| t.lines().skip(2).collect::<Vec<_>>().join("\n");
+    assert_eq!(body(&text), body(&stored));
+    let out = std::process::Command::new(exe)
+        .args([
+            "peer",
+            "compare",
+            scene.to_str().unwrap(),
+            d.join("result.txt").to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        text.contains("tilt alpha") && text.contains("rolling/sliding changes"),
+        "{text}"
+    );
+    let out = std::process::Command::new(exe)
+        .args([
+            "peer",
+            "compare",
+            scene.to_str().unwrap(),
+            d.join("report.txt").to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        err.contains("report.txt:1: the first line is not the peer's header"),
+        "{err}"
+    );
+}
