@@ -1,6 +1,15 @@
 //! `peer export` and `peer compare`: the independent program's input and its comparison.
 
 use super::*;
+use std::io::Write;
+
+/// Writes `text` to standard output; a reader that closes the pipe early is not an error.
+fn print_text(text: &str) -> anyhow::Result<()> {
+    match std::io::stdout().lock().write_all(text.as_bytes()) {
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(e.into()),
+        _ => Ok(()),
+    }
+}
 
 pub(crate) fn peer_export(name: &str, out: Option<&Path>) -> anyhow::Result<()> {
     let scene = Scene::load(name)?;
@@ -8,7 +17,7 @@ pub(crate) fn peer_export(name: &str, out: Option<&Path>) -> anyhow::Result<()> 
     match out {
         Some(path) => write_atomically(path, text.as_bytes())
             .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?,
-        None => print!("{text}"),
+        None => print_text(&text)?,
     }
     Ok(())
 }
@@ -17,9 +26,8 @@ pub(crate) fn peer_compare(name: &str, result: &Path, json: bool) -> anyhow::Res
     let scene = Scene::load(name)?;
     let c = rolling_disk::peer::compare_file(&scene, result)?;
     if json {
-        println!("{}", serde_json::to_string_pretty(&c)?);
+        print_text(&format!("{}\n", serde_json::to_string_pretty(&c)?))
     } else {
-        print!("{c}");
+        print_text(&c.to_string())
     }
-    Ok(())
 }

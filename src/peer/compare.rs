@@ -74,6 +74,7 @@ pub fn peer_snapshot(model: &Sliding, p: &PeerState) -> Snapshot {
 /// the peer's `rows` (from [`super::result::parse`]).
 pub fn compare(scene: &Scene, rows: &[PeerRow]) -> Result<PeerComparison, PeerError> {
     let m = model(scene);
+    same_start(&m, scene, rows)?;
     let dt = scene
         .sample
         .unwrap_or(rows.get(1).map_or(1e-3, |r| r.t - rows[0].t));
@@ -142,6 +143,39 @@ pub fn compare(scene: &Scene, rows: &[PeerRow]) -> Result<PeerComparison, PeerEr
     out.switch_counts = (peer.len(), tool.len());
     out.switches = peer.iter().copied().zip(tool.iter().copied()).collect();
     Ok(out)
+}
+
+/// Refuses a record that does not start where the scene starts: its first row's centre height,
+/// tilt, spin and precession must be the scene's to the peer's printed digits (with room for
+/// their rounding).
+fn same_start(m: &Sliding, scene: &Scene, rows: &[PeerRow]) -> Result<(), PeerError> {
+    let Some(first) = rows.first() else {
+        return Ok(());
+    };
+    let (sa, sb) = (
+        m.snapshot(&m.start_state(&scene.start)),
+        peer_snapshot(m, &first.state),
+    );
+    let (a, b) = (sa.motion(), sb.motion());
+    let off = [
+        ("the centre's height", sa.centre.z - sb.centre.z),
+        ("tilt", a.alpha - b.alpha),
+        ("spin", a.spin - b.spin),
+        ("precession", a.precession - b.precession),
+    ];
+    for (what, d) in off {
+        if d.abs() > 1e-6 * (1.0 + a.spin.abs() + a.precession.abs()) || first.t != 0.0 {
+            return Err(PeerError::Scene(
+                scene.source.clone(),
+                format!(
+                    "the peer's record does not start where this scene starts ({what} differs by \
+                     {d:.3e} at t = {}): run the peer on this scene's `peer export`",
+                    first.t
+                ),
+            ));
+        }
+    }
+    Ok(())
 }
 
 impl std::fmt::Display for PeerComparison {
