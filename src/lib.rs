@@ -25,6 +25,7 @@ pub mod numerics;
 pub mod output;
 pub mod output_file;
 pub mod paper;
+pub mod peer;
 pub mod precision;
 pub mod report;
 pub mod run;

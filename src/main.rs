@@ -148,6 +148,10 @@ enum Command {
     /// scope CSV (synthetic or real).
     #[command(subcommand)]
     Experiment(ExperimentCommand),
+    /// An independent program as a reference (M. Batista's Euler disk simulation, built and run
+    /// by scripts/peer_run.sh): write its input for a scene, compare its output with this tool.
+    #[command(subcommand)]
+    Peer(PeerCommand),
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -162,6 +166,28 @@ enum ReportFormat {
 enum FigureFormat {
     Svg,
     Png,
+}
+
+#[derive(Subcommand)]
+enum PeerCommand {
+    /// Writes the peer's response file for a sliding scene with a thickness.
+    Export {
+        /// A scene file, or the name of a built-in scene.
+        scene: String,
+        /// Write to this file instead of standard output.
+        #[arg(long, value_name = "FILE")]
+        out: Option<PathBuf>,
+    },
+    /// Reads the peer's result.txt, runs the scene here, prints the largest differences.
+    Compare {
+        /// The scene the peer ran (as exported).
+        scene: String,
+        /// The peer's result.txt.
+        result: PathBuf,
+        /// Print the comparison as JSON.
+        #[arg(long)]
+        json: bool,
+    },
 }
 
 #[derive(Subcommand)]
@@ -305,6 +331,12 @@ fn main() -> ExitCode {
             wav,
             artifacts,
         }) => experiment_simulate(&scene, csv.as_deref(), wav.as_deref(), &artifacts),
+        Command::Peer(PeerCommand::Export { scene, out }) => peer_export(&scene, out.as_deref()),
+        Command::Peer(PeerCommand::Compare {
+            scene,
+            result,
+            json,
+        }) => peer_compare(&scene, &result, json),
         Command::Experiment(ExperimentCommand::Analyze { csv, out, json }) => {
             experiment_analyze(&csv, out.as_deref(), json)
         }

@@ -3,6 +3,7 @@
 //! sentence.
 
 pub(crate) mod checks;
+pub(crate) mod peer;
 pub(crate) mod report;
 pub(crate) mod section11;
 pub(crate) mod simulate;
@@ -11,6 +12,7 @@ pub(crate) mod stdout;
 
 pub(crate) use super::*;
 pub(crate) use checks::*;
+pub(crate) use peer::*;
 pub(crate) use report::*;
 pub(crate) use section11::*;
 pub(crate) use simulate::*;

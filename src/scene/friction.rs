@@ -24,7 +24,12 @@ const MU_MOST: f64 = 10.0;
 #[derive(Debug, Clone, Copy, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct FrictionSpec {
-    mu: f64,
+    #[serde(default)]
+    mu: Option<f64>,
+    #[serde(default, rename = "static")]
+    stat: Option<f64>,
+    #[serde(default)]
+    kinetic: Option<f64>,
     #[serde(default)]
     restitution: f64,
 }
@@ -79,16 +84,7 @@ impl Validator<'_> {
                 "the sliding model needs a friction law: add `friction: { mu: 0.3, restitution: 0.0 }`",
             ));
         };
-        if !(f.mu.is_finite() && f.mu >= 0.0 && f.mu <= MU_MOST) {
-            return Err(self.err(
-                &["friction", "mu"],
-                format!(
-                    "friction: mu must be a number from 0 (frictionless) to {MU_MOST} (real \
-                     pairs of surfaces have mu below about 1.5), got {}",
-                    f.mu
-                ),
-            ));
-        }
+        let mu = self.static_mu(&f)?;
         if !(f.restitution.is_finite() && (0.0..=1.0).contains(&f.restitution)) {
             return Err(self.err(
                 &["friction", "restitution"],
@@ -108,7 +104,7 @@ impl Validator<'_> {
         }
         Ok((
             Some(Friction {
-                mu: f.mu,
+                mu,
                 restitution: f.restitution,
             }),
             Slip {
@@ -116,6 +112,56 @@ impl Validator<'_> {
                 sideways: slip.sideways,
             },
         ))
+    }
+
+    /// Coulomb's static coefficient: `mu`, or `static` beside `kinetic` (toy scenes).
+    fn static_mu(&self, f: &FrictionSpec) -> Result<f64, SceneError> {
+        let (key, mu) = match (f.mu, f.stat, f.kinetic) {
+            (Some(mu), None, None) => ("mu", mu),
+            (None, Some(st), Some(_)) => ("static", st),
+            (Some(_), _, _) => {
+                return Err(self.err(
+                    &["friction", "mu"],
+                    "friction: give either mu (one coefficient) or static and kinetic, not both: remove mu or the other two",
+                ))
+            }
+            _ => {
+                return Err(self.err(
+                    &["friction"],
+                    "friction: give mu, or both static and kinetic (e.g. { static: 0.3, kinetic: 0.25 })",
+                ))
+            }
+        };
+        if !(mu.is_finite() && mu >= 0.0 && mu <= MU_MOST) {
+            return Err(self.err(
+                &["friction", key],
+                format!(
+                    "friction: {key} must be a number from 0 (frictionless) to {MU_MOST} (real \
+                     pairs of surfaces have mu below about 1.5), got {mu}"
+                ),
+            ));
+        }
+        Ok(mu)
+    }
+
+    /// The kinetic coefficient when `friction` gives one that differs from `static`;
+    /// refused above `static` (a slip would need more force than sticking allows).
+    pub(super) fn kinetic(&self, s: &SceneSpec) -> Result<Option<f64>, SceneError> {
+        let Some(f) = s.friction else {
+            return Ok(None);
+        };
+        let (Some(st), Some(k)) = (f.stat, f.kinetic) else {
+            return Ok(None);
+        };
+        if !(k.is_finite() && k >= 0.0 && k <= st) {
+            return Err(self.err(
+                &["friction", "kinetic"],
+                format!(
+                    "friction: kinetic must lie between 0 and static ({st}), got {k}: the                      coefficient of a slip is at most the one that holds a stick"
+                ),
+            ));
+        }
+        Ok((k != st).then_some(k))
     }
 
     /// Refuses a record quantity that `model` cannot provide (the contact quantities of the

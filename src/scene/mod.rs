@@ -21,6 +21,7 @@ mod mechanisms;
 pub mod message;
 pub mod range;
 mod spec;
+mod toy;
 mod validate;
 
 use spec::*;
@@ -31,7 +32,7 @@ use crate::disk::{Disk, DiskError};
 use crate::input;
 use crate::model::dissipation::PowerLaw;
 use crate::model::mechanism::Mechanism;
-use crate::model::sliding::{Friction, Slip};
+use crate::model::sliding::{Friction, Slip, Toy};
 use crate::model::steady::{rolling_straight, steady_motion, vertical_spin, SteadyError};
 use crate::model::{Extras, Motion, Quantity};
 use crate::solve::{Method, Projection, Settings};
@@ -132,6 +133,10 @@ pub struct Scene {
     pub friction: Option<Friction>,
     /// The contact point's velocity relative to rolling at the start (sliding model).
     pub slip: Slip,
+    /// Finite thickness, a kinetic coefficient and resistance (sliding model; thin and plain
+    /// when not asked for).
+    #[serde(skip_serializing_if = "Toy::is_thin")]
+    pub toy: Toy,
     /// The start, perturbation included.
     pub start: Motion,
     /// When to stop.

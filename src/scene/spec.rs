@@ -16,6 +16,8 @@ pub(super) struct SceneSpec {
     pub(super) mechanisms: Vec<mechanisms::MechanismSpec>,
     #[serde(default)]
     pub(super) friction: Option<friction::FrictionSpec>,
+    #[serde(default)]
+    pub(super) resistance: Option<toy::ResistanceSpec>,
     pub(super) start: StartSpec,
     pub(super) stop: StopSpec,
     #[serde(default)]
@@ -30,8 +32,13 @@ pub(super) struct SceneSpec {
 #[serde(deny_unknown_fields)]
 pub(super) struct DiskSpec {
     pub(super) radius: f64,
-    pub(super) k: f64,
+    #[serde(default)]
+    pub(super) k: Option<f64>,
     pub(super) mass: f64,
+    #[serde(default)]
+    pub(super) thickness: Option<f64>,
+    #[serde(default)]
+    pub(super) fillet: Option<f64>,
     #[serde(default = "earth_gravity")]
     pub(super) g: f64,
 }

@@ -39,7 +39,7 @@ impl Validator<'_> {
         let d = &s.disk;
         for (r, x) in [
             (range::RADIUS, d.radius),
-            (range::INERTIA_FACTOR, d.k),
+            (range::INERTIA_FACTOR, disk.k),
             (range::MASS, d.mass),
             (range::GRAVITY, d.g),
         ] {
@@ -130,7 +130,8 @@ impl Validator<'_> {
     }
 
     pub(super) fn scene(&self, s: SceneSpec) -> Result<Scene, SceneError> {
-        let disk = Disk::new(s.disk.radius, s.disk.k, s.disk.mass, s.disk.g).map_err(|e| {
+        let (k, solid) = self.solid(&s)?;
+        let disk = Disk::new(s.disk.radius, k, s.disk.mass, s.disk.g).map_err(|e| {
             let key = match e {
                 DiskError::Radius(_) => "radius",
                 DiskError::InertiaFactor(_) => "k",
@@ -142,6 +143,7 @@ impl Validator<'_> {
         let dissipation = self.dissipation(&s)?;
         let mechanisms = self.mechanisms(&s)?;
         let (friction, slip) = self.friction(&s)?;
+        let toy = self.toy(&s, solid)?;
         let start = self.start(&s.start, &disk, s.model)?;
         let stop = self.stop(&s.stop, &start, s.model)?;
         let record = self.record(&s.record, s.model)?;
@@ -181,6 +183,7 @@ impl Validator<'_> {
             mechanisms,
             friction,
             slip,
+            toy,
             start,
             stop,
             record,

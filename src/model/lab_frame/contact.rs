@@ -16,7 +16,7 @@
 use super::geometry::Snapshot;
 use super::{Contact, LabFrame};
 use crate::disk::Disk;
-use nalgebra::Vector3;
+use nalgebra::{Matrix3, Vector3};
 
 /// The contact condition $\dot{\mathbf v}_c = A\mathbf F - \mathbf b$ at one instant: the free
 /// acceleration term $\mathbf b$ (lab) and the diagonal of $A$ in the triad. Shared with the
@@ -31,6 +31,9 @@ pub(crate) struct ContactProblem {
     pub a22: f64,
     /// $A_{33} = 1/m$ (along $\hat{\mathbf 3}$).
     pub a3: f64,
+    /// The whole matrix $A$ in the lab, when it is not diagonal in the triad (a thick disk or
+    /// contact moments, [`crate::model::sliding`]); then it replaces the diagonal.
+    pub full: Option<Matrix3<f64>>,
 }
 
 impl ContactProblem {
@@ -47,11 +50,15 @@ impl ContactProblem {
             a1: inv_m + a2 / i2,
             a22: inv_m + a2 / i1,
             a3: inv_m,
+            full: None,
         }
     }
 
     /// $A\mathbf x$ for a lab vector $\mathbf x$, with the triad of `s`.
     pub(crate) fn apply(&self, s: &Snapshot, x: &Vector3<f64>) -> Vector3<f64> {
+        if let Some(a) = self.full {
+            return a * x;
+        }
         s.e1 * (self.a1 * x.dot(&s.e1))
             + s.e2 * (self.a22 * x.dot(&s.e2))
             + s.e3 * (self.a3 * x.dot(&s.e3))
@@ -59,6 +66,9 @@ impl ContactProblem {
 
     /// $A^{-1}\mathbf x$ for a lab vector $\mathbf x$, with the triad of `s`.
     pub(crate) fn solve(&self, s: &Snapshot, x: &Vector3<f64>) -> Vector3<f64> {
+        if let Some(a) = self.full {
+            return a.lu().solve(x).unwrap_or_else(Vector3::zeros);
+        }
         s.e1 * (x.dot(&s.e1) / self.a1)
             + s.e2 * (x.dot(&s.e2) / self.a22)
             + s.e3 * (x.dot(&s.e3) / self.a3)
@@ -69,7 +79,7 @@ impl LabFrame {
     /// $\mathbf F$ in the lab for the geometry `s`, from the exact contact condition (the
     /// stabilisation acts on the translation only, see [`LabFrame::drift_correction`]).
     pub(super) fn force(&self, s: &Snapshot) -> Vector3<f64> {
-        let ContactProblem { b, a1, a22, a3 } = ContactProblem::of(&self.disk, s);
+        let ContactProblem { b, a1, a22, a3, .. } = ContactProblem::of(&self.disk, s);
         match self.contact {
             Contact::Rolling => {
                 s.e1 * (b.dot(&s.e1) / a1)

@@ -1,8 +1,8 @@
 //! The smooth flow of one mode: Newton-Euler with the mode's contact force (module
 //! documentation of [`super`]), and what a state of that mode records.
 
-use super::{energy_of, horizontal, Mode, Sliding, DISSIPATED};
-use crate::model::lab_frame::{inertia, Snapshot};
+use super::{horizontal, Mode, Sliding, DISSIPATED};
+use crate::model::lab_frame::Snapshot;
 use crate::model::{Layout, Model, Motion, Quantity};
 use crate::solve::{Dynamics, State};
 use nalgebra::{Quaternion, Vector3};
@@ -19,7 +19,7 @@ pub struct Flow<'a> {
 impl Flow<'_> {
     /// The geometry of `y`.
     pub fn snapshot(&self, y: &State<14>) -> Snapshot {
-        Snapshot::of(self.model.disk.a, y)
+        self.model.snapshot(y)
     }
 
     /// The contact force in this mode (lab, N).
@@ -47,11 +47,15 @@ impl Dynamics<14> for Flow<'_> {
         let s = self.snapshot(y);
         let d = &self.model.disk;
         let f = self.model.contact_force(&self.mode, &s).force;
-        let i = inertia(d);
+        let i = self.model.inertia();
         let drag = self.model.drag_torque(&s);
+        let resist = match self.mode {
+            Mode::Flight => Vector3::zeros(),
+            _ => f.z * self.model.resistance_arm(&s),
+        };
         let torque_body = s
             .rotation
-            .inverse_transform_vector(&(s.rho.cross(&f) + drag));
+            .inverse_transform_vector(&(s.rho.cross(&f) + drag + resist));
         let w = s.omega_body;
         let w_dot = (torque_body - w.cross(&i.component_mul(&w))).component_div(&i);
         let q = Quaternion::new(y[0], y[1], y[2], y[3]);
@@ -65,7 +69,7 @@ impl Dynamics<14> for Flow<'_> {
         dy.fixed_rows_mut::<3>(4).copy_from(&w_dot);
         dy.fixed_rows_mut::<3>(7).copy_from(&s.velocity);
         dy.fixed_rows_mut::<3>(10).copy_from(&acc);
-        dy[DISSIPATED] = -drag.dot(&s.omega)
+        dy[DISSIPATED] = -(drag + resist).dot(&s.omega)
             + match self.mode {
                 Mode::Slip { .. } => -horizontal(&f).dot(&horizontal(&s.contact_velocity)),
                 _ => 0.0,
@@ -97,9 +101,9 @@ impl Model<14> for Flow<'_> {
             Quantity::Heading => out.push(s.heading()),
             Quantity::Path => out.extend_from_slice(&[s.centre.x, s.centre.y]),
             Quantity::Face => out.push(s.face()),
-            Quantity::Energy => out.push(energy_of(&self.model.disk, &s)),
+            Quantity::Energy => out.push(self.model.energy_at(&s)),
             Quantity::Lz => {
-                let i = inertia(&self.model.disk);
+                let i = self.model.inertia();
                 out.push((s.rotation * i.component_mul(&s.omega_body)).z);
             }
             Quantity::NormalForce => out.push(self.force(y).z),

@@ -23,8 +23,8 @@
 //! ($e = 0$): without that floor, $e > 0$ gives Zeno's infinite sequence of ever shorter
 //! flights.
 
-use super::{energy_of, horizontal, Sliding, DISSIPATED};
-use crate::model::lab_frame::{inertia, Snapshot};
+use super::{horizontal, Sliding, DISSIPATED};
+use crate::model::lab_frame::Snapshot;
 use crate::solve::State;
 use nalgebra::Vector3;
 
@@ -54,7 +54,7 @@ impl Sliding {
                 s.e2
             }
         };
-        let unit = Vector3::z() - mu * dir;
+        let unit = Vector3::z() - self.mu_kinetic() * dir;
         let denom = cp.apply(s, &unit).z;
         if denom <= 0.0 {
             return stick;
@@ -65,15 +65,16 @@ impl Sliding {
     /// The state after impulse `p` at the contact of `y`, with the energy lost added to $W$.
     pub(crate) fn apply_impulse(&self, y: &State<14>, p: &Vector3<f64>) -> (State<14>, f64) {
         let d = &self.disk;
-        let s = Snapshot::of(d.a, y);
-        let e0 = energy_of(d, &s);
+        let s = self.snapshot(y);
+        let e0 = self.energy_at(&s);
         let mut out = *y;
-        let dw = (s.rotation.inverse_transform_vector(&s.rho.cross(p))).component_div(&inertia(d));
+        let dw =
+            (s.rotation.inverse_transform_vector(&s.rho.cross(p))).component_div(&self.inertia());
         for i in 0..3 {
             out[4 + i] += dw[i];
             out[10 + i] += p[i] / d.m;
         }
-        let lost = e0 - energy_of(d, &Snapshot::of(d.a, &out));
+        let lost = e0 - self.energy_at(&self.snapshot(&out));
         out[DISSIPATED] += lost;
         (out, lost)
     }
@@ -82,7 +83,7 @@ impl Sliding {
     /// $\mathbf P = -A^{-1}\mathbf v_c$ (no cone: it removes a residue of size $v_0$ left by
     /// locating the end of a slip, always a loss, $\frac12\mathbf v_c\cdot A^{-1}\mathbf v_c$).
     pub(crate) fn settle(&self, y: &State<14>) -> State<14> {
-        let s = Snapshot::of(self.disk.a, y);
+        let s = self.snapshot(y);
         let cp = self.contact_problem(&s);
         let p = -cp.solve(&s, &s.contact_velocity);
         self.apply_impulse(y, &p).0

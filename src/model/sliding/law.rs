@@ -79,7 +79,7 @@ impl Sliding {
         s: &Snapshot,
         dir: &Vector3<f64>,
     ) -> ContactForce {
-        let unit = Vector3::z() - self.friction.mu * dir;
+        let unit = Vector3::z() - self.mu_kinetic() * dir;
         let denom = cp.apply(s, &unit).z;
         let consistency = denom * self.disk.m;
         if consistency <= 0.0 {

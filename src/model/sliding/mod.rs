@@ -52,13 +52,15 @@ pub mod scene;
 mod switching;
 #[cfg(test)]
 mod tests;
+mod toy;
 
 pub use flow::Flow;
 pub use switching::{guard, SlidingRun};
+pub use toy::{Resistance, Solid, Toy};
 
 use crate::disk::Disk;
 use crate::model::dissipation::PowerLaw;
-use crate::model::lab_frame::{inertia, Contact, ContactProblem, LabFrame, Snapshot};
+use crate::model::lab_frame::{Contact, ContactProblem, LabFrame, Snapshot};
 use crate::model::{Extras, Layout, Motion};
 use crate::solve::State;
 use nalgebra::Vector3;
@@ -135,6 +137,8 @@ pub struct Sliding {
     pub drag: Option<PowerLaw>,
     /// The most switches a run may take before it halts (default 10,000).
     pub max_switches: usize,
+    /// Finite thickness, a kinetic coefficient, resistance (`toy.rs`); thin and plain by default.
+    pub toy: Toy,
     layout: Layout,
 }
 
@@ -149,6 +153,7 @@ impl Sliding {
             stop_at_lift_off: false,
             drag: None,
             max_switches: 10_000,
+            toy: Toy::default(),
             layout: Layout::new(14, Extras::default()),
         }
     }
@@ -186,9 +191,17 @@ impl Sliding {
     /// $I^{-1}\mathbf N$ added to the free one (so that sticking, slipping and the guards all see it).
     pub(crate) fn contact_problem(&self, s: &Snapshot) -> ContactProblem {
         let mut cp = ContactProblem::of(&self.disk, s);
+        if let Some(full) = self.full_contact_matrix(s) {
+            let i = self.inertia();
+            let spin = s.omega.dot(&s.e1);
+            let w_dot_free = -(i.x - i.y) / i.y * spin * s.omega.cross(&s.e1);
+            cp.b =
+                self.disk.g * Vector3::z() - w_dot_free.cross(&s.rho) - s.omega.cross(&s.rho_dot);
+            cp.full = Some(full);
+        }
         if self.drag.is_some() {
             let n = self.drag_torque(s);
-            let (i1, i2) = (self.disk.i11(), self.disk.i22());
+            let (i1, i2) = (self.inertia().x, self.inertia().y);
             let w_dot = n / i2 + s.e1 * (n.dot(&s.e1) * (1.0 / i1 - 1.0 / i2));
             cp.b -= w_dot.cross(&s.rho);
         }
@@ -212,7 +225,16 @@ impl Sliding {
         let lab = LabFrame::new(self.disk, Contact::Rolling);
         let y13 = lab.state_from(m, 0.0, [0.0, 0.0], 0.0);
         let mut y = extend(&y13);
-        let s = Snapshot::of(self.disk.a, &y);
+        if self.toy.solid.is_some() {
+            // The thin start's attitude and rotation, the solid's contact at the origin at rest.
+            let s = self.snapshot(&y);
+            let v = -s.omega.cross(&s.rho);
+            y[9] = -s.rho.z;
+            for i in 0..3 {
+                y[10 + i] = v[i];
+            }
+        }
+        let s = self.snapshot(&y);
         let dv = self.slip.forward * s.e2 + self.slip.sideways * s.r;
         for i in 0..3 {
             y[10 + i] += dv[i];
@@ -222,8 +244,7 @@ impl Sliding {
 
     /// Total energy $\frac12 m|\mathbf v|^2 + \frac12\boldsymbol\omega_b\cdot I\boldsymbol\omega_b + mgz$ (J).
     pub fn energy(&self, y: &State<14>) -> f64 {
-        let s = Snapshot::of(self.disk.a, y);
-        energy_of(&self.disk, &s)
+        self.energy_at(&self.snapshot(y))
     }
 
     /// The layout (14 core states, no extras: heading, path and face are read geometrically).
@@ -239,12 +260,16 @@ pub fn extend(y13: &State<13>) -> State<14> {
     y
 }
 
-pub(crate) fn energy_of(d: &Disk, s: &Snapshot) -> f64 {
-    let i = inertia(d);
-    let w = s.omega_body;
-    0.5 * d.m * s.velocity.norm_squared()
-        + 0.5 * w.dot(&i.component_mul(&w))
-        + d.m * d.g * s.centre.z
+impl Sliding {
+    /// The total energy at the geometry `s` (J).
+    pub(crate) fn energy_at(&self, s: &Snapshot) -> f64 {
+        let d = &self.disk;
+        let i = self.inertia();
+        let w = s.omega_body;
+        0.5 * d.m * s.velocity.norm_squared()
+            + 0.5 * w.dot(&i.component_mul(&w))
+            + d.m * d.g * s.centre.z
+    }
 }
 
 pub(crate) fn horizontal(v: &Vector3<f64>) -> Vector3<f64> {

@@ -7,7 +7,7 @@ use crate::run::Run;
 use crate::scene::Scene;
 use crate::solve::{Event, SettingsError, State};
 use serde::Serialize;
-use std::f64::consts::PI;
+use std::f64::consts::{FRAC_PI_2, PI};
 
 /// One change of the contact in a run: a switch between stick, slip and flight, or an impact.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -49,6 +49,7 @@ pub fn model(scene: &Scene) -> Sliding {
         m = m.with_drag(law);
     }
     m.stop_at_lift_off = scene.stop.lift_off;
+    m.toy = scene.toy;
     m
 }
 
@@ -69,6 +70,12 @@ pub fn integrate(
 ) -> Result<SlidingRun, SettingsError> {
     let alpha = |y: &State<14>| tilt(y);
     let below = scene.stop.alpha_below;
+    let thick = model.toy.solid.is_some();
+    let side = if scene.start.alpha < FRAC_PI_2 {
+        1.0
+    } else {
+        -1.0
+    };
     let stops = move || {
         let mut v = vec![
             Event::new("the disk fell flat on the table (alpha reached 0)", alpha),
@@ -77,6 +84,13 @@ pub fn integrate(
                 move |y: &State<14>| PI - alpha(y),
             ),
         ];
+        if thick {
+            v.push(Event::new(
+                "the thick disk reached the vertical, where it stands on a line (the point \
+                 contact model ends)",
+                move |y: &State<14>| side * (FRAC_PI_2 - alpha(y)),
+            ));
+        }
         if let Some(b) = below {
             v.push(Event::new(
                 format!("alpha fell below {b} rad"),

@@ -18,7 +18,6 @@
 
 use super::{horizontal, Mode, Sliding, DISSIPATED};
 use crate::events::{run_hybrid, Hybrid, HybridProblem, HybridSolution, Jump};
-use crate::model::lab_frame::Snapshot;
 use crate::solve::{Event, Settings, SettingsError, State};
 use nalgebra::Vector3;
 
@@ -61,7 +60,7 @@ impl Sliding {
     /// roll $\alpha_0 = 0.4$, $b = 0.02$ m with $\mu = 0.3$); restarting from rest takes the
     /// consistent direction instead (`law.rs`), or sticks where the cone allows.
     pub fn enter_contact(&self, y: &State<14>) -> (Mode, State<14>) {
-        let s = Snapshot::of(self.disk.a, y);
+        let s = self.snapshot(y);
         let vt = horizontal(&s.contact_velocity);
         let n = vt.norm();
         if n > 2.0 * self.hold_speed() {
@@ -84,7 +83,7 @@ impl Sliding {
     /// [`Sliding::mode_from_rest`] at `y`, projecting the contact point's residual velocity
     /// (at most $10v_0$) to zero when it sticks or slips from rest.
     fn start_from_rest(&self, y: &State<14>) -> (Mode, State<14>) {
-        match self.mode_from_rest(&Snapshot::of(self.disk.a, y)) {
+        match self.mode_from_rest(&self.snapshot(y)) {
             Mode::Flight => (Mode::Flight, *y),
             m => (m, self.settle(y)),
         }
@@ -96,10 +95,10 @@ impl Sliding {
     pub(crate) fn land(&self, y: &State<14>) -> Jump<Mode, 14> {
         let d = &self.disk;
         let mut y = *y;
-        let h = Snapshot::of(d.a, &y).height;
+        let h = self.snapshot(&y).height;
         y[9] -= h;
         y[DISSIPATED] += d.m * d.g * h;
-        let s = Snapshot::of(d.a, &y);
+        let s = self.snapshot(&y);
         let vc = s.contact_velocity;
         // A rebound slower than the bounce floor is not flown: the landing is plastic.
         let e = if -vc.z * self.friction.restitution > self.bounce_floor() {
@@ -117,7 +116,7 @@ impl Sliding {
                 -lost
             ));
         }
-        let vz = Snapshot::of(d.a, &after).contact_velocity.z;
+        let vz = self.snapshot(&after).contact_velocity.z;
         if vz > self.bounce_floor() {
             return Jump::To {
                 mode: Mode::Flight,
@@ -164,18 +163,15 @@ impl Hybrid<14> for Sliding {
     }
 
     fn guards<'a>(&'a self, mode: &Mode) -> Vec<Event<'a, 14>> {
-        let a = self.disk.a;
         let mu = self.friction.mu;
         match *mode {
             Mode::Stick => vec![
                 Event::new(guard::FRICTION_LIMIT, move |y: &State<14>| {
-                    let f = self.contact_force(&Mode::Stick, &Snapshot::of(a, y)).force;
+                    let f = self.contact_force(&Mode::Stick, &self.snapshot(y)).force;
                     mu * f.z - horizontal(&f).norm()
                 }),
                 Event::new(guard::CONTACT_LOST, move |y: &State<14>| {
-                    self.contact_force(&Mode::Stick, &Snapshot::of(a, y))
-                        .force
-                        .z
+                    self.contact_force(&Mode::Stick, &self.snapshot(y)).force.z
                 }),
             ],
             Mode::Slip { anchor, held } => {
@@ -185,25 +181,25 @@ impl Hybrid<14> for Sliding {
                         let floor = self.slip_floor();
                         let s0 = Vector3::from(anchor);
                         Event::new(guard::SLIP_ENDS, move |y: &State<14>| {
-                            horizontal(&Snapshot::of(a, y).contact_velocity).dot(&s0) + floor
+                            horizontal(&self.snapshot(y).contact_velocity).dot(&s0) + floor
                         })
                     } else {
                         let vh = self.hold_speed();
                         Event::new(guard::HOLD, move |y: &State<14>| {
-                            horizontal(&Snapshot::of(a, y).contact_velocity).norm() - vh
+                            horizontal(&self.snapshot(y).contact_velocity).norm() - vh
                         })
                     },
                     Event::new(guard::CONTACT_LOST, move |y: &State<14>| {
-                        self.contact_force(&mode, &Snapshot::of(a, y)).force.z
+                        self.contact_force(&mode, &self.snapshot(y)).force.z
                     }),
                     Event::new(guard::PAINLEVE, move |y: &State<14>| {
-                        self.contact_force(&mode, &Snapshot::of(a, y)).consistency
+                        self.contact_force(&mode, &self.snapshot(y)).consistency
                     }),
                 ];
                 if held {
                     let vh2 = 2.0 * self.hold_speed();
                     g.push(Event::new(guard::RELEASE, move |y: &State<14>| {
-                        vh2 - horizontal(&Snapshot::of(a, y).contact_velocity).norm()
+                        vh2 - horizontal(&self.snapshot(y).contact_velocity).norm()
                     }));
                 }
                 g
@@ -211,14 +207,14 @@ impl Hybrid<14> for Sliding {
             Mode::Flight => {
                 let margin = self.landing_margin();
                 vec![Event::new(guard::LANDING, move |y: &State<14>| {
-                    Snapshot::of(a, y).height + margin
+                    self.snapshot(y).height + margin
                 })]
             }
         }
     }
 
     fn jump(&self, mode: &Mode, guard: usize, y: &State<14>) -> Jump<Mode, 14> {
-        let s = Snapshot::of(self.disk.a, y);
+        let s = self.snapshot(y);
         match (*mode, guard) {
             (Mode::Stick, 0) => {
                 let cp = self.contact_problem(&s);
