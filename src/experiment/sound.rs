@@ -145,11 +145,11 @@ impl Microphone {
         Ok(())
     }
 
-    /// A phone's recording at `rate` S/s: 11 s (less where the readers' sample limit asks), the
+    /// A phone's recording at `rate` S/s: 10 s (less where the readers' sample limit asks), the
     /// end 1.5 s before the record's, amplitude 0.3, noise 0.003, [`Voice::phone`].
     pub fn phone(rate: u32, seed: u64) -> Self {
         let rate = rate.max(1);
-        let samples = (11 * rate as usize).min(crate::experiment::input::MAX_SAMPLES);
+        let samples = (10 * rate as usize).min(crate::experiment::input::MAX_SAMPLES);
         Self {
             sample_rate: rate,
             samples,
