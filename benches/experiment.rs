@@ -1,6 +1,6 @@
 //! The analysis of a paper-sized trace (50,000 samples at 5 kS/s): peaks, rates, both fits and
 //! the model choice; and of a 10 s sound recording at 8 kHz (80,000 samples): the spectral
-//! track and its fits.
+//! track and its fits; and of a phone's minute at 48 kHz (2,880,000 samples).
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use rolling_disk::experiment::plausibility::Plausibility;
@@ -36,6 +36,23 @@ fn analysis(c: &mut Criterion) {
     c.bench_function("experiment/analyze_sound 80k samples", |b| {
         b.iter(|| analyze_sound(black_box(&sound), &track, &checks).expect("analysable"))
     });
+    // A phone's minute at 48 kHz (2,880,000 samples), the spin-down ending 1.5 s before its end.
+    let minute = Microphone {
+        samples: 2_880_000,
+        end_at: 58.5,
+        ..Microphone::phone(48_000, 3)
+    };
+    let slow = Law {
+        beta: 2.0,
+        c: 100f64.powi(4) * 58.0,
+    };
+    let long = law_sound(&slow, &minute, &Artifacts::none()).expect("a valid recording");
+    let mut group = c.benchmark_group("experiment/analyze_sound 60 s at 48 kHz");
+    group.sample_size(10);
+    group.bench_function("2.88M samples", |b| {
+        b.iter(|| analyze_sound(black_box(&long), &track, &checks).expect("analysable"))
+    });
+    group.finish();
 }
 
 criterion_group!(benches, analysis);

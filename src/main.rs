@@ -201,9 +201,15 @@ enum ExperimentCommand {
         /// Write the scope's light signal to this CSV.
         #[arg(long, value_name = "FILE", required_unless_present = "wav")]
         csv: Option<PathBuf>,
-        /// Write the disk's sound (16-bit mono, 8 kHz) to this WAV.
+        /// Write the disk's sound (mono) to this file, as WAV or FLAC (see --format).
         #[arg(long, value_name = "FILE", conflicts_with = "csv")]
         wav: Option<PathBuf>,
+        /// The sound's sample rate (S/s), 1000 to 384000.
+        #[arg(long, value_name = "R", default_value_t = 48000)]
+        rate: u32,
+        /// The sound's coding: 16-bit WAV, 24-bit WAV, 32-bit float WAV, or 16-bit FLAC.
+        #[arg(long, value_enum, default_value = "wav")]
+        format: experiment::SoundFormat,
         #[command(flatten)]
         artifacts: ArtifactArgs,
     },
@@ -220,6 +226,9 @@ enum ExperimentCommand {
         /// Print the analysis as JSON.
         #[arg(long)]
         json: bool,
+        /// For a sound recording: the channel analysed, from 1, or `mix` for their mean.
+        #[arg(long, value_name = "N|mix", default_value = "mix")]
+        channel: String,
     },
 }
 
@@ -329,17 +338,27 @@ fn main() -> ExitCode {
             scene,
             csv,
             wav,
+            rate,
+            format,
             artifacts,
-        }) => experiment_simulate(&scene, csv.as_deref(), wav.as_deref(), &artifacts),
+        }) => experiment_simulate(
+            &scene,
+            csv.as_deref(),
+            wav.as_deref().map(|w| (w, rate, format)),
+            &artifacts,
+        ),
         Command::Peer(PeerCommand::Export { scene, out }) => peer_export(&scene, out.as_deref()),
         Command::Peer(PeerCommand::Compare {
             scene,
             result,
             json,
         }) => peer_compare(&scene, &result, json),
-        Command::Experiment(ExperimentCommand::Analyze { csv, out, json }) => {
-            experiment_analyze(&csv, out.as_deref(), json)
-        }
+        Command::Experiment(ExperimentCommand::Analyze {
+            csv,
+            out,
+            json,
+            channel,
+        }) => experiment_analyze(&csv, out.as_deref(), json, &channel),
     };
     cli::stdout::flush();
     match result {

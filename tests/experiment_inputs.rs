@@ -265,9 +265,9 @@ fn a_wav_of_a_spinning_disk_is_analysed_end_to_end() {
         let back = read_wav(&path).unwrap();
         let tr = track::frequency_track(&back, &TrackSettings::default()).unwrap();
         println!(
-            "track: {} frames of {}, {} kept, {} silent, {} stray, {} smeared",
+            "track: {} frames of {:?} s, {} kept, {} silent, {} stray, {} smeared",
             tr.frames,
-            tr.frame,
+            tr.frame_span,
             tr.points.len(),
             tr.silent,
             tr.stray,
@@ -352,7 +352,7 @@ fn the_cli_simulates_and_analyses_a_wav_and_refuses_noise() {
     let track = std::fs::read_to_string(dir.join("track.csv")).unwrap();
     assert!(frames > 6, "{frames} frames");
     assert_eq!(track.lines().count(), frames + 1);
-    assert!(track.starts_with("t_start_s,t_end_s,omega_rad_s,snr\n"));
+    assert!(track.starts_with("t_start_s,t_end_s,omega_rad_s,sigma_rad_s,check_rad_s,snr\n"));
     let noise = temp("noise.csv");
     let rows: String = (0..5000)
         .map(|j| {

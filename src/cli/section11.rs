@@ -5,20 +5,16 @@ use super::*;
 pub(crate) fn experiment_simulate(
     name: &str,
     csv: Option<&Path>,
-    wav: Option<&Path>,
+    wav: Option<(&Path, u32, experiment::SoundFormat)>,
     args: &ArtifactArgs,
 ) -> anyhow::Result<()> {
     let scene = Scene::load(name)?;
     eprintln!("simulating the recording of {}...", scene.name);
-    let (path, bytes, trace) = if let Some(path) = wav {
-        let mic = experiment::Microphone {
-            seed: args.seed,
-            ..experiment::Microphone::default()
-        };
+    let (path, bytes, trace) = if let Some((path, rate, format)) = wav {
+        let mic = experiment::Microphone::phone(rate, args.seed);
         let a = args.artifacts(2.0 * mic.amplitude);
         let trace = experiment::simulate_sound(&scene, &mic, &a)?;
-        let bytes = experiment::wav_bytes(&trace.v, mic.sample_rate)
-            .map_err(|e| anyhow::anyhow!("cannot encode the WAV: {e}"))?;
+        let bytes = experiment::encode_sound(&trace.v, rate, format)?;
         (path, bytes, trace)
     } else if let Some(path) = csv {
         let mut light = experiment::LightModel::default();
@@ -46,19 +42,37 @@ pub(crate) fn experiment_simulate(
     Ok(())
 }
 
-pub(crate) fn experiment_analyze(csv: &Path, out: Option<&Path>, json: bool) -> anyhow::Result<()> {
-    let is_wav = csv
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("wav"));
+pub(crate) fn experiment_analyze(
+    csv: &Path,
+    out: Option<&Path>,
+    json: bool,
+    channel: &str,
+) -> anyhow::Result<()> {
+    let is_sound = csv.extension().is_some_and(|e| {
+        [
+            "wav", "wave", "flac", "mp3", "ogg", "oga", "m4a", "mp4", "aac",
+        ]
+        .iter()
+        .any(|x| e.eq_ignore_ascii_case(x))
+    });
+    let channels = match channel {
+        "mix" => experiment::Channels::Mix,
+        n => experiment::Channels::One(n.parse().map_err(|_| {
+            anyhow::anyhow!(
+                "--channel {n}: give a channel number from 1 (1 = left), or mix for the channels' mean"
+            )
+        })?),
+    };
     // The output set is checked before any work, and written whole or not at all.
     let set = out.map(SetWriter::begin).transpose()?;
-    let (text, files) = if is_wav {
-        let trace = experiment::read_wav(csv)?;
-        let a = experiment::analyze_sound(
-            &trace,
+    let (text, files) = if is_sound {
+        let rec = experiment::read_recording(csv, channels)?;
+        let mut a = experiment::analyze_sound(
+            &rec.trace,
             &experiment::TrackSettings::default(),
             &experiment::plausibility::Plausibility::default(),
         )?;
+        a.recording = Some(rec.info);
         let text = if json { a.to_json() } else { a.to_string() };
         let files = match &set {
             Some(set) => experiment::write_sound_analysis(&a, set.dir())?,

@@ -1,15 +1,17 @@
-//! The analysis of a sound recording: its frequency track ([`track`](crate::experiment::track)),
+//! The analysis of a sound recording: its pitch track ([`track`](crate::experiment::track)),
 //! eq 79 fitted to it, the model choice and the spin-down checks.
 //!
-//! Each frame $[a_k, b_k]$ gives $\Omega_k$, the Hann-weighted mean of the rate over the frame
-//! (the centre of a chirp's spectral line); the law's own weighted mean
-//! $$\bar\Omega_k = \frac{\int_{a_k}^{b_k} w(t)\,\Omega(t)\,dt}{\int_{a_k}^{b_k} w(t)\,dt}, \qquad
+//! Each frame $[a_k, b_k]$ gives $\Omega_k$, the mean of the rate over the frame weighted by the
+//! window's energy $w^2$, $w$ the Hann window (a spectrum's centroid is the instantaneous
+//! frequency's mean weighted by the windowed signal's energy); the law's own weighted mean
+//! $$\bar\Omega_k = \frac{\int_{a_k}^{b_k} w^2(t)\,\Omega(t)\,dt}{\int_{a_k}^{b_k} w^2(t)\,dt}, \qquad
 //!   \Omega(t) = \left(\frac{C}{t_0 - t}\right)^{1/(\beta+2)} \quad (79),$$
 //! (32 midpoints) is fitted to it, so the rate's change within a frame costs no bias.
-//! Frames do not overlap and their errors are taken as independent with a common, unknown
-//! variance: the covariance is $s^2 (J^{\mathsf T}J)^{-1}$ with $s^2$ the residual variance
-//! ([`least_squares`](crate::experiment::least_squares), here with unit prior variances in
-//! rad/s, so that it is always scaled).
+//! Frames do not overlap and their errors are taken as independent, each with its own
+//! variance $\sigma_k^2$ from the track (noise and the pitch's motion) as the weight; the
+//! covariance is $s^2 (J^{\mathsf T}J)^{-1}$ of the whitened problem with $s^2$ the reduced
+//! $\chi^2$ ([`least_squares`](crate::experiment::least_squares), [`Scale::Unknown`]), so a
+//! common misstatement of the $\sigma_k$ is measured by the residuals.
 
 use crate::experiment::band::Row;
 use crate::experiment::error::ExperimentError;
@@ -27,7 +29,7 @@ use std::fmt;
 /// Midpoints per frame of the law's weighted mean.
 const MIDPOINTS: usize = 32;
 
-/// Eq 79's Hann-weighted frame means.
+/// Eq 79's frame means weighted by the Hann window's square.
 struct TrackLaw<'a> {
     a: &'a [f64],
     b: &'a [f64],
@@ -44,7 +46,7 @@ impl Problem<3> for TrackLaw<'_> {
         let mut g = SVector::<f64, 3>::zeros();
         for j in 0..MIDPOINTS {
             let u = (j as f64 + 0.5) / MIDPOINTS as f64;
-            let w = (PI * u).sin().powi(2);
+            let w = (PI * u).sin().powi(4);
             let t = self.a[i] + u * (self.b[i] - self.a[i]);
             let ln_tau = (p[1] - t).ln();
             let om = (q * (p[2] - ln_tau)).exp();
@@ -89,6 +91,8 @@ pub struct TrackFit {
     pub ln_c_sigma: f64,
     /// The rms residual (rad/s).
     pub rms: f64,
+    /// The reduced $\chi^2$ of the weighted residuals.
+    pub chi2_dof: f64,
     /// Frames fitted.
     pub n: usize,
     /// The law's frame means (rad/s), one per track point.
@@ -100,6 +104,8 @@ pub struct TrackFit {
 pub struct SoundAnalysis {
     /// The recording.
     pub source: String,
+    /// What the file is (format, rate, channels, length), when it was read from a file.
+    pub recording: Option<crate::experiment::recording::RecordingInfo>,
     /// The track.
     pub track: FrequencyTrack,
     /// The fit.
@@ -140,7 +146,7 @@ pub fn analyze_sound(
     let mid: Vec<f64> = a.iter().zip(&b).map(|(a, b)| 0.5 * (a + b)).collect();
     let inv: Vec<f64> = y.iter().map(|o| 1.0 / o).collect();
     let bmax = b.iter().copied().fold(f64::MIN, f64::max);
-    let w = vec![1.0; y.len()];
+    let w: Vec<f64> = pts.iter().map(|p| p.sigma.powi(2)).collect();
     let law = TrackLaw {
         a: &a,
         b: &b,
@@ -160,7 +166,8 @@ pub fn analyze_sound(
         t0_sigma: s.cov[(1, 1)].sqrt(),
         ln_c: s.p[2],
         ln_c_sigma: s.cov[(2, 2)].sqrt(),
-        rms: (s.chi2 / y.len() as f64).sqrt(),
+        rms: (s.residual.iter().map(|r| r * r).sum::<f64>() / y.len() as f64).sqrt(),
+        chi2_dof: s.s2,
         n: y.len(),
         model: s.model.clone(),
     };
@@ -214,6 +221,7 @@ pub fn analyze_sound(
     }
     Ok(SoundAnalysis {
         source: trace.source.clone(),
+        recording: None,
         models: compare(y.len(), candidates),
         track,
         fit,
@@ -226,11 +234,25 @@ impl fmt::Display for SoundAnalysis {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let (t, x) = (&self.track, &self.fit);
         writeln!(f, "sound: {}", self.source)?;
+        if let Some(r) = &self.recording {
+            writeln!(f, "  recording: {r}")?;
+        }
         writeln!(
             f,
-            "  {} frames of {} samples at {} S/s; {} on the line Omega/2pi ({} silent, {} stray, {} smeared left out)",
-            t.frames, t.frame, t.sample_rate, t.points.len(), t.silent, t.stray, t.smeared
+            "  {} frames of {:.1} to {:.1} ms at {:.0} S/s; {} on the line Omega/2pi ({} silent, {} stray, {} smeared left out)",
+            t.frames,
+            1e3 * t.frame_span.0,
+            1e3 * t.frame_span.1,
+            t.sample_rate,
+            t.points.len(),
+            t.silent,
+            t.stray,
+            t.smeared
         )?;
+        if !t.hum.is_empty() {
+            let lines: Vec<String> = t.hum.iter().map(|h| format!("{h:.2}")).collect();
+            writeln!(f, "  mains hum subtracted at {} Hz", lines.join(", "))?;
+        }
         if let (Some(p), Some(q)) = (t.points.first(), t.points.last()) {
             writeln!(
                 f,
@@ -245,8 +267,8 @@ impl fmt::Display for SoundAnalysis {
         }
         writeln!(
             f,
-            "  eq 79: beta = {:.4} +- {:.4}, t0 = {:.5} +- {:.5} s, ln C = {:.3} +- {:.3} (rms residual {:.3} rad/s, n = {}; errors scaled by the residuals)",
-            x.beta, x.beta_sigma, x.t0, x.t0_sigma, x.ln_c, x.ln_c_sigma, x.rms, x.n
+            "  eq 79: beta = {:.4} +- {:.4}, t0 = {:.5} +- {:.5} s, ln C = {:.3} +- {:.3} (rms residual {:.3} rad/s, n = {}, chi2/dof {:.2}; errors scaled by the residuals)",
+            x.beta, x.beta_sigma, x.t0, x.t0_sigma, x.ln_c, x.ln_c_sigma, x.rms, x.n, x.chi2_dof
         )?;
         writeln!(f, "  model choice: {}", self.models.summary)?;
         for c in &self.models.candidates {
@@ -277,11 +299,15 @@ impl SoundAnalysis {
         serde_json::to_string_pretty(self).unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))
     }
 
-    /// The frequency track as CSV: frame start and end (s), $\Omega$ (rad/s), signal-to-noise.
+    /// The frequency track as CSV: frame start and end (s), $\Omega$ (rad/s), its standard
+    /// uncertainty (rad/s), the cross-check's $\Omega$ (rad/s), signal-to-noise.
     pub fn track_csv(&self) -> String {
-        let mut s = String::from("t_start_s,t_end_s,omega_rad_s,snr\n");
+        let mut s = String::from("t_start_s,t_end_s,omega_rad_s,sigma_rad_s,check_rad_s,snr\n");
         for p in &self.track.points {
-            s.push_str(&format!("{},{},{},{}\n", p.a, p.b, p.omega, p.snr));
+            s.push_str(&format!(
+                "{},{},{},{},{},{}\n",
+                p.a, p.b, p.omega, p.sigma, p.check, p.snr
+            ));
         }
         s
     }

@@ -120,6 +120,18 @@ pub enum ExperimentError {
         /// What the decoder said.
         message: String,
     },
+    /// A sound recording that can be read but not used, or not decoded.
+    #[error("{file}: {format} recording: {message}: {fix}")]
+    Audio {
+        /// The file.
+        file: String,
+        /// What the file is (container and coding).
+        format: String,
+        /// What is wrong.
+        message: String,
+        /// What to change.
+        fix: String,
+    },
     /// The data are not a disk spinning down: the analysis refuses to report a fit.
     #[error("{file}: not a spin-down, no fit reported: {reason}")]
     Refused {

@@ -22,7 +22,7 @@
 //! 6. **an exponent inside the physics**: $\beta$ between -0.5 and 8 (the mechanisms of sec. 11
 //!    have 1 to 4), not at the fit's bounds.
 //!
-//! Any failure is a refusal with the numbers that failed.
+//! Each failed check is a refusal with its numbers; a check that passed is not listed.
 
 use serde::{Deserialize, Serialize};
 
@@ -141,11 +141,18 @@ impl Plausibility {
             (Some(a), Some(b)) if *a > 0.0 => b / a,
             _ => 0.0,
         };
-        if tau < self.min_kendall || rise < self.min_rise {
+        if tau < self.min_kendall {
             refusals.push(format!(
                 "the rate does not rise steadily (Kendall tau of t and Omega {tau:.2}, at least \
-                 {} needed; Omega rises by a factor {rise:.2}, at least {} needed)",
-                self.min_kendall, self.min_rise
+                 {} needed)",
+                self.min_kendall
+            ));
+        }
+        if rise < self.min_rise {
+            refusals.push(format!(
+                "the rate does not rise enough (Omega rises by a factor {rise:.2} across the \
+                 window, at least {} needed)",
+                self.min_rise
             ));
         }
         let my = e.y.iter().sum::<f64>() / e.y.len().max(1) as f64;

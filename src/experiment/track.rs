@@ -1,57 +1,67 @@
-//! A frequency-vs-time track from a sound recording, by short-time spectra (`rustfft`).
+//! A pitch track from a sound recording, in seconds and hertz, whatever the sample rate.
 //!
 //! **Which line is followed.** The sound of a spinning disk is at the contact point's rate,
 //! $\Omega/2\pi$, with harmonics at $h\Omega/2\pi$ (see [`sound`](crate::experiment::sound)).
-//! Each frame's fundamental is the frequency $f$ that maximises the harmonic sum
-//! $S(f) = \sum_{h=1}^{3} \tilde M(hf)$ of the cleaned magnitude spectrum: at the true
-//! fundamental all three harmonics add, at half of it only one does, at twice it only the even
-//! ones. So the track follows $\Omega$ itself, not a harmonic, even where the second harmonic is
-//! the loudest.
+//! Each frame's fundamental is found by the harmonic sum and refined by reassignment, with a
+//! parabola as the cross-check ([`spectrum`](crate::experiment::spectrum)). Mains hum is
+//! subtracted first ([`hum`](crate::experiment::hum)).
 //!
-//! **Hum.** $\tilde M_k$ is the magnitude with the bins within 4 Hz of the mains lines (50 and
-//! 60 Hz and their harmonics) set to zero: the track is never drawn to hum, and where the disk's
-//! line crosses a mains line those frames fall out as stray or silent. (A median background
-//! over frames was tried first: it also removed the disk's own line early in the record, where
-//! the rate changes slowly.) Each frame's mean is removed (drift); clipped or dropped samples
-//! only broaden the lines.
+//! **Frames follow the pitch.** Frames are contiguous and do not overlap (their errors are
+//! independent). Until a line is held, frames of `search` seconds look for a fundamental
+//! between 5 Hz and 2 kHz. Once three frames in a row hold it, the next frame's length is
+//! chosen from the line's motion $\dot f$ so that the pitch moves by at most `kappa` of a
+//! frequency resolution across it,
+//! $$T = \min\left(T_{max}, \sqrt{\kappa/|\dot f|}\right),$$
+//! long early where the pitch moves slowly, short near $t_0$, and at most half the time left
+//! to the singularity that $\dot f \propto f^q$ (fitted to the last three frames) predicts, so
+//! that no frame runs past the disk's end; and the search narrows to
+//! $\pm 20\,\%$ about the predicted pitch. The track ends where $T$ would hold fewer than
+//! `cycles` periods (the line smears near $t_0$) after four frames in a row held the line;
+//! that end counts as one smeared frame.
 //!
-//! **Precision.** Frames of $L$ samples (a power of two, at least 0.2 s: four cycles of the
-//! slowest rate, 100 rad/s), Hann-windowed,
-//! zero-padded four times, not overlapping (so their errors are independent). Each harmonic's
-//! peak is placed by a parabola through the log-magnitudes of its three highest bins, and the
-//! fundamental is their weighted mean $\sum_h w_h f_h/h / \sum_h w_h$, $w_h = (h M_h)^2$.
+//! **Each point's uncertainty** is the noise's (from the frame's own power over its noise, see
+//! [`spectrum`](crate::experiment::spectrum)) and the pitch's motion within the frame, in
+//! quadrature. The fit takes the rate's mean over the frame weighted by the window's energy
+//! $w^2$; the estimate may miss the curvature's part of it, about
+//! $|\ddot f|\,\mathrm{Var}_{w^2}(t)/2$ with $\mathrm{Var}_{w^2}(t) = T^2(1/4 - 15/(8\pi^2))/3$
+//! the time variance of $w^2$, which is taken as that part's standard deviation ($\ddot f$
+//! from the neighbouring points).
 //!
-//! **Where the track stops.** Frames whose rate changes by more than `max_change` of itself
-//! across the frame are left out with all later ones (near $t_0$ the line smears over many
-//! bins), as are frames whose peak is not `min_snr` times the frame's median magnitude
-//! (silence after the disk settles, and the last frame before a silence, in which the disk may
-//! settle) and frames more than 10 % off the median of their four
-//! neighbours (a stray line).
+//! **Left out.** Frames whose two estimators disagree by more than 5 of their sigmas plus a
+//! hundredth of the resolution $1/T$, and frames found by the wide search that lie more than
+//! 10 % off the median of their four neighbours, as stray; frames without a line, as silent; the last frame before a silence
+//! (the disk may settle inside it), as smeared.
 
 use crate::experiment::error::ExperimentError;
+use crate::experiment::hum::remove_hum;
+use crate::experiment::spectrum::{Analyser, Estimate};
 use crate::experiment::trace::Trace;
-use rustfft::num_complex::Complex;
-use rustfft::FftPlanner;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
 /// How the track is made.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct TrackSettings {
-    /// Frame length (s), rounded up to a power of two samples.
-    pub frame: f64,
-    /// Largest relative change of the rate across a frame.
-    pub max_change: f64,
-    /// A frame's peak must exceed its median magnitude this many times.
+    /// Frame length (s) while searching for the line.
+    pub search: f64,
+    /// Longest frame (s).
+    pub max_frame: f64,
+    /// Largest pitch motion across a frame, in frequency resolutions: $\dot f T^2$.
+    pub kappa: f64,
+    /// Fewest periods of the fundamental in a frame.
+    pub cycles: f64,
+    /// A harmonic counts when its power stands this many times above the noise per bin.
     pub min_snr: f64,
 }
 
 impl Default for TrackSettings {
     fn default() -> Self {
         Self {
-            frame: 0.2,
-            max_change: 0.12,
-            min_snr: 10.0,
+            search: 0.5,
+            max_frame: 0.25,
+            kappa: 0.5,
+            cycles: 3.0,
+            min_snr: 30.0,
         }
     }
 }
@@ -63,9 +73,13 @@ pub struct TrackPoint {
     pub a: f64,
     /// Frame end (s).
     pub b: f64,
-    /// The fundamental, $\Omega$ (rad/s).
+    /// The fundamental, $\Omega$ (rad/s), by reassignment.
     pub omega: f64,
-    /// The fundamental's magnitude over the frame's median.
+    /// Its standard uncertainty (rad/s): the noise's and the motion's in quadrature.
+    pub sigma: f64,
+    /// The fundamental by parabolic interpolation (rad/s), the cross-check.
+    pub check: f64,
+    /// The harmonics' power over the noise's per bin.
     pub snr: f64,
 }
 
@@ -74,8 +88,8 @@ pub struct TrackPoint {
 pub struct FrequencyTrack {
     /// Sample rate (S/s).
     pub sample_rate: f64,
-    /// Frame length (samples).
-    pub frame: usize,
+    /// The shortest and longest frame analysed (s).
+    pub frame_span: (f64, f64),
     /// Frames analysed.
     pub frames: usize,
     /// Frames kept, in time order.
@@ -86,19 +100,20 @@ pub struct FrequencyTrack {
     pub stray: usize,
     /// (see `silent`)
     pub smeared: usize,
+    /// Mains lines subtracted (Hz).
+    pub hum: Vec<f64>,
 }
 
-/// The parabola's vertex offset through three log-magnitudes around a local maximum.
-fn vertex(l: f64, c: f64, r: f64) -> f64 {
-    let d = l - 2.0 * c + r;
-    if d < 0.0 {
-        (0.5 * (l - r) / d).clamp(-0.5, 0.5)
-    } else {
-        0.0
-    }
+/// A frame as analysed: its span and what it held.
+struct Frame {
+    a: f64,
+    b: f64,
+    est: Option<Estimate>,
+    /// Searched over the whole band (no line held before it).
+    searched: bool,
 }
 
-/// The frequency track of a uniformly sampled sound recording.
+/// The pitch track of a uniformly sampled sound recording.
 pub fn frequency_track(
     trace: &Trace,
     s: &TrackSettings,
@@ -111,151 +126,219 @@ pub fn frequency_track(
         )));
     }
     let fs = 1.0 / dt;
-    let len = ((s.frame * fs).ceil() as usize).next_power_of_two().max(64);
-    let nfft = 4 * len;
-    let frames = trace.v.len() / len;
-    if frames < 8 {
+    let span = trace.v.len() as f64 * dt;
+    if span < 8.0 * s.search {
         return Err(ExperimentError::TooFewPeaks {
             file,
-            what: "spectral frames".into(),
-            found: frames,
-            needed: 8,
-            hint: format!("record at least {:.2} s of sound", 8.0 * len as f64 / fs),
+            what: "seconds of sound".into(),
+            found: span as usize,
+            needed: (8.0 * s.search).ceil() as usize,
+            hint: format!("record at least {:.1} s of sound", 8.0 * s.search),
         });
     }
-    let half = nfft / 2;
-    let fft = FftPlanner::<f64>::new().plan_fft_forward(nfft);
-    let window: Vec<f64> = (0..len)
-        .map(|j| (PI * (j as f64 + 0.5) / len as f64).sin().powi(2))
-        .collect();
-    let mut mags: Vec<Vec<f64>> = Vec::with_capacity(frames);
-    let mut buf = vec![Complex::new(0.0, 0.0); nfft];
-    for k in 0..frames {
-        let x = &trace.v[k * len..(k + 1) * len];
-        let mean = x.iter().sum::<f64>() / len as f64;
-        for (j, c) in buf.iter_mut().enumerate() {
-            *c = if j < len {
-                Complex::new((x[j] - mean) * window[j], 0.0)
-            } else {
-                Complex::new(0.0, 0.0)
-            };
-        }
-        fft.process(&mut buf);
-        mags.push(buf[..=half].iter().map(|c| c.norm()).collect());
-    }
-    let median = |v: &mut Vec<f64>| {
-        let m = v.len() / 2;
-        *v.select_nth_unstable_by(m, f64::total_cmp).1
-    };
-    // Bins within 4 Hz of a mains line (50, 60 Hz and harmonics up to 1 kHz) are not followed.
-    let bin_hz = fs / nfft as f64;
-    let mains: Vec<bool> = (0..=half)
-        .map(|b| {
-            let f = b as f64 * bin_hz;
-            [50.0, 60.0].iter().any(|m: &f64| {
-                let h = (f / m).round();
-                (1.0..=20.0).contains(&h) && (f - h * m).abs() < 4.0
-            })
-        })
-        .collect();
-    let b_lo = ((5.0 / bin_hz).ceil() as usize).max(2);
-    let b_hi = half / 3 - 2;
-    let mut raw: Vec<Option<TrackPoint>> = Vec::with_capacity(frames);
-    let mut silent = 0;
-    for (k, m) in mags.iter().enumerate() {
-        let clean: Vec<f64> = m
-            .iter()
-            .zip(&mains)
-            .map(|(x, hum)| if *hum { 0.0 } else { *x })
-            .collect();
-        let best = (b_lo..b_hi)
-            .map(|b| (b, clean[b] + clean[2 * b] + clean[3 * b]))
-            .max_by(|x, y| x.1.total_cmp(&y.1));
-        let floor = median(&mut m.clone()).max(f64::MIN_POSITIVE);
-        let Some((b0, _)) = best else {
-            silent += 1;
-            raw.push(None);
-            continue;
-        };
-        // The local maximum of harmonic h near h b0, and its refined frequency.
-        let refine = |h: usize| -> (f64, f64) {
-            let c = h * b0;
-            let lo = c.saturating_sub(2).max(1);
-            let hi = (c + 2).min(half - 1);
-            let p = (lo..=hi)
-                .max_by(|x, y| m[*x].total_cmp(&m[*y]))
-                .unwrap_or(c);
-            let ln = |b: usize| m[b].max(f64::MIN_POSITIVE).ln();
-            let d = vertex(ln(p - 1), ln(p), ln(p + 1));
-            ((p as f64 + d) * fs / nfft as f64, m[p])
-        };
-        let (f1, m1) = refine(1);
-        if m1 < s.min_snr * floor {
-            silent += 1;
-            raw.push(None);
-            continue;
-        }
-        let (mut num, mut den) = (0.0, 0.0);
-        for h in 1..=3usize {
-            let (f, mh) = if h == 1 { (f1, m1) } else { refine(h) };
-            if mh >= s.min_snr * floor {
-                let w = (h as f64 * mh).powi(2);
-                num += w * f / h as f64;
-                den += w;
-            }
-        }
-        let a = trace.t[k * len];
-        raw.push(Some(TrackPoint {
-            a,
-            b: a + len as f64 * dt,
-            omega: 2.0 * PI * num / den,
-            snr: m1 / floor,
-        }));
-    }
-    // Stray lines: off the median of their four neighbours by more than 10 %.
-    let mut smeared = 0;
-    let om: Vec<Option<f64>> = raw.iter().map(|p| p.map(|p| p.omega)).collect();
-    let mut stray = 0;
-    let mut kept: Vec<TrackPoint> = Vec::new();
-    for (k, p) in raw.iter().enumerate() {
-        let Some(p) = p else { continue };
-        if k + 1 < frames && raw[k + 1].is_none() {
-            // The last sound before a silence: the disk may settle inside this frame.
+    let mut v = trace.v.clone();
+    let hum = remove_hum(&mut v, fs);
+    let (frames, smeared_end) = march(&v, trace.t[0], fs, s);
+    let lens: Vec<f64> = frames.iter().map(|f| f.b - f.a).collect();
+    let frame_span = (
+        lens.iter().copied().fold(f64::INFINITY, f64::min),
+        lens.iter().copied().fold(0.0, f64::max),
+    );
+    let silent = frames.iter().filter(|f| f.est.is_none()).count();
+    let (mut kept, mut stray, mut smeared) = (Vec::<(TrackPoint, bool)>::new(), 0, smeared_end);
+    for (k, fr) in frames.iter().enumerate() {
+        let Some(e) = fr.est else { continue };
+        if k + 1 < frames.len() && frames[k + 1].est.is_none() {
             smeared += 1;
             continue;
         }
-        let mut nb: Vec<f64> = (k.saturating_sub(2)..(k + 3).min(frames))
+        let tol = 5.0 * e.sigma + 0.01 / (fr.b - fr.a);
+        if (e.f - e.check).abs() > tol {
+            stray += 1;
+            continue;
+        }
+        let p = TrackPoint {
+            a: fr.a,
+            b: fr.b,
+            omega: 2.0 * PI * e.f,
+            sigma: 2.0 * PI * e.sigma,
+            check: 2.0 * PI * e.check,
+            snr: e.snr,
+        };
+        kept.push((p, fr.searched));
+    }
+    let mut points = Vec::with_capacity(kept.len());
+    for (k, (p, searched)) in kept.iter().enumerate() {
+        let mut nb: Vec<f64> = (k.saturating_sub(2)..(k + 3).min(kept.len()))
             .filter(|&j| j != k)
-            .filter_map(|j| om[j])
+            .map(|j| kept[j].0.omega)
             .collect();
-        if nb.len() >= 2 {
-            let m = median(&mut nb);
-            if (p.omega / m - 1.0).abs() > 0.1 {
+        if *searched && nb.len() >= 2 {
+            let m = nb.len() / 2;
+            let med = *nb.select_nth_unstable_by(m, f64::total_cmp).1;
+            if (p.omega / med - 1.0).abs() > 0.1 {
                 stray += 1;
                 continue;
             }
         }
-        kept.push(*p);
+        points.push(*p);
     }
-    // Smeared: from the first frame across which the rate changes too much.
-    if kept.len() >= 3 {
-        let cut = (1..kept.len() - 1).find(|&k| {
-            let span = kept[k + 1].a - kept[k - 1].a;
-            let change = (kept[k + 1].omega - kept[k - 1].omega) / kept[k].omega;
-            change * (kept[k].b - kept[k].a) / span > s.max_change
-        });
-        if let Some(c) = cut {
-            smeared = kept.len() - c;
-            kept.truncate(c);
-        }
-    }
+    add_motion(&mut points);
     Ok(FrequencyTrack {
         sample_rate: fs,
-        frame: len,
-        frames,
-        points: kept,
+        frame_span,
+        frames: frames.len(),
+        points,
         silent,
         stray,
         smeared,
+        hum,
     })
+}
+
+/// Walks the record frame by frame (see the module's documentation); returns the frames and 1
+/// when the track ended because the line moved too fast for a frame (counted as one smeared
+/// frame), else 0.
+fn march(v: &[f64], t0: f64, fs: f64, s: &TrackSettings) -> (Vec<Frame>, usize) {
+    let mut an = Analyser::new(fs);
+    let mut frames: Vec<Frame> = Vec::new();
+    let mut pos = 0usize;
+    let mut smeared = 0;
+    loop {
+        let (len_s, lo, hi) = match predict(&frames) {
+            Some(motion) => {
+                // T and the pitch at the frame's middle, each from the other (two rounds).
+                let mut t = s.max_frame;
+                let mut f_mid = motion.f;
+                let limit = s.max_frame.min(0.5 * motion.remaining());
+                for _ in 0..3 {
+                    f_mid = motion.pitch(motion.end + 0.5 * t);
+                    let fdot = motion.slope(f_mid);
+                    t = (s.kappa / fdot.max(f64::MIN_POSITIVE)).sqrt().min(limit);
+                }
+                let n = frames.len();
+                if t * f_mid >= s.cycles {
+                    (t, 0.8 * f_mid, 1.2 * f_mid)
+                } else if n >= 4 && frames[n - 4..].iter().all(|f| f.est.is_some()) {
+                    smeared = 1;
+                    break;
+                } else {
+                    (s.search, 0.0, 2000.0)
+                }
+            }
+            None => (s.search, 0.0, 2000.0),
+        };
+        let len = ((len_s * fs).round() as usize).max(16);
+        if pos + len > v.len() {
+            break;
+        }
+        let band = (lo.max(5.0).max(2.5 / len_s), hi.min(2000.0));
+        let est = an.fundamental(&v[pos..pos + len], band.0, band.1, s.min_snr);
+        frames.push(Frame {
+            a: t0 + pos as f64 / fs,
+            b: t0 + (pos + len) as f64 / fs,
+            est,
+            searched: lo == 0.0,
+        });
+        pos += len;
+    }
+    (frames, smeared)
+}
+
+/// The line's motion at the end of the frames held: the last pitch $f$ at time $t$, its rate
+/// $\dot f$, and the exponent $q$ of $\dot f \propto f^q$ (from the last three frames, 0 with two).
+struct Motion {
+    f: f64,
+    t: f64,
+    fdot: f64,
+    q: f64,
+    end: f64,
+}
+
+impl Motion {
+    /// $\dot f$ at pitch `f`.
+    fn slope(&self, f: f64) -> f64 {
+        self.fdot.abs() * (f / self.f).powf(self.q)
+    }
+
+    /// The time from the last frame's end to the singularity of $\dot f \propto f^q$ (for
+    /// $q > 1$, $t_0 - t = f/((q-1)\dot f)$); infinite for $q \le 1$.
+    fn remaining(&self) -> f64 {
+        if self.q > 1.0 && self.fdot > 0.0 {
+            self.f / ((self.q - 1.0) * self.fdot) - (self.end - self.t)
+        } else {
+            f64::INFINITY
+        }
+    }
+
+    /// The pitch at time `t`, by two midpoint steps of $\dot f(f)$.
+    fn pitch(&self, t: f64) -> f64 {
+        let h = 0.5 * (t - self.t);
+        let mut f = self.f;
+        for _ in 0..2 {
+            let mid = f + 0.5 * h * self.slope(f);
+            f += h * self.slope(mid);
+        }
+        f
+    }
+}
+
+/// The line's motion from the last frames when the last three held it.
+fn predict(frames: &[Frame]) -> Option<Motion> {
+    let mid = |f: &Frame| 0.5 * (f.a + f.b);
+    let n = frames.len();
+    if n < 2 {
+        return None;
+    }
+    if n < 3 || frames[n - 3..].iter().any(|f| f.est.is_none()) {
+        return None;
+    }
+    let (p, q) = (&frames[n - 2], &frames[n - 1]);
+    let (e, g) = (p.est?, q.est?);
+    let fdot = (g.f - e.f) / (mid(q) - mid(p));
+    let exponent = match frames[n - 3].est.map(|d| (&frames[n - 3], d)) {
+        Some((o, d)) => {
+            let fdot0 = (e.f - d.f) / (mid(p) - mid(o));
+            let r = (fdot / fdot0).ln() / (0.5 * (g.f + e.f) / (0.5 * (e.f + d.f))).ln();
+            if r.is_finite() {
+                r.clamp(0.0, 8.0)
+            } else {
+                0.0
+            }
+        }
+        None => 0.0,
+    };
+    Some(Motion {
+        f: g.f,
+        t: mid(q),
+        fdot,
+        q: exponent,
+        end: q.b,
+    })
+}
+
+/// Adds the pitch's motion within each frame to its uncertainty (see the module's
+/// documentation).
+fn add_motion(points: &mut [TrackPoint]) {
+    let n = points.len();
+    if n < 3 {
+        return;
+    }
+    let mid = |p: &TrackPoint| 0.5 * (p.a + p.b);
+    let curv: Vec<f64> = (0..n)
+        .map(|k| {
+            let j = k.clamp(1, n - 2);
+            let (p, q, r) = (&points[j - 1], &points[j], &points[j + 1]);
+            let (t0, t1, t2) = (mid(p), mid(q), mid(r));
+            let d1 = (q.omega - p.omega) / (t1 - t0);
+            let d2 = (r.omega - q.omega) / (t2 - t1);
+            2.0 * (d2 - d1) / (t2 - t0)
+        })
+        .collect();
+    let var_w = (0.25 - 15.0 / (8.0 * PI * PI)) / 3.0;
+    for (p, c) in points.iter_mut().zip(curv) {
+        let t = p.b - p.a;
+        let motion = 0.5 * c.abs() * var_w * t * t;
+        p.sigma = p.sigma.hypot(motion);
+    }
 }

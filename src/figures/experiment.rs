@@ -560,9 +560,11 @@ pub fn sound_track(s: &crate::experiment::SoundAnalysis) -> Figure {
         name: "sound_track",
         title: "Frequency track of a sound recording".into(),
         caption: format!(
-            "{}: the fundamental of each {}-sample frame (the contact point's rate Omega/2 pi, \
-             chosen by the harmonic sum of three harmonics) and eq 79's frame means fitted to it.",
-            s.source, s.track.frame
+            "{}: the fundamental of each frame of {:.1} to {:.1} ms (the contact point's rate \
+             Omega/2 pi, chosen by the harmonic sum) and eq 79's frame means fitted to it.",
+            s.source,
+            1e3 * s.track.frame_span.0,
+            1e3 * s.track.frame_span.1
         ),
         drawing: Drawing::Plot(plot),
     }

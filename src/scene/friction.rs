@@ -157,7 +157,7 @@ impl Validator<'_> {
             return Err(self.err(
                 &["friction", "kinetic"],
                 format!(
-                    "friction: kinetic must lie between 0 and static ({st}), got {k}: the                      coefficient of a slip is at most the one that holds a stick"
+                    "friction: kinetic must lie between 0 and static ({st}), got {k}: the coefficient of a slip is at most the one that holds a stick"
                 ),
             ));
         }

@@ -1,0 +1,216 @@
+//! One frame of a sound recording: its fundamental, with sub-bin precision and an uncertainty
+//! (`rustfft`).
+//!
+//! **Transform.** The frame's $n$ samples (mean removed) are weighted by the Hann window
+//! $w(t) = \sin^2(\pi t/T)$ and, in the same complex transform, by its derivative
+//! $w'(t) = (\pi/T)\sin(2\pi t/T)$, zero-padded to at least $4n$ points. Both spectra come from
+//! one FFT of $x\,(w + i\,w')$ by conjugate symmetry.
+//!
+//! **Which line.** The fundamental is the bin $k$ in the search band that maximises the harmonic
+//! sum $S(k) = \sum_h |X_w(hk)|$ over the harmonics below [`MAX_HARMONIC_HZ`] (at most four):
+//! at the true fundamental all harmonics add, at half of it only the even ones.
+//!
+//! **Where on the line.** Each harmonic's peak bin $p$ is refined two ways:
+//! - by **reassignment** (the estimate used): for a sinusoid of frequency $f_0$,
+//!   $X_{w'}(f) = 2\pi i\,(f - f_0)X_w(f)$, so
+//!   $$\hat f = f_p - \frac{1}{2\pi}\,\mathrm{Im}\frac{X_{w'}(f_p)}{X_w(f_p)};$$
+//! - by a **parabola** through the log-magnitudes of bins $p-1, p, p+1$ (the cross-check).
+//!
+//! The harmonics' estimates $\hat f_h/h$ are combined with weights $h^2\rho_h$, where
+//! $\rho_h = |X_w(p_h)|^2/P_n - 1$ is the harmonic's power over the noise's per bin $P_n$ (the
+//! median power between the harmonics divided by $\ln 2$, the median of an exponential
+//! variate over its mean).
+//!
+//! **Uncertainty from the noise.** For a sinusoid in white noise the Cramér-Rao bound of its
+//! frequency over a frame of duration $T$ is, with the windowed peak-to-noise ratio $\rho$,
+//! $\sigma_f^2 \approx 2/((2\pi T)^2\rho)$; the Hann window widens it by [`HANN_FACTOR`]
+//! (measured: see `tests/experiment_audio.rs`). The harmonics give
+//! $$\sigma_{f_1} = \frac{k_{Hann}\sqrt2}{2\pi T\sqrt{\sum_h h^2\rho_h}}.$$
+//! Nothing here depends on the sample rate: $T$ and the band are in seconds and hertz.
+
+use rustfft::num_complex::Complex;
+use rustfft::{Fft, FftPlanner};
+use std::f64::consts::PI;
+use std::sync::Arc;
+
+/// Harmonics are used up to this frequency (Hz), so that recordings at 8 kHz and above see the
+/// same harmonics.
+pub const MAX_HARMONIC_HZ: f64 = 3500.0;
+
+/// The Hann window's widening of the frequency's standard deviation over the rectangular
+/// window's bound.
+pub const HANN_FACTOR: f64 = 1.3;
+
+/// The fundamental found in one frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Estimate {
+    /// The fundamental by reassignment (Hz).
+    pub f: f64,
+    /// Its standard uncertainty from the noise (Hz).
+    pub sigma: f64,
+    /// The fundamental by parabolic interpolation (Hz), the cross-check.
+    pub check: f64,
+    /// $\sum_h \rho_h$: the harmonics' power over the noise's per bin.
+    pub snr: f64,
+}
+
+/// A frame analyser for one sample rate; it keeps its FFT plans.
+pub struct Analyser {
+    fs: f64,
+    planner: FftPlanner<f64>,
+    plans: Vec<(usize, Arc<dyn Fft<f64>>)>,
+}
+
+impl Analyser {
+    /// An analyser for samples at `fs` S/s.
+    pub fn new(fs: f64) -> Self {
+        Self {
+            fs,
+            planner: FftPlanner::new(),
+            plans: Vec::new(),
+        }
+    }
+
+    fn plan(&mut self, n: usize) -> Arc<dyn Fft<f64>> {
+        if let Some((_, p)) = self.plans.iter().find(|(m, _)| *m == n) {
+            return p.clone();
+        }
+        let p = self.planner.plan_fft_forward(n);
+        self.plans.push((n, p.clone()));
+        p
+    }
+
+    /// The fundamental of frame `x` searched between `lo` and `hi` Hz; `None` when no harmonic
+    /// stands `min_snr` times above the noise.
+    pub fn fundamental(&mut self, x: &[f64], lo: f64, hi: f64, min_snr: f64) -> Option<Estimate> {
+        let n = x.len();
+        if n < 16 {
+            return None;
+        }
+        let nfft = (4 * n).next_power_of_two();
+        let (fs, nf) = (self.fs, nfft as f64);
+        let bin = fs / nf;
+        let mean = x.iter().sum::<f64>() / n as f64;
+        let dw = PI * fs / n as f64;
+        let mut buf: Vec<Complex<f64>> = x
+            .iter()
+            .enumerate()
+            .map(|(j, v)| {
+                let u = PI * (j as f64 + 0.5) / n as f64;
+                let d = v - mean;
+                Complex::new(d * u.sin().powi(2), d * dw * (2.0 * u).sin())
+            })
+            .collect();
+        buf.resize(nfft, Complex::new(0.0, 0.0));
+        self.plan(nfft).process(&mut buf);
+        let half = nfft / 2;
+        // X_w(k) = (Z(k) + conj Z(N-k))/2, X_w'(k) = (Z(k) - conj Z(N-k))/(2i).
+        let split = |k: usize| -> (Complex<f64>, Complex<f64>) {
+            let (z, c) = (buf[k], buf[(nfft - k) % nfft].conj());
+            ((z + c) * 0.5, (z - c) * Complex::new(0.0, -0.5))
+        };
+        let top = (MAX_HARMONIC_HZ.min(0.45 * fs) / bin) as usize;
+        let power: Vec<f64> = (0..=half.min(top + 3))
+            .map(|k| split(k).0.norm_sqr())
+            .collect();
+        let k_lo = ((lo / bin).floor() as usize).max(2);
+        let k_hi = ((hi / bin).ceil() as usize).min(top.saturating_sub(2));
+        let mag = |k: usize| power[k].sqrt();
+        let k0 = (k_lo..=k_hi)
+            .map(|k| {
+                let s: f64 = (1..=4)
+                    .filter(|h| h * k + 2 < power.len())
+                    .map(|h| mag(h * k))
+                    .sum();
+                (k, s)
+            })
+            .max_by(|a, b| a.1.total_cmp(&b.1))?
+            .0;
+        let noise = self.noise(&power, k0, n, bin)?;
+        let (mut num, mut num_check, mut den, mut snr, mut best) = (0.0, 0.0, 0.0, 0.0, 0.0f64);
+        for h in 1..=4usize {
+            let c = h * k0;
+            if c + 3 >= power.len() {
+                break;
+            }
+            let p = (c.saturating_sub(2).max(1)..=c + 2)
+                .max_by(|a, b| power[*a].total_cmp(&power[*b]))?;
+            let rho = power[p] / noise - 1.0;
+            best = best.max(rho);
+            if rho < min_snr {
+                continue;
+            }
+            let (xw, xd) = split(p);
+            let f_re = p as f64 * bin - (xd / xw).im / (2.0 * PI);
+            let ln = |k: usize| power[k].max(f64::MIN_POSITIVE).ln();
+            let f_par = (p as f64 + vertex(ln(p - 1), ln(p), ln(p + 1))) * bin;
+            let u = (h * h) as f64 * rho;
+            num += u * f_re / h as f64;
+            num_check += u * f_par / h as f64;
+            den += u;
+            snr += rho;
+        }
+        if best < min_snr || den <= 0.0 {
+            return None;
+        }
+        let t = n as f64 / fs;
+        Some(Estimate {
+            f: num / den,
+            sigma: HANN_FACTOR * 2f64.sqrt() / (2.0 * PI * t * den.sqrt()),
+            check: num_check / den,
+            snr,
+        })
+    }
+}
+
+impl Analyser {
+    /// The noise's power per bin about a fundamental at bin `k0` of a frame of `n` samples: the
+    /// median power over $[f/2, 6f]$ outside $\pm 2/T$ of the harmonics, divided by $\ln 2$
+    /// (an exponential variate's median over its mean); where fewer than 8 such bins are left
+    /// (a low pitch in a short frame), the lowest quartile of the whole band divided by
+    /// $\ln(4/3)$.
+    fn noise(&self, power: &[f64], k0: usize, n: usize, bin: f64) -> Option<f64> {
+        let f = k0 as f64 * bin;
+        let guard = 2.0 * self.fs / n as f64;
+        let last = power.len() - 1;
+        let band = (0.5 * f / bin) as usize..=((6.0 * f / bin) as usize).min(last);
+        let local: Vec<f64> = band
+            .clone()
+            .filter(|&k| {
+                let g = k as f64 * bin;
+                (1..=7).all(|h| (g - h as f64 * f).abs() > guard)
+            })
+            .map(|k| power[k])
+            .collect();
+        let m = if local.len() >= 8 {
+            median(local)? / std::f64::consts::LN_2
+        } else {
+            let mut all: Vec<f64> = band.map(|k| power[k]).collect();
+            if all.is_empty() {
+                return None;
+            }
+            let q = all.len() / 4;
+            *all.select_nth_unstable_by(q, f64::total_cmp).1 / (4.0f64 / 3.0).ln()
+        };
+        Some(m.max(f64::MIN_POSITIVE))
+    }
+}
+
+/// The parabola's vertex offset through three values around a local maximum.
+fn vertex(l: f64, c: f64, r: f64) -> f64 {
+    let d = l - 2.0 * c + r;
+    if d < 0.0 {
+        (0.5 * (l - r) / d).clamp(-0.5, 0.5)
+    } else {
+        0.0
+    }
+}
+
+/// The median of `v` (`None` when empty).
+fn median(mut v: Vec<f64>) -> Option<f64> {
+    if v.is_empty() {
+        return None;
+    }
+    let m = v.len() / 2;
+    Some(*v.select_nth_unstable_by(m, f64::total_cmp).1)
+}
