@@ -13,10 +13,10 @@
 //! written (a finding's `compared` and `at`), which show the new order; everything else, numbers
 //! included, must still be the same to the bit.
 
-use rolling_disk::paper::EquationEntry;
 use rolling_disk::check::{run_checks, Selection};
 use rolling_disk::equations::Bench;
 use rolling_disk::paper::notation::{retouch, write, NOTATIONS};
+use rolling_disk::paper::EquationEntry;
 use rolling_disk::paper::Paper;
 use serde_json::Value;
 use std::path::PathBuf;

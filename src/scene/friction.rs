@@ -132,7 +132,7 @@ impl Validator<'_> {
                 ))
             }
         };
-        if !(mu.is_finite() && mu >= 0.0 && mu <= MU_MOST) {
+        if !((0.0..=MU_MOST).contains(&mu)) {
             return Err(self.err(
                 &["friction", key],
                 format!(
