@@ -1,5 +1,6 @@
 //! The corrections of paper/corrections.yaml, each checked by its equation's own check against
-//! the same reference as the printed form: the printed form fails, the corrected one holds.
+//! the same reference as the printed form: the printed form fails (or holds only as the
+//! order-of-magnitude estimate it is read as), the corrected one holds.
 
 use rolling_disk::corrections::verify;
 use rolling_disk::equations::Bench;
@@ -17,7 +18,9 @@ fn every_correction_holds_where_the_printed_form_fails() {
             "eq {}: printed {} ({}), corrected {} ({})",
             v.number, v.printed.verdict, v.printed.detail, v.corrected.verdict, v.corrected.detail
         );
-        if v.printed.holds || !v.corrected.holds {
+        let estimate = |verdict: &str| verdict.starts_with("order-of-magnitude estimate");
+        let printed_short = !v.printed.holds || estimate(&v.printed.verdict);
+        if !printed_short || !v.corrected.holds || estimate(&v.corrected.verdict) {
             wrong.push(v.number);
         }
     }

@@ -300,6 +300,11 @@ pub fn calibration_sentence() -> &'static str {
     })
 }
 
+/// The command that regenerates the stored study.
+#[cfg(test)]
+const REGENERATE: &str =
+    "ROLLING_DISK_BLESS=1 cargo test --release --lib experiment::model_choice -- --ignored";
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -326,9 +331,7 @@ mod tests {
         let path = concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots/model_choice.json");
         if std::env::var_os("ROLLING_DISK_BLESS").is_some() {
             let s = StoredStudy {
-                command: "ROLLING_DISK_BLESS=1 cargo test --release --lib \
-                          experiment::model_choice -- --ignored"
-                    .into(),
+                command: REGENERATE.into(),
                 date: std::env::var("ROLLING_DISK_DATE").unwrap_or_else(|_| "unknown".into()),
                 seed0: SEED0,
                 seeds: SEEDS,
