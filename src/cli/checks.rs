@@ -180,13 +180,18 @@ pub(crate) fn print_table(checked: &[Checked]) {
     for c in checked {
         match &c.finding {
             Ok(f) => println!(
-                "{:<34} {:>3}  {:<17} {:>10.3e} {:>10.3e}  {}",
+                "{:<34} {:>3}  {:<17} {:>10.3e} {:>10.3e}  {}{}",
                 c.subject.name(),
                 c.section,
                 f.method.to_string(),
                 f.error,
                 f.tolerance.value,
-                f.verdict
+                f.verdict,
+                if f.premises_failing.is_empty() {
+                    String::new()
+                } else {
+                    format!(" ({} fails)", f.premises_failing.join(", "))
+                }
             ),
             Err(e) => println!("{:<34} {:>3}  {e}", c.subject.name(), c.section),
         }

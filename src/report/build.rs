@@ -82,7 +82,11 @@ fn view(f: &Finding) -> FindingView {
         error: format!("{:.2e}", f.error),
         tolerance: format!("{:.1e}", f.tolerance.value),
         rule: f.tolerance.rule.clone(),
-        verdict: f.verdict.to_string(),
+        verdict: if f.premises_failing.is_empty() {
+            f.verdict.to_string()
+        } else {
+            format!("{} (fails: {})", f.verdict, f.premises_failing.join(", "))
+        },
         class: class.into(),
         at: f.at.clone(),
         figure: f
