@@ -619,13 +619,20 @@ fn corrections_view(
             corrected: v.corrected.verdict,
             holds: v.corrected.holds,
             detail: match v.corrected.headline {
-                Some(h) => format!(
-                    "{}: corrected {}, true {} ({})",
-                    h.quantity,
-                    fmt_num(h.paper),
-                    fmt_num(h.reference),
-                    h.at
-                ),
+                Some(h) => {
+                    let unit = if h.unit == "1" {
+                        String::new()
+                    } else {
+                        format!(" {}", h.unit)
+                    };
+                    format!(
+                        "{}: corrected {}{unit}, true {}{unit} ({})",
+                        h.quantity,
+                        fmt_num(h.paper),
+                        fmt_num(h.reference),
+                        h.at
+                    )
+                }
                 None => v.corrected.detail,
             },
         })
