@@ -166,6 +166,39 @@ fn with_premises(bench: &Bench, numbers: &[u32]) -> Vec<u32> {
     all.into_iter().collect()
 }
 
+/// The claims the selection rests on (`rests_on` of its equations and claims, and of those
+/// claims in turn): run silently beside it, so that a verdict does not depend on what else was
+/// selected.
+fn premise_claims(bench: &Bench, selection: &Selection, numbers: Option<&[u32]>) -> Vec<String> {
+    let paper = bench.paper;
+    let mut todo: Vec<String> = Vec::new();
+    for e in &paper.equations {
+        if numbers.is_none_or(|ns| ns.contains(&e.entry.number)) {
+            todo.extend(e.entry.rests_on.iter().cloned());
+        }
+    }
+    for c in &paper.claims {
+        if selection
+            .claims
+            .as_ref()
+            .is_none_or(|ids| ids.contains(&c.id))
+        {
+            todo.extend(c.rests_on.iter().cloned());
+        }
+    }
+    let mut all: Vec<String> = Vec::new();
+    while let Some(id) = todo.pop() {
+        if id.starts_with("eq ") || all.contains(&id) {
+            continue;
+        }
+        if let Some(c) = paper.claims.iter().find(|c| c.id == id) {
+            todo.extend(c.rests_on.iter().cloned());
+        }
+        all.push(id);
+    }
+    all
+}
+
 fn jobs(bench: &Bench, selection: &Selection) -> Result<Vec<Job>, CheckError> {
     let sections: Vec<u32> = bench
         .paper
@@ -211,6 +244,7 @@ fn jobs(bench: &Bench, selection: &Selection) -> Result<Vec<Job>, CheckError> {
             ));
         }
     }
+    let premises = premise_claims(bench, selection, needed.as_deref());
     let all_claims = equations::claims();
     if let Some(ids) = &selection.claims {
         for id in ids {
@@ -224,12 +258,12 @@ fn jobs(bench: &Bench, selection: &Selection) -> Result<Vec<Job>, CheckError> {
             .claims
             .as_ref()
             .is_none_or(|ids| ids.iter().any(|i| i == c.id));
-        if wanted {
+        if wanted || premises.iter().any(|p| p == c.id) {
             let section = claim_sections
                 .iter()
                 .find(|e| e.id == c.id)
                 .map_or(0, |e| e.section);
-            out.push((Subject::Claim { id: c.id }, section, c.check, None, true));
+            out.push((Subject::Claim { id: c.id }, section, c.check, None, wanted));
         }
     }
     Ok(out)

@@ -74,3 +74,26 @@ fn no_verdict_holds_on_a_premise_that_fails() {
         assert_eq!(verdict(n), Some(Verdict::PremiseFails), "{n}");
     }
 }
+
+/// A verdict does not depend on what else was selected: eq 80 alone, or a coincidence claim
+/// alone, still runs the premise it rests on (silently) and says it fails.
+#[test]
+fn a_selection_runs_the_premises_its_subjects_rest_on() {
+    let paper = Paper::built_in_shared();
+    let bench = Bench::with_paper(paper);
+    for (numbers, claims, shown) in [
+        (Some(vec![80]), Some(Vec::new()), "eq 80"),
+        (
+            Some(Vec::new()),
+            Some(vec!["coincidence-eq54".to_string()]),
+            "coincidence-eq54",
+        ),
+    ] {
+        let selection = Selection { numbers, claims };
+        let checked = run_checks(&bench, &selection, 2, &|_, _| {}).expect("the checks run");
+        assert_eq!(checked.len(), 1, "only {shown} is shown");
+        let f = checked[0].finding.as_ref().expect("it runs");
+        assert_eq!(f.verdict, Verdict::PremiseFails, "{shown}");
+        assert!(!f.premises_failing.is_empty(), "{shown}");
+    }
+}
