@@ -96,6 +96,22 @@ fn view(f: &Finding) -> FindingView {
     }
 }
 
+/// A headline in words: its quantity, the paper's value as `paper` phrases it (`{}` stands for
+/// the number) and the true value, each with the unit.
+fn headline_text(h: &crate::finding::Headline, paper: &str) -> String {
+    let unit = if h.unit == "1" {
+        String::new()
+    } else {
+        format!(" {}", h.unit)
+    };
+    let paper = paper.replacen("{}", &format!("{}{unit}", fmt_num(h.paper)), 1);
+    format!(
+        "{}: {paper}, true {}{unit}",
+        h.quantity,
+        fmt_num(h.reference)
+    )
+}
+
 fn error_view(message: &str) -> FindingView {
     FindingView {
         method: "-".into(),
@@ -134,20 +150,10 @@ fn failure_view(c: &Checked) -> Option<FailureView> {
         claimed: claimed.clone(),
         reference: reference.clone(),
         error: format!("{:.2e}", f.error),
-        headline: f.headline.as_ref().map(|h| {
-            let unit = if h.unit == "1" {
-                String::new()
-            } else {
-                format!(" {}", h.unit)
-            };
-            format!(
-                "{}: paper {}{unit} ({}), true {}{unit}",
-                h.quantity,
-                fmt_num(h.paper),
-                h.paper_is,
-                fmt_num(h.reference)
-            )
-        }),
+        headline: f
+            .headline
+            .as_ref()
+            .map(|h| headline_text(h, &format!("paper {{}} ({})", h.paper_is))),
         headline_at: f.headline.as_ref().map(|h| h.at.clone()),
         row: match &f.headline {
             Some(h) => {
@@ -619,20 +625,7 @@ fn corrections_view(
             corrected: v.corrected.verdict,
             holds: v.corrected.holds,
             detail: match v.corrected.headline {
-                Some(h) => {
-                    let unit = if h.unit == "1" {
-                        String::new()
-                    } else {
-                        format!(" {}", h.unit)
-                    };
-                    format!(
-                        "{}: corrected {}{unit}, true {}{unit} ({})",
-                        h.quantity,
-                        fmt_num(h.paper),
-                        fmt_num(h.reference),
-                        h.at
-                    )
-                }
+                Some(h) => format!("{} ({})", headline_text(&h, "corrected {}"), h.at),
                 None => v.corrected.detail,
             },
         })
