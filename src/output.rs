@@ -157,18 +157,6 @@ fn first_unlisted(
     None
 }
 
-/// Whether the calling user may write `path` (the kernel's answer; for root it ignores the
-/// mode, whose write bits are checked beside it).
-#[cfg(target_os = "linux")]
-fn writable(path: &Path) -> bool {
-    rustix::fs::access(path, rustix::fs::Access::WRITE_OK).is_ok()
-}
-
-#[cfg(not(target_os = "linux"))]
-fn writable(_path: &Path) -> bool {
-    true
-}
-
 impl SetWriter {
     /// Checks the target, cleans the temporaries of dead runs, and creates the temporary
     /// directory to write into: all before any computing, so that a target that cannot be
@@ -193,7 +181,7 @@ impl SetWriter {
         match std::fs::symlink_metadata(target) {
             Ok(m) if !m.is_dir() => return Err(SetError::NotDirectory(shown)),
             Ok(m) => {
-                if m.permissions().readonly() || !writable(target) {
+                if m.permissions().readonly() || !crate::output_file::writable(target) {
                     return Err(SetError::ReadOnly(shown));
                 }
                 let empty = std::fs::read_dir(target)

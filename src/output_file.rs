@@ -92,12 +92,12 @@ fn is_fifo_or_char_device(_meta: &std::fs::Metadata) -> bool {
 /// Whether the calling user may write `path` (the kernel's answer, which for root ignores the
 /// mode; the mode's own write bits are checked beside it).
 #[cfg(target_os = "linux")]
-fn writable(path: &Path) -> bool {
+pub(crate) fn writable(path: &Path) -> bool {
     rustix::fs::access(path, rustix::fs::Access::WRITE_OK).is_ok()
 }
 
 #[cfg(not(target_os = "linux"))]
-fn writable(_path: &Path) -> bool {
+pub(crate) fn writable(_path: &Path) -> bool {
     true
 }
 
