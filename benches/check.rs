@@ -1,9 +1,9 @@
 //! The whole `rolling-disk check`: every equation and claim check, on all cores, as the command
 //! runs them (issue target: under 5 s in release on a 2-core machine).
 
+use checks::check::{run_checks, Selection};
+use checks::equations::Bench;
 use criterion::{criterion_group, criterion_main, Criterion};
-use rolling_disk::check::{run_checks, Selection};
-use rolling_disk::equations::Bench;
 use std::time::Duration;
 
 fn whole_check(c: &mut Criterion) {

@@ -3,19 +3,17 @@
 //! track and its fits; and of a phone's minute at 48 kHz (2,880,000 samples).
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use rolling_disk::experiment::plausibility::Plausibility;
-use rolling_disk::experiment::{
+use experiment::plausibility::Plausibility;
+use experiment::{
     analyze, analyze_sound, law_sound, law_trace, AnalysisSettings, Artifacts, Law, LightModel,
     Microphone, TrackSettings,
 };
-use rolling_disk::Disk;
+use physics::Disk;
 use std::hint::black_box;
 
 fn analysis(c: &mut Criterion) {
     let disk = Disk::uniform(0.0375);
-    let fit = rolling_disk::paper::Paper::built_in()
-        .expect("the built-in paper")
-        .fit;
+    let fit = paper::Paper::built_in().expect("the built-in paper").fit;
     let trace = law_trace(
         &Law::from_fit(fit.beta, fit.c_inv_root),
         &disk,

@@ -2,13 +2,13 @@
 //! That none allocates is tested in `tests/precision.rs`, not here.
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use rolling_disk::disk::Disk;
-use rolling_disk::model::adiabatic::Adiabatic;
-use rolling_disk::model::dissipation::PowerLaw;
-use rolling_disk::model::frictionless::Frictionless;
-use rolling_disk::model::rolling::Rolling;
-use rolling_disk::model::Extras;
-use rolling_disk::solve::{Dynamics, State};
+use physics::disk::Disk;
+use physics::model::adiabatic::Adiabatic;
+use physics::model::dissipation::PowerLaw;
+use physics::model::frictionless::Frictionless;
+use physics::model::rolling::Rolling;
+use physics::model::Extras;
+use physics::solve::{Dynamics, State};
 use std::hint::black_box;
 
 fn rhs<D: Dynamics<N>, const N: usize>(c: &mut Criterion, name: &str, model: &D, y: State<N>) {

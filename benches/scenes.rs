@@ -1,10 +1,10 @@
 //! Criterion benchmarks of every built-in scene, run end to end through
-//! [`rolling_disk::run::run`] (model, integration with the scene's own settings, recording).
+//! [`physics::run::run`] (model, integration with the scene's own settings, recording).
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use rolling_disk::run::run;
-use rolling_disk::scene::builtin::BUILTIN;
-use rolling_disk::scene::Scene;
+use physics::run::run;
+use physics::scene::builtin::BUILTIN;
+use physics::scene::Scene;
 use std::hint::black_box;
 
 fn scenes(c: &mut Criterion) {

@@ -10,17 +10,17 @@
 //! rtol 1e-13, and 1e5 periods), `--study` (also the whole work-precision study, RK4
 //! included), `--quick` (each point timed once).
 
-use rolling_disk::model::rolling::Rolling;
-use rolling_disk::model::{Extras, Model};
-use rolling_disk::precision::{
-    energy_drift, measure_preset, rhs_latency_nanoseconds, rhs_nanoseconds, study,
-    study::measure_point_with, Accuracy, Reference, ReferenceOptions, StudyOptions, Timing,
-};
-use rolling_disk::scene::Scene;
-use rolling_disk::solve::{Dynamics, Engine, Method, Settings, State};
+use physics::model::rolling::Rolling;
+use physics::model::{Extras, Model};
+use physics::scene::Scene;
+use physics::solve::{Dynamics, Engine, Method, Settings, State};
 use serde_json::{json, Value};
 use std::cell::Cell;
 use std::time::Instant;
+use studies::precision::{
+    energy_drift, measure_preset, rhs_latency_nanoseconds, rhs_nanoseconds, study,
+    study::measure_point_with, Accuracy, Reference, ReferenceOptions, StudyOptions, Timing,
+};
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();

@@ -1,11 +1,11 @@
 //! The sliding model's cost (issue 14: a 10 s scene with slip-stick switching must run in under
 //! 20 ms in release): the built-in `slip-stick` scene end to end through
-//! [`rolling_disk::run::run`], recording every accepted step, and with the scene's own 1 ms
+//! [`physics::run::run`], recording every accepted step, and with the scene's own 1 ms
 //! sampling (10 001 rows, each re-integrated from the step before it).
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use rolling_disk::run::run;
-use rolling_disk::scene::Scene;
+use physics::run::run;
+use physics::scene::Scene;
 use std::hint::black_box;
 
 fn sliding(c: &mut Criterion) {

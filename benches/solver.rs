@@ -2,10 +2,10 @@
 //! near a steady motion), per method and tolerance.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
-use rolling_disk::model::rolling::Rolling;
-use rolling_disk::model::{Extras, Model};
-use rolling_disk::scene::Scene;
-use rolling_disk::solve::{solve, Method, Problem, Settings};
+use physics::model::rolling::Rolling;
+use physics::model::{Extras, Model};
+use physics::scene::Scene;
+use physics::solve::{solve, Method, Problem, Settings};
 use std::hint::black_box;
 
 fn solver(c: &mut Criterion) {

@@ -15,10 +15,10 @@
 //! ```
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-use rolling_disk::model::rolling::Rolling;
-use rolling_disk::model::{Extras, Model};
-use rolling_disk::scene::Scene;
-use rolling_disk::solve::{solve_with, Dynamics, Engine, Method, Problem, Settings, State};
+use physics::model::rolling::Rolling;
+use physics::model::{Extras, Model};
+use physics::scene::Scene;
+use physics::solve::{solve_with, Dynamics, Engine, Method, Problem, Settings, State};
 use std::cell::RefCell;
 use std::hint::black_box;
 

@@ -1,16 +1,16 @@
 //! The `rolling-disk` command line: parse, call the library, print. No physics here.
 
+use ::checks::check::{run_checks, Checked, Selection, Tally};
+use ::checks::equations::{built_in_paper, Bench};
+use ::studies::precision::{self, Accuracy};
 use clap::{Parser, Subcommand};
+use files::atomic::write_atomically;
+use files::output::SetWriter;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
-use rolling_disk::check::{run_checks, Checked, Selection, Tally};
-use rolling_disk::equations::{built_in_paper, Bench};
-use rolling_disk::experiment;
-use rolling_disk::output::{write_atomically, SetWriter};
-use rolling_disk::paper::Paper;
-use rolling_disk::precision::{self, Accuracy};
-use rolling_disk::run::{run, Run};
-use rolling_disk::scene::{builtin::BUILTIN, Scene};
-use rolling_disk::solve::Ending;
+use paper::Paper;
+use physics::run::{run, Run};
+use physics::scene::{builtin::BUILTIN, Scene};
+use physics::solve::Ending;
 use std::path::Path;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -299,7 +299,7 @@ impl ArtifactArgs {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     if let Some(seconds) = cli.max_seconds {
-        if let Err(message) = rolling_disk::budget::set_wall_seconds(seconds) {
+        if let Err(message) = physics::budget::set_wall_seconds(seconds) {
             eprintln!("error: {message}");
             return ExitCode::FAILURE;
         }
@@ -310,7 +310,7 @@ fn main() -> ExitCode {
             csv,
             compare,
         } => simulate(&scene, csv, compare.as_deref()),
-        Command::Scenes { show: Some(name) } => rolling_disk::select::scene_template(&name)
+        Command::Scenes { show: Some(name) } => ::checks::select::scene_template(&name)
             .map(|t| print!("{t}"))
             .map_err(anyhow::Error::from),
         Command::Scenes { show: None } => scenes(),

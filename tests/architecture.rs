@@ -1,33 +1,136 @@
-//! The rules of the layout, enforced. First, the references (models, the solver and its
-//! events, numerics, the friction studies, the experiment's analysis) never see the paper's
-//! claims: a reference that imported `paper`, `equations` (the checks), `mutation` or
-//! `catalogue` could end up checking a claim against itself. Then: figures and renderers never
-//! integrate; no check file imports another (what checks share lives in the harness); no source
-//! file is much over 600 lines. Each rule has a test showing that its scan can fail.
+//! The rules of the layout, enforced. First, the crate graph is the layers of the design: the
+//! references (`physics`, and the `experiment` and `studies` built on them) never see the
+//! paper's claims, so a reference cannot end up checking a claim against itself, and the
+//! compiler refuses an import that would break that. Then: figures and renderers never
+//! integrate; no check file imports another (what checks share lives in the harness); only the
+//! `paper` crate reads the paper's files; no source file is over 600 lines. Each rule has a test
+//! showing that its scan can fail.
 
 use std::path::Path;
 
-/// The reference modules, as paths under src/.
-const REFERENCES: &[&str] = &[
-    "model",
-    "solve",
-    "events.rs",
-    "numerics",
-    "disk.rs",
-    "friction",
-    "experiment",
-    "budget.rs",
+/// The workspace crates each crate may depend on: the layers of the design. The references
+/// (`physics`) and the paper's reader (`paper`) never see each other, and nothing below
+/// `checks` sees the claims, so a reference cannot end up checking a claim against itself.
+const LAYERS: &[(&str, &[&str])] = &[
+    ("numerics", &[]),
+    ("files", &[]),
+    ("physics", &["numerics", "files"]),
+    ("paper", &["numerics"]),
+    ("experiment", &["numerics", "files", "physics"]),
+    ("studies", &["numerics", "files", "physics", "experiment"]),
+    (
+        "checks",
+        &[
+            "numerics",
+            "files",
+            "physics",
+            "paper",
+            "experiment",
+            "studies",
+        ],
+    ),
+    (
+        "report",
+        &[
+            "numerics",
+            "files",
+            "physics",
+            "paper",
+            "experiment",
+            "studies",
+            "checks",
+        ],
+    ),
 ];
 
-/// What they may not import.
-const CLAIMS: &[&str] = &[
-    "crate::paper",
-    "crate::equations",
-    "crate::mutation",
-    "crate::catalogue",
-    "rolling_disk::paper",
-    "rolling_disk::equations",
-];
+/// The arrows of `graph` (crate, the workspace crates it depends on) that [`LAYERS`] does not
+/// allow, and the layers that `graph` lacks.
+fn forbidden_arrows(graph: &[(String, Vec<String>)]) -> Vec<String> {
+    let mut out = Vec::new();
+    for (name, allowed) in LAYERS {
+        match graph.iter().find(|(n, _)| n == name) {
+            None => out.push(format!("no crate `{name}` in the workspace")),
+            Some((_, deps)) => out.extend(
+                deps.iter()
+                    .filter(|d| !allowed.contains(&d.as_str()))
+                    .map(|d| format!("{name} -> {d}")),
+            ),
+        }
+    }
+    out
+}
+
+/// The workspace's crates and, for each, the workspace crates it depends on (from
+/// `cargo metadata`, which reads the manifests only).
+fn workspace_graph() -> Vec<(String, Vec<String>)> {
+    let out = std::process::Command::new(env!("CARGO"))
+        .args([
+            "metadata",
+            "--format-version",
+            "1",
+            "--no-deps",
+            "--offline",
+        ])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("cargo metadata runs");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let doc: serde_json::Value = serde_json::from_slice(&out.stdout).expect("metadata is JSON");
+    let packages = doc["packages"].as_array().expect("packages");
+    let names: Vec<String> = packages
+        .iter()
+        .map(|p| p["name"].as_str().unwrap_or_default().to_string())
+        .collect();
+    packages
+        .iter()
+        .map(|p| {
+            let deps = p["dependencies"]
+                .as_array()
+                .into_iter()
+                .flatten()
+                .filter(|d| d["kind"].is_null())
+                .filter_map(|d| d["name"].as_str())
+                .filter(|d| names.iter().any(|n| n == d))
+                .map(str::to_string)
+                .collect();
+            (p["name"].as_str().unwrap_or_default().to_string(), deps)
+        })
+        .collect()
+}
+
+#[test]
+fn the_crate_graph_is_the_architecture() {
+    let graph = workspace_graph();
+    assert!(graph.len() > LAYERS.len(), "{graph:?}");
+    let bad = forbidden_arrows(&graph);
+    assert!(
+        bad.is_empty(),
+        "dependencies the layers forbid:\n{}",
+        bad.join("\n")
+    );
+}
+
+#[test]
+fn the_layer_rule_would_catch_a_reference_reading_the_paper() {
+    let mut graph: Vec<(String, Vec<String>)> = LAYERS
+        .iter()
+        .map(|(n, d)| (n.to_string(), d.iter().map(|s| s.to_string()).collect()))
+        .collect();
+    assert!(forbidden_arrows(&graph).is_empty());
+    graph[2].1.push("paper".to_string());
+    graph[3].1.push("physics".to_string());
+    assert_eq!(
+        forbidden_arrows(&graph),
+        vec![
+            "physics -> paper".to_string(),
+            "paper -> physics".to_string()
+        ]
+    );
+}
 
 fn rust_files(path: &Path, out: &mut Vec<std::path::PathBuf>) {
     if path.is_dir() {
@@ -44,43 +147,23 @@ fn rust_files(path: &Path, out: &mut Vec<std::path::PathBuf>) {
     }
 }
 
-#[test]
-fn references_never_import_the_claims() {
-    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
-    let mut files = Vec::new();
-    for r in REFERENCES {
-        rust_files(&src.join(r), &mut files);
-    }
-    assert!(files.len() > 20, "only {} files found", files.len());
-    let mut offenders = Vec::new();
-    for f in &files {
-        let text = std::fs::read_to_string(f).unwrap();
-        for (i, line) in text.lines().enumerate() {
-            if CLAIMS.iter().any(|c| line.contains(c)) {
-                offenders.push(format!("{}:{}: {}", f.display(), i + 1, line.trim()));
-            }
-        }
-    }
-    assert!(
-        offenders.is_empty(),
-        "references importing claims:\n{}",
-        offenders.join("\n")
+/// Every source directory of the workspace: the binary's and each crate's.
+fn source_dirs() -> Vec<std::path::PathBuf> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut dirs = vec![root.join("src")];
+    dirs.extend(
+        LAYERS
+            .iter()
+            .map(|(n, _)| root.join("crates").join(n).join("src")),
     );
-}
-
-#[test]
-fn the_rule_would_catch_an_import() {
-    // The scan itself must be able to fail: a line as a reference would write it.
-    let line = "use crate::paper::Paper;";
-    assert!(CLAIMS.iter().any(|c| line.contains(c)));
+    dirs
 }
 
 /// What computes a study: the solver, the scene runner, the simulations, the checks, the
 /// precision study and the studies behind the figures.
 const COMPUTES: &[&str] = &[
-    "crate::solve",
-    "crate::dispatch",
-    "crate::run::run",
+    "physics::dispatch",
+    "physics::run::run",
     "run::run(",
     "precision::study(",
     "run_checks",
@@ -90,9 +173,9 @@ const COMPUTES: &[&str] = &[
     "law_trace",
     "analyze(",
     "Reference::compute",
-    "studies::",
+    "::compute(",
     "pipeline::compute",
-    "friction::studies(",
+    "sliding::studies(",
 ];
 
 /// The lines of `text` before its unit tests (`#[cfg(test)]`), numbered from 1.
@@ -105,6 +188,16 @@ fn code_lines(text: &str) -> Vec<(usize, &str)> {
         .collect()
 }
 
+/// True when `line` takes the integrator itself (`solve`, `solve_with`) from the solver's
+/// module; its plain data (a `Method`, a `Settings`) may be read anywhere.
+fn imports_the_solver(line: &str) -> bool {
+    line.split_once("physics::solve").is_some_and(|(_, after)| {
+        after
+            .split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+            .any(|w| w == "solve" || w == "solve_with")
+    })
+}
+
 fn computing_lines(files: &[std::path::PathBuf]) -> Vec<String> {
     let mut offenders = Vec::new();
     for f in files {
@@ -112,6 +205,8 @@ fn computing_lines(files: &[std::path::PathBuf]) -> Vec<String> {
         for (n, line) in code_lines(&text) {
             if let Some(c) = COMPUTES.iter().find(|c| line.contains(*c)) {
                 offenders.push(format!("{}:{n}: {} ({c})", f.display(), line.trim()));
+            } else if imports_the_solver(line) {
+                offenders.push(format!("{}:{n}: {} (solve)", f.display(), line.trim()));
             }
         }
     }
@@ -119,14 +214,12 @@ fn computing_lines(files: &[std::path::PathBuf]) -> Vec<String> {
 }
 
 /// One pipeline: figures are pure functions of the results, and the report's renderers read
-/// results; only `report/pipeline.rs` (which calls each study once) and `report/studies/`
-/// (the studies themselves) compute.
+/// results; in the report crate only `pipeline.rs` (which calls each study once) computes.
 #[test]
 fn figures_and_renderers_never_integrate() {
-    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("crates/report/src");
     let mut files = Vec::new();
-    rust_files(&src.join("figures"), &mut files);
-    rust_files(&src.join("report"), &mut files);
+    rust_files(&src, &mut files);
     let files: Vec<_> = files
         .into_iter()
         .filter(|f| {
@@ -135,7 +228,7 @@ fn figures_and_renderers_never_integrate() {
                 .unwrap()
                 .to_string_lossy()
                 .replace('\\', "/");
-            rel != "report/pipeline.rs" && !rel.starts_with("report/studies/")
+            rel != "pipeline.rs"
         })
         .collect();
     assert!(files.len() >= 15, "only {} files found", files.len());
@@ -149,22 +242,22 @@ fn figures_and_renderers_never_integrate() {
 
 #[test]
 fn the_purity_rule_would_catch_an_integration() {
-    // The scan must be able to fail: the studies it exempts are caught when scanned.
-    let studies = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/report/studies");
+    // The scan must be able to fail: the studies, which the report only reads, are caught
+    // when scanned.
+    let studies = Path::new(env!("CARGO_MANIFEST_DIR")).join("crates/studies/src");
     let mut files = Vec::new();
     rust_files(&studies, &mut files);
     let caught = computing_lines(&files);
     assert!(
-        caught.iter().any(|l| l.contains("crate::solve"))
-            && caught.iter().any(|l| l.contains("run::run")),
+        caught.iter().any(|l| l.ends_with("(solve)"))
+            && caught.iter().any(|l| l.ends_with("(simulate_motion)")),
         "{caught:?}"
     );
 }
 
 /// One concept per file, and files a reader can hold: no source or test file over this many
-/// lines (the README's "about 600", with a little slack so that a doc comment does not force a
-/// split).
-const MOST_LINES: usize = 650;
+/// lines.
+const MOST_LINES: usize = 600;
 
 /// The files over [`MOST_LINES`] lines under the directories `dirs`, with their lengths.
 fn long_files(dirs: &[std::path::PathBuf]) -> Vec<String> {
@@ -182,12 +275,14 @@ fn long_files(dirs: &[std::path::PathBuf]) -> Vec<String> {
 }
 
 #[test]
-fn no_file_is_longer_than_about_600_lines() {
+fn no_file_is_longer_than_600_lines() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let long = long_files(&["src", "tests", "benches"].map(|d| root.join(d)));
+    let mut dirs = source_dirs();
+    dirs.extend(["tests", "benches"].map(|d| root.join(d)));
+    let long = long_files(&dirs);
     assert!(
         long.is_empty(),
-        "split these by concept (as src/equations/friction/ was):\n{}",
+        "split these by concept :\n{}",
         long.join("\n")
     );
 }
@@ -243,7 +338,7 @@ fn other_checks(own: &str, line: &str) -> Vec<&'static str> {
 
 #[test]
 fn no_check_imports_another() {
-    let eqs = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/equations");
+    let eqs = Path::new(env!("CARGO_MANIFEST_DIR")).join("crates/checks/src/equations");
     let mut files = Vec::new();
     rust_files(&eqs, &mut files);
     assert!(files.len() > 30, "only {} files found", files.len());
@@ -285,8 +380,8 @@ fn the_check_rule_would_catch_an_import() {
     assert!(other_checks("air_film", "use super::spin_down::{disk};").is_empty());
 }
 
-/// The paper's files: only `src/paper/` embeds or opens them, so every consumer reads the one
-/// [`rolling_disk::paper::Paper`] it was given (a `--paper DIR` then reaches every output).
+/// The paper's files: only the `paper` crate embeds or opens them, so every consumer reads the one
+/// [`paper::Paper`] it was given (a `--paper DIR` then reaches every output).
 const PAPER_FILES: &[&str] = &[
     "equations.yaml",
     "symbols.yaml",
@@ -325,10 +420,11 @@ fn paper_file_uses(text: &str) -> Vec<(usize, String)> {
 
 #[test]
 fn only_the_paper_module_reads_the_paper() {
-    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
     let mut files = Vec::new();
-    rust_files(&src, &mut files);
-    let paper = src.join("paper");
+    for d in source_dirs() {
+        rust_files(&d, &mut files);
+    }
+    let paper = Path::new(env!("CARGO_MANIFEST_DIR")).join("crates/paper/src");
     let mut offenders = Vec::new();
     for f in files.iter().filter(|f| !f.starts_with(&paper)) {
         let text = std::fs::read_to_string(f).unwrap();
@@ -338,7 +434,7 @@ fn only_the_paper_module_reads_the_paper() {
     }
     assert!(
         offenders.is_empty(),
-        "read the paper through rolling_disk::paper::Paper, not its files:\n{}",
+        "read the paper through paper::Paper, not its files:\n{}",
         offenders.join("\n")
     );
     // The paper module itself embeds the four and opens them in a directory (else the scan

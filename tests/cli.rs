@@ -131,7 +131,7 @@ fn check_runs_the_selected_checks_and_refuses_unknown_ones() {
 fn check_schema() -> serde_json::Value {
     let path =
         std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("schemas/check.schema.json");
-    let generated = rolling_disk::report::json::check_schema().unwrap();
+    let generated = report::json::check_schema().unwrap();
     if std::env::var_os("ROLLING_DISK_BLESS").is_some() {
         std::fs::write(&path, &generated).unwrap();
     }

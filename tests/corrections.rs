@@ -2,14 +2,12 @@
 //! the same reference as the printed form: the printed form fails (or holds only as the
 //! order-of-magnitude estimate it is read as), the corrected one holds.
 
-use rolling_disk::corrections::verify;
-use rolling_disk::equations::Bench;
+use checks::corrections::verify;
+use checks::equations::Bench;
 
 #[test]
 fn every_correction_holds_where_the_printed_form_fails() {
-    let cs = rolling_disk::paper::Paper::built_in_shared()
-        .corrections
-        .clone();
+    let cs = paper::Paper::built_in_shared().corrections.clone();
     let verified = verify(&Bench::default(), &cs, 2).unwrap();
     assert_eq!(verified.len(), cs.len());
     let mut wrong = Vec::new();

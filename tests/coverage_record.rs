@@ -1,8 +1,8 @@
 //! The stored coverage studies the report draws (`snapshots/coverage.json`) are this code's:
 //! the first recordings of each are run again and must give the same pulls.
 
-use rolling_disk::experiment::coverage::coverage;
-use rolling_disk::experiment::coverage_record::{run, stored, StoredCoverage};
+use experiment::coverage::coverage;
+use experiment::coverage_record::{run, stored, StoredCoverage};
 
 /// The studies, as `ROLLING_DISK_BLESS=1 cargo test --release --test coverage_record --
 /// --ignored` runs and stores them: 400 clean recordings (seeds 5000-5399) and 500 with every

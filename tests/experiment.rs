@@ -1,9 +1,9 @@
 //! The experiment of section 11: synthetic traces, their analysis, CSV validation, the paper's
 //! numbers.
 
-use rolling_disk::experiment::*;
-use rolling_disk::scene::Scene;
-use rolling_disk::Disk;
+use experiment::*;
+use physics::scene::Scene;
+use physics::Disk;
 use std::f64::consts::PI;
 
 /// A dissipative spin-down with exponent `beta` lasting about 9 s, started in its adiabatic
@@ -60,7 +60,7 @@ fn model_spin_downs_give_back_their_beta_and_t0() {
 /// throughout, a near-constant factor that goes into C, not t0.
 #[test]
 fn the_models_tilt_reaches_eq_79_only_at_the_end() {
-    use rolling_disk::experiment::simulate::simulate_motion;
+    use experiment::simulate::simulate_motion;
     let m = simulate_motion(&spin_down(2.0), 7.27, 5000.0, 50_000).unwrap();
     let t0 = m.truth.t0;
     let local_t0 = |back: f64| {

@@ -2,14 +2,14 @@
 //! independence of the sample rate, its precision against the light signal's, and refusals
 //! that list only what failed.
 
-use rolling_disk::experiment::plausibility::Plausibility;
-use rolling_disk::experiment::recording::parse_recording;
-use rolling_disk::experiment::sound::Voice;
-use rolling_disk::experiment::{
+use experiment::plausibility::Plausibility;
+use experiment::recording::parse_recording;
+use experiment::sound::Voice;
+use experiment::{
     analyze, analyze_sound, encode_sound, law_sound, law_trace, AnalysisSettings, Artifacts,
     Channels, Law, LightModel, Microphone, SoundAnalysis, SoundFormat, Trace, TrackSettings,
 };
-use rolling_disk::Disk;
+use physics::Disk;
 use rubato::{
     Resampler, SincFixedIn, SincInterpolationParameters, SincInterpolationType, WindowFunction,
 };
@@ -252,7 +252,7 @@ fn short_wavs_and_channels_are_handled_as_sound() {
             .to_string();
         assert!(e.starts_with("short.wav: WAV") && !e.contains("CSV"), "{e}");
         assert!(e.contains(&format!("{samples} sample(s)")), "{e}");
-        let e = rolling_disk::experiment::wav::parse_wav(&bytes, "short.wav")
+        let e = experiment::wav::parse_wav(&bytes, "short.wav")
             .unwrap_err()
             .to_string();
         assert!(!e.contains("CSV"), "{e}");

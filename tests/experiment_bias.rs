@@ -1,8 +1,8 @@
 //! The hunt for the early t0 (issue 15): the eq 84 fit alone on exact peak times, and the peak
 //! timing on a noise-free law trace.
 
-use rolling_disk::experiment::*;
-use rolling_disk::Disk;
+use experiment::*;
+use physics::Disk;
 use std::f64::consts::PI;
 
 /// Step 1 of the bias hunt (issue 15), candidate "the fit": eq 84's fit alone, on peak times
@@ -12,9 +12,9 @@ use std::f64::consts::PI;
 /// it; they must have mean within 4 standard errors of 0 and sd near 1.
 #[test]
 fn the_eq84_fit_alone_is_unbiased_on_exact_peak_times() {
+    use experiment::fit::fit_eq84;
     use rand::SeedableRng;
     use rand_distr::{Distribution, Normal};
-    use rolling_disk::experiment::fit::fit_eq84;
     let law = Law {
         beta: 2.0,
         c: 100f64.powi(4) * 7.0,
@@ -86,8 +86,8 @@ fn the_eq84_fit_alone_is_unbiased_on_exact_peak_times() {
 /// -1 us, against -38 us).
 #[test]
 fn peak_timing_offsets_on_a_noise_free_law_trace() {
-    use rolling_disk::experiment::fit::fit_eq84;
-    use rolling_disk::experiment::peaks::{find_peaks, noise_level, PeakSettings};
+    use experiment::fit::fit_eq84;
+    use experiment::peaks::{find_peaks, noise_level, PeakSettings};
     let law = Law {
         beta: 2.0,
         c: 100f64.powi(4) * 7.0,

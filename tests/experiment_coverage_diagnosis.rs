@@ -13,7 +13,7 @@
 //!   re-timing on; +0.05, +0.04, +0.04 with it off, where the timing bias varies slowly): the
 //!   re-timing does not leak one pulse's error into its neighbours' to any extent that matters.
 //!   Whitened residuals: sd 1.08, lag one -0.03; reduced chi2 1.19 on average.
-//! - With the slope of the least-squares line through six samples (`peaks::edge_slope`): the
+//! - With the slope of the least-squares line through six samples (`peak::edge_slope`): the
 //!   ratio is 0.96-0.99 in every band of Omega (0.97 pooled), the whitened residuals' sd 0.96,
 //!   lag one and two -0.045. With the former covariance ($\max(s^2, 1)$, AR(1) clamped at 0)
 //!   the pulls' sd fell to 0.83 (beta) and 0.77 (t0): too wide now, as the floor and the clamp
@@ -21,9 +21,9 @@
 //!   covariance (`least_squares`, `Scale::Stationary`) the coverage studies in
 //!   `tests/experiment.rs` give the numbers recorded there.
 
+use experiment::*;
+use physics::Disk;
 use rayon::prelude::*;
-use rolling_disk::experiment::*;
-use rolling_disk::Disk;
 use std::f64::consts::PI;
 
 /// One trace's measurements.

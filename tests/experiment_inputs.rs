@@ -1,10 +1,10 @@
 //! The experiment of section 11 on files: scope CSVs and WAV recordings read (and refused with
 //! file and line), the command line end to end, the analysis written to a directory, the figures.
 
-use rolling_disk::experiment::numbers::numbers;
-use rolling_disk::experiment::*;
-use rolling_disk::paper::Paper;
-use rolling_disk::Disk;
+use experiment::numbers::numbers;
+use experiment::*;
+use paper::Paper;
+use physics::Disk;
 use std::f64::consts::PI;
 
 #[test]
@@ -91,7 +91,7 @@ fn bad_csvs_are_refused_with_file_and_line() {
 #[test]
 fn the_papers_numbers_are_recomputed() {
     let f = Paper::built_in().unwrap().fit;
-    let n = numbers(f.beta, f.c_inv_root, rolling_disk::Disk::uniform(1.0).k);
+    let n = numbers(f.beta, f.c_inv_root, physics::Disk::uniform(1.0).k);
     assert!((n.omega_one_period - 560.0).abs() < 5.0, "{n}");
     assert!((n.time_one_period - 0.011).abs() < 0.0005, "{n}");
     assert!((n.omega_lift_off - 1030.0).abs() < 10.0, "{n}");
@@ -377,7 +377,7 @@ fn the_cli_simulates_and_analyses_a_wav_and_refuses_noise() {
 /// The new figures are pure functions of the analyses.
 #[test]
 fn figures_of_the_fit_the_residuals_the_sound_and_the_coverage() {
-    use rolling_disk::figures::experiment as fig;
+    use report::figures::experiment as fig;
     let disk = Disk::uniform(0.0375);
     let trace = law_trace(&paper_law(), &disk, &LightModel::default()).unwrap();
     let a = analyze(&trace, &AnalysisSettings::default()).unwrap();
@@ -423,13 +423,13 @@ fn paper_law() -> Law {
 /// 75's law alone), not simulated with the mechanisms silently left out.
 #[test]
 fn a_scene_with_mechanisms_is_refused_by_the_synthetic_recording() {
-    let src = rolling_disk::scene::builtin::source("spin-down")
+    let src = physics::scene::builtin::source("spin-down")
         .unwrap()
         .replace(
             "dissipation: { epsilon: 1.2e-6, beta: 2.0 }",
             "dissipation: { epsilon: 1.2e-6, beta: 2.0 }\nmechanisms: [ { air_film: {} } ]",
         );
-    let scene = rolling_disk::scene::Scene::parse(&src, "film.yaml").unwrap();
+    let scene = physics::scene::Scene::parse(&src, "film.yaml").unwrap();
     assert_eq!(scene.mechanisms.len(), 1);
     let e = simulate_trace(&scene, &LightModel::default())
         .unwrap_err()

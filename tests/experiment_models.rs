@@ -6,10 +6,10 @@
 //! passage times over the same cycles, `motion_law::law_of_motion`) and the law's (that fit
 //! against the model's own end and exponent: the model is not eq 79 exactly).
 
-use rolling_disk::experiment::motion_law::law_of_motion;
-use rolling_disk::experiment::simulate::simulate_motion;
-use rolling_disk::experiment::*;
-use rolling_disk::scene::Scene;
+use experiment::motion_law::law_of_motion;
+use experiment::simulate::simulate_motion;
+use experiment::*;
+use physics::scene::Scene;
 
 /// A spin-down of `model` with exponent `beta` lasting about 9 s from its adiabatic start (as in
 /// `tests/experiment.rs`); `extra` adds scene keys (friction for the sliding model).
@@ -207,7 +207,7 @@ fn the_models_precession_falls_behind_eq_33_as_the_disk_falls() {
 /// $\alpha \propto (t_0 - t)^{2/(\beta+2)}$.
 #[test]
 fn the_precessions_lag_makes_most_of_the_laws_early_t0() {
-    use rolling_disk::experiment::fit::fit_eq84;
+    use experiment::fit::fit_eq84;
     use std::f64::consts::TAU;
     let scene = spin_down("dissipative", 2.0, "");
     let d = scene.disk;

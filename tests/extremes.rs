@@ -2,20 +2,20 @@
 //!
 //! Measured values are printed (`cargo test --release --test extremes -- --nocapture`).
 
-use rolling_disk::disk::Disk;
-use rolling_disk::model::rolling::Rolling;
-use rolling_disk::model::steady::{b_bound, steady_motion, SteadyError};
-use rolling_disk::model::{Extras, Model, Motion};
-use rolling_disk::precision::stable::{
+use physics::disk::Disk;
+use physics::model::rolling::Rolling;
+use physics::model::steady::{b_bound, steady_motion, SteadyError};
+use physics::model::{Extras, Model, Motion};
+use physics::run::run;
+use physics::scene::Scene;
+use physics::solve::{solve, Ending, Method, Problem, Settings, Solution};
+use std::f64::consts::{FRAC_PI_2, PI};
+use studies::precision::stable::{
     precession_squared_printed, precession_squared_stable, varpi_squared_printed,
     varpi_squared_stable, SteadyParams,
 };
-use rolling_disk::precision::study::measure_point;
-use rolling_disk::precision::{energy_drift, Reference, ReferenceOptions, Timing};
-use rolling_disk::run::run;
-use rolling_disk::scene::Scene;
-use rolling_disk::solve::{solve, Ending, Method, Problem, Settings, Solution};
-use std::f64::consts::{FRAC_PI_2, PI};
+use studies::precision::study::measure_point;
+use studies::precision::{energy_drift, Reference, ReferenceOptions, Timing};
 
 fn dop853(rtol: f64, atol: f64) -> Settings {
     Settings {

@@ -1,9 +1,10 @@
 //! The report's figures: each builds, has data, draws to SVG without NaN, and is the same bytes
 //! on every build.
 
-use rolling_disk::equations::Bench;
-use rolling_disk::figures::{self, Drawing, Figure};
-use rolling_disk::report::pipeline::{compute, Results, RunConfig, Study};
+use checks::equations::Bench;
+use report::figures::{self, Drawing, Figure};
+use report::pipeline::{compute, RunConfig};
+use report::results::{Results, Study};
 
 /// The studies every figure is drawn from, computed once by the report's pipeline.
 fn computed() -> Results {
@@ -93,7 +94,7 @@ fn every_figure_builds_draws_and_is_deterministic() {
 
 /// The axis labels of every plot of a drawing.
 fn axis_labels(f: &Figure) -> Vec<(String, String)> {
-    let of = |c: &rolling_disk::figures::Chart| (c.x_label.clone(), c.y_label.clone());
+    let of = |c: &report::figures::Chart| (c.x_label.clone(), c.y_label.clone());
     match &f.drawing {
         Drawing::Chart(c) => vec![of(c)],
         Drawing::Plot(p) => vec![of(&p.chart)],
@@ -108,7 +109,7 @@ fn axis_labels(f: &Figure) -> Vec<(String, String)> {
 /// axis has at least three labelled ticks and a label.
 #[test]
 fn legends_cover_no_data_and_every_axis_has_ticks_and_a_label() {
-    use rolling_disk::figures::paper_scale;
+    use report::figures::paper_scale;
     let mut defects = Vec::new();
     for f in all() {
         let mut sizes = vec![(760, 480, 1.0), (1800, 1200, 3.0)];
@@ -153,7 +154,7 @@ fn legends_cover_no_data_and_every_axis_has_ticks_and_a_label() {
 /// The bounding-box test can fail: a legend pinned over a line through the plot is caught.
 #[test]
 fn a_legend_over_the_data_is_caught() {
-    use rolling_disk::figures::{Legend, Plot, Series, Style};
+    use report::figures::{Legend, Plot, Series, Style};
     let line: Vec<(f64, f64)> = (0..=100).map(|i| (i as f64, i as f64)).collect();
     let plot = Plot::new("diagonal", "x (m)", "y (m)").with(Series::new(
         "a line from corner to corner",
@@ -234,7 +235,7 @@ fn svg_text_chars(svg: &str) -> Vec<char> {
 #[test]
 fn every_character_of_every_figure_is_in_the_figure_font() {
     use ab_glyph::Font;
-    let font = ab_glyph::FontRef::try_from_slice(rolling_disk::figures::chart::FIGURE_FONT_FILE)
+    let font = ab_glyph::FontRef::try_from_slice(report::figures::chart::FIGURE_FONT_FILE)
         .expect("the figure font parses");
     let missing = |chars: &[char]| -> Vec<char> {
         let mut m: Vec<char> = chars

@@ -7,15 +7,13 @@
 //! (1 mrad for alpha, 1e-3 sqrt(g/a) for the rates: stricter than the variables' own scales).
 //! Heading and path agree to 1e-8 of their range (floors 1 rad and the radius a).
 
-use rolling_disk::model::frictionless::{self, Frictionless};
-use rolling_disk::model::lab_frame::{Contact, LabFrame};
-use rolling_disk::model::rolling::{self, Rolling};
-use rolling_disk::model::steady::{precession_squared, steady_motion};
-use rolling_disk::model::{Extras, Model, Motion};
-use rolling_disk::solve::{
-    solve, Dynamics, Ending, Event, Method, Problem, Settings, Solution, State,
-};
-use rolling_disk::Disk;
+use physics::model::frictionless::{self, Frictionless};
+use physics::model::lab_frame::{Contact, LabFrame};
+use physics::model::rolling::{self, Rolling};
+use physics::model::steady::{precession_squared, steady_motion};
+use physics::model::{Extras, Model, Motion};
+use physics::solve::{solve, Dynamics, Ending, Event, Method, Problem, Settings, Solution, State};
+use physics::Disk;
 use std::f64::consts::FRAC_PI_2;
 
 const RTOL: f64 = 1e-12;

@@ -2,7 +2,7 @@
 //! hostile input found by the hostile runs has a test here, run through the binary as a user
 //! would, with a time bound where the complaint was a hang.
 
-use rolling_disk::scene::Scene;
+use physics::scene::Scene;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
@@ -311,10 +311,9 @@ fn every_option_and_key_that_advice_names_exists() {
         help.push_str(&cli(&["experiment", sub, "--help"]).1);
     }
     let mut sources = String::new();
-    collect(
-        Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/src")),
-        &mut sources,
-    );
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    collect(&root.join("src"), &mut sources);
+    collect(&root.join("crates"), &mut sources);
     let mut options: Vec<&str> = Vec::new();
     let mut keys: Vec<(&str, &str)> = Vec::new();
     for (i, _) in sources.match_indices("--") {
@@ -558,7 +557,7 @@ fn files(root: &Path, dir: &Path, into: &mut Vec<(u64, String)>) {
 /// real-axis mode beyond its limit is flagged.
 #[test]
 fn rk4_is_flagged_exactly_where_its_steps_stop_resolving() {
-    use rolling_disk::solve::{solve, Dynamics, Ending, Method, Problem, Settings, State};
+    use physics::solve::{solve, Dynamics, Ending, Method, Problem, Settings, State};
     struct Decay(f64);
     impl Dynamics<1> for Decay {
         fn rhs(&self, y: &State<1>, dy: &mut State<1>) {

@@ -1,12 +1,12 @@
 //! The equations of motion as integrated: invariants, steady motion, dissipation.
 
-use rolling_disk::disk::Disk;
-use rolling_disk::model::dissipation::PowerLaw;
-use rolling_disk::model::frictionless::Frictionless;
-use rolling_disk::model::rolling::Rolling;
-use rolling_disk::model::steady::{b_bound, steady_motion, vertical_spin};
-use rolling_disk::model::{Extras, Model, Motion};
-use rolling_disk::solve::{solve, Dynamics, Ending, Method, Problem, Settings, State};
+use physics::disk::Disk;
+use physics::model::dissipation::PowerLaw;
+use physics::model::frictionless::Frictionless;
+use physics::model::rolling::Rolling;
+use physics::model::steady::{b_bound, steady_motion, vertical_spin};
+use physics::model::{Extras, Model, Motion};
+use physics::solve::{solve, Dynamics, Ending, Method, Problem, Settings, State};
 
 fn euler_disk(k: f64) -> Disk {
     Disk::new(0.0375, k, 0.4, 9.81).unwrap()
@@ -81,7 +81,7 @@ fn frictionless_energy_and_lz_are_conserved() {
         let y0 = model.state(&m);
         let e = max_drift(&model, y0, 10.0, |y| model.energy(y));
         let lz = max_drift(&model, y0, 10.0, |y| {
-            rolling_disk::model::rolling::lz(&d, &model.motion(y))
+            physics::model::rolling::lz(&d, &model.motion(y))
         });
         eprintln!("frictionless, spin {spin}: energy drift {e:.2e}, L_z drift {lz:.2e}");
         assert!(e < 1e-10 && lz < 1e-10, "E {e:e}, L_z {lz:e}");

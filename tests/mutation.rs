@@ -2,8 +2,8 @@
 //! every mutant of an equation's printed text must be killed by the check of that equation,
 //! except the survivors listed here with the reason each cannot be told apart.
 
-use rolling_disk::equations::{Bench, FROM_LATEX};
-use rolling_disk::mutation::{mutation_scores, StoredScores};
+use checks::equations::{Bench, FROM_LATEX};
+use checks::mutation::{mutation_scores, StoredScores};
 
 /// Survivors that are not weaknesses: (equation, change, why).
 const EXPLAINED: &[(u32, &str, &str)] = &[];
@@ -37,7 +37,7 @@ fn every_mutant_of_the_printed_equations_is_killed() {
     assert!(made > 0);
     // The report shows the stored scores (snapshots/mutants.json): they must be these.
     let fresh = StoredScores {
-        paper_sha256: rolling_disk::paper::Paper::built_in_shared().sha256.clone(),
+        paper_sha256: paper::Paper::built_in_shared().sha256.clone(),
         scores: scores.clone(),
     };
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots/mutants.json");

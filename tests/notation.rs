@@ -1,6 +1,6 @@
 //! Notation cannot change a verdict. Every one of the 85 printed equations of
 //! paper/equations.yaml is rewritten in other notations, generated from its parsed LaTeX by
-//! `rolling_disk::paper::notation` (not listed by hand): `\cdot` or `\times` between scalar
+//! `paper::notation` (not listed by hand): `\cdot` or `\times` between scalar
 //! factors, `\dfrac` and `\tfrac`, `/`, `\left( \right)`, `\bigl( \bigr)`, `\Big(`, `[ ]`, thin,
 //! thick, negative and control spaces and `~`, redundant braces around every factor, term and
 //! side, factors and terms in the other order, a full stop, comma or semicolon at the end; and
@@ -13,11 +13,11 @@
 //! written (a finding's `compared` and `at`), which show the new order; everything else, numbers
 //! included, must still be the same to the bit.
 
-use rolling_disk::check::{run_checks, Selection};
-use rolling_disk::equations::Bench;
-use rolling_disk::paper::notation::{retouch, write, NOTATIONS};
-use rolling_disk::paper::EquationEntry;
-use rolling_disk::paper::Paper;
+use checks::check::{run_checks, Selection};
+use checks::equations::Bench;
+use paper::notation::{retouch, write, NOTATIONS};
+use paper::EquationEntry;
+use paper::Paper;
 use serde_json::Value;
 use std::path::PathBuf;
 

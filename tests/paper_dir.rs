@@ -3,11 +3,11 @@
 //! for the equations derived from it; a sign changed in a correct equation fails that equation
 //! alone; an unchanged copy gives the built-in verdicts.
 
-use rolling_disk::cause::Cause;
-use rolling_disk::check::{run_checks, Selection, Subject};
-use rolling_disk::equations::{equations, Bench};
-use rolling_disk::finding::Verdict;
-use rolling_disk::paper::{Paper, PaperSource, Texts};
+use checks::cause::Cause;
+use checks::check::{run_checks, Selection, Subject};
+use checks::equations::{equations, Bench};
+use checks::finding::Verdict;
+use paper::{Paper, PaperSource, Texts};
 
 const EQUATIONS: &str = Texts::BUILT_IN.equations;
 const CLAIMS: &str = Texts::BUILT_IN.claims;

@@ -1,8 +1,8 @@
 //! The parallel sweeps (rayon) give the same results whatever the number of threads.
 
-use rolling_disk::check::{run_checks, Selection};
-use rolling_disk::equations::Bench;
-use rolling_disk::mutation::mutation_scores;
+use checks::check::{run_checks, Selection};
+use checks::equations::Bench;
+use checks::mutation::mutation_scores;
 
 #[test]
 fn checks_do_not_depend_on_the_thread_count() {

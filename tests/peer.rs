@@ -9,11 +9,11 @@
 //! Both run at rtol = atol = 1e-10; the peer prints 7 decimals, so $5\times10^{-8}$ is the finest
 //! difference its records can show.
 
-use rolling_disk::peer::compare::PeerComparison;
-use rolling_disk::peer::compare_file;
-use rolling_disk::peer::result::{parse, switches};
-use rolling_disk::scene::Scene;
+use physics::scene::Scene;
 use std::path::{Path, PathBuf};
+use studies::peer::compare::PeerComparison;
+use studies::peer::compare_file;
+use studies::peer::result::{parse, switches};
 
 fn dir(scene: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -164,7 +164,7 @@ fn stored_responses_are_the_exports_of_the_stored_scenes() {
         let d = entry.unwrap().path();
         let scene_path = d.join("scene.yaml");
         let s = Scene::load(scene_path.to_str().unwrap()).unwrap();
-        let text = rolling_disk::peer::response::response(&s).unwrap();
+        let text = studies::peer::response::response(&s).unwrap();
         let stored = std::fs::read_to_string(d.join("response.txt")).unwrap();
         // The comment names the scene's path, which depends on where it was loaded from.
         let body = |t: &str| t.lines().skip(2).collect::<Vec<_>>().join("\n");
@@ -196,7 +196,7 @@ fn scenes_the_peer_cannot_run_are_refused_with_a_fix() {
     ] {
         assert!(src.contains(from), "{from}");
         let s = Scene::parse(&src.replace(from, to), "x.yaml").unwrap();
-        let e = rolling_disk::peer::response::response(&s)
+        let e = studies::peer::response::response(&s)
             .unwrap_err()
             .to_string();
         assert!(e.starts_with("x.yaml: ") && e.contains(words), "{e}");

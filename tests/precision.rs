@@ -1,21 +1,21 @@
 //! The speed/accuracy study: right-hand sides that allocate nothing, a validated reference, the
 //! observed orders, the cheapest settings for an accuracy, and what the presets reach.
 
-use rolling_disk::disk::Disk;
-use rolling_disk::model::adiabatic::Adiabatic;
-use rolling_disk::model::dissipation::PowerLaw;
-use rolling_disk::model::frictionless::Frictionless;
-use rolling_disk::model::rolling::Rolling;
-use rolling_disk::model::Extras;
-use rolling_disk::precision::{
-    cheapest, energy_drift, long_time_drift, measure_preset, study, Accuracy, Cost, PrecisionError,
-    Reference, ReferenceOptions, StudyOptions, Timing,
-};
-use rolling_disk::scene::Scene;
-use rolling_disk::solve::{Dynamics, Method, State};
+use physics::disk::Disk;
+use physics::model::adiabatic::Adiabatic;
+use physics::model::dissipation::PowerLaw;
+use physics::model::frictionless::Frictionless;
+use physics::model::rolling::Rolling;
+use physics::model::Extras;
+use physics::scene::Scene;
+use physics::solve::{Dynamics, Method, State};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 use std::hint::black_box;
+use studies::precision::{
+    cheapest, energy_drift, long_time_drift, measure_preset, study, Accuracy, Cost, PrecisionError,
+    Reference, ReferenceOptions, StudyOptions, Timing,
+};
 
 /// Counts the allocations made by the current thread (tests run in parallel threads).
 struct Counting;

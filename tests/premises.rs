@@ -2,10 +2,10 @@
 //! in the prose (`rests_on` in claims.yaml and equations.yaml) is walked, and none may simply
 //! hold while one of its premises fails; each premise it names as failing must fail.
 
-use rolling_disk::check::{run_checks, Checked, Selection, Subject};
-use rolling_disk::equations::Bench;
-use rolling_disk::finding::Verdict;
-use rolling_disk::paper::Paper;
+use checks::check::{run_checks, Checked, Selection, Subject};
+use checks::equations::Bench;
+use checks::finding::Verdict;
+use paper::Paper;
 
 fn name(c: &Checked) -> String {
     match &c.subject {

@@ -2,10 +2,10 @@
 //! paper's LaTeX, scope CSVs and WAV files. Whatever the input, each returns in bounded time with
 //! a value or an error sentence, never a panic. Seeded, so that CI runs the same cases each time.
 
+use experiment::{parse_trace, wav::parse_wav};
+use paper::parse::parse;
 use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
-use rolling_disk::experiment::{parse_trace, wav::parse_wav};
-use rolling_disk::paper::parse::parse;
 
 /// LaTeX tokens the paper uses, and a few that break it.
 const TOKENS: &[&str] = &[

@@ -1,10 +1,10 @@
 //! The registry of checks against the catalogue, and the mutation sweep: every check must fail
 //! when the paper's claimed side is perturbed by a relative 1e-3, in either direction.
 
-use rolling_disk::equations::claims::mutation_moves;
-use rolling_disk::equations::{claims, equations, Bench, FROM_LATEX};
-use rolling_disk::finding::Verdict;
-use rolling_disk::paper::Paper;
+use checks::equations::claims::mutation_moves;
+use checks::equations::{claims, equations, Bench, FROM_LATEX};
+use checks::finding::Verdict;
+use paper::Paper;
 
 #[test]
 fn registered_checks_match_the_catalogue() {
@@ -86,7 +86,7 @@ fn every_check_fails_when_its_claim_is_perturbed() {
 
 #[test]
 fn every_equation_and_claim_is_checked_or_says_why_not() {
-    use rolling_disk::equations::{UNCHECKABLE_CLAIMS, UNCHECKABLE_EQUATIONS};
+    use checks::equations::{UNCHECKABLE_CLAIMS, UNCHECKABLE_EQUATIONS};
     let eqs = equations();
     for n in 1..=85u32 {
         let checked = eqs.iter().filter(|e| e.number == n).count();

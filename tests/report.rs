@@ -2,9 +2,9 @@
 //! tools installed (`.ci/run` installs them; run with `--include-ignored`), loaded by headless
 //! Chromium without a console error and compiled by pdflatex without an error.
 
-use rolling_disk::equations::Bench;
-use rolling_disk::paper::Paper;
-use rolling_disk::report::{build::build, fonts, json, mathml, render};
+use checks::equations::Bench;
+use paper::Paper;
+use report::{build::build, fonts, json, mathml, render};
 use std::path::PathBuf;
 use std::process::Command;
 use std::sync::OnceLock;
@@ -29,8 +29,9 @@ fn built() -> &'static Built {
 /// from those results (which computes nothing) gives the report `build` gives.
 #[test]
 fn a_full_report_computes_each_study_once() {
-    use rolling_disk::report::build::from_results;
-    use rolling_disk::report::pipeline::{compute, RunConfig, Study};
+    use report::build::from_results;
+    use report::pipeline::{compute, RunConfig};
+    use report::results::Study;
     let results = compute(&RunConfig::report(Bench::default()), &|_| {}).unwrap();
     let studies: Vec<Study> = results.computed.keys().copied().collect();
     assert_eq!(studies, Study::ALL.to_vec());
@@ -41,7 +42,7 @@ fn a_full_report_computes_each_study_once() {
     );
     let (report, figures) = from_results(&Bench::default(), &results, &|_| {}).unwrap();
     // The figures of the studies, and the premises graph drawn from the checks.
-    assert_eq!(figures.len(), rolling_disk::figures::NAMES.len() + 1);
+    assert_eq!(figures.len(), report::figures::NAMES.len() + 1);
     assert_eq!(&render::json(&report).unwrap(), &built().3);
     assert_eq!(&render::html(&report).unwrap(), &built().0);
 }

@@ -3,8 +3,8 @@
 //! cut), never a panic. The cargo-fuzz targets in `fuzz/` explore the same entry point without
 //! bound; crashes they find become cases in `regressions` below.
 
+use physics::scene::{builtin::BUILTIN, Scene};
 use proptest::prelude::*;
-use rolling_disk::scene::{builtin::BUILTIN, Scene};
 
 /// Asserts what every answer of the reader must satisfy. (The cases are drawn from a fixed seed,
 /// so that CI runs the same ones every time; `fuzz/` explores without bound.)

@@ -1,8 +1,8 @@
 //! Scene files: the built-in ones, the states they integrate, and every kind of bad file.
 
-use rolling_disk::run::run;
-use rolling_disk::scene::{builtin::BUILTIN, Scene};
-use rolling_disk::solve::Ending;
+use physics::run::run;
+use physics::scene::{builtin::BUILTIN, Scene};
+use physics::solve::Ending;
 
 const GOOD: &str = "name: t
 disk: { radius: 0.0375, k: 0.25, mass: 0.4, g: 9.81 }

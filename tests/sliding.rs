@@ -6,12 +6,12 @@
 //! integrated quantities, 1e-9 s for located switching times (events are located to 1e-12 s;
 //! the rest is the integration error of the located state).
 
-use rolling_disk::model::lab_frame::{Contact, LabFrame};
-use rolling_disk::model::sliding::{extend, Friction, Mode, Sliding, Slip, DISSIPATED};
-use rolling_disk::model::steady::steady_motion;
-use rolling_disk::model::{Model, Motion};
-use rolling_disk::solve::{solve, Ending, Event, Method, Problem, Settings, State};
-use rolling_disk::Disk;
+use physics::model::lab_frame::{Contact, LabFrame};
+use physics::model::sliding::{extend, Friction, Mode, Sliding, Slip, DISSIPATED};
+use physics::model::steady::steady_motion;
+use physics::model::{Model, Motion};
+use physics::solve::{solve, Ending, Event, Method, Problem, Settings, State};
+use physics::Disk;
 use std::f64::consts::FRAC_PI_2;
 
 const RTOL: f64 = 1e-12;
@@ -34,7 +34,7 @@ fn no_stops<'a>() -> Vec<Event<'a, 14>> {
     Vec::new()
 }
 
-fn upright(v0: f64, mu: f64, k: f64) -> (Sliding, rolling_disk::model::sliding::SlidingRun) {
+fn upright(v0: f64, mu: f64, k: f64) -> (Sliding, physics::model::sliding::SlidingRun) {
     let d = toy(k);
     let model = Sliding::new(
         d,
@@ -127,7 +127,7 @@ fn compare_with_lab(model: &Sliding, lab: &LabFrame, m: &Motion) -> f64 {
             continue;
         }
         let a = lab.motion(&sol_lab.y[j]);
-        let b = rolling_disk::model::lab_frame::Snapshot::of(model.disk.a, y).motion();
+        let b = physics::model::lab_frame::Snapshot::of(model.disk.a, y).motion();
         worst = worst
             .max((a.alpha - b.alpha).abs())
             .max((a.alpha_dot - b.alpha_dot).abs() / scale)
@@ -179,7 +179,7 @@ fn large_mu_is_the_rolling_model() {
 
 /// E + W (energy plus what the contact took out) at every recorded point, relative to E(0),
 /// and the largest rise of E between recorded points, relative to E(0).
-fn balance(model: &Sliding, run: &rolling_disk::model::sliding::SlidingRun) -> (f64, f64) {
+fn balance(model: &Sliding, run: &physics::model::sliding::SlidingRun) -> (f64, f64) {
     let e0 = model.energy(&run.y[0]) + run.y[0][DISSIPATED];
     let mut worst: f64 = 0.0;
     let mut rise: f64 = 0.0;
@@ -193,7 +193,7 @@ fn balance(model: &Sliding, run: &rolling_disk::model::sliding::SlidingRun) -> (
     (worst, rise)
 }
 
-fn tilted_slipping(mu: f64, slip: Slip) -> (Sliding, rolling_disk::model::sliding::SlidingRun) {
+fn tilted_slipping(mu: f64, slip: Slip) -> (Sliding, physics::model::sliding::SlidingRun) {
     let d = toy(0.25);
     let model = Sliding::new(
         d,
@@ -241,7 +241,7 @@ fn energy_balance_closes_and_energy_never_rises_in_slip_and_stick() {
         let (worst, rise) = balance(&model, &run);
         eprintln!(
             "mu {mu} slip {slip:?}: {} physical switches ({} with the held/released slip direction), |E + W - E0|/E0 = {worst:.2e}, largest rise {rise:.2e}, W = {:.4e} J",
-            rolling_disk::model::sliding::scene::contact_events(&run).len(),
+            physics::model::sliding::contact_events::contact_events(&run).len(),
             run.switches.len(),
             run.y.last().unwrap()[DISSIPATED]
         );
@@ -293,7 +293,7 @@ fn a_disk_thrown_off_the_table_flies_lands_and_loses_energy_only_at_impacts_and_
         // The gap is never negative beyond the landing's location error: the landing is
         // located to 1e-12 s at a sink rate below 1 m/s, plus the margin of 1e-12 a.
         for (y, mode) in run.y.iter().zip(&run.mode) {
-            let h = rolling_disk::model::lab_frame::Snapshot::of(d.a, y).height;
+            let h = physics::model::lab_frame::Snapshot::of(d.a, y).height;
             assert!(h > -1e-12 * (1.0 + d.a), "gap {h} in {mode:?}");
         }
     }
@@ -310,9 +310,9 @@ record: [slip_speed, cm_speed, normal_force, contact_gap, energy, dissipated]
 
 #[test]
 fn a_user_sliding_scene_runs_and_records_the_contact_quantities() {
-    use rolling_disk::scene::Scene;
+    use physics::scene::Scene;
     let scene = Scene::parse(USER_SCENE, "mine.yaml").unwrap();
-    let r = rolling_disk::run::run(&scene, None).unwrap();
+    let r = physics::run::run(&scene, None).unwrap();
     assert_eq!(r.ending, Ending::TimeReached);
     assert_eq!(
         r.columns,
@@ -346,7 +346,7 @@ fn a_user_sliding_scene_runs_and_records_the_contact_quantities() {
 
 #[test]
 fn bad_sliding_scenes_are_refused_with_the_key_and_the_fix() {
-    use rolling_disk::scene::Scene;
+    use physics::scene::Scene;
     let cases: [(&str, &str, &str, usize); 6] = [
         (
             "mu: 0.3",
@@ -431,7 +431,7 @@ fn slip_stick_over_a_range_of_mu_reaches_the_end_without_chattering() {
             .iter()
             .filter(|s| s.what == "stick -> slip")
             .count();
-        let physical = rolling_disk::model::sliding::scene::contact_events(&run).len();
+        let physical = physics::model::sliding::contact_events::contact_events(&run).len();
         let (worst, rise) = balance(&model, &run);
         eprintln!(
             "mu {mu}: {} switches, {physical} physical, {onsets} stick -> slip, |E + W - E0|/E0 = {worst:.2e}, largest rise {rise:.2e}",

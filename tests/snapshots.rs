@@ -2,9 +2,9 @@
 //! (`cargo insta review`). Values are rounded so that they are stable across machines: claimed
 //! and reference values to 6 significant digits, errors to their decade, orders to 0.01.
 
-use rolling_disk::check::{run_checks, Selection};
-use rolling_disk::equations::Bench;
-use rolling_disk::finding::Verdict;
+use checks::check::{run_checks, Selection};
+use checks::equations::Bench;
+use checks::finding::Verdict;
 use std::fmt::Write;
 
 fn sig(x: f64, digits: usize) -> String {

@@ -1,6 +1,6 @@
 //! The solver layer against problems with known answers.
 
-use rolling_disk::solve::{
+use physics::solve::{
     solve, solve_with, Dynamics, Ending, Engine, Event, Method, Problem, Settings, State, WithTime,
 };
 

@@ -3,8 +3,8 @@
 //! the thin limit of the thick model is the thin disk; the energy taken by friction and
 //! resistance is booked.
 
-use rolling_disk::run::run;
-use rolling_disk::scene::Scene;
+use physics::run::run;
+use physics::scene::Scene;
 
 const BASE: &str = "name: toy
 model: sliding
@@ -116,8 +116,7 @@ fn bad_toy_values_are_refused_with_their_key_and_a_fix() {
 #[test]
 fn the_thin_limit_of_the_solid_is_the_thin_disk() {
     let thin = run(&scene("k: 0.25", "mu: 0.3", "").unwrap(), None).unwrap();
-    let events =
-        |r: &rolling_disk::run::Run| r.contact_events.iter().map(|e| e.t).collect::<Vec<_>>();
+    let events = |r: &physics::run::Run| r.contact_events.iter().map(|e| e.t).collect::<Vec<_>>();
     let mut worst = Vec::new();
     for t in ["1e-7", "1e-9"] {
         let solid = run(

@@ -18,10 +18,11 @@
 //! $\alpha$ over 1 s (mean spacing of the maxima, located by linear interpolation of
 //! $\dot\alpha$'s sign changes).
 
-use rolling_disk::model::sliding::scene::{integrate, model};
-use rolling_disk::model::sliding::Solid;
-use rolling_disk::model::steady::steady_motion;
-use rolling_disk::scene::Scene;
+use physics::dispatch::sliding_model;
+use physics::model::sliding::Solid;
+use physics::model::steady::steady_motion;
+use physics::run::sliding::integrate;
+use physics::scene::Scene;
 
 const THIN: &str = "k: 0.25";
 const TOY: &str = "thickness: 0.0128, fillet: 0.002";
@@ -51,7 +52,7 @@ solver: {{ rtol: 1e-12, atol: 1e-15 }}
 
 /// (t, alpha, alpha_dot) of a run.
 fn tilt(s: &Scene) -> Vec<(f64, f64, f64)> {
-    let m = model(s);
+    let m = sliding_model(s);
     let run = integrate(&m, s, s.sample).unwrap();
     assert!(run.switches.is_empty(), "the start slipped");
     run.t
@@ -113,7 +114,7 @@ fn period(disk: &str, alpha0: f64, precession: f64, spin: f64) -> f64 {
 
 #[test]
 fn thickness_changes_the_steady_motion_and_the_oscillation() {
-    let thin_disk = rolling_disk::disk::Disk::new(0.0375, 0.25, 0.4, 9.81).unwrap();
+    let thin_disk = physics::disk::Disk::new(0.0375, 0.25, 0.4, 9.81).unwrap();
     println!("alpha0  Omega thin  Omega toy  change   period thin  period toy  change (rad/s, s)");
     for alpha0 in [0.3, 0.6, 1.0, 1.3] {
         let m = steady_motion(&thin_disk, alpha0, 0.0).unwrap();

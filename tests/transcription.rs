@@ -4,16 +4,16 @@
 //! agree to round-off. (The rolling model's eqs 23-25 are cross-checked in
 //! `equations::motion`'s tests.) A model that drifted from the paper fails here loudly.
 
-use rolling_disk::disk::Disk;
-use rolling_disk::equations::built_in_paper;
-use rolling_disk::model::adiabatic::Adiabatic;
-use rolling_disk::model::dissipation::PowerLaw;
-use rolling_disk::model::frictionless::accelerations;
-use rolling_disk::model::steady::{b_bound, precession_squared};
-use rolling_disk::model::Motion;
-use rolling_disk::numerics::rng::Rng;
-use rolling_disk::paper::Bindings;
-use rolling_disk::precision::stable::varpi_squared_printed;
+use checks::equations::built_in_paper;
+use numerics::rng::Rng;
+use paper::Bindings;
+use physics::disk::Disk;
+use physics::model::adiabatic::Adiabatic;
+use physics::model::dissipation::PowerLaw;
+use physics::model::frictionless::accelerations;
+use physics::model::steady::{b_bound, precession_squared};
+use physics::model::Motion;
+use studies::precision::stable::varpi_squared_printed;
 
 /// Seeded points of a domain (the points need no statistics, only spread): the crate's seeded
 /// ChaCha8 source.
@@ -149,7 +149,7 @@ fn the_precision_studys_printed_eq_54_is_eq_54() {
 
 #[test]
 fn the_experiments_law_is_eq_79_as_printed() {
-    use rolling_disk::experiment::Law;
+    use experiment::Law;
     let paper = built_in_paper();
     let eq = paper.equation(79);
     let last = eq.chains[0].sides.last().unwrap();

@@ -3,7 +3,7 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use rolling_disk::scene::Scene;
+use physics::scene::Scene;
 
 fuzz_target!(|data: &[u8]| {
     let path = std::env::temp_dir().join(format!("rolling-disk-fuzz-{}.yaml", std::process::id()));

@@ -3,7 +3,7 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use rolling_disk::experiment::wav::parse_wav;
+use experiment::wav::parse_wav;
 
 fuzz_target!(|data: &[u8]| {
     if let Err(e) = parse_wav(data, "fuzz.wav") {

@@ -5,12 +5,12 @@ use super::*;
 pub(crate) fn mutants(only: Option<&str>, json: bool, paper: Option<&Path>) -> anyhow::Result<()> {
     let bench = bench_for(None, load_paper(paper)?);
     let numbers: Vec<u32> = match only {
-        None => rolling_disk::equations::equations()
+        None => ::checks::equations::equations()
             .iter()
             .map(|e| e.number)
             .collect(),
         Some(text) => {
-            let selection = rolling_disk::select::parse_only(text, bench.paper)?;
+            let selection = ::checks::select::parse_only(text, bench.paper)?;
             match selection.numbers {
                 Some(n) if !n.is_empty() => n,
                 _ => {
@@ -26,7 +26,7 @@ pub(crate) fn mutants(only: Option<&str>, json: bool, paper: Option<&Path>) -> a
         bar.set_length(total as u64);
         bar.set_position(done as u64);
     };
-    let scores = rolling_disk::mutation::mutation_scores(&bench, &numbers, &progress);
+    let scores = ::checks::mutation::mutation_scores(&bench, &numbers, &progress);
     bar.finish_and_clear();
     if json {
         println!(
@@ -104,7 +104,7 @@ pub(crate) fn check(
                  (for example --only 23-25,50) or leave --only out to run every check"
             ))
         }
-        Some(text) => rolling_disk::select::parse_only(text, bench.paper)?,
+        Some(text) => ::checks::select::parse_only(text, bench.paper)?,
         None => Selection::default(),
     };
     let bar = ProgressBar::with_draw_target(None, ProgressDrawTarget::stderr());
@@ -122,7 +122,7 @@ pub(crate) fn check(
     bar.finish_and_clear();
     let elapsed = started.elapsed().as_secs_f64();
     if json {
-        use rolling_disk::report::json;
+        use ::report::json;
         let document = json::CheckDocument {
             schema: json::CHECK_SCHEMA_ID.into(),
             schema_version: json::SCHEMA_VERSION,
@@ -223,7 +223,7 @@ pub(crate) fn print_table(checked: &[Checked]) {
     print_root_causes(checked);
     let (eqs, claims): (Vec<&Checked>, Vec<&Checked>) = checked
         .iter()
-        .partition(|c| matches!(c.subject, rolling_disk::check::Subject::Equation { .. }));
+        .partition(|c| matches!(c.subject, ::checks::check::Subject::Equation { .. }));
     let line = |what: &str, t: Tally, n: usize| {
         format!(
             "{n} {what}: {} hold, {} hold approximately, {} definitions, {} estimates (scaling \
@@ -251,11 +251,11 @@ pub(crate) fn print_table(checked: &[Checked]) {
 /// The failing equations grouped by root cause: each root cause with the equations that inherit
 /// its error, then those whose cause could not be settled.
 pub(crate) fn print_root_causes(checked: &[Checked]) {
-    use rolling_disk::cause::{consequences, Cause};
+    use ::checks::cause::{consequences, Cause};
     let causes: std::collections::BTreeMap<u32, Cause> = checked
         .iter()
         .filter_map(|c| match (&c.subject, &c.cause) {
-            (rolling_disk::check::Subject::Equation { number, .. }, Some(cause)) => {
+            (::checks::check::Subject::Equation { number, .. }, Some(cause)) => {
                 Some((*number, cause.clone()))
             }
             _ => None,

@@ -13,7 +13,7 @@ fn print_text(text: &str) -> anyhow::Result<()> {
 
 pub(crate) fn peer_export(name: &str, out: Option<&Path>) -> anyhow::Result<()> {
     let scene = Scene::load(name)?;
-    let text = rolling_disk::peer::response::response(&scene)?;
+    let text = ::studies::peer::response::response(&scene)?;
     match out {
         Some(path) => write_atomically(path, text.as_bytes())
             .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?,
@@ -24,7 +24,7 @@ pub(crate) fn peer_export(name: &str, out: Option<&Path>) -> anyhow::Result<()> 
 
 pub(crate) fn peer_compare(name: &str, result: &Path, json: bool) -> anyhow::Result<()> {
     let scene = Scene::load(name)?;
-    let c = rolling_disk::peer::compare_file(&scene, result)?;
+    let c = ::studies::peer::compare_file(&scene, result)?;
     if json {
         print_text(&format!("{}\n", serde_json::to_string_pretty(&c)?))
     } else {

@@ -8,7 +8,7 @@ pub(crate) fn report(
     accuracy: Option<Accuracy>,
     paper: Option<&Path>,
 ) -> anyhow::Result<()> {
-    use rolling_disk::report::{build::build, render};
+    use ::report::{build::build, render};
     // Check --out and make room beside it before computing anything.
     let set = SetWriter::begin(out)?;
     let bench = bench_for(accuracy, load_paper(paper)?);
@@ -59,8 +59,8 @@ pub(crate) fn report(
 }
 
 pub(crate) fn figures(only: Option<&str>, out: &Path, format: FigureFormat) -> anyhow::Result<()> {
-    use rolling_disk::report::pipeline::{compute, RunConfig};
-    let names: Vec<&str> = rolling_disk::figures::NAMES.to_vec();
+    use ::report::pipeline::{compute, RunConfig};
+    let names: Vec<&str> = ::report::figures::NAMES.to_vec();
     let wanted: Vec<&str> = match only {
         Some(list) => list
             .split(',')
@@ -87,9 +87,9 @@ pub(crate) fn figures(only: Option<&str>, out: &Path, format: FigureFormat) -> a
     std::fs::create_dir_all(out)
         .map_err(|e| anyhow::anyhow!("cannot create {}: {e}", out.display()))?;
     // Only the studies the wanted figures are drawn from, each once.
-    let config = RunConfig::figures(rolling_disk::equations::Bench::default(), &wanted)?;
+    let config = RunConfig::figures(::checks::equations::Bench::default(), &wanted)?;
     let results = compute(&config, &|s: &str| eprintln!("figures: {s}"))?;
-    let all = rolling_disk::figures::some(&wanted, &results)?;
+    let all = ::report::figures::some(&wanted, &results)?;
     for f in &all {
         let path = match format {
             FigureFormat::Svg => {

@@ -30,14 +30,14 @@ pub(crate) fn simulate(
     let scene = Scene::load(name)?;
     if let Some(other) = compare {
         let other = match other {
-            "lab-frame" => rolling_disk::compare::lab_frame_for(scene.model)?,
+            "lab-frame" => ::studies::compare::lab_frame_for(scene.model)?,
             _ => {
                 return Err(anyhow::anyhow!(
                     "--compare: {other} is not a model to compare with; use lab-frame"
                 ))
             }
         };
-        let c = rolling_disk::compare::compare(&scene, other)?;
+        let c = ::studies::compare::compare(&scene, other)?;
         println!("scene {}: {} against {}", c.scene, c.model, c.other);
         println!(
             "{:<24} {:>14} {:>14} {:>10}",
@@ -107,7 +107,7 @@ pub(crate) fn summary(scene: &Scene, r: &Run) -> String {
     let m = &r.last;
     let _ = writeln!(s, "scene       {} ({})", scene.name, scene.source);
     let _ = writeln!(s, "model       {}, {} states integrated", r.model, r.states);
-    if scene.settings.method == rolling_disk::solve::Method::Rk4 {
+    if scene.settings.method == physics::solve::Method::Rk4 {
         let _ = writeln!(
             s,
             "solver      rk4, fixed step {:e} s (rtol and atol are not used)",
@@ -147,7 +147,7 @@ pub(crate) fn summary(scene: &Scene, r: &Run) -> String {
         "work        {} right-hand-side evaluations ({} more to locate events and sample), {} accepted and {} rejected steps",
         r.stats.evaluations, r.stats.extra_evaluations, r.stats.accepted, r.stats.rejected
     );
-    if scene.model == rolling_disk::scene::ModelKind::Sliding {
+    if scene.model == physics::scene::ModelKind::Sliding {
         let _ = writeln!(
             s,
             "contact     {} switches and impacts",

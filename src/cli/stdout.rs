@@ -34,7 +34,7 @@ fn exit_on(e: std::io::Error) -> ! {
 }
 
 /// Writes `bytes` to the output file `path` of an option such as `--csv` or `--wav`: `-` is
-/// standard output, any other path goes through [`rolling_disk::output_file::write_output`].
+/// standard output, any other path goes through [`files::output_file::write_output`].
 /// Returns whether standard output was used, so that the caller says what it did on standard
 /// error instead.
 pub(crate) fn write_to(path: &std::path::Path, bytes: &[u8]) -> anyhow::Result<bool> {
@@ -45,6 +45,6 @@ pub(crate) fn write_to(path: &std::path::Path, bytes: &[u8]) -> anyhow::Result<b
         }
         return Ok(true);
     }
-    rolling_disk::output_file::write_output(path, bytes)?;
+    files::output_file::write_output(path, bytes)?;
     Ok(false)
 }

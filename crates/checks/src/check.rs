@@ -1,0 +1,541 @@
+//! Running the checks: in parallel, results in registry order whatever the scheduling.
+//!
+//! A check runs only when what it reads from the paper is there: a claim check needs its claim
+//! in the paper's claims.yaml and, where the built-in claim states a `rule` for its wording,
+//! the rule (and the printed number it reads) too; otherwise the check is reported as one that
+//! could not run, naming the key to add. Nothing else in a check can fail on user input (the
+//! mutation suite runs every mutant of every printed equation through the checks without a
+//! panic), so a panic in a check is a defect of this program and is not caught.
+
+use crate::cause::{classify, Cause, Node};
+use crate::equations::{self, Bench};
+use crate::finding::Finding;
+use rayon::prelude::*;
+use serde::Serialize;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// What was checked.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Subject {
+    /// A numbered equation.
+    Equation {
+        /// Printed number.
+        number: u32,
+        /// LaTeX label.
+        label: &'static str,
+    },
+    /// A prose claim.
+    Claim {
+        /// Its id in paper/claims.yaml.
+        id: &'static str,
+    },
+}
+
+impl Subject {
+    /// "eq 29" or the claim's id.
+    pub fn name(&self) -> String {
+        match self {
+            Subject::Equation { number, .. } => format!("eq {number}"),
+            Subject::Claim { id } => id.to_string(),
+        }
+    }
+}
+
+/// Why a selection of checks could not be run.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum CheckError {
+    /// An `--only` range with its ends swapped.
+    #[error("--only: the range {part} runs backwards; write {hi}-{lo}")]
+    Backwards {
+        /// The range as written.
+        part: String,
+        /// Its larger end.
+        lo: u32,
+        /// Its smaller end.
+        hi: u32,
+    },
+    /// An `--only` item that starts like a number but is not an equation number or a range.
+    #[error("--only: {0} is not an equation number from 1 to 85 or a range like 23-25")]
+    NotANumber(String),
+    /// An equation selected that has no check.
+    #[error("--only: equation {0} has no check yet")]
+    NoCheck(u32),
+    /// A claim id that no check has.
+    #[error("--only: {0} is neither an equation number nor the id of a checked claim")]
+    UnknownClaim(String),
+    /// The thread pool could not start.
+    #[error("could not start {threads} threads for the checks: {reason}")]
+    Threads {
+        /// Threads asked for.
+        threads: usize,
+        /// The system's reason.
+        reason: String,
+    },
+}
+
+/// The binary and the report print the sentence.
+impl From<CheckError> for String {
+    fn from(e: CheckError) -> Self {
+        e.to_string()
+    }
+}
+
+/// One check's outcome.
+#[derive(Debug, Clone, Serialize)]
+pub struct Checked {
+    /// What was checked.
+    pub subject: Subject,
+    /// The paper's section.
+    pub section: u32,
+    /// The finding, or why the check could not run.
+    pub finding: Result<Finding, String>,
+    /// For an equation with a derivation check: whether it follows from its printed premises.
+    pub derivation: Option<Result<Finding, String>>,
+    /// For a failing equation: root cause, inherited, or undetermined ([`crate::cause`]).
+    pub cause: Option<Cause>,
+}
+
+/// Which checks to run.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Selection {
+    /// Equation numbers; `None` for all.
+    pub numbers: Option<Vec<u32>>,
+    /// Claim ids; `None` for all, an empty list for none.
+    pub claims: Option<Vec<String>>,
+}
+
+impl Selection {
+    /// Parses `--only` text: numbers, ranges (`23-25`) and claim ids, comma-separated.
+    pub fn parse(text: &str) -> Result<Self, CheckError> {
+        let (mut numbers, mut claims) = (Vec::new(), Vec::new());
+        for part in text.split(',').map(str::trim).filter(|p| !p.is_empty()) {
+            let range: Vec<&str> = part.splitn(2, '-').collect();
+            let num = |s: &str| s.parse::<u32>().ok().filter(|n| (1..=85).contains(n));
+            match range.as_slice() {
+                [a] if num(a).is_some() => numbers.push(num(a).unwrap_or(0)),
+                [a, b] if num(a).is_some() && num(b).is_some() => {
+                    let (a, b) = (num(a).unwrap_or(0), num(b).unwrap_or(0));
+                    if a > b {
+                        return Err(CheckError::Backwards {
+                            part: part.to_string(),
+                            lo: a,
+                            hi: b,
+                        });
+                    }
+                    numbers.extend(a..=b);
+                }
+                _ if part.chars().next().is_some_and(|c| c.is_ascii_digit()) => {
+                    return Err(CheckError::NotANumber(part.to_string()))
+                }
+                _ => claims.push(part.to_string()),
+            }
+        }
+        Ok(Self {
+            numbers: Some(numbers),
+            claims: Some(claims),
+        })
+    }
+}
+
+/// One check to run: what, its section, the check, its derivation check if any, and whether
+/// its result is shown (a premise run only to classify a selected equation is not).
+type Job = (
+    Subject,
+    u32,
+    fn(&Bench) -> Finding,
+    Option<fn(&Bench) -> Finding>,
+    bool,
+);
+
+/// The selected equations and, transitively, their premises (a failing equation can only be
+/// told a root cause or an inherited error knowing its premises' verdicts).
+fn with_premises(bench: &Bench, numbers: &[u32]) -> Vec<u32> {
+    let mut all: std::collections::BTreeSet<u32> = numbers.iter().copied().collect();
+    let mut todo: Vec<u32> = numbers.to_vec();
+    while let Some(n) = todo.pop() {
+        if !(1..=85).contains(&n) {
+            continue;
+        }
+        for &p in &bench.paper.equation(n).entry.premises {
+            if all.insert(p) {
+                todo.push(p);
+            }
+        }
+    }
+    all.into_iter().collect()
+}
+
+/// The claims the selection rests on (`rests_on` of its equations and claims, and of those
+/// claims in turn): run silently beside it, so that a verdict does not depend on what else was
+/// selected.
+fn premise_claims(bench: &Bench, selection: &Selection, numbers: Option<&[u32]>) -> Vec<String> {
+    let paper = bench.paper;
+    let mut todo: Vec<String> = Vec::new();
+    for e in &paper.equations {
+        if numbers.is_none_or(|ns| ns.contains(&e.entry.number)) {
+            todo.extend(e.entry.rests_on.iter().cloned());
+        }
+    }
+    for c in &paper.claims {
+        if selection
+            .claims
+            .as_ref()
+            .is_none_or(|ids| ids.contains(&c.id))
+        {
+            todo.extend(c.rests_on.iter().cloned());
+        }
+    }
+    let mut all: Vec<String> = Vec::new();
+    while let Some(id) = todo.pop() {
+        if id.starts_with("eq ") || all.contains(&id) {
+            continue;
+        }
+        if let Some(c) = paper.claims.iter().find(|c| c.id == id) {
+            todo.extend(c.rests_on.iter().cloned());
+        }
+        all.push(id);
+    }
+    all
+}
+
+fn jobs(bench: &Bench, selection: &Selection) -> Result<Vec<Job>, CheckError> {
+    let sections: Vec<u32> = bench
+        .paper
+        .equations
+        .iter()
+        .map(|e| e.entry.section)
+        .collect();
+    let claim_sections = &bench.paper.claims;
+    let mut out: Vec<Job> = Vec::new();
+    let registered = equations::equations();
+    let derivations = equations::derivations();
+    let needed = selection
+        .numbers
+        .as_ref()
+        .map(|ns| with_premises(bench, ns));
+    if let Some(numbers) = &selection.numbers {
+        for n in numbers {
+            if !registered.iter().any(|e| e.number == *n) {
+                return Err(CheckError::NoCheck(*n));
+            }
+        }
+    }
+    for e in registered {
+        let shown = selection
+            .numbers
+            .as_ref()
+            .is_none_or(|ns| ns.contains(&e.number));
+        let needed = needed.as_ref().is_none_or(|ns| ns.contains(&e.number));
+        if shown || needed {
+            let section = sections.get(e.number as usize - 1).copied().unwrap_or(0);
+            out.push((
+                Subject::Equation {
+                    number: e.number,
+                    label: e.label,
+                },
+                section,
+                e.check,
+                derivations
+                    .iter()
+                    .find(|d| d.number == e.number)
+                    .map(|d| d.check),
+                shown,
+            ));
+        }
+    }
+    let premises = premise_claims(bench, selection, needed.as_deref());
+    let all_claims = equations::claims();
+    if let Some(ids) = &selection.claims {
+        for id in ids {
+            if !all_claims.iter().any(|c| c.id == id) {
+                return Err(CheckError::UnknownClaim(id.clone()));
+            }
+        }
+    }
+    for c in all_claims {
+        let wanted = selection
+            .claims
+            .as_ref()
+            .is_none_or(|ids| ids.iter().any(|i| i == c.id));
+        if wanted || premises.iter().any(|p| p == c.id) {
+            let section = claim_sections
+                .iter()
+                .find(|e| e.id == c.id)
+                .map_or(0, |e| e.section);
+            out.push((Subject::Claim { id: c.id }, section, c.check, None, wanted));
+        }
+    }
+    Ok(out)
+}
+
+/// Runs the selected checks on a rayon pool of `threads` threads; `progress(done, total)` after
+/// each. The results come back in the selection's order whatever the thread count: each check
+/// reads only the bench, and rayon's indexed collect keeps the order.
+pub fn run_checks(
+    bench: &Bench,
+    selection: &Selection,
+    threads: usize,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<Vec<Checked>, CheckError> {
+    let jobs = jobs(bench, selection)?;
+    let mut all = run_jobs(bench, &jobs, threads, progress)?;
+    attach_causes(bench, &mut all);
+    attach_premises(bench, &mut all);
+    Ok(all
+        .into_iter()
+        .zip(&jobs)
+        .filter_map(|(c, job)| job.4.then_some(c))
+        .collect())
+}
+
+/// The checks of the selection alone: no premise is run and no cause attached, for a study that
+/// reads only the findings (the corrections' verdicts), at a fraction of the cost.
+pub fn run_findings(
+    bench: &Bench,
+    selection: &Selection,
+    threads: usize,
+) -> Result<Vec<Checked>, CheckError> {
+    let jobs: Vec<Job> = jobs(bench, selection)?
+        .into_iter()
+        .filter(|job| job.4)
+        .collect();
+    run_jobs(bench, &jobs, threads, &|_, _| {})
+}
+
+/// Runs `jobs` on a pool of `threads` threads, in their order.
+fn run_jobs(
+    bench: &Bench,
+    jobs: &[Job],
+    threads: usize,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<Vec<Checked>, CheckError> {
+    let total = jobs.len();
+    let done = AtomicUsize::new(0);
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads.max(1))
+        .build()
+        .map_err(|e| CheckError::Threads {
+            threads,
+            reason: e.to_string(),
+        })?;
+    let all: Vec<Checked> = pool.install(|| {
+        jobs.par_iter()
+            .map(|job| {
+                let (subject, section, check, derivation, _) = job.clone();
+                let finding =
+                    match (missing_input(bench, &subject), &subject) {
+                        (Some(why), _) => Err(why),
+                        (None, Subject::Claim { id }) => Ok(
+                            equations::claims::with_printed_headline(bench, id, check(bench)),
+                        ),
+                        (None, _) => Ok(check(bench)),
+                    };
+                let checked = Checked {
+                    subject,
+                    section,
+                    finding: finding.and_then(|f| evaluated(f, bench)),
+                    derivation: derivation.map(|d| evaluated(d(bench), bench)),
+                    cause: None,
+                };
+                progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
+                checked
+            })
+            .collect()
+    });
+    Ok(all)
+}
+
+/// A finding whose claimed value is not a number (NaN or infinite) gives no verdict: the claim
+/// could not be evaluated (a symbol without a value, an operation on values of the wrong kinds,
+/// a square root of a negative number), so the check reports that instead of failing the paper,
+/// and the finding can be neither a failure nor a root cause.
+pub fn evaluated(f: Finding, bench: &Bench) -> Result<Finding, String> {
+    if f.claimed.is_finite() {
+        Ok(f)
+    } else {
+        Err(format!(
+            "could not evaluate the claim ({}): {}",
+            bench.paper.origin(),
+            f.at
+        ))
+    }
+}
+
+/// Why the check of `subject` cannot run on `bench`'s paper, if it cannot: its claim is missing
+/// from claims.yaml, or lacks the `rule` (and the `claimed_value` the rule reads) that the
+/// built-in claim has and the check judges by.
+fn missing_input(bench: &Bench, subject: &Subject) -> Option<String> {
+    let Subject::Claim { id } = subject else {
+        return None;
+    };
+    let Some(found) = bench.paper.claims.iter().find(|c| c.id == *id) else {
+        return Some(format!(
+            "claims.yaml has no claim `{id}`: add it back (its check reads the printed value there)"
+        ));
+    };
+    let built_in = paper::Paper::built_in_shared()
+        .claims
+        .iter()
+        .find(|c| c.id == *id);
+    if found.rule.is_some() && built_in.as_ref().is_some_and(|c| c.rule.is_none()) {
+        return Some(format!(
+            "claims.yaml, claim `{id}`: its check makes its own comparison and reads no `rule`; \
+             remove the rule (it would be shown without being applied)"
+        ));
+    }
+    if found.claimed_value.is_none()
+        && built_in
+            .as_ref()
+            .is_some_and(|c| c.claimed_value.is_some() && c.rule.is_none())
+    {
+        return Some(format!(
+            "claims.yaml, claim `{id}`: its check compares with the printed number: give \
+             `claimed_value`"
+        ));
+    }
+    if built_in.is_some_and(|c| c.rule.is_some()) {
+        match &found.rule {
+            None => {
+                return Some(format!(
+                    "claims.yaml, claim `{id}`: add a `rule` saying how its wording is read \
+                     (for example `rule: {{ words: about, within: 0.05 }}`)"
+                ))
+            }
+            Some(r) if r.range.is_none() && found.claimed_value.is_none() => {
+                return Some(format!(
+                    "claims.yaml, claim `{id}`: its rule compares with the printed number: give \
+                     `claimed_value`"
+                ))
+            }
+            Some(_) => {}
+        }
+    }
+    None
+}
+
+/// Classifies every failing equation among `checked` ([`crate::cause`]).
+fn attach_causes(bench: &Bench, checked: &mut [Checked]) {
+    let causes = {
+        let mut nodes = std::collections::BTreeMap::new();
+        for c in checked.iter() {
+            if let Subject::Equation { number, .. } = c.subject {
+                nodes.insert(
+                    number,
+                    Node {
+                        premises: &bench.paper.equation(number).entry.premises,
+                        truth: c.finding.as_ref().ok(),
+                        derivation: c.derivation.as_ref().and_then(|d| d.as_ref().ok()),
+                    },
+                );
+            }
+        }
+        classify(&nodes)
+    };
+    for c in checked.iter_mut() {
+        if let Subject::Equation { number, .. } = c.subject {
+            c.cause = causes.get(&number).cloned();
+        }
+    }
+}
+
+/// What `subject` rests on besides its numbered premises: the `rests_on` of its entry.
+fn rests_on<'a>(bench: &'a Bench, subject: &Subject) -> &'a [String] {
+    match subject {
+        Subject::Equation { number, .. } => &bench.paper.equation(*number).entry.rests_on,
+        Subject::Claim { id } => bench
+            .paper
+            .claims
+            .iter()
+            .find(|c| c.id == *id)
+            .map_or(&[], |c| c.rests_on.as_slice()),
+    }
+}
+
+/// The name a `rests_on` list uses for `subject`: its claim id, or `eq N`.
+fn premise_name(subject: &Subject) -> String {
+    match subject {
+        Subject::Equation { number, .. } => format!("eq {number}"),
+        Subject::Claim { id } => id.to_string(),
+    }
+}
+
+/// A finding that would pass but rests on a claim or equation that fails (or itself rests on
+/// one) becomes [`Verdict::PremiseFails`], naming them; a failing finding keeps its verdict and
+/// names them too. Premises that were not run leave it as it is. Repeated to a fixed point, so
+/// a premise's premise counts.
+fn attach_premises(bench: &Bench, checked: &mut [Checked]) {
+    use crate::finding::Verdict;
+    for _ in 0..checked.len() {
+        let failing_names: Vec<String> = checked
+            .iter()
+            .filter(|c| {
+                c.finding
+                    .as_ref()
+                    .is_ok_and(|f| matches!(f.verdict, Verdict::Fails | Verdict::PremiseFails))
+            })
+            .map(|c| premise_name(&c.subject))
+            .collect();
+        let mut changed = false;
+        for c in checked.iter_mut() {
+            let failing: Vec<String> = rests_on(bench, &c.subject)
+                .iter()
+                .filter(|p| failing_names.contains(p))
+                .cloned()
+                .collect();
+            let Ok(f) = c.finding.as_mut() else { continue };
+            if failing.is_empty() || f.premises_failing == failing {
+                continue;
+            }
+            if f.verdict.passes() {
+                f.verdict = Verdict::PremiseFails;
+            }
+            f.premises_failing = failing;
+            changed = true;
+        }
+        if !changed {
+            break;
+        }
+    }
+}
+
+/// Counts of verdicts, for the summary line.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize)]
+pub struct Tally {
+    /// Hold.
+    pub holds: usize,
+    /// Hold approximately.
+    pub approximately: usize,
+    /// Definitions.
+    pub definitions: usize,
+    /// Order-of-magnitude estimates whose scaling holds.
+    pub estimates: usize,
+    /// Would hold, but only under a premise that fails.
+    pub premise_fails: usize,
+    /// Fail.
+    pub fails: usize,
+    /// Could not run.
+    pub not_run: usize,
+}
+
+impl Tally {
+    /// Counts the outcomes.
+    pub fn of<'a>(checked: impl IntoIterator<Item = &'a Checked>) -> Self {
+        use crate::finding::Verdict;
+        let mut t = Tally::default();
+        for c in checked {
+            match &c.finding {
+                Err(_) => t.not_run += 1,
+                Ok(f) => match f.verdict {
+                    Verdict::Holds => t.holds += 1,
+                    Verdict::HoldsApproximately { .. } => t.approximately += 1,
+                    Verdict::Definition => t.definitions += 1,
+                    Verdict::Estimate { .. } => t.estimates += 1,
+                    Verdict::PremiseFails => t.premise_fails += 1,
+                    Verdict::Fails => t.fails += 1,
+                },
+            }
+        }
+        t
+    }
+}

@@ -1,0 +1,262 @@
+//! Tests of the claim checks.
+
+use super::*;
+use crate::finding::Verdict;
+use serde::Deserialize;
+
+#[derive(Deserialize)]
+struct Entry {
+    id: String,
+}
+
+#[test]
+fn every_claim_id_is_in_claims_yaml() {
+    let text = paper::Texts::BUILT_IN.claims;
+    let entries: Vec<Entry> = serde_yaml::from_str(text).expect("claims.yaml parses");
+    let mut ids: Vec<&str> = CLAIMS.iter().map(|c| c.id).collect();
+    for id in &ids {
+        assert!(
+            entries.iter().any(|e| e.id == *id),
+            "{id} is not in claims.yaml"
+        );
+    }
+    ids.sort();
+    ids.dedup();
+    assert_eq!(ids.len(), CLAIMS.len(), "duplicate ids");
+}
+
+/// Expected unperturbed verdicts: true = passes, false = fails (the paper is wrong).
+const EXPECTED: &[(&str, bool)] = &[
+    ("k-rim-disk", true),
+    ("k-uniform-disk", true),
+    ("center-of-motion-constant", false),
+    ("no-steady-motion-beyond-vertical", true),
+    ("face-figure-rate-vanishes", true),
+    ("slip-when-b-large", true),
+    ("negative-b-friction-angle", false),
+    ("bracket-negative-angle", false),
+    ("positive-b-unstable-large-tilt", false),
+    ("negative-b-always-stable", true),
+    ("ratio-uniform-disk-077", true),
+    ("ratio-hoop-one", true),
+    ("b-of-order-a-alpha", false),
+    ("coincidence-eq58", true),
+    ("coincidence-eq54", true),
+    ("frictionless-threshold-uniform", true),
+    ("rolling-threshold-uniform", true),
+    ("thresholds-ratio", true),
+    ("frictionless-constants", true),
+    ("eq73-second-approximation-sign", false),
+    ("drag-exponent-linear-force", true),
+    ("drag-exponent-quadratic-air", true),
+    ("drag-exponent-moffatt", true),
+    ("finite-time-singularity", true),
+    ("air-viscosity", true),
+    ("omega-units-hz-vs-rad-per-s", false),
+    ("one-period-remaining-omega", true),
+    ("one-period-remaining-time", true),
+    ("t0-after-last-peak", true),
+    ("contact-loss-time", true),
+    ("contact-loss-omega", true),
+    ("disk-leaves-table", false),
+    ("larger-t0-lowers-beta", true),
+    ("rolling-extra-integrals", false),
+    ("rattling-needs-more-friction", true),
+    ("angular-momentum-near-vertical", false),
+    ("limits-eq55-eq71", true),
+    ("rising-needs-slip", true),
+    ("summary-contact-lost-few-degrees", false),
+];
+
+#[test]
+fn verdicts_unperturbed_and_perturbed() {
+    assert_eq!(EXPECTED.len(), CLAIMS.len());
+    let mut bad = Vec::new();
+    for c in CLAIMS {
+        let expected = EXPECTED
+            .iter()
+            .find(|(id, _)| *id == c.id)
+            .unwrap_or_else(|| panic!("no expectation for {}", c.id))
+            .1;
+        let f = (c.check)(&Bench::default());
+        if f.verdict.passes() != expected {
+            bad.push(format!("{}: unperturbed {:?} {f:#?}", c.id, f.verdict));
+        }
+        let moves = mutation_moves(rule_of(c.id), expected);
+        for eps in moves {
+            let p = (c.check)(&Bench::perturbed(eps));
+            if p.verdict != Verdict::Fails {
+                bad.push(format!("{}: perturbed {eps} {:?} {p:#?}", c.id, p.verdict));
+            }
+        }
+    }
+    assert!(bad.is_empty(), "{}", bad.join("\n"));
+}
+
+/// The paper with `claims` as its claims.yaml (the built-in equations and symbols).
+fn paper_with_claims(claims: &str) -> Result<paper::Paper, paper::PaperError> {
+    let built_in = paper::Texts::BUILT_IN;
+    paper::Paper::from_texts(
+        paper::PaperSource::BuiltIn,
+        paper::Texts { claims, ..built_in },
+    )
+}
+
+/// The built-in claim `id`'s reading, if it has one.
+fn rule_of(id: &str) -> Option<&'static paper::Rule> {
+    let paper = paper::Paper::built_in_shared();
+    paper.claims.iter().find(|c| c.id == id)?.rule.as_ref()
+}
+
+/// The printed number and its reading come from claims.yaml: a looser reading of "about
+/// 60 degrees" (within 25 %) lets 71.4 deg pass, another printed number fails it again.
+#[test]
+fn a_rule_or_number_edited_in_claims_yaml_changes_the_verdict() {
+    let text = paper::Texts::BUILT_IN.claims;
+    let rule = "rule: { words: about, within: 0.05 }";
+    assert_eq!(text.matches(rule).count(), 1, "one claim has this rule");
+    let verdict = |claims: &str| {
+        let paper = paper_with_claims(claims).expect("the edited claims parse");
+        positive_b_unstable_large_tilt(&Bench::with_paper(&paper)).verdict
+    };
+    assert_eq!(verdict(text), Verdict::Fails);
+    let looser = text.replace(rule, "rule: { words: about, within: 0.25 }");
+    assert!(verdict(&looser).passes(), "71.4 is within 25 % of 60");
+    let block = &looser[looser.find("id: positive-b-unstable-large-tilt").unwrap()..];
+    let moved = looser.replacen(
+        block,
+        &block.replacen("claimed_value: 60", "claimed_value: 50", 1),
+        1,
+    );
+    assert_eq!(
+        verdict(&moved),
+        Verdict::Fails,
+        "71.4 is not within 25 % of 50"
+    );
+}
+
+#[test]
+fn an_unusable_rule_is_refused_naming_the_claim_and_the_key() {
+    let text = paper::Texts::BUILT_IN.claims.replace(
+        "rule: { words: about, within: 0.05 }",
+        "rule: { words: about, within: 0.05, digits: 2 }",
+    );
+    let Err(e) = paper_with_claims(&text) else {
+        panic!("two readings must be refused")
+    };
+    let msg = e.to_string();
+    assert!(
+        msg.contains("claims.yaml")
+            && msg.contains("positive-b-unstable-large-tilt")
+            && msg.contains("`rule`")
+            && msg.contains("exactly one"),
+        "{msg}"
+    );
+}
+
+#[test]
+fn linearization_has_one_oscillating_pair() {
+    // varpi^2 = -tr(J^2)/2 assumes the other eigenvalues vanish: check it.
+    for &(k, al, beta) in &[(0.25, 0.3, 0.1), (0.5, 1.0, -0.1), (0.25, 1.3, 0.6)] {
+        let disk = unit_disk(k);
+        let m = steady_motion(&disk, al, beta).unwrap();
+        let j = rolling_jacobian(&disk, &m);
+        let ev = eigenvalues(&j);
+        let w2 = varpi2(&j);
+        let big: Vec<_> = ev.iter().filter(|z| z.norm() > 1e-6).collect();
+        assert_eq!(big.len(), 2, "{ev:?}");
+        let lam2 = big[0] * big[0];
+        assert!((lam2.re + w2).abs() < 1e-9 * w2.abs(), "{lam2} vs {w2}");
+        assert!((q_linearized(k, al, beta) - q_eq54(&Bench::default(), k, al, beta)).abs() < 1e-9);
+    }
+}
+
+#[test]
+fn all_claims_are_fast() {
+    for c in CLAIMS {
+        let t = std::time::Instant::now();
+        let _ = (c.check)(&Bench::default());
+        let dt = t.elapsed().as_secs_f64();
+        assert!(dt < 0.5, "{} took {dt} s", c.id);
+    }
+}
+
+/// Every claim whose built-in entry states a reading is judged by it: with the reading replaced
+/// by a range that holds everything the check passes, by one that holds nothing it fails.
+#[test]
+fn every_stated_reading_is_the_one_applied() {
+    let text = paper::Texts::BUILT_IN.claims;
+    let claims = &paper::Paper::built_in_shared().claims;
+    let mut tried = 0;
+    for entry in claims.iter().filter(|c| c.rule.is_some()) {
+        let check = CLAIMS
+            .iter()
+            .find(|c| c.id == entry.id)
+            .expect("a claim with a reading has a check");
+        let start = text.find(&format!("- id: {}\n", entry.id)).unwrap();
+        let end = start + text[start..].find("\n\n").unwrap_or(text.len() - start);
+        let block = &text[start..end];
+        let line = block
+            .lines()
+            .find(|l| l.starts_with("  rule:"))
+            .expect("the rule's line");
+        let verdict = |rule: &str| {
+            let edited = format!(
+                "{}{}{}",
+                &text[..start],
+                block.replace(line, rule),
+                &text[end..]
+            );
+            let paper = paper_with_claims(&edited).expect("the edited claims parse");
+            (check.check)(&Bench::with_paper(&paper)).verdict
+        };
+        let all = verdict("  rule: { words: test, range: [-1.0e300, 1.0e300] }");
+        assert!(
+            all.passes(),
+            "{}: a range holding everything gives {all}",
+            entry.id
+        );
+        let none = verdict("  rule: { words: test, range: [1.0e299, 1.0e300] }");
+        assert_eq!(
+            none,
+            Verdict::Fails,
+            "{}: a range holding nothing",
+            entry.id
+        );
+        tried += 1;
+    }
+    assert_eq!(tried, 13);
+}
+
+/// A printed number edited in claims.yaml reaches a check that makes its own comparison too:
+/// k = 0.3 for a uniform disk fails, and a claim whose number was deleted is not run.
+#[test]
+fn a_printed_number_edited_in_claims_yaml_reaches_the_check() {
+    let text = paper::Texts::BUILT_IN.claims;
+    let start = text.find("- id: k-uniform-disk").unwrap();
+    let end = start + text[start..].find("\n\n").unwrap();
+    let block = &text[start..end];
+    let run = |edited_block: &str| {
+        let edited = format!("{}{}{}", &text[..start], edited_block, &text[end..]);
+        let paper = paper_with_claims(&edited).expect("the edited claims parse");
+        crate::check::run_checks(
+            &Bench::with_paper(&paper),
+            &crate::check::Selection {
+                numbers: Some(Vec::new()),
+                claims: Some(vec!["k-uniform-disk".into()]),
+            },
+            1,
+            &|_, _| {},
+        )
+        .expect("the selection is valid")
+        .remove(0)
+        .finding
+    };
+    assert!(run(block).unwrap().verdict.passes());
+    let wrong = block.replace("claimed_value: 0.25", "claimed_value: 0.3");
+    assert_ne!(wrong, block);
+    assert_eq!(run(&wrong).unwrap().verdict, Verdict::Fails);
+    let gone = block.replace("claimed_value: 0.25", "claimed_value: null");
+    let e = run(&gone).unwrap_err();
+    assert!(e.contains("give `claimed_value`"), "{e}");
+}

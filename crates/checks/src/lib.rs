@@ -1,0 +1,12 @@
+//! The checks: each of the paper's equations and numeric claims compared with a reference that
+//! does not use it ([`check`], [`equations`]), the verdicts ([`finding`]), root causes against
+//! inherited failures ([`cause`]), the mutation suite ([`mutation`]), the corrected forms
+//! ([`corrections`]) and the selection of what to check ([`select`]).
+
+pub mod cause;
+pub mod check;
+pub mod corrections;
+pub mod equations;
+pub mod finding;
+pub mod mutation;
+pub mod select;

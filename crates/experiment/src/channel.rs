@@ -1,0 +1,145 @@
+//! One channel of a recording at its rate: the limits every format is held to, the choice
+//! of channel, and what the file was. Every decoder (WAV, compressed formats) ends here.
+
+use crate::error::ExperimentError;
+use crate::trace::Trace;
+use serde::Serialize;
+
+/// The lowest and highest sample rates read (S/s).
+pub const RATES: (u32, u32) = (1000, 384_000);
+
+/// The fewest samples per channel read.
+pub const MIN_SAMPLES: usize = 16;
+
+/// The most channels read.
+pub const MAX_CHANNELS: usize = 8;
+
+/// Which channel of a multi-channel recording is analysed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum Channels {
+    /// The channels' mean.
+    Mix,
+    /// One channel, counted from 1.
+    One(usize),
+}
+
+/// What a recording file is.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RecordingInfo {
+    /// Container and coding, e.g. "WAV, 16-bit integer PCM" or "FLAC".
+    pub format: String,
+    /// Samples per second.
+    pub sample_rate: u32,
+    /// Channels in the file.
+    pub channels: usize,
+    /// The channel analysed ("mix of 2", "channel 1 of 2", "mono").
+    pub used: String,
+    /// Samples per channel.
+    pub samples: usize,
+    /// Length (s).
+    pub seconds: f64,
+}
+
+impl std::fmt::Display for RecordingInfo {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{}, {} S/s, {} channel(s) ({}), {} samples, {:.3} s",
+            self.format, self.sample_rate, self.channels, self.used, self.samples, self.seconds
+        )
+    }
+}
+
+/// A recording read: its signal and what the file was.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Recording {
+    /// Time (s from the first sample) and signal (full-scale units).
+    pub trace: Trace,
+    /// The file's format, rate, channels and length.
+    pub info: RecordingInfo,
+}
+
+pub(crate) fn refuse(file: &str, format: &str, message: String, fix: &str) -> ExperimentError {
+    ExperimentError::Audio {
+        file: file.into(),
+        format: format.into(),
+        message,
+        fix: fix.into(),
+    }
+}
+
+/// Checks rate and length, and reduces interleaved samples to one channel.
+pub(crate) fn mix(
+    interleaved: Vec<f64>,
+    rate: u32,
+    n_ch: usize,
+    format: String,
+    file: &str,
+    channels: Channels,
+) -> Result<Recording, ExperimentError> {
+    if !(RATES.0..=RATES.1).contains(&rate) {
+        return Err(refuse(
+            file,
+            &format,
+            format!("a sample rate of {rate} S/s"),
+            "record or export at a rate between 1000 and 384000 S/s (44100 or 48000 is usual)",
+        ));
+    }
+    if n_ch == 0 || n_ch > MAX_CHANNELS {
+        return Err(refuse(
+            file,
+            &format,
+            format!("{n_ch} channels"),
+            "export the recording as mono or stereo",
+        ));
+    }
+    let samples = interleaved.len() / n_ch;
+    if samples < MIN_SAMPLES {
+        return Err(refuse(
+            file,
+            &format,
+            format!("it holds {samples} sample(s) per channel, fewer than {MIN_SAMPLES}"),
+            "record the whole spin-down, from a few seconds before the disk settles until it is silent",
+        ));
+    }
+    let (v, used): (Vec<f64>, String) = match channels {
+        Channels::Mix if n_ch == 1 => (interleaved, "mono".into()),
+        Channels::Mix => (
+            interleaved
+                .chunks_exact(n_ch)
+                .map(|c| c.iter().sum::<f64>() / n_ch as f64)
+                .collect(),
+            format!("mix of {n_ch}"),
+        ),
+        Channels::One(k) if (1..=n_ch).contains(&k) => (
+            interleaved.chunks_exact(n_ch).map(|c| c[k - 1]).collect(),
+            format!("channel {k} of {n_ch}"),
+        ),
+        Channels::One(k) => {
+            return Err(refuse(
+                file,
+                &format,
+                format!("channel {k} was asked for; the file has {n_ch}"),
+                "choose a channel from 1 to the file's count, or mix them",
+            ))
+        }
+    };
+    let r = f64::from(rate);
+    let info = RecordingInfo {
+        format,
+        sample_rate: rate,
+        channels: n_ch,
+        used,
+        samples,
+        seconds: samples as f64 / r,
+    };
+    Ok(Recording {
+        trace: Trace {
+            source: file.into(),
+            t: (0..v.len()).map(|j| j as f64 / r).collect(),
+            v,
+            truth: None,
+        },
+        info,
+    })
+}

@@ -1,0 +1,210 @@
+//! Reading the paper: its four files from the binary or from a directory, each checked before
+//! it is parsed (size, structure, the claims' readings and premises), into one [`Paper`].
+
+use super::*;
+
+pub(super) const EQUATIONS: &str = include_str!("../../../paper/equations.yaml");
+pub(super) const SYMBOLS: &str = include_str!("../../../paper/symbols.yaml");
+pub(super) const CLAIMS: &str = include_str!("../../../paper/claims.yaml");
+pub(super) const CORRECTIONS: &str = include_str!("../../../paper/corrections.yaml");
+
+/// The four texts of a paper: `equations.yaml`, `symbols.yaml`, `claims.yaml` and
+/// `corrections.yaml`.
+#[derive(Debug, Clone, Copy)]
+pub struct Texts<'a> {
+    /// The 85 equations.
+    pub equations: &'a str,
+    /// The symbol table.
+    pub symbols: &'a str,
+    /// The prose claims.
+    pub claims: &'a str,
+    /// The corrected forms.
+    pub corrections: &'a str,
+}
+
+impl Texts<'static> {
+    /// The texts compiled into the binary.
+    pub const BUILT_IN: Texts<'static> = Texts {
+        equations: EQUATIONS,
+        symbols: SYMBOLS,
+        claims: CLAIMS,
+        corrections: CORRECTIONS,
+    };
+}
+
+impl Paper {
+    /// The built-in paper.
+    pub fn built_in() -> Result<Paper, PaperError> {
+        Self::from_texts(PaperSource::BuiltIn, Texts::BUILT_IN)
+    }
+
+    /// The built-in paper, read once per process and shared: what a user's paper is compared
+    /// with where a check must know what the built-in claim gives (its `rule`, its number).
+    pub fn built_in_shared() -> &'static Paper {
+        static PAPER: std::sync::OnceLock<Paper> = std::sync::OnceLock::new();
+        PAPER.get_or_init(|| Paper::built_in().expect("the built-in paper is read by the tests"))
+    }
+
+    /// The paper of a directory holding equations.yaml, symbols.yaml (optional: the built-in
+    /// table otherwise), claims.yaml (optional: the built-in claims otherwise) and
+    /// corrections.yaml (optional: the built-in corrections otherwise).
+    pub fn from_dir(dir: &Path) -> Result<Paper, PaperError> {
+        let read = |name: &str, fallback: Option<&str>| -> Result<String, PaperError> {
+            let path = dir.join(name);
+            // The size is checked before the file is read.
+            if let Ok(meta) = std::fs::metadata(&path) {
+                if meta.len() > MAX_FILE_BYTES as u64 {
+                    return Err(too_large(&path.display().to_string(), meta.len()));
+                }
+            }
+            match (std::fs::read_to_string(&path), fallback) {
+                (Ok(s), _) => Ok(s),
+                (Err(e), Some(f)) if e.kind() == std::io::ErrorKind::NotFound => Ok(f.to_string()),
+                (Err(source), _) => Err(PaperError::Read {
+                    path: path.display().to_string(),
+                    source,
+                }),
+            }
+        };
+        let eqs = read("equations.yaml", None)?;
+        let syms = read("symbols.yaml", Some(SYMBOLS))?;
+        let claims = read("claims.yaml", Some(CLAIMS))?;
+        let corrections = read("corrections.yaml", Some(CORRECTIONS))?;
+        let texts = Texts {
+            equations: &eqs,
+            symbols: &syms,
+            claims: &claims,
+            corrections: &corrections,
+        };
+        Self::from_texts(PaperSource::Dir(dir.to_path_buf()), texts)
+    }
+
+    /// Parses the four texts.
+    pub fn from_texts(source: PaperSource, texts: Texts<'_>) -> Result<Paper, PaperError> {
+        let Texts {
+            equations,
+            symbols,
+            claims,
+            corrections,
+        } = texts;
+        let file = |name: &str| match &source {
+            PaperSource::BuiltIn => format!("paper/{name} (built in)"),
+            PaperSource::Dir(d) => d.join(name).display().to_string(),
+        };
+        for (name, text) in [
+            ("equations.yaml", equations),
+            ("symbols.yaml", symbols),
+            ("claims.yaml", claims),
+        ] {
+            if text.len() > MAX_FILE_BYTES {
+                return Err(too_large(&file(name), text.len() as u64));
+            }
+        }
+        let yaml = |name: &str, e: serde_yaml::Error| PaperError::Yaml {
+            path: file(name),
+            message: yaml_message(&e),
+        };
+        let entries: Vec<EquationEntry> =
+            serde_yaml::from_str(equations).map_err(|e| yaml("equations.yaml", e))?;
+        let table: BTreeMap<String, SymbolInfo> =
+            serde_yaml::from_str(symbols).map_err(|e| yaml("symbols.yaml", e))?;
+        let claim_entries: Vec<ClaimEntry> =
+            serde_yaml::from_str(claims).map_err(|e| yaml("claims.yaml", e))?;
+        if entries.len() != 85
+            || entries
+                .iter()
+                .enumerate()
+                .any(|(i, e)| e.number as usize != i + 1)
+        {
+            return Err(PaperError::Structure {
+                file: file("equations.yaml"),
+                message: "the entries must be the paper's 85 numbered equations, numbers 1 to 85 in order".into(),
+            });
+        }
+        if let Some(e) = entries.iter().find(|e| {
+            e.estimate
+                .as_ref()
+                .is_some_and(|r| !(r.factor.is_finite() && r.factor > 1.0))
+        }) {
+            return Err(PaperError::Structure {
+                file: file("equations.yaml"),
+                message: format!(
+                    "eq {}, key `estimate`: `factor` must be a finite number above 1 (for \
+                     example `estimate: {{ words: quoted, factor: 3 }}`)",
+                    e.number
+                ),
+            });
+        }
+        let mut ids = std::collections::BTreeSet::new();
+        for c in &claim_entries {
+            if !ids.insert(c.id.as_str()) {
+                return Err(PaperError::Structure {
+                    file: file("claims.yaml"),
+                    message: format!(
+                        "claim `{}` is given twice: keep one (a fact stated in several places \
+                         lists the others under `also_at`)",
+                        c.id
+                    ),
+                });
+            }
+            if let Some(problem) = c.rule.as_ref().and_then(|r| r.problem()) {
+                return Err(PaperError::Structure {
+                    file: file("claims.yaml"),
+                    message: format!("claim `{}`, key `rule`: {problem}", c.id),
+                });
+            }
+        }
+        for c in &claim_entries {
+            if let Some(bad) = c
+                .rests_on
+                .iter()
+                .find(|p| !premise_exists(p, &claim_entries))
+            {
+                return Err(PaperError::Structure {
+                    file: file("claims.yaml"),
+                    message: format!(
+                        "claim `{}`, key `rests_on`: `{bad}` is neither a claim id of this file \
+                         nor `eq N` with N from 1 to 85",
+                        c.id
+                    ),
+                });
+            }
+        }
+        for e in &entries {
+            if let Some(bad) = e
+                .rests_on
+                .iter()
+                .find(|p| !premise_exists(p, &claim_entries))
+            {
+                return Err(PaperError::Structure {
+                    file: file("equations.yaml"),
+                    message: format!(
+                        "eq {}, key `rests_on`: `{bad}` is not a claim id of claims.yaml",
+                        e.number
+                    ),
+                });
+            }
+        }
+        let fit = printed::read_fit(&claim_entries, &file("claims.yaml"))?;
+        let global = resolve_table(&table, &file("symbols.yaml"), 0)?;
+        let eqfile = file("equations.yaml");
+        let parsed = entries
+            .into_iter()
+            .map(|entry| parse_entry(entry, &global, &eqfile))
+            .collect::<Result<Vec<_>, _>>()?;
+        let corrections = correction::parse(corrections).map_err(|message| PaperError::Yaml {
+            path: file("corrections.yaml"),
+            message,
+        })?;
+        Ok(Paper {
+            hash: fnv(&[equations, symbols, claims]),
+            sha256: sha256(&[equations, symbols, claims, texts.corrections]),
+            source,
+            equations: parsed,
+            claims: claim_entries,
+            corrections,
+            fit,
+            global,
+        })
+    }
+}

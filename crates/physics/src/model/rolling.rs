@@ -1,0 +1,282 @@
+//! Rolling without slipping: the equations of motion 23-25.
+//!
+//! $$ (2k + 1)\dot\omega_1 + \dot\alpha\Omega\sin\alpha = 0 \qquad (23)$$
+//! $$ k\Omega^2\sin\alpha\cos\alpha + (2k+1)\omega_1\Omega\sin\alpha - (k+1)\ddot\alpha = \frac{g}{a}\cos\alpha \qquad (24)$$
+//! $$ \dot\Omega\sin\alpha + 2\dot\alpha\Omega\cos\alpha + 2\omega_1\dot\alpha = 0 \qquad (25)$$
+//!
+//! With an optional torque $\mathbf N$ about the centre of mass (the dissipation of eq 75), the
+//! $\hat{\mathbf 1}, \hat{\mathbf 2}, \hat{\mathbf 3}$ components of eq 22 gain $N_1/ma^2$,
+//! $N_2/ma^2$ and $N_3/ma^2$ on their right-hand sides (eq 24 written as $(k+1)\ddot\alpha - \dots$,
+//! eq 25 multiplied by $-k$).
+
+use crate::disk::Disk;
+use crate::model::dissipation::PowerLaw;
+use crate::model::mechanism::Mechanism;
+use crate::model::{Extras, Layout, Model, Motion, Quantity};
+use crate::solve::{Dynamics, State};
+use num_dual::DualNum;
+
+/// Time derivatives of the paper's variables.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Rates<T = f64> {
+    /// $\ddot\alpha$.
+    pub alpha_ddot: T,
+    /// $\dot\Omega$.
+    pub precession_dot: T,
+    /// $\dot\omega_1$.
+    pub spin_dot: T,
+}
+
+/// Eqs 23-25 (no torque) as a first-order system in the state
+/// $(\alpha, \dot\alpha, \Omega, \omega_1)$, generic over dual numbers (the linearizations and
+/// Newton's method on steady motions read it).
+pub fn field<T: DualNum<f64> + Copy>(disk: &Disk, y: &[T; 4]) -> [T; 4] {
+    let m = Motion {
+        alpha: y[0],
+        alpha_dot: y[1],
+        precession: y[2],
+        spin: y[3],
+    };
+    let r = rates(disk, &m, [T::zero(); 3]);
+    [y[1], r.alpha_ddot, r.precession_dot, r.spin_dot]
+}
+
+/// The exact Jacobian of [`field`] at state `y`, by dual numbers: the linearization of eqs
+/// 23-25 that the stability checks and studies read (eq 54's independent reference).
+pub fn jacobian(disk: &Disk, y: &[f64; 4]) -> nalgebra::SMatrix<f64, 4, 4> {
+    numerics::linearize::jacobian(|x: &[num_dual::Dual64; 4]| field(disk, x), y)
+}
+
+/// Eqs 23-25 solved for the accelerations, with an optional torque $\mathbf N / m a^2$ in the
+/// triad. $\dot\Omega$ is singular at $\alpha = 0$ (the disk flat on the table).
+pub fn rates<T: DualNum<f64> + Copy>(
+    disk: &Disk,
+    m: &Motion<T>,
+    torque_per_ma2: [T; 3],
+) -> Rates<T> {
+    let k = disk.k;
+    let (s, c) = m.alpha.sin_cos();
+    let [n1, n2, n3] = torque_per_ma2;
+    let (w, ad, om) = (m.spin, m.alpha_dot, m.precession);
+    Rates {
+        spin_dot: (n1 - ad * om * s) * (1.0 / (2.0 * k + 1.0)),
+        alpha_ddot: (om * om * s * c * k + w * om * s * (2.0 * k + 1.0) - c * disk.g_over_a() + n2)
+            * (1.0 / (k + 1.0)),
+        precession_dot: -(ad * om * c * 2.0 + w * ad * 2.0 + n3 * (1.0 / k)) / s,
+    }
+}
+
+/// Eq 26: the total energy of a disk rolling without slipping,
+/// $E = \frac{m a^2}{2}\left[(2k+1)\omega_1^2 + (k+1)\dot\alpha^2 + k\Omega^2\sin^2\alpha + \frac{2g}{a}\sin\alpha\right]$,
+/// generic so that its rate along a motion is exact by a dual number (the checks of sec. 11
+/// differentiate it).
+pub fn energy<T: DualNum<f64> + Copy>(disk: &Disk, m: &Motion<T>) -> T {
+    let k = disk.k;
+    let s = m.alpha.sin();
+    let kinetic = m.spin * m.spin * (2.0 * k + 1.0)
+        + m.alpha_dot * m.alpha_dot * (k + 1.0)
+        + m.precession * m.precession * s * s * k;
+    (kinetic + s * (2.0 * disk.g_over_a())) * (0.5 * disk.m * disk.a * disk.a)
+}
+
+/// Eq 63's $L_z = k m a^2(\Omega\sin^2\alpha - 2\omega_1\cos\alpha)$, the vertical component of
+/// the angular momentum about the centre of mass (eq 19 dotted with $\hat{\mathbf z}$ of eq 4).
+pub fn lz(disk: &Disk, m: &Motion) -> f64 {
+    let (s, c) = m.alpha.sin_cos();
+    disk.i22() * (m.precession * s * s - 2.0 * m.spin * c)
+}
+
+/// The contact force from eq 20, $\mathbf F = m\ddot{\mathbf r}_{cm} + mg\hat{\mathbf z}$, with
+/// $\ddot{\mathbf r}_{cm}$ the derivative of eq 13's velocity $-a\dot\alpha\hat{\mathbf 1} +
+/// a\omega_1\hat{\mathbf 2}$ through eqs 5-6. Returned as (vertical $F_z$, along $\hat{\mathbf r}$,
+/// along $\hat{\mathbf 2}$) in newtons.
+pub fn contact_force(disk: &Disk, m: &Motion, r: &Rates) -> [f64; 3] {
+    let (s, c) = m.alpha.sin_cos();
+    let a = disk.a;
+    let (w, ad, om) = (m.spin, m.alpha_dot, m.precession);
+    // Acceleration of the centre of mass in the triad.
+    let acc1 = -a * r.alpha_ddot + a * w * om * s;
+    let acc2 = a * ad * om * s + a * r.spin_dot;
+    let acc3 = a * ad * ad - a * w * om * c;
+    // F = m acc + m g z, with z = -cos(alpha) 1 - sin(alpha) 3 and r = -sin(alpha) 1 + cos(alpha) 3.
+    let f1 = disk.m * acc1 - disk.m * disk.g * c;
+    let f2 = disk.m * acc2;
+    let f3 = disk.m * acc3 - disk.m * disk.g * s;
+    let fz = -c * f1 - s * f3;
+    let fr = -s * f1 + c * f3;
+    [fz, fr, f2]
+}
+
+/// Derivatives of the optional states: heading ($\dot\psi = \Omega$), centre of mass (eq 13's
+/// velocity resolved in the lab with $\hat{\mathbf 2} = (\cos\psi, \sin\psi, 0)$), face angle
+/// ($\dot\phi = \omega_{rel} = \omega_1 + \Omega\cos\alpha$, eq 11).
+pub(crate) fn extras_rhs<const N: usize>(
+    layout: &Layout,
+    disk: &Disk,
+    m: &Motion,
+    y: &State<N>,
+    dy: &mut State<N>,
+) {
+    if let Some(h) = layout.heading {
+        dy[h] = m.precession;
+    }
+    if let Some(p) = layout.path {
+        let psi = y[layout.heading.expect("the path needs the heading")];
+        let (sp, cp) = psi.sin_cos();
+        let v_r = disk.a * m.alpha_dot * m.alpha.sin(); // along r = (sin psi, -cos psi)
+        let v_2 = disk.a * m.spin; // along 2 = (cos psi, sin psi)
+        dy[p] = v_r * sp + v_2 * cp;
+        dy[p + 1] = -v_r * cp + v_2 * sp;
+    }
+    if let Some(f) = layout.face {
+        dy[f] = m.spin + m.precession * m.alpha.cos();
+    }
+}
+
+/// The rolling disk of eqs 23-25 with `N` states, optionally dissipating by eq 75.
+#[derive(Debug, Clone)]
+pub struct Rolling<const N: usize> {
+    /// The disk.
+    pub disk: Disk,
+    /// The dissipation, if any.
+    pub dissipation: Option<PowerLaw>,
+    /// Mechanisms of dissipation from their physics, added to eq 75's law
+    /// ([`crate::model::mechanism`]).
+    pub mechanisms: Vec<Mechanism>,
+    layout: Layout,
+}
+
+impl<const N: usize> Rolling<N> {
+    /// A rolling model with these extras. Panics if `N` is not the number of states they need
+    /// (a programming error: [`Layout::new`]`(4, extras).len` is the right `N`).
+    pub fn new(disk: Disk, extras: Extras, dissipation: Option<PowerLaw>) -> Self {
+        let layout = Layout::new(4, extras);
+        assert_eq!(
+            layout.len, N,
+            "rolling model with {extras:?} has {} states",
+            layout.len
+        );
+        Self {
+            disk,
+            dissipation,
+            mechanisms: Vec::new(),
+            layout,
+        }
+    }
+
+    /// The same model with these mechanisms of dissipation as well.
+    pub fn with_mechanisms(mut self, mechanisms: &[Mechanism]) -> Self {
+        self.mechanisms = mechanisms.to_vec();
+        self
+    }
+
+    fn torque(&self, m: &Motion) -> [f64; 3] {
+        let mut n = self
+            .dissipation
+            .map_or([0.0; 3], |d| d.torque_per_ma2(&self.disk, m));
+        for mech in &self.mechanisms {
+            let t = mech.torque_per_ma2(&self.disk, m);
+            for (n, t) in n.iter_mut().zip(t) {
+                *n += t;
+            }
+        }
+        n
+    }
+
+    /// The accelerations in state `y`.
+    pub fn rates(&self, y: &State<N>) -> Rates {
+        let m = self.motion(y);
+        rates(&self.disk, &m, self.torque(&m))
+    }
+}
+
+impl<const N: usize> Dynamics<N> for Rolling<N> {
+    fn rhs(&self, y: &State<N>, dy: &mut State<N>) {
+        let m = self.motion(y);
+        let r = rates(&self.disk, &m, self.torque(&m));
+        dy[0] = m.alpha_dot;
+        dy[1] = r.alpha_ddot;
+        dy[2] = r.precession_dot;
+        dy[3] = r.spin_dot;
+        extras_rhs(&self.layout, &self.disk, &m, y, dy);
+    }
+}
+
+impl<const N: usize> Model<N> for Rolling<N> {
+    fn layout(&self) -> &Layout {
+        &self.layout
+    }
+
+    fn motion(&self, y: &State<N>) -> Motion {
+        Motion {
+            alpha: y[0],
+            alpha_dot: y[1],
+            precession: y[2],
+            spin: y[3],
+        }
+    }
+
+    fn energy(&self, y: &State<N>) -> f64 {
+        energy(&self.disk, &self.motion(y))
+    }
+
+    fn record(&self, y: &State<N>, q: Quantity, out: &mut Vec<f64>) -> bool {
+        let m = self.motion(y);
+        match q {
+            Quantity::Energy => out.push(self.energy(y)),
+            Quantity::Lz => out.push(lz(&self.disk, &m)),
+            Quantity::NormalForce | Quantity::Friction => {
+                let f = contact_force(&self.disk, &m, &self.rates(y));
+                if q == Quantity::NormalForce {
+                    out.push(f[0]);
+                } else {
+                    out.extend_from_slice(&f[1..]);
+                }
+            }
+            _ => return record_common(&self.layout, &m, y, q, out),
+        }
+        true
+    }
+
+    fn state(&self, m: &Motion) -> State<N> {
+        let mut y = State::<N>::zeros();
+        y[0] = m.alpha;
+        y[1] = m.alpha_dot;
+        y[2] = m.precession;
+        y[3] = m.spin;
+        y
+    }
+}
+
+/// The quantities every model reads the same way: the paper's variables and the extra states.
+pub(crate) fn record_common<const N: usize>(
+    layout: &Layout,
+    m: &Motion,
+    y: &State<N>,
+    q: Quantity,
+    out: &mut Vec<f64>,
+) -> bool {
+    let state_at = |i: Option<usize>| i.map(|i| y[i]);
+    let v = match q {
+        Quantity::Alpha => Some(m.alpha),
+        Quantity::AlphaDot => Some(m.alpha_dot),
+        Quantity::Precession => Some(m.precession),
+        Quantity::Spin => Some(m.spin),
+        Quantity::Heading => state_at(layout.heading),
+        Quantity::Face => state_at(layout.face),
+        Quantity::Path => {
+            let Some(p) = layout.path else { return false };
+            out.push(y[p]);
+            out.push(y[p + 1]);
+            return true;
+        }
+        _ => None,
+    };
+    match v {
+        Some(v) => {
+            out.push(v);
+            true
+        }
+        None => false,
+    }
+}

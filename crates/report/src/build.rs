@@ -1,0 +1,648 @@
+//! Building the report from the pipeline's results ([`super::pipeline`]): every equation's
+//! MathML, the findings, the figures (pure functions of the results), the speed/accuracy table
+//! and the experiment's analysis. Nothing here computes a study. Everything here is
+//! deterministic: seeded randomness, no clocks, no wall times.
+
+use super::json::{self, outcome_for, Document};
+use super::mathml::display_math;
+use super::{
+    fmt_num, ClaimView, EquationView, FailureView, FigureView, FindingView, PrecisionRow, Report,
+    RootCauseView, RunSettings, SceneView, SectionView, Summary,
+};
+use crate::error::ReportError;
+use crate::figures::{self, Drawing, Figure};
+use crate::pipeline::{compute, RunConfig};
+use crate::results::{Results, Study};
+use checks::check::{Checked, Subject, Tally};
+use checks::equations::{Bench, UNCHECKABLE_CLAIMS, UNCHECKABLE_EQUATIONS};
+use checks::finding::{Finding, Verdict};
+use physics::scene::{builtin::BUILTIN, Scene};
+use rayon::prelude::*;
+use studies::precision;
+
+/// The subject of each section of the paper, in our words.
+const SECTIONS: [(u32, &str); 10] = [
+    (
+        3,
+        "The equations of motion of a disk rolling without slipping",
+    ),
+    (4, "Steady motion"),
+    (
+        5,
+        "Steady motion with the centre of mass at rest, derived directly",
+    ),
+    (6, "Friction needed in steady motion, and radial slip"),
+    (7, "Small oscillations about steady motion"),
+    (
+        8,
+        "A disk spinning about a vertical diameter, without friction",
+    ),
+    (9, "Small oscillations about steady motion without friction"),
+    (10, "Rising of a nearly upright disk"),
+    (11, "Dissipation at small tilt, and the experiment"),
+    (12, "Summary of the motion"),
+];
+
+/// Claimed and reference values as a reader should see them: for an approximation these are
+/// the claimed and the fitted orders.
+fn values(f: &Finding) -> (String, String) {
+    if f.method == checks::finding::Method::Asymptotic || f.unit == "order" {
+        (
+            format!("order {}", fmt_num(f.claimed)),
+            format!("order {:.2}", f.reference),
+        )
+    } else {
+        // With the unit where the check knows it (none shown for a pure number).
+        let unit = match f.unit.as_str() {
+            "" | "1" | "order" => String::new(),
+            u => format!(" {u}"),
+        };
+        (
+            format!("{}{unit}", fmt_num(f.claimed)),
+            format!("{}{unit}", fmt_num(f.reference)),
+        )
+    }
+}
+
+fn view(f: &Finding) -> FindingView {
+    let (claimed, reference) = values(f);
+    let class = match f.verdict {
+        Verdict::Holds => "holds",
+        Verdict::HoldsApproximately { .. } => "approx",
+        Verdict::Definition => "definition",
+        Verdict::Estimate { .. } => "estimate",
+        Verdict::PremiseFails => "premise",
+        Verdict::Fails => "fails",
+    };
+    FindingView {
+        method: f.method.to_string(),
+        compared: f.compared.clone(),
+        claimed: claimed.clone(),
+        reference: reference.clone(),
+        error: format!("{:.2e}", f.error),
+        tolerance: format!("{:.1e}", f.tolerance.value),
+        rule: f.tolerance.rule.clone(),
+        verdict: if f.premises_failing.is_empty() {
+            f.verdict.to_string()
+        } else {
+            format!("{} (fails: {})", f.verdict, f.premises_failing.join(", "))
+        },
+        class: class.into(),
+        at: f.at.clone(),
+        figure: f
+            .shown_by
+            .as_deref()
+            .map(|s| s.trim_start_matches("figure ").to_string()),
+    }
+}
+
+/// A headline in words: its quantity, the paper's value as `paper` phrases it (`{}` stands for
+/// the number) and the true value, each with the unit.
+fn headline_text(h: &checks::finding::Headline, paper: &str) -> String {
+    let unit = if h.unit == "1" {
+        String::new()
+    } else {
+        format!(" {}", h.unit)
+    };
+    let paper = paper.replacen("{}", &format!("{}{unit}", fmt_num(h.paper)), 1);
+    format!(
+        "{}: {paper}, true {}{unit}",
+        h.quantity,
+        fmt_num(h.reference)
+    )
+}
+
+fn error_view(message: &str) -> FindingView {
+    FindingView {
+        method: "-".into(),
+        compared: "-".into(),
+        claimed: "-".into(),
+        reference: "-".into(),
+        error: "-".into(),
+        tolerance: "-".into(),
+        rule: "-".into(),
+        verdict: "could not run".into(),
+        class: "error".into(),
+        at: message.into(),
+        figure: None,
+    }
+}
+
+fn finding_of(c: &Checked) -> FindingView {
+    match &c.finding {
+        Ok(f) => view(f),
+        Err(e) => error_view(e),
+    }
+}
+
+/// A failing check as one row of the summary; `None` when it does not fail.
+fn failure_view(c: &Checked) -> Option<FailureView> {
+    let f = c.finding.as_ref().ok()?;
+    let (claimed, reference) = values(f);
+    (f.verdict == Verdict::Fails).then(|| FailureView {
+        name: c.subject.name(),
+        at: f.at.clone(),
+        anchor: match &c.subject {
+            Subject::Equation { number, .. } => format!("eq-{number}"),
+            Subject::Claim { id } => format!("claim-{id}"),
+        },
+        compared: f.compared.clone(),
+        claimed: claimed.clone(),
+        reference: reference.clone(),
+        error: format!("{:.2e}", f.error),
+        headline: f
+            .headline
+            .as_ref()
+            .map(|h| headline_text(h, &format!("paper {{}} ({})", h.paper_is))),
+        headline_at: f.headline.as_ref().map(|h| h.at.clone()),
+        row: match &f.headline {
+            Some(h) => {
+                let unit = if h.unit == "1" {
+                    String::new()
+                } else {
+                    format!(" {}", h.unit)
+                };
+                [
+                    h.quantity.clone(),
+                    format!("{}{unit} ({})", fmt_num(h.paper), h.paper_is),
+                    format!("{}{unit}", fmt_num(h.reference)),
+                ]
+            }
+            None => [f.compared.clone(), claimed.clone(), reference.clone()],
+        },
+    })
+}
+
+/// The root causes among the failing equations, each with its consequences, and the failing
+/// equations whose cause is undetermined.
+fn causes_view(checked: &[Checked]) -> (Vec<RootCauseView>, Vec<FailureView>) {
+    use checks::cause::Cause;
+    let causes: std::collections::BTreeMap<u32, Cause> = checked
+        .iter()
+        .filter_map(|c| match (&c.subject, &c.cause) {
+            (Subject::Equation { number, .. }, Some(cause)) => Some((*number, cause.clone())),
+            _ => None,
+        })
+        .collect();
+    let row = |n: u32| equation_checked(checked, n).and_then(failure_view);
+    let roots = checks::cause::consequences(&causes)
+        .into_iter()
+        .filter_map(|(root, inherit)| {
+            Some(RootCauseView {
+                failure: row(root)?,
+                cause: causes.get(&root).map(Cause::describe).unwrap_or_default(),
+                consequences: inherit.into_iter().filter_map(row).collect(),
+            })
+        })
+        .collect();
+    let undetermined = causes
+        .iter()
+        .filter(|(_, c)| matches!(c, Cause::Undetermined { .. }))
+        .filter_map(|(n, _)| row(*n))
+        .collect();
+    (roots, undetermined)
+}
+
+/// The premises graph of the report: every equation, coloured by its verdict.
+fn premises_figure(bench: &Bench, checked: &[Checked]) -> Figure {
+    use checks::cause::graph::{PremisesGraph, Status};
+    let premises = (1..=85u32)
+        .map(|n| (n, bench.paper.equation(n).entry.premises.clone()))
+        .collect();
+    let status = |n: u32| match equation_checked(checked, n).map(|c| &c.finding) {
+        Some(Ok(f)) => match f.verdict {
+            Verdict::Holds => Status::Holds,
+            Verdict::HoldsApproximately { .. } => Status::Approx,
+            Verdict::Definition => Status::Definition,
+            Verdict::Estimate { .. } => Status::Estimate,
+            Verdict::PremiseFails => Status::PremiseFails,
+            Verdict::Fails => Status::Fails,
+        },
+        _ => Status::Unchecked,
+    };
+    let causes = checked
+        .iter()
+        .filter_map(|c| match (&c.subject, &c.cause) {
+            (Subject::Equation { number, .. }, Some(cause)) => Some((*number, cause.clone())),
+            _ => None,
+        })
+        .collect();
+    Figure {
+        name: "premises",
+        title: "Which equation follows from which, and where the errors start".into(),
+        caption: "One node per numbered equation, an arrow from each premise to the equation that cites it (paper/equations.yaml), each row one step further from the paper's starting points. Colours are the verdicts (green holds, blue holds at its order, grey definition, red fails, yellow not checked); a thick outline marks a root cause, and red arrows carry an error into an equation that follows correctly from a failing premise. In the HTML each node links to its finding.".into(),
+        drawing: Drawing::Premises(PremisesGraph::new(&premises, &status, &causes)),
+    }
+}
+
+/// The check of equation `n` among `checked`.
+fn equation_checked(checked: &[Checked], n: u32) -> Option<&Checked> {
+    checked
+        .iter()
+        .find(|c| matches!(c.subject, Subject::Equation { number, .. } if number == n))
+}
+
+/// The speed/accuracy study's table, for reading and for tools.
+fn precision_rows(study: &precision::Study) -> (Vec<PrecisionRow>, Vec<json::PrecisionRecord>) {
+    let mut rows = Vec::new();
+    let mut records = Vec::new();
+    for p in study.series.iter().flat_map(|s| &s.points) {
+        rows.push(PrecisionRow {
+            label: p.label.clone(),
+            evaluations: p.evaluations,
+            final_error: format!("{:.2e}", p.final_error),
+            trajectory_error: format!("{:.2e}", p.trajectory_error),
+        });
+        records.push(json::PrecisionRecord {
+            label: p.label.clone(),
+            evaluations: p.evaluations,
+            final_error: p.final_error,
+            trajectory_error: p.trajectory_error,
+        });
+    }
+    (rows, records)
+}
+
+fn missing(study: Study) -> String {
+    format!("the report needs the {study} study, which was not computed")
+}
+
+/// Computes every study once ([`compute`]) and builds the report from the results, at the
+/// bench's accuracy. `progress` receives short status lines.
+pub fn build(
+    bench: &Bench,
+    progress: &(dyn Fn(&str) + Sync),
+) -> Result<(Report, Vec<Figure>), ReportError> {
+    let results = compute(&RunConfig::report(*bench), progress)?;
+    from_results(bench, &results, progress)
+}
+
+/// Builds the report from results computed before (a full [`RunConfig::report`]); computes
+/// nothing.
+pub fn from_results(
+    bench: &Bench,
+    results: &Results,
+    progress: &(dyn Fn(&str) + Sync),
+) -> Result<(Report, Vec<Figure>), ReportError> {
+    let checked: &[Checked] = results
+        .checks
+        .as_deref()
+        .ok_or_else(|| missing(Study::Checks))?;
+
+    let cat: Vec<&paper::EquationEntry> = bench.paper.equations.iter().map(|e| &e.entry).collect();
+    let mut sections: Vec<SectionView> = SECTIONS
+        .iter()
+        .map(|(n, t)| SectionView {
+            number: *n,
+            title: (*t).to_string(),
+            equations: Vec::new(),
+        })
+        .collect();
+    let mut unchecked = Vec::new();
+    let (stored, mutation) = super::mutation::scores_for(bench.paper);
+    for e in &cat {
+        let found = checked
+            .iter()
+            .find(|c| matches!(c.subject, Subject::Equation { number, .. } if number == e.number));
+        let why = UNCHECKABLE_EQUATIONS
+            .iter()
+            .find(|(n, _)| *n == e.number)
+            .map(|(_, why)| why.to_string());
+        if found.is_none() {
+            unchecked.push((
+                e.number,
+                why.clone().unwrap_or_else(|| "no check yet".into()),
+            ));
+        }
+        let v = EquationView {
+            number: e.number,
+            label: e.label.clone(),
+            anchor: format!("eq-{}", e.number),
+            latex: e.latex.clone(),
+            mathml: display_math(&e.latex),
+            says: e.says.clone(),
+            kind: e.kind.clone(),
+            premises: e.premises.clone(),
+            finding: found.map(finding_of),
+            uncheckable: why,
+            mutants: stored
+                .as_ref()
+                .and_then(|st| st.of(e.number))
+                .map(checks::mutation::Score::describe),
+        };
+        match sections.iter_mut().find(|s| s.number == e.section) {
+            Some(s) => s.equations.push(v),
+            None => {
+                return Err(format!(
+                    "eq {} is in section {}, which the report does not know",
+                    e.number, e.section
+                )
+                .into())
+            }
+        }
+    }
+    sections.retain(|s| !s.equations.is_empty());
+
+    let mut claims = Vec::new();
+    let mut unchecked_claims = Vec::new();
+    for c in &bench.paper.claims {
+        let found = checked
+            .iter()
+            .find(|k| matches!(k.subject, Subject::Claim { id } if id == c.id));
+        let why = UNCHECKABLE_CLAIMS
+            .iter()
+            .find(|(id, _)| *id == c.id)
+            .map(|(_, why)| why.to_string());
+        if found.is_none() {
+            unchecked_claims.push((
+                c.id.clone(),
+                why.clone().unwrap_or_else(|| "no check yet".into()),
+            ));
+        }
+        claims.push(ClaimView {
+            anchor: format!("claim-{}", c.id),
+            id: c.id.clone(),
+            section: c.section,
+            near_equation: c.near_equation,
+            claim: c.claim.clone(),
+            printed: match c.claimed_value {
+                Some(v) if c.unit == "1" => fmt_num(v),
+                Some(v) => format!("{} {}", fmt_num(v), c.unit),
+                None => "(qualitative)".into(),
+            },
+            how: c.how.clone(),
+            rule: c
+                .rule
+                .as_ref()
+                .map(|r| r.describe(c.claimed_value, &c.unit)),
+            also: c
+                .also_at
+                .iter()
+                .map(|l| format!("sec. {} (eq {}): {}", l.section, l.near_equation, l.claim))
+                .collect(),
+            finding: found.map(finding_of),
+            uncheckable: why,
+        });
+    }
+
+    let failures: Vec<FailureView> = checked.iter().filter_map(failure_view).collect();
+    let (root_causes, undetermined) = causes_view(checked);
+    let failing_claims = checked
+        .iter()
+        .filter(|c| matches!(c.subject, Subject::Claim { .. }))
+        .filter_map(failure_view)
+        .collect();
+    let (corrections, downstream, correction_records) =
+        corrections_view(bench, checked, results.corrections.as_ref());
+    let (eqs, cls): (Vec<&Checked>, Vec<&Checked>) = checked
+        .iter()
+        .partition(|c| matches!(c.subject, Subject::Equation { .. }));
+
+    progress("drawing the figures");
+    let mut figures = figures::all(results)?;
+    figures.push(premises_figure(bench, checked));
+    let (precision_rows, precision_records) = precision_rows(
+        results
+            .precision
+            .as_ref()
+            .ok_or_else(|| missing(Study::Precision))?,
+    );
+    let experiment = {
+        let e = results
+            .experiment
+            .as_ref()
+            .ok_or_else(|| missing(Study::Experiment))?;
+        let mut text = e.analysis.to_string();
+        if let (Some(law), Some(truth)) = (&e.motion_law, &e.trace.truth) {
+            text.push_str(&experiment::motion_law::split(&e.analysis, law, truth));
+        }
+        text
+    };
+
+    let figure_views = figures
+        .par_iter()
+        .map(|f| {
+            Ok(FigureView {
+                name: f.name.to_string(),
+                title: f.title.clone(),
+                caption: f.caption.clone(),
+                svg: match &f.drawing {
+                    Drawing::Premises(g) => crate::figures::premises::linked_svg(g, 760, 560),
+                    d => d.to_svg(760, 480)?,
+                },
+                file: format!("figures/{}.png", f.name),
+                paper: match crate::figures::paper_scale::paper_figure(f.name) {
+                    Some((label, says)) => Some(super::PaperScaleView {
+                        label: label.to_string(),
+                        says: says.to_string(),
+                        svg: f.paper_svg()?,
+                        file: format!("figures/paper/{}.png", f.name),
+                    }),
+                    None => None,
+                },
+            })
+        })
+        .collect::<Result<Vec<_>, ReportError>>()?;
+
+    let scenes = BUILTIN
+        .iter()
+        .filter_map(|(name, src)| Scene::parse(src, name).ok())
+        .map(|s| SceneView {
+            name: s.name,
+            model: s.model.to_string(),
+            description: s.description,
+        })
+        .collect();
+
+    let paper = "A. J. McDonald and K. T. McDonald, The Rolling Motion of a Disk on a Horizontal Plane (2001)";
+    let settings = RunSettings {
+        method: "DOP853".into(),
+        rtol: bench.rtol,
+        command: "rolling-disk report".into(),
+    };
+    let document = Document {
+        schema: json::SCHEMA_ID.into(),
+        schema_version: json::SCHEMA_VERSION,
+        tool: json::Tool {
+            name: env!("CARGO_PKG_NAME").into(),
+            version: env!("CARGO_PKG_VERSION").into(),
+        },
+        paper: json::PaperSource::of(paper, bench.paper),
+        settings: json::Settings {
+            method: settings.method.clone(),
+            rtol: settings.rtol,
+            command: settings.command.clone(),
+        },
+        summary: json::SummaryCounts::of(checked),
+        equations: cat
+            .iter()
+            .map(|e| json::EquationRecord {
+                number: e.number,
+                section: e.section,
+                latex: e.latex.clone(),
+                kind: e.kind.clone(),
+                premises: e.premises.clone(),
+                outcome: outcome_for(
+                    checked,
+                    |s| matches!(s, Subject::Equation { number, .. } if *number == e.number),
+                    UNCHECKABLE_EQUATIONS
+                        .iter()
+                        .find(|(n, _)| *n == e.number)
+                        .map(|(_, why)| *why),
+                ),
+                derivation: equation_checked(checked, e.number).and_then(json::derivation_outcome),
+                cause: equation_checked(checked, e.number).and_then(|c| c.cause.clone()),
+                cause_text: equation_checked(checked, e.number)
+                    .and_then(|c| c.cause.as_ref().map(checks::cause::Cause::describe)),
+                mutants: stored.as_ref().and_then(|st| st.of(e.number)).cloned(),
+            })
+            .collect(),
+        claims: bench
+            .paper
+            .claims
+            .iter()
+            .map(|c| json::ClaimRecord {
+                id: c.id.clone(),
+                section: c.section,
+                near_equation: c.near_equation,
+                also_at: c
+                    .also_at
+                    .iter()
+                    .map(|l| json::Place {
+                        section: l.section,
+                        near_equation: l.near_equation,
+                    })
+                    .collect(),
+                printed_value: c.claimed_value,
+                rule: c
+                    .rule
+                    .as_ref()
+                    .map(|r| r.describe(c.claimed_value, &c.unit)),
+                unit: c.unit.clone(),
+                outcome: outcome_for(
+                    checked,
+                    |s| matches!(s, Subject::Claim { id } if *id == c.id),
+                    UNCHECKABLE_CLAIMS
+                        .iter()
+                        .find(|(id, _)| *id == c.id)
+                        .map(|(_, why)| *why),
+                ),
+            })
+            .collect(),
+        figures: figure_views
+            .iter()
+            .map(|f| json::FigureRecord {
+                name: f.name.clone(),
+                title: f.title.clone(),
+                file: f.file.clone(),
+            })
+            .collect(),
+        precision: precision_records,
+        corrections: correction_records,
+        friction: results.friction.as_ref().map(|f| f.studies.clone()),
+    };
+
+    let report = Report {
+        paper: paper.into(),
+        version: env!("CARGO_PKG_VERSION").into(),
+        settings,
+        summary: Summary {
+            equations: Tally::of(eqs.iter().copied()),
+            claims: Tally::of(cls.iter().copied()),
+            unchecked,
+            unchecked_claims,
+            failures,
+            root_causes,
+            undetermined,
+            failing_claims,
+            corrections,
+            downstream,
+            mutation,
+        },
+        sections,
+        claims,
+        figures: figure_views,
+        precision: precision_rows,
+        experiment,
+        paper_numbers: {
+            let f = bench.paper.fit;
+            experiment::numbers::numbers(f.beta, f.c_inv_root, physics::Disk::uniform(1.0).k)
+                .to_string()
+        },
+        friction: results.friction.as_ref().map_or_else(String::new, |f| {
+            super::friction::text(&f.studies, bench.paper)
+        }),
+        scenes,
+        document,
+    };
+    Ok((report, figures))
+}
+
+/// The corrections of the summary: each corrected form with the verdicts of the printed form
+/// (from the report's checks) and of the corrected one, and the downstream sentence.
+fn corrections_view(
+    bench: &Bench,
+    checked: &[Checked],
+    study: Option<&crate::results::CorrectionsStudy>,
+) -> (
+    Vec<super::CorrectionView>,
+    String,
+    Vec<json::CorrectionRecord>,
+) {
+    let Some(study) = study else {
+        return (Vec::new(), String::new(), Vec::new());
+    };
+    if let Some(e) = &study.error {
+        let note = format!(
+            "The corrections of paper/corrections.yaml could not be checked on this paper: {e}"
+        );
+        return (Vec::new(), note, Vec::new());
+    }
+    let verified =
+        checks::corrections::assemble(bench.paper, &study.corrections, checked, &study.corrected);
+    let records = verified
+        .iter()
+        .map(|v| json::CorrectionRecord {
+            number: v.number,
+            printed_latex: v.printed_latex.clone(),
+            corrected_latex: v.corrected_latex.clone(),
+            why: v.why.clone(),
+            printed_verdict: v.printed.verdict.clone(),
+            corrected_verdict: v.corrected.verdict.clone(),
+            corrected_holds: v.corrected.holds,
+        })
+        .collect();
+    let views = verified
+        .into_iter()
+        .map(|v| super::CorrectionView {
+            number: v.number,
+            anchor: format!("eq-{}", v.number),
+            mathml: display_math(&v.corrected_latex),
+            latex: v.corrected_latex,
+            why: v.why,
+            printed: v.printed.verdict,
+            corrected: v.corrected.verdict,
+            holds: v.corrected.holds,
+            detail: match v.corrected.headline {
+                Some(h) => format!("{} ({})", headline_text(&h, "corrected {}"), h.at),
+                None => v.corrected.detail,
+            },
+        })
+        .collect();
+    let downstream = study.downstream.as_ref().map_or(String::new(), |d| {
+        format!(
+            "The paper's fit of sec. 11 (beta = {}, C^(-1/4) = {} s) means a dissipation strength \
+             epsilon = {} with the printed eq 79 and {} with the corrected one (ratio {:.4}; disk of \
+             the built-in spin-down: a = {} m, k = {}, g = {} m/s^2)",
+            d.beta,
+            d.c_inv_root,
+            fmt_num(d.epsilon_printed),
+            fmt_num(d.epsilon_corrected),
+            d.epsilon_corrected / d.epsilon_printed,
+            d.a,
+            d.k,
+            d.g
+        )
+    });
+    (views, downstream, records)
+}

@@ -1,0 +1,64 @@
+//! Energy drift of each integration method on the benchmark scene: $|E(t) - E_0|/E_0$ with
+//! $E$ from eq 26, which the rolling model conserves exactly.
+
+use crate::figures::chart::{Legend, Plot, Series, Style};
+use crate::figures::FigureError;
+use crate::figures::{max_per_bin, Drawing, Figure};
+use physics::solve::Method;
+use studies::energy::{DriftRun, EnergyDrift};
+
+/// How a run's curve is drawn: fixed steps and DOP853 solid, DOPRI5 dashed, DOP853 projected
+/// onto the energy dotted.
+fn style(run: &DriftRun) -> Style {
+    match run.method {
+        Method::Dopri5 => Style::Dashed,
+        Method::Dop853 if run.projected => Style::Dotted,
+        Method::Rk4 | Method::Dop853 => Style::Line,
+    }
+}
+
+/// The figure, from the study's runs (no integration here).
+pub fn figure(study: &EnergyDrift) -> Result<Figure, FigureError> {
+    let mut plot = Plot::new(
+        "Energy drift on the benchmark scene",
+        "time t (s)",
+        "|E(t) − E₀| / E₀ (relative)",
+    )
+    .log(false, true)
+    .legend_at(Legend::UpperRight);
+    let mut lowest = f64::INFINITY;
+    let mut summary = Vec::new();
+    for run in &study.runs {
+        let last = run.drift.last().map_or(0.0, |p| p.1);
+        summary.push(format!(
+            "{}: {last:.1e} at 10 s, {} evaluations",
+            run.label, run.evaluations
+        ));
+        let shown = max_per_bin(&run.drift, 300);
+        lowest = shown.iter().map(|p| p.1).fold(lowest, f64::min);
+        plot = plot.with(Series::new(run.label.clone(), shown, style(run)));
+    }
+    // Room above the curves for the legend.
+    let plot = plot.y_range(lowest.max(1e-18) / 2.0, 1e-3);
+    Ok(Figure {
+        name: "energy-drift",
+        title: "Energy drift of each method".into(),
+        caption: format!(
+            "The relative change of the total energy (eq 26) along 10 s of the benchmark scene \
+             (a uniform disk rolling from a steady motion with b = a/2, disturbed along its \
+             oscillation mode), for classical RK4 at a fixed step and the adaptive Dormand-Prince \
+             methods at several relative tolerances (absolute tolerance 1e-2 of it). The model \
+             conserves energy exactly, so the drift is the integration error alone. Each curve is \
+             the largest drift in each of 300 time bins (an upper envelope; exact zeros cannot \
+             be drawn on a log axis). {}. The drift of the loose tolerances accumulates over \
+             the run; DOP853 at 1e-12 stays at the level of floating-point round-off, as RK4 \
+             does at 1 ms on this slow motion (Omega about 11 rad/s) at eight times the work. \
+             The dotted curve is DOP853 at 1e-8 with every step projected back onto the start's \
+             energy (a scene's solver: {{ project: energy }}): the energy then stays at round-off \
+             by construction, for one more evaluation per step; the projection removes the \
+             energy error, not the error along the energy surface (the phase).",
+            summary.join("; ")
+        ),
+        drawing: Drawing::Plot(plot),
+    })
+}

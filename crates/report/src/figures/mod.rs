@@ -1,0 +1,561 @@
+//! Figures: the paper's (regenerated from the models) and new ones, each a PURE function of the
+//! studies' results ([`Results`], computed once by [`crate::pipeline`]) that returns a
+//! [`Figure`] as data. No figure integrates anything: tests/architecture.rs forbids this module
+//! to reach the solver, the scene runner, the simulations or the checks. The report renders the
+//! figures as inline SVG (HTML) or PNG (LaTeX).
+//!
+//! | name | what | file |
+//! |---|---|---|
+//! | `fig1` | the geometry, from the triad and a steady motion (eqs 1-9, 28-29) | `geometry.rs` |
+//! | `tek04`, `tek01`, `tek02` | the synthetic light signal: 10 s, last 0.25 s, last 0.06 s | `experiment.rs` |
+//! | `Omega` | $\Omega_i$ against $t$ | `experiment.rs` |
+//! | `tek726`, `tek728` | $1/\Omega$ against $t_0 - t$ for two $t_0$, lines of eq 84 | `experiment.rs` |
+//! | `Odot` | $d\Omega/dt$ against $\Omega$, lines of eq 85 | `experiment.rs` |
+//! | `stability-map` | where eq 54 gives $\varpi^2 < 0$, against the paper's boundary | `stability.rs` |
+//! | `frequency` | measured against predicted $\varpi/\Omega_0$ (eqs 54, 55, 71) | `frequency.rs` |
+//! | `energy-drift` | energy drift of each method on the benchmark scene | `energy.rs` |
+//! | `path` | the centre of mass in the plane | `path.rs` |
+//! | `spin-down-alpha` | $\alpha$ against $t_0 - t$, eq 78 with 2/5 and with 2/3 | `spin_down.rs` |
+//! | `lab-frame-difference` | eqs 23-25 against the lab-frame model | `lab_frame.rs` |
+//! | `work-precision` | error against work of each method (the speed/accuracy study) | `precision.rs` |
+//! | `slip-stick`, `slip-stick-path` | the sliding model's slip-stick scene: slip, normal force, energy; paths | `friction.rs` |
+//! | `mechanisms` | the power of each dissipation mechanism against $\Omega$, and what the record needs | `friction.rs` |
+//!
+//! Everything is deterministic: the same build gives the same bytes.
+
+pub mod canvas;
+pub mod chart;
+pub mod coverage;
+pub mod energy;
+pub mod error;
+pub mod experiment;
+pub mod font;
+pub mod frequency;
+pub mod friction;
+pub mod geometry;
+pub mod lab_frame;
+pub mod legend;
+mod mark_label;
+pub mod paper_scale;
+pub mod path;
+pub mod precision;
+pub mod premises;
+pub mod ranges;
+pub mod spin_down;
+pub mod stability;
+pub mod ticks;
+
+pub use chart::{Axis, Chart, Legend, Mark, Note, Options, Plot, Series, Style};
+pub use error::{Drawn, FigureError};
+pub use geometry::Geometry;
+pub use legend::Layout;
+
+use crate::results::{Results, Study};
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+use serde::Serialize;
+
+/// A figure of the report.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Figure {
+    /// Its name: the paper's label for the paper's figures (`fig1`, `tek04`, ...), a short
+    /// slug for new ones. Also the file name of its PNG.
+    pub name: &'static str,
+    /// A short title.
+    pub title: String,
+    /// What it shows and what to look for.
+    pub caption: String,
+    /// What to draw.
+    pub drawing: Drawing,
+}
+
+/// Side-by-side plots under one title.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Panels {
+    /// The overall title.
+    pub title: String,
+    /// The plots, left to right.
+    pub plots: Vec<Plot>,
+}
+
+/// What a figure draws.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub enum Drawing {
+    /// A chart with default options.
+    Chart(Chart),
+    /// A chart with options (ranges, colours, reference lines, notes).
+    Plot(Plot),
+    /// Several plots side by side.
+    Panels(Panels),
+    /// Figure 1's geometry.
+    Geometry(Geometry),
+    /// The premises graph, coloured by verdict ([`checks::cause::graph`]).
+    Premises(checks::cause::graph::PremisesGraph),
+}
+
+impl Drawing {
+    /// Draws on any plotters backend; `scale` multiplies fonts and line widths.
+    pub fn draw<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, plotters::coord::Shift>,
+        scale: f64,
+    ) -> Result<(), FigureError> {
+        match self {
+            Drawing::Chart(c) => {
+                c.draw(root, scale)?;
+                root.present().drawn()
+            }
+            Drawing::Plot(p) => {
+                p.draw(root, scale)?;
+                root.present().drawn()
+            }
+            Drawing::Geometry(g) => g.draw(root, scale),
+            Drawing::Premises(g) => premises::draw(g, root, scale),
+            Drawing::Panels(p) => {
+                chart::register_font();
+                root.fill(&WHITE).drawn()?;
+                let band = (36.0 * scale).round() as u32;
+                let (top, inner) = root.split_vertically(band);
+                let (w, _) = top.dim_in_pixel();
+                top.draw(&Text::new(
+                    p.title.clone(),
+                    ((w / 2) as i32, (band / 2) as i32),
+                    (chart::FIGURE_FONT, 17.0 * scale)
+                        .into_font()
+                        .color(&BLACK)
+                        .pos(Pos::new(HPos::Center, VPos::Center)),
+                ))
+                .drawn()?;
+                let n = p.plots.len().max(1);
+                for (area, plot) in inner.split_evenly((1, n)).iter().zip(&p.plots) {
+                    plot.draw(area, scale)?;
+                }
+                root.present().drawn()
+            }
+        }
+    }
+
+    /// For each plot of the drawing (one, or one per panel; none for a geometry): where its
+    /// legend goes, how many plotted pixels it covers, and its labelled ticks per axis, when
+    /// drawn at `width` x `height` px and `scale` (the report's sizes: 760 x 480 at 1, and
+    /// 1800 x 1200 at 3).
+    pub fn layouts(&self, width: u32, height: u32, scale: f64) -> Result<Vec<Layout>, FigureError> {
+        chart::register_font();
+        match self {
+            Drawing::Chart(c) => Ok(vec![c.layout(
+                (width, height),
+                scale,
+                &Options::default(),
+            )?]),
+            Drawing::Plot(p) => Ok(vec![p.layout((width, height), scale)?]),
+            Drawing::Geometry(_) | Drawing::Premises(_) => Ok(vec![]),
+            Drawing::Panels(p) => {
+                // The same split as `draw`: a title band, then equal columns.
+                let band = (36.0 * scale).round() as u32;
+                let n = p.plots.len().max(1) as u32;
+                let dim = (width / n, height.saturating_sub(band));
+                p.plots.iter().map(|plot| plot.layout(dim, scale)).collect()
+            }
+        }
+    }
+
+    /// The drawing as an SVG document, `width` x `height` px.
+    pub fn to_svg(&self, width: u32, height: u32) -> Result<String, FigureError> {
+        let mut out = String::new();
+        {
+            let root = SVGBackend::with_string(&mut out, (width, height)).into_drawing_area();
+            self.draw(&root, 1.0)?;
+        }
+        Ok(out)
+    }
+
+    /// The drawing as a PNG file at `path`: 1800 x 1200 px (6 x 4 in at 300 dpi), scale 3.
+    pub fn to_png(&self, path: &std::path::Path) -> Result<(), FigureError> {
+        self.to_png_sized(path, (600, 400), 3.0)
+    }
+
+    /// The drawing as a PNG file at `path` laid out on `size` px with fonts and lines of their
+    /// usual size, every length then multiplied by `scale` for resolution.
+    pub fn to_png_sized(
+        &self,
+        path: &std::path::Path,
+        size: (u32, u32),
+        scale: f64,
+    ) -> Result<(), FigureError> {
+        let px = |v: u32| (v as f64 * scale).round() as u32;
+        let (w, h) = (px(size.0), px(size.1));
+        let mut rgb = vec![0u8; 3 * w as usize * h as usize];
+        {
+            let root = BitMapBackend::with_buffer(&mut rgb, (w, h)).into_drawing_area();
+            self.draw(&root, scale)?;
+            root.present().drawn()?;
+        }
+        write_png(path, &rgb, (w, h))
+    }
+}
+
+/// Writes 8-bit RGB pixels as a PNG file: deflate at its fast setting with the Paeth filter
+/// (flat colour and line art). Measured on the 18 figures, 2026-11-25: 0.05 s to encode and
+/// 3.9 MB, against 0.43 s and 2.6 MB at the png crate's default level.
+fn write_png(path: &std::path::Path, rgb: &[u8], (w, h): (u32, u32)) -> Result<(), FigureError> {
+    let file = std::fs::File::create(path).drawn()?;
+    let mut encoder = png::Encoder::new(std::io::BufWriter::new(file), w, h);
+    encoder.set_color(png::ColorType::Rgb);
+    encoder.set_depth(png::BitDepth::Eight);
+    encoder.set_compression(png::Compression::Fast);
+    encoder.set_filter(png::FilterType::Paeth);
+    let mut writer = encoder.write_header().drawn()?;
+    writer.write_image_data(rgb).drawn()?;
+    writer.finish().drawn()
+}
+
+/// Every figure's name, in the report's order.
+pub const NAMES: [&str; 20] = [
+    "fig1",
+    "tek04",
+    "tek01",
+    "tek02",
+    "Omega",
+    "tek726",
+    "tek728",
+    "Odot",
+    "residuals",
+    "coverage",
+    "stability-map",
+    "frequency",
+    "energy-drift",
+    "path",
+    "spin-down-alpha",
+    "lab-frame-difference",
+    "work-precision",
+    "slip-stick",
+    "slip-stick-path",
+    "mechanisms",
+];
+
+/// Every figure's name, in the report's order.
+pub fn names() -> &'static [&'static str] {
+    &NAMES
+}
+
+/// Families of figures built together (the experiment's seven share one analysis).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Family {
+    Geometry,
+    Coverage,
+    Experiment,
+    Stability,
+    Frequency,
+    Energy,
+    Path,
+    SpinDown,
+    LabFrame,
+    Precision,
+    Friction,
+}
+
+fn family(name: &str) -> Option<Family> {
+    Some(match name {
+        "fig1" => Family::Geometry,
+        "tek04" | "tek01" | "tek02" | "Omega" | "tek726" | "tek728" | "Odot" | "residuals" => {
+            Family::Experiment
+        }
+        "coverage" => Family::Coverage,
+        "stability-map" => Family::Stability,
+        "frequency" => Family::Frequency,
+        "energy-drift" => Family::Energy,
+        "path" => Family::Path,
+        "spin-down-alpha" => Family::SpinDown,
+        "lab-frame-difference" => Family::LabFrame,
+        "work-precision" => Family::Precision,
+        "slip-stick" | "slip-stick-path" | "mechanisms" => Family::Friction,
+        _ => return None,
+    })
+}
+
+fn unknown(name: &str) -> String {
+    format!(
+        "no figure named {name:?}; the figures are: {}",
+        NAMES.join(", ")
+    )
+}
+
+/// The studies a figure is drawn from (none for the geometry and the stability map, which are
+/// algebra); an unknown name is an error that lists the figures.
+pub fn needs(name: &str) -> Result<&'static [Study], FigureError> {
+    Ok(match family(name).ok_or_else(|| unknown(name))? {
+        // The coverage studies are stored, not computed by a run (see
+        // `experiment::coverage_record`).
+        Family::Geometry | Family::Stability | Family::Coverage => &[],
+        Family::Experiment => &[Study::Experiment],
+        Family::Frequency => &[Study::Frequency],
+        Family::Energy => &[Study::EnergyDrift],
+        Family::Path => &[Study::Paths, Study::SpinDown],
+        Family::SpinDown => &[Study::SpinDown],
+        Family::LabFrame => &[Study::LabFrame],
+        Family::Precision => &[Study::Precision],
+        Family::Friction => &[Study::Friction],
+    })
+}
+
+fn need<T>(x: &Option<T>, study: Study) -> Result<&T, FigureError> {
+    x.as_ref()
+        .ok_or_else(|| format!("the figures need the {study} study, which was not computed").into())
+}
+
+fn paper(r: &Results) -> Result<&paper::Paper, FigureError> {
+    r.paper
+        .as_ref()
+        .ok_or_else(|| "the figures need the paper the results were computed from".into())
+}
+
+fn build_family(f: Family, r: &Results) -> Result<Vec<Figure>, FigureError> {
+    match f {
+        Family::Geometry => Ok(vec![geometry_figure()?]),
+        Family::Coverage => Ok(vec![coverage::studies(
+            &::experiment::coverage_record::stored().map_err(|e| e.to_string())?,
+        )]),
+        Family::Experiment => experiment::figures(need(&r.experiment, Study::Experiment)?),
+        Family::Stability => Ok(vec![stability::figure(paper(r)?)?]),
+        Family::Frequency => Ok(vec![frequency::figure(
+            need(&r.frequency, Study::Frequency)?,
+            paper(r)?,
+        )?]),
+        Family::Energy => Ok(vec![energy::figure(need(&r.energy, Study::EnergyDrift)?)?]),
+        Family::Path => {
+            let mut runs = need(&r.paths, Study::Paths)?.clone();
+            let sd = need(&r.spin_down, Study::SpinDown)?;
+            runs.push(sd.path.clone());
+            Ok(vec![path::figure(&runs)?])
+        }
+        Family::SpinDown => Ok(vec![spin_down::figure(need(
+            &r.spin_down,
+            Study::SpinDown,
+        )?)?]),
+        Family::LabFrame => Ok(vec![lab_frame::figure(need(
+            &r.lab_frame,
+            Study::LabFrame,
+        )?)?]),
+        Family::Precision => Ok(vec![precision::figure(need(
+            &r.precision,
+            Study::Precision,
+        )?)]),
+        Family::Friction => {
+            let f = need(&r.friction, Study::Friction)?;
+            Ok(vec![
+                friction::slip_stick(f)?,
+                friction::paths(f)?,
+                friction::mechanisms(f)?,
+            ])
+        }
+    }
+}
+
+/// Figure 1: the geometry of a uniform disk (the toy's a = 37.5 mm) in the steady motion at
+/// alpha0 = 1 rad with b = 0.6 a.
+pub fn geometry_figure() -> Result<Figure, FigureError> {
+    let disk = physics::Disk::uniform(0.0375);
+    let view = geometry::View {
+        azimuth: -0.95,
+        elevation: 0.45,
+    };
+    let g = Geometry::steady(&disk, 1.0, 0.6 * disk.a, std::f64::consts::FRAC_PI_2, view)?;
+    Ok(Figure {
+        name: "fig1",
+        title: "The disk, its triad and its lengths".into(),
+        caption: format!(
+            "Figure 1 of the paper, drawn from the model's definitions. A uniform disk of radius \
+             a = {:.1} mm (blue rim) rolls in the steady motion at alpha0 = {:.2} rad with \
+             b = {:.2} a: eq 29 gives Omega0 = {:.2} rad/s and eq 28 omega10 = b Omega0 / a = \
+             {:.2} rad/s, and b = r - a cos(alpha) places the contact point on a circle of radius \
+             r = {:.2} a (dashed) about the vertical axis of the motion (grey), the centre of mass \
+             on a circle of radius b (dotted) at height a sin(alpha). The unit vectors are drawn at \
+             the centre of mass: 3 points from the centre to the contact point, alpha below the \
+             horizontal r; 1 (the symmetry axis) makes the same angle alpha with the downward \
+             vertical; 2 = 3 x 1 is horizontal and lies in the disk's plane, along the contact \
+             point's velocity; r = 2 x z is horizontal and points away from the axis (eqs 1-9). \
+             The tests check that every drawn arrow is the triad's vector.",
+            g.a * 1e3,
+            g.alpha,
+            g.b / g.a,
+            g.precession,
+            g.spin,
+            g.r / g.a
+        ),
+        drawing: Drawing::Geometry(g),
+    })
+}
+
+/// The figures named (each once, in the order given), drawn from `results`; an unknown name is
+/// an error that lists the known ones, and so is a figure whose study was not computed.
+/// Families are built on rayon's threads; the result does not depend on that.
+pub fn some(names: &[&str], results: &Results) -> Result<Vec<Figure>, FigureError> {
+    use rayon::prelude::*;
+    let mut families: Vec<Family> = Vec::new();
+    for n in names {
+        let f = family(n).ok_or_else(|| unknown(n))?;
+        if !families.contains(&f) {
+            families.push(f);
+        }
+    }
+    let built: Vec<Result<Vec<Figure>, FigureError>> = families
+        .par_iter()
+        .map(|&f| build_family(f, results))
+        .collect();
+    let mut pool = Vec::new();
+    for b in built {
+        pool.extend(b?);
+    }
+    let mut out = Vec::new();
+    for n in names {
+        if out.iter().any(|f: &Figure| f.name == *n) {
+            continue;
+        }
+        if let Some(i) = pool.iter().position(|f| f.name == *n) {
+            out.push(pool.swap_remove(i));
+        }
+    }
+    Ok(out)
+}
+
+/// Every figure, in the report's order, drawn from `results`.
+pub fn all(results: &Results) -> Result<Vec<Figure>, FigureError> {
+    some(&NAMES, results)
+}
+
+/// Keeps at most about `bins` points of a long series for drawing, honestly: the samples are
+/// cut into `bins` runs of consecutive points and each run contributes its minimum and its
+/// maximum (in time order), so that the drawn envelope is the data's.
+pub fn min_max_decimate(points: &[(f64, f64)], bins: usize) -> Vec<(f64, f64)> {
+    if points.len() <= 2 * bins || bins == 0 {
+        return points.to_vec();
+    }
+    let per = points.len().div_ceil(bins);
+    let mut out = Vec::with_capacity(2 * bins);
+    for run in points.chunks(per) {
+        let (mut lo, mut hi) = (0, 0);
+        for (i, p) in run.iter().enumerate() {
+            if p.1 < run[lo].1 {
+                lo = i;
+            }
+            if p.1 > run[hi].1 {
+                hi = i;
+            }
+        }
+        let (a, b) = if lo <= hi { (lo, hi) } else { (hi, lo) };
+        out.push(run[a]);
+        if b != a {
+            out.push(run[b]);
+        }
+    }
+    out
+}
+
+/// The largest value of each of `bins` runs of consecutive points, at the run's middle time:
+/// the upper envelope of a drift, drawable on a log axis (exact zeros have no logarithm).
+pub fn max_per_bin(points: &[(f64, f64)], bins: usize) -> Vec<(f64, f64)> {
+    if points.is_empty() || bins == 0 {
+        return Vec::new();
+    }
+    let per = points.len().div_ceil(bins);
+    points
+        .chunks(per)
+        .filter_map(|run| {
+            let y = run.iter().map(|p| p.1).fold(0.0, f64::max);
+            let t = 0.5 * (run[0].0 + run[run.len() - 1].0);
+            (y > 0.0).then_some((t, y))
+        })
+        .collect()
+}
+
+/// Keeps about `n` points spread evenly in log x (for log-log plots of long runs): the first
+/// point of each logarithmic bin of x > 0.
+pub fn log_thin(points: &[(f64, f64)], n: usize) -> Vec<(f64, f64)> {
+    let xs: Vec<f64> = points
+        .iter()
+        .map(|p| p.0)
+        .filter(|x| *x > 0.0 && x.is_finite())
+        .collect();
+    if xs.len() <= n || n == 0 {
+        return points.to_vec();
+    }
+    let lo = xs.iter().copied().fold(f64::INFINITY, f64::min).ln();
+    let hi = xs.iter().copied().fold(f64::NEG_INFINITY, f64::max).ln();
+    let width = (hi - lo) / n as f64;
+    let mut last_bin = None;
+    let mut out = Vec::new();
+    for p in points {
+        if !(p.0 > 0.0 && p.0.is_finite()) {
+            continue;
+        }
+        let bin = (((p.0.ln() - lo) / width).floor() as i64).min(n as i64 - 1);
+        if last_bin != Some(bin) {
+            out.push(*p);
+            last_bin = Some(bin);
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn decimation_keeps_the_envelope() {
+        let pts: Vec<(f64, f64)> = (0..10_000)
+            .map(|i| (i as f64, ((i * 7919) % 1000) as f64))
+            .collect();
+        let d = min_max_decimate(&pts, 100);
+        assert!(d.len() <= 200);
+        let max = d.iter().map(|p| p.1).fold(f64::MIN, f64::max);
+        let min = d.iter().map(|p| p.1).fold(f64::MAX, f64::min);
+        assert_eq!((min, max), (0.0, 999.0));
+        assert!(d.windows(2).all(|w| w[1].0 > w[0].0));
+    }
+
+    #[test]
+    fn unknown_names_are_errors_that_list_the_figures() {
+        let e = some(&["nope"], &Results::default())
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("fig1") && e.contains("work-precision"), "{e}");
+        assert!(needs("nope").is_err());
+    }
+
+    #[test]
+    fn a_figure_without_its_study_is_an_error_not_a_computation() {
+        let e = some(&["spin-down-alpha"], &Results::default())
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("spin-down"), "{e}");
+        // The algebraic figures need no study.
+        let with_paper = Results {
+            paper: Some(paper::Paper::built_in().unwrap()),
+            ..Results::default()
+        };
+        let f = some(&["fig1", "stability-map"], &with_paper).unwrap();
+        assert_eq!(f.len(), 2);
+    }
+
+    #[test]
+    fn labels_of_close_reference_lines_do_not_overlap() {
+        use chart::{Axis, Plot, Series, Style};
+        let plot = Plot::new("t", "x", "y")
+            .with(Series::new("s", vec![(0.0, 0.0), (1.0, 1.0)], Style::Line))
+            .mark(Axis::X, 0.80, "first label")
+            .mark(Axis::X, 0.81, "second label");
+        chart::register_font();
+        let svg = Drawing::Plot(plot).to_svg(900, 600).unwrap();
+        // The y of the <text> holding each label.
+        let y_of = |label: &str| -> f64 {
+            let end = svg.find(label).unwrap();
+            let start = svg[..end].rfind("<text").unwrap();
+            let tag = &svg[start..end];
+            let y = tag.find(" y=\"").unwrap() + 4;
+            tag[y..y + tag[y..].find('"').unwrap()].parse().unwrap()
+        };
+        let (a, b) = (y_of("first label"), y_of("second label"));
+        assert!((a - b).abs() >= 10.0, "labels at y = {a} and {b}");
+    }
+}

@@ -1,0 +1,48 @@
+//! The work-precision figure of the speed/accuracy study: for each integration method, the
+//! largest relative error over the benchmark run against the right-hand-side evaluations it
+//! cost, with the reference's own uncertainty as a floor.
+
+use crate::figures::chart::Chart;
+use crate::figures::{Drawing, Figure, Series, Style};
+use studies::precision::{reference, Study};
+
+/// The figure, from a finished study (computed once by the report's pipeline; no integration
+/// here).
+pub fn figure(study: &Study) -> Figure {
+    let mut series = Vec::new();
+    for s in &study.series {
+        let pts: Vec<(f64, f64)> = s
+            .points
+            .iter()
+            .filter(|p| p.ending.is_complete() && p.trajectory_error > 0.0)
+            .map(|p| (p.evaluations as f64, p.trajectory_error))
+            .collect();
+        series.push(Series::new(s.method.to_string(), pts, Style::Line));
+    }
+    let floor = study.reference.uncertainty;
+    let (x0, x1) = (3e2, 3e5);
+    series.push(Series::new(
+        format!("reference uncertainty {floor:.1e}"),
+        vec![(x0, floor), (x1, floor)],
+        Style::Dashed,
+    ));
+    let chart = Chart {
+        title: "Work against precision, benchmark scene (10 s)".into(),
+        x_label: "right-hand-side evaluations".into(),
+        y_label: "largest relative error over the run".into(),
+        x_log: true,
+        y_log: true,
+        series,
+    };
+    Figure {
+        name: "work-precision",
+        title: "Speed against accuracy".into(),
+        caption: format!(
+            "Error of each method against the reference ({}), versus the number of right-hand-side \
+             evaluations, on the benchmark scene. RK4 runs at fixed steps; DOPRI5 and DOP853 over \
+             tolerances from 1e-3 to 1e-13. Below the dashed line the reference cannot resolve the error.",
+            reference::label(&study.reference.trace.settings)
+        ),
+        drawing: Drawing::Chart(chart),
+    }
+}

@@ -1,0 +1,141 @@
+//! Rendering the report through tera templates (templates/, compiled into the binary), and
+//! writing it atomically: every file goes to a temporary name first, then is renamed.
+
+use super::Report;
+use crate::error::ReportError;
+use crate::figures::Figure;
+use files::atomic::write_atomically;
+use std::path::{Path, PathBuf};
+use tera::{Context, Tera};
+
+/// The output formats.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Format {
+    /// One self-contained HTML file.
+    Html,
+    /// A LaTeX document and its PNG figures.
+    Latex,
+    /// The report's data.
+    Json,
+}
+
+fn templates() -> Result<Tera, ReportError> {
+    let mut t = Tera::default();
+    t.add_raw_templates(vec![
+        (
+            "report.html",
+            include_str!("../../../templates/report.html.tera"),
+        ),
+        (
+            "partials/finding.html",
+            include_str!("../../../templates/partials/finding.html.tera"),
+        ),
+        (
+            "report.tex",
+            include_str!("../../../templates/report.tex.tera"),
+        ),
+        (
+            "partials/finding.tex",
+            include_str!("../../../templates/partials/finding.tex.tera"),
+        ),
+    ])
+    .map_err(|e| ReportError::Template(format!("a report template is broken: {e:?}")))?;
+    t.register_filter("tex", super::tex::filter);
+    t.autoescape_on(vec![".html"]);
+    Ok(t)
+}
+
+fn render(report: &Report, template: &str) -> Result<String, ReportError> {
+    let t = templates()?;
+    let ctx = Context::from_serialize(report).map_err(|e| ReportError::Input(e.to_string()))?;
+    let mut ctx = ctx;
+    let svgs: Vec<&str> = report.figures.iter().map(|f| f.svg.as_str()).collect();
+    ctx.insert("svgs", &svgs);
+    let paper_svgs: Vec<&str> = report
+        .figures
+        .iter()
+        .map(|f| f.paper.as_ref().map_or("", |p| p.svg.as_str()))
+        .collect();
+    ctx.insert("paper_svgs", &paper_svgs);
+    if template == "report.html" {
+        ctx.insert("fonts", super::fonts::css());
+    }
+    t.render(template, &ctx).map_err(|e| {
+        let mut msg = format!("cannot render {template}: {e}");
+        let mut source = std::error::Error::source(&e);
+        while let Some(s) = source {
+            msg.push_str(&format!(": {s}"));
+            source = s.source();
+        }
+        ReportError::Template(msg)
+    })
+}
+
+/// The HTML report: one file, math as MathML, figures as inline SVG, nothing fetched.
+pub fn html(report: &Report) -> Result<String, ReportError> {
+    render(report, "report.html")
+}
+
+/// The LaTeX report (figures are PNG files under `figures/`).
+pub fn latex(report: &Report) -> Result<String, ReportError> {
+    render(report, "report.tex")
+}
+
+/// The report's data as JSON, following `schemas/report.schema.json` (see [`super::json`]).
+pub fn json(report: &Report) -> Result<String, ReportError> {
+    super::json::to_json(&report.document)
+}
+
+/// Writes the report in `formats` to `dir`, each file atomically; returns the paths written.
+pub fn write(
+    report: &Report,
+    figures: &[Figure],
+    dir: &Path,
+    formats: &[Format],
+) -> Result<Vec<PathBuf>, ReportError> {
+    std::fs::create_dir_all(dir).map_err(|e| ReportError::io("create", dir, e))?;
+    let mut written = Vec::new();
+    let put = |name: &str, text: String, written: &mut Vec<PathBuf>| -> Result<(), ReportError> {
+        let path = dir.join(name);
+        write_atomically(&path, text.as_bytes()).map_err(|e| ReportError::io("write", &path, e))?;
+        written.push(path);
+        Ok(())
+    };
+    for f in formats {
+        match f {
+            Format::Html => put("report.html", html(report)?, &mut written)?,
+            Format::Json => put("report.json", json(report)?, &mut written)?,
+            Format::Latex => {
+                let fig_dir = dir.join("figures");
+                std::fs::create_dir_all(&fig_dir)
+                    .map_err(|e| ReportError::io("create", &fig_dir, e))?;
+                // Each PNG is drawn on its own rayon thread; the files do not depend on that.
+                use rayon::prelude::*;
+                let paper_dir = fig_dir.join("paper");
+                std::fs::create_dir_all(&paper_dir)
+                    .map_err(|e| ReportError::io("create", &paper_dir, e))?;
+                let png = |dir: &Path, name: &str, draw: &dyn Fn(&Path) -> Result<(), crate::figures::FigureError>| {
+                    let path = dir.join(format!("{name}.png"));
+                    let tmp = dir.join(format!(".{name}.{}.png", std::process::id()));
+                    draw(&tmp)?;
+                    std::fs::rename(&tmp, &path).map_err(|e| ReportError::io("write", &path, e))?;
+                    Ok::<_, ReportError>(path)
+                };
+                let pngs: Vec<Vec<PathBuf>> = figures
+                    .par_iter()
+                    .map(|fig| {
+                        let mut out = vec![png(&fig_dir, fig.name, &|p| fig.drawing.to_png(p))?];
+                        // The paper's figures again at the paper's size.
+                        if crate::figures::paper_scale::paper_figure(fig.name).is_some() {
+                            out.push(png(&paper_dir, fig.name, &|p| fig.paper_png(p))?);
+                        }
+                        Ok(out)
+                    })
+                    .collect::<Result<_, ReportError>>()?;
+                written.extend(pngs.into_iter().flatten());
+                put("report.tex", latex(report)?, &mut written)?;
+            }
+        }
+    }
+    Ok(written)
+}

@@ -1,0 +1,25 @@
+//! Studies: each computed once from the references, returning plain data (no drawing types).
+//!
+//! - [`sliding`]: the paper's claims that need Coulomb friction, run with the sliding model;
+//! - [`precision`]: speed against accuracy, measured at equal error;
+//! - [`peer`]: the thick toy against an independent program's stored runs;
+//! - [`compare`]: one scene run in two models side by side;
+//! - the studies behind the report's figures: [`energy`] (drift of six methods), [`frequency`]
+//!   (small oscillations measured, eqs 54, 55, 71), [`lab_frame`] (eqs 23-25 against the
+//!   Newton-Euler model), [`runs`] (the path scenes and the one spin-down run), [`slip_stick`]
+//!   (the sliding model's scene and the sliding studies), [`synthetic`] (the experiment of
+//!   sec. 11 simulated and analysed).
+
+pub mod compare;
+pub mod energy;
+pub mod error;
+pub mod frequency;
+pub mod lab_frame;
+pub mod peer;
+pub mod precision;
+pub mod runs;
+pub mod sliding;
+pub mod slip_stick;
+pub mod synthetic;
+
+pub use error::StudyError;

@@ -1,0 +1,170 @@
+//! One integration of a scene, measured: the solver's work, the median wall time of repeated
+//! runs, the final state and (optionally) the state at fixed sample times.
+
+use physics::dispatch::{dispatch, problem, Visit};
+use physics::model::Model;
+use physics::scene::Scene;
+use physics::solve::{solve_with, Ending, Engine, Settings, SettingsError, Stats};
+use serde::Serialize;
+use std::time::Instant;
+
+/// How long to time each integration: at least `min_runs` runs, then more until `budget_seconds`
+/// of wall time have been spent or `max_runs` runs made. The median run is reported.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Timing {
+    /// Fewest runs.
+    pub min_runs: usize,
+    /// Most runs.
+    pub max_runs: usize,
+    /// Wall time (s) after which no run is started once `min_runs` are done.
+    pub budget_seconds: f64,
+}
+
+impl Timing {
+    /// A single run: the time is then only indicative.
+    pub const ONCE: Timing = Timing {
+        min_runs: 1,
+        max_runs: 1,
+        budget_seconds: 0.0,
+    };
+}
+
+impl Default for Timing {
+    /// 3 to 21 runs within a quarter of a second.
+    fn default() -> Self {
+        Self {
+            min_runs: 3,
+            max_runs: 21,
+            budget_seconds: 0.25,
+        }
+    }
+}
+
+/// One integration of a scene, measured.
+#[derive(Debug, Clone, Serialize)]
+pub struct Trace {
+    /// The settings integrated with.
+    pub settings: Settings,
+    /// The work of the main pass (the sampled re-run's extra evaluations are not counted).
+    pub stats: Stats,
+    /// Why it ended.
+    pub ending: Ending,
+    /// The final time (s).
+    pub t_final: f64,
+    /// The final state.
+    pub y_final: Vec<f64>,
+    /// Sample times (s), when sampling was asked for; the last is the final time.
+    pub sample_t: Vec<f64>,
+    /// States at the sample times.
+    #[serde(skip)]
+    pub samples: Vec<Vec<f64>>,
+    /// Median wall time of one integration (s), sampling excluded.
+    pub wall_seconds: f64,
+    /// How many timed runs the median is of.
+    pub runs: usize,
+    /// Relative change of the model's energy from start to end, $(E_{end} - E_0)/|E_0|$.
+    pub energy_change: f64,
+}
+
+/// Integrates `scene` with `settings`, timed by `timing`; with `sample` = Some(dt), once more
+/// sampled every `dt` seconds (untimed) for the error over the trajectory.
+pub fn trace(
+    scene: &Scene,
+    settings: &Settings,
+    sample: Option<f64>,
+    timing: &Timing,
+) -> Result<Trace, SettingsError> {
+    trace_with(scene, settings, sample, timing, Engine::Own)
+}
+
+/// [`trace`] with a chosen DOP853 engine (the crate's own, or `ode_solvers`' for comparison).
+pub fn trace_with(
+    scene: &Scene,
+    settings: &Settings,
+    sample: Option<f64>,
+    timing: &Timing,
+    engine: Engine,
+) -> Result<Trace, SettingsError> {
+    dispatch(
+        scene,
+        TraceJob {
+            settings,
+            sample,
+            timing,
+            engine,
+        },
+    )
+}
+
+struct TraceJob<'a> {
+    settings: &'a Settings,
+    sample: Option<f64>,
+    timing: &'a Timing,
+    engine: Engine,
+}
+
+impl Visit for TraceJob<'_> {
+    type Out = Result<Trace, SettingsError>;
+
+    fn visit<M: Model<N>, const N: usize>(self, model: &M, scene: &Scene) -> Self::Out {
+        let y0 = model.state(&scene.start);
+        let t_end = scene.stop.time;
+        let started = Instant::now();
+        let mut walls = Vec::new();
+        let mut first = None;
+        loop {
+            let p = problem(model, scene, y0, t_end);
+            let t = Instant::now();
+            let sol = solve_with(p, self.settings, self.engine)?;
+            walls.push(t.elapsed().as_secs_f64());
+            first.get_or_insert(sol);
+            let n = walls.len();
+            let spent = started.elapsed().as_secs_f64();
+            if n >= self.timing.max_runs.max(1)
+                || (n >= self.timing.min_runs && spent >= self.timing.budget_seconds)
+            {
+                break;
+            }
+        }
+        let sol = first.expect("at least one run");
+        let (t_final, y_end) = sol.last();
+        let (mut sample_t, mut samples) = (Vec::new(), Vec::new());
+        if let Some(dt) = self.sample {
+            let s = solve_with(
+                problem(model, scene, y0, t_end).sampled(dt),
+                self.settings,
+                self.engine,
+            )?;
+            debug_assert_eq!(s.stats.evaluations, sol.stats.evaluations);
+            sample_t = s.t;
+            samples = s.y.iter().map(|y| y.iter().copied().collect()).collect();
+        }
+        let e0 = model.energy(&y0);
+        Ok(Trace {
+            settings: *self.settings,
+            stats: sol.stats,
+            ending: sol.ending,
+            t_final,
+            y_final: y_end.iter().copied().collect(),
+            sample_t,
+            samples,
+            wall_seconds: median(&mut walls),
+            runs: walls.len(),
+            energy_change: (model.energy(&y_end) - e0) / e0.abs(),
+        })
+    }
+}
+
+/// The median of `xs` (sorted in place); NaN when empty.
+pub(crate) fn median(xs: &mut [f64]) -> f64 {
+    if xs.is_empty() {
+        return f64::NAN;
+    }
+    xs.sort_by(f64::total_cmp);
+    let n = xs.len();
+    if n % 2 == 1 {
+        xs[n / 2]
+    } else {
+        0.5 * (xs[n / 2 - 1] + xs[n / 2])
+    }
+}
