@@ -139,7 +139,7 @@ fn check_schema() -> serde_json::Value {
     assert!(
         published == generated,
         "{} is not the schema of the code: run `ROLLING_DISK_BLESS=1 cargo test --release --test \
-         cli check_json` and commit it",
+         integration cli::check_json` and commit it",
         path.display()
     );
     serde_json::from_str(&published).unwrap()

@@ -4,7 +4,7 @@
 use experiment::coverage::coverage;
 use experiment::coverage_record::{run, stored, StoredCoverage};
 
-/// The studies, as `ROLLING_DISK_BLESS=1 cargo test --release --test coverage_record --
+/// The studies, as `ROLLING_DISK_BLESS=1 cargo test --release --test integration coverage_record:: --
 /// --ignored` runs and stores them: 400 clean recordings (seeds 5000-5399) and 500 with every
 /// artifact (seeds 10000-10499), the same as the full studies of `tests/experiment.rs`.
 const STUDIES: [(&str, usize, u64, bool); 2] = [
@@ -51,7 +51,7 @@ fn the_stored_coverage_studies_are_this_codes() {
 #[ignore = "slow: 900 recordings; run with ROLLING_DISK_BLESS=1 to store them"]
 fn record_the_coverage_studies() {
     let date = std::env::var("ROLLING_DISK_DATE").unwrap_or_else(|_| "undated".into());
-    let command = "ROLLING_DISK_BLESS=1 cargo test --release --test coverage_record -- --ignored";
+    let command = "ROLLING_DISK_BLESS=1 cargo test --release --test integration coverage_record:: -- --ignored";
     let studies: Vec<StoredCoverage> = STUDIES
         .iter()
         .map(|&(name, runs, seed0, artifacts)| {

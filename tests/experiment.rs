@@ -128,8 +128,8 @@ fn check_coverage(runs: usize, seed0: u64) {
     }
 }
 
-/// Met (measured 2026-11-25, seeds 1000-1119, `cargo test --release --test experiment --
-/// stated_intervals_cover_the_truth --exact --include-ignored --nocapture`, 223 s beside the
+/// Met (measured 2026-11-25, seeds 1000-1119, `cargo test --release --test integration --
+/// experiment::stated_intervals_cover_the_truth --exact --include-ignored --nocapture`, 223 s beside the
 /// artifact-laden study on the shared 2-core machine): beta inside 1 sigma 64.2 %, 1.96 sigma
 /// 95.0 %; t0 67.5 %, 93.3 %; pulls (mean, sd) beta (+0.07, 1.10), t0 (-0.10, 1.04); worst errors
 /// beta 0.0004, t0 0.126 ms; none refused. Before the crossings' slope came from a line through
@@ -157,8 +157,8 @@ fn stated_intervals_cover_the_truth_30_recordings() {
 }
 
 /// The full study: 400 other recordings (binomial sd 2.3 % at 68 %, 1.1 % at 95 %). Met
-/// (measured 2026-11-25, seeds 5000-5399, `cargo test --release --test experiment --
-/// stated_intervals_cover_the_truth_400_recordings --exact --include-ignored --nocapture`, 11 min
+/// (measured 2026-11-25, seeds 5000-5399, `cargo test --release --test integration --
+/// experiment::stated_intervals_cover_the_truth_400_recordings --exact --include-ignored --nocapture`, 11 min
 /// beside the 500-trace study on the shared machine): none refused; beta inside 1 sigma 66.8 %,
 /// 1.96 sigma 93.5 %; t0 69.0 %, 93.8 %; pulls (mean, sd) beta (+0.06, 1.06), t0 (-0.04, 1.05);
 /// worst errors beta 0.0004, t0 0.165 ms. The 95 % intervals hold 1.4 and 1.1 binomial sd less
@@ -511,7 +511,7 @@ fn stated_intervals_cover_the_truth_on_30_artifact_laden_traces() {
 }
 
 /// The full study: 500 other artifact-laden recordings. Met (measured 2026-11-25, seeds
-/// 10000-10499, `cargo test --release --test experiment -- stated_intervals_cover_the_truth_full_study
+/// 10000-10499, `cargo test --release --test integration -- experiment::stated_intervals_cover_the_truth_full_study
 /// --exact --include-ignored --nocapture`, 18 min beside the 400-trace study on the shared
 /// machine): none refused; beta inside 1 sigma 67.6 %, 1.96 sigma 94.8 %; t0 67.2 %, 94.6 %; pulls
 /// (mean, sd) beta (+0.15, 1.02), t0 (-0.15, 1.03); worst errors beta 0.0016, t0 1.813 ms; eq 79

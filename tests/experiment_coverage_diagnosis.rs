@@ -2,7 +2,7 @@
 //! exact-law traces the truth of every peak time is known, so the timing errors can be compared
 //! with their stated uncertainties directly, and the fit's error model checked piece by piece.
 //!
-//! Measured 2026-11-25 (`DIAG_RUNS=40 cargo test --release --test experiment_coverage_diagnosis
+//! Measured 2026-11-25 (`DIAG_RUNS=40 cargo test --release --test integration experiment_coverage_diagnosis::
 //! -- --include-ignored --nocapture`, clean seeds 1000-1039, 5961 peaks in the fitting windows):
 //!
 //! - Before: timing error / stated sigma had sd 1.09 pooled, but 1.35 at Omega 99-107 rad/s (the

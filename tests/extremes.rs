@@ -1,6 +1,6 @@
 //! Numerical stability at the extremes: each test states the behaviour it expects.
 //!
-//! Measured values are printed (`cargo test --release --test extremes -- --nocapture`).
+//! Measured values are printed (`cargo test --release --test integration extremes:: -- --nocapture`).
 
 use physics::disk::Disk;
 use physics::model::rolling::Rolling;

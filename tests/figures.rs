@@ -194,7 +194,7 @@ fn figures_can_be_built_by_name() {
 }
 
 /// Writes every figure as PNG to /tmp/fig_NAME.png for looking at:
-/// `cargo test --release --test figures -- --ignored`.
+/// `cargo test --release --test integration figures:: -- --ignored`.
 #[test]
 #[ignore]
 fn write_pngs_for_inspection() {

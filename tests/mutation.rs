@@ -50,7 +50,7 @@ fn every_mutant_of_the_printed_equations_is_killed() {
     assert_eq!(
         StoredScores::built_in().unwrap(),
         fresh,
-        "snapshots/mutants.json is stale: re-bless with ROLLING_DISK_BLESS=1 cargo test --release --test mutation"
+        "snapshots/mutants.json is stale: re-bless with ROLLING_DISK_BLESS=1 cargo test --release --test integration mutation::"
     );
     assert!(unexplained.is_empty(), "survivors: {unexplained:#?}");
 }

@@ -225,7 +225,7 @@ fn published_schema() -> serde_json::Value {
     assert!(
         published == generated,
         "{} is not the schema of the code: run `ROLLING_DISK_BLESS=1 cargo test --release --test \
-         report json` and commit it (and raise SCHEMA_VERSION if a field was removed or renamed)",
+         integration report::report_json` and commit it (and raise SCHEMA_VERSION if a field was removed or renamed)",
         path.display()
     );
     serde_json::from_str(&published).unwrap()

@@ -8,7 +8,7 @@
 //! the last bit (`tests/coverage_record.rs`). A stored file made by other code, or edited by
 //! hand, fails that test; a change to the analysis that moves any pull makes it fail until the
 //! studies are run again:
-//! `ROLLING_DISK_BLESS=1 cargo test --release --test coverage_record -- --ignored`.
+//! `ROLLING_DISK_BLESS=1 cargo test --release --test integration coverage_record:: -- --ignored`.
 
 use crate::coverage::{coverage, Coverage};
 use crate::error::ExperimentError;
@@ -36,7 +36,7 @@ pub fn stored() -> Result<Vec<StoredCoverage>, ExperimentError> {
     serde_json::from_str(include_str!("../../../snapshots/coverage.json")).map_err(|e| {
         ExperimentError::Setting(format!(
             "snapshots/coverage.json does not hold the coverage studies ({e}): run \
-             ROLLING_DISK_BLESS=1 cargo test --release --test coverage_record -- --ignored"
+             ROLLING_DISK_BLESS=1 cargo test --release --test integration coverage_record:: -- --ignored"
         ))
     })
 }

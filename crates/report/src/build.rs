@@ -3,12 +3,13 @@
 //! and the experiment's analysis. Nothing here computes a study. Everything here is
 //! deterministic: seeded randomness, no clocks, no wall times.
 
-use super::json::{self, outcome_for, Document};
+use super::json;
 use super::mathml::display_math;
 use super::{
     fmt_num, ClaimView, EquationView, FailureView, FigureView, FindingView, PrecisionRow, Report,
     RootCauseView, RunSettings, SceneView, SectionView, Summary,
 };
+use crate::document::equation_checked;
 use crate::error::ReportError;
 use crate::figures::{self, Drawing, Figure};
 use crate::pipeline::{compute, RunConfig};
@@ -16,6 +17,7 @@ use crate::results::{Results, Study};
 use checks::check::{Checked, Subject, Tally};
 use checks::equations::{Bench, UNCHECKABLE_CLAIMS, UNCHECKABLE_EQUATIONS};
 use checks::finding::{Finding, Verdict};
+use checks::mutation::StoredScores;
 use physics::scene::{builtin::BUILTIN, Scene};
 use rayon::prelude::*;
 use studies::precision;
@@ -235,13 +237,6 @@ fn premises_figure(bench: &Bench, checked: &[Checked]) -> Figure {
     }
 }
 
-/// The check of equation `n` among `checked`.
-fn equation_checked(checked: &[Checked], n: u32) -> Option<&Checked> {
-    checked
-        .iter()
-        .find(|c| matches!(c.subject, Subject::Equation { number, .. } if number == n))
-}
-
 /// The speed/accuracy study's table, for reading and for tools.
 fn precision_rows(study: &precision::Study) -> (Vec<PrecisionRow>, Vec<json::PrecisionRecord>) {
     let mut rows = Vec::new();
@@ -288,7 +283,117 @@ pub fn from_results(
         .checks
         .as_deref()
         .ok_or_else(|| missing(Study::Checks))?;
+    let (stored, mutation) = super::mutation::scores_for(bench.paper);
+    let (sections, unchecked) = section_views(bench, checked, stored.as_ref())?;
+    let (claims, unchecked_claims) = claim_views(bench, checked);
+    let failures: Vec<FailureView> = checked.iter().filter_map(failure_view).collect();
+    let (root_causes, undetermined) = causes_view(checked);
+    let failing_claims = checked
+        .iter()
+        .filter(|c| matches!(c.subject, Subject::Claim { .. }))
+        .filter_map(failure_view)
+        .collect();
+    let (corrections, downstream, correction_records) =
+        corrections_view(bench, checked, results.corrections.as_ref());
+    let (eqs, cls): (Vec<&Checked>, Vec<&Checked>) = checked
+        .iter()
+        .partition(|c| matches!(c.subject, Subject::Equation { .. }));
 
+    progress("drawing the figures");
+    let mut figures = figures::all(results)?;
+    figures.push(premises_figure(bench, checked));
+    let (precision_rows, precision_records) = precision_rows(
+        results
+            .precision
+            .as_ref()
+            .ok_or_else(|| missing(Study::Precision))?,
+    );
+    let experiment = {
+        let e = results
+            .experiment
+            .as_ref()
+            .ok_or_else(|| missing(Study::Experiment))?;
+        let mut text = e.analysis.to_string();
+        if let (Some(law), Some(truth)) = (&e.motion_law, &e.trace.truth) {
+            text.push_str(&experiment::motion_law::split(&e.analysis, law, truth));
+        }
+        text
+    };
+    let figure_views = figure_views(&figures)?;
+
+    let scenes = BUILTIN
+        .iter()
+        .filter_map(|(name, src)| Scene::parse(src, name).ok())
+        .map(|s| SceneView {
+            name: s.name,
+            model: s.model.to_string(),
+            description: s.description,
+        })
+        .collect();
+
+    let settings = RunSettings {
+        method: "DOP853".into(),
+        rtol: bench.rtol,
+        command: "rolling-disk report".into(),
+    };
+    let document = super::document::document(
+        bench,
+        checked,
+        stored.as_ref(),
+        &settings,
+        &figure_views,
+        super::document::Records {
+            precision: precision_records,
+            corrections: correction_records,
+            friction: results.friction.as_ref().map(|f| f.studies.clone()),
+        },
+    );
+
+    let report = Report {
+        paper: super::document::PAPER.into(),
+        version: env!("CARGO_PKG_VERSION").into(),
+        settings,
+        summary: Summary {
+            equations: Tally::of(eqs.iter().copied()),
+            claims: Tally::of(cls.iter().copied()),
+            unchecked,
+            unchecked_claims,
+            failures,
+            root_causes,
+            undetermined,
+            failing_claims,
+            corrections,
+            downstream,
+            mutation,
+        },
+        sections,
+        claims,
+        figures: figure_views,
+        precision: precision_rows,
+        experiment,
+        paper_numbers: {
+            let f = bench.paper.fit;
+            experiment::numbers::numbers(f.beta, f.c_inv_root, physics::Disk::uniform(1.0).k)
+                .to_string()
+        },
+        friction: results.friction.as_ref().map_or_else(String::new, |f| {
+            super::friction::text(&f.studies, bench.paper)
+        }),
+        scenes,
+        document,
+    };
+    Ok((report, figures))
+}
+
+/// What has no check (an equation's number or a claim's id), each with why.
+type Unchecked<K> = Vec<(K, String)>;
+
+/// Every equation's view, in the report's sections, and the equations with no check and why.
+fn section_views(
+    bench: &Bench,
+    checked: &[Checked],
+    stored: Option<&StoredScores>,
+) -> Result<(Vec<SectionView>, Unchecked<u32>), ReportError> {
     let cat: Vec<&paper::EquationEntry> = bench.paper.equations.iter().map(|e| &e.entry).collect();
     let mut sections: Vec<SectionView> = SECTIONS
         .iter()
@@ -299,7 +404,6 @@ pub fn from_results(
         })
         .collect();
     let mut unchecked = Vec::new();
-    let (stored, mutation) = super::mutation::scores_for(bench.paper);
     for e in &cat {
         let found = checked
             .iter()
@@ -326,7 +430,6 @@ pub fn from_results(
             finding: found.map(finding_of),
             uncheckable: why,
             mutants: stored
-                .as_ref()
                 .and_then(|st| st.of(e.number))
                 .map(checks::mutation::Score::describe),
         };
@@ -343,6 +446,11 @@ pub fn from_results(
     }
     sections.retain(|s| !s.equations.is_empty());
 
+    Ok((sections, unchecked))
+}
+
+/// Every prose claim's view, and the claims with no check and why.
+fn claim_views(bench: &Bench, checked: &[Checked]) -> (Vec<ClaimView>, Unchecked<String>) {
     let mut claims = Vec::new();
     let mut unchecked_claims = Vec::new();
     for c in &bench.paper.claims {
@@ -385,41 +493,13 @@ pub fn from_results(
         });
     }
 
-    let failures: Vec<FailureView> = checked.iter().filter_map(failure_view).collect();
-    let (root_causes, undetermined) = causes_view(checked);
-    let failing_claims = checked
-        .iter()
-        .filter(|c| matches!(c.subject, Subject::Claim { .. }))
-        .filter_map(failure_view)
-        .collect();
-    let (corrections, downstream, correction_records) =
-        corrections_view(bench, checked, results.corrections.as_ref());
-    let (eqs, cls): (Vec<&Checked>, Vec<&Checked>) = checked
-        .iter()
-        .partition(|c| matches!(c.subject, Subject::Equation { .. }));
+    (claims, unchecked_claims)
+}
 
-    progress("drawing the figures");
-    let mut figures = figures::all(results)?;
-    figures.push(premises_figure(bench, checked));
-    let (precision_rows, precision_records) = precision_rows(
-        results
-            .precision
-            .as_ref()
-            .ok_or_else(|| missing(Study::Precision))?,
-    );
-    let experiment = {
-        let e = results
-            .experiment
-            .as_ref()
-            .ok_or_else(|| missing(Study::Experiment))?;
-        let mut text = e.analysis.to_string();
-        if let (Some(law), Some(truth)) = (&e.motion_law, &e.trace.truth) {
-            text.push_str(&experiment::motion_law::split(&e.analysis, law, truth));
-        }
-        text
-    };
-
-    let figure_views = figures
+/// The figures as the HTML and LaTeX reports show them: inline SVG (the premises graph with
+/// links to its findings), the PNG's file, and the paper-size version of the paper's figures.
+fn figure_views(figures: &[Figure]) -> Result<Vec<FigureView>, ReportError> {
+    figures
         .par_iter()
         .map(|f| {
             Ok(FigureView {
@@ -442,140 +522,7 @@ pub fn from_results(
                 },
             })
         })
-        .collect::<Result<Vec<_>, ReportError>>()?;
-
-    let scenes = BUILTIN
-        .iter()
-        .filter_map(|(name, src)| Scene::parse(src, name).ok())
-        .map(|s| SceneView {
-            name: s.name,
-            model: s.model.to_string(),
-            description: s.description,
-        })
-        .collect();
-
-    let paper = "A. J. McDonald and K. T. McDonald, The Rolling Motion of a Disk on a Horizontal Plane (2001)";
-    let settings = RunSettings {
-        method: "DOP853".into(),
-        rtol: bench.rtol,
-        command: "rolling-disk report".into(),
-    };
-    let document = Document {
-        schema: json::SCHEMA_ID.into(),
-        schema_version: json::SCHEMA_VERSION,
-        tool: json::Tool {
-            name: env!("CARGO_PKG_NAME").into(),
-            version: env!("CARGO_PKG_VERSION").into(),
-        },
-        paper: json::PaperSource::of(paper, bench.paper),
-        settings: json::Settings {
-            method: settings.method.clone(),
-            rtol: settings.rtol,
-            command: settings.command.clone(),
-        },
-        summary: json::SummaryCounts::of(checked),
-        equations: cat
-            .iter()
-            .map(|e| json::EquationRecord {
-                number: e.number,
-                section: e.section,
-                latex: e.latex.clone(),
-                kind: e.kind.clone(),
-                premises: e.premises.clone(),
-                outcome: outcome_for(
-                    checked,
-                    |s| matches!(s, Subject::Equation { number, .. } if *number == e.number),
-                    UNCHECKABLE_EQUATIONS
-                        .iter()
-                        .find(|(n, _)| *n == e.number)
-                        .map(|(_, why)| *why),
-                ),
-                derivation: equation_checked(checked, e.number).and_then(json::derivation_outcome),
-                cause: equation_checked(checked, e.number).and_then(|c| c.cause.clone()),
-                cause_text: equation_checked(checked, e.number)
-                    .and_then(|c| c.cause.as_ref().map(checks::cause::Cause::describe)),
-                mutants: stored.as_ref().and_then(|st| st.of(e.number)).cloned(),
-            })
-            .collect(),
-        claims: bench
-            .paper
-            .claims
-            .iter()
-            .map(|c| json::ClaimRecord {
-                id: c.id.clone(),
-                section: c.section,
-                near_equation: c.near_equation,
-                also_at: c
-                    .also_at
-                    .iter()
-                    .map(|l| json::Place {
-                        section: l.section,
-                        near_equation: l.near_equation,
-                    })
-                    .collect(),
-                printed_value: c.claimed_value,
-                rule: c
-                    .rule
-                    .as_ref()
-                    .map(|r| r.describe(c.claimed_value, &c.unit)),
-                unit: c.unit.clone(),
-                outcome: outcome_for(
-                    checked,
-                    |s| matches!(s, Subject::Claim { id } if *id == c.id),
-                    UNCHECKABLE_CLAIMS
-                        .iter()
-                        .find(|(id, _)| *id == c.id)
-                        .map(|(_, why)| *why),
-                ),
-            })
-            .collect(),
-        figures: figure_views
-            .iter()
-            .map(|f| json::FigureRecord {
-                name: f.name.clone(),
-                title: f.title.clone(),
-                file: f.file.clone(),
-            })
-            .collect(),
-        precision: precision_records,
-        corrections: correction_records,
-        friction: results.friction.as_ref().map(|f| f.studies.clone()),
-    };
-
-    let report = Report {
-        paper: paper.into(),
-        version: env!("CARGO_PKG_VERSION").into(),
-        settings,
-        summary: Summary {
-            equations: Tally::of(eqs.iter().copied()),
-            claims: Tally::of(cls.iter().copied()),
-            unchecked,
-            unchecked_claims,
-            failures,
-            root_causes,
-            undetermined,
-            failing_claims,
-            corrections,
-            downstream,
-            mutation,
-        },
-        sections,
-        claims,
-        figures: figure_views,
-        precision: precision_rows,
-        experiment,
-        paper_numbers: {
-            let f = bench.paper.fit;
-            experiment::numbers::numbers(f.beta, f.c_inv_root, physics::Disk::uniform(1.0).k)
-                .to_string()
-        },
-        friction: results.friction.as_ref().map_or_else(String::new, |f| {
-            super::friction::text(&f.studies, bench.paper)
-        }),
-        scenes,
-        document,
-    };
-    Ok((report, figures))
+        .collect::<Result<Vec<_>, ReportError>>()
 }
 
 /// The corrections of the summary: each corrected form with the verdicts of the printed form

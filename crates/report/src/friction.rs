@@ -2,6 +2,7 @@
 //! ([`studies::sliding::Studies`]) in plain tables, for the HTML `<pre>` and the LaTeX listing.
 
 use std::fmt::Write;
+use studies::sliding::fall::{Fall, FallCase};
 use studies::sliding::Studies;
 
 /// Width of the section's lines: headings and notes are wrapped to it (the tables are narrower).
@@ -189,7 +190,7 @@ fn fall_claim(paper: &paper::Paper) -> Option<(f64, f64)> {
 
 /// Sec. 7 and the summary: the fall from unstable steady motion at large tilt, the tilt it
 /// falls to against the claim's "about 60 degrees", rolling and on Coulomb tables.
-fn fall(o: &mut String, f: &studies::sliding::fall::Fall, paper: &paper::Paper) {
+fn fall(o: &mut String, f: &Fall, paper: &paper::Paper) {
     use studies::sliding::fall::{DURATION, LEFT, NUDGE};
     o.push('\n');
     let Some((claimed, within)) = fall_claim(paper) else {
@@ -200,8 +201,6 @@ fn fall(o: &mut String, f: &studies::sliding::fall::Fall, paper: &paper::Paper) 
         return;
     };
     let (lo, hi) = (claimed * (1.0 - within), claimed * (1.0 + within));
-    let holds =
-        |c: &studies::sliding::fall::FallCase| c.fell_to_deg.map(|x| (lo..=hi).contains(&x));
     heading(
         o,
         &format!(
@@ -214,6 +213,15 @@ fn fall(o: &mut String, f: &studies::sliding::fall::Fall, paper: &paper::Paper) 
             claimed
         ),
     );
+    fall_tables(o, f, claimed, (lo, hi));
+    fall_verdict(o, f, claimed, (lo, hi));
+}
+
+/// The fall study's tables: the unstable bands, each run, and the tilt fallen to across each
+/// band; `(lo, hi)` is the claim's reading.
+fn fall_tables(o: &mut String, f: &Fall, claimed: f64, (lo, hi): (f64, f64)) {
+    use studies::sliding::fall::DURATION;
+    let holds = |c: &FallCase| c.fell_to_deg.map(|x| (lo..=hi).contains(&x));
     let _ = writeln!(
         o,
         "  alpha0 (deg)   unstable b/a     start b/a   1/lambda (s)   2 pi/Omega0 (s)   mu steady"
@@ -275,6 +283,12 @@ fn fall(o: &mut String, f: &studies::sliding::fall::Fall, paper: &paper::Paper) 
         }
         o.push('\n');
     }
+}
+
+/// The fall study's verdict on the claim read as `(lo, hi)`.
+fn fall_verdict(o: &mut String, f: &Fall, claimed: f64, (lo, hi): (f64, f64)) {
+    use studies::sliding::fall::{DURATION, LEFT};
+    let holds = |c: &FallCase| c.fell_to_deg.map(|x| (lo..=hi).contains(&x));
     let spread = |pick: fn(f64, f64) -> f64, start: f64| {
         f.across
             .iter()
@@ -292,7 +306,7 @@ fn fall(o: &mut String, f: &studies::sliding::fall::Fall, paper: &paper::Paper) 
         .iter()
         .filter_map(|c| c.fall_periods)
         .fold(0.0, f64::max);
-    let miss = |c: &studies::sliding::fall::FallCase| {
+    let miss = |c: &FallCase| {
         c.fell_to_deg.map_or(String::new(), |x| {
             if x > hi {
                 format!("{:.1} deg above", x - hi)

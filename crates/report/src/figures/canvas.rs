@@ -8,12 +8,13 @@ use super::chart::{
 };
 use super::legend::{self, Layout};
 use super::mark_label;
-use super::ranges::{bounds, checked, grid_step, merge_cells};
+use super::ranges::{bounds, checked};
 use super::ticks;
 use crate::figures::{Drawn, FigureError};
 use plotters::coord::ranged1d::{AsRangedCoord, BoldPoints, Ranged, ValueFormatter};
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
+use plotters::style::FontDesc;
 
 fn rgb(c: [u8; 3]) -> RGBColor {
     RGBColor(c[0], c[1], c[2])
@@ -201,8 +202,6 @@ impl Chart {
         X::CoordDescType: ValueFormatter<f64>,
         Y::CoordDescType: ValueFormatter<f64>,
     {
-        let px = |v: f64| (v * scale).round() as u32;
-        let font = |size: f64| (super::chart::FIGURE_FONT, size * scale).into_font();
         let mut chart = self.builder(root, scale).build_cartesian_2d(x, y).drawn()?;
         // As many tick labels as fit: about one per 60 px across, one per 40 px up.
         let (pw, ph) = chart.plotting_area().dim_in_pixel();
@@ -228,8 +227,8 @@ impl Chart {
             .configure_mesh()
             .x_desc(&self.x_label)
             .y_desc(&self.y_label)
-            .label_style(font(12.0))
-            .axis_desc_style(font(14.0))
+            .label_style(font(12.0, scale))
+            .axis_desc_style(font(14.0, scale))
             .light_line_style(RGBColor(235, 235, 235))
             .bold_line_style(RGBColor(215, 215, 215))
             .x_labels(x_hint)
@@ -238,55 +237,6 @@ impl Chart {
             .y_label_formatter(y_fmt)
             .draw()
             .drawn()?;
-        let inside = |(a, b): (f64, f64)| {
-            a.is_finite() && b.is_finite() && (!self.x_log || a > 0.0) && (!self.y_log || b > 0.0)
-        };
-        let width = px(1.6).max(1);
-        let grey = RGBColor(110, 110, 110);
-        // Every plotted pixel, relative to the plotting area, for placing the legend: the
-        // series, the reference lines and their labels.
-        let base = chart.plotting_area().get_base_pixel();
-        let area = chart.plotting_area().dim_in_pixel();
-        let mut pixels: Vec<(i32, i32)> = Vec::new();
-        for m in &o.marks {
-            if !m.at.is_finite() {
-                continue;
-            }
-            let ends = match m.axis {
-                Axis::X => [(m.at, yr.0), (m.at, yr.1)],
-                Axis::Y => [(xr.0, m.at), (xr.1, m.at)],
-            };
-            let line: Vec<(i32, i32)> = ends
-                .iter()
-                .map(|p| {
-                    let (a, b) = chart.backend_coord(p);
-                    (a - base.0, b - base.1)
-                })
-                .collect();
-            pixels.extend(legend::densify(&line));
-        }
-        for s in &self.series {
-            let pts: Vec<(i32, i32)> = s
-                .points
-                .iter()
-                .copied()
-                .filter(|p| inside(*p))
-                .map(|p| {
-                    let (a, b) = chart.backend_coord(&p);
-                    (a - base.0, b - base.1)
-                })
-                .collect();
-            match s.style {
-                Style::Line | Style::Dashed | Style::Dotted => pixels.extend(legend::densify(&pts)),
-                _ => pixels.extend(pts),
-            }
-        }
-        let labels: Vec<&str> = self
-            .series
-            .iter()
-            .filter(|s| !s.label.is_empty())
-            .map(|s| s.label.as_str())
-            .collect();
         let mut layout = Layout {
             legend: None,
             rect: None,
@@ -294,109 +244,10 @@ impl Chart {
             x_ticks,
             y_ticks,
         };
-        let chosen = if labels.is_empty() {
-            Legend::Hidden
-        } else {
-            let size = legend::size(&labels, 12.0 * scale, px(28.0) as i32, px(8.0) as i32)?;
-            // A position the figure asks for is a preference: if it would hide data and
-            // another corner would not, the legend goes there.
-            let (pos, rect, covered) = match o.legend {
-                Legend::Auto => legend::choose(size, area, &pixels),
-                fixed => match legend::rect(fixed, size, area) {
-                    Some(r) => match legend::covered(&r, &pixels) {
-                        0 => (fixed, r, 0),
-                        c => match legend::choose(size, area, &pixels) {
-                            (p, r2, 0) => (p, r2, 0),
-                            _ => (fixed, r, c),
-                        },
-                    },
-                    None => (
-                        fixed,
-                        legend::Rect {
-                            x0: 0,
-                            y0: 0,
-                            x1: 0,
-                            y1: 0,
-                        },
-                        0,
-                    ),
-                },
-            };
-            if pos != Legend::Hidden {
-                layout.legend = Some(pos);
-                layout.rect = Some(rect);
-                layout.covered = covered;
-            }
-            pos
-        };
-        // Reference lines first, under the data; their labels placed by `mark_label`.
-        let mut placed: Vec<legend::Rect> = Vec::new();
-        for m in &o.marks {
-            if !m.at.is_finite() {
-                continue;
-            }
-            let pts = match m.axis {
-                Axis::X => vec![(m.at, yr.0), (m.at, yr.1)],
-                Axis::Y => vec![(xr.0, m.at), (xr.1, m.at)],
-            };
-            chart
-                .draw_series(DashedLineSeries::new(
-                    pts,
-                    px(4.0),
-                    px(3.0),
-                    grey.stroke_width(px(1.2).max(1)),
-                ))
-                .drawn()?;
-            if !m.label.is_empty() {
-                // The label just inside the plot, at the top of a vertical line or the left end
-                // of a horizontal one.
-                let at = match m.axis {
-                    Axis::X => (m.at, yr.1),
-                    Axis::Y => (xr.0, m.at),
-                };
-                let frac = if self.x_log {
-                    (m.at.ln() - xr.0.ln()) / (xr.1.ln() - xr.0.ln())
-                } else {
-                    (m.at - xr.0) / (xr.1 - xr.0)
-                };
-                let (tw, th) = font(11.0).box_size(&m.label).drawn()?;
-                let (ax, ay) = chart.backend_coord(&at);
-                let x_edge = |x: f64| chart.backend_coord(&(x, yr.1)).0 - base.0;
-                let covered = |r: &legend::Rect| {
-                    self.series
-                        .iter()
-                        .flat_map(|s| s.points.iter())
-                        .filter(|p| inside(**p))
-                        .filter(|p| {
-                            let (x, y) = chart.backend_coord(p);
-                            r.contains((x - base.0, y - base.1))
-                        })
-                        .count()
-                };
-                let label = mark_label::Label {
-                    vertical: m.axis == Axis::X,
-                    at: (ax - base.0, ay - base.1),
-                    size: (tw as i32, th as i32),
-                    frac,
-                    plot_x: (x_edge(xr.0), x_edge(xr.1)),
-                    unit: scale,
-                };
-                let p = mark_label::place(&label, layout.rect, &placed, &covered);
-                placed.push(p.rect);
-                let hpos = if p.left { HPos::Right } else { HPos::Left };
-                let (dx, dy) = p.offset;
-                chart
-                    .draw_series(std::iter::once(
-                        EmptyElement::at(at)
-                            + Text::new(
-                                m.label.clone(),
-                                (dx, dy),
-                                font(11.0).color(&grey).pos(Pos::new(hpos, VPos::Top)),
-                            ),
-                    ))
-                    .drawn()?;
-            }
-        }
+        let pixels = self.plotted_pixels(&chart, o, xr, yr);
+        let area = chart.plotting_area().dim_in_pixel();
+        let chosen = self.place_legend(scale, o, area, &pixels, &mut layout)?;
+        self.draw_marks(&mut chart, scale, o, xr, yr, layout.rect)?;
         for (i, s) in self.series.iter().enumerate() {
             let color = rgb(o
                 .colors
@@ -404,215 +255,214 @@ impl Chart {
                 .copied()
                 .flatten()
                 .unwrap_or(PALETTE[i % PALETTE.len()]));
-            let pts: Vec<(f64, f64)> = s.points.iter().copied().filter(|p| inside(*p)).collect();
-            let r = px(2.6).max(1) as i32;
-            let lw = px(20.0) as i32;
-            let anno = match s.style {
-                // plotters turns a thick polyline into one polygon whose inner corners spike
-                // at sharp reversals (a min/max envelope); at print scale each segment is drawn
-                // alone, with round joins.
-                Style::Line if scale >= 1.5 && pts.len() > 2 => {
-                    let joins: Vec<(f64, f64)> = pts[1..pts.len() - 1].to_vec();
-                    let half = (width / 2).max(1);
-                    chart
-                        .draw_series(
-                            joins
-                                .into_iter()
-                                .map(|p| Circle::new(p, half, color.filled())),
-                        )
-                        .drawn()?;
-                    chart
-                        .draw_series(
-                            pts.windows(2).map(|w| {
-                                PathElement::new(vec![w[0], w[1]], color.stroke_width(width))
-                            }),
-                        )
-                        .drawn()?
-                }
-                Style::Line => chart
-                    .draw_series(LineSeries::new(pts, color.stroke_width(width)))
-                    .drawn()?,
-                Style::Dashed => chart
-                    .draw_series(DashedLineSeries::new(
-                        pts,
-                        px(6.0),
-                        px(4.0),
-                        color.stroke_width(width),
-                    ))
-                    .drawn()?,
-                Style::Dotted => chart
-                    .draw_series(DashedLineSeries::new(
-                        pts,
-                        px(1.6),
-                        px(3.0),
-                        color.stroke_width(width),
-                    ))
-                    .drawn()?,
-                Style::Points => chart
-                    .draw_series(pts.into_iter().map(|p| Circle::new(p, r, color.filled())))
-                    .drawn()?,
-                Style::Squares => chart
-                    .draw_series(pts.into_iter().map(|p| {
-                        EmptyElement::at(p)
-                            + Rectangle::new([(-r, -r), (r, r)], color.stroke_width(px(1.3).max(1)))
-                    }))
-                    .drawn()?,
-                Style::Triangles => chart
-                    .draw_series(pts.into_iter().map(|p| {
-                        EmptyElement::at(p)
-                            + Polygon::new(
-                                vec![(0, -r - 1), (r + 1, r), (-r - 1, r)],
-                                color.filled(),
-                            )
-                    }))
-                    .drawn()?,
-                Style::Crosses => chart
-                    .draw_series(pts.into_iter().map(|p| {
-                        EmptyElement::at(p)
-                            + PathElement::new(
-                                vec![(-r, -r), (r, r)],
-                                color.stroke_width(px(1.3).max(1)),
-                            )
-                            + PathElement::new(
-                                vec![(-r, r), (r, -r)],
-                                color.stroke_width(px(1.3).max(1)),
-                            )
-                    }))
-                    .drawn()?,
-                Style::Cells => {
-                    let hx = 0.5 * grid_step(pts.iter().map(|p| p.0).collect());
-                    let hy = 0.5 * grid_step(pts.iter().map(|p| p.1).collect());
-                    let (hx, hy) = (
-                        if hx.is_finite() { hx } else { 0.0 },
-                        if hy.is_finite() { hy } else { 0.0 },
-                    );
-                    let fill = color.mix(0.45).filled();
-                    chart
-                        .draw_series(merge_cells(pts, hy).into_iter().map(|(a, b0, b1)| {
-                            Rectangle::new([(a - hx, b0 - hy), (a + hx, b1 + hy)], fill)
-                        }))
-                        .drawn()?
-                }
-            };
-            if s.label.is_empty() {
-                continue;
-            }
-            let glyph = Glyph::of(s.style, lw, r);
-            let stroke = color.stroke_width(width);
-            let fill = if s.style == Style::Cells {
-                color.mix(0.45).filled()
-            } else {
-                color.filled()
-            };
-            anno.label(s.label.clone()).legend(move |(x, y)| {
-                let p = |i: usize| PathElement::new(glyph.paths[i].clone(), stroke);
-                EmptyElement::at((x, y))
-                    + p(0)
-                    + p(1)
-                    + p(2)
-                    + p(3)
-                    + Polygon::new(glyph.fill.clone(), fill)
-            });
+            self.draw_series(&mut chart, scale, s, color)?;
         }
-        for n in &o.notes {
-            if !inside((n.x, n.y)) {
-                continue;
-            }
-            let lines: Vec<String> = n.text.lines().map(str::to_string).collect();
-            let step = px(14.0) as i32;
-            chart
-                .draw_series(lines.into_iter().enumerate().map(|(i, l)| {
-                    EmptyElement::at((n.x, n.y))
-                        + Text::new(l, (0, i as i32 * step), font(11.5).color(&BLACK))
-                }))
-                .drawn()?;
-        }
-        let labelled = !labels.is_empty();
-        let position = match chosen {
-            Legend::Auto => Some(SeriesLabelPosition::UpperRight),
-            Legend::UpperRight => Some(SeriesLabelPosition::UpperRight),
-            Legend::UpperLeft => Some(SeriesLabelPosition::UpperLeft),
-            Legend::LowerRight => Some(SeriesLabelPosition::LowerRight),
-            Legend::LowerLeft => Some(SeriesLabelPosition::LowerLeft),
-            Legend::MiddleRight => Some(SeriesLabelPosition::MiddleRight),
-            Legend::Hidden => None,
-        };
-        if let (true, Some(position)) = (labelled, position) {
-            chart
-                .configure_series_labels()
-                .legend_area_size(px(28.0))
-                .margin(px(8.0))
-                .label_font(font(12.0))
-                .background_style(WHITE.mix(0.88))
-                .border_style(RGBColor(180, 180, 180))
-                .position(position)
-                .draw()
-                .drawn()?;
-        }
+        self.draw_notes(&mut chart, scale, o)?;
+        self.draw_legend_box(&mut chart, scale, chosen)?;
         // No `present` here: a plot may be one panel of several, and presenting an SVG
         // backend closes its document (the later panels fell outside `</svg>`). The
         // drawing's owner presents once, at the end (`Drawing::draw`).
         Ok(layout)
     }
-}
 
-/// A legend glyph in pixels relative to the legend's anchor: four polylines (unused ones empty)
-/// and one filled polygon (possibly empty), one fixed shape for every style.
-#[derive(Clone)]
-struct Glyph {
-    paths: [Vec<(i32, i32)>; 4],
-    fill: Vec<(i32, i32)>,
-}
-
-impl Glyph {
-    /// The glyph of `style`, `len` px long, markers of radius `r` px.
-    fn of(style: Style, len: i32, r: i32) -> Self {
-        let c = len / 2;
-        let mut paths: [Vec<(i32, i32)>; 4] = Default::default();
-        let mut fill = Vec::new();
-        let seg = |a: i32, b: i32| vec![(a, 0), (b, 0)];
-        match style {
-            Style::Line => paths[0] = seg(0, len),
-            Style::Dashed => {
-                let d = len / 4;
-                paths[0] = seg(0, d);
-                paths[1] = seg(3 * d / 2, 5 * d / 2);
-                paths[2] = seg(3 * d, len);
-            }
-            Style::Dotted => {
-                let d = len / 7;
-                for (i, p) in paths.iter_mut().enumerate() {
-                    let a = 2 * d * i as i32;
-                    *p = seg(a, a + d);
-                }
-            }
-            Style::Points => {
-                fill = (0..12)
-                    .map(|i| {
-                        let t = std::f64::consts::TAU * i as f64 / 12.0;
-                        (
-                            c + (r as f64 * t.cos()).round() as i32,
-                            (r as f64 * t.sin()).round() as i32,
-                        )
-                    })
-                    .collect()
-            }
-            Style::Squares => {
-                paths[0] = vec![
-                    (c - r, -r),
-                    (c + r, -r),
-                    (c + r, r),
-                    (c - r, r),
-                    (c - r, -r),
-                ]
-            }
-            Style::Triangles => fill = vec![(c, -r - 1), (c + r + 1, r), (c - r - 1, r)],
-            Style::Crosses => {
-                paths[0] = vec![(c - r, -r), (c + r, r)];
-                paths[1] = vec![(c - r, r), (c + r, -r)];
-            }
-            Style::Cells => fill = vec![(0, -r - 1), (len, -r - 1), (len, r + 1), (0, r + 1)],
-        }
-        Self { paths, fill }
+    /// True when point `p` can be drawn: finite, and positive on a log axis.
+    pub(super) fn inside(&self, (a, b): (f64, f64)) -> bool {
+        a.is_finite() && b.is_finite() && (!self.x_log || a > 0.0) && (!self.y_log || b > 0.0)
     }
+
+    /// Every plotted pixel, relative to the plotting area, for placing the legend: the series
+    /// and the reference lines.
+    fn plotted_pixels<DB, XC, YC>(
+        &self,
+        chart: &Ctx<'_, DB, XC, YC>,
+        o: &Options,
+        xr: (f64, f64),
+        yr: (f64, f64),
+    ) -> Vec<(i32, i32)>
+    where
+        DB: DrawingBackend,
+        XC: Ranged<ValueType = f64>,
+        YC: Ranged<ValueType = f64>,
+    {
+        let base = chart.plotting_area().get_base_pixel();
+        let to_pixel = |p: &(f64, f64)| {
+            let (a, b) = chart.backend_coord(p);
+            (a - base.0, b - base.1)
+        };
+        let mut pixels: Vec<(i32, i32)> = Vec::new();
+        for m in o.marks.iter().filter(|m| m.at.is_finite()) {
+            let ends = match m.axis {
+                Axis::X => [(m.at, yr.0), (m.at, yr.1)],
+                Axis::Y => [(xr.0, m.at), (xr.1, m.at)],
+            };
+            let line: Vec<(i32, i32)> = ends.iter().map(to_pixel).collect();
+            pixels.extend(legend::densify(&line));
+        }
+        for s in &self.series {
+            let pts: Vec<(i32, i32)> = s
+                .points
+                .iter()
+                .filter(|p| self.inside(**p))
+                .map(to_pixel)
+                .collect();
+            match s.style {
+                Style::Line | Style::Dashed | Style::Dotted => pixels.extend(legend::densify(&pts)),
+                _ => pixels.extend(pts),
+            }
+        }
+        pixels
+    }
+
+    /// Chooses the legend's corner (recorded in `layout`): a position the figure asks for is a
+    /// preference, and if it would hide data and another corner would not, the legend goes
+    /// there.
+    fn place_legend(
+        &self,
+        scale: f64,
+        o: &Options,
+        area: (u32, u32),
+        pixels: &[(i32, i32)],
+        layout: &mut Layout,
+    ) -> Result<Legend, FigureError> {
+        let labels: Vec<&str> = self
+            .series
+            .iter()
+            .filter(|s| !s.label.is_empty())
+            .map(|s| s.label.as_str())
+            .collect();
+        if labels.is_empty() {
+            return Ok(Legend::Hidden);
+        }
+        let size = legend::size(
+            &labels,
+            12.0 * scale,
+            px(28.0, scale) as i32,
+            px(8.0, scale) as i32,
+        )?;
+        let nowhere = legend::Rect {
+            x0: 0,
+            y0: 0,
+            x1: 0,
+            y1: 0,
+        };
+        let (pos, rect, covered) = match o.legend {
+            Legend::Auto => legend::choose(size, area, pixels),
+            fixed => match legend::rect(fixed, size, area) {
+                Some(r) => match legend::covered(&r, pixels) {
+                    0 => (fixed, r, 0),
+                    c => match legend::choose(size, area, pixels) {
+                        (p, r2, 0) => (p, r2, 0),
+                        _ => (fixed, r, c),
+                    },
+                },
+                None => (fixed, nowhere, 0),
+            },
+        };
+        if pos != Legend::Hidden {
+            layout.legend = Some(pos);
+            layout.rect = Some(rect);
+            layout.covered = covered;
+        }
+        Ok(pos)
+    }
+
+    /// The reference lines, under the data, and their labels placed by `mark_label` clear of
+    /// the legend (`legend_rect`), of each other and of the data.
+    fn draw_marks<'a, DB, XC, YC>(
+        &self,
+        chart: &mut Ctx<'a, DB, XC, YC>,
+        scale: f64,
+        o: &Options,
+        xr: (f64, f64),
+        yr: (f64, f64),
+        legend_rect: Option<legend::Rect>,
+    ) -> Result<(), FigureError>
+    where
+        DB: DrawingBackend + 'a,
+        XC: Ranged<ValueType = f64>,
+        YC: Ranged<ValueType = f64>,
+    {
+        let grey = RGBColor(110, 110, 110);
+        let base = chart.plotting_area().get_base_pixel();
+        let mut placed: Vec<legend::Rect> = Vec::new();
+        for m in o.marks.iter().filter(|m| m.at.is_finite()) {
+            let pts = match m.axis {
+                Axis::X => vec![(m.at, yr.0), (m.at, yr.1)],
+                Axis::Y => vec![(xr.0, m.at), (xr.1, m.at)],
+            };
+            chart
+                .draw_series(DashedLineSeries::new(
+                    pts,
+                    px(4.0, scale),
+                    px(3.0, scale),
+                    grey.stroke_width(px(1.2, scale).max(1)),
+                ))
+                .drawn()?;
+            if m.label.is_empty() {
+                continue;
+            }
+            // The label just inside the plot, at the top of a vertical line or the left end of
+            // a horizontal one.
+            let at = match m.axis {
+                Axis::X => (m.at, yr.1),
+                Axis::Y => (xr.0, m.at),
+            };
+            let frac = if self.x_log {
+                (m.at.ln() - xr.0.ln()) / (xr.1.ln() - xr.0.ln())
+            } else {
+                (m.at - xr.0) / (xr.1 - xr.0)
+            };
+            let (tw, th) = font(11.0, scale).box_size(&m.label).drawn()?;
+            let (ax, ay) = chart.backend_coord(&at);
+            let x_edge = |x: f64| chart.backend_coord(&(x, yr.1)).0 - base.0;
+            let covered = |r: &legend::Rect| {
+                self.series
+                    .iter()
+                    .flat_map(|s| s.points.iter())
+                    .filter(|p| self.inside(**p))
+                    .filter(|p| {
+                        let (x, y) = chart.backend_coord(p);
+                        r.contains((x - base.0, y - base.1))
+                    })
+                    .count()
+            };
+            let label = mark_label::Label {
+                vertical: m.axis == Axis::X,
+                at: (ax - base.0, ay - base.1),
+                size: (tw as i32, th as i32),
+                frac,
+                plot_x: (x_edge(xr.0), x_edge(xr.1)),
+                unit: scale,
+            };
+            let p = mark_label::place(&label, legend_rect, &placed, &covered);
+            placed.push(p.rect);
+            let hpos = if p.left { HPos::Right } else { HPos::Left };
+            chart
+                .draw_series(std::iter::once(
+                    EmptyElement::at(at)
+                        + Text::new(
+                            m.label.clone(),
+                            p.offset,
+                            font(11.0, scale)
+                                .color(&grey)
+                                .pos(Pos::new(hpos, VPos::Top)),
+                        ),
+                ))
+                .drawn()?;
+        }
+        Ok(())
+    }
+}
+
+/// A chart's drawing context on backend `DB` with coordinates `XC` across and `YC` up.
+pub(super) type Ctx<'a, DB, XC, YC> = ChartContext<'a, DB, Cartesian2d<XC, YC>>;
+
+/// `v` screen pixels at `scale`, rounded.
+pub(super) fn px(v: f64, scale: f64) -> u32 {
+    (v * scale).round() as u32
+}
+
+/// The figures' font at `size` screen pixels, at `scale`.
+pub(super) fn font(size: f64, scale: f64) -> FontDesc<'static> {
+    (super::chart::FIGURE_FONT, size * scale).into_font()
 }

@@ -41,6 +41,7 @@ pub mod path;
 pub mod precision;
 pub mod premises;
 pub mod ranges;
+mod series_drawing;
 pub mod spin_down;
 pub mod stability;
 pub mod ticks;

@@ -16,56 +16,11 @@ impl Geometry {
         let (w, h) = (w as f64, h as f64);
         let font = |size: f64| (crate::figures::chart::FIGURE_FONT, size * scale).into_font();
         let title_band = 34.0 * scale;
-        // The footnote of lengths and rates, on one line, or on two where one does not fit
-        // (the figure at the paper's 3 in width).
-        let lengths = format!(
-            "a = {:.1} mm, α = {:.2} rad, b = {:.2}a, r = b + a cos α = {:.2}a",
-            self.a * 1e3,
-            self.alpha,
-            self.b / self.a,
-            self.r / self.a,
-        );
-        let rates = format!(
-            "Ω₀ = {:.2} rad/s, ω₁₀ = {:.2} rad/s (eqs 28-29)",
-            self.precession, self.spin
-        );
-        let one = format!("{lengths}; {rates}");
-        let fits = root
-            .estimate_text_size(&one, &font(12.0).into_text_style(root))
-            .map_or(true, |(tw, _)| (tw as f64) < w - 16.0 * scale);
-        let foot = if fits {
-            vec![one]
-        } else {
-            vec![lengths, rates]
-        };
+        let foot = self.footnote(root, w, scale);
         let foot_band = (30.0 + 15.0 * (foot.len() - 1) as f64) * scale;
         // Fit the projected scene into the area, same scale on both axes.
         let shapes = self.shapes();
-        let mut pts = Vec::new();
-        for s in &shapes {
-            match s {
-                Shape::Fill { points, .. } | Shape::Path { points, .. } => {
-                    pts.extend(points.iter().map(|p| self.view.project(*p)))
-                }
-                Shape::Arrow { from, to, .. } => {
-                    pts.push(self.view.project(*from));
-                    pts.push(self.view.project(*to));
-                }
-                Shape::Dot { at, .. } | Shape::Label { at, .. } => pts.push(self.view.project(*at)),
-            }
-        }
-        let (mut x0, mut x1, mut y0, mut y1) = (
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-        );
-        for (x, y) in &pts {
-            x0 = x0.min(*x);
-            x1 = x1.max(*x);
-            y0 = y0.min(*y);
-            y1 = y1.max(*y);
-        }
+        let (x0, x1, y0, y1) = self.extent(&shapes);
         if !(x1 > x0 && y1 > y0) {
             return Err("the geometry has no extent".into());
         }
@@ -130,86 +85,8 @@ impl Geometry {
                     label,
                     color,
                     nudge,
-                } => {
-                    let (p, q) = (px(*from), px(*to));
-                    let c = col(*color);
-                    let (dx, dy) = ((q.0 - p.0) as f64, (q.1 - p.1) as f64);
-                    let len = (dx * dx + dy * dy).sqrt().max(1e-9);
-                    let (ux, uy) = (dx / len, dy / len);
-                    let head = 11.0 * scale;
-                    let base = (q.0 as f64 - head * ux, q.1 as f64 - head * uy);
-                    let side = 4.5 * scale;
-                    root.draw(&PathElement::new(
-                        vec![p, (base.0.round() as i32, base.1.round() as i32)],
-                        c.stroke_width(lw(2.0)),
-                    ))
-                    .map_err(err)?;
-                    root.draw(&Polygon::new(
-                        vec![
-                            q,
-                            (
-                                (base.0 - side * uy).round() as i32,
-                                (base.1 + side * ux).round() as i32,
-                            ),
-                            (
-                                (base.0 + side * uy).round() as i32,
-                                (base.1 - side * ux).round() as i32,
-                            ),
-                        ],
-                        c.filled(),
-                    ))
-                    .map_err(err)?;
-                    let off = 11.0 * scale;
-                    let at = (
-                        (q.0 as f64 + off * ux + nudge.0 * scale).round() as i32,
-                        (q.1 as f64 + off * uy + nudge.1 * scale).round() as i32,
-                    );
-                    root.draw(&Text::new(label.clone(), at, centred(17.0, *color)))
-                        .map_err(err)?;
-                    // The hat of a unit vector, drawn (a combining circumflex does not render).
-                    let (hw, hy, hh) = (
-                        (4.0 * scale).round() as i32,
-                        at.1 - (12.0 * scale).round() as i32,
-                        (3.5 * scale).round() as i32,
-                    );
-                    root.draw(&PathElement::new(
-                        vec![(at.0 - hw, hy + hh), (at.0, hy), (at.0 + hw, hy + hh)],
-                        c.stroke_width(lw(1.4)),
-                    ))
-                    .map_err(err)?;
-                }
-                Shape::Dot { at, label, offset } => {
-                    let p = px(*at);
-                    root.draw(&Circle::new(p, lw(3.5), BLACK.filled()))
-                        .map_err(err)?;
-                    let hpos = if offset.0 < 0.0 {
-                        HPos::Right
-                    } else {
-                        HPos::Left
-                    };
-                    let q = (
-                        p.0 + (offset.0 * scale).round() as i32,
-                        p.1 + (offset.1 * scale).round() as i32,
-                    );
-                    if offset.0.hypot(offset.1) > 30.0 {
-                        // A leader line from the dot to the label.
-                        let gap = (4.0 * scale).round() as i32;
-                        let end = (q.0 - gap * offset.0.signum() as i32, q.1);
-                        root.draw(&PathElement::new(
-                            vec![p, end],
-                            RGBColor(90, 90, 90).stroke_width(lw(0.8)),
-                        ))
-                        .map_err(err)?;
-                    }
-                    root.draw(&Text::new(
-                        label.clone(),
-                        q,
-                        font(12.5)
-                            .color(&RGBColor(60, 60, 60))
-                            .pos(Pos::new(hpos, VPos::Center)),
-                    ))
-                    .map_err(err)?;
-                }
+                } => arrow(root, (px(*from), px(*to)), label, *color, *nudge, scale)?,
+                Shape::Dot { at, label, offset } => dot(root, px(*at), label, *offset, scale)?,
                 Shape::Label { at, text, color } => {
                     root.draw(&Text::new(text.clone(), px(*at), centred(16.0, *color)))
                         .map_err(err)?;
@@ -236,6 +113,62 @@ impl Geometry {
             .map_err(err)?;
         }
         root.present().map_err(err)
+    }
+    /// The footnote of lengths and rates, on one line, or on two where one does not fit (the
+    /// figure at the paper's 3 in width).
+    fn footnote<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, plotters::coord::Shift>,
+        w: f64,
+        scale: f64,
+    ) -> Vec<String> {
+        let font = |size: f64| (crate::figures::chart::FIGURE_FONT, size * scale).into_font();
+        let lengths = format!(
+            "a = {:.1} mm, α = {:.2} rad, b = {:.2}a, r = b + a cos α = {:.2}a",
+            self.a * 1e3,
+            self.alpha,
+            self.b / self.a,
+            self.r / self.a,
+        );
+        let rates = format!(
+            "Ω₀ = {:.2} rad/s, ω₁₀ = {:.2} rad/s (eqs 28-29)",
+            self.precession, self.spin
+        );
+        let one = format!("{lengths}; {rates}");
+        let fits = root
+            .estimate_text_size(&one, &font(12.0).into_text_style(root))
+            .map_or(true, |(tw, _)| (tw as f64) < w - 16.0 * scale);
+        if fits {
+            vec![one]
+        } else {
+            vec![lengths, rates]
+        }
+    }
+
+    /// The projected extent of `shapes`: (x0, x1, y0, y1).
+    fn extent(&self, shapes: &[Shape]) -> (f64, f64, f64, f64) {
+        let mut pts = Vec::new();
+        for s in shapes {
+            match s {
+                Shape::Fill { points, .. } | Shape::Path { points, .. } => {
+                    pts.extend(points.iter().map(|p| self.view.project(*p)))
+                }
+                Shape::Arrow { from, to, .. } => {
+                    pts.push(self.view.project(*from));
+                    pts.push(self.view.project(*to));
+                }
+                Shape::Dot { at, .. } | Shape::Label { at, .. } => pts.push(self.view.project(*at)),
+            }
+        }
+        pts.iter().fold(
+            (
+                f64::INFINITY,
+                f64::NEG_INFINITY,
+                f64::INFINITY,
+                f64::NEG_INFINITY,
+            ),
+            |(x0, x1, y0, y1), &(x, y)| (x0.min(x), x1.max(x), y0.min(y), y1.max(y)),
+        )
     }
 }
 
@@ -282,4 +215,110 @@ pub(super) fn dash(poly: &[(i32, i32)], on: f64, off: f64) -> Vec<Vec<(i32, i32)
         out.push(cur);
     }
     out
+}
+
+/// The error of a drawing call, as a figure error.
+fn drawn<E: std::error::Error + Send + Sync>(e: DrawingAreaErrorKind<E>) -> FigureError {
+    FigureError::Draw(e.to_string())
+}
+
+/// A line `px` pixels wide at `scale`, at least one.
+fn lw(v: f64, scale: f64) -> u32 {
+    ((v * scale).round() as u32).max(1)
+}
+
+/// An arrow from `p` to `q` (pixels) with its head, and its label beyond the head with the hat
+/// of a unit vector drawn over it (a combining circumflex does not render).
+fn arrow<DB: DrawingBackend>(
+    root: &DrawingArea<DB, plotters::coord::Shift>,
+    (p, q): ((i32, i32), (i32, i32)),
+    label: &str,
+    color: [u8; 3],
+    nudge: (f64, f64),
+    scale: f64,
+) -> Result<(), FigureError> {
+    let c = RGBColor(color[0], color[1], color[2]);
+    let (dx, dy) = ((q.0 - p.0) as f64, (q.1 - p.1) as f64);
+    let len = (dx * dx + dy * dy).sqrt().max(1e-9);
+    let (ux, uy) = (dx / len, dy / len);
+    let head = 11.0 * scale;
+    let base = (q.0 as f64 - head * ux, q.1 as f64 - head * uy);
+    let side = 4.5 * scale;
+    root.draw(&PathElement::new(
+        vec![p, (base.0.round() as i32, base.1.round() as i32)],
+        c.stroke_width(lw(2.0, scale)),
+    ))
+    .map_err(drawn)?;
+    root.draw(&Polygon::new(
+        vec![
+            q,
+            (
+                (base.0 - side * uy).round() as i32,
+                (base.1 + side * ux).round() as i32,
+            ),
+            (
+                (base.0 + side * uy).round() as i32,
+                (base.1 - side * ux).round() as i32,
+            ),
+        ],
+        c.filled(),
+    ))
+    .map_err(drawn)?;
+    let off = 11.0 * scale;
+    let at = (
+        (q.0 as f64 + off * ux + nudge.0 * scale).round() as i32,
+        (q.1 as f64 + off * uy + nudge.1 * scale).round() as i32,
+    );
+    let style = (crate::figures::chart::FIGURE_FONT, 17.0 * scale)
+        .into_font()
+        .color(&c)
+        .pos(Pos::new(HPos::Center, VPos::Center));
+    root.draw(&Text::new(label.to_string(), at, style))
+        .map_err(drawn)?;
+    let (hw, hy, hh) = (
+        (4.0 * scale).round() as i32,
+        at.1 - (12.0 * scale).round() as i32,
+        (3.5 * scale).round() as i32,
+    );
+    root.draw(&PathElement::new(
+        vec![(at.0 - hw, hy + hh), (at.0, hy), (at.0 + hw, hy + hh)],
+        c.stroke_width(lw(1.4, scale)),
+    ))
+    .map_err(drawn)
+}
+
+/// A dot at `p` (pixels) with its label at `offset`, and a leader line to a label placed far.
+fn dot<DB: DrawingBackend>(
+    root: &DrawingArea<DB, plotters::coord::Shift>,
+    p: (i32, i32),
+    label: &str,
+    offset: (f64, f64),
+    scale: f64,
+) -> Result<(), FigureError> {
+    root.draw(&Circle::new(p, lw(3.5, scale), BLACK.filled()))
+        .map_err(drawn)?;
+    let hpos = if offset.0 < 0.0 {
+        HPos::Right
+    } else {
+        HPos::Left
+    };
+    let q = (
+        p.0 + (offset.0 * scale).round() as i32,
+        p.1 + (offset.1 * scale).round() as i32,
+    );
+    if offset.0.hypot(offset.1) > 30.0 {
+        let gap = (4.0 * scale).round() as i32;
+        let end = (q.0 - gap * offset.0.signum() as i32, q.1);
+        root.draw(&PathElement::new(
+            vec![p, end],
+            RGBColor(90, 90, 90).stroke_width(lw(0.8, scale)),
+        ))
+        .map_err(drawn)?;
+    }
+    let style = (crate::figures::chart::FIGURE_FONT, 12.5 * scale)
+        .into_font()
+        .color(&RGBColor(60, 60, 60))
+        .pos(Pos::new(hpos, VPos::Center));
+    root.draw(&Text::new(label.to_string(), q, style))
+        .map_err(drawn)
 }

@@ -1,0 +1,43 @@
+//! The integration tests, linked into one binary: each module is one file of tests/, named for
+//! what it tests. Run one file's tests with `cargo test --release --test integration NAME::`.
+
+mod advice;
+mod advice_names;
+mod architecture;
+mod cli;
+mod corrections;
+mod coverage_record;
+mod experiment;
+mod experiment_audio;
+mod experiment_bias;
+mod experiment_coverage_diagnosis;
+mod experiment_inputs;
+mod experiment_models;
+mod extremes;
+mod figures;
+mod invariance;
+mod lab_frame;
+mod lab_frame_invariants;
+mod limits;
+mod models;
+mod mutation;
+mod notation;
+mod outputs;
+mod paper_dir;
+mod paper_limits;
+mod parallel;
+mod peer;
+mod precision;
+mod premises;
+mod reader_fuzz;
+mod readme;
+mod registry;
+mod report;
+mod scene_fuzz;
+mod scenes;
+mod sliding;
+mod snapshots;
+mod solver;
+mod toy_scenes;
+mod toy_thickness;
+mod transcription;
