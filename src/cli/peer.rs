@@ -1,7 +1,46 @@
-//! `peer export` and `peer compare`: the independent program's input and its comparison.
+//! `rolling-disk peer export` and `peer compare`: an independent program as a reference.
 
-use super::*;
+use files::atomic::write_atomically;
+use physics::scene::Scene;
 use std::io::Write;
+use std::path::{Path, PathBuf};
+
+/// The commands of `rolling-disk peer`.
+#[derive(clap::Subcommand)]
+pub enum Command {
+    /// Writes the peer's response file for a sliding scene with a thickness.
+    Export {
+        /// A scene file, or the name of a built-in scene.
+        scene: String,
+        /// Write to this file instead of standard output.
+        #[arg(long, value_name = "FILE")]
+        out: Option<PathBuf>,
+    },
+    /// Reads the peer's result.txt, runs the scene here, prints the largest differences.
+    Compare {
+        /// The scene the peer ran (as exported).
+        scene: String,
+        /// The peer's result.txt.
+        result: PathBuf,
+        /// Print the comparison as JSON.
+        #[arg(long)]
+        json: bool,
+    },
+}
+
+impl Command {
+    /// Runs the command.
+    pub fn run(self) -> anyhow::Result<()> {
+        match self {
+            Command::Export { scene, out } => peer_export(&scene, out.as_deref()),
+            Command::Compare {
+                scene,
+                result,
+                json,
+            } => peer_compare(&scene, &result, json),
+        }
+    }
+}
 
 /// Writes `text` to standard output; a reader that closes the pipe early is not an error.
 fn print_text(text: &str) -> anyhow::Result<()> {
@@ -11,7 +50,7 @@ fn print_text(text: &str) -> anyhow::Result<()> {
     }
 }
 
-pub(crate) fn peer_export(name: &str, out: Option<&Path>) -> anyhow::Result<()> {
+fn peer_export(name: &str, out: Option<&Path>) -> anyhow::Result<()> {
     let scene = Scene::load(name)?;
     let text = ::studies::peer::response::response(&scene)?;
     match out {
@@ -22,7 +61,7 @@ pub(crate) fn peer_export(name: &str, out: Option<&Path>) -> anyhow::Result<()> 
     Ok(())
 }
 
-pub(crate) fn peer_compare(name: &str, result: &Path, json: bool) -> anyhow::Result<()> {
+fn peer_compare(name: &str, result: &Path, json: bool) -> anyhow::Result<()> {
     let scene = Scene::load(name)?;
     let c = ::studies::peer::compare_file(&scene, result)?;
     if json {

@@ -1,8 +1,44 @@
-//! `report` and `figures`: the reproduction report and the figures alone.
+//! `rolling-disk report`: the reproduction report, written as one set of files.
 
-use super::*;
+use crate::cli::paper_input::{bench_for, load_paper};
+use files::output::SetWriter;
+use std::path::{Path, PathBuf};
+use studies::precision::Accuracy;
 
-pub(crate) fn report(
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum ReportFormat {
+    Html,
+    Latex,
+    Json,
+    All,
+}
+
+/// The arguments of `rolling-disk report`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// Which formats to write.
+    #[arg(long, value_enum, default_value = "all")]
+    pub format: ReportFormat,
+    /// The directory to write to.
+    #[arg(long, value_name = "DIR", default_value = "report")]
+    pub out: PathBuf,
+    /// Integration accuracy of the checks (default: rtol 1e-12).
+    #[arg(long, value_enum)]
+    pub accuracy: Option<Accuracy>,
+    /// Read the paper's equations from DIR/equations.yaml (and DIR/symbols.yaml,
+    /// DIR/claims.yaml when present) instead of the built-in copy.
+    #[arg(long, value_name = "DIR")]
+    pub paper: Option<PathBuf>,
+}
+
+impl Args {
+    /// Runs the command.
+    pub fn run(self) -> anyhow::Result<()> {
+        report(self.format, &self.out, self.accuracy, self.paper.as_deref())
+    }
+}
+
+fn report(
     format: ReportFormat,
     out: &Path,
     accuracy: Option<Accuracy>,
@@ -54,61 +90,6 @@ pub(crate) fn report(
             "wrote {pngs} figures under {}",
             out.join("figures").display()
         );
-    }
-    Ok(())
-}
-
-pub(crate) fn figures(only: Option<&str>, out: &Path, format: FigureFormat) -> anyhow::Result<()> {
-    use ::report::pipeline::{compute, RunConfig};
-    let names: Vec<&str> = ::report::figures::NAMES.to_vec();
-    let wanted: Vec<&str> = match only {
-        Some(list) => list
-            .split(',')
-            .map(str::trim)
-            .filter(|s| !s.is_empty())
-            .collect(),
-        None => names.clone(),
-    };
-    if wanted.is_empty() {
-        return Err(anyhow::anyhow!(
-            "--only was given no figure name; name some (the figures are: {}) or leave --only out \
-             to draw them all",
-            names.join(", ")
-        ));
-    }
-    for w in &wanted {
-        if !names.contains(w) {
-            return Err(anyhow::anyhow!(
-                "--only: no figure is called {w}; the figures are: {}",
-                names.join(", ")
-            ));
-        }
-    }
-    std::fs::create_dir_all(out)
-        .map_err(|e| anyhow::anyhow!("cannot create {}: {e}", out.display()))?;
-    // Only the studies the wanted figures are drawn from, each once.
-    let config = RunConfig::figures(::checks::equations::Bench::default(), &wanted)?;
-    let results = compute(&config, &|s: &str| eprintln!("figures: {s}"))?;
-    let all = ::report::figures::some(&wanted, &results)?;
-    for f in &all {
-        let path = match format {
-            FigureFormat::Svg => {
-                let path = out.join(format!("{}.svg", f.name));
-                let svg = f.drawing.to_svg(760, 480)?;
-                write_atomically(&path, svg.as_bytes())
-                    .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))?;
-                path
-            }
-            FigureFormat::Png => {
-                let path = out.join(format!("{}.png", f.name));
-                let tmp = out.join(format!(".{}.{}.png", f.name, std::process::id()));
-                f.drawing.to_png(&tmp)?;
-                std::fs::rename(&tmp, &path)
-                    .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))?;
-                path
-            }
-        };
-        println!("wrote {}", path.display());
     }
     Ok(())
 }

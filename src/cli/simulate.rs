@@ -1,14 +1,31 @@
-//! `scenes` and `simulate`: the built-in scenes, one run with its progress bar and summary.
+//! `rolling-disk simulate`: one run of a scene with its progress bar and summary.
 
-use super::*;
+use crate::cli::stdout;
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use physics::run::{run, Run};
+use physics::scene::Scene;
+use physics::solve::Ending;
+use std::path::PathBuf;
 
-pub(crate) fn scenes() -> anyhow::Result<()> {
-    for (name, src) in BUILTIN {
-        let scene = Scene::parse(src, &format!("builtin:{name}"))?;
-        let first_sentence = scene.description.split(". ").next().unwrap_or("");
-        println!("{name:28} {:13} {first_sentence}", scene.model.to_string());
+/// The arguments of `rolling-disk simulate`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// A scene file, or the name of a built-in scene (see `rolling-disk scenes`).
+    pub scene: String,
+    /// Also write the recorded trajectory as CSV to this file.
+    #[arg(long, value_name = "FILE")]
+    pub csv: Option<PathBuf>,
+    /// Also run the scene in another model and print the largest differences
+    /// (`lab-frame`: the independent Newton-Euler model).
+    #[arg(long, value_name = "MODEL")]
+    pub compare: Option<String>,
+}
+
+impl Args {
+    /// Runs the command.
+    pub fn run(self) -> anyhow::Result<()> {
+        simulate(&self.scene, self.csv, self.compare.as_deref())
     }
-    Ok(())
 }
 
 pub(crate) fn progress_bar(t_end: f64) -> ProgressBar {
@@ -22,11 +39,7 @@ pub(crate) fn progress_bar(t_end: f64) -> ProgressBar {
     bar
 }
 
-pub(crate) fn simulate(
-    name: &str,
-    csv: Option<PathBuf>,
-    compare: Option<&str>,
-) -> anyhow::Result<()> {
+fn simulate(name: &str, csv: Option<PathBuf>, compare: Option<&str>) -> anyhow::Result<()> {
     let scene = Scene::load(name)?;
     if let Some(other) = compare {
         let other = match other {

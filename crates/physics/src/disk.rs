@@ -90,12 +90,15 @@ impl Disk {
     }
 }
 
-/// The toy disk of the studies: a uniform disk of radius 37.5 mm and mass 0.4 kg.
+/// A disk of the Euler's Disk toy's size (radius 37.5 mm, mass 0.4 kg, $g$ = 9.81 m/s^2) with
+/// inertia factor `k` (`k` > 0).
+pub fn toy_sized(k: f64) -> Disk {
+    Disk::new(0.0375, k, 0.4, 9.81).expect("a valid disk: the inertia factor must be positive")
+}
+
+/// The toy disk of the studies: a uniform disk ($k = 1/4$) of the toy's size.
 pub fn toy_disk() -> Disk {
-    let Ok(d) = Disk::new(0.0375, 0.25, 0.4, 9.81) else {
-        unreachable!("the toy disk is valid")
-    };
-    d
+    toy_sized(0.25)
 }
 
 #[cfg(test)]

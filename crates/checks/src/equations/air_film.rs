@@ -24,11 +24,12 @@
 //! table ($a|\ddot\alpha| < g$ along the film's own law, $\alpha^5 > (2/9)K^2a/g$ for
 //! $\alpha^3 = K\tau$).
 
-use super::spin_down::{disk, steady_precession};
+use super::spin_down::steady_precession;
 use super::{solve_printed, Bench, Equation};
 use crate::finding::{Finding, Headline, Method, Tolerance, Verdict, Worst};
 use num_dual::Dual64;
 use paper::Bindings;
+use physics::disk::toy_sized;
 use physics::disk::Disk;
 use physics::model::air_film::{SqueezeFilm, Window};
 use physics::model::Motion;
@@ -214,7 +215,7 @@ fn judged(
 pub fn eq82(b: &Bench) -> Finding {
     let film = SqueezeFilm::solved();
     let eq = b.paper.equation(82);
-    let d = disk(K);
+    let d = toy_sized(K);
     let window = Window::of(film, &d, ETA, NU, P_ATM);
     let mut worst = Worst::default();
     let descent = time_remaining(b, &d, film, &window).unwrap_or_default();
@@ -295,7 +296,7 @@ pub fn eq82(b: &Bench) -> Finding {
 pub fn eq83(b: &Bench) -> Finding {
     let film = SqueezeFilm::solved();
     let eq = b.paper.equation(83);
-    let d = disk(K);
+    let d = toy_sized(K);
     let window = Window::of(film, &d, ETA, NU, P_ATM);
     let mut worst = Worst::default();
     let descent = time_remaining(b, &d, film, &window).unwrap_or_default();

@@ -8,11 +8,12 @@
 //! Only the equations that fail and have a failing premise need this (an equation that fails
 //! while all its premises hold cannot follow from them): the chain of section 11.
 
-use super::spin_down::{derivation_from_eq76, disk, law_bindings, printed_c, SMALL_ALPHAS};
+use super::spin_down::{derivation_from_eq76, law_bindings, printed_c, SMALL_ALPHAS};
 use super::{last_side, printed_relations, solve_printed, worst_order, Bench, Derivation};
 use crate::finding::{Finding, Method, Tolerance, Worst};
 use num_dual::Dual64;
 use paper::{Bindings, Relation};
+use physics::disk::toy_sized;
 use physics::model::dissipation::PowerLaw;
 use std::f64::consts::FRAC_PI_2;
 
@@ -57,7 +58,7 @@ pub fn eq83_from_eq82(b: &Bench) -> Finding {
     let eta = 1.8e-5;
     let mut worst = Worst::default();
     for &k in &[0.25, 0.5] {
-        let d = disk(k);
+        let d = toy_sized(k);
         for i in 0..20 {
             let tau = 10f64.powf(1.0 - 4.0 * f64::from(i) / 19.0);
             let bind = law_bindings(
@@ -105,7 +106,7 @@ pub fn eq73_from_eq72(b: &Bench) -> Finding {
     let eq72 = b.paper.equation(72);
     let mut worst = Worst::default();
     for &k in &[0.25, 0.5] {
-        let d = disk(k);
+        let d = toy_sized(k);
         for &alpha in &SMALL_ALPHAS {
             let alpha_dot = -0.1 * (d.g * alpha / d.a).sqrt();
             let alpha_ddot = -d.g_over_a();
@@ -178,7 +179,7 @@ pub fn eq76_from_eqs73_75(b: &Bench) -> Finding {
         rhs: last,
     };
     for &k in &[0.25, 0.5] {
-        let d = disk(k);
+        let d = toy_sized(k);
         for &beta in &[1.0, 2.0, 4.0] {
             for omega in [10.0f64, 100.0, 1000.0] {
                 let law = PowerLaw {
@@ -231,7 +232,7 @@ fn eq76_second_from_eq31(b: &Bench) -> Finding {
     let rels = eq76.relations();
     let mut errors = vec![0.0f64; SMALL_ALPHAS.len()];
     for &k in &[0.25, 0.5] {
-        let d = disk(k);
+        let d = toy_sized(k);
         for &beta in &[1.0, 2.0, 4.0] {
             let law = PowerLaw {
                 epsilon: 1e-3,
@@ -327,7 +328,7 @@ pub fn eq79_from_eqs78_31(b: &Bench) -> Finding {
     let (eq78, eq79) = (b.paper.equation(78), b.paper.equation(79));
     let mut errors = vec![0.0f64; SMALL_ALPHAS.len()];
     for &k in &[0.25, 0.5] {
-        let d = disk(k);
+        let d = toy_sized(k);
         for &beta in &[1.0, 2.0, 2.5, 4.0] {
             let law = PowerLaw {
                 epsilon: 1e-3,
@@ -425,7 +426,7 @@ fn omega_from_eq31(b: &Bench, d: &physics::disk::Disk, alpha: f64, bind: &Bindin
 fn chain_points() -> Vec<(physics::disk::Disk, PowerLaw, f64, Bindings<f64>)> {
     let mut out = Vec::new();
     for &k in &[0.25, 0.5] {
-        let d = disk(k);
+        let d = toy_sized(k);
         for &beta in &[1.0, 2.0, 2.5, 4.0] {
             let law = PowerLaw {
                 epsilon: 1e-3,

@@ -6,11 +6,12 @@
 //! Exactly, the horizontal force is $-m b\Omega_0^2\hat{\mathbf r}$ and the vertical one $mg$,
 //! so the friction needed is $\mu_* = |b|\Omega_0^2/g$.
 
-use super::steady_reference::{disk, rho_edge, steady_ref};
+use super::steady_reference::{rho_edge, steady_ref};
 use super::{printed_threshold, Bench, Equation};
 use crate::finding::{Finding, Headline, Method, Tolerance, Worst};
 use nalgebra::Vector3;
 use paper::Bindings;
+use physics::disk::toy_sized;
 use physics::disk::Disk;
 use physics::model::rolling::{contact_force, rates};
 
@@ -63,7 +64,7 @@ fn eq41(b: &Bench) -> Finding {
     let small = small();
     let mut fits = Vec::new();
     for k in [0.25, 0.5, 0.9] {
-        let d = disk(k);
+        let d = toy_sized(k);
         for alpha0 in [0.3f64, 1.0] {
             for sign in [1.0, -1.0] {
                 let errs: Vec<f64> = small
@@ -121,7 +122,7 @@ fn eq42(b: &Bench) -> Finding {
     let small = small();
     let mut fits = Vec::new();
     for k in [0.25, 0.5, 0.9] {
-        let d = disk(k);
+        let d = toy_sized(k);
         for alpha0 in [0.3f64, 1.0] {
             for sign in [1.0, -1.0] {
                 let errs: Vec<f64> = small
@@ -178,7 +179,7 @@ fn eq42(b: &Bench) -> Finding {
 fn eq43(b: &Bench) -> Finding {
     let mut w = Worst::default();
     for k in [0.1, 0.25, 0.5, 0.9] {
-        let d = disk(k);
+        let d = toy_sized(k);
         for alpha0 in [0.3f64, 0.8, 1.2] {
             let edge = rho_edge(&d, alpha0, 1e-12);
             for beta in [0.25, 0.5, 0.75, 0.9, 0.99] {

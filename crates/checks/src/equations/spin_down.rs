@@ -8,6 +8,7 @@ use crate::finding::{Finding, Headline, Method, Tolerance, Worst};
 use num_dual::DualNum;
 use numerics::memo::{bits, Memo};
 use paper::{Bindings, Relation};
+use physics::disk::toy_sized;
 use physics::disk::Disk;
 use physics::model::dissipation::PowerLaw;
 use physics::model::rolling::Rolling;
@@ -16,10 +17,6 @@ use physics::model::Extras;
 use physics::solve::{solve, Dynamics, Event, Problem, State};
 use std::f64::consts::PI;
 use std::sync::Arc;
-
-pub(crate) fn disk(k: f64) -> Disk {
-    Disk::new(0.0375, k, 0.4, 9.81).expect("a valid disk")
-}
 
 /// The exact energy of the disk rolling without slipping (eq 26's content), the model's.
 pub(crate) use physics::model::rolling::energy;
@@ -166,7 +163,7 @@ pub(crate) fn law_runs(b: &Bench) -> Vec<(Disk, LawRun)> {
     let mut out = Vec::new();
     let eq76 = b.paper.equation(76);
     for &k in &[0.25, 0.5] {
-        let d = disk(k);
+        let d = toy_sized(k);
         for &beta in &[1.0, 2.0, 2.5, 4.0] {
             let unit = PrintedLaw {
                 eq: eq76,
@@ -300,7 +297,7 @@ pub(crate) fn time_remaining_on_model(b: &Bench, n: u32, relation: usize, what: 
     let mut seen = String::new();
     let mut headline = None;
     for &k in &[0.25, 0.5] {
-        let d = disk(k);
+        let d = toy_sized(k);
         for &beta in &BETAS {
             for (i, &alpha0) in MODEL_ALPHAS.iter().enumerate() {
                 let factor = rel.zip(descent(b, &d, beta, alpha0)).map(|(rel, r)| {
@@ -370,7 +367,7 @@ mod tests {
     #[test]
     fn the_steady_precession_is_the_models_steady_motion() {
         for k in [0.1, 0.25, 0.5, 0.9] {
-            let d = disk(k);
+            let d = toy_sized(k);
             for alpha in [1.5, 1.0, 0.3, 0.05, 1e-3, 1e-5] {
                 let model = super::super::steady_reference::steady_ref(&d, alpha, 0.0)
                     .expect("a steady motion at b = 0")

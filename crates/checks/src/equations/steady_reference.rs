@@ -22,11 +22,6 @@ use std::f64::consts::PI;
 /// (1/4) and the hoop (1/2).
 pub(crate) const KS: [f64; 4] = [0.1, 0.25, 0.5, 0.9];
 
-/// A disk of the Euler's Disk toy's size (a = 37.5 mm) with inertia factor `k`.
-pub(crate) fn disk(k: f64) -> Disk {
-    Disk::new(0.0375, k, 0.4, 9.81).expect("a valid disk")
-}
-
 /// A steady motion found from the model alone: at tilt `alpha0` with $\omega_{10} = \rho\,\Omega_0$,
 /// Newton's method on $\ddot\alpha(\Omega) = 0$ (eq 24 of the model), exact derivative by a dual
 /// number. $\Omega_0$ has the sign of $\rho$ (or is positive for $\rho = 0$) so that

@@ -91,31 +91,7 @@ fn locate<const N: usize>(
     t_b: f64,
     y_b: State<N>,
 ) -> (usize, f64, State<N>) {
-    let mut best: Option<(usize, f64, State<N>)> = None;
-    for (i, e) in events.iter().enumerate() {
-        if (e.value)(&y_b) > 0.0 {
-            continue;
-        }
-        let (mut lo, mut hi) = (0.0, t_b - t_a);
-        let mut y_hi = y_b;
-        while hi - lo > EVENT_TIME_TOLERANCE * 0.5 {
-            let mid = 0.5 * (lo + hi);
-            if mid <= lo || mid >= hi {
-                break;
-            }
-            let y_mid = dense.at(t_a + mid);
-            if (e.value)(&y_mid) <= 0.0 {
-                hi = mid;
-                y_hi = y_mid;
-            } else {
-                lo = mid;
-            }
-        }
-        if best.as_ref().is_none_or(|b| t_a + hi < b.1) {
-            best = Some((i, t_a + hi, y_hi));
-        }
-    }
-    best.unwrap_or((0, t_b, y_b))
+    first_crossing(events, t_a, t_b, y_b, |dt| dense.at(t_a + dt))
 }
 
 /// Integrates a checked problem (see [`super::solve`]) from a start at which no event holds.
@@ -240,4 +216,41 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
         stats,
         ending,
     }
+}
+
+/// The earliest of `events` that holds at the step's end `(t_b, y_b)`, located by bisection on
+/// the state `state_after(dt)` at time `t_a + dt` to [`EVENT_TIME_TOLERANCE`]: its index, time
+/// and the state there (where it holds). With no event holding, the step's end.
+pub(super) fn first_crossing<const N: usize>(
+    events: &[Event<'_, N>],
+    t_a: f64,
+    t_b: f64,
+    y_b: State<N>,
+    mut state_after: impl FnMut(f64) -> State<N>,
+) -> (usize, f64, State<N>) {
+    let mut best: Option<(usize, f64, State<N>)> = None;
+    for (i, e) in events.iter().enumerate() {
+        if (e.value)(&y_b) > 0.0 {
+            continue;
+        }
+        let (mut lo, mut hi) = (0.0, t_b - t_a);
+        let mut y_hi = y_b;
+        while hi - lo > EVENT_TIME_TOLERANCE * 0.5 {
+            let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
+            }
+            let y_mid = state_after(mid);
+            if (e.value)(&y_mid) <= 0.0 {
+                hi = mid;
+                y_hi = y_mid;
+            } else {
+                lo = mid;
+            }
+        }
+        if best.as_ref().is_none_or(|b| t_a + hi < b.1) {
+            best = Some((i, t_a + hi, y_hi));
+        }
+    }
+    best.unwrap_or((0, t_b, y_b))
 }

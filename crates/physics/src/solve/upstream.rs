@@ -5,7 +5,6 @@
 //! stop event is detected on the step ends and then located by bisection on re-integrations from
 //! the start of the step that crossed it, and samples are re-integrated from the step before.
 
-use super::EVENT_TIME_TOLERANCE;
 use super::{Dynamics, Ending, Event, Method, Problem, Settings, Solution, State, Stats};
 use crate::budget::Deadline;
 use ode_solvers::dop_shared::IntegrationError;
@@ -346,33 +345,11 @@ fn locate<D: Dynamics<N>, const N: usize>(
     t_b: f64,
     stats: &mut Stats,
 ) -> (usize, f64, State<N>) {
-    let mut best: Option<(usize, f64, State<N>)> = None;
     let y_b = advance(dynamics, settings, t_a, y_a, t_b - t_a, stats);
-    for (i, e) in events.iter().enumerate() {
-        if (e.value)(&y_b) > 0.0 {
-            continue;
-        }
-        let (mut lo, mut hi) = (0.0, t_b - t_a);
-        let mut y_hi = y_b;
-        while hi - lo > EVENT_TIME_TOLERANCE * 0.5 {
-            let mid = 0.5 * (lo + hi);
-            if mid <= lo || mid >= hi {
-                break;
-            }
-            let y_mid = advance(dynamics, settings, t_a, y_a, mid, stats);
-            if (e.value)(&y_mid) <= 0.0 {
-                hi = mid;
-                y_hi = y_mid;
-            } else {
-                lo = mid;
-            }
-        }
-        if best.as_ref().is_none_or(|b| t_a + hi < b.1) {
-            best = Some((i, t_a + hi, y_hi));
-        }
-    }
     // The step ends showed a crossing, so at least one event fires at t_b or before.
-    best.unwrap_or((0, t_b, y_b))
+    super::driver::first_crossing(events, t_a, t_b, y_b, |dt| {
+        advance(dynamics, settings, t_a, y_a, dt, stats)
+    })
 }
 
 /// Samples a solution every `dt` seconds from `t0`, each sample re-integrated from the last

@@ -1,6 +1,7 @@
 //! Eqs 84-85: the forms of the power law used to analyse the data.
 
 use super::*;
+use physics::disk::toy_sized;
 
 /// Eq 84, $1/\Omega = ((t_0 - t)/C)^{1/(\beta+2)}$, with $C$ as eq 79 defines it.
 ///
@@ -22,7 +23,7 @@ pub fn eq85(b: &Bench) -> Finding {
     let eq76 = b.paper.equation(76);
     let rel = eq.relations()[0];
     for &k in &[0.25, 0.5] {
-        let d = disk(k);
+        let d = toy_sized(k);
         for beta in [1.0, 2.0, 2.5, 3.0, 4.0] {
             let law = PowerLaw {
                 epsilon: 1e-6,

@@ -1,6 +1,7 @@
 //! Eqs 72-73: the energy of the disk at small tilt and its rate, against the exact energy.
 
 use super::*;
+use physics::disk::toy_sized;
 
 /// Eq 72 at states of the $b = 0$ family (steady precession at each tilt, $\omega_1 = 0$) with
 /// tilt rate $\dot\alpha^2 = c_0\,g\alpha/a$: the claimed
@@ -10,7 +11,7 @@ pub(super) fn eq72_at(b: &Bench, c0: f64) -> Finding {
     let mut errors = vec![0.0f64; SMALL_ALPHAS.len()];
     let mut worst_form = vec![0usize; SMALL_ALPHAS.len()];
     for &k in &[0.25, 0.5] {
-        let d = disk(k);
+        let d = toy_sized(k);
         for (i, &alpha) in SMALL_ALPHAS.iter().enumerate() {
             let alpha_dot = -(c0 * d.g * alpha / d.a).sqrt();
             let m = Motion {
@@ -113,7 +114,7 @@ pub fn eq73(b: &Bench) -> Finding {
     let mut errors = vec![0.0f64; SMALL_ALPHAS.len()];
     let mut worst_form = vec![0usize; SMALL_ALPHAS.len()];
     for &k in &[0.25, 0.5] {
-        let d = disk(k);
+        let d = toy_sized(k);
         for (i, &alpha) in SMALL_ALPHAS.iter().enumerate() {
             let alpha_dot = -0.1 * (d.g * alpha / d.a).sqrt();
             let (s, c) = alpha.sin_cos();

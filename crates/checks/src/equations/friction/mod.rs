@@ -13,8 +13,8 @@
 //!   times too large for the dissipative disk.
 
 use super::spin_down::{
-    descent, disk, energy, law_bindings, slope, steady_precession, time_remaining_on_model,
-    PrintedLaw, BETAS, SMALL_ALPHAS,
+    descent, energy, law_bindings, slope, steady_precession, time_remaining_on_model, PrintedLaw,
+    BETAS, SMALL_ALPHAS,
 };
 use super::{last_side, printed_relations, solve_printed, Bench, Equation};
 use crate::finding::{Finding, Headline, Method, Tolerance, Worst};

@@ -1,6 +1,7 @@
 //! Eqs 74-79: the dissipated power, the tilt law and its integrals, against the dissipative rolling model.
 
 use super::*;
+use physics::disk::toy_sized;
 
 /// Eqs 74-75 against the dissipative rolling model: at states sampled along its integrations,
 /// the rate of the exact energy, $\nabla E\cdot f(y)$ (gradient by dual numbers), against the
@@ -10,7 +11,7 @@ use super::*;
 pub(super) fn dissipation(b: &Bench, n: u32, betas: &[f64]) -> Finding {
     let mut worst = Worst::default();
     for &k in &[0.25, 0.5] {
-        let d = disk(k);
+        let d = toy_sized(k);
         for &beta in betas {
             for (alpha0, bb) in [(0.3, 0.0), (1.0, 0.02), (0.8, -0.004)] {
                 let Ok(start) = steady_motion(&d, alpha0, bb) else {
@@ -104,7 +105,7 @@ pub fn eq76(b: &Bench) -> Finding {
     let mut seen = String::new();
     let mut headline = None;
     for &k in &[0.25, 0.5] {
-        let d = disk(k);
+        let d = toy_sized(k);
         for &beta in &BETAS {
             for (i, &alpha0) in alphas.iter().enumerate() {
                 let e = descent(b, &d, beta, alpha0)
@@ -176,7 +177,7 @@ pub fn eq76(b: &Bench) -> Finding {
     let mut errors2 = vec![0.0f64; SMALL_ALPHAS.len()];
     if let Some(second) = relations.get(1) {
         for &k in &[0.25, 0.5] {
-            let d = disk(k);
+            let d = toy_sized(k);
             for &beta in &BETAS {
                 let law = PowerLaw {
                     epsilon: 1e-3,
@@ -245,7 +246,7 @@ pub fn eq79(b: &Bench) -> Finding {
     let mut seen = String::new();
     let mut headline = None;
     for &k in &[0.25, 0.5] {
-        let d = disk(k);
+        let d = toy_sized(k);
         for &beta in &BETAS {
             for (i, &alpha0) in alphas.iter().enumerate() {
                 let e = descent(b, &d, beta, alpha0).map_or(f64::INFINITY, |r| {

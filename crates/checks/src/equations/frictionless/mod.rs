@@ -112,10 +112,6 @@ pub const EQUATIONS: &[Equation] = &[
 /// The inertia factors swept: thin shells to hoops, with the uniform disk (1/4) and hoop (1/2).
 const KS: [f64; 4] = [0.1, 0.25, 0.5, 0.9];
 
-fn disk(k: f64) -> Disk {
-    Disk::new(0.0375, k, 0.4, 9.81).expect("a valid disk")
-}
-
 // ------------------------------------------------------------------ the Lagrangian reference
 
 /// Vectors of the reference, over dual numbers of any order (nalgebra's arithmetic, cross and

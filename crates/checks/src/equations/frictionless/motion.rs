@@ -1,6 +1,7 @@
 //! Eqs 59-63: the frictionless equations of motion and their constants, against the Lagrangian.
 
 use super::*;
+use physics::disk::toy_sized;
 
 /// Eq 59, $\mathbf r_{cm} = a\sin\alpha\,\hat{\mathbf z}$: a model statement (no friction, so the
 /// centre of mass moves only vertically; its height is fixed by the contact).
@@ -15,7 +16,7 @@ pub(super) fn eq59(b: &Bench) -> Finding {
     let mut rng = Rng::new(59);
     let mut alphas: Vec<f64> = (0..40).map(|_| rng.uniform(0.01, PI - 0.01)).collect();
     for &k in &KS {
-        let d = disk(k);
+        let d = toy_sized(k);
         let model = Frictionless::<3>::new(d, 0.0, Extras::default());
         let start = Motion {
             alpha: 1.0,
@@ -100,7 +101,7 @@ pub(super) fn eq60(b: &Bench) -> Finding {
     let mut rng = Rng::new(60);
     let eq = b.paper.equation(60);
     for &k in &[0.1, 0.25, 0.9] {
-        let d = disk(k);
+        let d = toy_sized(k);
         let model = Reference { disk: d };
         for m in random_states(&d, &mut rng, 2).iter().skip(1) {
             let y0 = State::<4>::new(m.alpha, m.alpha_dot, m.precession, m.spin);
@@ -170,7 +171,7 @@ pub(super) fn residuals(b: &Bench, n: u32, seed: u64) -> Worst {
     let mut rng = Rng::new(seed);
     let eq = b.paper.equation(n);
     for &k in &KS {
-        let d = disk(k);
+        let d = toy_sized(k);
         for m in random_states(&d, &mut rng, 40) {
             let bind = state_bindings(&d, &m, reference_rates(&d, &m));
             let scale = relation_scale(eq, &bind) + squared_rate(&d, &m);
@@ -229,7 +230,7 @@ pub(super) fn eq63(b: &Bench) -> Finding {
     let mut worst = Worst::default();
     let mut rng = Rng::new(63);
     for &k in &KS {
-        let d = disk(k);
+        let d = toy_sized(k);
         for m in random_states(&d, &mut rng, 3) {
             let model = Frictionless::<3>::new(d, m.spin, Extras::default());
             let initial = lz_geometric(&d, &m);

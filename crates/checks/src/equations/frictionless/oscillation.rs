@@ -1,6 +1,7 @@
 //! Eqs 66-71: small oscillations about steady motion without friction, against the linearized Lagrangian and integrations.
 
 use super::*;
+use physics::disk::toy_sized;
 
 /// The steady tilts swept in the small-oscillation checks (0 < alpha_0 < pi/2).
 pub(super) const ALPHA0S: [f64; 5] = [0.1, 0.4, 0.8, 1.2, 1.5];
@@ -37,7 +38,7 @@ pub(super) fn ansatz(b: &Bench, n: u32, amplitude: fn(f64, f64) -> f64) -> Findi
     let fractions = [1e-2, 3e-3, 1e-3, 3e-4];
     let mut errors = vec![0.0f64; fractions.len()];
     for &k in &[0.25, 0.5] {
-        let d = disk(k);
+        let d = toy_sized(k);
         for &alpha0 in &[0.3, 0.9, 1.3] {
             let lin = linear(&d, alpha0);
             for (i, f) in fractions.iter().enumerate() {
@@ -105,7 +106,7 @@ pub(super) fn eq67(b: &Bench) -> Finding {
 pub(super) fn sweep_linear(mut f: impl FnMut(&Disk, f64, &Linear, &mut Worst)) -> Worst {
     let mut worst = Worst::default();
     for &k in &KS {
-        let d = disk(k);
+        let d = toy_sized(k);
         for &alpha0 in &ALPHA0S {
             let lin = linear(&d, alpha0);
             f(&d, alpha0, &lin, &mut worst);

@@ -1,6 +1,7 @@
 //! Unit tests of the frictionless checks.
 
 use super::*;
+use physics::disk::toy_sized;
 use physics::model::frictionless::accelerations;
 
 fn verdicts(f: fn(&Bench) -> Finding) -> (Finding, Finding) {
@@ -34,7 +35,7 @@ fn printed_holds_and_mutants_fail(n: u32, f: fn(&Bench) -> Finding) {
 #[test]
 fn reference_agrees_with_itself_on_energy() {
     // The Lagrangian reference conserves its energy: a sanity check of the reference.
-    let d = disk(0.25);
+    let d = toy_sized(0.25);
     let m = Motion {
         alpha: 0.8,
         alpha_dot: 3.0,

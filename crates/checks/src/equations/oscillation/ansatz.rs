@@ -1,6 +1,7 @@
 //! Eqs 44-46: the small-oscillation ansatz, against integrations along the mode.
 
 use super::*;
+use physics::disk::toy_sized;
 
 /// The ansatz of eqs 44-46 checked on integrations: started from a stable steady motion
 /// displaced by $\epsilon$ along the model's oscillation mode, the variable `which`
@@ -15,7 +16,7 @@ pub(super) fn ansatz(b: &Bench, which: usize) -> Finding {
     let mut w = Worst::default();
     let eps_rel: Vec<f64> = (3..=6).map(|i| 10f64.powi(-i)).collect();
     for k in [0.25, 0.5] {
-        let d = disk(k);
+        let d = toy_sized(k);
         for (alpha0, rho) in [(0.3, 0.0), (0.8, 0.5), (1.2, -0.05)] {
             let Some(m) = steady_ref(&d, alpha0, rho) else {
                 continue;

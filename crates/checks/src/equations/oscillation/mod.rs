@@ -9,7 +9,7 @@
 //! on small-amplitude integrations, and thresholds located by bisection on integrations.
 //! $b/a$ enters as the ratio $\omega_{10}/\Omega_0$ (eq 28, checked by measuring the path).
 
-use super::steady_reference::{disk, rho_edge, state, steady_ref, KS};
+use super::steady_reference::{rho_edge, state, steady_ref, KS};
 use super::{
     add_threshold, implied_square, printed_relations, printed_threshold, term_scale, Bench,
     Equation,
@@ -18,6 +18,7 @@ use crate::finding::{Finding, Method, Tolerance, Worst};
 use nalgebra::{Complex, SMatrix};
 use numerics::oscillation::{angular_frequency, bisect};
 use paper::Bindings;
+use physics::disk::toy_sized;
 use physics::disk::Disk;
 use physics::model::rolling::{self, Rolling};
 use physics::model::{Extras, Model, Motion};
@@ -161,7 +162,7 @@ fn at(k: f64, alpha0: f64, rho: f64) -> String {
 /// Calls `f(k, disk, alpha0, rho, steady motion)` over the sweep.
 fn sweep(mut f: impl FnMut(f64, &Disk, f64, f64, &Motion)) {
     for k in KS {
-        let d = disk(k);
+        let d = toy_sized(k);
         for alpha0 in ALPHAS {
             for rho in rhos(&d, alpha0) {
                 if let Some(m) = steady_ref(&d, alpha0, rho) {

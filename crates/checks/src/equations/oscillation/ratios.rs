@@ -1,6 +1,7 @@
 //! Eqs 54-58: the oscillation-to-precession ratio in its general and small-tilt forms, against the linearization.
 
 use super::*;
+use physics::disk::toy_sized;
 
 /// Eq 54, $\dfrac{\varpi^2}{\Omega_0^2}(k+1) = 3k\cos^2\alpha_0 + \sin^2\alpha_0 + \dfrac{b}{a}
 /// \left((6k+1)\cos\alpha_0 - (2k+1)\dfrac{\sin^2\alpha_0}{\cos\alpha_0}\right) + 2\dfrac{b^2}{a^2}(2k+1)$.
@@ -59,7 +60,7 @@ pub(super) fn eq55(b: &Bench) -> Finding {
     let small: Vec<f64> = (2..=6).map(|i| 10f64.powi(-i)).collect();
     let mut fits = Vec::new();
     for k in [0.25, 0.5, 0.9] {
-        let d = disk(k);
+        let d = toy_sized(k);
         for alpha0 in [0.3f64, 1.3] {
             for sign in [1.0, -1.0] {
                 let claimed = printed_ratio(b, 55, k, alpha0);
@@ -93,7 +94,7 @@ pub(super) fn eq56(b: &Bench) -> Finding {
     let small: Vec<f64> = (0..5).map(|i| 0.2 * 4f64.powi(-i)).collect();
     let mut fits = Vec::new();
     for k in KS {
-        let d = disk(k);
+        let d = toy_sized(k);
         let errs: Vec<f64> = small
             .iter()
             .map(|&al| {
@@ -117,7 +118,7 @@ pub(super) fn small_tilt_b(b: &Bench, n: u32, ks: &[f64]) -> Finding {
     let small: Vec<f64> = (0..8).map(|i| 0.1 * 4f64.powi(-i)).collect();
     let mut fits = Vec::new();
     for &k in ks {
-        let d = disk(k);
+        let d = toy_sized(k);
         let errs: Vec<f64> = small
             .iter()
             .map(|&al| {

@@ -1,6 +1,7 @@
 //! Eqs 52-53: where steady motion turns unstable, against integrations.
 
 use super::*;
+use physics::disk::toy_sized;
 
 /// Integrations last $N$ natural times $\sqrt{a/g}$. The upright disk is kicked with a small
 /// $\dot\alpha_0$ (which excites only the oscillation: $\Omega$ and $\omega_1$ follow $\alpha$ by
@@ -78,7 +79,7 @@ pub(super) fn threshold_check(b: &Bench, which: u32) -> Finding {
     let width_int = 1e-6;
     let mut out: Option<Finding> = None;
     for k in KS {
-        let d = disk(k);
+        let d = toy_sized(k);
         let ga = d.g_over_a();
         // x is omega_10 (eq 52) or |Omega_0| (eq 53): the state (Omega, omega_1) at x.
         let y_of = |x: f64| if which == 52 { (0.0, x) } else { (x, 0.0) };

@@ -1,6 +1,7 @@
 //! Eqs 27-32 and 38-40: steady motion's rates, radii and thresholds, against motions solved and measured on the model.
 
 use super::*;
+use physics::disk::toy_sized;
 
 /// Eq 27, the steady balance
 /// $k\Omega_0^2\sin\alpha_0\cos\alpha_0 + (2k+1)\omega_{10}\Omega_0\sin\alpha_0 = \frac{g}{a}\cos\alpha_0$.
@@ -12,7 +13,7 @@ use super::*;
 pub(super) fn eq27(b: &Bench) -> Finding {
     let mut w = Worst::default();
     for k in KS {
-        let d = disk(k);
+        let d = toy_sized(k);
         for alpha0 in [0.1, 0.5, 1.0] {
             for rho in rhos(&d, alpha0) {
                 // Eq 27 as printed, solved for Omega_0 with omega_10 = rho Omega_0.
@@ -65,7 +66,7 @@ pub(super) fn eq27(b: &Bench) -> Finding {
 pub(super) fn eq28(b: &Bench) -> Finding {
     let mut w = Worst::default();
     for k in KS {
-        let d = disk(k);
+        let d = toy_sized(k);
         for alpha0 in ALPHAS {
             for rho in rhos(&d, alpha0) {
                 let Some(m) = steady_ref(&d, alpha0, rho) else {
@@ -102,7 +103,7 @@ pub(super) fn eq28(b: &Bench) -> Finding {
 pub(super) fn eq29(b: &Bench) -> Finding {
     let mut w = Worst::default();
     for k in KS {
-        let d = disk(k);
+        let d = toy_sized(k);
         for alpha0 in ALPHAS {
             for rho in rhos(&d, alpha0) {
                 let Some(m) = steady_ref(&d, alpha0, rho) else {
@@ -139,7 +140,7 @@ pub(super) fn eq30(b: &Bench) -> Finding {
     let width = 1e-10;
     let mut w = Worst::default();
     for k in KS {
-        let d = disk(k);
+        let d = toy_sized(k);
         for alpha0 in [0.1, 0.5, 1.0, 1.4, 1.55] {
             let edge = rho_edge(&d, alpha0, width) * d.a;
             let probes = [edge - 1e-3 * edge.abs(), edge + 1e-3 * edge.abs()];
@@ -173,7 +174,7 @@ pub(super) fn eq30(b: &Bench) -> Finding {
 pub(super) fn eq31(b: &Bench) -> Finding {
     let mut w = Worst::default();
     for k in KS {
-        let d = disk(k);
+        let d = toy_sized(k);
         for alpha0 in [0.05, 0.3, 0.8, 1.2, 1.5] {
             let eq = b.paper.equation(31);
             let unit = d.g_over_a().sqrt();
@@ -231,7 +232,7 @@ pub(super) fn measured_rel_spin(bench: &Bench, d: &Disk, m: &Motion) -> f64 {
 pub(super) fn rel_spin_check(b: &Bench, n: u32) -> Finding {
     let mut w = Worst::default();
     for k in KS {
-        let d = disk(k);
+        let d = toy_sized(k);
         for alpha0 in ALPHAS {
             let Some(m) = steady_ref(&d, alpha0, 0.0) else {
                 continue;
@@ -283,7 +284,7 @@ pub(super) fn eq39(b: &Bench) -> Finding {
 pub(super) fn eq38(b: &Bench) -> Finding {
     let mut w = Worst::default();
     for k in KS {
-        let d = disk(k);
+        let d = toy_sized(k);
         for alpha0 in [0.1, 0.5, 1.0, 1.4] {
             let Some(m) = steady_ref(&d, alpha0, 0.0) else {
                 continue;
@@ -324,7 +325,7 @@ pub(super) fn eq38(b: &Bench) -> Finding {
 pub(super) fn eq40(b: &Bench) -> Finding {
     let mut w = Worst::default();
     for k in KS {
-        let d = disk(k);
+        let d = toy_sized(k);
         for alpha0 in [0.05, 0.3, 0.8, 1.2, 1.5] {
             let Some(m) = steady_ref(&d, alpha0, 0.0) else {
                 continue;

@@ -2,6 +2,7 @@
 
 use super::*;
 use numerics::memo::{bits, Memo};
+use physics::disk::toy_sized;
 use std::sync::Arc;
 
 /// Tilts of the section 5 checks.
@@ -56,7 +57,7 @@ impl LabSteady {
     /// 0.3, centre at (0.01, -0.02) m, face angle 0.7: nothing special) and integrated over one
     /// precession period. Its steadiness is measured on the lab run itself.
     fn run(bench: &Bench, k: f64, alpha0: f64, sign: f64) -> Option<Self> {
-        let d = disk(k);
+        let d = toy_sized(k);
         let mut m = steady_ref(&d, alpha0, 0.0)?;
         m.precession *= sign;
         let lab = LabFrame::new(d, Contact::Rolling);

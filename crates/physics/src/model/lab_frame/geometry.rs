@@ -8,7 +8,7 @@
 
 use super::LabFrame;
 use crate::disk::Disk;
-use crate::model::Motion;
+use crate::model::{Motion, Quantity};
 use crate::solve::State;
 use nalgebra::{Matrix3, Quaternion, Rotation3, UnitQuaternion, Vector3};
 
@@ -136,6 +136,35 @@ impl Snapshot {
     pub fn face(&self) -> f64 {
         let ey = self.rotation * Vector3::y();
         ey.dot(&self.e3).atan2(ey.dot(&self.e2))
+    }
+
+    /// Records quantity `q` read from the geometry alone (the paper's variables, heading, path,
+    /// face, speeds, the contact's height and path); false for what needs the model (energy,
+    /// $L_z$, forces, energy dissipated), which the model records itself.
+    pub fn record_geometry(&self, q: Quantity, out: &mut Vec<f64>) -> bool {
+        let m = self.motion();
+        match q {
+            Quantity::Alpha => out.push(m.alpha),
+            Quantity::AlphaDot => out.push(m.alpha_dot),
+            Quantity::Precession => out.push(m.precession),
+            Quantity::Spin => out.push(m.spin),
+            Quantity::Heading => out.push(self.heading()),
+            Quantity::Path => out.extend_from_slice(&[self.centre.x, self.centre.y]),
+            Quantity::Face => out.push(self.face()),
+            Quantity::SlipSpeed => out.push(self.contact_velocity.xy().norm()),
+            Quantity::CmSpeed => out.push(self.velocity.norm()),
+            Quantity::ContactGap => out.push(self.height),
+            Quantity::ContactPath => {
+                let c = self.centre + self.rho;
+                out.extend_from_slice(&[c.x, c.y]);
+            }
+            Quantity::Energy
+            | Quantity::Lz
+            | Quantity::NormalForce
+            | Quantity::Friction
+            | Quantity::Dissipated => return false,
+        }
+        true
     }
 }
 

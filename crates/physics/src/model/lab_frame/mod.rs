@@ -166,15 +166,7 @@ impl Model<13> for LabFrame {
 
     fn record(&self, y: &State<13>, q: Quantity, out: &mut Vec<f64>) -> bool {
         let s = self.snapshot(y);
-        let m = s.motion();
         match q {
-            Quantity::Alpha => out.push(m.alpha),
-            Quantity::AlphaDot => out.push(m.alpha_dot),
-            Quantity::Precession => out.push(m.precession),
-            Quantity::Spin => out.push(m.spin),
-            Quantity::Heading => out.push(s.heading()),
-            Quantity::Path => out.extend_from_slice(&[s.centre.x, s.centre.y]),
-            Quantity::Face => out.push(s.face()),
             Quantity::Energy => out.push(LabFrame::energy(self, y)),
             Quantity::Lz => out.push(self.lz(y)),
             Quantity::NormalForce => out.push(self.force(&s).z),
@@ -182,14 +174,8 @@ impl Model<13> for LabFrame {
                 let f = self.force(&s);
                 out.extend_from_slice(&[f.dot(&s.r), f.dot(&s.e2)]);
             }
-            Quantity::SlipSpeed => out.push(s.contact_velocity.xy().norm()),
-            Quantity::CmSpeed => out.push(s.velocity.norm()),
-            Quantity::ContactGap => out.push(s.height),
             Quantity::Dissipated => out.push(0.0),
-            Quantity::ContactPath => {
-                let c = s.centre + s.rho;
-                out.extend_from_slice(&[c.x, c.y]);
-            }
+            geometric => return s.record_geometry(geometric, out),
         }
         true
     }

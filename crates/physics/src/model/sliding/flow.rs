@@ -92,15 +92,7 @@ impl Model<14> for Flow<'_> {
 
     fn record(&self, y: &State<14>, q: Quantity, out: &mut Vec<f64>) -> bool {
         let s = self.snapshot(y);
-        let m = s.motion();
         match q {
-            Quantity::Alpha => out.push(m.alpha),
-            Quantity::AlphaDot => out.push(m.alpha_dot),
-            Quantity::Precession => out.push(m.precession),
-            Quantity::Spin => out.push(m.spin),
-            Quantity::Heading => out.push(s.heading()),
-            Quantity::Path => out.extend_from_slice(&[s.centre.x, s.centre.y]),
-            Quantity::Face => out.push(s.face()),
             Quantity::Energy => out.push(self.model.energy_at(&s)),
             Quantity::Lz => {
                 let i = self.model.inertia();
@@ -111,14 +103,8 @@ impl Model<14> for Flow<'_> {
                 let f = self.force(y);
                 out.extend_from_slice(&[f.dot(&s.r), f.dot(&s.e2)]);
             }
-            Quantity::SlipSpeed => out.push(horizontal(&s.contact_velocity).norm()),
-            Quantity::CmSpeed => out.push(s.velocity.norm()),
-            Quantity::ContactGap => out.push(s.height),
             Quantity::Dissipated => out.push(y[DISSIPATED]),
-            Quantity::ContactPath => {
-                let c = s.centre + s.rho;
-                out.extend_from_slice(&[c.x, c.y]);
-            }
+            geometric => return s.record_geometry(geometric, out),
         }
         true
     }

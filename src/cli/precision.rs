@@ -1,6 +1,32 @@
-//! `precision`: the speed/accuracy study of a scene, and what a preset reaches.
+//! `rolling-disk precision`: the speed/accuracy study of a scene, and what a preset reaches.
 
-use super::*;
+use physics::scene::Scene;
+use studies::precision;
+use studies::precision::Accuracy;
+
+/// The arguments of `rolling-disk precision`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// A scene file or built-in scene name.
+    #[arg(default_value = "benchmark")]
+    pub scene: String,
+    /// Print the study as JSON.
+    #[arg(long)]
+    pub json: bool,
+    /// A coarse sweep, each setting timed once.
+    #[arg(long)]
+    pub quick: bool,
+    /// Also name the cheapest method and tolerance reaching this accuracy (e.g. 1e-8).
+    #[arg(long, value_name = "ERROR")]
+    pub target: Option<f64>,
+}
+
+impl Args {
+    /// Runs the command.
+    pub fn run(self) -> anyhow::Result<()> {
+        precision(&self.scene, self.json, self.quick, self.target)
+    }
+}
 
 /// States what a preset actually reaches, measured on the benchmark scene against the validated
 /// reference, and what it costs.
@@ -16,12 +42,7 @@ pub(crate) fn print_preset_accuracy(a: Accuracy) -> anyhow::Result<()> {
     Ok(())
 }
 
-pub(crate) fn precision(
-    name: &str,
-    json: bool,
-    quick: bool,
-    target: Option<f64>,
-) -> anyhow::Result<()> {
+fn precision(name: &str, json: bool, quick: bool, target: Option<f64>) -> anyhow::Result<()> {
     if let Some(t) = target {
         if !(t.is_finite() && t > 0.0 && t < 1.0) {
             return Err(anyhow::anyhow!(

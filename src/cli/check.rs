@@ -1,95 +1,48 @@
-//! `check` and `mutants`: the paper to check, the accuracy, the table and the JSON they print.
+//! `rolling-disk check`: every equation and claim against its reference, as a table or JSON.
 
-use super::*;
+use crate::cli::paper_input::{bench_for, load_paper};
+use crate::cli::precision::print_preset_accuracy;
+use checks::check::{run_checks, Checked, Selection, Tally};
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use report::document::PAPER;
+use std::path::{Path, PathBuf};
+use studies::precision::Accuracy;
 
-pub(crate) fn mutants(only: Option<&str>, json: bool, paper: Option<&Path>) -> anyhow::Result<()> {
-    let bench = bench_for(None, load_paper(paper)?);
-    let numbers: Vec<u32> = match only {
-        None => ::checks::equations::equations()
-            .iter()
-            .map(|e| e.number)
-            .collect(),
-        Some(text) => {
-            let selection = ::checks::select::parse_only(text, bench.paper)?;
-            match selection.numbers {
-                Some(n) if !n.is_empty() => n,
-                _ => {
-                    return Err(anyhow::anyhow!(
-                        "--only {text}: name equation numbers or ranges (claims have no mutants)"
-                    ))
-                }
-            }
-        }
-    };
-    let bar = ProgressBar::with_draw_target(None, ProgressDrawTarget::stderr());
-    let progress = |done: usize, total: usize| {
-        bar.set_length(total as u64);
-        bar.set_position(done as u64);
-    };
-    let scores = ::checks::mutation::mutation_scores(&bench, &numbers, &progress);
-    bar.finish_and_clear();
-    if json {
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&scores)
-                .map_err(|e| anyhow::anyhow!("cannot write JSON: {e}"))?
-        );
-        return Ok(());
-    }
-    let (mut made, mut killed) = (0, 0);
-    for s in &scores {
-        if s.printed_fails {
-            println!(
-                "eq {:2}  the printed form fails its check: no score",
-                s.equation
-            );
-            continue;
-        }
-        made += s.mutants;
-        killed += s.killed;
-        println!(
-            "eq {:2}  {:3}/{:<3} killed{}",
-            s.equation,
-            s.killed,
-            s.mutants,
-            if s.judged_by == "derivation" {
-                " (judged by its derivation from its printed premises: the printed form fails its own check)"
-            } else {
-                ""
-            }
-        );
-        for change in &s.survivors {
-            println!("         survives: {change}");
-        }
-    }
-    println!("{killed}/{made} mutants killed");
-    Ok(())
+/// The arguments of `rolling-disk check`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// Only these: equation numbers, ranges and claim ids, comma-separated, with or without
+    /// a prefix (e.g. 23-25,eq50,claim:k-uniform-disk).
+    #[arg(long, value_name = "LIST")]
+    pub only: Option<String>,
+    /// Print the findings as JSON instead of a table.
+    #[arg(long)]
+    pub json: bool,
+    /// Integration accuracy of the checks (fast: DOPRI5 at rtol 1e-6; standard and high:
+    /// DOP853 at 1e-10 and 1e-13; each prints what it reaches on the benchmark scene);
+    /// without it, DOP853 at rtol 1e-12, the accuracy the tolerances were designed at.
+    #[arg(long, value_enum)]
+    pub accuracy: Option<Accuracy>,
+    /// Check the equations of DIR/equations.yaml (and DIR/symbols.yaml, DIR/claims.yaml
+    /// when present) instead of the built-in copy of the paper: an edited equation is
+    /// re-checked without rebuilding.
+    #[arg(long, value_name = "DIR")]
+    pub paper: Option<PathBuf>,
 }
 
-/// The paper to check: the built-in copy, or the one in `dir` (read once for the whole run).
-pub(crate) fn load_paper(dir: Option<&Path>) -> anyhow::Result<&'static Paper> {
-    match dir {
-        None => Ok(built_in_paper()),
-        Some(d) => match Paper::from_dir(d) {
-            Ok(p) => Ok(Box::leak(Box::new(p))),
-            Err(e) => Err(anyhow::anyhow!("--paper {}: {e}", d.display())),
-        },
+impl Args {
+    /// Runs the command.
+    pub fn run(self) -> anyhow::Result<()> {
+        check(
+            self.only.as_deref(),
+            self.json,
+            self.accuracy,
+            self.paper.as_deref(),
+        )
     }
 }
 
-pub(crate) fn bench_for(accuracy: Option<Accuracy>, paper: &'static Paper) -> Bench<'static> {
-    let bench = Bench::with_paper(paper);
-    match accuracy {
-        Some(a) => Bench {
-            rtol: a.settings().rtol,
-            method: a.settings().method,
-            ..bench
-        },
-        None => bench,
-    }
-}
-
-pub(crate) fn check(
+fn check(
     only: Option<&str>,
     json: bool,
     accuracy: Option<Accuracy>,
@@ -130,7 +83,7 @@ pub(crate) fn check(
                 name: env!("CARGO_PKG_NAME").into(),
                 version: env!("CARGO_PKG_VERSION").into(),
             },
-            paper: json::PaperSource::of(PAPER_TITLE, bench.paper),
+            paper: json::PaperSource::of(PAPER, bench.paper),
             settings: json::Settings {
                 method: "DOP853".into(),
                 rtol: bench.rtol,
@@ -167,10 +120,6 @@ pub(crate) fn check(
     }
     Ok(())
 }
-
-/// The paper, as the JSON documents name it.
-pub(crate) const PAPER_TITLE: &str =
-    "A. J. McDonald and K. T. McDonald, The Rolling Motion of a Disk on a Horizontal Plane (2001)";
 
 pub(crate) fn print_table(checked: &[Checked]) {
     println!(

@@ -1,0 +1,242 @@
+//! `rolling-disk experiment simulate` and `experiment analyze`: the experiment of section 11.
+
+use crate::cli::stdout;
+use files::output::SetWriter;
+use physics::scene::Scene;
+use std::path::{Path, PathBuf};
+
+/// The commands of `rolling-disk experiment`.
+#[derive(clap::Subcommand)]
+pub enum Command {
+    /// Simulates a recording of a spin-down scene: the scope's light signal as CSV (time in s,
+    /// signal in V), or the disk's sound as WAV, with optional bench artifacts.
+    Simulate {
+        /// A dissipative scene (file or built-in name), e.g. spin-down.
+        #[arg(default_value = "spin-down")]
+        scene: String,
+        /// Write the scope's light signal to this CSV.
+        #[arg(long, value_name = "FILE", required_unless_present = "wav")]
+        csv: Option<PathBuf>,
+        /// Write the disk's sound (mono) to this file, as WAV or FLAC (see --format).
+        #[arg(long, value_name = "FILE", conflicts_with = "csv")]
+        wav: Option<PathBuf>,
+        /// The sound's sample rate (S/s), 1000 to 384000.
+        #[arg(long, value_name = "R", default_value_t = 48000)]
+        rate: u32,
+        /// The sound's coding: 16-bit WAV, 24-bit WAV, 32-bit float WAV, or 16-bit FLAC.
+        #[arg(long, value_enum, default_value = "wav")]
+        format: experiment::SoundFormat,
+        #[command(flatten)]
+        artifacts: ArtifactArgs,
+    },
+    /// Analyses a recording: a scope CSV (peak times, eqs 84-85) or a WAV (frequency track,
+    /// eq 79); fits beta, t0 and C with uncertainties, compares laws, and refuses with a reason
+    /// (non-zero exit) what is not a spin-down.
+    Analyze {
+        /// The recording: a CSV (time and signal columns) or a .wav file.
+        #[arg(value_name = "FILE")]
+        csv: PathBuf,
+        /// Also write analysis.json, peaks.csv, omega.csv and omega_dot.csv here (CSV input).
+        #[arg(long, value_name = "DIR")]
+        out: Option<PathBuf>,
+        /// Print the analysis as JSON.
+        #[arg(long)]
+        json: bool,
+        /// For a sound recording: the channel analysed, from 1, or `mix` for their mean.
+        #[arg(long, value_name = "N|mix", default_value = "mix")]
+        channel: String,
+    },
+}
+
+/// What a bench recording adds (all off by default).
+#[derive(clap::Args)]
+pub struct ArtifactArgs {
+    /// All of a realistic bench's artifacts: drift 5 %, 50 Hz hum 2 %, clipping of the top
+    /// 15 %, 2 glitches/s, 1 % dropped samples (of the signal's span).
+    #[arg(long)]
+    realistic: bool,
+    /// Baseline drift, rms, as a fraction of the signal's span.
+    #[arg(long, value_name = "FRACTION")]
+    drift: Option<f64>,
+    /// Mains hum amplitude as a fraction of the signal's span.
+    #[arg(long, value_name = "FRACTION")]
+    hum: Option<f64>,
+    /// Mains frequency (Hz).
+    #[arg(long, value_name = "HZ", default_value_t = 50.0)]
+    mains: f64,
+    /// Clip above this fraction of the signal's range.
+    #[arg(long, value_name = "FRACTION")]
+    clip: Option<f64>,
+    /// Isolated glitches per second.
+    #[arg(long, value_name = "RATE")]
+    glitches: Option<f64>,
+    /// Fraction of samples dropped.
+    #[arg(long, value_name = "FRACTION")]
+    dropped: Option<f64>,
+    /// Noise seed of the scope or microphone, and of the artifacts.
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+}
+
+impl ArtifactArgs {
+    /// The artifacts for a signal of peak-to-peak `span`.
+    fn artifacts(&self, span: f64) -> experiment::Artifacts {
+        let mut a = if self.realistic {
+            experiment::Artifacts::realistic(span, self.seed)
+        } else {
+            experiment::Artifacts {
+                seed: self.seed,
+                ..experiment::Artifacts::none()
+            }
+        };
+        a.mains = self.mains;
+        if let Some(x) = self.drift {
+            a.drift = x * span;
+        }
+        if let Some(x) = self.hum {
+            a.hum = x * span;
+        }
+        if let Some(x) = self.clip {
+            a.clip = x;
+        }
+        if let Some(x) = self.glitches {
+            a.glitches_per_s = x;
+            if a.glitch == 0.0 {
+                a.glitch = 0.5 * span;
+            }
+        }
+        if let Some(x) = self.dropped {
+            a.dropped = x;
+        }
+        a
+    }
+}
+
+impl Command {
+    /// Runs the command.
+    pub fn run(self) -> anyhow::Result<()> {
+        match self {
+            Command::Simulate {
+                scene,
+                csv,
+                wav,
+                rate,
+                format,
+                artifacts,
+            } => experiment_simulate(
+                &scene,
+                csv.as_deref(),
+                wav.as_deref().map(|w| (w, rate, format)),
+                &artifacts,
+            ),
+            Command::Analyze {
+                csv,
+                out,
+                json,
+                channel,
+            } => experiment_analyze(&csv, out.as_deref(), json, &channel),
+        }
+    }
+}
+
+fn experiment_simulate(
+    name: &str,
+    csv: Option<&Path>,
+    wav: Option<(&Path, u32, experiment::SoundFormat)>,
+    args: &ArtifactArgs,
+) -> anyhow::Result<()> {
+    let scene = Scene::load(name)?;
+    eprintln!("simulating the recording of {}...", scene.name);
+    let (path, bytes, trace) = if let Some((path, rate, format)) = wav {
+        let mic = experiment::Microphone::phone(rate, args.seed);
+        let a = args.artifacts(2.0 * mic.amplitude);
+        let trace = experiment::simulate_sound(&scene, &mic, &a)?;
+        let bytes = experiment::encode_sound(&trace.v, rate, format)?;
+        (path, bytes, trace)
+    } else if let Some(path) = csv {
+        let mut light = experiment::LightModel::default();
+        light.scope.seed = args.seed;
+        let trace = experiment::simulate_trace(&scene, &light)?;
+        let trace = trace.with_artifacts(&args.artifacts(light.gain))?;
+        let bytes = trace.to_csv().into_bytes();
+        (path, bytes, trace)
+    } else {
+        return Err(anyhow::anyhow!("give --csv FILE or --wav FILE"));
+    };
+    let to_stdout = stdout::write_to(path, &bytes)?;
+    let mut said = format!("{} samples written to {}", trace.t.len(), path.display());
+    if let Some(t) = &trace.truth {
+        said.push_str(&format!(
+            "\ntruth: beta = {}, t0 = {:.6} s ({})",
+            t.beta, t.t0, t.origin
+        ));
+    }
+    if to_stdout {
+        eprintln!("{said}");
+    } else {
+        println!("{said}");
+    }
+    Ok(())
+}
+
+fn experiment_analyze(
+    csv: &Path,
+    out: Option<&Path>,
+    json: bool,
+    channel: &str,
+) -> anyhow::Result<()> {
+    let is_sound = csv.extension().is_some_and(|e| {
+        [
+            "wav", "wave", "flac", "mp3", "ogg", "oga", "m4a", "mp4", "aac",
+        ]
+        .iter()
+        .any(|x| e.eq_ignore_ascii_case(x))
+    });
+    let channels = match channel {
+        "mix" => experiment::Channels::Mix,
+        n => experiment::Channels::One(n.parse().map_err(|_| {
+            anyhow::anyhow!(
+                "--channel {n}: give a channel number from 1 (1 = left), or mix for the channels' mean"
+            )
+        })?),
+    };
+    // The output set is checked before any work, and written whole or not at all.
+    let set = out.map(SetWriter::begin).transpose()?;
+    let (text, files) = if is_sound {
+        let rec = experiment::read_recording(csv, channels)?;
+        let mut a = experiment::analyze_sound(
+            &rec.trace,
+            &experiment::TrackSettings::default(),
+            &experiment::plausibility::Plausibility::default(),
+        )?;
+        a.recording = Some(rec.info);
+        let text = if json { a.to_json() } else { a.to_string() };
+        let files = match &set {
+            Some(set) => experiment::write_sound_analysis(&a, set.dir())?,
+            None => Vec::new(),
+        };
+        (text, files)
+    } else {
+        let trace = experiment::read_trace(csv)?;
+        let analysis = experiment::analyze(&trace, &experiment::AnalysisSettings::default())?;
+        let text = if json {
+            analysis.to_json()
+        } else {
+            analysis.to_string()
+        };
+        let files = match &set {
+            Some(set) => experiment::write_analysis(&analysis, set.dir())?,
+            None => Vec::new(),
+        };
+        (text, files)
+    };
+    if let Some(set) = set {
+        let shown: Vec<PathBuf> = files.iter().map(|p| set.final_path(p)).collect();
+        set.commit(&files)?;
+        for p in shown {
+            eprintln!("wrote {}", p.display());
+        }
+    }
+    println!("{text}");
+    Ok(())
+}

@@ -1,0 +1,86 @@
+//! `rolling-disk figures`: the figures alone, by the paper's names.
+
+use files::atomic::write_atomically;
+use std::path::{Path, PathBuf};
+
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum FigureFormat {
+    Svg,
+    Png,
+}
+
+/// The arguments of `rolling-disk figures`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// Only these figures, comma-separated (default: all).
+    #[arg(long, value_name = "NAMES")]
+    pub only: Option<String>,
+    /// The directory to write to.
+    #[arg(long, value_name = "DIR", default_value = "figures")]
+    pub out: PathBuf,
+    /// File format.
+    #[arg(long, value_enum, default_value = "svg")]
+    pub format: FigureFormat,
+}
+
+impl Args {
+    /// Runs the command.
+    pub fn run(self) -> anyhow::Result<()> {
+        figures(self.only.as_deref(), &self.out, self.format)
+    }
+}
+
+fn figures(only: Option<&str>, out: &Path, format: FigureFormat) -> anyhow::Result<()> {
+    use ::report::pipeline::{compute, RunConfig};
+    let names: Vec<&str> = ::report::figures::NAMES.to_vec();
+    let wanted: Vec<&str> = match only {
+        Some(list) => list
+            .split(',')
+            .map(str::trim)
+            .filter(|s| !s.is_empty())
+            .collect(),
+        None => names.clone(),
+    };
+    if wanted.is_empty() {
+        return Err(anyhow::anyhow!(
+            "--only was given no figure name; name some (the figures are: {}) or leave --only out \
+             to draw them all",
+            names.join(", ")
+        ));
+    }
+    for w in &wanted {
+        if !names.contains(w) {
+            return Err(anyhow::anyhow!(
+                "--only: no figure is called {w}; the figures are: {}",
+                names.join(", ")
+            ));
+        }
+    }
+    std::fs::create_dir_all(out)
+        .map_err(|e| anyhow::anyhow!("cannot create {}: {e}", out.display()))?;
+    // Only the studies the wanted figures are drawn from, each once.
+    let config = RunConfig::figures(::checks::equations::Bench::default(), &wanted)?;
+    let results = compute(&config, &|s: &str| eprintln!("figures: {s}"))?;
+    let all = ::report::figures::some(&wanted, &results)?;
+    for f in &all {
+        let path = match format {
+            FigureFormat::Svg => {
+                let path = out.join(format!("{}.svg", f.name));
+                let svg = f.drawing.to_svg(760, 480)?;
+                write_atomically(&path, svg.as_bytes())
+                    .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))?;
+                path
+            }
+            FigureFormat::Png => {
+                let path = out.join(format!("{}.png", f.name));
+                let tmp = out.join(format!(".{}.{}.png", f.name, std::process::id()));
+                f.drawing.to_png(&tmp)?;
+                std::fs::rename(&tmp, &path)
+                    .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))?;
+                path
+            }
+        };
+        println!("wrote {}", path.display());
+    }
+    Ok(())
+}
