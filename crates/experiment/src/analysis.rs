@@ -8,13 +8,14 @@ use crate::early_end::{early_end, EarlyEnd};
 use crate::error::ExperimentError;
 use crate::fit::{fit_eq84, fit_eq85, Eq84Fit, Eq85Fit};
 use crate::law_stability::{later_half, LawStability};
-use crate::least_squares::FitError;
 use crate::models::{compare_laws, Comparison};
 use crate::peak::Peak;
 use crate::peaks::{find_peaks, noise_level, PeakSettings};
 use crate::plausibility::{Evidence, Plausibility, Verdict};
 use crate::rates::{accelerations, cycles, Acceleration, Cycle};
 use crate::trace::{Trace, Truth};
+use crate::window::fitting_window;
+pub use crate::window::Window;
 use files::atomic::write_atomically;
 use serde::{Deserialize, Serialize};
 use std::fmt;
@@ -55,33 +56,6 @@ impl Default for AnalysisSettings {
             plausibility: Plausibility::default(),
         }
     }
-}
-
-/// Which cycles were fitted, and why the others were not.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Window {
-    /// The rule, in words.
-    pub rule: String,
-    /// First peak used.
-    pub first_peak: usize,
-    /// Last peak used.
-    pub last_peak: usize,
-    /// Its time span (s).
-    pub t_first: f64,
-    /// (s)
-    pub t_last: f64,
-    /// Indices of the cycles fitted by eq 84.
-    pub cycles: Vec<usize>,
-    /// Indices of the accelerations fitted by eq 85.
-    pub accelerations: Vec<usize>,
-    /// Cycles left out as anomalous (missed or stray peak).
-    pub anomalous: usize,
-    /// Cycles left out as too short.
-    pub too_short: usize,
-    /// Cycles left out as too faint.
-    pub faint: usize,
-    /// The fastest cycle fitted (rad/s): the paper's "last analyzable cycle" was 680.
-    pub omega_last: f64,
 }
 
 /// How far the fits land from a synthetic trace's truth, in their own uncertainties.
@@ -148,9 +122,58 @@ pub struct Analysis {
     pub score: Option<Score>,
 }
 
-/// Analyses a trace.
+/// Analyses a trace: the settings and the signal checked, glitches and mains hum removed, the
+/// peaks timed, $\Omega_i$ and $d\Omega_i/dt$ formed, the fitting window chosen, eqs 84 and 85
+/// and the other laws fitted, and (for a synthetic trace) the fits scored against the truth.
 pub fn analyze(trace: &Trace, s: &AnalysisSettings) -> Result<Analysis, ExperimentError> {
-    let file = trace.source.clone();
+    check_settings(trace, s)?;
+    let dt = trace.sample_interval();
+    let noise = noise_level(&trace.v);
+    check_not_flat(trace, noise, &s.peaks)?;
+    let mut v = trace.v.clone();
+    let glitches = remove_glitches(&mut v, noise);
+    let hum = remove_hum(&trace.t, &mut v, noise);
+    let peaks = find_peaks(&trace.t, &v, dt, noise, &s.peaks);
+    check_peak_count(trace, &peaks, s)?;
+    let tp: Vec<f64> = peaks.iter().map(|p| p.t).collect();
+    let w: Vec<f64> = peaks.iter().map(|p| p.sigma * p.sigma).collect();
+    let cyc = cycles(&tp);
+    let acc = accelerations(&tp);
+    let window = fitting_window(&trace.source, &peaks, &cyc, acc.len(), dt, noise, s)?;
+    let fits = fit_laws(&trace.source, s, &tp, &w, &cyc, &window)?;
+    let (beta_stated, t0_stated) = stated_sigmas(&fits.eq84, fits.law_stability.as_ref());
+    let early_end = early_end(fits.eq84.t0, t0_stated, &peaks, s.min_snr * noise);
+    let score = trace
+        .truth
+        .as_ref()
+        .map(|tr| score(tr, &fits.eq84, &fits.eq85, dt, beta_stated, t0_stated));
+    Ok(Analysis {
+        source: trace.source.clone(),
+        samples: trace.len(),
+        sample_interval: dt,
+        noise,
+        glitches,
+        hum,
+        settings: *s,
+        peaks,
+        cycles: cyc,
+        accelerations: acc,
+        window,
+        eq84: fits.eq84,
+        eq85: fits.eq85,
+        models: fits.models,
+        crossover: fits.crossover,
+        law_stability: fits.law_stability,
+        early_end,
+        verdict: fits.verdict,
+        truth: trace.truth.clone(),
+        score,
+    })
+}
+
+/// Refuses a trace whose times and signal values differ in number, and settings out of range.
+fn check_settings(trace: &Trace, s: &AnalysisSettings) -> Result<(), ExperimentError> {
+    let file = &trace.source;
     let n = trace.len();
     if trace.v.len() != n {
         return Err(ExperimentError::Setting(format!(
@@ -176,8 +199,12 @@ pub fn analyze(trace: &Trace, s: &AnalysisSettings) -> Result<Analysis, Experime
             "peak settings out of range: {p:?} (window > 0, 0 <= hysteresis < 0.5)"
         )));
     }
-    let dt = trace.sample_interval();
-    let noise = noise_level(&trace.v);
+    Ok(())
+}
+
+/// Refuses a signal of fewer than 8 samples, or one whose span is not more than the peak
+/// settings' `min_span_sigmas` times the noise `noise`: no pulses to time.
+fn check_not_flat(trace: &Trace, noise: f64, p: &PeakSettings) -> Result<(), ExperimentError> {
     let (vmin, vmax) = trace
         .v
         .iter()
@@ -185,185 +212,141 @@ pub fn analyze(trace: &Trace, s: &AnalysisSettings) -> Result<Analysis, Experime
             (a.min(v), b.max(v))
         });
     let span = vmax - vmin;
-    if n < 8 || span.is_nan() || span <= p.min_span_sigmas * noise || span == 0.0 {
+    if trace.len() < 8 || span.is_nan() || span <= p.min_span_sigmas * noise || span == 0.0 {
         return Err(ExperimentError::FlatSignal {
-            file,
+            file: trace.source.clone(),
             span: if span.is_finite() { span } else { 0.0 },
             noise,
             min_span_sigmas: p.min_span_sigmas,
         });
     }
-    let mut v = trace.v.clone();
-    let glitches = remove_glitches(&mut v, noise);
-    let hum = remove_hum(&trace.t, &mut v, noise);
-    let peaks = find_peaks(&trace.t, &v, dt, noise, p);
-    let too_few =
-        |what: &str, found: usize, needed: usize, hint: &str| ExperimentError::TooFewPeaks {
-            file: trace.source.clone(),
-            what: what.into(),
-            found,
-            needed,
-            hint: hint.into(),
-        };
+    Ok(())
+}
+
+/// Refuses fewer peaks than six plus the `drop_last` left out at the end.
+fn check_peak_count(
+    trace: &Trace,
+    peaks: &[Peak],
+    s: &AnalysisSettings,
+) -> Result<(), ExperimentError> {
     let needed = 6 + s.drop_last;
     if peaks.len() < needed {
-        return Err(too_few(
-            "peaks found",
-            peaks.len(),
+        return Err(ExperimentError::TooFewPeaks {
+            file: trace.source.clone(),
+            what: "peaks found".into(),
+            found: peaks.len(),
             needed,
-            "record more cycles, or check that the signal has one pulse per turn",
-        ));
+            hint: "record more cycles, or check that the signal has one pulse per turn".into(),
+        });
     }
-    let tp: Vec<f64> = peaks.iter().map(|p| p.t).collect();
-    let w: Vec<f64> = peaks.iter().map(|p| p.sigma * p.sigma).collect();
-    let cyc = cycles(&tp);
-    let acc = accelerations(&tp);
+    Ok(())
+}
 
-    let last_usable = peaks.len() - 1 - s.drop_last;
-    let min_period = s.min_samples_per_period * dt;
-    let (mut anomalous, mut too_short, mut faint) = (0, 0, 0);
-    let min_span = s.min_snr * noise;
-    let mut in_window = vec![false; cyc.len()];
-    // The end of the spin-down: the pulses fade as the tilt vanishes; after three faint cycles
-    // in a row (past the first twenty) nothing later is the disk's (hum or noise at most).
-    let mut run = 0;
-    let mut last_usable = last_usable;
-    for (k, c) in cyc.iter().enumerate().skip(20) {
-        if peaks[c.i].span < min_span || peaks[c.i + 1].span < min_span {
-            run += 1;
-            if run == 3 {
-                last_usable = last_usable.min(k.saturating_sub(2));
-                break;
-            }
-        } else {
-            run = 0;
-        }
-    }
-    for c in &cyc {
-        if c.i + 1 > last_usable
-            || s.t_from.is_some_and(|a| c.t < a)
-            || s.t_to.is_some_and(|b| c.t > b)
-        {
-            continue;
-        }
-        if c.anomalous {
-            anomalous += 1;
-        } else if c.period < min_period {
-            too_short += 1;
-        } else if peaks[c.i].span < min_span || peaks[c.i + 1].span < min_span {
-            faint += 1;
-        } else {
-            in_window[c.i] = true;
-        }
-    }
-    let cyc_idx: Vec<usize> = (0..cyc.len()).filter(|&i| in_window[i]).collect();
-    let acc_idx: Vec<usize> = (0..acc.len())
-        .filter(|&i| in_window[i] && in_window[i + 1])
-        .collect();
-    if cyc_idx.len() < 5 {
-        return Err(too_few(
-            "cycles in the fitting window",
-            cyc_idx.len(),
-            5,
-            "widen the window (t_from, t_to), lower drop_last or min_samples_per_period",
-        ));
-    }
-    let first_peak = cyc_idx[0];
-    let last_peak = cyc_idx[cyc_idx.len() - 1] + 1;
+/// The laws fitted over the window, and the plausibility checks they passed.
+struct Fits {
+    /// Eq 84's fit.
+    eq84: Eq84Fit,
+    /// The two-mechanism law's fit, when it converged.
+    crossover: Option<CrossoverFit>,
+    /// The plausibility checks.
+    verdict: Verdict,
+    /// Eq 85's fit.
+    eq85: Eq85Fit,
+    /// Eq 84 with beta free against the other laws.
+    models: Comparison,
+    /// Eq 84 on the later half of the window.
+    law_stability: Option<LawStability>,
+}
+
+/// Fits eq 84 over the window's cycles (peak times `tp`, timing variances `w`) and the
+/// two-mechanism law, refuses (for the trace `file`) what the plausibility checks find not a
+/// spin-down, then fits eq 85, compares the laws, and fits eq 84 on the later half.
+fn fit_laws(
+    file: &str,
+    s: &AnalysisSettings,
+    tp: &[f64],
+    w: &[f64],
+    cyc: &[Cycle],
+    window: &Window,
+) -> Result<Fits, ExperimentError> {
+    let cyc_idx = &window.cycles;
     let ta: Vec<f64> = cyc_idx.iter().map(|&i| tp[i]).collect();
     let tb: Vec<f64> = cyc_idx.iter().map(|&i| tp[i + 1]).collect();
-    let fit_err = |what: &str, message: FitError| ExperimentError::Fit {
-        file: trace.source.clone(),
-        what: what.into(),
-        message: message.to_string(),
-    };
     let refuse = |reason: String| ExperimentError::Refused {
-        file: trace.source.clone(),
+        file: file.to_string(),
         reason,
     };
-    let eq84 = match fit_eq84(&ta, &tb, &cyc_idx, &w) {
+    let eq84 = match fit_eq84(&ta, &tb, cyc_idx, w) {
         Ok(f) => f,
         Err(m) => return Err(refuse(format!("eq 84 cannot be fitted ({m})"))),
     };
+    let crossover = fit_crossover(&ta, &tb, cyc_idx, w, &eq84).ok();
+    let verdict = judge(s, cyc, window, &eq84, crossover.as_ref());
+    if !verdict.refusals.is_empty() {
+        return Err(refuse(verdict.refusals.join("; ")));
+    }
+    let eq85 = fit_eq85(tp, &window.accelerations, w).map_err(|m| ExperimentError::Fit {
+        file: file.to_string(),
+        what: "eq 85".into(),
+        message: m.to_string(),
+    })?;
+    let models = compare_laws(&ta, &tb, cyc_idx, w, &eq84, crossover.as_ref());
+    let law_stability = later_half(&ta, &tb, cyc_idx, w, &eq84);
+    Ok(Fits {
+        eq84,
+        crossover,
+        verdict,
+        eq85,
+        models,
+        law_stability,
+    })
+}
+
+/// The plausibility checks ([`Plausibility`]) of eq 84's fit over the window's cycles.
+fn judge(
+    s: &AnalysisSettings,
+    cyc: &[Cycle],
+    window: &Window,
+    eq84: &Eq84Fit,
+    crossover: Option<&CrossoverFit>,
+) -> Verdict {
+    let cyc_idx = &window.cycles;
     let t_mid: Vec<f64> = cyc_idx.iter().map(|&i| cyc[i].t).collect();
     let om: Vec<f64> = cyc_idx.iter().map(|&i| cyc[i].omega).collect();
     let ys: Vec<f64> = eq84.points.iter().map(|p| p.y).collect();
     let rs: Vec<f64> = eq84.points.iter().map(|p| p.residual).collect();
-    let crossover = fit_crossover(&ta, &tb, &cyc_idx, &w, &eq84).ok();
-    let verdict = s.plausibility.judge(&Evidence {
+    s.plausibility.judge(&Evidence {
         t: &t_mid,
         omega: &om,
-        anomalous,
+        anomalous: window.anomalous,
         y: &ys,
         residual: &rs,
-        crossover_residual_ss: crossover.as_ref().map(|x| x.residual_ss),
+        crossover_residual_ss: crossover.map(|x| x.residual_ss),
         beta: eq84.beta,
         t0: eq84.t0,
-        t_first: tp[cyc_idx[0]],
-        t_last: tp[cyc_idx[cyc_idx.len() - 1] + 1],
-    });
-    if !verdict.refusals.is_empty() {
-        return Err(refuse(verdict.refusals.join("; ")));
-    }
-    let eq85 = fit_eq85(&tp, &acc_idx, &w).map_err(|m| fit_err("eq 85", m))?;
-    let models = compare_laws(&ta, &tb, &cyc_idx, &w, &eq84, crossover.as_ref());
-    let law_stability = later_half(&ta, &tb, &cyc_idx, &w, &eq84);
-    let window = Window {
-        rule: format!(
-            "cycles between peaks {first_peak} and {last_peak}: all but the last {} peaks, \
-             periods of at least {} samples, pulses spanning at least {} noise deviations \
-             (none after the first three faint ones in a row), no anomalous period{}{}",
-            s.drop_last,
-            s.min_samples_per_period,
-            s.min_snr,
-            s.t_from
-                .map_or(String::new(), |a| format!(", middle at or after {a} s")),
-            s.t_to
-                .map_or(String::new(), |b| format!(", middle at or before {b} s")),
-        ),
-        first_peak,
-        last_peak,
-        t_first: tp[first_peak],
-        t_last: tp[last_peak],
-        omega_last: cyc[cyc_idx[cyc_idx.len() - 1]].omega,
-        cycles: cyc_idx,
-        accelerations: acc_idx,
-        anomalous,
-        too_short,
-        faint,
-    };
-    let (beta_stated, t0_stated) = stated_sigmas(&eq84, law_stability.as_ref());
-    let early_end = early_end(eq84.t0, t0_stated, &peaks, min_span);
-    let score = trace.truth.as_ref().map(|tr| Score {
+        t_first: window.t_first,
+        t_last: window.t_last,
+    })
+}
+
+/// How far eqs 84 and 85's fits land from the truth `tr` of a synthetic trace (sample interval
+/// `dt`), with eq 84's stated uncertainties `beta_stated` and `t0_stated`.
+fn score(
+    tr: &Truth,
+    eq84: &Eq84Fit,
+    eq85: &Eq85Fit,
+    dt: f64,
+    beta_stated: f64,
+    t0_stated: f64,
+) -> Score {
+    Score {
         beta84_pull: (eq84.beta - tr.beta) / eq84.beta_sigma,
         t0_pull: (eq84.t0 - tr.t0) / eq84.t0_sigma,
         t0_error_samples: (eq84.t0 - tr.t0) / dt,
         beta85_pull: (eq85.beta - tr.beta) / eq85.beta_sigma,
         beta84_pull_with_law: (eq84.beta - tr.beta) / beta_stated,
         t0_pull_with_law: (eq84.t0 - tr.t0) / t0_stated,
-    });
-    Ok(Analysis {
-        source: trace.source.clone(),
-        samples: n,
-        sample_interval: dt,
-        noise,
-        glitches,
-        hum,
-        settings: *s,
-        peaks,
-        cycles: cyc,
-        accelerations: acc,
-        window,
-        eq84,
-        eq85,
-        models,
-        crossover,
-        law_stability,
-        early_end,
-        verdict,
-        truth: trace.truth.clone(),
-        score,
-    })
+    }
 }
 
 /// The uncertainties of eq 84's $\beta$ and $t_0$ the analysis states: the fit's, with the

@@ -62,6 +62,7 @@ pub mod spectrum;
 pub mod trace;
 pub mod track;
 pub mod wav;
+pub mod window;
 
 pub use analysis::{analyze, write_analysis, Analysis, AnalysisSettings};
 pub use artifacts::Artifacts;
