@@ -79,10 +79,7 @@ fn check(
         let document = json::CheckDocument {
             schema: json::CHECK_SCHEMA_ID.into(),
             schema_version: json::SCHEMA_VERSION,
-            tool: json::Tool {
-                name: env!("CARGO_PKG_NAME").into(),
-                version: env!("CARGO_PKG_VERSION").into(),
-            },
+            tool: json::Tool::this(),
             paper: json::PaperSource::of(PAPER, bench.paper),
             settings: json::Settings {
                 method: "DOP853".into(),

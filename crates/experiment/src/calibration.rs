@@ -47,7 +47,7 @@ pub fn stored() -> Result<StoredStudy, ExperimentError> {
     serde_json::from_str(include_str!("../../../snapshots/model_choice.json")).map_err(|e| {
         ExperimentError::Setting(format!(
             "snapshots/model_choice.json does not hold the model-choice calibration ({e}): run \
-             ROLLING_DISK_BLESS=1 cargo test --release --lib experiment::model_choice -- --ignored"
+             ROLLING_DISK_BLESS=1 cargo test --release -p experiment --lib model_choice -- --ignored"
         ))
     })
 }

@@ -164,7 +164,7 @@ pub fn study(
 /// The command that regenerates the stored study.
 #[cfg(test)]
 const REGENERATE: &str =
-    "ROLLING_DISK_BLESS=1 cargo test --release --lib experiment::model_choice -- --ignored";
+    "ROLLING_DISK_BLESS=1 cargo test --release -p experiment --lib model_choice -- --ignored";
 
 #[cfg(test)]
 mod tests {
@@ -191,7 +191,7 @@ mod tests {
         }
         let f = FalseAlarms::of(&outcomes);
         println!("{f:?}\nunrecorded: {unrecorded:?}");
-        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots/model_choice.json");
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../snapshots/model_choice.json");
         if std::env::var_os("ROLLING_DISK_BLESS").is_some() {
             let s = StoredStudy {
                 command: REGENERATE.into(),

@@ -41,10 +41,7 @@ pub fn document(
     Document {
         schema: json::SCHEMA_ID.into(),
         schema_version: json::SCHEMA_VERSION,
-        tool: json::Tool {
-            name: env!("CARGO_PKG_NAME").into(),
-            version: env!("CARGO_PKG_VERSION").into(),
-        },
+        tool: json::Tool::this(),
         paper: json::PaperSource::of(PAPER, bench.paper),
         settings: json::Settings {
             method: settings.method.clone(),

@@ -79,6 +79,16 @@ pub struct Tool {
     pub version: String,
 }
 
+impl Tool {
+    /// This tool: the `rolling-disk` binary at the workspace's version.
+    pub fn this() -> Self {
+        Tool {
+            name: "rolling-disk".into(),
+            version: env!("CARGO_PKG_VERSION").into(),
+        }
+    }
+}
+
 /// The paper and where its transcription came from.
 #[derive(Debug, Clone, PartialEq, Serialize, JsonSchema)]
 pub struct PaperSource {

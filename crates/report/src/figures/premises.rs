@@ -147,31 +147,29 @@ fn escape(s: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use checks::cause::Cause;
-    use std::collections::BTreeMap;
+    use checks::cause::graph::GraphNode;
 
     #[test]
-    fn the_linked_svg_links_every_node_and_says_what_it_inherits() {
-        let premises: BTreeMap<u32, Vec<u32>> = [(1, vec![]), (2, vec![1]), (3, vec![2, 1])]
-            .into_iter()
-            .collect();
-        let causes: BTreeMap<u32, Cause> = [(
-            3,
-            Cause::Inherits {
-                from: vec![2],
-                roots: vec![2],
-                derivation_error: 0.0,
-            },
-        )]
-        .into_iter()
-        .collect();
-        let g = PremisesGraph::new(
-            &premises,
-            &|n| if n == 1 { Status::Holds } else { Status::Fails },
-            &causes,
-        );
+    fn the_linked_svg_links_every_node_and_carries_its_note() {
+        let node = |number: u32, y: f64, status: Status, note: &str| GraphNode {
+            number,
+            x: 0.5,
+            y,
+            status,
+            root: number == 2,
+            note: note.to_string(),
+        };
+        let g = PremisesGraph {
+            nodes: vec![
+                node(1, 0.0, Status::Holds, "holds"),
+                node(2, 0.5, Status::Fails, "fails: root cause"),
+                node(3, 1.0, Status::Fails, "fails: inherits from eq 2"),
+            ],
+            edges: vec![(1, 2, false), (2, 3, true)],
+        };
         let svg = linked_svg(&g, 300, 200);
         assert!(svg.contains(r##"href="#eq-3""##) && svg.contains("inherits from eq 2"));
         assert_eq!(svg.matches("<circle").count(), 3);
+        assert_eq!(svg.matches("#c0392b").count(), 2, "one inherited arrow: line and head");
     }
 }
