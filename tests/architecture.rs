@@ -307,7 +307,7 @@ const CHECKS: &[&str] = &[
     "air_film",
     "claims",
     "derivations",
-    "friction",
+    "dissipation",
     "frictionless",
     "kinematics",
     "motion",

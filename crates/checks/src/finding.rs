@@ -295,21 +295,52 @@ impl Headline {
     }
 }
 
+/// What a swept equation states: a relation that must hold, or a convention (a definition)
+/// checked for consistency with the rest.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Stated {
+    /// A relation: it holds or fails.
+    Relation,
+    /// A definition: consistent (`Definition`) or it fails.
+    Definition,
+}
+
 impl Finding {
-    /// A finding from a sweep: holds (or, for a definition, `Definition`) when the worst error
-    /// is within tolerance, fails otherwise.
+    /// A relation's finding from a sweep: holds when the worst error is within tolerance, fails
+    /// otherwise.
     pub fn from_worst(
         method: Method,
         compared: impl Into<String>,
         worst: Worst,
         tolerance: Tolerance,
-        definition: bool,
+    ) -> Self {
+        Self::judged(method, compared, worst, tolerance, Stated::Relation)
+    }
+
+    /// A definition's finding from a sweep: `Definition` when the worst error is within
+    /// tolerance, fails otherwise.
+    pub fn definition(
+        method: Method,
+        compared: impl Into<String>,
+        worst: Worst,
+        tolerance: Tolerance,
+    ) -> Self {
+        Self::judged(method, compared, worst, tolerance, Stated::Definition)
+    }
+
+    /// A finding from a sweep of what `stated` says.
+    pub fn judged(
+        method: Method,
+        compared: impl Into<String>,
+        worst: Worst,
+        tolerance: Tolerance,
+        stated: Stated,
     ) -> Self {
         let ok = worst.points > 0 && worst.error <= tolerance.value;
-        let verdict = match (ok, definition) {
+        let verdict = match (ok, stated) {
             (false, _) => Verdict::Fails,
-            (true, true) => Verdict::Definition,
-            (true, false) => Verdict::Holds,
+            (true, Stated::Definition) => Verdict::Definition,
+            (true, Stated::Relation) => Verdict::Holds,
         };
         Self {
             method,

@@ -191,7 +191,10 @@ mod tests {
         }
         let f = FalseAlarms::of(&outcomes);
         println!("{f:?}\nunrecorded: {unrecorded:?}");
-        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../snapshots/model_choice.json");
+        let path = concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../../snapshots/model_choice.json"
+        );
         if std::env::var_os("ROLLING_DISK_BLESS").is_some() {
             let s = StoredStudy {
                 command: REGENERATE.into(),

@@ -377,7 +377,7 @@ pub fn from_results(
                 .to_string()
         },
         friction: results.friction.as_ref().map_or_else(String::new, |f| {
-            super::friction::text(&f.studies, bench.paper)
+            super::sliding::text(&f.studies, bench.paper)
         }),
         scenes,
         document,

@@ -7,13 +7,13 @@ pub mod document;
 pub mod error;
 pub mod figures;
 pub mod fonts;
-pub mod friction;
 pub mod json;
 pub mod mathml;
 pub mod mutation;
 pub mod pipeline;
 pub mod render;
 pub mod results;
+pub mod sliding;
 pub mod tex;
 
 use checks::check::Tally;

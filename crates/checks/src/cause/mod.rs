@@ -224,7 +224,7 @@ mod tests {
     fn finding(ok: bool) -> Finding {
         let mut w = Worst::default();
         w.add(if ok { 1.0 } else { 2.0 }, 1.0, 1.0, || "here".into());
-        Finding::from_worst(Method::Identity, "x", w, Tolerance::roundoff(), false)
+        Finding::from_worst(Method::Identity, "x", w, Tolerance::roundoff())
     }
 
     /// The chain of section 11, by hand: 72 fails with true premises; 73 fails and does not

@@ -173,7 +173,7 @@ fn judged(
     tolerance: Tolerance,
     scaling: &Scaling,
 ) -> Finding {
-    let strict = Finding::from_worst(Method::Integration, compared, worst, tolerance, false);
+    let strict = Finding::from_worst(Method::Integration, compared, worst, tolerance);
     let Some(reading) = b.paper.equation(number).entry.estimate.clone() else {
         return strict;
     };

@@ -90,7 +90,6 @@ pub fn eq83_from_eq82(b: &Bench) -> Finding {
         "Omega of eq 83 against eq 82's alpha put into Omega^2 = g/(a k alpha)",
         worst,
         Tolerance::roundoff(),
-        false,
     )
 }
 
@@ -145,9 +144,7 @@ pub fn eq73_from_eq72(b: &Bench) -> Finding {
         "every printed form of eq 73 against the rate of eq 72's last form where F_z = m g + m a alpha_ddot = 0 \
          (error in units of m a g |alpha_dot|)",
         worst,
-        Tolerance::roundoff(),
-        false,
-    )
+        Tolerance::roundoff())
 }
 
 /// Eq 76's first relation from eq 73's last form and eq 75, both AS PRINTED: the power of eq 75,
@@ -215,9 +212,7 @@ pub fn eq76_from_eqs73_75(b: &Bench) -> Finding {
         Method::Derivation,
         "eq 76's first relation against alpha_dot solved from eq 73's last form with the power of eq 75",
         worst,
-        Tolerance::roundoff(),
-        false,
-    );
+        Tolerance::roundoff());
     worst_order(vec![
         ("first relation".into(), first),
         ("second relation".into(), eq76_second_from_eq31(b)),
@@ -273,7 +268,6 @@ fn no_form(n: u32) -> Finding {
         format!("eq {n} as printed"),
         worst,
         Tolerance::roundoff(),
-        false,
     )
 }
 
@@ -315,7 +309,6 @@ pub fn eq78_from_eq77(b: &Bench) -> Finding {
         "eq 78's tilt against the tilt that solves eq 77, at times before t_0 over ten decades",
         worst,
         Tolerance::roundoff(),
-        false,
     )
 }
 
@@ -401,9 +394,7 @@ pub fn eq84_from_eq79(b: &Bench) -> Finding {
         Method::Derivation,
         "eq 84's 1/Omega against the reciprocal of eq 79's last side, at times before t_0 over ten decades",
         worst,
-        Tolerance::roundoff(),
-        false,
-    )
+        Tolerance::roundoff())
 }
 
 /// $\Omega_0$ solved from eq 31 AS PRINTED ($\Omega_0^2 = g/ak\sin\alpha_0$) at the tilt

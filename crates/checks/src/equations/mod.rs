@@ -8,7 +8,7 @@
 pub mod air_film;
 pub mod claims;
 pub mod derivations;
-pub mod friction;
+pub mod dissipation;
 pub mod frictionless;
 pub mod kinematics;
 pub mod motion;
@@ -209,7 +209,7 @@ pub fn equations() -> Vec<Equation> {
         slippage::EQUATIONS,
         oscillation::EQUATIONS,
         frictionless::EQUATIONS,
-        friction::EQUATIONS,
+        dissipation::EQUATIONS,
         air_film::EQUATIONS,
     ]
     .concat();

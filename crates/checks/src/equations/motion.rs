@@ -178,9 +178,7 @@ fn residuals(b: &Bench, n: u32) -> Finding {
         Method::IndependentModel,
         "the printed relation's residual at states of the lab-frame Newton-Euler model, its rates measured along the lab model's flow",
         worst,
-        flow_differences(),
-        false,
-    )
+        flow_differences())
     .in_unit(match n {
         24 => "1/s^2",
         _ => "rad/s^2",
@@ -253,9 +251,7 @@ fn eq26(b: &Bench) -> Finding {
         Method::IndependentModel,
         "every printed form of eq 26's energy against the energy computed in the lab frame for the same rolling state",
         worst,
-        Tolerance::roundoff(),
-        false,
-    )
+        Tolerance::roundoff())
 }
 
 #[cfg(test)]

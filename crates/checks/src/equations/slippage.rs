@@ -209,7 +209,6 @@ fn eq43(b: &Bench) -> Finding {
         "friction bound for negative b against the friction the model's steady motion needs",
         w,
         edge_tolerance(),
-        false,
     );
     let h = Headline::new(
         "friction coefficient mu that steady motion with negative b needs (eq 43 bounds it)",

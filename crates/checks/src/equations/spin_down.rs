@@ -254,9 +254,7 @@ pub(crate) fn derivation_from_eq76(b: &Bench, n: u32, relation: usize, what: &st
         Method::Derivation,
         format!("{what}: the t_0 it implies along eq 76's printed law integrated numerically, which must not drift"),
         worst,
-        Tolerance::solver(b.rtol),
-        false,
-    )
+        Tolerance::solver(b.rtol))
 }
 
 /// The $C$ that eq 79's second relation defines for a disk and a law (solved for from the

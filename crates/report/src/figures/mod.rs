@@ -31,7 +31,6 @@ pub mod error;
 pub mod experiment;
 pub mod font;
 pub mod frequency;
-pub mod friction;
 pub mod geometry;
 pub mod lab_frame;
 pub mod legend;
@@ -42,6 +41,7 @@ pub mod precision;
 pub mod premises;
 pub mod ranges;
 mod series_drawing;
+pub mod sliding;
 pub mod spin_down;
 pub mod stability;
 pub mod ticks;
@@ -344,9 +344,9 @@ fn build_family(f: Family, r: &Results) -> Result<Vec<Figure>, FigureError> {
         Family::Friction => {
             let f = need(&r.friction, Study::Friction)?;
             Ok(vec![
-                friction::slip_stick(f)?,
-                friction::paths(f)?,
-                friction::mechanisms(f)?,
+                sliding::slip_stick(f)?,
+                sliding::paths(f)?,
+                sliding::mechanisms(f)?,
             ])
         }
     }

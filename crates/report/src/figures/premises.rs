@@ -170,6 +170,10 @@ mod tests {
         let svg = linked_svg(&g, 300, 200);
         assert!(svg.contains(r##"href="#eq-3""##) && svg.contains("inherits from eq 2"));
         assert_eq!(svg.matches("<circle").count(), 3);
-        assert_eq!(svg.matches("#c0392b").count(), 2, "one inherited arrow: line and head");
+        assert_eq!(
+            svg.matches("#c0392b").count(),
+            2,
+            "one inherited arrow: line and head"
+        );
     }
 }

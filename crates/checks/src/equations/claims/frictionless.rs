@@ -288,7 +288,6 @@ pub(super) fn frictionless_constants_reduced(b: &Bench) -> Finding {
         "energy and L_z along frictionless motions (x_cm, y_cm, omega_1 constant by construction)",
         w,
         Tolerance::solver(b.rtol),
-        false,
     )
 }
 

@@ -98,7 +98,7 @@ pub(super) fn printed_precision(
     w.add(b.claim(printed), rounded, printed.abs(), || {
         format!("{at}; computed {computed:.6} rounds to {rounded} at {sig} significant digit(s)")
     });
-    Finding::from_worst(method, compared, w, printed_tolerance(sig), false)
+    Finding::from_worst(method, compared, w, printed_tolerance(sig))
 }
 
 /// Judges `computed` against the claim `id` as the bench's paper states it (paper/claims.yaml):
@@ -182,7 +182,7 @@ pub(super) fn stated_finding(
             points: 1,
             unit: unit.clone(),
         };
-        return Finding::from_worst(method, compared, w, tolerance(0.0), false);
+        return Finding::from_worst(method, compared, w, tolerance(0.0));
     }
     let Some(printed) = c.claimed_value else {
         unreachable!("check::missing_input runs the check only when `{id}` has its number")
@@ -196,7 +196,7 @@ pub(super) fn stated_finding(
                 "{at}; computed {computed:.6} rounds to {rounded} at {digits} significant digit(s)"
             )
         });
-        return Finding::from_worst(method, compared, w, tolerance(1e-12), false);
+        return Finding::from_worst(method, compared, w, tolerance(1e-12));
     }
     if let Some(f) = rule.factor {
         let error = (computed / claimed).ln().abs();
@@ -215,7 +215,7 @@ pub(super) fn stated_finding(
             points: 1,
             unit: unit.clone(),
         };
-        return Finding::from_worst(method, compared, w, tolerance(f.ln()), false);
+        return Finding::from_worst(method, compared, w, tolerance(f.ln()));
     }
     if let Some(slack) = rule.at_most {
         let limit = claimed * (1.0 + slack);
@@ -232,11 +232,11 @@ pub(super) fn stated_finding(
             points: 1,
             unit: unit.clone(),
         };
-        return Finding::from_worst(method, compared, w, tolerance(0.0), false);
+        return Finding::from_worst(method, compared, w, tolerance(0.0));
     }
     let within = rule.within.unwrap_or(0.0);
     w.add_in(claimed, computed, claimed.abs(), &unit, || at);
-    Finding::from_worst(method, compared, w, tolerance(within), false)
+    Finding::from_worst(method, compared, w, tolerance(within))
 }
 
 /// The number claim `id` prints, as the bench's paper's claims.yaml gives it (so an author's
@@ -263,7 +263,7 @@ pub(super) fn single(
 ) -> Finding {
     let mut w = Worst::default();
     w.add(claimed, reference, reference.abs(), || at);
-    Finding::from_worst(method, compared, w, tol, false)
+    Finding::from_worst(method, compared, w, tol)
 }
 
 /// The failing one of two findings, or the first when both pass (its `at` names the second).

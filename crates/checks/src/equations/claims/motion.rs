@@ -34,7 +34,6 @@ pub(super) fn k_rim_disk(b: &Bench) -> Finding {
         "k of a ring from its moments of inertia",
         w,
         Tolerance::roundoff(),
-        false,
     )
 }
 
@@ -78,7 +77,6 @@ pub(super) fn k_uniform_disk(b: &Bench) -> Finding {
         "k of a uniform disk from its moments of inertia",
         w,
         Tolerance::roundoff(),
-        false,
     )
 }
 
@@ -140,7 +138,6 @@ pub(super) fn center_of_motion_constant(b: &Bench) -> Finding {
         "centre of motion (x_A, y_A) along rolling motions (claimed constant; relative to a)",
         w,
         Tolerance::solver(b.rtol),
-        false,
     );
     f.at = format!("{}; {}", f.at, notes.join("; "));
     let h = Headline::new(
@@ -205,7 +202,6 @@ pub(super) fn no_steady_motion_beyond_vertical(b: &Bench) -> Finding {
         "largest tilt with a steady motion (r > 0), from the equilibria of eqs 23-25 (rad)",
         w,
         Tolerance::bisection(WIDTH),
-        false,
     )
     .in_unit("rad");
     f.at = format!("{}; no equilibrium on 464 grid points in (pi/2, pi)", f.at);
@@ -277,7 +273,6 @@ pub(super) fn face_figure_rate_vanishes(b: &Bench) -> Finding {
         "face figure's rate in the lab-frame model against the paper's Omega0 (1 - cos alpha0)",
         w,
         Tolerance::solver(b.rtol),
-        false,
     );
     let face_order = Finding::from_order(
         "face figure's rate Omega0 (1 - cos alpha0) vanishing as alpha0 -> 0",

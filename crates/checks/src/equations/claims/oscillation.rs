@@ -127,7 +127,6 @@ pub(super) fn negative_b_always_stable(b: &Bench) -> Finding {
         "(k+1) varpi^2 / Omega0^2 for b < 0: linearized eqs 23-25 against eq 54, and its sign",
         w,
         linearization_tolerance(),
-        false,
     )
     .in_unit("1");
     f.at = format!(

@@ -160,7 +160,6 @@ pub(super) fn finite_time_singularity(b: &Bench) -> Finding {
         "beta below which eq 76 no longer reaches alpha = 0 in finite time",
         w,
         Tolerance::solver(b.rtol),
-        false,
     );
     f.at = format!(
         "{}; fitted exponents p = {:?} (2/(beta+2) expected)",
@@ -193,7 +192,6 @@ pub(super) fn air_viscosity(b: &Bench) -> Finding {
         "viscosity of air near room temperature (g/(cm s))",
         w,
         printed_tolerance(2),
-        false,
     )
 }
 
@@ -507,7 +505,5 @@ pub(super) fn disk_leaves_table(b: &Bench) -> Finding {
         "smallest contact force F_z / m g along the toy disk's spin-down in the rolling model with \
          eq 75's drag, against 0 (the disk leaves the table)",
         w,
-        Tolerance::solver(b.rtol),
-        false,
-    )
+        Tolerance::solver(b.rtol))
 }

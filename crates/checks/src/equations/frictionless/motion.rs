@@ -49,13 +49,11 @@ pub(super) fn eq59(b: &Bench) -> Finding {
             format!("alpha = {alpha:.4}")
         });
     }
-    Finding::from_worst(
+    Finding::definition(
         Method::Identity,
         "eq 59 as printed, r_cm bound to the centre's height above the disk's lowest rim point (from the orientation)",
         worst,
-        Tolerance::roundoff(),
-        true,
-    )
+        Tolerance::roundoff())
 }
 
 /// Random states (alpha, alpha_dot, Omega, omega_1) over the physical domain, rates in units of
@@ -157,9 +155,7 @@ pub(super) fn eq60(b: &Bench) -> Finding {
         Method::IndependentModel,
         "eq 60 as printed at states integrated from the Lagrangian reference (residual with its rate), and the spin it implies against the integrated omega_1(t)",
         worst,
-        Tolerance::solver(b.rtol),
-        false,
-    )
+        Tolerance::solver(b.rtol))
 }
 
 /// Eqs 61-62: each printed relation of eq `n` evaluated from its LaTeX at random states, with
@@ -189,9 +185,7 @@ pub(super) fn eq61(b: &Bench) -> Finding {
         Method::IndependentModel,
         "eq 61 as printed at random states, its rates from the Euler-Lagrange equations of the frictionless disk",
         residuals(b, 61, 61),
-        Tolerance::roundoff(),
-        false,
-    )
+        Tolerance::roundoff())
     .in_unit("1/s^2")
 }
 
@@ -202,9 +196,7 @@ pub(super) fn eq62(b: &Bench) -> Finding {
         Method::IndependentModel,
         "eq 62 as printed at random states, its rates from the Euler-Lagrange equations of the frictionless disk",
         residuals(b, 62, 62),
-        Tolerance::roundoff(),
-        false,
-    )
+        Tolerance::roundoff())
     .in_unit("rad/s^2")
 }
 
@@ -259,7 +251,5 @@ pub(super) fn eq63(b: &Bench) -> Finding {
         Method::Conservation,
         "eq 63 as printed along frictionless integrations, L_z bound to z . I omega from geometry (now and at the start)",
         worst,
-        Tolerance::solver(b.rtol),
-        false,
-    )
+        Tolerance::solver(b.rtol))
 }

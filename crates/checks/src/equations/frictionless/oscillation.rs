@@ -148,7 +148,6 @@ pub(super) fn eq68(b: &Bench) -> Finding {
         "eq 68 as printed, delta from the eigenvector of the linearized Lagrangian reference",
         worst,
         Tolerance::roundoff(),
-        false,
     )
 }
 
@@ -188,9 +187,7 @@ pub(super) fn eq69(b: &Bench) -> Finding {
         Method::Linearization,
         "eq 69 as printed, varpi from the linear tilt equation of the Lagrangian reference at independent epsilon and delta",
         worst,
-        Tolerance::roundoff(),
-        false,
-    )
+        Tolerance::roundoff())
     .in_unit("rad/s^2")
 }
 
@@ -212,9 +209,7 @@ pub(super) fn eq70(b: &Bench) -> Finding {
         Method::Linearization,
         "eq 70 as printed (both relations), varpi and Omega0 from the linearized Lagrangian reference",
         worst,
-        Tolerance::roundoff(),
-        false,
-    )
+        Tolerance::roundoff())
     .in_unit("rad^2/s^2")
 }
 
@@ -251,7 +246,6 @@ pub(super) fn eq71(b: &Bench) -> Finding {
         "eq 71 as printed, varpi measured on small oscillations of the frictionless model",
         worst,
         Tolerance::solver(b.rtol),
-        false,
     )
     .in_unit("1")
 }

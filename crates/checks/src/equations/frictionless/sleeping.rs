@@ -41,9 +41,7 @@ pub(super) fn eq64(b: &Bench) -> Finding {
         Method::Linearization,
         "eq 64 as printed with the linear tilt equation of the Lagrangian reference's Jacobian near the vertical",
         worst,
-        Tolerance::roundoff(),
-        false,
-    )
+        Tolerance::roundoff())
     .in_unit("rad/s^2")
 }
 
@@ -120,8 +118,6 @@ pub(super) fn eq65(b: &Bench) -> Finding {
         Method::Threshold,
         "sqrt(g/ak) against the spin rate below which a nearly vertical frictionless disk falls (bisection on integrations)",
         worst,
-        tolerance,
-        false,
-    )
+        tolerance)
     .in_unit("rad/s")
 }

@@ -10,7 +10,7 @@ pub(super) fn eq1(b: &Bench) -> Finding {
     identity(
         "the printed a against the offset of the rim's lowest point (body coordinates)",
         w,
-        true,
+        Stated::Definition,
     )
 }
 
@@ -22,7 +22,7 @@ pub(super) fn eq2(b: &Bench) -> Finding {
     identity(
         "the printed composition of omega against the axial vector of dR/dt R^T",
         w,
-        true,
+        Stated::Definition,
     )
 }
 
@@ -34,7 +34,7 @@ pub(super) fn eq3(b: &Bench) -> Finding {
     identity(
         "both printed equalities for omega_123 against the axial vector of dT/dt T^T",
         w,
-        false,
+        Stated::Relation,
     )
 }
 
@@ -42,7 +42,11 @@ pub(super) fn eq3(b: &Bench) -> Finding {
 /// the lab's vertical; $\alpha$ is the disk plane's tilt (the nutation angle).
 pub(super) fn eq4(b: &Bench) -> Finding {
     let w = printed_kinematics(b, 4, 4, |_| 1.0, "z");
-    identity("the printed z against the lab's vertical", w, false)
+    identity(
+        "the printed z against the lab's vertical",
+        w,
+        Stated::Relation,
+    )
 }
 
 /// Eq 5, $d\hat{\mathbf 1}/dt = \vec\omega_{123}\times\hat{\mathbf 1} = -\Omega\sin\alpha
@@ -53,7 +57,7 @@ pub(super) fn eq5(b: &Bench) -> Finding {
     identity(
         "d1/dt, both printed equalities, against the exact derivative",
         w,
-        false,
+        Stated::Relation,
     )
 }
 
@@ -65,7 +69,7 @@ pub(super) fn eq6(b: &Bench) -> Finding {
     identity(
         "d2/dt, all three printed equalities, against the exact derivative",
         w,
-        false,
+        Stated::Relation,
     )
 }
 
@@ -76,7 +80,7 @@ pub(super) fn eq7(b: &Bench) -> Finding {
     identity(
         "d3/dt, both printed equalities, against the exact derivative",
         w,
-        false,
+        Stated::Relation,
     )
 }
 
@@ -101,7 +105,7 @@ pub(super) fn eq8(b: &Bench) -> Finding {
     identity(
         "the printed r-hat against 3's horizontal direction and 2 x z",
         w,
-        true,
+        Stated::Definition,
     )
 }
 
@@ -112,7 +116,7 @@ pub(super) fn eq9(b: &Bench) -> Finding {
     identity(
         "the printed rate of r-hat against its exact derivative",
         w,
-        false,
+        Stated::Relation,
     )
 }
 
@@ -124,7 +128,7 @@ pub(super) fn eq10(b: &Bench) -> Finding {
     identity(
         "the printed triad form of omega against dR/dt R^T",
         w,
-        false,
+        Stated::Relation,
     )
 }
 
@@ -136,7 +140,7 @@ pub(super) fn eq11(b: &Bench) -> Finding {
     identity(
         "the printed omega_1 against omega . 1 from dR/dt R^T",
         w,
-        true,
+        Stated::Definition,
     )
 }
 

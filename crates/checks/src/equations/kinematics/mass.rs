@@ -105,7 +105,7 @@ pub(super) fn eq18(b: &Bench) -> Finding {
     identity(
         "the principal moments against quadratures of thin disks and rings",
         w,
-        true,
+        Stated::Definition,
     )
 }
 
@@ -145,7 +145,7 @@ pub(super) fn eq19(b: &Bench) -> Finding {
     identity(
         "the triad components of L_cm against R I_body R^T omega (I_body by quadrature)",
         w,
-        false,
+        Stated::Relation,
     )
 }
 
@@ -213,7 +213,7 @@ pub(super) fn eq20(b: &Bench) -> Finding {
     identity(
         "m d2r_cm/dt2 against F - m g z summed over the point masses of a rigid body",
         w,
-        false,
+        Stated::Relation,
     )
     .in_unit("N")
 }
@@ -281,7 +281,7 @@ pub(super) fn eq21(b: &Bench) -> Finding {
         "dL_cm/dt of R I R^T omega against the torque summed over point masses; the contact \
          force's torque against the gradient in omega of the power it delivers",
         w,
-        false,
+        Stated::Relation,
     )
 }
 
@@ -354,7 +354,6 @@ pub(super) fn eq22(b: &Bench) -> Finding {
         "eq 22's residual against eq 21's residual / (m a), F from eq 20, on rolling motions",
         w,
         Tolerance::roundoff(),
-        false,
     )
     .in_unit("m/s^2")
 }

@@ -31,7 +31,7 @@
 //! $\alpha < \pi/2$). The checks adopt the equations' convention.
 
 use super::{printed_relation, printed_relations, Bench, Equation};
-use crate::finding::{Finding, Method, Tolerance, Worst};
+use crate::finding::{Finding, Method, Stated, Tolerance, Worst};
 use nalgebra::{Matrix3, Vector3};
 use num_dual::{Dual, Dual64, DualNum};
 use numerics::rng::Rng;
@@ -378,14 +378,8 @@ const TWO: usize = 1;
 const THREE: usize = 2;
 const R_HAT: usize = 3;
 
-fn identity(compared: &str, w: Worst, definition: bool) -> Finding {
-    Finding::from_worst(
-        Method::Identity,
-        compared,
-        w,
-        Tolerance::roundoff(),
-        definition,
-    )
+fn identity(compared: &str, w: Worst, stated: Stated) -> Finding {
+    Finding::judged(Method::Identity, compared, w, Tolerance::roundoff(), stated)
 }
 
 // ------------------------------------------------------------------------------------------

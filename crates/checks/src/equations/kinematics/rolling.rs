@@ -19,7 +19,7 @@ pub(super) fn eq12(b: &Bench) -> Finding {
     identity(
         "the printed contact velocity against a disk rolled along its rim",
         w,
-        false,
+        Stated::Relation,
     )
 }
 
@@ -31,7 +31,7 @@ pub(super) fn eq13(b: &Bench) -> Finding {
     identity(
         "the printed forms of v_cm against a disk rolled along its rim",
         w,
-        false,
+        Stated::Relation,
     )
 }
 
@@ -80,8 +80,7 @@ pub(super) fn eq14(b: &Bench) -> Finding {
     w.at = format!("{}; r < 0 at {negative} of {} points", w.at, points.len());
     identity(
         "x_A x + y_A y + r r-hat - a 3 against a rolled disk's centre, A the contact path's centre of curvature",
-        w,
-        true,
+        w, Stated::Definition,
     )
 }
 
@@ -126,7 +125,7 @@ pub(super) fn eq15(b: &Bench) -> Finding {
     identity(
         "the printed derivative against eq 14 differentiated exactly",
         w,
-        false,
+        Stated::Relation,
     )
 }
 
@@ -215,7 +214,7 @@ pub(super) fn eq16(b: &Bench) -> Finding {
     identity(
         "b Omega / a against omega . 1 on steady rolling, b measured on the circle",
         w,
-        false,
+        Stated::Relation,
     )
 }
 
@@ -234,7 +233,7 @@ pub(super) fn eq17(b: &Bench) -> Finding {
     identity(
         "r - a cos(alpha) against the measured b on steady rolling",
         w,
-        true,
+        Stated::Definition,
     )
 }
 

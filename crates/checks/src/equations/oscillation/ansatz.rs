@@ -83,12 +83,11 @@ pub(super) fn ansatz(b: &Bench, which: usize) -> Finding {
             });
         }
     }
-    Finding::from_worst(
+    Finding::definition(
         Method::Integration,
         "fitted order of the ansatz's residual (relative to its amplitude) in epsilon, against 1",
         w,
         Tolerance::order(),
-        true,
     )
     .in_unit("order")
 }

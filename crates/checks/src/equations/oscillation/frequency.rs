@@ -41,7 +41,6 @@ pub(super) fn eq50(b: &Bench) -> Finding {
         "varpi^2 against e2 of the model's Jacobian, relative to Omega_0^2 + omega_10^2 + g/a",
         lin,
         Tolerance::roundoff(),
-        false,
     )
     .in_unit("rad^2/s^2");
     let bfind = Finding::from_worst(
@@ -49,7 +48,6 @@ pub(super) fn eq50(b: &Bench) -> Finding {
         "varpi against the frequency of alpha measured on small-amplitude integrations",
         int,
         Tolerance::solver(b.rtol),
-        false,
     )
     .in_unit("rad/s");
     worse(a, bfind)
@@ -111,7 +109,6 @@ pub(super) fn ratio_check(b: &Bench, which: u32) -> Finding {
         },
         w,
         Tolerance::roundoff(),
-        false,
     )
 }
 
@@ -141,9 +138,7 @@ pub(super) fn eq49(b: &Bench) -> Finding {
         Method::Linearization,
         "varpi^2 from the alpha row with the eigenvector's delta, gamma, against e2 of the Jacobian",
         w,
-        Tolerance::roundoff(),
-        false,
-    )
+        Tolerance::roundoff())
     .in_unit("rad^2/s^2")
 }
 
@@ -177,7 +172,6 @@ pub(super) fn eq51(b: &Bench) -> Finding {
         "varpi^2 of the straight wheel against e2 of the Jacobian, relative to omega_10^2 + g/a",
         w,
         Tolerance::roundoff(),
-        false,
     )
     .in_unit("rad^2/s^2")
 }

@@ -31,7 +31,6 @@ pub(super) fn eq54(b: &Bench) -> Finding {
         "varpi^2 (k+1) / Omega_0^2 against the model's Jacobian",
         w,
         Tolerance::roundoff(),
-        false,
     )
     .in_unit("1")
 }

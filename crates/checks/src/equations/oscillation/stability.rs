@@ -124,16 +124,12 @@ pub(super) fn threshold_check(b: &Bench, which: u32) -> Finding {
             Method::Linearization,
             format!("{what}: the printed edge and direction against the sign change of the linearized varpi^2"),
             wl,
-            Tolerance::bisection(width),
-            false,
-        );
+            Tolerance::bisection(width));
         let fi = Finding::from_worst(
             Method::Threshold,
             format!("{what}: the printed edge against bisection on integrations (does a kick turn back?)"),
             wi,
-            finite_time_tolerance(k, width_int, false),
-            false,
-        );
+            finite_time_tolerance(k, width_int, false));
         // Both edges are angular rates (omega_10 or |Omega_0|).
         let f = worse(fi, fl).in_unit("rad/s");
         out = Some(match out {
@@ -147,7 +143,6 @@ pub(super) fn threshold_check(b: &Bench, which: u32) -> Finding {
             "no disk was swept",
             Worst::default(),
             Tolerance::bisection(width),
-            false,
         )
     })
 }

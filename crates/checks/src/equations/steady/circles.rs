@@ -53,7 +53,6 @@ pub(super) fn eq27(b: &Bench) -> Finding {
         "drift of alpha, Omega, omega_1 started at eq 27's steady state",
         w,
         Tolerance::solver(b.rtol),
-        false,
     )
     .in_unit("1")
 }
@@ -88,9 +87,7 @@ pub(super) fn eq28(b: &Bench) -> Finding {
         Method::Integration,
         "both printed relations of eq 28 at the model's steady spin and the measured b, r, relative to |Omega_0|",
         w,
-        Tolerance::solver(b.rtol),
-        false,
-    )
+        Tolerance::solver(b.rtol))
 }
 
 /// Eq 29, $\Omega_0^2 = \dfrac{g\cot\alpha_0}{k a\cos\alpha_0 + (2k+1)b}
@@ -124,7 +121,6 @@ pub(super) fn eq29(b: &Bench) -> Finding {
         "both printed forms of eq 29 at the measured b and r against the model's steady Omega_0^2",
         w,
         Tolerance::solver(b.rtol),
-        false,
     )
     .in_unit("rad^2/s^2")
 }
@@ -159,9 +155,7 @@ pub(super) fn eq30(b: &Bench) -> Finding {
         Method::Threshold,
         "lower bound on b for a steady motion: the printed edge and direction against the model's edge found by bisection",
         w,
-        Tolerance::bisection(width),
-        false,
-    )
+        Tolerance::bisection(width))
     .in_unit("m")
 }
 
@@ -201,7 +195,6 @@ pub(super) fn eq31(b: &Bench) -> Finding {
         "drift of alpha, Omega, omega_1 started at eq 31's steady state (b = 0)",
         w,
         Tolerance::solver(b.rtol),
-        false,
     )
     .in_unit("1")
 }
@@ -250,9 +243,7 @@ pub(super) fn rel_spin_check(b: &Bench, n: u32) -> Finding {
         Method::Integration,
         "omega_rel = Omega_0 cos(alpha_0) against the face angle's measured rate at b = 0, relative to |Omega_0|",
         w,
-        Tolerance::solver(b.rtol),
-        false,
-    )
+        Tolerance::solver(b.rtol))
 }
 
 /// Eq 32, $\omega_{rel} = \Omega_0\cos\alpha_0$ for $b = 0$.
@@ -314,7 +305,6 @@ pub(super) fn eq38(b: &Bench) -> Finding {
         "rate about axis 3 at b = 0: claimed against the rate the model's contact torque sustains",
         w,
         Tolerance::roundoff(),
-        false,
     )
 }
 
@@ -342,7 +332,6 @@ pub(super) fn eq40(b: &Bench) -> Finding {
         "Omega_0^2 at b = 0 against the model's steady state solved by Newton",
         w,
         Tolerance::roundoff(),
-        false,
     )
     .in_unit("rad^2/s^2")
 }

@@ -239,9 +239,7 @@ pub(super) fn eq33(b: &Bench) -> Finding {
         Method::IndependentModel,
         "the printed forms of L against R I omega_b along lab-frame b = 0 steady runs, relative to |L|",
         w,
-        Tolerance::solver(b.rtol),
-        false,
-    )
+        Tolerance::solver(b.rtol))
     .in_unit("kg m^2/s")
 }
 
@@ -267,9 +265,7 @@ pub(super) fn eq34(b: &Bench) -> Finding {
         Method::IndependentModel,
         "the printed torque against the lab's contact torque rho x F and the lab run's dL/dt (seven-point difference), relative to |N|",
         w,
-        Tolerance::solver(b.rtol),
-        false,
-    )
+        Tolerance::solver(b.rtol))
 }
 
 /// Eq 35, $\dfrac{d\mathbf L}{dt} = \vec\Omega_0\times\mathbf L$ at $b = 0$.
@@ -288,9 +284,7 @@ pub(super) fn eq35(b: &Bench) -> Finding {
         Method::IndependentModel,
         "Omega_0 x L (the lab run's measured precession) against the lab run's dL/dt, relative to |dL/dt|",
         w,
-        Tolerance::solver(b.rtol),
-        false,
-    )
+        Tolerance::solver(b.rtol))
 }
 
 /// Eq 36, $\vec\Omega_0 = -\dfrac{g}{a k\omega}\hat{\mathbf z}$ at $b = 0$.
@@ -311,9 +305,7 @@ pub(super) fn eq36(b: &Bench) -> Finding {
         Method::IndependentModel,
         "the printed precession vector (omega measured in the lab) against the lab run's measured precession vector, relative to |Omega_0|",
         w,
-        Tolerance::solver(b.rtol),
-        false,
-    )
+        Tolerance::solver(b.rtol))
 }
 
 /// Eq 37, $\vec\omega = (-\Omega_0\cos\alpha_0 + \omega_{rel})\hat{\mathbf 1} -
@@ -335,7 +327,5 @@ pub(super) fn eq37(b: &Bench) -> Finding {
         Method::IndependentModel,
         "the printed forms of the angular velocity (Omega_0, omega_rel measured) against the lab's R omega_b, relative to |omega|",
         w,
-        Tolerance::solver(b.rtol),
-        false,
-    )
+        Tolerance::solver(b.rtol))
 }

@@ -1,4 +1,4 @@
-//! Checks of eqs 72-85: friction at very small tilt (section 11 of the paper).
+//! Checks of eqs 72-85: dissipation at very small tilt (section 11 of the paper).
 //!
 //! References: the exact energy of the rolling disk (eq 26's content, differentiated exactly by
 //! dual numbers), the full rolling model dissipating by the power law of eq 75 (a torque

@@ -64,13 +64,11 @@ pub(super) fn dissipation(b: &Bench, n: u32, betas: &[f64]) -> Finding {
             }
         }
     }
-    Finding::from_worst(
+    Finding::definition(
         Method::Integration,
         "every printed form of the power against dE/dt (exact gradient of the energy . right-hand side) along the dissipative rolling model",
         worst,
-        Tolerance::roundoff(),
-        true,
-    )
+        Tolerance::roundoff())
 }
 
 /// Eq 74, $P = -\epsilon m a g\Omega$ (bumps of slope $\epsilon$): a dissipation model. Checked for

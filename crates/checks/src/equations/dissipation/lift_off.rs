@@ -85,8 +85,6 @@ pub(super) fn lift_off_check(b: &Bench, n: u32) -> Finding {
             "t0 - t_max of eq 81 against the time where eq 79 as printed gives d^2(1/Omega^2)/dt^2 = -k (bisection)"
         },
         worst,
-        Tolerance::bisection(WIDTH),
-        false,
-    )
+        Tolerance::bisection(WIDTH))
     .in_unit(if n == 80 { "rad/s" } else { "s" })
 }

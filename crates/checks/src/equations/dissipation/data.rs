@@ -59,7 +59,6 @@ pub fn eq85(b: &Bench) -> Finding {
         "the ratio of eq 85's sides along eq 76's printed law, which must not change with the tilt",
         worst,
         Tolerance::roundoff(),
-        false,
     )
     .in_unit("rad^-(beta+2) s^(beta+1)")
 }
