@@ -13,6 +13,12 @@ pub enum ReportError {
     /// The checks could not run.
     #[error(transparent)]
     Checks(#[from] checks::check::CheckError),
+    /// The corrected forms could not be applied or checked.
+    #[error(transparent)]
+    Corrections(#[from] checks::corrections::CorrectionError),
+    /// A built-in scene could not be loaded.
+    #[error(transparent)]
+    Scene(#[from] physics::scene::SceneError),
     /// A study could not be computed.
     #[error(transparent)]
     Studies(#[from] studies::StudyError),

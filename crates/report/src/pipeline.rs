@@ -73,13 +73,9 @@ enum Output {
 fn corrections_study(bench: &Bench) -> Result<CorrectionsStudy, ReportError> {
     let corrections = bench.paper.corrections.clone();
     let threads = rayon::current_num_threads().max(1);
-    let corrected = corrections::check_corrected(bench, &corrections, threads)
-        .map_err(|e| ReportError::Input(e.to_string()))?;
-    let fixed = corrections::apply(bench.paper, &corrections)
-        .map_err(|e| ReportError::Input(e.to_string()))?;
-    let disk = Scene::load("spin-down")
-        .map_err(|e| ReportError::Input(e.to_string()))?
-        .disk;
+    let corrected = corrections::check_corrected(bench, &corrections, threads)?;
+    let fixed = corrections::apply(bench.paper, &corrections)?;
+    let disk = Scene::load("spin-down")?.disk;
     let downstream = corrections::downstream(bench.paper, &fixed, (disk.a, disk.k, disk.g));
     Ok(CorrectionsStudy {
         corrections,
