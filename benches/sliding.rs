@@ -1,5 +1,5 @@
-//! The sliding model's cost (issue 14: a 10 s scene with slip-stick switching must run in under
-//! 20 ms in release): the built-in `slip-stick` scene end to end through
+//! The sliding model's cost (the goal: a 10 s scene with slip-stick switching in under 20 ms in
+//! release): the built-in `slip-stick` scene end to end through
 //! [`physics::run::run`], recording every accepted step, and with the scene's own 1 ms
 //! sampling (10 001 rows, each re-integrated from the step before it).
 

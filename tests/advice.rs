@@ -1,5 +1,5 @@
 //! Every refusal's advice is right: each case below is refused with a sentence naming the fix,
-//! the fix is applied as the sentence says, and the re-run succeeds. Inputs that used to hang
+//! the fix is applied as the sentence says, and the re-run succeeds. Inputs that could hang
 //! are refused (or finish) within seconds.
 
 use std::path::{Path, PathBuf};

@@ -189,7 +189,7 @@ fn check_json_validates_and_says_root_causes_and_inherited_errors() {
     assert_eq!(checks.len(), 9);
 }
 
-/// Issue 18: every checked finding says what unit its printed and true values are in (the
+/// Every checked finding says what unit its printed and true values are in (the
 /// unit of a printed relation's sides from the chain's one-symbol side, `order` for an
 /// approximation's orders, otherwise stated by the check), and the report shows it.
 #[test]

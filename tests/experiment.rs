@@ -48,7 +48,7 @@ fn model_spin_downs_give_back_their_beta_and_t0() {
     }
 }
 
-/// Why the model's t0 comes out early (issue 15): not the light or the analysis, the model
+/// Why the model's t0 comes out early: not the light or the analysis, the model
 /// itself. The truth's t0 is where the tilt alpha vanishes (`Truth`); eq 79 says
 /// $\alpha \propto (t_0 - t)^{2/(\beta+2)}$, so each instant gives its own estimate
 /// $t + 2\alpha/((\beta+2)|\dot\alpha|)$ of t0. On the model's tilt, without light or noise,
@@ -385,10 +385,9 @@ fn artifacts_leave_beta_and_t0_within_the_targets() {
 }
 
 /// 60 Hz hum of 0.04 V: found, and subtracted with one set of coefficients for the whole
-/// record (the median over its 1 s blocks). It used to be subtracted block by block, and the
-/// last block's fit carried the pulses' leakage as Omega swept past 2 pi x 60 Hz: the hum left
-/// after t0 was timed as pulses (beta 1.948, t0 +18.6 ms). Now beta 2.0003 +- 0.0002, t0
-/// -0.12 ms (measured 2026-11-24, seed 3).
+/// record (the median over its 1 s blocks): subtracted block by block, the last block's fit
+/// would carry the pulses' leakage as Omega sweeps past 2 pi x 60 Hz, and the hum left after t0
+/// would be timed as pulses. Measured with seed 3: beta 2.0003 +- 0.0002, t0 -0.12 ms.
 #[test]
 fn sixty_hertz_hum_leaves_beta_and_t0_within_the_targets() {
     let disk = Disk::uniform(0.0375);
@@ -418,14 +417,13 @@ fn sixty_hertz_hum_leaves_beta_and_t0_within_the_targets() {
 /// tilts, its nutation): the fit's scatter is far above the peak-timing noise and the scaled
 /// errors are reported; the targets are checked as measured.
 ///
-/// With seed 4 this trace used to be refused (R^2 0.85, beta -0.60): the drift and the hum
-/// together hid the hum from its detection. The pulses' harmonics leak into the 1 s blocks'
-/// hum fits where they sweep past 50 Hz, and one leaking block (0.08 V, against the 0.04 V
-/// hum) broke the old test on the sum of the blocks' amplitudes; the unsubtracted hum after
-/// t0 was then timed as pulses up to 9.9 s. The hum is now judged by the blocks' median.
-/// Measured 2026-11-25 (with the pulses' drift removed from their timing): whole record beta
+/// With seed 4 the drift and the hum together can hide the hum from its detection: the
+/// pulses' harmonics leak into the 1 s blocks' hum fits where they sweep past 50 Hz, and one
+/// leaking block (0.08 V, against the 0.04 V hum) would dominate a sum of the blocks'
+/// amplitudes; the hum is judged by the blocks' median instead.
+/// Measured (with the pulses' drift removed from their timing): whole record beta
 /// 2.0537 +- 0.0103, t0 -20.0 ms +- 3.9; last 2.5 s beta 1.9861 +- 0.0031, t0 -6.3 ms +- 0.6
-/// (without artifacts: 2.0546 and -20.3 ms); the issue's 3 ms for t0 is not met: the model's own
+/// (without artifacts: 2.0546 and -20.3 ms); a 3 ms bound on t0 is not met: the model's own
 /// tilt reaches eq 79 only at the end (`the_models_tilt_reaches_eq_79_only_at_the_end`). 30 ms
 /// is checked.
 #[test]
@@ -485,15 +483,12 @@ fn check_artifact_coverage(runs: usize, seed0: u64) {
 /// Met (measured 2026-11-25, seeds 2000-2119, same command with
 /// `stated_intervals_cover_the_truth_on_artifact_laden_traces`, 223 s): none of 120 refused; beta
 /// inside 1 sigma 68.3 %, 1.96 sigma 93.3 %; t0 70.0 %, 93.3 %; pulls (mean, sd) beta (+0.10,
-/// 0.97), t0 (-0.09, 0.99); worst errors beta 0.0003, t0 0.135 ms. With the former peak-time
-/// sigmas and covariance ($\max(s^2, 1)$ and AR(1), see `least_squares`): 63.3 %, 91.7 %; t0
-/// 64.2 %, 91.7 %; pulls (+0.17, 1.14), (-0.19, 1.14). Before (2026-11-24): 11 refused, 1.96
-/// sigma beta 80.8 %, t0 76.7 %; the drift re-timing alone (issue-15 patch) made it 61.7 % and
-/// 60.8 % (worst t0 1.51 ms). The cause was the hum: fitted on samples chosen from the signal it
-/// came out 10-25 % short (more with drift), and where drift and hum met, one block's leakage
-/// could hide it; what was left of it threw both timings off. With the hum fitted on samples
-/// chosen from its residuals and judged by the blocks' median (plain crossings: 0 refused,
-/// 86.7 % and 82.5 %), and a re-timed pulse kept only where its two neighbours agree.
+/// 0.97), t0 (-0.09, 0.99); worst errors beta 0.0003, t0 0.135 ms. With peak-time sigmas and
+/// covariance of $\max(s^2, 1)$ and AR(1) instead (see `least_squares`): 63.3 %, 91.7 %; t0
+/// 64.2 %, 91.7 %; pulls (+0.17, 1.14), (-0.19, 1.14). A hum fitted on samples chosen from the
+/// signal comes out 10-25 % short (more with drift), and where drift and hum meet one block's
+/// leakage can hide it; so the hum is fitted on samples chosen from its residuals and judged by
+/// the blocks' median, and a re-timed pulse is kept only where its two neighbours agree.
 #[test]
 #[ignore = "slow: 120 recordings, about four minutes on the shared machine"]
 fn stated_intervals_cover_the_truth_on_artifact_laden_traces() {

@@ -1,11 +1,11 @@
-//! The hunt for the early t0 (issue 15): the eq 84 fit alone on exact peak times, and the peak
+//! The hunt for the early t0: the eq 84 fit alone on exact peak times, and the peak
 //! timing on a noise-free law trace.
 
 use experiment::*;
 use physics::Disk;
 use std::f64::consts::PI;
 
-/// Step 1 of the bias hunt (issue 15), candidate "the fit": eq 84's fit alone, on peak times
+/// Step 1 of the bias hunt, candidate "the fit": eq 84's fit alone, on peak times
 /// placed exactly where eq 79's heading passes a multiple of $2\pi$ (no light model, no peak
 /// finder), each shifted by white noise of the stated 20 us. If the fit (its cycle means, its
 /// index of the cycles, its weights) were the source of the early t0, the pulls here would show

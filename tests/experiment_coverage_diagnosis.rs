@@ -1,4 +1,4 @@
-//! Why the coverage study's pulls were wider than 1 (issue 15): on the coverage study's
+//! Why the coverage study's pulls were wider than 1: on the coverage study's
 //! exact-law traces the truth of every peak time is known, so the timing errors can be compared
 //! with their stated uncertainties directly, and the fit's error model checked piece by piece.
 //!

@@ -1,4 +1,4 @@
-//! Issue 15's recordings "from both models": the dissipative rolling model and the sliding model
+//! Recordings from both models: the dissipative rolling model and the sliding model
 //! (Coulomb friction, lift-off and landing), each with every artifact, analysed end to end.
 //!
 //! The error of an analysis has two parts, scored separately: the analysis's own (noise, drift,

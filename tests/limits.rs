@@ -1,4 +1,4 @@
-//! Issue 16: no input may hang, exhaust memory or yield a silent wrong answer. Each class of
+//! No input may hang, exhaust memory or yield a silent wrong answer. Each class of
 //! hostile input found by the hostile runs has a test here, run through the binary as a user
 //! would, with a time bound where the complaint was a hang.
 

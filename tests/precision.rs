@@ -185,7 +185,7 @@ fn energy_drift_needs_a_conservative_precessing_scene() {
     assert_eq!(e, PrecisionError::NoPrecession);
 }
 
-/// Issue 17's goal: over 1e4 precession periods of the benchmark scene the `high` preset keeps
+/// The goal: over 1e4 precession periods of the benchmark scene the `high` preset keeps
 /// the energy to 1e-12 relative, and the table holds every preset from the fastest.
 #[test]
 fn high_preset_keeps_the_energy_over_ten_thousand_periods() {

@@ -129,7 +129,7 @@ proptest! {
     }
 }
 
-/// Inputs that once broke the reader (from the hostile runs of issue 16 and from fuzzing).
+/// Hostile inputs for the reader (from hostile runs and from fuzzing).
 #[test]
 fn regressions() {
     for src in [

@@ -1,4 +1,4 @@
-//! The sliding model (`model::sliding`) against closed forms and limits (issue 14, item 4):
+//! The sliding model (`model::sliding`) against closed forms and limits:
 //! the upright wheel thrown sliding, mu = 0 against the frictionless lab-frame model, a large mu
 //! against the rolling one, the energy balance, and flights with impacts.
 //!

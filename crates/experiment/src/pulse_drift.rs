@@ -1,4 +1,4 @@
-//! Peak times of pulses whose shape drifts from one pulse to the next (issue 15).
+//! Peak times of pulses whose shape drifts from one pulse to the next.
 //!
 //! The paper's half-height method times a pulse by the mean of its rising and falling crossings
 //! of one level. That is the pulse's centre only while the pulse keeps its shape: in the light

@@ -1,8 +1,7 @@
 //! The synthetic experiment's spin-down in the sliding model: the lab-frame disk with Coulomb
 //! friction, lift-off and landing ([`physics::model::sliding`]), losing energy by eq 75's law as a
 //! drag torque. Where the rolling model must roll to the end, this disk may slip, leave the
-//! table and land before its tilt reaches the floor: the recordings of issue 15 "from both
-//! models".
+//! table and land before its tilt reaches the floor: recordings from both models.
 //!
 //! What the light and the microphone see is the upper face's normal. The sliding model carries
 //! the disk's orientation as a quaternion, whose symmetry axis $\hat{\mathbf 1} = R\,\mathbf e_x$

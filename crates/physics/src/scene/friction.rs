@@ -1,4 +1,4 @@
-//! The scene keys of the sliding model (issue 14): `model: sliding`, `friction: { mu,
+//! The scene keys of the sliding model: `model: sliding`, `friction: { mu,
 //! restitution }`, a start slip `start: { ..., slip: { forward, sideways } }`, and the record
 //! quantities only the lab-frame and sliding models provide (`slip_speed`, `cm_speed`,
 //! `contact_gap`, `dissipated`).

@@ -1,4 +1,4 @@
-//! The scene key of the dissipation mechanisms (`crate::model::mechanism`, issue 14 item 6):
+//! The scene key of the dissipation mechanisms (`crate::model::mechanism`):
 //! `mechanisms:`, a list for `model: dissipative`, each entry one mechanism by name with its
 //! coefficient, besides or instead of eq 75's `dissipation:` law.
 //!

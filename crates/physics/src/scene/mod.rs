@@ -82,7 +82,7 @@ pub enum ModelKind {
     LabFrame,
     /// The independent Newton-Euler model in lab coordinates, without friction.
     LabFrameFrictionless,
-    /// The lab-frame model with Coulomb friction, stick/slip and flight (issue 14).
+    /// The lab-frame model with Coulomb friction, stick/slip and flight.
     Sliding,
 }
 

@@ -4,8 +4,8 @@
 //! The rolling model (eqs 23-25) conserves the energy
 //! $E = \tfrac12 m a^2 [(2k+1)\omega_1^2 + (k+1)\dot\alpha^2 + k\Omega^2\sin^2\alpha +
 //! 2 (g/a)\sin\alpha]$ (`model::rolling::energy`); its drift over $10^4$ periods measures how
-//! the integration's errors add up. The goal of issue 17 at the
-//! `high` preset is a relative drift below $10^{-12}$.
+//! the integration's errors add up. The goal at the `high` preset is a relative drift below
+//! $10^{-12}$.
 
 use super::cost::{energy_drift, Drift};
 use super::preset::Accuracy;

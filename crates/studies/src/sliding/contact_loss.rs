@@ -3,7 +3,7 @@
 //!
 //! Eqs 80-81 put the loss of contact where the centre's downward acceleration would need
 //! $F_z < 0$, from eq 79's law for $\Omega(t)$. The rolling model with eq 75's dissipation keeps
-//! $F_z$ well above zero instead (issue 14 measured $0.83\,mg$ at least). This study runs the same
+//! $F_z$ well above zero instead ($0.83\,mg$ at least, the `disk-leaves-table` claim's check). This study runs the same
 //! spin-down in the sliding model (Coulomb stick and slip, unilateral contact, the same drag
 //! torque: [`physics::model::sliding::Sliding::drag_torque`]) for several $\mu$ and reports what
 //! happens first: the contact point starts to slip, the contact is lost, or the tilt reaches
