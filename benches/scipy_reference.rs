@@ -79,12 +79,7 @@ fn main() {
 
     let mut drift = Vec::new();
     if flag("--drift") {
-        let s = Settings {
-            method: Method::Dop853,
-            rtol: 1e-13,
-            atol: 1e-15,
-            ..Settings::default()
-        };
+        let s = Settings::dop853(1e-13, 1e-15);
         for (periods, checkpoints) in [(1e4, 40), (1e5, 100)] {
             match energy_drift(&scene, &s, periods, checkpoints) {
                 Ok(d) => drift.push(json!({ "periods": periods, "drift": d })),

@@ -54,12 +54,7 @@ fn solver_steps(c: &mut Criterion) {
         model: &model,
         visited: RefCell::new(Vec::new()),
     };
-    let s = Settings {
-        method: Method::Dop853,
-        rtol: 1e-9,
-        atol: 1e-11,
-        ..Settings::default()
-    };
+    let s = Settings::dop853(1e-9, 1e-11);
     if solve_with(Problem::new(&recording, 0.0, y0, t_end), &s, Engine::Own).is_err() {
         panic!("own dop853 at rtol 1e-9: settings refused")
     }

@@ -2,31 +2,8 @@
 //! the fix is applied as the sentence says, and the re-run succeeds. Inputs that could hang
 //! are refused (or finish) within seconds.
 
-use std::path::{Path, PathBuf};
-use std::process::Command;
-use std::time::{Duration, Instant};
-
-fn cli_in(dir: &Path, args: &[&str]) -> (bool, String, String, Duration) {
-    let start = Instant::now();
-    let out = Command::new(env!("CARGO_BIN_EXE_rolling-disk"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("the binary runs");
-    (
-        out.status.success(),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-        start.elapsed(),
-    )
-}
-
-fn temp_dir(tag: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("rolling-disk-advice-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).expect("a scratch directory");
-    d
-}
+use crate::common::{cli_timed, temp_dir};
+use std::time::Duration;
 
 /// The word (up to a space, a comma or a closing parenthesis) after `lead` in `text`, as the
 /// user would copy it from the message.
@@ -155,11 +132,11 @@ fn cases() -> Vec<Case> {
 
 #[test]
 fn every_refusal_names_a_fix_that_works() {
-    let dir = temp_dir("table");
+    let dir = temp_dir("advice", "table");
     for (i, case) in cases().into_iter().enumerate() {
         let file = format!("case{i}.yaml");
         std::fs::write(dir.join(&file), &case.scene).expect("written");
-        let (ok, _, err, took) = cli_in(&dir, &["simulate", &file]);
+        let (ok, _, err, took) = cli_timed(&dir, &["simulate", &file]);
         assert!(!ok, "{}: accepted", case.name);
         assert!(err.contains(case.says), "{}: {err}", case.name);
         assert!(!err.contains("panicked"), "{}: {err}", case.name);
@@ -170,7 +147,7 @@ fn every_refusal_names_a_fix_that_works() {
         );
         let fixed = (case.fix)(&case.scene, &err);
         std::fs::write(dir.join(&file), &fixed).expect("written");
-        let (ok, out, err, _) = cli_in(&dir, &["simulate", &file]);
+        let (ok, out, err, _) = cli_timed(&dir, &["simulate", &file]);
         assert!(ok, "{}: the advised fix fails:\n{fixed}\n{err}", case.name);
         assert!(out.contains("ended"), "{}: {out}", case.name);
     }
@@ -178,7 +155,7 @@ fn every_refusal_names_a_fix_that_works() {
 
 #[test]
 fn options_out_of_range_are_refused_with_a_fix_that_works() {
-    let dir = temp_dir("options");
+    let dir = temp_dir("advice", "options");
     for (bad, good, says) in [
         (
             &["precision", "--quick", "--target", "0"][..],
@@ -210,26 +187,26 @@ fn options_out_of_range_are_refused_with_a_fix_that_works() {
             "give --glitches 2",
         ),
     ] {
-        let (ok, _, err, took) = cli_in(&dir, bad);
+        let (ok, _, err, took) = cli_timed(&dir, bad);
         assert!(!ok, "{bad:?} accepted");
         assert!(err.contains(says), "{bad:?}: {err}");
         assert!(
             took < Duration::from_secs(2),
             "{bad:?}: refused after {took:?}"
         );
-        let (ok, _, err, _) = cli_in(&dir, good);
+        let (ok, _, err, _) = cli_timed(&dir, good);
         assert!(ok, "{good:?}: {err}");
     }
 }
 
 #[test]
 fn a_contact_only_model_says_when_the_table_would_have_to_pull() {
-    let dir = temp_dir("contact");
+    let dir = temp_dir("advice", "contact");
     let rolling = BOUNCE
         .replace("model: sliding\n", "model: rolling\n")
         .replace("friction: { mu: 0.3, restitution: 0.5 }\n", "");
     std::fs::write(dir.join("rolling.yaml"), &rolling).expect("written");
-    let (_, out, err, _) = cli_in(&dir, &["simulate", "rolling.yaml"]);
+    let (_, out, err, _) = cli_timed(&dir, &["simulate", "rolling.yaml"]);
     assert!(
         err.contains("warning") && err.contains("the normal force is -"),
         "{err}"
@@ -238,7 +215,7 @@ fn a_contact_only_model_says_when_the_table_would_have_to_pull() {
     assert!(out.contains("not physics"), "{out}");
     // The advice applied: the sliding model follows the flight, without the warning.
     std::fs::write(dir.join("sliding.yaml"), BOUNCE).expect("written");
-    let (ok, out, err, _) = cli_in(&dir, &["simulate", "sliding.yaml"]);
+    let (ok, out, err, _) = cli_timed(&dir, &["simulate", "sliding.yaml"]);
     assert!(ok, "{err}");
     assert!(
         !err.contains("warning") && !out.contains("not physics"),
@@ -246,7 +223,7 @@ fn a_contact_only_model_says_when_the_table_would_have_to_pull() {
     );
     // A spin-down that stops at lift-off (F_z = 0) is not warned about.
     std::fs::write(dir.join("spin.yaml"), SPIN_DOWN).expect("written");
-    let (ok, out, err, _) = cli_in(&dir, &["simulate", "spin.yaml"]);
+    let (ok, out, err, _) = cli_timed(&dir, &["simulate", "spin.yaml"]);
     assert!(ok, "{err}");
     assert!(
         !err.contains("warning") && !out.contains("not physics"),
@@ -256,7 +233,7 @@ fn a_contact_only_model_says_when_the_table_would_have_to_pull() {
 
 #[test]
 fn a_newcomers_minimal_scenes_run_and_say_what_they_use() {
-    let dir = temp_dir("newcomer");
+    let dir = temp_dir("advice", "newcomer");
     let adiabatic = "name: a
 description: the adiabatic law with nothing but what it needs
 disk: { radius: 0.0375, k: 0.25, mass: 0.4, g: 9.81 }
@@ -266,19 +243,19 @@ start: { explicit: { alpha: 0.15 } }
 stop: { time: 1.0 }
 ";
     std::fs::write(dir.join("adiabatic.yaml"), adiabatic).expect("written");
-    let (ok, _, err, _) = cli_in(&dir, &["simulate", "adiabatic.yaml"]);
+    let (ok, _, err, _) = cli_timed(&dir, &["simulate", "adiabatic.yaml"]);
     assert!(ok, "{err}");
     std::fs::write(
         dir.join("rk4.yaml"),
         format!("{COIN}solver: {{ method: rk4 }}\n"),
     )
     .expect("written");
-    let (ok, out, err, _) = cli_in(&dir, &["simulate", "rk4.yaml"]);
+    let (ok, out, err, _) = cli_timed(&dir, &["simulate", "rk4.yaml"]);
     assert!(ok, "{err}");
     assert!(out.contains("rk4, fixed step 1e-3 s"), "{out}");
     assert!(!out.contains("rtol 1e-10"), "{out}");
     // The checks' default accuracy is named once, as rtol 1e-12, wherever a default is said.
-    let (_, out, _, _) = cli_in(&dir, &["check", "--help"]);
+    let (_, out, _, _) = cli_timed(&dir, &["check", "--help"]);
     for line in out.lines().filter(|l| l.contains("rtol")) {
         if let Some(i) = line.find("default") {
             assert!(line[i..].contains("1e-12"), "{line}");

@@ -1,5 +1,6 @@
 //! The command line as a user meets it.
 
+use crate::common::temp_dir;
 use std::process::Command;
 
 fn cli(args: &[&str]) -> (bool, String, String) {
@@ -12,12 +13,6 @@ fn cli(args: &[&str]) -> (bool, String, String) {
         String::from_utf8_lossy(&out.stdout).into_owned(),
         String::from_utf8_lossy(&out.stderr).into_owned(),
     )
-}
-
-fn temp_dir(tag: &str) -> std::path::PathBuf {
-    let d = std::env::temp_dir().join(format!("rolling-disk-cli-{tag}-{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
 }
 
 #[test]
@@ -38,7 +33,7 @@ fn scenes_lists_the_built_in_scenes() {
 
 #[test]
 fn simulate_prints_a_summary_and_writes_csv() {
-    let dir = temp_dir("csv");
+    let dir = temp_dir("cli", "csv");
     let csv = dir.join("coin.csv");
     let (ok, out, err) = cli(&["simulate", "spinning-coin", "--csv", csv.to_str().unwrap()]);
     assert!(ok, "{err}");
@@ -75,7 +70,7 @@ fn simulate_prints_a_summary_and_writes_csv() {
 
 #[test]
 fn a_bad_scene_file_fails_with_its_name_and_line() {
-    let dir = temp_dir("bad");
+    let dir = temp_dir("cli", "bad");
     let path = dir.join("negative-radius.yaml");
     std::fs::write(
         &path,
@@ -229,7 +224,7 @@ fn every_checked_finding_states_the_unit_of_its_values() {
 
 #[test]
 fn experiment_simulate_then_analyze_round_trips_and_bad_csvs_are_refused() {
-    let dir = temp_dir("experiment");
+    let dir = temp_dir("cli", "experiment");
     let csv = dir.join("trace.csv");
     let (ok, _, err) = cli(&[
         "experiment",
@@ -255,7 +250,7 @@ fn experiment_simulate_then_analyze_round_trips_and_bad_csvs_are_refused() {
 /// slips; a rolling scene with friction is refused with the key named.
 #[test]
 fn experiment_simulate_records_a_sliding_spin_down() {
-    let dir = temp_dir("sliding-experiment");
+    let dir = temp_dir("cli", "sliding-experiment");
     let scene = dir.join("sliding.yaml");
     std::fs::write(
         &scene,

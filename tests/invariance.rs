@@ -4,32 +4,9 @@
 //! record's start) within their stated uncertainties. A clock so large that a second is below
 //! its resolution is refused or analysed within seconds, never hangs.
 
-use std::path::{Path, PathBuf};
-use std::process::Command;
+use crate::common::{cli_in, temp_dir};
+use std::path::Path;
 use std::time::{Duration, Instant};
-
-fn cli_in(dir: &Path, args: &[&str]) -> (bool, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_rolling-disk"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("the binary runs");
-    (
-        out.status.success(),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
-fn temp_dir(tag: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!(
-        "rolling-disk-invariance-{tag}-{}",
-        std::process::id()
-    ));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).expect("a scratch directory");
-    d
-}
 
 /// The samples `(t, v)` of a CSV written by `experiment simulate`.
 fn samples(text: &str) -> Vec<(f64, f64)> {
@@ -91,7 +68,7 @@ fn answer(dir: &Path, file: &str, origin: f64, unit: f64) -> Answer {
 
 #[test]
 fn the_analysis_does_not_depend_on_the_clock_its_unit_polarity_or_trailing_silence() {
-    let dir = temp_dir("metamorphic");
+    let dir = temp_dir("invariance", "metamorphic");
     let (ok, _, err) = cli_in(&dir, &["experiment", "simulate", "--csv", "base.csv"]);
     assert!(ok, "{err}");
     let rows = samples(&std::fs::read_to_string(dir.join("base.csv")).unwrap_or_default());
@@ -158,7 +135,7 @@ fn the_analysis_does_not_depend_on_the_clock_its_unit_polarity_or_trailing_silen
 fn a_recording_in_another_time_scale_keeps_its_laws() {
     // The same recording on a clock a million times faster (times x 1e-6, still "seconds"):
     // eq 79 has no time scale of its own, so beta and the ranking of the laws are the same.
-    let dir = temp_dir("scale");
+    let dir = temp_dir("invariance", "scale");
     let (ok, _, err) = cli_in(&dir, &["experiment", "simulate", "--csv", "base.csv"]);
     assert!(ok, "{err}");
     let rows = samples(&std::fs::read_to_string(dir.join("base.csv")).unwrap_or_default());
@@ -180,7 +157,7 @@ fn a_recording_in_another_time_scale_keeps_its_laws() {
 
 #[test]
 fn a_clock_beyond_double_precision_ends_within_seconds() {
-    let dir = temp_dir("huge-clock");
+    let dir = temp_dir("invariance", "huge-clock");
     let (ok, _, err) = cli_in(&dir, &["experiment", "simulate", "--csv", "base.csv"]);
     assert!(ok, "{err}");
     let rows = samples(&std::fs::read_to_string(dir.join("base.csv")).unwrap_or_default());

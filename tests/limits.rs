@@ -2,6 +2,7 @@
 //! hostile input found by the hostile runs has a test here, run through the binary as a user
 //! would, with a time bound where the complaint was a hang.
 
+use crate::common::temp_dir;
 use physics::scene::Scene;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
@@ -25,19 +26,12 @@ pub(crate) fn cli(args: &[&str]) -> (bool, String, String, f64) {
     )
 }
 
-fn scratch(tag: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("rolling-disk-limits-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).expect("a scratch directory");
-    d
-}
-
 const SPIN_DOWN: &str = include_str!("../paper/scenes/spin-down.yaml");
 const NUTATING: &str = include_str!("../paper/scenes/nutating-coin.yaml");
 
 /// Writes `text` as a scene and simulates it; asserts a refusal in one sentence within `secs`.
 fn refused(tag: &str, text: &str, secs: f64, words: &[&str]) -> String {
-    let dir = scratch(tag);
+    let dir = temp_dir("limits", tag);
     let path = dir.join("scene.yaml");
     std::fs::write(&path, text).expect("written");
     let (ok, out, err, took) = cli(&["simulate", path.to_str().expect("utf-8 path")]);
@@ -84,7 +78,7 @@ fn an_unstable_rk4_run_is_reported_as_unstable_with_no_numbers() {
         "{ method: dop853, rtol: 1.0e-10, atol: 1.0e-12 }",
         "{ method: rk4 }",
     );
-    let dir = scratch("rk4");
+    let dir = temp_dir("limits", "rk4");
     let path = dir.join("rk4.yaml");
     std::fs::write(&path, rk4).expect("written");
     let (ok, out, err, _) = cli(&["simulate", path.to_str().expect("utf-8")]);
@@ -215,7 +209,7 @@ fn deep_nesting_is_refused_at_once() {
 
 #[test]
 fn fifos_devices_and_directories_are_refused_at_once() {
-    let dir = scratch("special");
+    let dir = temp_dir("limits", "special");
     let fifo = dir.join("scene.fifo");
     let made = Command::new("mkfifo").arg(&fifo).status();
     let mut paths = vec![PathBuf::from("/dev/zero"), dir.clone()];
@@ -255,7 +249,7 @@ fn the_wall_time_budget_ends_a_long_integration_and_says_so() {
             "rtol: 1.0e-10, atol: 1.0e-12",
             "rtol: 1.0e-13, atol: 1.0e-15",
         );
-    let dir = scratch("wall");
+    let dir = temp_dir("limits", "wall");
     let path = dir.join("long.yaml");
     std::fs::write(&path, long).expect("written");
     let (ok, _, err, took) = cli(&["--max-seconds", "0.3", "simulate", path.to_str().expect("")]);
@@ -267,7 +261,7 @@ fn the_wall_time_budget_ends_a_long_integration_and_says_so() {
 
 #[test]
 fn report_refuses_an_unusable_out_before_computing() {
-    let dir = scratch("out");
+    let dir = temp_dir("limits", "out");
     let file = dir.join("a-file");
     std::fs::write(&file, "x").expect("written");
     std::fs::write(dir.join("notes.txt"), "mine").expect("written");
@@ -291,7 +285,7 @@ fn report_refuses_an_unusable_out_before_computing() {
 /// left beside it. Successive runs alternate the format so that a mix of two runs would show.
 #[test]
 fn killing_report_at_random_moments_never_leaves_a_mixed_or_partial_set() {
-    let root = scratch("kill");
+    let root = temp_dir("limits", "kill");
     let out = root.join("report");
     let run = |format: &str| {
         Command::new(BIN)

@@ -6,19 +6,14 @@ use physics::model::frictionless::Frictionless;
 use physics::model::rolling::Rolling;
 use physics::model::steady::{b_bound, steady_motion, vertical_spin};
 use physics::model::{Extras, Model, Motion};
-use physics::solve::{solve, Dynamics, Ending, Method, Problem, Settings, State};
+use physics::solve::{solve, Dynamics, Ending, Problem, Settings, State};
 
 fn euler_disk(k: f64) -> Disk {
     Disk::new(0.0375, k, 0.4, 9.81).unwrap()
 }
 
 fn tight() -> Settings {
-    Settings {
-        method: Method::Dop853,
-        rtol: 1e-12,
-        atol: 1e-14,
-        ..Settings::default()
-    }
+    Settings::dop853(1e-12, 1e-14)
 }
 
 /// Largest relative deviation of `f` from its start value along a solution sampled every 10 ms.

@@ -2,31 +2,12 @@
 //! standard output, a symlink, a FIFO or a device is written through and never replaced, a
 //! read-only file is refused, and `experiment analyze --out` touches only the files it wrote.
 
+use crate::common::{cli_in, temp_dir};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
 fn bin() -> Command {
     Command::new(env!("CARGO_BIN_EXE_rolling-disk"))
-}
-
-fn cli_in(dir: &Path, args: &[&str]) -> (bool, String, String) {
-    let out = bin()
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("the binary runs");
-    (
-        out.status.success(),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
-fn temp_dir(tag: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("rolling-disk-outputs-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).expect("a scratch directory");
-    d
 }
 
 /// A spin-down scope trace (4 s, a few thousand rows), written once per test that needs one.
@@ -63,7 +44,7 @@ fn closed_pipe(dir: &Path, args: &[&str]) {
 
 #[test]
 fn a_closed_pipe_ends_every_printing_command_quietly() {
-    let dir = temp_dir("pipe");
+    let dir = temp_dir("outputs", "pipe");
     let csv = spin_down_csv(&dir);
     let (ok, _, err) = cli_in(&dir, &["experiment", "simulate", "--wav", "sound.wav"]);
     assert!(ok, "{err}");
@@ -82,7 +63,7 @@ fn a_closed_pipe_ends_every_printing_command_quietly() {
 
 #[test]
 fn a_dash_is_standard_output_and_no_file_named_dash_appears() {
-    let dir = temp_dir("dash");
+    let dir = temp_dir("outputs", "dash");
     let (ok, out, err) = cli_in(&dir, &["simulate", "spinning-coin", "--csv", "-"]);
     assert!(ok, "{err}");
     assert!(out.starts_with("t_s,alpha_rad,"), "{out:.200}");
@@ -105,7 +86,7 @@ fn a_dash_is_standard_output_and_no_file_named_dash_appears() {
 #[test]
 fn a_symlink_is_written_through_and_a_read_only_file_is_refused_untouched() {
     use std::os::unix::fs::PermissionsExt;
-    let dir = temp_dir("links");
+    let dir = temp_dir("outputs", "links");
     std::fs::write(dir.join("real.csv"), "mine").expect("written");
     std::os::unix::fs::symlink("real.csv", dir.join("link.csv")).expect("a symlink");
     let (ok, _, err) = cli_in(&dir, &["simulate", "spinning-coin", "--csv", "link.csv"]);
@@ -134,7 +115,7 @@ fn a_symlink_is_written_through_and_a_read_only_file_is_refused_untouched() {
 #[test]
 fn a_fifo_and_a_device_are_written_through_never_replaced() {
     use std::os::unix::fs::FileTypeExt;
-    let dir = temp_dir("fifo");
+    let dir = temp_dir("outputs", "fifo");
     let fifo = dir.join("pipe.csv");
     let made = Command::new("mkfifo").arg(&fifo).status();
     if made.is_ok_and(|s| s.success()) {
@@ -178,7 +159,7 @@ fn names(dir: &Path) -> Vec<String> {
 
 #[test]
 fn analyze_out_touches_only_its_own_set() {
-    let dir = temp_dir("analyze-out");
+    let dir = temp_dir("outputs", "analyze-out");
     let csv = spin_down_csv(&dir);
     let csv = csv.to_str().unwrap_or("");
     let (ok, _, err) = cli_in(&dir, &["experiment", "simulate", "--wav", "sound.wav"]);
@@ -223,7 +204,7 @@ fn analyze_out_touches_only_its_own_set() {
 #[test]
 fn a_read_only_empty_directory_given_to_out_is_refused_and_kept() {
     use std::os::unix::fs::PermissionsExt;
-    let dir = temp_dir("ro-out");
+    let dir = temp_dir("outputs", "ro-out");
     let csv = spin_down_csv(&dir);
     let ro = dir.join("locked");
     std::fs::create_dir_all(&ro).expect("made");

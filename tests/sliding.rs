@@ -10,7 +10,7 @@ use physics::model::lab_frame::{Contact, LabFrame};
 use physics::model::sliding::{extend, Friction, Mode, Sliding, Slip, DISSIPATED};
 use physics::model::steady::steady_motion;
 use physics::model::{Model, Motion};
-use physics::solve::{solve, Ending, Event, Method, Problem, Settings, State};
+use physics::solve::{solve, Ending, Event, Problem, Settings, State};
 use physics::Disk;
 use std::f64::consts::FRAC_PI_2;
 
@@ -22,12 +22,7 @@ fn toy(k: f64) -> Disk {
 }
 
 fn settings() -> Settings {
-    Settings {
-        method: Method::Dop853,
-        rtol: RTOL,
-        atol: RTOL * 1e-2,
-        ..Settings::default()
-    }
+    Settings::dop853(RTOL, RTOL * 1e-2)
 }
 
 fn no_stops<'a>() -> Vec<Event<'a, 14>> {

@@ -5,6 +5,7 @@ mod advice;
 mod advice_names;
 mod architecture;
 mod cli;
+mod common;
 mod corrections;
 mod coverage_record;
 mod experiment;

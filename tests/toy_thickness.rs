@@ -114,7 +114,7 @@ fn period(disk: &str, alpha0: f64, precession: f64, spin: f64) -> f64 {
 
 #[test]
 fn thickness_changes_the_steady_motion_and_the_oscillation() {
-    let thin_disk = physics::disk::Disk::new(0.0375, 0.25, 0.4, 9.81).unwrap();
+    let thin_disk = physics::disk::toy_disk();
     println!("alpha0  Omega thin  Omega toy  change   period thin  period toy  change (rad/s, s)");
     for alpha0 in [0.3, 0.6, 1.0, 1.3] {
         let m = steady_motion(&thin_disk, alpha0, 0.0).unwrap();

@@ -369,7 +369,6 @@ pub fn mechanisms(d: &Disk, law: &Law, settings: &Settings) -> Result<Mechanisms
 #[cfg(test)]
 mod tests {
     use super::*;
-    use physics::solve::Method;
 
     /// The paper's fit, as paper/claims.yaml states it.
     fn paper_law() -> Law {
@@ -406,12 +405,7 @@ mod tests {
     #[test]
     fn each_mechanism_spins_down_with_its_own_exponent() {
         let d = physics::disk::toy_disk();
-        let settings = Settings {
-            method: Method::Dop853,
-            rtol: 1e-10,
-            atol: 1e-12,
-            ..Settings::default()
-        };
+        let settings = Settings::dop853(1e-10, 1e-12);
         let s = mechanisms(&d, &paper_law(), &settings).unwrap();
         for r in &s.spin_downs {
             println!("{r:?}");

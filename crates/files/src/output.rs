@@ -316,6 +316,17 @@ mod tests {
         set.commit(&[a, b])
     }
 
+    /// The names in `dir`.
+    fn entries(dir: &Path) -> Vec<String> {
+        std::fs::read_dir(dir)
+            .map(|d| {
+                d.flatten()
+                    .map(|e| e.file_name().to_string_lossy().into_owned())
+                    .collect()
+            })
+            .unwrap_or_default()
+    }
+
     #[test]
     fn a_set_replaces_the_previous_one_whole_and_leaves_no_temporary() {
         let root = scratch("set");
@@ -339,14 +350,7 @@ mod tests {
             manifest.contains("3 a.txt") && manifest.contains("3 figures/b.txt"),
             "{manifest}"
         );
-        let names: Vec<String> = std::fs::read_dir(&root)
-            .map(|d| {
-                d.flatten()
-                    .map(|e| e.file_name().to_string_lossy().into_owned())
-                    .collect()
-            })
-            .unwrap_or_default();
-        assert_eq!(names, vec!["report".to_string()]);
+        assert_eq!(entries(&root), vec!["report".to_string()]);
         let _ = std::fs::remove_dir_all(&root);
     }
 
@@ -391,14 +395,7 @@ mod tests {
         );
         assert!(!root.join(format!(".report.tmp-{dead}")).exists());
         drop(set);
-        let names: Vec<String> = std::fs::read_dir(&root)
-            .map(|d| {
-                d.flatten()
-                    .map(|e| e.file_name().to_string_lossy().into_owned())
-                    .collect()
-            })
-            .unwrap_or_default();
-        assert_eq!(names, vec!["report".to_string()]);
+        assert_eq!(entries(&root), vec!["report".to_string()]);
         let _ = std::fs::remove_dir_all(&root);
     }
 

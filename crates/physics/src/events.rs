@@ -282,7 +282,7 @@ mod tests {
     //! The driver on systems with closed-form switching times: a bouncing ball (impacts with
     //! restitution) and a block sliding to rest under Coulomb friction.
     use super::*;
-    use crate::solve::{Dynamics, Method};
+    use crate::solve::Dynamics;
 
     const G: f64 = 9.81;
 
@@ -325,12 +325,7 @@ mod tests {
         }
     }
     fn settings() -> Settings {
-        Settings {
-            method: Method::Dop853,
-            rtol: 1e-12,
-            atol: 1e-14,
-            ..Settings::default()
-        }
+        Settings::dop853(1e-12, 1e-14)
     }
 
     #[test]

@@ -7,7 +7,7 @@ use physics::model::lab_frame::{Contact, LabFrame};
 use physics::model::rolling::Rolling;
 use physics::model::{Extras, Model, Motion};
 use physics::scene::Scene;
-use physics::solve::{solve, Method, Problem, Settings, Solution};
+use physics::solve::{solve, Problem, Settings, Solution};
 
 /// The two panels' scenes, with how often (s) the two models are compared on each.
 pub const SCENES: [(&str, f64); 2] = [("nutating-coin", 0.002), ("wheel-straight", 0.01)];
@@ -28,12 +28,7 @@ pub struct Compared {
 
 /// Both models integrated from `scene`'s start, sampled every `every` seconds.
 fn both(scene: &Scene, every: f64) -> Result<Compared, StudyError> {
-    let settings = Settings {
-        method: Method::Dop853,
-        rtol: 1e-12,
-        atol: 1e-14,
-        ..Settings::default()
-    };
+    let settings = Settings::dop853(1e-12, 1e-14);
     let reduced = Rolling::<4>::new(scene.disk, Extras::default(), None);
     let lab = LabFrame::new(scene.disk, Contact::Rolling);
     let t_end = scene.stop.time;

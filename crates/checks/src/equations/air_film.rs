@@ -206,15 +206,11 @@ fn judged(
     }
 }
 
-/// Eq 82, $\alpha = ((2\pi\eta a/m)(t_0 - t))^{1/3}$: the printed relation solved for the time
-/// remaining $t_0 - t$ at each tilt of the reference's descent, against the reference's
-/// $\tau(\alpha)$ (module docs), over the [`Window`] of the toy disk (a = 37.5 mm, m = 0.4 kg,
-/// k = 1/4). The tolerance is the squeeze film number's discretization uncertainty. The
-/// printed time remaining is 1.6 times the squeeze film's ($2\pi$ against $24I/k = 10.2$); the
-/// exponent is right, so, read as the estimate it is, its scaling is confirmed.
-pub fn eq82(b: &Bench) -> Finding {
+/// The squeeze film, the toy disk, its [`Window`] and the reference's descent through it
+/// (tilt, time remaining); a descent that did not integrate is already a failure in the
+/// returned [`Worst`].
+fn film_descent(b: &Bench) -> (SqueezeFilm, Disk, Window, Vec<(f64, f64)>, Worst) {
     let film = SqueezeFilm::solved();
-    let eq = b.paper.equation(82);
     let d = toy_sized(K);
     let window = Window::of(film, &d, ETA, NU, P_ATM);
     let mut worst = Worst::default();
@@ -224,6 +220,18 @@ pub fn eq82(b: &Bench) -> Finding {
             "the descent did not integrate".into()
         });
     }
+    (film, d, window, descent, worst)
+}
+
+/// Eq 82, $\alpha = ((2\pi\eta a/m)(t_0 - t))^{1/3}$: the printed relation solved for the time
+/// remaining $t_0 - t$ at each tilt of the reference's descent, against the reference's
+/// $\tau(\alpha)$ (module docs), over the [`Window`] of the toy disk (a = 37.5 mm, m = 0.4 kg,
+/// k = 1/4). The tolerance is the squeeze film number's discretization uncertainty. The
+/// printed time remaining is 1.6 times the squeeze film's ($2\pi$ against $24I/k = 10.2$); the
+/// exponent is right, so, read as the estimate it is, its scaling is confirmed.
+pub fn eq82(b: &Bench) -> Finding {
+    let eq = b.paper.equation(82);
+    let (film, d, window, descent, mut worst) = film_descent(b);
     let (mut alphas, mut printed_tau, mut film_tau) = (Vec::new(), Vec::new(), Vec::new());
     for &(alpha, tau) in &descent {
         let bind = Bindings::new()
@@ -294,17 +302,8 @@ pub fn eq82(b: &Bench) -> Finding {
 /// error to the power 1/6 (8 %); it follows from eq 82 as printed
 /// (`derivations::eq83_from_eq82`), and, read as an estimate, its scaling is confirmed.
 pub fn eq83(b: &Bench) -> Finding {
-    let film = SqueezeFilm::solved();
     let eq = b.paper.equation(83);
-    let d = toy_sized(K);
-    let window = Window::of(film, &d, ETA, NU, P_ATM);
-    let mut worst = Worst::default();
-    let descent = time_remaining(b, &d, film, &window).unwrap_or_default();
-    if descent.is_empty() {
-        worst.add(f64::NAN, 0.0, 1.0, || {
-            "the descent did not integrate".into()
-        });
-    }
+    let (film, d, window, descent, mut worst) = film_descent(b);
     let (mut taus, mut printed_omega, mut steady_omega) = (Vec::new(), Vec::new(), Vec::new());
     for &(alpha, tau) in &descent {
         let omega = steady_precession(&d, alpha);

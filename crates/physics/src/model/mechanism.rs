@@ -244,7 +244,7 @@ mod tests {
     use num_dual::Dual64;
 
     fn disk() -> Disk {
-        Disk::new(0.0375, 0.25, 0.4, 9.81).unwrap()
+        crate::disk::toy_disk()
     }
 
     /// Along steady motion with $b = 0$, the local slope of $\ln|P|$ against $\ln\Omega$

@@ -43,6 +43,18 @@ pub struct Settings {
     pub max_steps: u32,
 }
 
+impl Settings {
+    /// DOP853 at relative tolerance `rtol` and absolute tolerance `atol`, the rest default.
+    pub fn dop853(rtol: f64, atol: f64) -> Self {
+        Settings {
+            method: Method::Dop853,
+            rtol,
+            atol,
+            ..Settings::default()
+        }
+    }
+}
+
 impl Default for Settings {
     fn default() -> Self {
         Self {

@@ -39,20 +39,12 @@ impl Visit for RhsCost {
     type Out = f64;
 
     fn visit<M: Model<N>, const N: usize>(self, model: &M, scene: &Scene) -> f64 {
-        const BATCH: u32 = 20_000;
         let y0 = model.state(&scene.start);
         let mut dy = State::<N>::zeros();
-        let mut ns: Vec<f64> = (0..5)
-            .map(|_| {
-                let t = Instant::now();
-                for _ in 0..BATCH {
-                    model.rhs(black_box(&y0), &mut dy);
-                    black_box(&dy);
-                }
-                t.elapsed().as_secs_f64() * 1e9 / f64::from(BATCH)
-            })
-            .collect();
-        median(&mut ns)
+        median_batch_nanoseconds(|| {
+            model.rhs(black_box(&y0), &mut dy);
+            black_box(&dy);
+        })
     }
 }
 
@@ -70,25 +62,32 @@ impl Visit for RhsLatency {
     type Out = f64;
 
     fn visit<M: Model<N>, const N: usize>(self, model: &M, scene: &Scene) -> f64 {
-        const BATCH: u32 = 20_000;
         let y0 = model.state(&scene.start);
         let mut dy = State::<N>::zeros();
-        let mut ns: Vec<f64> = (0..5)
-            .map(|_| {
-                let t = Instant::now();
-                for _ in 0..BATCH {
-                    // Zero, but the compiler must compute it (0 * x is not 0 for every x), so
-                    // the next argument waits for this result.
-                    let mut y = y0;
-                    y[0] += 0.0 * dy[N - 1];
-                    model.rhs(black_box(&y), &mut dy);
-                }
-                black_box(&dy);
-                t.elapsed().as_secs_f64() * 1e9 / f64::from(BATCH)
-            })
-            .collect();
-        median(&mut ns)
+        median_batch_nanoseconds(|| {
+            // Zero, but the compiler must compute it (0 * x is not 0 for every x), so the next
+            // argument waits for this result.
+            let mut y = y0;
+            y[0] += 0.0 * dy[N - 1];
+            model.rhs(black_box(&y), &mut dy);
+            black_box(&dy);
+        })
     }
+}
+
+/// The median over 5 batches of 20 000 calls of `once`, in nanoseconds per call.
+fn median_batch_nanoseconds(mut once: impl FnMut()) -> f64 {
+    const BATCH: u32 = 20_000;
+    let mut ns: Vec<f64> = (0..5)
+        .map(|_| {
+            let t = Instant::now();
+            for _ in 0..BATCH {
+                once();
+            }
+            t.elapsed().as_secs_f64() * 1e9 / f64::from(BATCH)
+        })
+        .collect();
+    median(&mut ns)
 }
 
 /// One checkpoint of a long run.

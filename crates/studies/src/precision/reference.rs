@@ -46,12 +46,7 @@ pub struct ReferenceOptions {
 impl Default for ReferenceOptions {
     fn default() -> Self {
         Self {
-            settings: Settings {
-                method: Method::Dop853,
-                rtol: 1e-14,
-                atol: 1e-16,
-                ..Settings::default()
-            },
+            settings: Settings::dop853(1e-14, 1e-16),
             samples: 100,
             rk4_steps: 1 << 16,
             validate: true,

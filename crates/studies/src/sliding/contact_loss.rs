@@ -162,17 +162,11 @@ pub fn spin_down_contact(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use physics::solve::Method;
 
     #[test]
     fn the_spin_down_slips_before_it_could_lose_contact_and_a_rough_table_never_lets_go() {
-        let d = Disk::new(0.0375, 0.25, 0.4, 9.81).unwrap();
-        let settings = Settings {
-            method: Method::Dop853,
-            rtol: 1e-10,
-            atol: 1e-12,
-            ..Settings::default()
-        };
+        let d = physics::disk::toy_disk();
+        let settings = Settings::dop853(1e-10, 1e-12);
         let runs: Vec<_> = MUS
             .iter()
             .map(|&mu| spin_down_contact(&d, mu, &settings, false).unwrap())
@@ -199,13 +193,8 @@ mod tests {
     #[test]
     #[ignore]
     fn followed_through_the_creep_the_contact_is_never_lost() {
-        let d = Disk::new(0.0375, 0.25, 0.4, 9.81).unwrap();
-        let settings = Settings {
-            method: Method::Dop853,
-            rtol: 1e-10,
-            atol: 1e-12,
-            ..Settings::default()
-        };
+        let d = physics::disk::toy_disk();
+        let settings = Settings::dop853(1e-10, 1e-12);
         let r = spin_down_contact(&d, 0.3, &settings, true).unwrap();
         eprintln!("{r:?}");
         assert!(r.lift_off.is_none(), "{r:?}");

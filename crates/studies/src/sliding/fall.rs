@@ -383,15 +383,9 @@ pub fn fall(d: &Disk, settings: &Settings) -> Result<Fall, SettingsError> {
 mod tests {
     use super::*;
     use numerics::linearize::eigenvalues;
-    use physics::solve::Method;
 
     fn settings() -> Settings {
-        Settings {
-            method: Method::Dop853,
-            rtol: 1e-10,
-            atol: 1e-12,
-            ..Settings::default()
-        }
+        Settings::dop853(1e-10, 1e-12)
     }
 
     /// The largest real part of the eigenvalues of eqs 23-25 linearized at $(\alpha_0, \beta a)$.

@@ -32,7 +32,7 @@ use physics::model::sliding::contact_events::contact_events;
 use physics::model::sliding::{Friction, Mode, Sliding};
 use physics::model::steady::steady_motion;
 use physics::solve::SettingsError;
-use physics::solve::{Ending, Event, Method, Settings};
+use physics::solve::{Ending, Event, Settings};
 use serde::Serialize;
 
 /// How long a steady start is run to see whether it slips (s).
@@ -54,12 +54,7 @@ pub fn slips(d: &Disk, alpha0: f64, b: f64, mu: f64) -> Option<bool> {
             restitution: 0.0,
         },
     );
-    let settings = Settings {
-        method: Method::Dop853,
-        rtol: 1e-10,
-        atol: 1e-12,
-        ..Settings::default()
-    };
+    let settings = Settings::dop853(1e-10, 1e-12);
     let y0 = model.start_state(&m);
     if model.enter_contact(&y0).0 != Mode::Stick {
         return Some(true);

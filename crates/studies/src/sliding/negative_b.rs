@@ -57,7 +57,7 @@ mod tests {
 
     #[test]
     fn a_realistic_table_holds_only_a_small_part_of_the_negative_b_range() {
-        let d = Disk::new(0.0375, 0.25, 0.4, 9.81).unwrap();
+        let d = physics::disk::toy_disk();
         for (alpha0, mu) in [(0.3, 0.3), (0.3, 1.0), (1.0, 0.3)] {
             let n = negative_b(&d, alpha0, mu).unwrap();
             assert!((n.beta_integrated - n.beta_exact).abs() < 1e-6, "{n:?}");

@@ -195,17 +195,11 @@ fn run_case(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use physics::solve::Method;
 
     #[test]
     fn a_sliding_contact_raises_the_disk_and_no_slip_or_no_friction_does_not() {
-        let d = Disk::new(0.0375, 0.25, 0.4, 9.81).unwrap();
-        let settings = Settings {
-            method: Method::Dop853,
-            rtol: 1e-10,
-            atol: 1e-12,
-            ..Settings::default()
-        };
+        let d = physics::disk::toy_disk();
+        let settings = Settings::dop853(1e-10, 1e-12);
         let r = rising(&d, (d.g / (d.a * d.k)).sqrt(), &settings).unwrap();
         for c in &r.cases {
             eprintln!("{c:?}");

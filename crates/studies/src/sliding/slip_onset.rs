@@ -54,7 +54,7 @@ mod tests {
 
     #[test]
     fn the_integrated_limit_is_the_exact_steady_one_and_eq42_is_its_small_b_form() {
-        let d = Disk::new(0.0375, 0.25, 0.4, 9.81).unwrap();
+        let d = physics::disk::toy_disk();
         for (alpha0, mu) in [(0.3, 0.05), (0.3, 0.3), (1.0, 0.3)] {
             let s = slip_onset(&d, alpha0, mu).unwrap();
             // At the integrated limit the exact steady friction ratio b Omega0^2 / g is mu.

@@ -132,7 +132,6 @@ pub fn spiral(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use physics::solve::Method;
 
     #[test]
     fn the_circle_fit_finds_a_known_radius() {
@@ -148,13 +147,8 @@ mod tests {
 
     #[test]
     fn slipping_reduces_a_positive_b() {
-        let d = Disk::new(0.0375, 0.25, 0.4, 9.81).unwrap();
-        let settings = Settings {
-            method: Method::Dop853,
-            rtol: 1e-10,
-            atol: 1e-12,
-            ..Settings::default()
-        };
+        let d = physics::disk::toy_disk();
+        let settings = Settings::dop853(1e-10, 1e-12);
         for (alpha0, b0) in [(0.4, 0.02), (0.2, 0.004)] {
             for mu in [0.1, 0.3] {
                 let s = spiral(&d, alpha0, b0, mu, &settings).unwrap().unwrap();

@@ -64,7 +64,7 @@ pub(super) fn eq72_at(b: &Bench, c0: f64) -> Finding {
             }
         }
     }
-    let mut f = Finding::from_order(
+    let f = Finding::from_order(
         format!(
             "every printed form of U in eq 72 against the exact energy at b = 0 (Omega^2 = g/ak sin alpha, omega_1 = 0), \
              alpha_dot^2 = {c0} g alpha / a, relative error against alpha"
@@ -73,13 +73,7 @@ pub(super) fn eq72_at(b: &Bench, c0: f64) -> Finding {
         &errors,
         b.paper.equation(72).entry.claimed_order.unwrap_or(2.0),
     );
-    f.at = format!(
-        "{}; worst printed form at the smallest alpha: side {}",
-        f.at,
-        worst_form.last().copied().unwrap_or(0)
-    );
-    f.headline = headline;
-    f
+    naming_the_worst_side(f, &worst_form, headline)
 }
 
 /// Eq 72, $U = \frac12 m\dot h^2 + \frac12 I_{33}\omega^2 + mgh \approx \frac12 m a^2\dot\alpha^2 + \frac32 m a g\alpha$.
@@ -163,13 +157,23 @@ pub fn eq73(b: &Bench) -> Finding {
             }
         }
     }
-    let mut f = Finding::from_order(
+    let f = Finding::from_order(
         "every printed form of P in eq 73 against the exact dE/dt where F_z = 0 (b = 0, adiabatic precession), \
          error in units of m a g |alpha_dot|, against alpha",
         &SMALL_ALPHAS,
         &errors,
         b.paper.equation(73).entry.claimed_order.unwrap_or(2.0),
     );
+    naming_the_worst_side(f, &worst_form, headline)
+}
+
+/// `f` with the printed form (side of the chain) that is worst at the smallest tilt named in
+/// its `at`, and `headline`.
+fn naming_the_worst_side(
+    mut f: Finding,
+    worst_form: &[usize],
+    headline: Option<Headline>,
+) -> Finding {
     f.at = format!(
         "{}; worst printed form at the smallest alpha: side {}",
         f.at,

@@ -3,7 +3,7 @@ use nalgebra::UnitQuaternion;
 use std::f64::consts::FRAC_PI_2;
 
 fn disk() -> Disk {
-    Disk::new(0.0375, 0.25, 0.4, 9.81).unwrap()
+    crate::disk::toy_disk()
 }
 
 /// Generic motions: tilted either way of the vertical, spinning either way, nodding.

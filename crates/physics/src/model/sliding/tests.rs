@@ -4,7 +4,7 @@ use super::*;
 use crate::model::lab_frame::ContactProblem;
 
 fn toy() -> Disk {
-    Disk::new(0.0375, 0.25, 0.4, 9.81).unwrap()
+    crate::disk::toy_disk()
 }
 
 /// A landing state: the rolling state of `m` moved down through the table at `sink` m/s and

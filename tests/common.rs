@@ -1,0 +1,39 @@
+//! What the integration tests share: the binary run in a directory, and fresh scratch
+//! directories.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::{Duration, Instant};
+
+/// Runs the binary in `dir`: (success, stdout, stderr, wall time).
+pub fn cli_timed(dir: &Path, args: &[&str]) -> (bool, String, String, Duration) {
+    let start = Instant::now();
+    let out = Command::new(env!("CARGO_BIN_EXE_rolling-disk"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .expect("the binary runs");
+    (
+        out.status.success(),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+        start.elapsed(),
+    )
+}
+
+/// Runs the binary in `dir`: (success, stdout, stderr).
+pub fn cli_in(dir: &Path, args: &[&str]) -> (bool, String, String) {
+    let (ok, out, err, _) = cli_timed(dir, args);
+    (ok, out, err)
+}
+
+/// An empty scratch directory `rolling-disk-{family}-{tag}-{pid}` under the system's temp dir.
+pub fn temp_dir(family: &str, tag: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!(
+        "rolling-disk-{family}-{tag}-{}",
+        std::process::id()
+    ));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).expect("a scratch directory");
+    d
+}
