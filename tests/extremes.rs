@@ -17,15 +17,6 @@ use studies::precision::stable::{
 use studies::precision::study::measure_point;
 use studies::precision::{energy_drift, Reference, ReferenceOptions, Timing};
 
-fn dop853(rtol: f64, atol: f64) -> Settings {
-    Settings {
-        method: Method::Dop853,
-        rtol,
-        atol,
-        ..Settings::default()
-    }
-}
-
 fn integrate(disk: Disk, m: Motion, t_end: f64, s: &Settings) -> Solution<4> {
     let model = Rolling::<4>::new(disk, Extras::default(), None);
     solve(Problem::new(&model, 0.0, model.state(&m), t_end), s).expect("valid settings")
@@ -58,7 +49,7 @@ fn steady_motion_at_a_tiny_tilt_stays_steady() {
     for b in [0.0, 0.5 * disk.a] {
         let m = steady_motion(&disk, alpha0, b).expect("exists");
         let period = 2.0 * PI / m.precession.abs();
-        let s = dop853(1e-12, 1e-20);
+        let s = Settings::dop853(1e-12, 1e-20);
         let sol = integrate(disk, m, 50.0 * period, &s);
         let dev = tilt_deviation(&sol, alpha0);
         eprintln!(
@@ -116,7 +107,7 @@ fn steady_motion_near_upright_sleeps_or_falls_as_eq_54_says() {
         alpha: alpha0 - 1e-12,
         ..m
     };
-    let sol = integrate(disk, nudged, 10.0, &dop853(1e-12, 1e-14));
+    let sol = integrate(disk, nudged, 10.0, &Settings::dop853(1e-12, 1e-14));
     assert_eq!(sol.ending, Ending::TimeReached);
     let dev = sol
         .y
@@ -133,13 +124,13 @@ fn steady_motion_near_upright_sleeps_or_falls_as_eq_54_says() {
     let m = steady_motion(&disk, alpha0, b).expect("exists");
     let varpi2 = varpi_squared_stable(&disk, &SteadyParams::from_delta_b(&disk, delta, b));
     let lambda = (-varpi2).sqrt();
-    let still = integrate(disk, m, 1.0, &dop853(1e-12, 1e-18));
+    let still = integrate(disk, m, 1.0, &Settings::dop853(1e-12, 1e-18));
     assert_eq!(tilt_deviation(&still, alpha0), 0.0);
     let nudged = Motion {
         alpha: alpha0 - 1e-14,
         ..m
     };
-    let sol = integrate(disk, nudged, 2.0, &dop853(1e-12, 1e-18));
+    let sol = integrate(disk, nudged, 2.0, &Settings::dop853(1e-12, 1e-18));
     // Fit log|alpha - alpha0| against t where the departure is between 1e-11 and 1e-5 rad.
     let (ts, ls): (Vec<f64>, Vec<f64>) = sol
         .t
@@ -248,7 +239,7 @@ fn b_at_and_just_above_eq_30s_bound() {
     );
     assert!(m.precession.abs() > 1e5);
     let period = 2.0 * PI / m.precession.abs();
-    let sol = integrate(disk, m, 10.0 * period, &dop853(1e-12, 1e-14));
+    let sol = integrate(disk, m, 10.0 * period, &Settings::dop853(1e-12, 1e-14));
     assert_eq!(sol.ending, Ending::TimeReached);
     let dev = tilt_deviation(&sol, alpha0);
     eprintln!(
@@ -279,8 +270,13 @@ fn inertia_factor_from_small_to_large() {
             },
         )
         .expect("reference");
-        let p =
-            measure_point(&scene, &dop853(1e-10, 1e-12), &reference, &Timing::ONCE).expect("runs");
+        let p = measure_point(
+            &scene,
+            &Settings::dop853(1e-10, 1e-12),
+            &reference,
+            &Timing::ONCE,
+        )
+        .expect("runs");
         eprintln!(
             "k = {k}: {} evaluations, trajectory error {:.1e}, energy change {:.1e}",
             p.evaluations, p.trajectory_error, p.energy_change
@@ -305,24 +301,24 @@ fn spin_down_into_the_singularity() {
     let model = Rolling::<4>::new(scene.disk, Extras::default(), scene.dissipation);
     let y0 = model.state(&scene.start);
     let end = |s: &Settings| solve(Problem::new(&model, 0.0, y0, 60.0), s).expect("valid");
-    let reference = end(&dop853(1e-13, 1e-15));
+    let reference = end(&Settings::dop853(1e-13, 1e-15));
     let Ending::StepCollapse { t: ts } = reference.ending else {
         panic!("{:?}", reference.ending)
     };
     for (s, tol) in [
-        (dop853(1e-10, 1e-12), 1e-9),
-        (dop853(1e-6, 1e-8), 1e-6),
+        (Settings::dop853(1e-10, 1e-12), 1e-9),
+        (Settings::dop853(1e-6, 1e-8), 1e-6),
         (
             Settings {
                 method: Method::Dopri5,
-                ..dop853(1e-10, 1e-12)
+                ..Settings::dop853(1e-10, 1e-12)
             },
             1e-9,
         ),
         (
             Settings {
                 method: Method::Dopri5,
-                ..dop853(1e-6, 1e-8)
+                ..Settings::dop853(1e-6, 1e-8)
             },
             1e-6,
         ),
@@ -365,7 +361,7 @@ fn spin_down_into_the_singularity() {
 #[test]
 fn energy_drift_over_1e5_precession_periods() {
     let scene = Scene::load("benchmark").expect("built in");
-    let d = energy_drift(&scene, &dop853(1e-13, 1e-15), 1e5, 20).expect("conservative");
+    let d = energy_drift(&scene, &Settings::dop853(1e-13, 1e-15), 1e5, 20).expect("conservative");
     let gamma = d.growth_exponent.expect("drift is not zero");
     eprintln!(
         "1e5 periods: max drift {:.2e}, growth t^{gamma:.2}, sqrt(n) eps {:.2e}, n eps {:.2e}, {:.1} s",

@@ -16,20 +16,11 @@ impl Dynamics<2> for VanDerPol {
     }
 }
 
-fn dop853(rtol: f64, atol: f64) -> Settings {
-    Settings {
-        method: Method::Dop853,
-        rtol,
-        atol,
-        ..Settings::default()
-    }
-}
-
 #[test]
 fn reproduces_hairers_van_der_pol_acceptance_problem() {
     let vdp = VanDerPol { eps: 1e-3 };
     let p = Problem::new(&vdp, 0.0, State::<2>::new(2.0, 0.0), 2.0);
-    let sol = solve(p, &dop853(1e-9, 1e-9)).unwrap();
+    let sol = solve(p, &Settings::dop853(1e-9, 1e-9)).unwrap();
     assert_eq!(sol.ending, Ending::TimeReached);
     let (t, y) = sol.last();
     assert_eq!(t, 2.0);
@@ -140,7 +131,7 @@ fn stop_event_is_located_in_time() {
 #[test]
 fn sampling_gives_evenly_spaced_accurate_points() {
     let p = Problem::new(&Oscillator, 0.0, State::<2>::new(1.0, 0.0), 3.0).sampled(0.25);
-    let sol = solve(p, &dop853(1e-12, 1e-14)).unwrap();
+    let sol = solve(p, &Settings::dop853(1e-12, 1e-14)).unwrap();
     assert_eq!(sol.t.len(), 13);
     for (i, (t, y)) in sol.t.iter().zip(&sol.y).enumerate() {
         assert!((t - 0.25 * i as f64).abs() < 1e-15);
@@ -174,7 +165,7 @@ fn finite_time_singularity_ends_with_a_reason() {
 
 #[test]
 fn bad_settings_are_refused_with_a_reason() {
-    let mut s = dop853(0.0, 1e-12);
+    let mut s = Settings::dop853(0.0, 1e-12);
     let p = || Problem::new(&Oscillator, 0.0, State::<2>::new(1.0, 0.0), 1.0);
     assert!(solve(p(), &s).unwrap_err().to_string().contains("rtol"));
     s.rtol = 1e-6;
@@ -220,7 +211,7 @@ fn own_dop853_closes_the_arenstorf_orbit() {
     let mut last_gap = f64::INFINITY;
     for (rtol, bound) in [(1e-6, 1e-1), (1e-9, 1e-4), (1e-12, 1e-7)] {
         let p = Problem::new(&Arenstorf, 0.0, arenstorf_start(), ARENSTORF_PERIOD);
-        let sol = solve(p, &dop853(rtol, rtol)).unwrap();
+        let sol = solve(p, &Settings::dop853(rtol, rtol)).unwrap();
         assert_eq!(sol.ending, Ending::TimeReached);
         let gap = (sol.last().1 - arenstorf_start()).amax();
         eprintln!(
@@ -242,7 +233,7 @@ fn own_dop853_takes_the_same_steps_as_the_published_algorithm_in_ode_solvers() {
     // and rejected steps are compared, and the final states.
     let vdp = VanDerPol { eps: 1e-3 };
     for rtol in [1e-6, 1e-9, 1e-12] {
-        let s = dop853(rtol, rtol);
+        let s = Settings::dop853(rtol, rtol);
         let own = solve(Problem::new(&vdp, 0.0, State::<2>::new(2.0, 0.0), 2.0), &s).unwrap();
         let up = solve_with(
             Problem::new(&vdp, 0.0, State::<2>::new(2.0, 0.0), 2.0),
@@ -272,7 +263,7 @@ fn own_dop853_takes_the_same_steps_as_the_published_algorithm_in_ode_solvers() {
 #[test]
 fn events_use_the_dense_output_and_samples_keep_the_steps() {
     // The crate's own DOP853 (not the default engine): events on its dense output.
-    let s = dop853(1e-12, 1e-14);
+    let s = Settings::dop853(1e-12, 1e-14);
     let plain = solve_with(
         Problem::new(&Oscillator, 0.0, State::<2>::new(1.0, 0.0), 10.0),
         &s,
