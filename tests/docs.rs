@@ -153,6 +153,22 @@ fn the_limits_written_are_the_tools() {
         Some(rows),
         "docs/limits.md's rows against the tool's refusal: {err}"
     );
+    let (least, most) =
+        range_after(row(&doc, "solver"), "`max_steps` ").expect("max_steps's range");
+    let solver = "solver: { method: dop853, rtol: 1.0e-10, atol: 1.0e-12 }";
+    assert!(nutating.contains(solver), "nutating-coin's solver");
+    let asked = solver.replace(" }", &format!(", max_steps: {:.0} }}", most * 10.0));
+    let err = refusal("steps", &nutating.replace(solver, &asked));
+    let said_least = number_after(&err, "must lie between ").expect("the least max_steps");
+    let said_most = number_after(&err, &format!("between {said_least} and "));
+    assert_eq!(
+        (
+            said_least.parse::<f64>().ok(),
+            said_most.and_then(|n| n.parse::<f64>().ok())
+        ),
+        (Some(least), Some(most)),
+        "docs/limits.md's max_steps against the tool's refusal: {err}"
+    );
     let seconds =
         count_before(row(&doc, "wall time"), " s per integration").expect("the wall-time budget");
     let out = tool(&["--help"]);
