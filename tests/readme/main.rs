@@ -1,7 +1,9 @@
-//! The README's numbers are the tool's: each is read back from the text and compared with what
-//! `check --json` prints or with the files the tool stores and reads (`snapshots/mutants.json`,
-//! `paper/claims.yaml`, `paper/corrections.yaml`), so that none can go stale.
+//! The numbers of the README and of `docs/` are the tool's: each is read back from the text and
+//! compared with what the tool prints or with the files it stores and reads, so that none can go
+//! stale. Here the README's, against `check --json` and `snapshots/mutants.json`,
+//! `paper/claims.yaml`, `paper/corrections.yaml`; `docs.rs` holds those of `docs/`.
 
+mod docs;
 mod written;
 
 use serde_json::Value;

@@ -3,13 +3,11 @@
 //! prints (`scenes --show`, its refusals of values beyond a limit, `--help`). The links of the
 //! README and `docs/` lead somewhere, and they hold no development history.
 
-mod written;
-
-use serde_json::Value;
-use written::{
+use crate::written::{
     agrees, built_in_scene, count_before, is_date, number_after, prose, range_after, raw, refusal,
     row, tool, ROOT,
 };
+use serde_json::Value;
 
 #[test]
 fn the_coverage_table_is_the_stored_studies() {

@@ -1,6 +1,5 @@
 //! Reading numbers back from the README and `docs/`, and running the tool for the values they
-//! must equal. Shared by the test binaries `readme` and `docs`; each uses a part of it.
-#![allow(dead_code)]
+//! must equal.
 
 use serde_json::Value;
 use std::process::{Command, Output};
