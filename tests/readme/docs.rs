@@ -157,15 +157,17 @@ fn the_limits_written_are_the_tools() {
     assert!(nutating.contains(solver), "nutating-coin's solver");
     let asked = solver.replace(" }", &format!(", max_steps: {:.0} }}", most * 10.0));
     let err = refusal("steps", &nutating.replace(solver, &asked));
-    let said_least = number_after(&err, "must lie between ").expect("the least max_steps");
-    let said_most = number_after(&err, &format!("between {said_least} and "));
     assert_eq!(
-        (
-            said_least.parse::<f64>().ok(),
-            said_most.and_then(|n| n.parse::<f64>().ok())
-        ),
-        (Some(least), Some(most)),
+        range_after(&err, "max_steps must lie between "),
+        Some((least, most)),
         "docs/limits.md's max_steps against the tool's refusal: {err}"
+    );
+    let rtol = range_after(row(&doc, "solver"), "rtol strictly between ").expect("rtol's bounds");
+    let err = refusal("rtol", &nutating.replace("rtol: 1.0e-10", "rtol: 1.0"));
+    assert_eq!(
+        range_after(&err, "rtol must lie strictly between "),
+        Some(rtol),
+        "docs/limits.md's rtol bounds against the tool's refusal: {err}"
     );
     let seconds =
         count_before(row(&doc, "wall time"), " s per integration").expect("the wall-time budget");

@@ -148,12 +148,12 @@ pub fn equations_in_parentheses_after(text: &str, words: &str) -> Vec<u32> {
     equation_list(&rest[open..close])
 }
 
-/// The range `lo to hi` written right after `words`.
+/// The range `lo to hi` (or `lo and hi`) written right after `words`.
 pub fn range_after(text: &str, words: &str) -> Option<(f64, f64)> {
     let rest = &text[text.find(words)? + words.len()..];
     let mut tokens = rest.split_whitespace();
     let lo = tokens.next()?.parse().ok()?;
-    if tokens.next()? != "to" {
+    if !matches!(tokens.next()?, "to" | "and") {
         return None;
     }
     let hi = tokens
