@@ -3,7 +3,7 @@
 //! prints (`scenes --show`, its refusals of values beyond a limit, `--help`). The links of the
 //! README and `docs/` lead somewhere, and they hold no development history.
 
-use crate::written::{
+use super::written::{
     agrees, built_in_scene, count_before, is_date, number_after, prose, range_after, raw, refusal,
     row, tool, ROOT,
 };
