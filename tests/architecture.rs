@@ -316,18 +316,19 @@ const CHECKS: &[&str] = &[
     "steady",
 ];
 
-/// The check modules other than `own` that a line of code imports.
-fn other_checks(own: &str, line: &str) -> Vec<&'static str> {
+/// The check modules other than `own` that a line of code imports. In a file `nested` inside a
+/// check's folder, `super::` is that check's own module and names its parts, not other checks.
+fn other_checks(own: &str, nested: bool, line: &str) -> Vec<&'static str> {
+    let up = if nested { "super::super::" } else { "super::" };
     CHECKS
         .iter()
         .copied()
         .filter(|c| *c != own)
         .filter(|c| {
             [
-                format!("super::{c}::"),
-                format!("super::super::{c}::"),
+                format!("{up}{c}::"),
                 format!("equations::{c}::"),
-                format!("super::{c};"),
+                format!("{up}{c};"),
                 format!("equations::{c};"),
             ]
             .iter()
@@ -356,9 +357,10 @@ fn no_check_imports_another() {
         if !CHECKS.contains(&own.as_str()) || rel.ends_with("tests.rs") {
             continue;
         }
+        let nested = rel.components().count() > 1 && !rel.ends_with("mod.rs");
         let text = std::fs::read_to_string(f).unwrap();
         for (n, line) in code_lines(&text) {
-            for c in other_checks(&own, line) {
+            for c in other_checks(&own, nested, line) {
                 offenders.push(format!("{}:{n}: imports {c}: {}", f.display(), line.trim()));
             }
         }
@@ -373,11 +375,17 @@ fn no_check_imports_another() {
 #[test]
 fn the_check_rule_would_catch_an_import() {
     assert_eq!(
-        other_checks("air_film", "use super::oscillation::{eq54};"),
+        other_checks("air_film", false, "use super::oscillation::{eq54};"),
         vec!["oscillation"]
     );
-    assert!(other_checks("oscillation", "use super::oscillation::eq54;").is_empty());
-    assert!(other_checks("air_film", "use super::spin_down::{disk};").is_empty());
+    assert!(other_checks("oscillation", false, "use super::oscillation::eq54;").is_empty());
+    assert!(other_checks("air_film", false, "use super::spin_down::{disk};").is_empty());
+    // Inside claims/, `super::motion` is claims/motion.rs; `super::super::motion` is the check.
+    assert!(other_checks("claims", true, "use super::motion::{stated};").is_empty());
+    assert_eq!(
+        other_checks("claims", true, "use super::super::motion::{eq23};"),
+        vec!["motion"]
+    );
 }
 
 /// The paper's files: only the `paper` crate embeds or opens them, so every consumer reads the one
@@ -454,4 +462,76 @@ fn the_paper_rule_would_catch_a_second_reader() {
     assert_eq!(paper_file_uses(planted).len(), 2);
     assert!(paper_file_uses("// the claims of paper/claims.yaml\n").is_empty());
     assert!(paper_file_uses("let s = format!(\"no reading in claims.yaml\");\n").is_empty());
+}
+
+/// The functions of Rust source `text` longer than `most` lines (signature to closing brace,
+/// comments included): (name, lines).
+fn long_functions(text: &str, most: usize) -> Vec<(String, usize)> {
+    let lines: Vec<&str> = text.lines().collect();
+    let mut out = Vec::new();
+    for (i, line) in lines.iter().enumerate() {
+        let trimmed = line.trim_start();
+        let indent = &line[..line.len() - trimmed.len()];
+        let rest = ["pub(crate) ", "pub(super) ", "pub "]
+            .iter()
+            .find_map(|p| trimmed.strip_prefix(p))
+            .unwrap_or(trimmed);
+        let Some(name) = rest
+            .strip_prefix("fn ")
+            .and_then(|r| r.split(|c: char| !(c.is_alphanumeric() || c == '_')).next())
+        else {
+            continue;
+        };
+        let Some(open) = (i..lines.len()).find(|&j| {
+            let l = lines[j].trim_end();
+            l.ends_with('{') || l.ends_with(';')
+        }) else {
+            continue;
+        };
+        if lines[open].trim_end().ends_with(';') {
+            continue;
+        }
+        let close = format!("{indent}}}");
+        if let Some(end) = (open + 1..lines.len()).find(|&k| lines[k] == close) {
+            if end - i + 1 > most {
+                out.push((name.to_string(), end - i + 1));
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn no_function_is_longer_than_150_lines() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut dirs = source_dirs();
+    dirs.extend(["tests", "benches"].map(|d| root.join(d)));
+    let mut files = Vec::new();
+    for d in &dirs {
+        rust_files(d, &mut files);
+    }
+    let long: Vec<String> = files
+        .iter()
+        .flat_map(|f| {
+            let text = std::fs::read_to_string(f).unwrap();
+            long_functions(&text, 150)
+                .into_iter()
+                .map(move |(name, n)| format!("{}: fn {name}, {n} lines", f.display()))
+        })
+        .collect();
+    assert!(
+        long.is_empty(),
+        "split these into named steps:\n{}",
+        long.join("\n")
+    );
+}
+
+#[test]
+fn the_function_rule_would_catch_a_long_function() {
+    // 150 lines from signature to brace is allowed, 151 is not.
+    let body = "    let x = 1;\n".repeat(148);
+    let at = format!("pub fn at() {{\n{body}}}\n");
+    let over = format!("fn over() {{\n{body}    let y = 2;\n}}\n");
+    assert!(long_functions(&at, 150).is_empty());
+    assert_eq!(long_functions(&over, 150), vec![("over".to_string(), 151)]);
 }

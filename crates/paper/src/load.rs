@@ -1,7 +1,11 @@
 //! Reading the paper: its four files from the binary or from a directory, each checked before
 //! it is parsed (size, structure, the claims' readings and premises), into one [`Paper`].
 
-use super::*;
+use super::{
+    correction, fnv, parse_entry, premise_exists, printed, resolve_table, sha256, too_large,
+    yaml_message, BTreeMap, ClaimEntry, EquationEntry, Paper, PaperError, PaperSource, Path,
+    SymbolInfo, MAX_FILE_BYTES,
+};
 
 pub(super) const EQUATIONS: &str = include_str!("../../../paper/equations.yaml");
 pub(super) const SYMBOLS: &str = include_str!("../../../paper/symbols.yaml");

@@ -110,36 +110,7 @@ pub fn text(s: &Studies, paper: &paper::Paper) -> String {
     for (i, h) in halted.iter().enumerate() {
         heading(&mut o, &format!("  note {}: {h}", i + 1));
     }
-    let ri = &s.rising;
-    o.push('\n');
-    heading(
-        &mut o,
-        &format!(
-            "Sec. 10, rising: launched at {:.0} deg turning about the vertical at {:.1} rad/s \
-         (1.5 x sqrt(g/(a k))), centre at rest, contact sliding at {:.3} m/s; lasting gain of \
-         tilt = lowest tilt in the second half of {} s minus the launch tilt",
-            ri.launch_tilt_deg,
-            ri.launch_rate,
-            ri.launch_slip,
-            studies::sliding::rising::DURATION
-        ),
-    );
-    let _ = writeln!(
-        o,
-        "  contact              mu   gain (deg)   highest tilt (deg)   slid (s)"
-    );
-    for c in &ri.cases {
-        let slid = if c.mu == 0.0 {
-            "-".to_string()
-        } else {
-            format!("{:.3}", c.slip_time.max(0.0))
-        };
-        let _ = writeln!(
-            o,
-            "  {:<18} {:>4.2} {:>12.3} {:>20.2} {:>10}",
-            c.contact, c.mu, c.rise_deg, c.highest_deg, slid
-        );
-    }
+    rising(&mut o, &s.rising);
     o.push('\n');
     heading(
         &mut o,
@@ -186,6 +157,40 @@ const FALL_CLAIM: &str = "positive-b-unstable-large-tilt";
 fn fall_claim(paper: &paper::Paper) -> Option<(f64, f64)> {
     let c = paper.claims.iter().find(|c| c.id == FALL_CLAIM)?;
     Some((c.claimed_value?, c.rule.as_ref()?.within?))
+}
+
+/// Sec. 10: the rising of a disk launched spinning about a nearly vertical diameter, per
+/// contact.
+fn rising(o: &mut String, ri: &studies::sliding::rising::Rising) {
+    o.push('\n');
+    heading(
+        o,
+        &format!(
+            "Sec. 10, rising: launched at {:.0} deg turning about the vertical at {:.1} rad/s \
+         (1.5 x sqrt(g/(a k))), centre at rest, contact sliding at {:.3} m/s; lasting gain of \
+         tilt = lowest tilt in the second half of {} s minus the launch tilt",
+            ri.launch_tilt_deg,
+            ri.launch_rate,
+            ri.launch_slip,
+            studies::sliding::rising::DURATION
+        ),
+    );
+    let _ = writeln!(
+        o,
+        "  contact              mu   gain (deg)   highest tilt (deg)   slid (s)"
+    );
+    for c in &ri.cases {
+        let slid = if c.mu == 0.0 {
+            "-".to_string()
+        } else {
+            format!("{:.3}", c.slip_time.max(0.0))
+        };
+        let _ = writeln!(
+            o,
+            "  {:<18} {:>4.2} {:>12.3} {:>20.2} {:>10}",
+            c.contact, c.mu, c.rise_deg, c.highest_deg, slid
+        );
+    }
 }
 
 /// Sec. 7 and the summary: the fall from unstable steady motion at large tilt, the tilt it

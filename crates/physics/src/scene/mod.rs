@@ -24,7 +24,7 @@ mod spec;
 mod toy;
 mod validate;
 
-use spec::*;
+use spec::SceneSpec;
 use validate::Validator;
 
 use crate::budget;

@@ -1,6 +1,9 @@
 //! The scene file as written: the YAML keys, their defaults, and nothing checked yet.
 
-use super::*;
+use super::{
+    friction, mechanisms, toy, Deserialize, Method, ModelKind, PowerLaw, Projection, Quantity,
+    Settings,
+};
 
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]

@@ -1,7 +1,11 @@
 //! Validation of a scene file: every value checked for physical meaning, errors located.
 
-use super::spec::*;
-use super::*;
+use super::spec::{MotionSpec, SceneSpec, StartSpec, StopSpec};
+use super::{
+    budget, locate, message, range, rolling_straight, steady_motion, vertical_spin, Disk,
+    DiskError, Method, ModelKind, Motion, PowerLaw, Projection, Quantity, Scene, SceneError,
+    Settings, SteadyError, Stop, PI,
+};
 
 /// The fewest steps an adaptive method takes per turn of the disk's fastest rate (DOP853
 /// with the default settings takes about 32 on a vertical spin at 1.5e7 rad/s).

@@ -2,7 +2,14 @@
 //! threshold, the common small-tilt limit of eqs 55 and 71, and the angular momentum near the
 //! vertical.
 
-use super::*;
+use super::judge::{printed, single, stated, worse};
+use super::oscillation::ratio_b0;
+use super::{
+    bisect, fl, frictionless_vertical_threshold, jacobian, mid, rolling,
+    rolling_vertical_threshold, solve, unit_disk, varpi2, Bench, Contact, Dual64, DualNum, Extras,
+    Finding, Frictionless, LabFrame, Method, Model, Motion, Problem, Quantity, Rolling, State,
+    Tolerance, Worst, FRAC_PI_2, WIDTH,
+};
 
 // ------------------------------------------------------------------------------ sec. 8
 

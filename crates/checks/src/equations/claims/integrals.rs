@@ -1,7 +1,11 @@
 //! The integrals of the rolling motion (sec. 3): besides the energy and the centre of motion,
 //! Chaplygin's two.
 
-use super::*;
+use super::judge::{printed, single};
+use super::{
+    bisect, mid, solve, steady_motion, unit_disk, Bench, Dynamics, Extras, Finding, Method, Model,
+    Problem, Rolling, State, Tolerance,
+};
 
 // ------------------------------------------------------------------------------ integrals
 

@@ -1,7 +1,7 @@
 //! How a claim is judged against the number claims.yaml prints: by its rule (printed digits,
 //! a relative distance, a factor, a range, a bound), with the comparison stated in the claim's unit.
 
-use super::*;
+use super::{Bench, Finding, Headline, Method, Tolerance, Worst};
 
 /// The unit a claim's comparison is shown in: claims.yaml keeps the paper's "Hz" where it
 /// writes Hz, but those numbers are rad/s (claim `omega-units-hz-vs-rad-per-s`), and the

@@ -54,14 +54,29 @@ mod spin_down;
 #[cfg(test)]
 mod tests;
 
-use frictionless::*;
-use integrals::*;
+use frictionless::{
+    angular_momentum_near_vertical, frictionless_constants, frictionless_threshold_uniform,
+    limits_eq55_eq71, rolling_threshold_uniform, thresholds_ratio,
+};
+use integrals::rolling_extra_integrals;
 pub use judge::with_printed_headline;
-use judge::*;
-use motion::*;
-use oscillation::*;
-use rising::*;
-use spin_down::*;
+use motion::{
+    center_of_motion_constant, face_figure_rate_vanishes, k_rim_disk, k_uniform_disk,
+    negative_b_friction_angle, no_steady_motion_beyond_vertical, slip_when_b_large,
+};
+use oscillation::{
+    b_of_order_a_alpha, bracket_negative_angle, coincidence_eq54, coincidence_eq58,
+    negative_b_always_stable, positive_b_unstable_large_tilt, ratio_hoop_one,
+    ratio_uniform_disk_077, rattling_needs_more_friction,
+};
+use rising::rising_needs_slip;
+use spin_down::{
+    air_viscosity, contact_loss_omega, contact_loss_time, disk_leaves_table,
+    drag_exponent_linear_force, drag_exponent_moffatt, drag_exponent_quadratic_air,
+    eq73_second_approximation_sign, finite_time_singularity, larger_t0_lowers_beta,
+    omega_units_hz_vs_rad_per_s, one_period_remaining_omega, one_period_remaining_time,
+    summary_contact_lost_few_degrees, t0_after_last_peak,
+};
 
 /// How far the mutation test moves the printed number of a claim read by `rule` (relative, two
 /// moves) to see its check fail: 1e-3 either way; but a loose reading that `holds` is moved

@@ -1,7 +1,12 @@
 //! Claims of secs. 3-6: the moment of inertia, the centre of motion, steady motions and the
 //! friction they need.
 
-use super::*;
+use super::judge::{printed, stated, worse};
+use super::{
+    bisect, mid, mu_required, rolling, solve, steady_motion, unit_disk, Bench, Contact, DualNum,
+    Extras, Finding, Headline, LabFrame, Method, Model, Motion, Problem, Quantity, Rolling, State,
+    Tolerance, Worst, FRAC_PI_2, FRAC_PI_3, PI, WIDTH,
+};
 
 // ------------------------------------------------------------------------------ sec. 3
 

@@ -1,7 +1,12 @@
 //! Claims of sec. 7: small oscillations about steady motion, their stability, the coincidence
 //! of frequencies, and the friction the oscillation needs.
 
-use super::*;
+use super::judge::{printed, single, stated, worse};
+use super::{
+    b_bound, bisect, golden_min, max_growth, mid, mu_required, q_eq54, q_linearized, rolling,
+    solve, steady_motion, unit_disk, Bench, Extras, Finding, Method, Model, Problem, Rolling,
+    Tolerance, Worst, WIDTH,
+};
 
 // ------------------------------------------------------------------------------ sec. 7
 

@@ -1,6 +1,7 @@
 //! Sec. 10's claim that needs the sliding model: rising near the vertical.
 
-use super::*;
+use super::judge::{printed, single};
+use super::{frictionless_vertical_threshold, mid, Bench, Disk, Finding, Method, Tolerance, WIDTH};
 use studies::sliding::rising::{rising, LAUNCH_OVER_THRESHOLD, LAUNCH_TILT};
 
 /// The smallest lasting gain of tilt counted as rising (deg), and the largest counted as none:

@@ -1,7 +1,13 @@
 //! Claims of secs. 11-12: the dissipative spin-down, the finite-time singularity of eq 79, the
 //! numbers of the experiment, and the summary's contact loss.
 
-use super::*;
+use super::judge::{printed, printed_precision, printed_tolerance, round_sig, single, stated};
+use super::{
+    bisect, c_fit, contact_loss_remaining, log_log_slope, mid, one_period_omega, rolling, solve,
+    steady_motion, unit_disk, Adiabatic, Bench, Disk, Dual64, DualNum, Event, Extras, Finding,
+    Headline, Method, Model, Motion, PowerLaw, Problem, Rates, Rolling, State, Tolerance, Worst,
+    PI, WIDTH,
+};
 
 // ------------------------------------------------------------------------------ sec. 11
 

@@ -1,6 +1,9 @@
 //! Eqs 84-85: the forms of the power law used to analyse the data.
 
-use super::*;
+use super::{
+    law_bindings, time_remaining_on_model, Bench, Finding, Method, PowerLaw, PrintedLaw, Tolerance,
+    Worst,
+};
 use physics::disk::toy_sized;
 
 /// Eq 84, $1/\Omega = ((t_0 - t)/C)^{1/(\beta+2)}$, with $C$ as eq 79 defines it.

@@ -1,6 +1,9 @@
 //! Eqs 72-73: the energy of the disk at small tilt and its rate, against the exact energy.
 
-use super::*;
+use super::{
+    energy, last_side, steady_precession, Bench, Bindings, Dual64, Finding, Headline, Motion,
+    SMALL_ALPHAS,
+};
 use physics::disk::toy_sized;
 
 /// Eq 72 at states of the $b = 0$ family (steady precession at each tilt, $\omega_1 = 0$) with

@@ -1,6 +1,9 @@
 //! Eqs 80-81: where the power law predicts loss of contact, against eq 79 as printed.
 
-use super::*;
+use super::{
+    bisect, printed_relations, Bench, Bindings, Dual2_64, DualNum, Finding, Method, Tolerance,
+    Worst,
+};
 
 /// The lift-off of eqs 80-81 derived from eq 79 AS PRINTED (its last form, $\Omega$ in terms of
 /// $C$): the time before $t_0$, $\tau$, at which $d^2(1/\Omega^2)/dt^2 = -k$ (the loss of contact

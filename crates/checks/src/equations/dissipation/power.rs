@@ -1,6 +1,11 @@
 //! Eqs 74-79: the dissipated power, the tilt law and its integrals, against the dissipative rolling model.
 
-use super::*;
+use super::{
+    descent, energy, law_bindings, printed_relations, slope, solve, solve_printed, steady_motion,
+    steady_precession, time_remaining_on_model, Bench, Dual64, DualNum, Dynamics, Extras, Finding,
+    Headline, Method, Model, Motion, PowerLaw, Problem, Rolling, State, Tolerance, Worst, BETAS,
+    SMALL_ALPHAS,
+};
 use physics::disk::toy_sized;
 
 /// Eqs 74-75 against the dissipative rolling model: at states sampled along its integrations,

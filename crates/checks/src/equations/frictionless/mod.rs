@@ -36,9 +36,9 @@ mod sleeping;
 #[cfg(test)]
 mod tests;
 
-use motion::*;
-use oscillation::*;
-use sleeping::*;
+use motion::{eq59, eq60, eq61, eq62, eq63};
+use oscillation::{eq66, eq67, eq68, eq69, eq70, eq71};
+use sleeping::{eq64, eq65};
 
 /// The checks of this part of the paper.
 pub const EQUATIONS: &[Equation] = &[

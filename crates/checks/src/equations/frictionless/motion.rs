@@ -1,6 +1,10 @@
 //! Eqs 59-63: the frictionless equations of motion and their constants, against the Lagrangian.
 
-use super::*;
+use super::{
+    coordinate_rates, kinematics, printed_relations, reference_rates, relation_scale, solve,
+    state_bindings, triad, Bench, Bindings, Disk, Event, Extras, Finding, Frictionless, Method,
+    Model, Motion, Problem, Reference, Rng, State, Tolerance, Vector3, Worst, KS, PI, V3,
+};
 use physics::disk::toy_sized;
 
 /// Eq 59, $\mathbf r_{cm} = a\sin\alpha\,\hat{\mathbf z}$: a model statement (no friction, so the

@@ -1,6 +1,10 @@
 //! Eqs 66-71: small oscillations about steady motion without friction, against the linearized Lagrangian and integrations.
 
-use super::*;
+use super::{
+    angular_frequency, linear, printed_relations, relation_scale, solve, Bench, Bindings, Disk,
+    Ending, Extras, Finding, Frictionless, Linear, Method, Problem, State, Tolerance, Verdict,
+    Worst, KS, PI,
+};
 use physics::disk::toy_sized;
 
 /// The steady tilts swept in the small-oscillation checks (0 < alpha_0 < pi/2).

@@ -1,6 +1,10 @@
 //! Eqs 64-65: the disk spinning about a vertical diameter without friction, and when it is stable.
 
-use super::*;
+use super::{
+    add_threshold, bisect, printed_relations, printed_threshold, reference_jacobian, solve, Bench,
+    Bindings, Ending, Event, Extras, Finding, Frictionless, Method, Problem, State, Tolerance,
+    Worst, FRAC_PI_2, KS,
+};
 use physics::disk::toy_sized;
 
 /// Eq 64, $\ddot\epsilon + (\Omega^2 - g/ak)\epsilon = 0$ for $\alpha = \pi/2 - \epsilon$.

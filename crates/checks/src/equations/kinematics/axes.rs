@@ -1,6 +1,10 @@
 //! Eqs 1-11: the triad, the tilt and the rates, against the triad built from the rotation.
 
-use super::*;
+use super::rolling::A;
+use super::{
+    at, identity, kin1, kin_bindings, printed_kinematics, printed_relations, rate_scale, sample,
+    Bench, Finding, Stated, Value, Worst, POINTS, RATE, THREE, V,
+};
 
 /// Eq 1, $\mathbf a = a\hat{\mathbf 3}$ (definition): the offset of the contact point from the
 /// centre. Reference: the lowest point of the rim, found in body coordinates, against $a$ times

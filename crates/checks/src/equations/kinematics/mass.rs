@@ -1,6 +1,11 @@
 //! Eqs 18-22: inertia, angular momentum and the equations of motion, against point-mass bodies.
 
-use super::*;
+use super::rolling::A;
+use super::{
+    at, identity, kin1, kin2, kin_bindings, lowest_rim_point, printed_relation, printed_relations,
+    rate_scale, sample, Bench, Bindings, Cubic, Dual64, Finding, History, Kin, Method, Rng, Stated,
+    Tolerance, Value, Vector3, Worst, D2, M, RATE, S, THREE, V,
+};
 
 /// A thin body as point masses in its body frame (plane z = 0, symmetry axis z), with the
 /// inertia factor the paper states (uniform 1/4, ring 1/2) or derived here by hand

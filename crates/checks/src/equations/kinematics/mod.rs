@@ -43,9 +43,9 @@ mod rolling;
 #[cfg(test)]
 mod tests;
 
-use axes::*;
-use mass::*;
-use rolling::*;
+use axes::{eq1, eq10, eq11, eq2, eq3, eq4, eq5, eq6, eq7, eq8, eq9};
+use mass::{eq18, eq19, eq20, eq21, eq22};
+use rolling::{eq12, eq13, eq14, eq15, eq16, eq17, v_cm_rolling, A};
 
 /// The checks of this part of the paper.
 pub const EQUATIONS: &[Equation] = &[

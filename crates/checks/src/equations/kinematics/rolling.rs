@@ -1,6 +1,10 @@
 //! Eqs 12-17: rolling without slipping, the centre's velocity and its circle, steady motion.
 
-use super::*;
+use super::{
+    at, identity, kin1, kin2, kin_bindings, printed_kinematics, printed_relations, rate_scale,
+    sample, Bench, Bindings, Cubic, Dual64, Finding, History, Kin, Rng, Stated, Vector3, Worst,
+    ONE, POINTS, RATE, R_HAT, THREE, V,
+};
 
 /// Disk radius of the toy (m); rolling checks use it so that velocities have their real size.
 pub(super) const A: f64 = 0.0375;

@@ -1,6 +1,7 @@
 //! Unit tests of the kinematics checks: each passes as printed and fails when its claim moves.
 
 use super::*;
+use crate::equations::kinematics::rolling::steady_sweep;
 use crate::finding::Verdict;
 
 fn verdicts(number: u32) -> (Finding, Finding) {

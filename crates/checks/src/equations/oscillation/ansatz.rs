@@ -1,6 +1,9 @@
 //! Eqs 44-46: the small-oscillation ansatz, against integrations along the mode.
 
-use super::*;
+use super::{
+    mode, rolling, solve, state, steady_bindings, steady_ref, varpi2, Bench, Extras, Finding,
+    Method, Model, Problem, Rolling, Tolerance, Worst, PI,
+};
 use physics::disk::toy_sized;
 
 /// The ansatz of eqs 44-46 checked on integrations: started from a stable steady motion

@@ -1,6 +1,10 @@
 //! Eqs 47-51: the frequency of small oscillations and the ratios of their amplitudes, against the model.
 
-use super::*;
+use super::{
+    at, eq50_claim, measured_frequency, mode, printed_relations, printed_varpi2, rolling, scale,
+    state, steady_bindings, sweep, varpi2, Bench, Finding, Method, Motion, Tolerance, Worst,
+    EPSILON, FRAC_PI_2, KS,
+};
 use physics::disk::toy_sized;
 
 /// Eq 50: the squared frequency of small oscillations about a general steady motion.

@@ -111,10 +111,10 @@ mod stability;
 #[cfg(test)]
 mod tests;
 
-use ansatz::*;
-use frequency::*;
-use ratios::*;
-use stability::*;
+use ansatz::{eq44, eq45, eq46};
+use frequency::{eq47, eq48, eq49, eq50, eq51};
+use ratios::{eq54, eq55, eq56, eq57, eq58};
+use stability::{eq52, eq53};
 
 /// $\varpi^2$ of the linearized model at state `y`: the sum of the principal 2x2 minors of the
 /// Jacobian (the product of the two non-zero eigenvalues $\pm i\varpi$).

@@ -1,6 +1,9 @@
 //! Eqs 54-58: the oscillation-to-precession ratio in its general and small-tilt forms, against the linearization.
 
-use super::*;
+use super::{
+    at, printed_varpi2, state, steady_bindings, steady_ref, sweep, term_scale, varpi2, Bench,
+    Bindings, Disk, Finding, Method, Tolerance, Worst, KS,
+};
 use physics::disk::toy_sized;
 
 /// Eq 54, $\dfrac{\varpi^2}{\Omega_0^2}(k+1) = 3k\cos^2\alpha_0 + \sin^2\alpha_0 + \dfrac{b}{a}

@@ -1,6 +1,11 @@
 //! Eqs 52-53: where steady motion turns unstable, against integrations.
 
-use super::*;
+use super::frequency::worse;
+use super::{
+    add_threshold, bisect, printed_threshold, solve, varpi2, Bench, Bindings, Disk, Ending, Event,
+    Extras, Finding, Method, Model, Motion, Problem, Rolling, State, Tolerance, Worst, FRAC_PI_2,
+    KS,
+};
 use physics::disk::toy_sized;
 
 /// Integrations last $N$ natural times $\sqrt{a/g}$. The upright disk is kicked with a small

@@ -1,6 +1,14 @@
 //! Eqs 27-32 and 38-40: steady motion's rates, radii and thresholds, against motions solved and measured on the model.
 
-use super::*;
+use super::super::steady_reference::{
+    measure_b_r, rho_edge, rhos, steady_bindings, steady_drift, steady_exists, steady_ref, ALPHAS,
+    KS,
+};
+use super::{
+    add_threshold, at, contact_force, printed_relations, printed_threshold, rates, solve,
+    solve_printed, solve_printed_with, Bench, Bindings, Disk, Extras, Finding, Method, Model,
+    Motion, Problem, Rolling, Tolerance, Worst, PI,
+};
 use physics::disk::toy_sized;
 
 /// Eq 27, the steady balance

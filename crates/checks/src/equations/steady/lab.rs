@@ -1,6 +1,10 @@
 //! Eqs 33-37: section 5's vector relations at b = 0, against the lab-frame Newton-Euler model.
 
-use super::*;
+use super::super::steady_reference::{steady_ref, KS};
+use super::{
+    printed_relations, solve, Bench, Bindings, Contact, Disk, Finding, LabFrame, Method, Problem,
+    Snapshot, State, Tolerance, Vector3, Worst, PI,
+};
 use numerics::memo::{bits, Memo};
 use physics::disk::toy_sized;
 use std::sync::Arc;

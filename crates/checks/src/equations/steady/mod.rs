@@ -18,7 +18,6 @@
 //! The steady motions themselves come from `steady_reference.rs`, shared with `slippage.rs` and
 //! `oscillation.rs`.
 
-use super::steady_reference::*;
 use super::{
     add_threshold, printed_relations, printed_threshold, solve_printed, solve_printed_with, Bench,
     Equation,
@@ -38,8 +37,8 @@ mod lab;
 #[cfg(test)]
 mod tests;
 
-use circles::*;
-use lab::*;
+use circles::{eq27, eq28, eq29, eq30, eq31, eq32, eq38, eq39, eq40};
+use lab::{eq33, eq34, eq35, eq36, eq37};
 
 /// The checks of this part of the paper.
 pub const EQUATIONS: &[Equation] = &[

@@ -1,6 +1,10 @@
 //! Unit tests of the steady-motion checks.
 
 use super::*;
+use crate::equations::steady::lab::LabSteady;
+use crate::equations::steady::lab::LAB_ALPHAS;
+use crate::equations::steady_reference::steady_ref;
+use crate::equations::steady_reference::KS;
 use crate::finding::Verdict;
 
 fn run(number: u32) -> (Finding, Finding) {

@@ -1,6 +1,7 @@
 //! Drawing figure 1's shapes on a plotters backend: projection, lines, arrows, labels, dashes.
 
-use super::*;
+use super::{register_font, FigureError, Geometry, HPos, Line, Pos, Shape, VPos, V3};
+use plotters::prelude::*;
 
 impl Geometry {
     /// Draws the figure on any plotters backend; `scale` multiplies fonts and line widths.

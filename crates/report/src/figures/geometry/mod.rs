@@ -20,7 +20,7 @@ use crate::figures::FigureError;
 use nalgebra::Vector3;
 use physics::disk::Disk;
 use physics::model::steady::steady_motion;
-use plotters::prelude::*;
+
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use serde::Serialize;
 
