@@ -2,6 +2,7 @@
 //! fitting window, the fits of eqs 84 and 85, and (for a synthetic trace) how far they land
 //! from the truth.
 
+pub use crate::analysis_settings::AnalysisSettings;
 use crate::clean::{remove_glitches, remove_hum};
 use crate::crossover::{fit_crossover, CrossoverFit};
 use crate::early_end::{early_end, EarlyEnd};
@@ -11,52 +12,16 @@ use crate::law_stability::{later_half, LawStability};
 use crate::models::{compare_laws, Comparison};
 use crate::peak::Peak;
 use crate::peaks::{find_peaks, noise_level, PeakSettings};
-use crate::plausibility::{Evidence, Plausibility, Verdict};
+use crate::plausibility::{Evidence, Verdict};
 use crate::rates::{accelerations, cycles, Acceleration, Cycle};
 use crate::trace::{Trace, Truth};
 use crate::window::fitting_window;
 pub use crate::window::Window;
 use files::atomic::write_atomically;
-use serde::{Deserialize, Serialize};
+use serde::Serialize;
 use std::fmt;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
-
-/// How to analyse.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct AnalysisSettings {
-    /// Peak finding.
-    pub peaks: PeakSettings,
-    /// Cycles shorter than this many samples are left out of the fits (timing by interpolation
-    /// between samples degrades as the period nears the sample interval).
-    pub min_samples_per_period: f64,
-    /// The last peaks before the signal ends are left out: there the law breaks (the disk
-    /// leaves the table, or its tilt is too small to modulate the light).
-    pub drop_last: usize,
-    /// Cycles whose pulses span less than this many noise deviations are left out: timing
-    /// from faint edges is biased by quantisation and by the nonlinearity of the crossing.
-    pub min_snr: f64,
-    /// Fit only cycles whose middle is at or after this time (s).
-    pub t_from: Option<f64>,
-    /// Fit only cycles whose middle is at or before this time (s).
-    pub t_to: Option<f64>,
-    /// The checks that a fit describes a spin-down (see [`Plausibility`]).
-    pub plausibility: Plausibility,
-}
-
-impl Default for AnalysisSettings {
-    fn default() -> Self {
-        Self {
-            peaks: PeakSettings::default(),
-            min_samples_per_period: 10.0,
-            drop_last: 3,
-            min_snr: 20.0,
-            t_from: None,
-            t_to: None,
-            plausibility: Plausibility::default(),
-        }
-    }
-}
 
 /// How far the fits land from a synthetic trace's truth, in their own uncertainties.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]

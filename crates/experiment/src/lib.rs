@@ -22,6 +22,7 @@
 //! The paper's "Hz" are angular frequencies, rad/s ($\Omega_i = 2\pi/\Delta t$); so are ours.
 
 pub mod analysis;
+pub mod analysis_settings;
 pub mod artifacts;
 pub mod audio;
 pub mod band;

@@ -2,7 +2,7 @@
 //! out (anomalous, too short, too faint, past the end of the spin-down, or outside the times
 //! asked for).
 
-use crate::analysis::AnalysisSettings;
+use crate::analysis_settings::AnalysisSettings;
 use crate::error::ExperimentError;
 use crate::peak::Peak;
 use crate::rates::Cycle;
