@@ -301,7 +301,7 @@ fn the_length_rule_would_catch_a_long_file() {
 }
 
 /// The check modules of src/equations, one per part of the paper. The shared machinery they
-/// may all use (mod.rs's harness, spin_down.rs for sec. 11, steady_reference.rs for steady
+/// may all use (mod.rs's harness, spin_down_reference.rs for sec. 11, steady_reference.rs for steady
 /// motions) is not among them.
 const CHECKS: &[&str] = &[
     "air_film",

@@ -24,7 +24,7 @@
 //! table ($a|\ddot\alpha| < g$ along the film's own law, $\alpha^5 > (2/9)K^2a/g$ for
 //! $\alpha^3 = K\tau$).
 
-use super::spin_down::steady_precession;
+use super::spin_down_reference::steady_precession;
 use super::{solve_printed, Bench, Equation};
 use crate::finding::{Finding, Headline, Method, Tolerance, Verdict, Worst};
 use num_dual::Dual64;
@@ -73,7 +73,7 @@ fn steady_energy_slope(d: &Disk, alpha: f64) -> f64 {
         precession: steady_precession(d, a),
         spin: Dual64::from(0.0),
     };
-    super::spin_down::energy(d, &m).eps
+    super::spin_down_reference::energy(d, &m).eps
 }
 
 /// The adiabatic descent with the tilt as the independent variable: the state is

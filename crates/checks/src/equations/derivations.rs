@@ -8,7 +8,7 @@
 //! Only the equations that fail and have a failing premise need this (an equation that fails
 //! while all its premises hold cannot follow from them): the chain of section 11.
 
-use super::spin_down::{derivation_from_eq76, law_bindings, printed_c, SMALL_ALPHAS};
+use super::spin_down_reference::{derivation_from_eq76, law_bindings, printed_c, SMALL_ALPHAS};
 use super::{last_side, printed_relations, solve_printed, worst_order, Bench, Derivation};
 use crate::finding::{Finding, Method, Tolerance, Worst};
 use num_dual::Dual64;

@@ -14,7 +14,7 @@ pub mod kinematics;
 pub mod motion;
 pub mod oscillation;
 pub mod slippage;
-pub mod spin_down;
+pub mod spin_down_reference;
 pub mod steady;
 mod steady_reference;
 

@@ -12,7 +12,7 @@
 //! - eq 76's factor 2/5 should be 2/3 (adiabatic energy balance), so the $C$ of eq 79 is 5/3
 //!   times too large for the dissipative disk.
 
-use super::spin_down::{
+use super::spin_down_reference::{
     descent, energy, law_bindings, slope, steady_precession, time_remaining_on_model, PrintedLaw,
     BETAS, SMALL_ALPHAS,
 };
