@@ -61,31 +61,17 @@ fn refused_eq1(tag: &str, latex: &str, says: &str) {
 
 #[test]
 fn latex_nested_thousands_deep_is_refused_without_overflowing_the_stack() {
-    let parens = format!("{}a{}", "(".repeat(4000), ")".repeat(4000));
-    refused_eq1(
-        "parens4000",
-        &format!(r"\mathbf{{a}} = {parens}"),
-        "characters",
-    );
-    let fracs = format!("{}1{}", r"\frac{1}{".repeat(3000), "}".repeat(3000));
-    refused_eq1(
-        "frac3000",
-        &format!(r"\mathbf{{a}} = {fracs}"),
-        "characters",
-    );
-    // Within the size limit, the depth limit refuses, at the group past it.
-    let parens = format!("{}a{}", "(".repeat(300), ")".repeat(300));
-    refused_eq1(
-        "parens300",
-        &format!(r"\mathbf{{a}} = {parens}"),
-        "nested more than 256",
-    );
-    let fracs = format!("{}1{}", r"\frac{1}{".repeat(300), "}".repeat(300));
-    refused_eq1(
-        "frac300",
-        &format!(r"\mathbf{{a}} = {fracs}"),
-        "nested more than 256",
-    );
+    let parens = |n: usize| format!("{}a{}", "(".repeat(n), ")".repeat(n));
+    let fracs = |n: usize| format!("{}1{}", r"\frac{1}{".repeat(n), "}".repeat(n));
+    // Past the size limit the size is refused; within it, the depth, at the group past it.
+    for (tag, nested, says) in [
+        ("parens4000", parens(4000), "characters"),
+        ("frac3000", fracs(3000), "characters"),
+        ("parens300", parens(300), "nested more than 256"),
+        ("frac300", fracs(300), "nested more than 256"),
+    ] {
+        refused_eq1(tag, &format!(r"\mathbf{{a}} = {nested}"), says);
+    }
     let sum = vec!["a"; 1000].join(" + ");
     refused_eq1(
         "sum1000",
