@@ -61,6 +61,44 @@ fn small() -> Vec<f64> {
 /// the relative error of the radial part, together with that of the vertical part ($mg$,
 /// exact to round-off) and the along-$\hat{\mathbf 2}$ part (zero) relative to $mg$.
 fn eq41(b: &Bench) -> Finding {
+    small_b_order(
+        "steady contact force for b << a",
+        |d, k, alpha0, sign, x| {
+            let rho = sign * x;
+            let [fz, fr, f2] = force(d, alpha0, rho);
+            let mg = d.m * d.g;
+            // The printed force in a frame with r-hat along x, 2-hat along y.
+            let bind = Bindings::new()
+                .scalar("m", d.m)
+                .scalar("g", d.g)
+                .scalar("a", d.a)
+                .scalar("k", k)
+                .scalar("b", rho * d.a)
+                .scalar("alpha_0", alpha0)
+                .vector("z_hat", Vector3::z())
+                .vector("r_hat", Vector3::x());
+            let eq = b.paper.equation(41);
+            let printed = eq
+                .eval(eq.relations()[0].rhs, &bind)
+                .and_then(|v| v.vector())
+                .map_or([f64::NAN; 3], |v| [v.x, v.y, v.z]);
+            let (cr, c2, cz) = (b.claim(printed[0]), printed[1], b.claim(printed[2]));
+            let e = ((cr - fr) / fr)
+                .abs()
+                .max((cz - fz).abs() / mg)
+                .max((c2 - f2).abs() / mg);
+            if e.is_nan() {
+                f64::INFINITY
+            } else {
+                e
+            }
+        },
+    )
+}
+
+/// The worst first-order fit, over k = 1/4, 1/2, 0.9, tilts 0.3 and 1.0 and both signs of $b$,
+/// of `error(disk, k, alpha0, sign, b/a)` against $b/a = 10^{-2}\dots10^{-6}$.
+fn small_b_order(compared: &str, error: impl Fn(&Disk, f64, f64, f64, f64) -> f64) -> Finding {
     let small = small();
     let mut fits = Vec::new();
     for k in [0.25, 0.5, 0.9] {
@@ -69,40 +107,11 @@ fn eq41(b: &Bench) -> Finding {
             for sign in [1.0, -1.0] {
                 let errs: Vec<f64> = small
                     .iter()
-                    .map(|&x| {
-                        let rho = sign * x;
-                        let [fz, fr, f2] = force(&d, alpha0, rho);
-                        let mg = d.m * d.g;
-                        // The printed force in a frame with r-hat along x, 2-hat along y.
-                        let bind = Bindings::new()
-                            .scalar("m", d.m)
-                            .scalar("g", d.g)
-                            .scalar("a", d.a)
-                            .scalar("k", k)
-                            .scalar("b", rho * d.a)
-                            .scalar("alpha_0", alpha0)
-                            .vector("z_hat", Vector3::z())
-                            .vector("r_hat", Vector3::x());
-                        let eq = b.paper.equation(41);
-                        let printed = eq
-                            .eval(eq.relations()[0].rhs, &bind)
-                            .and_then(|v| v.vector())
-                            .map_or([f64::NAN; 3], |v| [v.x, v.y, v.z]);
-                        let (cr, c2, cz) = (b.claim(printed[0]), printed[1], b.claim(printed[2]));
-                        let e = ((cr - fr) / fr)
-                            .abs()
-                            .max((cz - fz).abs() / mg)
-                            .max((c2 - f2).abs() / mg);
-                        if e.is_nan() {
-                            f64::INFINITY
-                        } else {
-                            e
-                        }
-                    })
+                    .map(|&x| error(&d, k, alpha0, sign, x))
                     .collect();
                 fits.push((
                     format!("k = {k}, alpha0 = {alpha0}, sign of b {sign}"),
-                    Finding::from_order("steady contact force for b << a", &small, &errs, 1.0),
+                    Finding::from_order(compared, &small, &errs, 1.0),
                 ));
             }
         }
@@ -119,48 +128,28 @@ fn eq41(b: &Bench) -> Finding {
 /// against $b/a = 10^{-2}\dots10^{-6}$ (claimed order 1; for $b > 0$ the bound over-states
 /// the need, for $b < 0$ it under-states it).
 fn eq42(b: &Bench) -> Finding {
-    let small = small();
-    let mut fits = Vec::new();
-    for k in [0.25, 0.5, 0.9] {
-        let d = toy_sized(k);
-        for alpha0 in [0.3f64, 1.0] {
-            for sign in [1.0, -1.0] {
-                let errs: Vec<f64> = small
-                    .iter()
-                    .map(|&x| {
-                        let mu = needed_mu(&d, alpha0, sign * x);
-                        let bind = Bindings::new()
-                            .scalar("a", d.a)
-                            .scalar("k", k)
-                            .scalar("b", sign * x * d.a)
-                            .scalar("alpha_0", alpha0);
-                        // Direction: half the need must be refused, one and a half allowed.
-                        let printed =
-                            printed_threshold(b, 42, "mu", &bind, (0.0, 1e3), [0.5 * mu, 1.5 * mu]);
-                        if printed.holds != [false, true] {
-                            return f64::INFINITY;
-                        }
-                        let e = ((b.claim(printed.edge) - mu) / mu).abs();
-                        if e.is_nan() {
-                            f64::INFINITY
-                        } else {
-                            e
-                        }
-                    })
-                    .collect();
-                fits.push((
-                    format!("k = {k}, alpha0 = {alpha0}, sign of b {sign}"),
-                    Finding::from_order(
-                        "friction needed in steady motion, b << a",
-                        &small,
-                        &errs,
-                        1.0,
-                    ),
-                ));
+    small_b_order(
+        "friction needed in steady motion, b << a",
+        |d, k, alpha0, sign, x| {
+            let mu = needed_mu(d, alpha0, sign * x);
+            let bind = Bindings::new()
+                .scalar("a", d.a)
+                .scalar("k", k)
+                .scalar("b", sign * x * d.a)
+                .scalar("alpha_0", alpha0);
+            // Direction: half the need must be refused, one and a half allowed.
+            let printed = printed_threshold(b, 42, "mu", &bind, (0.0, 1e3), [0.5 * mu, 1.5 * mu]);
+            if printed.holds != [false, true] {
+                return f64::INFINITY;
             }
-        }
-    }
-    super::worst_order(fits)
+            let e = ((b.claim(printed.edge) - mu) / mu).abs();
+            if e.is_nan() {
+                f64::INFINITY
+            } else {
+                e
+            }
+        },
+    )
 }
 
 /// Eq 43, $\mu \ge \dfrac{\cot\alpha_0}{2k+1}$ for negative $b$.

@@ -175,13 +175,7 @@ fn run_case(
         .map(|(_, y)| tilt(y))
         .fold(f64::INFINITY, f64::min);
     let highest = run.y.iter().map(tilt).fold(f64::NEG_INFINITY, f64::max);
-    let slip_time = run
-        .t
-        .windows(2)
-        .zip(&run.mode)
-        .filter(|(_, m)| m.name() == "slip")
-        .map(|(t, _)| t[1] - t[0])
-        .sum();
+    let slip_time = run.slip_time();
     Ok(RisingCase {
         contact,
         mu: model.friction.mu,

@@ -106,13 +106,7 @@ pub fn spiral(
             (c.x, c.y)
         })
         .collect();
-    let slip_time = run
-        .t
-        .windows(2)
-        .zip(&run.mode)
-        .filter(|(_, m)| m.name() == "slip")
-        .map(|(t, _)| t[1] - t[0])
-        .sum();
+    let slip_time = run.slip_time();
     let alpha_end = run
         .y
         .last()

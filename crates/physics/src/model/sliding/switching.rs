@@ -24,6 +24,18 @@ use nalgebra::Vector3;
 /// A run of the sliding model.
 pub type SlidingRun = HybridSolution<Mode, 14>;
 
+impl SlidingRun {
+    /// The time the run spent slipping (s): the steps that start in a slip mode.
+    pub fn slip_time(&self) -> f64 {
+        self.t
+            .windows(2)
+            .zip(&self.mode)
+            .filter(|(_, m)| m.name() == "slip")
+            .map(|(t, _)| t[1] - t[0])
+            .sum()
+    }
+}
+
 /// The names of the guards, as they appear in the switch log.
 pub mod guard {
     /// Stick ends: the friction needed reaches the cone.
