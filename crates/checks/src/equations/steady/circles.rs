@@ -65,13 +65,10 @@ pub(super) fn eq27(b: &Bench) -> Finding {
     .in_unit("1")
 }
 
-/// Eq 28, $\omega_{10} = \frac{b}{a}\Omega_0 = \Omega_0\left(\frac{r}{a} - \cos\alpha_0\right)$.
-///
-/// Integration: steady motions solved from the model (Newton on eq 24); $b$ and $r$ measured on
-/// the integrated path of the centre of mass; both forms of the claim are compared with the
-/// state's $\omega_{10}$ (relative to $|\Omega_0|$, since $\omega_{10}$ vanishes at $b = 0$).
-pub(super) fn eq28(b: &Bench) -> Finding {
-    let mut w = Worst::default();
+/// Every steady motion of the sweep (the inertia factors [`KS`], the tilts [`ALPHAS`], the
+/// ratios of `rhos`) that the model has, with $b$ and $r$ measured on its integrated path:
+/// `visit(disk, k, alpha0, rho, motion, b, r)`.
+fn measured_steady(b: &Bench, mut visit: impl FnMut(&Disk, f64, f64, f64, &Motion, f64, f64)) {
     for k in KS {
         let d = toy_sized(k);
         for alpha0 in ALPHAS {
@@ -80,17 +77,29 @@ pub(super) fn eq28(b: &Bench) -> Finding {
                     continue;
                 };
                 let (bb, r) = measure_b_r(b, &d, &m);
-                let bind = steady_bindings(&d, alpha0)
-                    .scalar("b", bb)
-                    .scalar("r", r)
-                    .scalar("Omega_0", m.precession)
-                    .scalar("omega_10", m.spin);
-                printed_relations(b, 28, &bind, m.precession.abs(), &mut w, &|| {
-                    format!("{}; b and r measured on the path", at(k, alpha0, rho))
-                });
+                visit(&d, k, alpha0, rho, &m, bb, r);
             }
         }
     }
+}
+
+/// Eq 28, $\omega_{10} = \frac{b}{a}\Omega_0 = \Omega_0\left(\frac{r}{a} - \cos\alpha_0\right)$.
+///
+/// Integration: steady motions solved from the model (Newton on eq 24); $b$ and $r$ measured on
+/// the integrated path of the centre of mass; both forms of the claim are compared with the
+/// state's $\omega_{10}$ (relative to $|\Omega_0|$, since $\omega_{10}$ vanishes at $b = 0$).
+pub(super) fn eq28(b: &Bench) -> Finding {
+    let mut w = Worst::default();
+    measured_steady(b, |d, k, alpha0, rho, m, bb, r| {
+        let bind = steady_bindings(d, alpha0)
+            .scalar("b", bb)
+            .scalar("r", r)
+            .scalar("Omega_0", m.precession)
+            .scalar("omega_10", m.spin);
+        printed_relations(b, 28, &bind, m.precession.abs(), &mut w, &|| {
+            format!("{}; b and r measured on the path", at(k, alpha0, rho))
+        });
+    });
     Finding::from_worst(
         Method::Integration,
         "both printed relations of eq 28 at the model's steady spin and the measured b, r, relative to |Omega_0|",
@@ -107,23 +116,14 @@ pub(super) fn eq28(b: &Bench) -> Finding {
 /// 0.1-1.4, $b$ negative (half way to eq 30's edge found numerically), zero and positive.
 pub(super) fn eq29(b: &Bench) -> Finding {
     let mut w = Worst::default();
-    for k in KS {
-        let d = toy_sized(k);
-        for alpha0 in ALPHAS {
-            for rho in rhos(&d, alpha0) {
-                let Some(m) = steady_ref(&d, alpha0, rho) else {
-                    continue;
-                };
-                let (bb, r) = measure_b_r(b, &d, &m);
-                let bind = steady_bindings(&d, alpha0)
-                    .scalar("b", bb)
-                    .scalar("r", r)
-                    .scalar("Omega_0", m.precession);
-                let om2 = m.precession * m.precession;
-                printed_relations(b, 29, &bind, om2, &mut w, &|| at(k, alpha0, rho));
-            }
-        }
-    }
+    measured_steady(b, |d, k, alpha0, rho, m, bb, r| {
+        let bind = steady_bindings(d, alpha0)
+            .scalar("b", bb)
+            .scalar("r", r)
+            .scalar("Omega_0", m.precession);
+        let om2 = m.precession * m.precession;
+        printed_relations(b, 29, &bind, om2, &mut w, &|| at(k, alpha0, rho));
+    });
     Finding::from_worst(
         Method::Integration,
         "both printed forms of eq 29 at the measured b and r against the model's steady Omega_0^2",
