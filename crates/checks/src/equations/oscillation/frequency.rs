@@ -5,7 +5,8 @@ use super::{
     state, steady_bindings, sweep, varpi2, Bench, Finding, Method, Motion, Tolerance, Worst,
     EPSILON, FRAC_PI_2, KS,
 };
-use physics::disk::toy_sized;
+use nalgebra::Complex;
+use physics::disk::{toy_sized, Disk};
 
 /// Eq 50: the squared frequency of small oscillations about a general steady motion.
 ///
@@ -85,15 +86,25 @@ pub(super) fn eq48(b: &Bench) -> Finding {
     ratio_check(b, 48)
 }
 
+/// The small oscillation about the steady motion `m` of disk `d`: $\varpi^2 = e_2(J)$ and the
+/// $\Omega$ and $\omega_1$ entries of the mode's eigenvector relative to $\alpha$'s; `None` where
+/// the motion is unstable ($\varpi^2 \le 0$).
+fn oscillation_mode(d: &Disk, m: &Motion) -> Option<(f64, Complex<f64>, Complex<f64>)> {
+    let v2 = varpi2(d, &state(m));
+    if v2 <= 0.0 {
+        return None;
+    }
+    let j = rolling::jacobian(d, &state(m));
+    let (dl, ga) = mode(&j, v2.sqrt());
+    Some((v2, dl, ga))
+}
+
 pub(super) fn ratio_check(b: &Bench, which: u32) -> Finding {
     let mut w = Worst::default();
     sweep(|k, d, alpha0, rho, m| {
-        let v2 = varpi2(d, &state(m));
-        if v2 <= 0.0 {
+        let Some((_, dl, ga)) = oscillation_mode(d, m) else {
             return;
-        }
-        let j = rolling::jacobian(d, &state(m));
-        let (dl, ga) = mode(&j, v2.sqrt());
+        };
         let (om, w10) = (m.precession, m.spin);
         let sc = om.abs() / alpha0.sin() + w10.abs();
         // delta and gamma: the mode's entries relative to alpha's, times epsilon.
@@ -126,12 +137,9 @@ pub(super) fn ratio_check(b: &Bench, which: u32) -> Finding {
 pub(super) fn eq49(b: &Bench) -> Finding {
     let mut w = Worst::default();
     sweep(|k, d, alpha0, rho, m| {
-        let v2 = varpi2(d, &state(m));
-        if v2 <= 0.0 {
+        let Some((v2, dl, ga)) = oscillation_mode(d, m) else {
             return;
-        }
-        let j = rolling::jacobian(d, &state(m));
-        let (dl, ga) = mode(&j, v2.sqrt());
+        };
         let bind = steady_bindings(d, m)
             .scalar("delta", EPSILON * dl.re)
             .scalar("gamma", EPSILON * ga.re);
