@@ -9,6 +9,8 @@ use std::path::PathBuf;
 use std::process::Command;
 use std::sync::OnceLock;
 
+mod reading;
+
 type Built = (String, String, Vec<String>, String);
 
 fn built() -> &'static Built {

@@ -78,11 +78,11 @@ fn view(f: &Finding) -> FindingView {
     };
     FindingView {
         method: f.method.to_string(),
-        compared: f.compared.clone(),
+        compared: crate::number::prose(&f.compared),
         claimed: claimed.clone(),
         reference: reference.clone(),
-        error: format!("{:.2e}", f.error),
-        tolerance: format!("{:.1e}", f.tolerance.value),
+        error: crate::number::error(f.error),
+        tolerance: crate::number::error(f.tolerance.value),
         rule: f.tolerance.rule.clone(),
         verdict: if f.premises_failing.is_empty() {
             f.verdict.to_string()
@@ -90,7 +90,7 @@ fn view(f: &Finding) -> FindingView {
             format!("{} (fails: {})", f.verdict, f.premises_failing.join(", "))
         },
         class: class.into(),
-        at: f.at.clone(),
+        at: crate::number::prose(&f.at),
         figure: f
             .shown_by
             .as_deref()
@@ -143,20 +143,20 @@ fn failure_view(c: &Checked) -> Option<FailureView> {
     let (claimed, reference) = values(f);
     (f.verdict == Verdict::Fails).then(|| FailureView {
         name: c.subject.name(),
-        at: f.at.clone(),
+        at: crate::number::prose(&f.at),
         anchor: match &c.subject {
             Subject::Equation { number, .. } => format!("eq-{number}"),
             Subject::Claim { id } => format!("claim-{id}"),
         },
-        compared: f.compared.clone(),
+        compared: crate::number::prose(&f.compared),
         claimed: claimed.clone(),
         reference: reference.clone(),
-        error: format!("{:.2e}", f.error),
+        error: crate::number::error(f.error),
         headline: f
             .headline
             .as_ref()
             .map(|h| headline_text(h, &format!("paper {{}} ({})", h.paper_is))),
-        headline_at: f.headline.as_ref().map(|h| h.at.clone()),
+        headline_at: f.headline.as_ref().map(|h| crate::number::prose(&h.at)),
         row: match &f.headline {
             Some(h) => {
                 let unit = if h.unit == "1" {
@@ -245,8 +245,8 @@ fn precision_rows(study: &precision::Study) -> (Vec<PrecisionRow>, Vec<json::Pre
         rows.push(PrecisionRow {
             label: p.label.clone(),
             evaluations: p.evaluations,
-            final_error: format!("{:.2e}", p.final_error),
-            trajectory_error: format!("{:.2e}", p.trajectory_error),
+            final_error: crate::number::error(p.final_error),
+            trajectory_error: crate::number::error(p.trajectory_error),
         });
         records.push(json::PrecisionRecord {
             label: p.label.clone(),
@@ -317,7 +317,7 @@ pub fn from_results(
         if let (Some(law), Some(truth)) = (&e.motion_law, &e.trace.truth) {
             text.push_str(&experiment::motion_law::split(&e.analysis, law, truth));
         }
-        text
+        crate::number::prose(&text)
     };
     let figure_views = figure_views(&figures)?;
 
@@ -377,7 +377,7 @@ pub fn from_results(
                 .to_string()
         },
         friction: results.friction.as_ref().map_or_else(String::new, |f| {
-            super::sliding::text(&f.studies, bench.paper)
+            crate::number::prose(&super::sliding::text(&f.studies, bench.paper))
         }),
         scenes,
         document,
@@ -431,7 +431,7 @@ fn section_views(
             uncheckable: why,
             mutants: stored
                 .and_then(|st| st.of(e.number))
-                .map(checks::mutation::Score::describe),
+                .map(|m| crate::number::prose(&m.describe())),
         };
         match sections.iter_mut().find(|s| s.number == e.section) {
             Some(s) => s.equations.push(v),
@@ -478,7 +478,7 @@ fn claim_views(bench: &Bench, checked: &[Checked]) -> (Vec<ClaimView>, Unchecked
                 Some(v) => format!("{} {}", fmt_num(v), c.unit),
                 None => "(qualitative)".into(),
             },
-            how: c.how.clone(),
+            how: crate::number::prose(&c.how),
             rule: c
                 .rule
                 .as_ref()
@@ -505,7 +505,7 @@ fn figure_views(figures: &[Figure]) -> Result<Vec<FigureView>, ReportError> {
             Ok(FigureView {
                 name: f.name.to_string(),
                 title: f.title.clone(),
-                caption: f.caption.clone(),
+                caption: crate::number::prose(&f.caption),
                 svg: match &f.drawing {
                     Drawing::Premises(g) => crate::figures::premises::linked_svg(g, 760, 560),
                     d => d.to_svg(760, 480)?,
@@ -570,10 +570,10 @@ fn corrections_view(
             printed: v.printed.verdict,
             corrected: v.corrected.verdict,
             holds: v.corrected.holds,
-            detail: match v.corrected.headline {
+            detail: crate::number::prose(&match v.corrected.headline {
                 Some(h) => format!("{} ({})", headline_text(&h, "corrected {}"), h.at),
                 None => v.corrected.detail,
-            },
+            }),
         })
         .collect();
     let downstream = study.downstream.as_ref().map_or(String::new(), |d| {

@@ -10,6 +10,7 @@ pub mod fonts;
 pub mod json;
 pub mod mathml;
 pub mod mutation;
+pub mod number;
 pub mod pipeline;
 pub mod render;
 pub mod results;
@@ -302,21 +303,7 @@ pub struct SceneView {
     pub description: String,
 }
 
-/// A number with 6 significant digits, for reading.
+/// A number with 6 significant digits, for reading ([`number::significant`]).
 pub fn fmt_num(x: f64) -> String {
-    if x == 0.0 {
-        "0".into()
-    } else if !x.is_finite() {
-        format!("{x}")
-    } else if (1e-3..1e5).contains(&x.abs()) {
-        let digits = (5 - x.abs().log10().floor() as i32).max(0) as usize;
-        let s = format!("{x:.digits$}");
-        if s.contains('.') {
-            s.trim_end_matches('0').trim_end_matches('.').to_string()
-        } else {
-            s
-        }
-    } else {
-        format!("{x:.5e}")
-    }
+    number::significant(x)
 }

@@ -41,6 +41,7 @@ fn templates() -> Result<Tera, ReportError> {
     ])
     .map_err(|e| ReportError::Template(format!("a report template is broken: {e:?}")))?;
     t.register_filter("tex", super::tex::filter);
+    t.register_filter("num", super::number::filter);
     t.autoescape_on(vec![".html"]);
     Ok(t)
 }

@@ -60,7 +60,7 @@ fn tek04(e: &Synthetic) -> Figure {
     let plot = Plot::new(
         "Light signal, the whole 10 s record",
         "time t (s)",
-        "phototransistor signal V (V)",
+        "phototransistor signal (V)",
     )
     .with(Series::new("signal envelope", shown, Style::Line))
     .mark(Axis::X, t_end, format!("ends {t_end:.3} s"))
@@ -119,7 +119,7 @@ fn tek_zoom(e: &Synthetic, name: &'static str, span: f64) -> Result<Figure, Figu
     let mut plot = Plot::new(
         format!("Light signal, the last {span} s"),
         "time t (s)",
-        "phototransistor signal V (V)",
+        "phototransistor signal (V)",
     )
     .with(Series::new("signal", pts, Style::Line))
     .with(Series::new("peak times tᵢ", peaks, Style::Triangles))
