@@ -9,6 +9,7 @@ use std::path::PathBuf;
 use std::process::Command;
 use std::sync::OnceLock;
 
+mod layout;
 mod reading;
 
 type Built = (String, String, Vec<String>, String);

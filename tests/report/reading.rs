@@ -129,3 +129,41 @@ fn html_and_latex_hold_no_program_text() {
     let tex_bad = program_text(&tex.replace('\\', ""));
     assert!(tex_bad.is_empty(), "report.tex:\n{}", tex_bad.join("\n"));
 }
+
+/// The `<pre>` blocks of `html` longer than `most` lines that are not inside a `<details>`
+/// disclosure, each as its first line.
+fn long_open_blocks(html: &str, most: usize) -> Vec<String> {
+    let mut found = Vec::new();
+    let mut depth = 0usize;
+    let mut rest = html;
+    while let Some(p) = rest.find('<') {
+        rest = &rest[p..];
+        if rest.starts_with("<details") {
+            depth += 1;
+        } else if rest.starts_with("</details>") {
+            depth = depth.saturating_sub(1);
+        } else if rest.starts_with("<pre") {
+            let end = rest.find("</pre>").unwrap_or(rest.len());
+            let block = &rest[..end];
+            if depth == 0 && block.lines().count() > most {
+                found.push(block.lines().next().unwrap_or("").to_string());
+            }
+        }
+        rest = &rest[1..];
+    }
+    found
+}
+
+#[test]
+fn no_long_monospace_block_is_a_sections_body() {
+    let twenty_one = format!("<pre>{}</pre>", "x\n".repeat(21));
+    assert_eq!(long_open_blocks(&twenty_one, 20).len(), 1);
+    let hidden = format!("<details><summary>s</summary>{twenty_one}</details>");
+    assert!(long_open_blocks(&hidden, 20).is_empty());
+    let long = long_open_blocks(&built().0, 20);
+    assert!(
+        long.is_empty(),
+        "<pre> blocks over 20 lines outside <details>:\n{}",
+        long.join("\n")
+    );
+}

@@ -14,6 +14,7 @@ use crate::error::ReportError;
 use crate::figures::{self, Drawing, Figure};
 use crate::pipeline::{compute, RunConfig};
 use crate::results::{Results, Study};
+use crate::sliding_tables;
 use checks::check::{Checked, Subject, Tally};
 use checks::equations::{Bench, UNCHECKABLE_CLAIMS, UNCHECKABLE_EQUATIONS};
 use checks::finding::{Finding, Verdict};
@@ -349,6 +350,7 @@ pub fn from_results(
         },
     );
 
+    let studies = results.friction.as_ref().map(|f| &f.studies);
     let report = Report {
         paper: super::document::PAPER.into(),
         version: env!("CARGO_PKG_VERSION").into(),
@@ -379,6 +381,9 @@ pub fn from_results(
         friction: results.friction.as_ref().map_or_else(String::new, |f| {
             crate::number::prose(&super::sliding::text(&f.studies, bench.paper))
         }),
+        friction_summary: studies
+            .map_or(String::new(), |s| sliding_tables::summary(s, bench.paper)),
+        friction_tables: studies.map_or(Vec::new(), sliding_tables::tables),
         scenes,
         document,
     };

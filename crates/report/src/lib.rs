@@ -15,6 +15,8 @@ pub mod pipeline;
 pub mod render;
 pub mod results;
 pub mod sliding;
+pub mod sliding_tables;
+pub mod study_table;
 pub mod tex;
 
 use checks::check::Tally;
@@ -43,8 +45,12 @@ pub struct Report {
     pub experiment: String,
     /// The paper's own numbers of section 11, recomputed from its fitted constants.
     pub paper_numbers: String,
-    /// The friction studies (sliding model), as text tables.
+    /// The friction studies (sliding model): their full text output.
     pub friction: String,
+    /// The friction studies in a paragraph: what was run and found (empty when not computed).
+    pub friction_summary: String,
+    /// The friction studies' numbers as tables.
+    pub friction_tables: Vec<study_table::StudyTable>,
     /// The built-in scenes the figures and checks use.
     pub scenes: Vec<SceneView>,
     /// The same results for tools (`report.json`), with numbers as numbers.

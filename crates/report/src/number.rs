@@ -40,9 +40,15 @@ pub fn scientific(x: f64, digits: usize) -> String {
     }
 }
 
-/// An error or a tolerance: two significant digits in scientific notation.
+/// An error or a tolerance: three significant digits, in scientific notation below 1e-3 and
+/// from 1e4 on (`0.0245`, `1.39`, `8.12e-16`).
 pub fn error(x: f64) -> String {
-    scientific(x, 3)
+    if (1e-3..1e4).contains(&x.abs()) {
+        let places = (2 - x.abs().log10().floor() as i32).max(0) as usize;
+        trim_fraction(&format!("{x:.places$}"))
+    } else {
+        scientific(x, 3)
+    }
 }
 
 /// Drops the trailing zeros of a decimal fraction, and the point when nothing follows it.
@@ -211,6 +217,8 @@ mod tests {
         assert_eq!(significant(2.5e7), "2.5e7");
         assert_eq!(error(8.1234e-16), "8.12e-16");
         assert_eq!(error(1e-12), "1e-12");
+        assert_eq!(error(0.02449), "0.0245");
+        assert_eq!(error(1.39), "1.39");
     }
 
     #[test]
