@@ -309,17 +309,10 @@ pub fn from_results(
             .as_ref()
             .ok_or_else(|| missing(Study::Precision))?,
     );
-    let experiment = {
-        let e = results
-            .experiment
-            .as_ref()
-            .ok_or_else(|| missing(Study::Experiment))?;
-        let mut text = e.analysis.to_string();
-        if let (Some(law), Some(truth)) = (&e.motion_law, &e.trace.truth) {
-            text.push_str(&experiment::motion_law::split(&e.analysis, law, truth));
-        }
-        crate::number::prose(&text)
-    };
+    let synthetic = results
+        .experiment
+        .as_ref()
+        .ok_or_else(|| missing(Study::Experiment))?;
     let figure_views = figure_views(&figures)?;
 
     let scenes = BUILTIN
@@ -372,7 +365,9 @@ pub fn from_results(
         claims,
         figures: figure_views,
         precision: precision_rows,
-        experiment,
+        experiment: crate::experiment_section::text(synthetic),
+        experiment_summary: crate::experiment_section::summary(synthetic),
+        experiment_tables: vec![crate::experiment_section::table(synthetic)],
         paper_numbers: {
             let f = bench.paper.fit;
             experiment::numbers::numbers(f.beta, f.c_inv_root, physics::Disk::uniform(1.0).k)

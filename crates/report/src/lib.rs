@@ -5,6 +5,7 @@
 pub mod build;
 pub mod document;
 pub mod error;
+pub mod experiment_section;
 pub mod figures;
 pub mod fonts;
 pub mod json;
@@ -43,6 +44,10 @@ pub struct Report {
     pub precision: Vec<PrecisionRow>,
     /// The synthetic experiment of section 11: the analysis of a simulated light signal.
     pub experiment: String,
+    /// What the simulated experiment found, in a paragraph.
+    pub experiment_summary: String,
+    /// Its fits against the simulated model's truth.
+    pub experiment_tables: Vec<study_table::StudyTable>,
     /// The paper's own numbers of section 11, recomputed from its fitted constants.
     pub paper_numbers: String,
     /// The friction studies (sliding model): their full text output.

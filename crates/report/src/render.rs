@@ -31,6 +31,14 @@ fn templates() -> Result<Tera, ReportError> {
             include_str!("../../../templates/partials/finding.html.tera"),
         ),
         (
+            "partials/study_table.html",
+            include_str!("../../../templates/partials/study_table.html.tera"),
+        ),
+        (
+            "partials/study_table.tex",
+            include_str!("../../../templates/partials/study_table.tex.tera"),
+        ),
+        (
             "report.tex",
             include_str!("../../../templates/report.tex.tera"),
         ),

@@ -227,8 +227,8 @@ pub fn summary(s: &Studies, paper: &paper::Paper) -> String {
         .map(|r| r.mechanism.as_str())
         .collect();
     format!(
-        "Eq 42's bound on b differs from the largest b that rolls by {lo:.1} % to {hi:.0} % \
-        . On {held_below} of the {} tables with less friction than eq 43 requires, \
+        "Eq 42's bound on b differs from the largest b that rolls by {lo:.1} % to {hi:.0} %. \
+         On {held_below} of the {} tables with less friction than eq 43 requires, \
          part of the range of negative b still rolls. The spinning-down disk of eqs 80-81 \
          {}. Of the dissipation mechanisms, {} gives the paper's β = 2. {}",
         below.len(),
