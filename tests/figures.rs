@@ -263,3 +263,63 @@ fn every_character_of_every_figure_is_in_the_figure_font() {
     assert!(seen > 1000, "only {seen} characters of text found");
     assert_eq!(missing(&['α', 'Ω', '₀', '图']), vec!['图']);
 }
+
+/// The light signal's reference lines say which is the truth (the model's own end) and which
+/// the fit (eq 84's t0), each with its time.
+#[test]
+fn the_light_signals_marks_say_truth_or_fit() {
+    let wanted = ["tek01", "tek02", "tek04"];
+    let config = RunConfig::figures(Bench::default(), &wanted).expect("known");
+    let results = compute(&config, &|_| {}).expect("computes");
+    for f in figures::some(&wanted, &results).expect("builds") {
+        let Drawing::Plot(p) = &f.drawing else {
+            panic!("{} is not a plot", f.name);
+        };
+        let labels: Vec<&str> = p.options.marks.iter().map(|m| m.label.as_str()).collect();
+        assert!(
+            labels
+                .iter()
+                .all(|l| (l.starts_with("truth: ") || l.starts_with("fit: ")) && l.ends_with(" s")),
+            "{}: {labels:?}",
+            f.name
+        );
+        assert!(
+            labels.iter().any(|l| l.starts_with("truth: ")),
+            "{}: {labels:?}",
+            f.name
+        );
+        if f.name != "tek04" {
+            assert!(
+                labels.iter().any(|l| l.starts_with("fit: ")),
+                "{}: {labels:?}",
+                f.name
+            );
+        }
+    }
+}
+
+/// Every axis label names its quantity and, in brackets at its end, a unit (or
+/// "dimensionless") that is not the quantity's own symbol written again.
+#[test]
+fn every_axis_label_ends_with_its_unit_written_once() {
+    let mut bad = Vec::new();
+    for f in all() {
+        for (x, y) in axis_labels(&f) {
+            for label in [x, y] {
+                let unit = label
+                    .strip_suffix(')')
+                    .and_then(|l| l.rsplit_once(" ("))
+                    .map(|(quantity, unit)| (quantity.split_whitespace().last(), unit));
+                match unit {
+                    Some((Some(last), unit)) if last != unit => {}
+                    _ => bad.push(format!("{}: {label:?}", f.name)),
+                }
+            }
+        }
+    }
+    assert!(
+        bad.is_empty(),
+        "axis labels without a unit, or with it twice:\n{}",
+        bad.join("\n")
+    );
+}

@@ -9,6 +9,9 @@ use std::path::PathBuf;
 use std::process::Command;
 use std::sync::OnceLock;
 
+mod layout;
+mod reading;
+
 type Built = (String, String, Vec<String>, String);
 
 fn built() -> &'static Built {

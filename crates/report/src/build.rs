@@ -14,6 +14,7 @@ use crate::error::ReportError;
 use crate::figures::{self, Drawing, Figure};
 use crate::pipeline::{compute, RunConfig};
 use crate::results::{Results, Study};
+use crate::sliding_tables;
 use checks::check::{Checked, Subject, Tally};
 use checks::equations::{Bench, UNCHECKABLE_CLAIMS, UNCHECKABLE_EQUATIONS};
 use checks::finding::{Finding, Verdict};
@@ -78,11 +79,11 @@ fn view(f: &Finding) -> FindingView {
     };
     FindingView {
         method: f.method.to_string(),
-        compared: f.compared.clone(),
+        compared: crate::number::prose(&f.compared),
         claimed: claimed.clone(),
         reference: reference.clone(),
-        error: format!("{:.2e}", f.error),
-        tolerance: format!("{:.1e}", f.tolerance.value),
+        error: crate::number::error(f.error),
+        tolerance: crate::number::error(f.tolerance.value),
         rule: f.tolerance.rule.clone(),
         verdict: if f.premises_failing.is_empty() {
             f.verdict.to_string()
@@ -90,7 +91,7 @@ fn view(f: &Finding) -> FindingView {
             format!("{} (fails: {})", f.verdict, f.premises_failing.join(", "))
         },
         class: class.into(),
-        at: f.at.clone(),
+        at: crate::number::prose(&f.at),
         figure: f
             .shown_by
             .as_deref()
@@ -143,20 +144,20 @@ fn failure_view(c: &Checked) -> Option<FailureView> {
     let (claimed, reference) = values(f);
     (f.verdict == Verdict::Fails).then(|| FailureView {
         name: c.subject.name(),
-        at: f.at.clone(),
+        at: crate::number::prose(&f.at),
         anchor: match &c.subject {
             Subject::Equation { number, .. } => format!("eq-{number}"),
             Subject::Claim { id } => format!("claim-{id}"),
         },
-        compared: f.compared.clone(),
+        compared: crate::number::prose(&f.compared),
         claimed: claimed.clone(),
         reference: reference.clone(),
-        error: format!("{:.2e}", f.error),
+        error: crate::number::error(f.error),
         headline: f
             .headline
             .as_ref()
             .map(|h| headline_text(h, &format!("paper {{}} ({})", h.paper_is))),
-        headline_at: f.headline.as_ref().map(|h| h.at.clone()),
+        headline_at: f.headline.as_ref().map(|h| crate::number::prose(&h.at)),
         row: match &f.headline {
             Some(h) => {
                 let unit = if h.unit == "1" {
@@ -245,8 +246,8 @@ fn precision_rows(study: &precision::Study) -> (Vec<PrecisionRow>, Vec<json::Pre
         rows.push(PrecisionRow {
             label: p.label.clone(),
             evaluations: p.evaluations,
-            final_error: format!("{:.2e}", p.final_error),
-            trajectory_error: format!("{:.2e}", p.trajectory_error),
+            final_error: crate::number::error(p.final_error),
+            trajectory_error: crate::number::error(p.trajectory_error),
         });
         records.push(json::PrecisionRecord {
             label: p.label.clone(),
@@ -308,17 +309,10 @@ pub fn from_results(
             .as_ref()
             .ok_or_else(|| missing(Study::Precision))?,
     );
-    let experiment = {
-        let e = results
-            .experiment
-            .as_ref()
-            .ok_or_else(|| missing(Study::Experiment))?;
-        let mut text = e.analysis.to_string();
-        if let (Some(law), Some(truth)) = (&e.motion_law, &e.trace.truth) {
-            text.push_str(&experiment::motion_law::split(&e.analysis, law, truth));
-        }
-        text
-    };
+    let synthetic = results
+        .experiment
+        .as_ref()
+        .ok_or_else(|| missing(Study::Experiment))?;
     let figure_views = figure_views(&figures)?;
 
     let scenes = BUILTIN
@@ -349,6 +343,7 @@ pub fn from_results(
         },
     );
 
+    let studies = results.friction.as_ref().map(|f| &f.studies);
     let report = Report {
         paper: super::document::PAPER.into(),
         version: env!("CARGO_PKG_VERSION").into(),
@@ -370,15 +365,20 @@ pub fn from_results(
         claims,
         figures: figure_views,
         precision: precision_rows,
-        experiment,
+        experiment: crate::experiment_section::text(synthetic),
+        experiment_summary: crate::experiment_section::summary(synthetic),
+        experiment_tables: vec![crate::experiment_section::table(synthetic)],
         paper_numbers: {
             let f = bench.paper.fit;
             experiment::numbers::numbers(f.beta, f.c_inv_root, physics::Disk::uniform(1.0).k)
                 .to_string()
         },
         friction: results.friction.as_ref().map_or_else(String::new, |f| {
-            super::sliding::text(&f.studies, bench.paper)
+            crate::number::prose(&super::sliding::text(&f.studies, bench.paper))
         }),
+        friction_summary: studies
+            .map_or(String::new(), |s| sliding_tables::summary(s, bench.paper)),
+        friction_tables: studies.map_or(Vec::new(), sliding_tables::tables),
         scenes,
         document,
     };
@@ -431,7 +431,7 @@ fn section_views(
             uncheckable: why,
             mutants: stored
                 .and_then(|st| st.of(e.number))
-                .map(checks::mutation::Score::describe),
+                .map(|m| crate::number::prose(&m.describe())),
         };
         match sections.iter_mut().find(|s| s.number == e.section) {
             Some(s) => s.equations.push(v),
@@ -478,7 +478,7 @@ fn claim_views(bench: &Bench, checked: &[Checked]) -> (Vec<ClaimView>, Unchecked
                 Some(v) => format!("{} {}", fmt_num(v), c.unit),
                 None => "(qualitative)".into(),
             },
-            how: c.how.clone(),
+            how: crate::number::prose(&c.how),
             rule: c
                 .rule
                 .as_ref()
@@ -505,7 +505,7 @@ fn figure_views(figures: &[Figure]) -> Result<Vec<FigureView>, ReportError> {
             Ok(FigureView {
                 name: f.name.to_string(),
                 title: f.title.clone(),
-                caption: f.caption.clone(),
+                caption: crate::number::prose(&f.caption),
                 svg: match &f.drawing {
                     Drawing::Premises(g) => crate::figures::premises::linked_svg(g, 760, 560),
                     d => d.to_svg(760, 480)?,
@@ -570,10 +570,10 @@ fn corrections_view(
             printed: v.printed.verdict,
             corrected: v.corrected.verdict,
             holds: v.corrected.holds,
-            detail: match v.corrected.headline {
+            detail: crate::number::prose(&match v.corrected.headline {
                 Some(h) => format!("{} ({})", headline_text(&h, "corrected {}"), h.at),
                 None => v.corrected.detail,
-            },
+            }),
         })
         .collect();
     let downstream = study.downstream.as_ref().map_or(String::new(), |d| {

@@ -5,15 +5,19 @@
 pub mod build;
 pub mod document;
 pub mod error;
+pub mod experiment_section;
 pub mod figures;
 pub mod fonts;
 pub mod json;
 pub mod mathml;
 pub mod mutation;
+pub mod number;
 pub mod pipeline;
 pub mod render;
 pub mod results;
 pub mod sliding;
+pub mod sliding_tables;
+pub mod study_table;
 pub mod tex;
 
 use checks::check::Tally;
@@ -40,10 +44,18 @@ pub struct Report {
     pub precision: Vec<PrecisionRow>,
     /// The synthetic experiment of section 11: the analysis of a simulated light signal.
     pub experiment: String,
+    /// What the simulated experiment found, in a paragraph.
+    pub experiment_summary: String,
+    /// Its fits against the simulated model's truth.
+    pub experiment_tables: Vec<study_table::StudyTable>,
     /// The paper's own numbers of section 11, recomputed from its fitted constants.
     pub paper_numbers: String,
-    /// The friction studies (sliding model), as text tables.
+    /// The friction studies (sliding model): their full text output.
     pub friction: String,
+    /// The friction studies in a paragraph: what was run and found (empty when not computed).
+    pub friction_summary: String,
+    /// The friction studies' numbers as tables.
+    pub friction_tables: Vec<study_table::StudyTable>,
     /// The built-in scenes the figures and checks use.
     pub scenes: Vec<SceneView>,
     /// The same results for tools (`report.json`), with numbers as numbers.
@@ -302,21 +314,7 @@ pub struct SceneView {
     pub description: String,
 }
 
-/// A number with 6 significant digits, for reading.
+/// A number with 6 significant digits, for reading ([`number::significant`]).
 pub fn fmt_num(x: f64) -> String {
-    if x == 0.0 {
-        "0".into()
-    } else if !x.is_finite() {
-        format!("{x}")
-    } else if (1e-3..1e5).contains(&x.abs()) {
-        let digits = (5 - x.abs().log10().floor() as i32).max(0) as usize;
-        let s = format!("{x:.digits$}");
-        if s.contains('.') {
-            s.trim_end_matches('0').trim_end_matches('.').to_string()
-        } else {
-            s
-        }
-    } else {
-        format!("{x:.5e}")
-    }
+    number::significant(x)
 }

@@ -31,6 +31,14 @@ fn templates() -> Result<Tera, ReportError> {
             include_str!("../../../templates/partials/finding.html.tera"),
         ),
         (
+            "partials/study_table.html",
+            include_str!("../../../templates/partials/study_table.html.tera"),
+        ),
+        (
+            "partials/study_table.tex",
+            include_str!("../../../templates/partials/study_table.tex.tera"),
+        ),
+        (
             "report.tex",
             include_str!("../../../templates/report.tex.tera"),
         ),
@@ -41,6 +49,7 @@ fn templates() -> Result<Tera, ReportError> {
     ])
     .map_err(|e| ReportError::Template(format!("a report template is broken: {e:?}")))?;
     t.register_filter("tex", super::tex::filter);
+    t.register_filter("num", super::number::filter);
     t.autoescape_on(vec![".html"]);
     Ok(t)
 }

@@ -154,7 +154,7 @@ const FALL_CLAIM: &str = "positive-b-unstable-large-tilt";
 
 /// The fall claim's printed tilt (deg) and its reading `within` (a relative distance), from
 /// `paper`'s claims; `None` if the claim or that reading is missing.
-fn fall_claim(paper: &paper::Paper) -> Option<(f64, f64)> {
+pub(crate) fn fall_claim(paper: &paper::Paper) -> Option<(f64, f64)> {
     let c = paper.claims.iter().find(|c| c.id == FALL_CLAIM)?;
     Some((c.claimed_value?, c.rule.as_ref()?.within?))
 }

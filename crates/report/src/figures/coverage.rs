@@ -38,7 +38,7 @@ pub fn coverage(c: &Coverage) -> Figure {
     let plot = Plot::new(
         "Coverage of the stated intervals",
         "z (stated standard uncertainties)",
-        "fraction inside +- z",
+        "fraction inside ± z (dimensionless)",
     )
     .with(Series::new("β", curve(&c.beta_pulls), Style::Points))
     .with(Series::new("t₀", curve(&c.t0_pulls), Style::Squares))
@@ -62,7 +62,7 @@ pub fn studies(stored: &[StoredCoverage]) -> Figure {
     let mut plot = Plot::new(
         "Coverage of the stated intervals",
         "z (stated standard uncertainties)",
-        "fraction inside ± z",
+        "fraction inside ± z (dimensionless)",
     );
     let styles = [
         (Style::Points, Style::Squares),

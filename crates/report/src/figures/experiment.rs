@@ -42,6 +42,15 @@ fn end_time(e: &Synthetic) -> f64 {
         .map_or(e.analysis.eq84.t0, |t| t.t_stop)
 }
 
+/// What the mark at [`end_time`] is: the truth (the model stops), or without one the fit.
+fn end_label(e: &Synthetic) -> &'static str {
+    if e.trace.truth.is_some() {
+        "truth: the model stops at"
+    } else {
+        "fit: eq 84's t₀ ="
+    }
+}
+
 /// The model's singular time t0 (record time), or the fitted one without a truth.
 fn true_t0(e: &Synthetic) -> f64 {
     e.trace.truth.as_ref().map_or(e.analysis.eq84.t0, |t| t.t0)
@@ -60,10 +69,10 @@ fn tek04(e: &Synthetic) -> Figure {
     let plot = Plot::new(
         "Light signal, the whole 10 s record",
         "time t (s)",
-        "phototransistor signal V (V)",
+        "phototransistor signal (V)",
     )
     .with(Series::new("signal envelope", shown, Style::Line))
-    .mark(Axis::X, t_end, format!("ends {t_end:.3} s"))
+    .mark(Axis::X, t_end, format!("{} {t_end:.3} s", end_label(e)))
     .legend_at(Legend::UpperLeft);
     // No fixed y range: the automatic one grows at the top just enough for the legend, at
     // every size the figure is drawn (the paper's 3 in included).
@@ -119,14 +128,14 @@ fn tek_zoom(e: &Synthetic, name: &'static str, span: f64) -> Result<Figure, Figu
     let mut plot = Plot::new(
         format!("Light signal, the last {span} s"),
         "time t (s)",
-        "phototransistor signal V (V)",
+        "phototransistor signal (V)",
     )
     .with(Series::new("signal", pts, Style::Line))
     .with(Series::new("peak times tᵢ", peaks, Style::Triangles))
-    .mark(Axis::X, t_end, "spin-down ends")
+    .mark(Axis::X, t_end, format!("{} {t_end:.3} s", end_label(e)))
     .legend_at(Legend::UpperLeft);
     if fit_t0 > from && fit_t0 < to {
-        plot = plot.mark(Axis::X, fit_t0, "fitted t₀");
+        plot = plot.mark(Axis::X, fit_t0, format!("fit: eq 84's t₀ = {fit_t0:.3} s"));
     }
     // No fixed y range (see tek04).
     let paper = if name == "tek01" { "tek01" } else { "tek02" };
@@ -476,7 +485,7 @@ pub fn residuals(a: &experiment::Analysis) -> Figure {
     let plot = Plot::new(
         "Whitened residuals of eq 84",
         "time t (s)",
-        "residual / sigma",
+        "residual / σ (dimensionless)",
     )
     .with(Series::new("cycles", pts, Style::Points))
     .mark(Axis::Y, 0.0, "")

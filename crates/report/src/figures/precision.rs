@@ -28,8 +28,8 @@ pub fn figure(study: &Study) -> Figure {
     ));
     let chart = Chart {
         title: "Work against precision, benchmark scene (10 s)".into(),
-        x_label: "right-hand-side evaluations".into(),
-        y_label: "largest relative error over the run".into(),
+        x_label: "right-hand-side evaluations (count)".into(),
+        y_label: "largest relative error over the run (dimensionless)".into(),
         x_log: true,
         y_log: true,
         series,

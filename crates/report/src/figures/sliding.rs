@@ -66,9 +66,13 @@ pub fn slip_stick(r: &SlipStick) -> Result<Figure, FigureError> {
     .log(false, true)
     .legend_at(Legend::Hidden)
     .with(Series::new("slip speed", window(slipping), Style::Line));
-    let force = Plot::new("Normal force", "time t (s)", "F_z / mg")
-        .legend_at(Legend::Hidden)
-        .with(Series::new("F_z / mg", window(normal), Style::Line));
+    let force = Plot::new(
+        "Normal force",
+        "time t (s)",
+        "normal force over weight F_z / m g (dimensionless)",
+    )
+    .legend_at(Legend::Hidden)
+    .with(Series::new("F_z / mg", window(normal), Style::Line));
     let energy = Plot::new("Energy", "time t (s)", "energy (J)")
         .legend_at(Legend::UpperRight)
         .y_range(0.0, 1.4 * e0)
