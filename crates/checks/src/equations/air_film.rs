@@ -334,14 +334,18 @@ pub fn eq83(b: &Bench) -> Finding {
         worst,
         film_tolerance(film),
         &scaling,
-    );
+    )
+    .in_unit("rad/s");
+    // Quoted at the window's highest tilt, where the film's last stage starts and the time
+    // remaining is longest.
     let (paper, reference) = (
-        printed_omega.first().copied().unwrap_or(f64::NAN),
-        steady_omega.first().copied().unwrap_or(f64::NAN),
+        printed_omega.last().copied().unwrap_or(f64::NAN),
+        steady_omega.last().copied().unwrap_or(f64::NAN),
     );
     let at = format!(
-        "t0 - t = {:.3e} s, the lowest tilt of the window: {}",
-        taus.first().copied().unwrap_or(f64::NAN),
+        "alpha = {:.2e} rad, the highest tilt of the window, t0 - t = {:.3e} s: {}",
+        descent.last().map_or(f64::NAN, |d| d.0),
+        taus.last().copied().unwrap_or(f64::NAN),
         window_words(&window)
     );
     f.with_headline(Headline::new(

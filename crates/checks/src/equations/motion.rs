@@ -243,7 +243,10 @@ fn eq26(b: &Bench) -> Finding {
                 .scalar("Omega", m.precession)
                 .scalar("omega_1", m.spin);
             printed_relations(b, 26, &bind, reference.abs(), &mut worst, &|| {
-                format!("k {k}, {m:?}")
+                format!(
+                    "k {k}, alpha = {} rad, alpha_dot = {} rad/s, Omega = {} rad/s, omega_1 = {} rad/s",
+                    m.alpha, m.alpha_dot, m.precession, m.spin
+                )
             });
         }
     }
