@@ -55,7 +55,7 @@ struct Case {
 fn cases() -> Vec<Case> {
     vec![
         Case {
-            name: "max_steps 5e7, as the README bounds it",
+            name: "max_steps 5e7, as docs/limits.md bounds it",
             scene: format!("{COIN}solver: {{ method: dop853, max_steps: 5e7 }}\n"),
             says: "lower max_steps to ",
             fix: |scene, msg| scene.replace("5e7", word_after(msg, "lower max_steps to ")),

@@ -131,8 +131,8 @@ pub(super) fn default_atol() -> f64 {
 pub(super) fn default_step() -> f64 {
     Settings::default().step
 }
-/// A whole number of at least 0 written as an integer or in floating-point form (`5e7`, as the
-/// README writes the limits).
+/// A whole number of at least 0 written as an integer or in floating-point form (`5e7`, as
+/// docs/limits.md writes the limits).
 fn whole_u32<'de, D: serde::Deserializer<'de>>(d: D) -> Result<u32, D::Error> {
     use serde::de::{Error, Unexpected};
     let x = f64::deserialize(d)?;
