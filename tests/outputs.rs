@@ -226,3 +226,39 @@ fn a_read_only_empty_directory_given_to_out_is_refused_and_kept() {
     assert!(names(&ro).is_empty());
     std::fs::set_permissions(&ro, std::fs::Permissions::from_mode(0o755)).ok();
 }
+
+/// The report command's closing line counts every equation, in every verdict the report
+/// tallies: the counts add up to the paper's 85 and agree with `check --json`.
+#[test]
+fn the_report_commands_count_is_every_equation() {
+    let dir = temp_dir("outputs", "count");
+    let out = dir.join("r");
+    let (ok, stdout, err) = cli_in(&dir, &["report", "--format", "json", "--out", "r"]);
+    assert!(ok, "{err}");
+    let line = stdout.lines().next().unwrap_or_default();
+    let (ok, json, err) = cli_in(&dir, &["check", "--json"]);
+    assert!(ok, "{err}");
+    let doc: serde_json::Value = serde_json::from_str(&json).expect("check --json");
+    let s = &doc["summary"]["equations"];
+    let n = |k: &str| s[k].as_u64().unwrap_or(0);
+    let total = [
+        "holds",
+        "holds_approximately",
+        "definitions",
+        "estimates",
+        "premise_fails",
+        "fails",
+        "not_run",
+    ]
+    .iter()
+    .map(|k| n(k))
+    .sum::<u64>();
+    assert_eq!(total, 85, "{s}");
+    assert!(
+        line.starts_with(&format!("{total} equations checked: {} hold,", n("holds"))),
+        "{line}"
+    );
+    assert!(line.contains(&format!("{} fail;", n("fails"))), "{line}");
+    assert!(out.join("report.json").is_file());
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -67,11 +67,20 @@ fn report(
     let written = shown;
     let t = &report.summary.equations;
     println!(
-        "{} equations checked: {} hold, {} hold approximately, {} definitions, {} fail; {} claims fail",
-        t.holds + t.approximately + t.definitions + t.fails + t.not_run,
+        "{} equations checked: {} hold, {} hold approximately, {} definitions, {} estimates \
+         (scaling confirmed), {} hold only under a premise that fails, {} fail; {} claims fail",
+        t.holds
+            + t.approximately
+            + t.definitions
+            + t.estimates
+            + t.premise_fails
+            + t.fails
+            + t.not_run,
         t.holds,
         t.approximately,
         t.definitions,
+        t.estimates,
+        t.premise_fails,
         t.fails,
         report.summary.claims.fails
     );
