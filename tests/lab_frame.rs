@@ -341,12 +341,7 @@ fn the_comparison_catches_a_wrong_term_in_eqs_23_to_25() {
         let sm = run(&mutant, y0, T_END);
         let paper_m: Vec<Motion> =
             sm.y.iter()
-                .map(|y| Motion {
-                    alpha: y[0],
-                    alpha_dot: y[1],
-                    precession: y[2],
-                    spin: y[3],
-                })
+                .map(|y| Motion::from_state(y.as_slice(), y[3]))
                 .collect();
         let worst =
             max_of(agreement(&format!("mutant {flaw:?}"), &disk, &lab_m, &paper_m).into_iter());
@@ -400,12 +395,7 @@ fn the_comparison_catches_a_missing_term_in_eq_61() {
     );
     let paper_m: Vec<Motion> =
         sm.y.iter()
-            .map(|y| Motion {
-                alpha: y[0],
-                alpha_dot: y[1],
-                precession: y[2],
-                spin: start.spin,
-            })
+            .map(|y| Motion::from_state(y.as_slice(), start.spin))
             .collect();
     let rel = agreement(
         "frictionless mutant, eq 61 without alpha_dot^2",

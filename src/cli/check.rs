@@ -1,12 +1,10 @@
 //! `rolling-disk check`: every equation and claim against its reference, as a table or JSON.
 
-use crate::cli::paper_input::{bench_for, load_paper};
+use crate::cli::paper_input::PaperInput;
 use crate::cli::precision::print_preset_accuracy;
 use checks::check::{run_checks, Checked, Selection, Tally};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use report::document::PAPER;
-use std::path::{Path, PathBuf};
-use studies::precision::Accuracy;
 
 /// The arguments of `rolling-disk check`.
 #[derive(clap::Args)]
@@ -18,37 +16,20 @@ pub struct Args {
     /// Print the findings as JSON instead of a table.
     #[arg(long)]
     pub json: bool,
-    /// Integration accuracy of the checks (fast: DOPRI5 at rtol 1e-6; standard and high:
-    /// DOP853 at 1e-10 and 1e-13; each prints what it reaches on the benchmark scene);
-    /// without it, DOP853 at rtol 1e-12, the accuracy the tolerances were designed at.
-    #[arg(long, value_enum)]
-    pub accuracy: Option<Accuracy>,
-    /// Check the equations of DIR/equations.yaml (and DIR/symbols.yaml, DIR/claims.yaml
-    /// when present) instead of the built-in copy of the paper: an edited equation is
-    /// re-checked without rebuilding.
-    #[arg(long, value_name = "DIR")]
-    pub paper: Option<PathBuf>,
+    #[command(flatten)]
+    pub input: PaperInput,
 }
 
 impl Args {
     /// Runs the command.
     pub fn run(self) -> anyhow::Result<()> {
-        check(
-            self.only.as_deref(),
-            self.json,
-            self.accuracy,
-            self.paper.as_deref(),
-        )
+        check(self.only.as_deref(), self.json, &self.input)
     }
 }
 
-fn check(
-    only: Option<&str>,
-    json: bool,
-    accuracy: Option<Accuracy>,
-    paper: Option<&Path>,
-) -> anyhow::Result<()> {
-    let bench = bench_for(accuracy, load_paper(paper)?);
+fn check(only: Option<&str>, json: bool, input: &PaperInput) -> anyhow::Result<()> {
+    let bench = input.bench()?;
+    let accuracy = input.accuracy;
     let started = std::time::Instant::now();
     let selection = match only {
         Some(text) if text.split(',').all(|s| s.trim().is_empty()) => {
@@ -170,43 +151,18 @@ pub(crate) fn print_table(checked: &[Checked]) {
     let (eqs, claims): (Vec<&Checked>, Vec<&Checked>) = checked
         .iter()
         .partition(|c| matches!(c.subject, ::checks::check::Subject::Equation { .. }));
-    let line = |what: &str, t: Tally, n: usize| {
-        format!(
-            "{n} {what}: {} hold, {} hold approximately, {} definitions, {} estimates (scaling \
-             confirmed), {} hold only under a premise that fails, {} fail, {} could not run",
-            t.holds,
-            t.approximately,
-            t.definitions,
-            t.estimates,
-            t.premise_fails,
-            t.fails,
-            t.not_run
-        )
-    };
     println!();
-    println!(
-        "{}",
-        line("equations", Tally::of(eqs.iter().copied()), eqs.len())
-    );
-    println!(
-        "{}",
-        line("claims", Tally::of(claims.iter().copied()), claims.len())
-    );
+    for (what, subjects) in [("equations", eqs), ("claims", claims)] {
+        let t = Tally::of(subjects.iter().copied());
+        println!("{} {what}: {}", t.total(), t.sentence());
+    }
 }
 
 /// The failing equations grouped by root cause: each root cause with the equations that inherit
 /// its error, then those whose cause could not be settled.
 pub(crate) fn print_root_causes(checked: &[Checked]) {
     use ::checks::cause::{consequences, Cause};
-    let causes: std::collections::BTreeMap<u32, Cause> = checked
-        .iter()
-        .filter_map(|c| match (&c.subject, &c.cause) {
-            (::checks::check::Subject::Equation { number, .. }, Some(cause)) => {
-                Some((*number, cause.clone()))
-            }
-            _ => None,
-        })
-        .collect();
+    let causes = ::checks::check::equation_causes(checked);
     if causes.is_empty() {
         return;
     }

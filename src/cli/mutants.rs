@@ -1,8 +1,7 @@
 //! `rolling-disk mutants`: the mutation suite's scores and survivors.
 
-use crate::cli::paper_input::{bench_for, load_paper};
+use crate::cli::paper_input::{bench_for, PaperDir};
 use indicatif::{ProgressBar, ProgressDrawTarget};
-use std::path::{Path, PathBuf};
 
 /// The arguments of `rolling-disk mutants`.
 #[derive(clap::Args)]
@@ -13,20 +12,19 @@ pub struct Args {
     /// Print the scores as JSON.
     #[arg(long)]
     pub json: bool,
-    /// Mutate the equations of DIR/equations.yaml instead of the built-in paper.
-    #[arg(long, value_name = "DIR")]
-    pub paper: Option<PathBuf>,
+    #[command(flatten)]
+    pub dir: PaperDir,
 }
 
 impl Args {
     /// Runs the command.
     pub fn run(self) -> anyhow::Result<()> {
-        mutants(self.only.as_deref(), self.json, self.paper.as_deref())
+        mutants(self.only.as_deref(), self.json, &self.dir)
     }
 }
 
-fn mutants(only: Option<&str>, json: bool, paper: Option<&Path>) -> anyhow::Result<()> {
-    let bench = bench_for(None, load_paper(paper)?);
+fn mutants(only: Option<&str>, json: bool, dir: &PaperDir) -> anyhow::Result<()> {
+    let bench = bench_for(None, dir.load()?);
     let numbers: Vec<u32> = match only {
         None => ::checks::equations::equations()
             .iter()

@@ -1,9 +1,8 @@
 //! `rolling-disk report`: the reproduction report, written as one set of files.
 
-use crate::cli::paper_input::{bench_for, load_paper};
+use crate::cli::paper_input::PaperInput;
 use files::output::SetWriter;
 use std::path::{Path, PathBuf};
-use studies::precision::Accuracy;
 
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum ReportFormat {
@@ -22,32 +21,22 @@ pub struct Args {
     /// The directory to write to.
     #[arg(long, value_name = "DIR", default_value = "report")]
     pub out: PathBuf,
-    /// Integration accuracy of the checks (default: rtol 1e-12).
-    #[arg(long, value_enum)]
-    pub accuracy: Option<Accuracy>,
-    /// Read the paper's equations from DIR/equations.yaml (and DIR/symbols.yaml,
-    /// DIR/claims.yaml when present) instead of the built-in copy.
-    #[arg(long, value_name = "DIR")]
-    pub paper: Option<PathBuf>,
+    #[command(flatten)]
+    pub input: PaperInput,
 }
 
 impl Args {
     /// Runs the command.
     pub fn run(self) -> anyhow::Result<()> {
-        report(self.format, &self.out, self.accuracy, self.paper.as_deref())
+        report(self.format, &self.out, &self.input)
     }
 }
 
-fn report(
-    format: ReportFormat,
-    out: &Path,
-    accuracy: Option<Accuracy>,
-    paper: Option<&Path>,
-) -> anyhow::Result<()> {
+fn report(format: ReportFormat, out: &Path, input: &PaperInput) -> anyhow::Result<()> {
     use ::report::{build::build, render};
     // Check --out and make room beside it before computing anything.
     let set = SetWriter::begin(out)?;
-    let bench = bench_for(accuracy, load_paper(paper)?);
+    let bench = input.bench()?;
     let status = |s: &str| eprintln!("report: {s}");
     let (report, figures) = build(&bench, &status)?;
     let formats = match format {
@@ -67,21 +56,9 @@ fn report(
     let written = shown;
     let t = &report.summary.equations;
     println!(
-        "{} equations checked: {} hold, {} hold approximately, {} definitions, {} estimates \
-         (scaling confirmed), {} hold only under a premise that fails, {} fail; {} claims fail",
-        t.holds
-            + t.approximately
-            + t.definitions
-            + t.estimates
-            + t.premise_fails
-            + t.fails
-            + t.not_run,
-        t.holds,
-        t.approximately,
-        t.definitions,
-        t.estimates,
-        t.premise_fails,
-        t.fails,
+        "{} equations checked: {}; {} claims fail",
+        t.total(),
+        t.sentence(),
         report.summary.claims.fails
     );
     for p in written

@@ -499,6 +499,18 @@ fn attach_premises(bench: &Bench, checked: &mut [Checked]) {
     }
 }
 
+/// The cause settled for each equation among `checked` that has one (a root cause, an inherited
+/// error, or undetermined), by equation number.
+pub fn equation_causes(checked: &[Checked]) -> std::collections::BTreeMap<u32, Cause> {
+    checked
+        .iter()
+        .filter_map(|c| match (&c.subject, &c.cause) {
+            (Subject::Equation { number, .. }, Some(cause)) => Some((*number, cause.clone())),
+            _ => None,
+        })
+        .collect()
+}
+
 /// Counts of verdicts, for the summary line.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize)]
 pub struct Tally {
@@ -519,6 +531,36 @@ pub struct Tally {
 }
 
 impl Tally {
+    /// How many were counted.
+    pub fn total(&self) -> usize {
+        self.holds
+            + self.approximately
+            + self.definitions
+            + self.estimates
+            + self.premise_fails
+            + self.fails
+            + self.not_run
+    }
+
+    /// The counts in words, every verdict named; those that could not run only when there are
+    /// some.
+    pub fn sentence(&self) -> String {
+        let mut s = format!(
+            "{} hold, {} hold approximately, {} definitions, {} estimates (scaling confirmed), {} \
+             hold only under a premise that fails, {} fail",
+            self.holds,
+            self.approximately,
+            self.definitions,
+            self.estimates,
+            self.premise_fails,
+            self.fails,
+        );
+        if self.not_run > 0 {
+            s.push_str(&format!(", {} could not run", self.not_run));
+        }
+        s
+    }
+
     /// Counts the outcomes.
     pub fn of<'a>(checked: impl IntoIterator<Item = &'a Checked>) -> Self {
         use crate::finding::Verdict;

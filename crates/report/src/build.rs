@@ -180,13 +180,7 @@ fn failure_view(c: &Checked) -> Option<FailureView> {
 /// equations whose cause is undetermined.
 fn causes_view(checked: &[Checked]) -> (Vec<RootCauseView>, Vec<FailureView>) {
     use checks::cause::Cause;
-    let causes: std::collections::BTreeMap<u32, Cause> = checked
-        .iter()
-        .filter_map(|c| match (&c.subject, &c.cause) {
-            (Subject::Equation { number, .. }, Some(cause)) => Some((*number, cause.clone())),
-            _ => None,
-        })
-        .collect();
+    let causes: std::collections::BTreeMap<u32, Cause> = checks::check::equation_causes(checked);
     let row = |n: u32| equation_checked(checked, n).and_then(failure_view);
     let roots = checks::cause::consequences(&causes)
         .into_iter()
@@ -223,13 +217,7 @@ fn premises_figure(bench: &Bench, checked: &[Checked]) -> Figure {
         },
         _ => Status::Unchecked,
     };
-    let causes = checked
-        .iter()
-        .filter_map(|c| match (&c.subject, &c.cause) {
-            (Subject::Equation { number, .. }, Some(cause)) => Some((*number, cause.clone())),
-            _ => None,
-        })
-        .collect();
+    let causes = checks::check::equation_causes(checked);
     Figure {
         name: "premises",
         title: "Which equation follows from which, and where the errors start".into(),

@@ -197,13 +197,7 @@ impl SummaryCounts {
 
 /// The root causes among `checked`, each with its consequences, in equation order.
 pub fn root_causes(checked: &[Checked]) -> Vec<RootCauseRecord> {
-    let causes = checked
-        .iter()
-        .filter_map(|c| match (&c.subject, &c.cause) {
-            (Subject::Equation { number, .. }, Some(cause)) => Some((*number, cause.clone())),
-            _ => None,
-        })
-        .collect();
+    let causes = checks::check::equation_causes(checked);
     checks::cause::consequences(&causes)
         .into_iter()
         .map(|(equation, consequences)| RootCauseRecord {

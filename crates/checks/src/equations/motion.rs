@@ -10,6 +10,7 @@
 //! the energy computed directly in the lab, at random states.
 
 use super::{printed_relations, term_scale, Bench, Equation};
+use crate::equations::disk_constants;
 use crate::finding::{Finding, Method, Tolerance, Worst};
 use numerics::memo::{bits, Memo};
 use numerics::rng::Rng;
@@ -226,14 +227,10 @@ fn eq26(b: &Bench) -> Finding {
                 * (disk.m * disk.a * disk.a);
             let i_lab = snap.rotation.matrix() * inertia * snap.rotation.matrix().transpose();
             let potential = disk.m * disk.g * snap.centre.z;
-            let bind = Bindings::new()
+            let bind = disk_constants(&disk)
                 .scalar("E", reference)
                 .scalar("T", reference - potential)
                 .scalar("V", potential)
-                .scalar("m", disk.m)
-                .scalar("g", disk.g)
-                .scalar("a", disk.a)
-                .scalar("k", k)
                 .scalar("v_cm_speed", snap.velocity.norm())
                 .vector("omega_vec", snap.omega)
                 .value("I_tensor", paper::Value::Tensor(i_lab))
@@ -290,17 +287,14 @@ mod tests {
                 spin: rng.uniform(-50.0, 50.0),
             };
             let r = rates(&disk, &m, [0.0; 3]);
-            let bind = Bindings::new()
+            let bind = disk_constants(&disk)
                 .scalar("alpha", m.alpha)
                 .scalar("alpha_dot", m.alpha_dot)
                 .scalar("alpha_ddot", r.alpha_ddot)
                 .scalar("Omega", m.precession)
                 .scalar("Omega_dot", r.precession_dot)
                 .scalar("omega_1", m.spin)
-                .scalar("omega_1_dot", r.spin_dot)
-                .scalar("k", disk.k)
-                .scalar("g", disk.g)
-                .scalar("a", disk.a);
+                .scalar("omega_1_dot", r.spin_dot);
             for n in [23, 24, 25] {
                 let eq = b.paper.equation(n);
                 let rel = eq.relations()[0];

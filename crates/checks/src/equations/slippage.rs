@@ -8,6 +8,7 @@
 
 use super::steady_reference::{rho_edge, steady_ref};
 use super::{printed_threshold, Bench, Equation};
+use crate::equations::disk_constants;
 use crate::finding::{Finding, Headline, Method, Tolerance, Worst};
 use nalgebra::Vector3;
 use paper::Bindings;
@@ -63,16 +64,12 @@ fn small() -> Vec<f64> {
 fn eq41(b: &Bench) -> Finding {
     small_b_order(
         "steady contact force for b << a",
-        |d, k, alpha0, sign, x| {
+        |d, _, alpha0, sign, x| {
             let rho = sign * x;
             let [fz, fr, f2] = force(d, alpha0, rho);
             let mg = d.m * d.g;
             // The printed force in a frame with r-hat along x, 2-hat along y.
-            let bind = Bindings::new()
-                .scalar("m", d.m)
-                .scalar("g", d.g)
-                .scalar("a", d.a)
-                .scalar("k", k)
+            let bind = disk_constants(d)
                 .scalar("b", rho * d.a)
                 .scalar("alpha_0", alpha0)
                 .vector("z_hat", Vector3::z())

@@ -4,6 +4,7 @@
 //! implies along a run ([`implied_t0`]). Checks call these; no check imports another check.
 
 use super::{solve_printed, Bench};
+use crate::equations::disk_constants;
 use crate::finding::{Finding, Headline, Method, Tolerance, Worst};
 use num_dual::DualNum;
 use numerics::memo::{bits, Memo};
@@ -115,13 +116,9 @@ pub(crate) const BETAS: [f64; 3] = [1.0, 2.0, 4.0];
 
 /// Bindings of the quantities of sec. 11 for a disk and a dissipation law.
 pub(crate) fn law_bindings(d: &Disk, law: &PowerLaw) -> Bindings<f64> {
-    Bindings::new()
+    disk_constants(d)
         .scalar("dissipation", law.epsilon)
         .scalar("beta", law.beta)
-        .scalar("g", d.g)
-        .scalar("a", d.a)
-        .scalar("k", d.k)
-        .scalar("m", d.m)
 }
 
 /// The one-state law of eq 76 AS PRINTED (its last form, a function of $\alpha$ alone) integrated

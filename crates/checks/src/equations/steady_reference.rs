@@ -5,6 +5,7 @@
 //! formulas; its radii are measured on integrations. Not a check: no check file imports another.
 
 use super::Bench;
+use crate::equations::disk_constants;
 use num_dual::Dual64;
 use numerics::oscillation::bisect;
 use paper::Bindings;
@@ -149,12 +150,7 @@ pub(crate) fn rho_edge(d: &Disk, alpha0: f64, width: f64) -> f64 {
 
 /// The disk's constants and the steady tilt, bound to the paper's symbols.
 pub(crate) fn steady_bindings(d: &Disk, alpha0: f64) -> Bindings<f64> {
-    Bindings::new()
-        .scalar("a", d.a)
-        .scalar("k", d.k)
-        .scalar("g", d.g)
-        .scalar("m", d.m)
-        .scalar("alpha_0", alpha0)
+    disk_constants(d).scalar("alpha_0", alpha0)
 }
 
 /// Whether the model has a steady motion at `alpha0` with $\omega_{10} = \rho\Omega_0$.

@@ -9,7 +9,7 @@
 
 use crate::disk::Disk;
 use crate::model::rolling::{extras_rhs, lz, record_common};
-use crate::model::{Extras, Layout, Model, Motion, Quantity};
+use crate::model::{leading_state, Extras, Layout, Model, Motion, Quantity};
 use crate::solve::{Dynamics, State};
 use num_dual::DualNum;
 
@@ -23,6 +23,20 @@ pub fn accelerations<T: DualNum<f64> + Copy>(disk: &Disk, m: &Motion<T>) -> (T, 
         / (c * c + k);
     let precession_dot = -(ad * om * c * 2.0 + w * ad * 2.0) / s;
     (alpha_ddot, precession_dot)
+}
+
+/// The exact Jacobian of eqs 61-62 without spin ($\omega_1 = 0$) in the state
+/// $(\alpha, \dot\alpha, \Omega)$ at `y`, by dual numbers: the linearization that the stability
+/// claims of the frictionless disk read.
+pub fn spinless_jacobian(disk: &Disk, y: &[f64; 3]) -> nalgebra::SMatrix<f64, 3, 3> {
+    numerics::linearize::jacobian(
+        |y: &[num_dual::Dual64; 3]| {
+            let m = Motion::from_state(y, num_dual::Dual64::from(0.0));
+            let (alpha_ddot, precession_dot) = accelerations(disk, &m);
+            [y[1], alpha_ddot, precession_dot]
+        },
+        y,
+    )
 }
 
 /// The total energy without friction: the centre of mass moves vertically at
@@ -104,12 +118,7 @@ impl<const N: usize> Model<N> for Frictionless<N> {
     }
 
     fn motion(&self, y: &State<N>) -> Motion {
-        Motion {
-            alpha: y[0],
-            alpha_dot: y[1],
-            precession: y[2],
-            spin: self.spin,
-        }
+        Motion::from_state(y.as_slice(), self.spin)
     }
 
     fn energy(&self, y: &State<N>) -> f64 {
@@ -133,10 +142,6 @@ impl<const N: usize> Model<N> for Frictionless<N> {
     }
 
     fn state(&self, m: &Motion) -> State<N> {
-        let mut y = State::<N>::zeros();
-        y[0] = m.alpha;
-        y[1] = m.alpha_dot;
-        y[2] = m.precession;
-        y
+        leading_state(&[m.alpha, m.alpha_dot, m.precession])
     }
 }

@@ -36,6 +36,27 @@ pub struct Motion<T = f64> {
     pub spin: T,
 }
 
+impl<T: Copy> Motion<T> {
+    /// The paper's variables from a state that starts $(\alpha, \dot\alpha, \Omega)$, with the
+    /// spin $\omega_1$ given (a state entry, or a constant of the model).
+    pub fn from_state(y: &[T], spin: T) -> Self {
+        Motion {
+            alpha: y[0],
+            alpha_dot: y[1],
+            precession: y[2],
+            spin,
+        }
+    }
+}
+
+/// A state whose first entries are `values` and whose optional entries (the extras) start at
+/// zero.
+pub fn leading_state<const N: usize>(values: &[f64]) -> State<N> {
+    let mut y = State::<N>::zeros();
+    y.as_mut_slice()[..values.len()].copy_from_slice(values);
+    y
+}
+
 /// Something a scene can record, one column of a trajectory.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]

@@ -12,7 +12,7 @@
 use crate::disk::Disk;
 use crate::model::dissipation::PowerLaw;
 use crate::model::mechanism::Mechanism;
-use crate::model::{Extras, Layout, Model, Motion, Quantity};
+use crate::model::{leading_state, Extras, Layout, Model, Motion, Quantity};
 use crate::solve::{Dynamics, State};
 use num_dual::DualNum;
 
@@ -31,12 +31,7 @@ pub struct Rates<T = f64> {
 /// $(\alpha, \dot\alpha, \Omega, \omega_1)$, generic over dual numbers (the linearizations and
 /// Newton's method on steady motions read it).
 pub fn field<T: DualNum<f64> + Copy>(disk: &Disk, y: &[T; 4]) -> [T; 4] {
-    let m = Motion {
-        alpha: y[0],
-        alpha_dot: y[1],
-        precession: y[2],
-        spin: y[3],
-    };
+    let m = Motion::from_state(y, y[3]);
     let r = rates(disk, &m, [T::zero(); 3]);
     [y[1], r.alpha_ddot, r.precession_dot, r.spin_dot]
 }
@@ -208,12 +203,7 @@ impl<const N: usize> Model<N> for Rolling<N> {
     }
 
     fn motion(&self, y: &State<N>) -> Motion {
-        Motion {
-            alpha: y[0],
-            alpha_dot: y[1],
-            precession: y[2],
-            spin: y[3],
-        }
+        Motion::from_state(y.as_slice(), y[3])
     }
 
     fn energy(&self, y: &State<N>) -> f64 {
@@ -239,12 +229,7 @@ impl<const N: usize> Model<N> for Rolling<N> {
     }
 
     fn state(&self, m: &Motion) -> State<N> {
-        let mut y = State::<N>::zeros();
-        y[0] = m.alpha;
-        y[1] = m.alpha_dot;
-        y[2] = m.precession;
-        y[3] = m.spin;
-        y
+        leading_state(&[m.alpha, m.alpha_dot, m.precession, m.spin])
     }
 }
 

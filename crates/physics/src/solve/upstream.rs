@@ -150,49 +150,34 @@ fn raw_run<D: Dynamics<N>, const N: usize>(
             (r, t.clone(), y.clone())
         }};
     }
+    // Hairer's step-size controls for each method: safety factor 0.9, the stabilization
+    // exponent beta, and the bounds on the step's shrink and growth per step.
+    macro_rules! adaptive {
+        ($solver:ident, $beta:expr, $fac_min:expr, $fac_max:expr) => {{
+            let mut s = $solver::from_param(
+                bridge,
+                t0,
+                t_end,
+                span,
+                y0,
+                settings.rtol,
+                settings.atol,
+                0.9,
+                $beta,
+                $fac_min,
+                $fac_max,
+                span,
+                first_step,
+                n_max,
+                1000,
+                OutputType::Sparse,
+            );
+            finish!(s)
+        }};
+    }
     match settings.method {
-        Method::Dop853 => {
-            let mut s = Dop853::from_param(
-                bridge,
-                t0,
-                t_end,
-                span,
-                y0,
-                settings.rtol,
-                settings.atol,
-                0.9,
-                0.0,
-                0.333,
-                6.0,
-                span,
-                first_step,
-                n_max,
-                1000,
-                OutputType::Sparse,
-            );
-            finish!(s)
-        }
-        Method::Dopri5 => {
-            let mut s = Dopri5::from_param(
-                bridge,
-                t0,
-                t_end,
-                span,
-                y0,
-                settings.rtol,
-                settings.atol,
-                0.9,
-                0.04,
-                0.2,
-                10.0,
-                span,
-                first_step,
-                n_max,
-                1000,
-                OutputType::Sparse,
-            );
-            finish!(s)
-        }
+        Method::Dop853 => adaptive!(Dop853, 0.0, 0.333, 6.0),
+        Method::Dopri5 => adaptive!(Dopri5, 0.04, 0.2, 10.0),
         Method::Rk4 => {
             // ode_solvers takes ceil(span / step) steps of the full step and so overshoots
             // t_end: shorten the step so that a whole number of steps ends exactly there.

@@ -185,28 +185,14 @@ pub fn figure(paper: &Paper) -> Result<Figure, FigureError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use num_dual::Dual64;
-    use numerics::linearize::jacobian;
     use physics::disk::Disk;
-    use physics::model::rolling::rates;
     use physics::model::steady::steady_motion;
-    use physics::model::Motion;
 
     /// varpi^2 (k+1)/Omega0^2 from the model's exact Jacobian: the sum of its principal 2x2
     /// minors is varpi^2 (two zero eigenvalues, two at +-i varpi).
     fn model_ratio(d: &Disk, alpha0: f64, rho: f64) -> f64 {
         let m = steady_motion(d, alpha0, rho * d.a).unwrap();
-        let f = |y: &[Dual64; 4]| {
-            let mm = Motion {
-                alpha: y[0],
-                alpha_dot: y[1],
-                precession: y[2],
-                spin: y[3],
-            };
-            let r = rates(d, &mm, [Dual64::from(0.0); 3]);
-            [y[1], r.alpha_ddot, r.precession_dot, r.spin_dot]
-        };
-        let j = jacobian(f, &[m.alpha, m.alpha_dot, m.precession, m.spin]);
+        let j = physics::model::rolling::jacobian(d, &[m.alpha, m.alpha_dot, m.precession, m.spin]);
         let mut e2 = 0.0;
         for a in 0..4 {
             for b in a + 1..4 {

@@ -5,10 +5,9 @@
 use super::judge::{printed, single, stated, worse};
 use super::oscillation::ratio_b0;
 use super::{
-    bisect, fl, frictionless_vertical_threshold, jacobian, mid, rolling,
-    rolling_vertical_threshold, solve, unit_disk, varpi2, Bench, Contact, Dual64, DualNum, Extras,
-    Finding, Frictionless, LabFrame, Method, Model, Motion, Problem, Quantity, Rolling, State,
-    Tolerance, Worst, FRAC_PI_2, WIDTH,
+    bisect, fl, frictionless_vertical_threshold, mid, rolling, rolling_vertical_threshold, solve,
+    unit_disk, varpi2, Bench, Contact, DualNum, Extras, Finding, Frictionless, LabFrame, Method,
+    Model, Motion, Problem, Quantity, Rolling, State, Tolerance, Worst, FRAC_PI_2, WIDTH,
 };
 
 // ------------------------------------------------------------------------------ sec. 8
@@ -348,19 +347,7 @@ pub(super) fn frictionless_ratio(k: f64, alpha0: f64) -> f64 {
     };
     // Gravity tips the disk down (negative) at small Omega; the turning term wins at large.
     let om = mid(bisect(1e-3, 1e4, 1e-15, |om| add(om) >= 0.0));
-    let j = jacobian(
-        |y: &[Dual64; 3]| {
-            let m = Motion {
-                alpha: y[0],
-                alpha_dot: y[1],
-                precession: y[2],
-                spin: Dual64::from(0.0),
-            };
-            let (add, pd) = fl::accelerations(&disk, &m);
-            [y[1], add, pd]
-        },
-        &[alpha0, 0.0, om],
-    );
+    let j = fl::spinless_jacobian(&disk, &[alpha0, 0.0, om]);
     varpi2(&j).sqrt() / om
 }
 

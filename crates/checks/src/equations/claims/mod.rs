@@ -30,7 +30,7 @@ use crate::finding::{Finding, Headline, Method, Tolerance, Worst};
 use nalgebra::SMatrix;
 use num_dual::{second_derivative, Dual64, DualNum};
 use numerics::fit::log_log_slope;
-use numerics::linearize::{eigenvalues, jacobian};
+use numerics::linearize::eigenvalues;
 use numerics::minimize::golden_min;
 use numerics::oscillation::bisect;
 use physics::disk::Disk;
@@ -339,19 +339,7 @@ fn rolling_vertical_threshold(k: f64) -> (f64, f64) {
 fn frictionless_vertical_threshold(k: f64) -> (f64, f64) {
     let disk = unit_disk(k);
     let stable = |om: f64| {
-        let j = jacobian(
-            |y: &[Dual64; 3]| {
-                let m = Motion {
-                    alpha: y[0],
-                    alpha_dot: y[1],
-                    precession: y[2],
-                    spin: Dual64::from(0.0),
-                };
-                let (add, pd) = fl::accelerations(&disk, &m);
-                [y[1], add, pd]
-            },
-            &[FRAC_PI_2, 0.0, om],
-        );
+        let j = fl::spinless_jacobian(&disk, &[FRAC_PI_2, 0.0, om]);
         varpi2(&j) > 0.0
     };
     bisect(0.1, 10.0, WIDTH, stable)

@@ -1,9 +1,9 @@
 //! Eqs 72-73: the energy of the disk at small tilt and its rate, against the exact energy.
 
 use super::{
-    energy, last_side, steady_precession, Bench, Bindings, Dual64, Finding, Headline, Motion,
-    SMALL_ALPHAS,
+    energy, last_side, steady_precession, Bench, Dual64, Finding, Headline, Motion, SMALL_ALPHAS,
 };
+use crate::equations::disk_constants;
 use physics::disk::toy_sized;
 
 /// Eq 72 at states of the $b = 0$ family (steady precession at each tilt, $\omega_1 = 0$) with
@@ -24,11 +24,7 @@ pub(super) fn eq72_at(b: &Bench, c0: f64) -> Finding {
                 spin: 0.0,
             };
             let reference = energy(&d, &m);
-            let bind = Bindings::new()
-                .scalar("m", d.m)
-                .scalar("a", d.a)
-                .scalar("g", d.g)
-                .scalar("k", k)
+            let bind = disk_constants(&d)
                 .scalar("alpha", alpha)
                 .scalar("alpha_dot", alpha_dot)
                 .scalar("h", d.a * alpha.sin())
@@ -126,11 +122,7 @@ pub fn eq73(b: &Bench) -> Finding {
             };
             let reference = energy(&d, &m).eps;
             let unit = d.m * d.a * d.g * alpha_dot.abs();
-            let bind = Bindings::new()
-                .scalar("m", d.m)
-                .scalar("a", d.a)
-                .scalar("g", d.g)
-                .scalar("k", k)
+            let bind = disk_constants(&d)
                 .scalar("alpha", alpha)
                 .scalar("alpha_dot", alpha_dot)
                 .scalar("alpha_ddot", alpha_ddot)

@@ -17,6 +17,7 @@
 //! the linearizations) are exact too.
 
 use super::{add_threshold, printed_relations, printed_threshold, term_scale, Bench, Equation};
+use crate::equations::disk_constants;
 use crate::finding::{Finding, Method, Tolerance, Verdict, Worst};
 use nalgebra::{Complex, Matrix3, SMatrix, Vector3};
 use num_dual::{Dual, Dual64, DualNum, HyperDual};
@@ -251,12 +252,7 @@ struct Reference {
 
 impl Dynamics<4> for Reference {
     fn rhs(&self, y: &State<4>, dy: &mut State<4>) {
-        let m = Motion {
-            alpha: y[0],
-            alpha_dot: y[1],
-            precession: y[2],
-            spin: y[3],
-        };
+        let m = Motion::from_state(y.as_slice(), y[3]);
         let r = reference_rates(&self.disk, &m);
         dy[0] = y[1];
         dy[1] = r[0];
@@ -269,12 +265,7 @@ impl Dynamics<4> for Reference {
 fn reference_jacobian(d: &Disk, y: [f64; 3], spin: f64) -> SMatrix<f64, 3, 3> {
     jacobian(
         |y: &[Dual64; 3]| {
-            let m = Motion {
-                alpha: y[0],
-                alpha_dot: y[1],
-                precession: y[2],
-                spin: Dual64::from(spin),
-            };
+            let m = Motion::from_state(y, Dual64::from(spin));
             let r = reference_rates(d, &m);
             [y[1], r[0], r[1]]
         },
@@ -337,7 +328,7 @@ fn linear(d: &Disk, alpha0: f64) -> Linear {
 /// The paper's variables of the frictionless disk at state `m`, with the rates
 /// `[alpha_ddot, Omega_dot, omega_1_dot]`, bound to the quantities of paper/symbols.yaml.
 fn state_bindings(d: &Disk, m: &Motion, rates: V3<f64>) -> Bindings<f64> {
-    Bindings::new()
+    disk_constants(d)
         .scalar("alpha", m.alpha)
         .scalar("alpha_dot", m.alpha_dot)
         .scalar("alpha_ddot", rates[0])
@@ -345,10 +336,6 @@ fn state_bindings(d: &Disk, m: &Motion, rates: V3<f64>) -> Bindings<f64> {
         .scalar("Omega_dot", rates[1])
         .scalar("omega_1", m.spin)
         .scalar("omega_1_dot", rates[2])
-        .scalar("k", d.k)
-        .scalar("g", d.g)
-        .scalar("a", d.a)
-        .scalar("m", d.m)
 }
 
 /// The largest sum of the magnitudes of the terms of a printed relation of `eq` at `bind`: the

@@ -120,12 +120,7 @@ pub(super) fn eq60(b: &Bench) -> Finding {
             // Per relation: the spin it implies so far, and the previous (t, rate).
             let mut implied: Vec<(f64, Option<(f64, f64)>)> = vec![(m.spin, None); rels.len()];
             for (t, y) in sol.t.iter().zip(&sol.y) {
-                let s = Motion {
-                    alpha: y[0],
-                    alpha_dot: y[1],
-                    precession: y[2],
-                    spin: y[3],
-                };
+                let s = Motion::from_state(y.as_slice(), y[3]);
                 let rates = reference_rates(&d, &s);
                 let bind = state_bindings(&d, &s, rates);
                 let scale = rates[2].abs() + squared_rate(&d, &s);

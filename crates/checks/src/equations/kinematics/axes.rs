@@ -3,89 +3,70 @@
 use super::rolling::A;
 use super::{
     at, identity, kin1, kin_bindings, printed_kinematics, printed_relations, rate_scale, sample,
-    Bench, Finding, Stated, Value, Worst, POINTS, RATE, THREE, V,
+    Bench, Finding, Kin, Stated, Value, Worst, POINTS, RATE, THREE, V,
 };
 
-/// Eq 1, $\mathbf a = a\hat{\mathbf 3}$ (definition): the offset of the contact point from the
-/// centre. Reference: the lowest point of the rim, found in body coordinates, against $a$ times
-/// the constructed $\hat{\mathbf 3}$.
-pub(super) fn eq1(b: &Bench) -> Finding {
-    let w = printed_kinematics(b, 1, 1, |_| A, "a");
-    identity(
-        "the printed a against the offset of the rim's lowest point (body coordinates)",
-        w,
-        Stated::Definition,
-    )
+/// A printed identity of eqs 1-7 and 9-11 and what it is compared with: its relations at
+/// random states of the rotation (`sample`), the symbols bound to the triad CONSTRUCTED from
+/// that rotation, each difference measured against `scale` (a length or a rate of the state).
+struct Identity {
+    number: u32,
+    scale: fn(&Kin<f64>) -> f64,
+    quantity: &'static str,
+    stated: Stated,
+    reference: &'static str,
 }
 
-/// Eq 2, $\vec\omega = \vec\omega_{123} + \omega_{rel}\hat{\mathbf 1}$ (definition). Reference:
-/// the disk's angular velocity from $\dot R R^T$, the triad's from $\dot T T^T$, and the measured
-/// rate of a face mark relative to the triad.
-pub(super) fn eq2(b: &Bench) -> Finding {
-    let w = printed_kinematics(b, 2, 2, rate_scale, "omega");
-    identity(
-        "the printed composition of omega against the axial vector of dR/dt R^T",
-        w,
-        Stated::Definition,
-    )
-}
+/// The identities, one row each, with the equation's printed form and its reference.
+#[rustfmt::skip]
+const IDENTITIES: &[Identity] = &[
+    // Eq 1, $\mathbf a = a\hat{\mathbf 3}$ (definition): the offset of the contact point from the
+    // centre. Reference: the lowest point of the rim, found in body coordinates, against $a$ times
+    // the constructed $\hat{\mathbf 3}$.
+    Identity { number: 1, scale: |_| A, quantity: "a", stated: Stated::Definition, reference: "the printed a against the offset of the rim's lowest point (body coordinates)" },
+    // Eq 2, $\vec\omega = \vec\omega_{123} + \omega_{rel}\hat{\mathbf 1}$ (definition). Reference:
+    // the disk's angular velocity from $\dot R R^T$, the triad's from $\dot T T^T$, and the measured
+    // rate of a face mark relative to the triad.
+    Identity { number: 2, scale: rate_scale, quantity: "omega", stated: Stated::Definition, reference: "the printed composition of omega against the axial vector of dR/dt R^T" },
+    // Eq 3, $\vec\omega_{123} = \Omega\hat{\mathbf z} + \dot\alpha\hat{\mathbf 2} =
+    // -\Omega\cos\alpha\hat{\mathbf 1} + \dot\alpha\hat{\mathbf 2} - \Omega\sin\alpha\hat{\mathbf 3}$.
+    // Reference: the triad's angular velocity from $\dot T T^T$; each printed equality in turn.
+    Identity { number: 3, scale: rate_scale, quantity: "omega_123", stated: Stated::Relation, reference: "both printed equalities for omega_123 against the axial vector of dT/dt T^T" },
+    // Eq 4, $\hat{\mathbf z} = -\cos\alpha\hat{\mathbf 1} - \sin\alpha\hat{\mathbf 3}$. Reference:
+    // the lab's vertical; $\alpha$ is the disk plane's tilt (the nutation angle).
+    Identity { number: 4, scale: |_| 1.0, quantity: "z", stated: Stated::Relation, reference: "the printed z against the lab's vertical" },
+    // Eq 5, $d\hat{\mathbf 1}/dt = \vec\omega_{123}\times\hat{\mathbf 1} = -\Omega\sin\alpha
+    // \hat{\mathbf 2} - \dot\alpha\hat{\mathbf 3}$. Reference: the exact derivative of the
+    // constructed axis and the measured $\vec\omega_{123}$.
+    Identity { number: 5, scale: rate_scale, quantity: "the axis' rate", stated: Stated::Relation, reference: "d1/dt, both printed equalities, against the exact derivative" },
+    // Eq 6, $d\hat{\mathbf 2}/dt = \vec\omega_{123}\times\hat{\mathbf 2} = \Omega\sin\alpha
+    // \hat{\mathbf 1} - \Omega\cos\alpha\hat{\mathbf 3} = -\Omega\hat{\mathbf r}$ (the printed stray
+    // comma dropped). Reference: the exact derivative of the constructed axis.
+    Identity { number: 6, scale: rate_scale, quantity: "the axis' rate", stated: Stated::Relation, reference: "d2/dt, all three printed equalities, against the exact derivative" },
+    // Eq 7, $d\hat{\mathbf 3}/dt = \vec\omega_{123}\times\hat{\mathbf 3} = \dot\alpha\hat{\mathbf 1}
+    // + \Omega\cos\alpha\hat{\mathbf 2}$. Reference: the exact derivative of the constructed axis.
+    Identity { number: 7, scale: rate_scale, quantity: "the axis' rate", stated: Stated::Relation, reference: "d3/dt, both printed equalities, against the exact derivative" },
+    // Eq 9, $d\hat{\mathbf r}/dt = \Omega\hat{\mathbf 2}$. Reference: the exact derivative of the
+    // constructed $\hat{\mathbf r}$.
+    Identity { number: 9, scale: rate_scale, quantity: "r-hat's rate", stated: Stated::Relation, reference: "the printed rate of r-hat against its exact derivative" },
+    // Eq 10, $\vec\omega = \omega_1\hat{\mathbf 1} + \dot\alpha\hat{\mathbf 2} -
+    // \Omega\sin\alpha\hat{\mathbf 3}$, with $\omega_1 = \vec\omega\cdot\hat{\mathbf 1}$. Reference:
+    // the axial vector of $\dot R R^T$ (the 2 and 3 components are the content).
+    Identity { number: 10, scale: rate_scale, quantity: "omega", stated: Stated::Relation, reference: "the printed triad form of omega against dR/dt R^T" },
+    // Eq 11, $\omega_1 = \omega_{rel} - \Omega\cos\alpha$ (definition). Reference: $\vec\omega\cdot
+    // \hat{\mathbf 1}$ from $\dot R R^T$, the measured rate of a face mark relative to the triad and
+    // the measured precession.
+    Identity { number: 11, scale: rate_scale, quantity: "omega_1", stated: Stated::Definition, reference: "the printed omega_1 against omega . 1 from dR/dt R^T" },
+];
 
-/// Eq 3, $\vec\omega_{123} = \Omega\hat{\mathbf z} + \dot\alpha\hat{\mathbf 2} =
-/// -\Omega\cos\alpha\hat{\mathbf 1} + \dot\alpha\hat{\mathbf 2} - \Omega\sin\alpha\hat{\mathbf 3}$.
-/// Reference: the triad's angular velocity from $\dot T T^T$; each printed equality in turn.
-pub(super) fn eq3(b: &Bench) -> Finding {
-    let w = printed_kinematics(b, 3, 3, rate_scale, "omega_123");
-    identity(
-        "both printed equalities for omega_123 against the axial vector of dT/dt T^T",
-        w,
-        Stated::Relation,
-    )
-}
-
-/// Eq 4, $\hat{\mathbf z} = -\cos\alpha\hat{\mathbf 1} - \sin\alpha\hat{\mathbf 3}$. Reference:
-/// the lab's vertical; $\alpha$ is the disk plane's tilt (the nutation angle).
-pub(super) fn eq4(b: &Bench) -> Finding {
-    let w = printed_kinematics(b, 4, 4, |_| 1.0, "z");
-    identity(
-        "the printed z against the lab's vertical",
-        w,
-        Stated::Relation,
-    )
-}
-
-/// Eq 5, $d\hat{\mathbf 1}/dt = \vec\omega_{123}\times\hat{\mathbf 1} = -\Omega\sin\alpha
-/// \hat{\mathbf 2} - \dot\alpha\hat{\mathbf 3}$. Reference: the exact derivative of the
-/// constructed axis and the measured $\vec\omega_{123}$.
-pub(super) fn eq5(b: &Bench) -> Finding {
-    let w = printed_kinematics(b, 5, 5, rate_scale, "the axis' rate");
-    identity(
-        "d1/dt, both printed equalities, against the exact derivative",
-        w,
-        Stated::Relation,
-    )
-}
-
-/// Eq 6, $d\hat{\mathbf 2}/dt = \vec\omega_{123}\times\hat{\mathbf 2} = \Omega\sin\alpha
-/// \hat{\mathbf 1} - \Omega\cos\alpha\hat{\mathbf 3} = -\Omega\hat{\mathbf r}$ (the printed stray
-/// comma dropped). Reference: the exact derivative of the constructed axis.
-pub(super) fn eq6(b: &Bench) -> Finding {
-    let w = printed_kinematics(b, 6, 6, rate_scale, "the axis' rate");
-    identity(
-        "d2/dt, all three printed equalities, against the exact derivative",
-        w,
-        Stated::Relation,
-    )
-}
-
-/// Eq 7, $d\hat{\mathbf 3}/dt = \vec\omega_{123}\times\hat{\mathbf 3} = \dot\alpha\hat{\mathbf 1}
-/// + \Omega\cos\alpha\hat{\mathbf 2}$. Reference: the exact derivative of the constructed axis.
-pub(super) fn eq7(b: &Bench) -> Finding {
-    let w = printed_kinematics(b, 7, 7, rate_scale, "the axis' rate");
-    identity(
-        "d3/dt, both printed equalities, against the exact derivative",
-        w,
-        Stated::Relation,
-    )
+/// The check of eq `N`, one of [`IDENTITIES`].
+pub(super) fn identity_check<const N: u32>(b: &Bench) -> Finding {
+    let row = IDENTITIES
+        .iter()
+        .find(|r| r.number == N)
+        .expect("every identity check is registered for a row of IDENTITIES");
+    let w = printed_kinematics(b, N, u64::from(N), row.scale, row.quantity);
+    identity(row.reference, w, row.stated)
 }
 
 /// Eq 8, $\hat{\mathbf r} = \hat{\mathbf 2}\times\hat{\mathbf z} = -\sin\alpha\hat{\mathbf 1} +
@@ -108,41 +89,6 @@ pub(super) fn eq8(b: &Bench) -> Finding {
     }
     identity(
         "the printed r-hat against 3's horizontal direction and 2 x z",
-        w,
-        Stated::Definition,
-    )
-}
-
-/// Eq 9, $d\hat{\mathbf r}/dt = \Omega\hat{\mathbf 2}$. Reference: the exact derivative of the
-/// constructed $\hat{\mathbf r}$.
-pub(super) fn eq9(b: &Bench) -> Finding {
-    let w = printed_kinematics(b, 9, 9, rate_scale, "r-hat's rate");
-    identity(
-        "the printed rate of r-hat against its exact derivative",
-        w,
-        Stated::Relation,
-    )
-}
-
-/// Eq 10, $\vec\omega = \omega_1\hat{\mathbf 1} + \dot\alpha\hat{\mathbf 2} -
-/// \Omega\sin\alpha\hat{\mathbf 3}$, with $\omega_1 = \vec\omega\cdot\hat{\mathbf 1}$. Reference:
-/// the axial vector of $\dot R R^T$ (the 2 and 3 components are the content).
-pub(super) fn eq10(b: &Bench) -> Finding {
-    let w = printed_kinematics(b, 10, 10, rate_scale, "omega");
-    identity(
-        "the printed triad form of omega against dR/dt R^T",
-        w,
-        Stated::Relation,
-    )
-}
-
-/// Eq 11, $\omega_1 = \omega_{rel} - \Omega\cos\alpha$ (definition). Reference: $\vec\omega\cdot
-/// \hat{\mathbf 1}$ from $\dot R R^T$, the measured rate of a face mark relative to the triad and
-/// the measured precession.
-pub(super) fn eq11(b: &Bench) -> Finding {
-    let w = printed_kinematics(b, 11, 11, rate_scale, "omega_1");
-    identity(
-        "the printed omega_1 against omega . 1 from dR/dt R^T",
         w,
         Stated::Definition,
     )

@@ -43,7 +43,7 @@ mod rolling;
 #[cfg(test)]
 mod tests;
 
-use axes::{eq1, eq10, eq11, eq2, eq3, eq4, eq5, eq6, eq7, eq8, eq9};
+use axes::{eq8, identity_check};
 use mass::{eq18, eq19, eq20, eq21, eq22};
 use rolling::{eq12, eq13, eq14, eq15, eq16, eq17, v_cm_rolling, A};
 
@@ -52,37 +52,37 @@ pub const EQUATIONS: &[Equation] = &[
     Equation {
         number: 1,
         label: "e1",
-        check: eq1,
+        check: identity_check::<1>,
     },
     Equation {
         number: 2,
         label: "e2",
-        check: eq2,
+        check: identity_check::<2>,
     },
     Equation {
         number: 3,
         label: "e4",
-        check: eq3,
+        check: identity_check::<3>,
     },
     Equation {
         number: 4,
         label: "e3",
-        check: eq4,
+        check: identity_check::<4>,
     },
     Equation {
         number: 5,
         label: "e5",
-        check: eq5,
+        check: identity_check::<5>,
     },
     Equation {
         number: 6,
         label: "e6",
-        check: eq6,
+        check: identity_check::<6>,
     },
     Equation {
         number: 7,
         label: "e7",
-        check: eq7,
+        check: identity_check::<7>,
     },
     Equation {
         number: 8,
@@ -92,17 +92,17 @@ pub const EQUATIONS: &[Equation] = &[
     Equation {
         number: 9,
         label: "e250",
-        check: eq9,
+        check: identity_check::<9>,
     },
     Equation {
         number: 10,
         label: "e8",
-        check: eq10,
+        check: identity_check::<10>,
     },
     Equation {
         number: 11,
         label: "e9",
-        check: eq11,
+        check: identity_check::<11>,
     },
     Equation {
         number: 12,

@@ -14,6 +14,7 @@ use super::{
     add_threshold, implied_square, printed_relations, printed_threshold, term_scale, Bench,
     Equation,
 };
+use crate::equations::disk_constants;
 use crate::finding::{Finding, Method, Tolerance, Worst};
 use nalgebra::{Complex, SMatrix};
 use numerics::oscillation::{angular_frequency, bisect};
@@ -201,10 +202,7 @@ fn measured_frequency(b: &Bench, d: &Disk, m: &Motion, varpi: f64, eps: f64) -> 
 
 /// The paper's constants and a steady motion bound to its symbols.
 fn steady_bindings(d: &Disk, m: &Motion) -> Bindings<f64> {
-    Bindings::new()
-        .scalar("a", d.a)
-        .scalar("k", d.k)
-        .scalar("g", d.g)
+    disk_constants(d)
         .scalar("alpha_0", m.alpha)
         .scalar("Omega_0", m.precession)
         .scalar("omega_10", m.spin)

@@ -5,6 +5,7 @@ use super::{
     printed_relations, solve, Bench, Bindings, Contact, Disk, Finding, LabFrame, Method, Problem,
     Snapshot, State, Tolerance, Vector3, Worst, PI,
 };
+use crate::equations::disk_constants;
 use numerics::memo::{bits, Memo};
 use physics::disk::toy_sized;
 use std::sync::Arc;
@@ -184,11 +185,7 @@ pub(super) fn lab_bindings(run: &LabSteady, i: usize) -> Bindings<f64> {
     let inertia = Vector3::new(d.i11(), d.i22(), d.i22());
     let e3_body = s.rotation.inverse() * s.e3;
     let i33 = e3_body.dot(&inertia.component_mul(&e3_body));
-    Bindings::new()
-        .scalar("m", d.m)
-        .scalar("g", d.g)
-        .scalar("a", d.a)
-        .scalar("k", d.k)
+    disk_constants(d)
         .scalar("alpha_0", s.alpha())
         .scalar("Omega_0", run.precession)
         .scalar("omega_rel", run.rel_spin)
