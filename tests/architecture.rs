@@ -11,6 +11,7 @@ use std::path::Path;
 /// The workspace crates each crate may depend on: the layers of the design. The references
 /// (`physics`) and the paper's reader (`paper`) never see each other, and nothing below
 /// `checks` sees the claims, so a reference cannot end up checking a claim against itself.
+#[rustfmt::skip]
 const LAYERS: &[(&str, &[&str])] = &[
     ("numerics", &[]),
     ("files", &[]),
@@ -18,29 +19,8 @@ const LAYERS: &[(&str, &[&str])] = &[
     ("paper", &["numerics"]),
     ("experiment", &["numerics", "files", "physics"]),
     ("studies", &["numerics", "files", "physics", "experiment"]),
-    (
-        "checks",
-        &[
-            "numerics",
-            "files",
-            "physics",
-            "paper",
-            "experiment",
-            "studies",
-        ],
-    ),
-    (
-        "report",
-        &[
-            "numerics",
-            "files",
-            "physics",
-            "paper",
-            "experiment",
-            "studies",
-            "checks",
-        ],
-    ),
+    ("checks", &["numerics", "files", "physics", "paper", "experiment", "studies"]),
+    ("report", &["numerics", "files", "physics", "paper", "experiment", "studies", "checks"]),
 ];
 
 /// The arrows of `graph` (crate, the workspace crates it depends on) that [`LAYERS`] does not
@@ -107,11 +87,7 @@ fn the_crate_graph_is_the_architecture() {
     let graph = workspace_graph();
     assert!(graph.len() > LAYERS.len(), "{graph:?}");
     let bad = forbidden_arrows(&graph);
-    assert!(
-        bad.is_empty(),
-        "dependencies the layers forbid:\n{}",
-        bad.join("\n")
-    );
+    assert_none("dependencies the layers forbid", &bad);
 }
 
 #[test]
@@ -233,11 +209,7 @@ fn figures_and_renderers_never_integrate() {
         .collect();
     assert!(files.len() >= 15, "only {} files found", files.len());
     let offenders = computing_lines(&files);
-    assert!(
-        offenders.is_empty(),
-        "figures or renderers that compute:\n{}",
-        offenders.join("\n")
-    );
+    assert_none("figures or renderers that compute", &offenders);
 }
 
 #[test]
@@ -280,11 +252,7 @@ fn no_file_is_longer_than_600_lines() {
     let mut dirs = source_dirs();
     dirs.extend(["tests", "benches"].map(|d| root.join(d)));
     let long = long_files(&dirs);
-    assert!(
-        long.is_empty(),
-        "split these by concept :\n{}",
-        long.join("\n")
-    );
+    assert_none("split these by concept", &long);
 }
 
 #[test]
@@ -365,10 +333,9 @@ fn no_check_imports_another() {
             }
         }
     }
-    assert!(
-        offenders.is_empty(),
-        "check files importing other checks (move what they share into the harness):\n{}",
-        offenders.join("\n")
+    assert_none(
+        "check files importing other checks (move what they share into the harness)",
+        &offenders,
     );
 }
 
@@ -440,10 +407,9 @@ fn only_the_paper_module_reads_the_paper() {
             offenders.push(format!("{}:{n}: {line}", f.display()));
         }
     }
-    assert!(
-        offenders.is_empty(),
-        "read the paper through paper::Paper, not its files:\n{}",
-        offenders.join("\n")
+    assert_none(
+        "read the paper through paper::Paper, not its files",
+        &offenders,
     );
     // The paper module itself embeds the four and opens them in a directory (else the scan
     // looks for the wrong thing).
@@ -519,11 +485,7 @@ fn no_function_is_longer_than_150_lines() {
                 .map(move |(name, n)| format!("{}: fn {name}, {n} lines", f.display()))
         })
         .collect();
-    assert!(
-        long.is_empty(),
-        "split these into named steps:\n{}",
-        long.join("\n")
-    );
+    assert_none("split these into named steps", &long);
 }
 
 #[test]
@@ -534,4 +496,9 @@ fn the_function_rule_would_catch_a_long_function() {
     let over = format!("fn over() {{\n{body}    let y = 2;\n}}\n");
     assert!(long_functions(&at, 150).is_empty());
     assert_eq!(long_functions(&over, 150), vec![("over".to_string(), 151)]);
+}
+
+/// Fails with `what` and the offending lines when there are any.
+fn assert_none(what: &str, offenders: &[String]) {
+    assert!(offenders.is_empty(), "{what}:\n{}", offenders.join("\n"));
 }

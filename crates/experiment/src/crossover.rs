@@ -151,14 +151,7 @@ pub fn fit_crossover(
     free: &Eq84Fit,
 ) -> Result<CrossoverFit, FitError> {
     let n = ta.len();
-    if n < 10 {
-        return Err(FitError::TooFew {
-            what: "cycles",
-            got: n,
-            need: 10,
-            why: " for five parameters",
-        });
-    }
+    FitError::at_least("cycles", n, 10, " for five parameters")?;
     // Times from the first fitted peak: the fit is the same whatever the clock's origin.
     let origin = ta[0];
     let ta: Vec<f64> = ta.iter().map(|t| t - origin).collect();

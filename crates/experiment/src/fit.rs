@@ -210,14 +210,7 @@ pub(crate) fn start84(x: &[f64], y: &[f64], xmax: f64) -> Option<SVector<f64, 3>
 /// the peak-time variances `w` (indexed by peak).
 pub fn fit_eq84(ta: &[f64], tb: &[f64], start: &[usize], w: &[f64]) -> Result<Eq84Fit, FitError> {
     let n = ta.len();
-    if n < 5 {
-        return Err(FitError::TooFew {
-            what: "cycles",
-            got: n,
-            need: 5,
-            why: "",
-        });
-    }
+    FitError::at_least("cycles", n, 5, "")?;
     let x: Vec<f64> = ta.iter().zip(tb).map(|(a, b)| 0.5 * (a + b)).collect();
     let y: Vec<f64> = ta
         .iter()
@@ -333,14 +326,7 @@ impl Problem<2> for Law85<'_> {
 /// variances `w`.
 pub fn fit_eq85(t: &[f64], start: &[usize], w: &[f64]) -> Result<Eq85Fit, FitError> {
     let n = start.len();
-    if n < 4 {
-        return Err(FitError::TooFew {
-            what: "accelerations",
-            got: n,
-            need: 4,
-            why: "",
-        });
-    }
+    FitError::at_least("accelerations", n, 4, "")?;
     let x: Vec<f64> = start
         .iter()
         .map(|&i| 4.0 * PI / (t[i + 2] - t[i]))

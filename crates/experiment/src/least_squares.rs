@@ -233,6 +233,27 @@ pub enum FitError {
     Numerics(String),
 }
 
+impl FitError {
+    /// [`FitError::TooFew`] unless there are at least `need` of `what` (`got` of them); `why`
+    /// says why that many, or is empty.
+    pub fn at_least(
+        what: &'static str,
+        got: usize,
+        need: usize,
+        why: &'static str,
+    ) -> Result<(), FitError> {
+        if got < need {
+            return Err(FitError::TooFew {
+                what,
+                got,
+                need,
+                why,
+            });
+        }
+        Ok(())
+    }
+}
+
 /// Minimises the whitened residuals of `problem` from `p0`, with peak-time variances `w`.
 pub fn solve<const P: usize>(
     problem: &impl Problem<P>,

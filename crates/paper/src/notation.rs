@@ -107,12 +107,15 @@ pub const NOTATIONS: [Notation; 5] = [
 ];
 
 /// Binding strengths, loosest first: what an operand must reach to be written without a group.
-const SUM: u8 = 0;
-const QUOTIENT: u8 = 1;
-const CROSS: u8 = 2;
-const PRODUCT: u8 = 3;
-const FACTOR: u8 = 4;
-const ATOM: u8 = 5;
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+enum Binding {
+    Sum,
+    Quotient,
+    Cross,
+    Product,
+    Factor,
+    Atom,
+}
 
 /// The chains written in notation `n`.
 pub fn write(chains: &[Chain], n: &Notation) -> String {
@@ -176,7 +179,7 @@ impl Writer<'_> {
     }
 
     /// `e` written so that it reads back at binding strength `level` or tighter.
-    fn at(&self, e: &Expr, level: u8) -> String {
+    fn at(&self, e: &Expr, level: Binding) -> String {
         let (s, l) = self.expr(e);
         if l >= level {
             s
@@ -185,23 +188,26 @@ impl Writer<'_> {
         }
     }
 
-    fn expr(&self, e: &Expr) -> (String, u8) {
+    fn expr(&self, e: &Expr) -> (String, Binding) {
         let (s, l) = self.node(e);
         if self.0.braces {
-            (format!("{{{s}}}"), ATOM)
+            (format!("{{{s}}}"), Binding::Atom)
         } else {
             (s, l)
         }
     }
 
-    fn node(&self, e: &Expr) -> (String, u8) {
+    fn node(&self, e: &Expr) -> (String, Binding) {
         let n = self.0;
         let sp = n.space;
         match e {
-            Expr::Num(x) => (format!("{x}"), ATOM),
-            Expr::Pi => (r"\pi".into(), ATOM),
-            Expr::Sym(s) => (self.symbol(s), ATOM),
-            Expr::Neg(a) => (format!("- {sp} {}", self.at(a, QUOTIENT)), SUM),
+            Expr::Num(x) => (format!("{x}"), Binding::Atom),
+            Expr::Pi => (r"\pi".into(), Binding::Atom),
+            Expr::Sym(s) => (self.symbol(s), Binding::Atom),
+            Expr::Neg(a) => (
+                format!("- {sp} {}", self.at(a, Binding::Quotient)),
+                Binding::Sum,
+            ),
             Expr::Call(f, a) => {
                 let arg = self.expr(a).0;
                 let s = match f {
@@ -216,39 +222,46 @@ impl Writer<'_> {
                         format!("{}{open}{arg}{close}", f.latex())
                     }
                 };
-                (s, FACTOR)
+                (s, Binding::Factor)
             }
             Expr::Bin(op, a, b) => self.binary(*op, a, b),
         }
     }
 
-    fn binary(&self, op: Op, a: &Expr, b: &Expr) -> (String, u8) {
+    fn binary(&self, op: Op, a: &Expr, b: &Expr) -> (String, Binding) {
         let n = self.0;
         let sp = n.space;
         match op {
             Op::Add | Op::Sub if n.reorder => {
                 let first = match op {
-                    Op::Add => self.at(b, QUOTIENT),
-                    _ => format!("- {sp} {}", self.at(b, QUOTIENT)),
+                    Op::Add => self.at(b, Binding::Quotient),
+                    _ => format!("- {sp} {}", self.at(b, Binding::Quotient)),
                 };
-                (format!("{first} {sp} + {sp} {}", self.at(a, QUOTIENT)), SUM)
+                (
+                    format!("{first} {sp} + {sp} {}", self.at(a, Binding::Quotient)),
+                    Binding::Sum,
+                )
             }
             Op::Add | Op::Sub => {
                 let sign = if op == Op::Add { "+" } else { "-" };
                 let (l, _) = self.expr(a);
                 (
-                    format!("{l} {sp} {sign} {sp} {}", self.at(b, QUOTIENT)),
-                    SUM,
+                    format!("{l} {sp} {sign} {sp} {}", self.at(b, Binding::Quotient)),
+                    Binding::Sum,
                 )
             }
             Op::Div => match n.quotient {
                 Quotient::Frac(cmd) => (
                     format!(r"\{cmd}{{{}}}{{{}}}", self.expr(a).0, self.expr(b).0),
-                    FACTOR,
+                    Binding::Factor,
                 ),
                 Quotient::Slash => (
-                    format!("{} {sp} / {sp} {}", self.at(a, QUOTIENT), self.at(b, CROSS)),
-                    QUOTIENT,
+                    format!(
+                        "{} {sp} / {sp} {}",
+                        self.at(a, Binding::Quotient),
+                        self.at(b, Binding::Cross)
+                    ),
+                    Binding::Quotient,
                 ),
             },
             Op::Dot | Op::Cross => {
@@ -256,10 +269,10 @@ impl Writer<'_> {
                 (
                     format!(
                         "{} {sp} {cmd} {sp} {}",
-                        self.at(a, CROSS),
-                        self.at(b, PRODUCT)
+                        self.at(a, Binding::Cross),
+                        self.at(b, Binding::Product)
                     ),
-                    CROSS,
+                    Binding::Cross,
                 )
             }
             Op::Mul => {
@@ -268,22 +281,26 @@ impl Writer<'_> {
                     (
                         format!(
                             "{} {sp}{}{sp} {}",
-                            self.at(a, CROSS),
+                            self.at(a, Binding::Cross),
                             n.product,
-                            self.at(b, PRODUCT)
+                            self.at(b, Binding::Product)
                         ),
-                        CROSS,
+                        Binding::Cross,
                     )
                 } else {
                     (
-                        format!("{} {sp} {}", self.at(a, PRODUCT), self.at(b, FACTOR)),
-                        PRODUCT,
+                        format!(
+                            "{} {sp} {}",
+                            self.at(a, Binding::Product),
+                            self.at(b, Binding::Factor)
+                        ),
+                        Binding::Product,
                     )
                 }
             }
             Op::Pow => (
-                format!("{}^{{{}}}", self.at(a, ATOM), self.expr(b).0),
-                FACTOR,
+                format!("{}^{{{}}}", self.at(a, Binding::Atom), self.expr(b).0),
+                Binding::Factor,
             ),
         }
     }

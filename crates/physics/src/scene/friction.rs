@@ -52,12 +52,11 @@ impl Validator<'_> {
         let slip = s.start.slip.unwrap_or_default();
         if !sliding {
             if s.friction.is_some() {
-                return Err(self.err(
-                    &["friction"],
-                    format!(
-                        "the {} model has no friction law: remove `friction`, or use model: sliding",
-                        s.model
-                    ),
+                return Err(self.absent_from_model(
+                    s,
+                    "friction",
+                    "friction law",
+                    ModelKind::Sliding,
                 ));
             }
             if s.start.slip.is_some() {

@@ -125,13 +125,11 @@ impl Validator<'_> {
             return Ok(Vec::new());
         }
         if s.model != ModelKind::Dissipative {
-            return Err(self.err(
-                &["mechanisms"],
-                format!(
-                    "the {} model has no dissipation mechanisms: remove `mechanisms`, or use \
-                     model: dissipative",
-                    s.model
-                ),
+            return Err(self.absent_from_model(
+                s,
+                "mechanisms",
+                "dissipation mechanisms",
+                ModelKind::Dissipative,
             ));
         }
         if s.mechanisms.len() > crate::budget::MAX_MECHANISMS {

@@ -23,6 +23,23 @@ pub struct Range {
 }
 
 impl Range {
+    /// The range `bounds` (smallest, largest, both inclusive) of the value at `key`, in `unit`,
+    /// and why.
+    pub const fn new(
+        key: &'static [&'static str],
+        bounds: (f64, f64),
+        unit: &'static str,
+        why: &'static str,
+    ) -> Self {
+        Range {
+            key,
+            min: bounds.0,
+            max: bounds.1,
+            unit,
+            why,
+        }
+    }
+
     /// `None` when `x` lies in the range, else the sentence to show.
     pub fn refuse(&self, x: f64) -> Option<String> {
         if x.is_finite() && x >= self.min && x <= self.max {
@@ -40,41 +57,24 @@ impl Range {
 }
 
 /// The disk's radius $a$.
-pub const RADIUS: Range = Range {
-    key: &["disk", "radius"],
-    min: 1e-6,
-    max: 1e3,
-    unit: " m",
-    why: "from a micron to a kilometre keeps g/a and m g a well inside double precision",
-};
+#[rustfmt::skip]
+pub const RADIUS: Range = Range::new(&["disk", "radius"], (1e-6, 1e3), " m",
+    "from a micron to a kilometre keeps g/a and m g a well inside double precision");
 
 /// The disk's mass $m$.
-pub const MASS: Range = Range {
-    key: &["disk", "mass"],
-    min: 1e-9,
-    max: 1e9,
-    unit: " kg",
-    why: "beyond, energies and forces leave the range where the tolerances were designed",
-};
+#[rustfmt::skip]
+pub const MASS: Range = Range::new(&["disk", "mass"], (1e-9, 1e9), " kg",
+    "beyond, energies and forces leave the range where the tolerances were designed");
 
 /// Gravity $g$.
-pub const GRAVITY: Range = Range {
-    key: &["disk", "g"],
-    min: 1e-3,
-    max: 1e4,
-    unit: " m/s^2",
-    why: "from a small asteroid to a thousand Earths; the time scale sqrt(a/g) sets every step",
-};
+#[rustfmt::skip]
+pub const GRAVITY: Range = Range::new(&["disk", "g"], (1e-3, 1e4), " m/s^2",
+    "from a small asteroid to a thousand Earths; the time scale sqrt(a/g) sets every step");
 
 /// The inertia factor $k$ of eq 18.
-pub const INERTIA_FACTOR: Range = Range {
-    key: &["disk", "k"],
-    min: 1e-6,
-    max: 1.0,
-    unit: "",
-    why: "a thin body has k <= 1/2 (I_11 = 2 k m a^2 is at most m a^2, a hoop), and up to 1 is \
-          accepted for numerical studies; 1/4 is a uniform disk",
-};
+#[rustfmt::skip]
+pub const INERTIA_FACTOR: Range = Range::new(&["disk", "k"], (1e-6, 1.0), "",
+    "a thin body has k <= 1/2 (I_11 = 2 k m a^2 is at most m a^2, a hoop), and up to 1 is accepted for numerical studies; 1/4 is a uniform disk");
 
 /// Largest starting rate, in units of the disk's natural rate $\sqrt{g/a}$.
 pub const MAX_RATE_IN_NATURAL_UNITS: f64 = 1e6;

@@ -102,13 +102,11 @@ impl Validator<'_> {
         let resistance = match s.resistance {
             None => None,
             Some(_) if s.model != ModelKind::Sliding => {
-                return Err(self.err(
-                    &["resistance"],
-                    format!(
-                        "the {} model has no contact moments: remove `resistance`, or use \
-                         model: sliding",
-                        s.model
-                    ),
+                return Err(self.absent_from_model(
+                    s,
+                    "resistance",
+                    "contact moments",
+                    ModelKind::Sliding,
                 ))
             }
             Some(r) => {

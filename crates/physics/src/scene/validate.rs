@@ -24,6 +24,23 @@ pub(super) struct Validator<'s> {
 }
 
 impl Validator<'_> {
+    /// The refusal of `key` in a scene whose model has no `what`, naming the model that has.
+    pub(super) fn absent_from_model(
+        &self,
+        s: &super::SceneSpec,
+        key: &str,
+        what: &str,
+        has_it: super::ModelKind,
+    ) -> SceneError {
+        self.err(
+            &[key],
+            format!(
+                "the {} model has no {what}: remove `{key}`, or use model: {has_it}",
+                s.model
+            ),
+        )
+    }
+
     pub(super) fn err(&self, path: &[&str], message: impl Into<String>) -> SceneError {
         SceneError {
             file: self.file.to_string(),

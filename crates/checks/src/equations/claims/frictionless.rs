@@ -339,9 +339,8 @@ pub(super) fn frictionless_ratio(k: f64, alpha0: f64) -> f64 {
     let add = |om: f64| {
         let m = Motion {
             alpha: alpha0,
-            alpha_dot: 0.0,
             precession: om,
-            spin: 0.0,
+            ..Motion::default()
         };
         fl::accelerations(&disk, &m).0
     };

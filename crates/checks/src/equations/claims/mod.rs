@@ -39,7 +39,7 @@ use physics::model::dissipation::PowerLaw;
 use physics::model::frictionless::{self as fl, Frictionless};
 use physics::model::lab_frame::{Contact, LabFrame};
 use physics::model::rolling::{self, Rates, Rolling};
-use physics::model::steady::{b_bound, steady_motion};
+use physics::model::steady::{b_bound, steady_motion, vertical_spin};
 use physics::model::{Extras, Model, Motion, Quantity};
 use physics::solve::{solve, Dynamics, Event, Problem, State};
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_3, PI};
@@ -323,15 +323,7 @@ fn mu_required(k: f64, alpha0: f64, beta: f64) -> f64 {
 /// the linearized eqs 23-25 (rolling) at $\alpha = \pi/2$, $\omega_1 = 0$.
 fn rolling_vertical_threshold(k: f64) -> (f64, f64) {
     let disk = unit_disk(k);
-    let stable = |om: f64| {
-        let m = Motion {
-            alpha: FRAC_PI_2,
-            alpha_dot: 0.0,
-            precession: om,
-            spin: 0.0,
-        };
-        varpi2(&rolling_jacobian(&disk, &m)) > 0.0
-    };
+    let stable = |om: f64| varpi2(&rolling_jacobian(&disk, &vertical_spin(om))) > 0.0;
     bisect(0.1, 10.0, WIDTH, stable)
 }
 

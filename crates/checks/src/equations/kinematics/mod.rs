@@ -48,117 +48,30 @@ use mass::{eq18, eq19, eq20, eq21, eq22};
 use rolling::{eq12, eq13, eq14, eq15, eq16, eq17, v_cm_rolling, A};
 
 /// The checks of this part of the paper.
+#[rustfmt::skip]
 pub const EQUATIONS: &[Equation] = &[
-    Equation {
-        number: 1,
-        label: "e1",
-        check: identity_check::<1>,
-    },
-    Equation {
-        number: 2,
-        label: "e2",
-        check: identity_check::<2>,
-    },
-    Equation {
-        number: 3,
-        label: "e4",
-        check: identity_check::<3>,
-    },
-    Equation {
-        number: 4,
-        label: "e3",
-        check: identity_check::<4>,
-    },
-    Equation {
-        number: 5,
-        label: "e5",
-        check: identity_check::<5>,
-    },
-    Equation {
-        number: 6,
-        label: "e6",
-        check: identity_check::<6>,
-    },
-    Equation {
-        number: 7,
-        label: "e7",
-        check: identity_check::<7>,
-    },
-    Equation {
-        number: 8,
-        label: "e25b",
-        check: eq8,
-    },
-    Equation {
-        number: 9,
-        label: "e250",
-        check: identity_check::<9>,
-    },
-    Equation {
-        number: 10,
-        label: "e8",
-        check: identity_check::<10>,
-    },
-    Equation {
-        number: 11,
-        label: "e9",
-        check: identity_check::<11>,
-    },
-    Equation {
-        number: 12,
-        label: "e10",
-        check: eq12,
-    },
-    Equation {
-        number: 13,
-        label: "e11",
-        check: eq13,
-    },
-    Equation {
-        number: 14,
-        label: "e10a",
-        check: eq14,
-    },
-    Equation {
-        number: 15,
-        label: "e10b",
-        check: eq15,
-    },
-    Equation {
-        number: 16,
-        label: "e11a",
-        check: eq16,
-    },
-    Equation {
-        number: 17,
-        label: "e11b",
-        check: eq17,
-    },
-    Equation {
-        number: 18,
-        label: "e12",
-        check: eq18,
-    },
-    Equation {
-        number: 19,
-        label: "e13",
-        check: eq19,
-    },
-    Equation {
-        number: 20,
-        label: "e14",
-        check: eq20,
-    },
-    Equation {
-        number: 21,
-        label: "e15",
-        check: eq21,
-    },
-    Equation {
-        number: 22,
-        label: "e17",
-        check: eq22,
-    },
+    Equation { number: 1, label: "e1", check: identity_check::<1> },
+    Equation { number: 2, label: "e2", check: identity_check::<2> },
+    Equation { number: 3, label: "e4", check: identity_check::<3> },
+    Equation { number: 4, label: "e3", check: identity_check::<4> },
+    Equation { number: 5, label: "e5", check: identity_check::<5> },
+    Equation { number: 6, label: "e6", check: identity_check::<6> },
+    Equation { number: 7, label: "e7", check: identity_check::<7> },
+    Equation { number: 8, label: "e25b", check: eq8 },
+    Equation { number: 9, label: "e250", check: identity_check::<9> },
+    Equation { number: 10, label: "e8", check: identity_check::<10> },
+    Equation { number: 11, label: "e9", check: identity_check::<11> },
+    Equation { number: 12, label: "e10", check: eq12 },
+    Equation { number: 13, label: "e11", check: eq13 },
+    Equation { number: 14, label: "e10a", check: eq14 },
+    Equation { number: 15, label: "e10b", check: eq15 },
+    Equation { number: 16, label: "e11a", check: eq16 },
+    Equation { number: 17, label: "e11b", check: eq17 },
+    Equation { number: 18, label: "e12", check: eq18 },
+    Equation { number: 19, label: "e13", check: eq19 },
+    Equation { number: 20, label: "e14", check: eq20 },
+    Equation { number: 21, label: "e15", check: eq21 },
+    Equation { number: 22, label: "e17", check: eq22 },
 ];
 
 // ------------------------------------------------------------------------------------------
