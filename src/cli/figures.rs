@@ -32,7 +32,7 @@ impl Args {
 
 fn figures(only: Option<&str>, out: &Path, format: FigureFormat) -> anyhow::Result<()> {
     use ::report::pipeline::{compute, RunConfig};
-    let names: Vec<&str> = ::report::figures::NAMES.to_vec();
+    let names: Vec<&str> = ::report::figures::names();
     let wanted: Vec<&str> = match only {
         Some(list) => list
             .split(',')

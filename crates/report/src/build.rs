@@ -13,8 +13,9 @@ use crate::document::equation_checked;
 use crate::error::ReportError;
 use crate::figures::{self, Drawing, Figure};
 use crate::pipeline::{compute, RunConfig};
-use crate::results::{Results, Study};
+use crate::results::Results;
 use crate::sliding_tables;
+use crate::study::{self, Study};
 use checks::check::{Checked, Subject, Tally};
 use checks::equations::{Bench, UNCHECKABLE_CLAIMS, UNCHECKABLE_EQUATIONS};
 use checks::finding::{Finding, Verdict};
@@ -247,8 +248,14 @@ fn precision_rows(study: &precision::Study) -> (Vec<PrecisionRow>, Vec<json::Pre
     (rows, records)
 }
 
-fn missing(study: Study) -> String {
-    format!("the report needs the {study} study, which was not computed")
+/// The result of `study`, or the sentence saying it was not computed.
+fn needed<'r, S: Study>(results: &'r Results, study: &S) -> Result<&'r S::Output, String> {
+    results.get(study).ok_or_else(|| {
+        format!(
+            "the report needs the {} study, which was not computed",
+            S::NAME
+        )
+    })
 }
 
 /// Computes every study once ([`compute`]) and builds the report from the results, at the
@@ -268,10 +275,7 @@ pub fn from_results(
     results: &Results,
     progress: &(dyn Fn(&str) + Sync),
 ) -> Result<(Report, Vec<Figure>), ReportError> {
-    let checked: &[Checked] = results
-        .checks
-        .as_deref()
-        .ok_or_else(|| missing(Study::Checks))?;
+    let checked: &[Checked] = needed(results, &study::Checks)?;
     let (stored, mutation) = super::mutation::scores_for(bench.paper);
     let (sections, unchecked) = section_views(bench, checked, stored.as_ref())?;
     let (claims, unchecked_claims) = claim_views(bench, checked);
@@ -283,7 +287,7 @@ pub fn from_results(
         .filter_map(failure_view)
         .collect();
     let (corrections, downstream, correction_records) =
-        corrections_view(bench, checked, results.corrections.as_ref());
+        corrections_view(bench, checked, results.get(&study::Corrections));
     let (eqs, cls): (Vec<&Checked>, Vec<&Checked>) = checked
         .iter()
         .partition(|c| matches!(c.subject, Subject::Equation { .. }));
@@ -291,16 +295,8 @@ pub fn from_results(
     progress("drawing the figures");
     let mut figures = figures::all(results)?;
     figures.push(premises_figure(bench, checked));
-    let (precision_rows, precision_records) = precision_rows(
-        results
-            .precision
-            .as_ref()
-            .ok_or_else(|| missing(Study::Precision))?,
-    );
-    let synthetic = results
-        .experiment
-        .as_ref()
-        .ok_or_else(|| missing(Study::Experiment))?;
+    let (precision_rows, precision_records) = precision_rows(needed(results, &study::Precision)?);
+    let synthetic = needed(results, &study::Experiment)?;
     let figure_views = figure_views(&figures)?;
 
     let scenes = BUILTIN
@@ -327,11 +323,11 @@ pub fn from_results(
         super::document::Records {
             precision: precision_records,
             corrections: correction_records,
-            friction: results.friction.as_ref().map(|f| f.studies.clone()),
+            friction: results.get(&study::Friction).map(|f| f.studies.clone()),
         },
     );
 
-    let studies = results.friction.as_ref().map(|f| &f.studies);
+    let studies = results.get(&study::Friction).map(|f| &f.studies);
     let report = Report {
         paper: super::document::PAPER.into(),
         version: env!("CARGO_PKG_VERSION").into(),
@@ -361,7 +357,7 @@ pub fn from_results(
             experiment::numbers::numbers(f.beta, f.c_inv_root, physics::Disk::uniform(1.0).k)
                 .to_string()
         },
-        friction: results.friction.as_ref().map_or_else(String::new, |f| {
+        friction: results.get(&study::Friction).map_or_else(String::new, |f| {
             crate::number::prose(&super::sliding::text(&f.studies, bench.paper))
         }),
         friction_summary: studies
@@ -518,7 +514,7 @@ fn figure_views(figures: &[Figure]) -> Result<Vec<FigureView>, ReportError> {
 fn corrections_view(
     bench: &Bench,
     checked: &[Checked],
-    study: Option<&crate::results::CorrectionsStudy>,
+    study: Option<&crate::study::CorrectionsStudy>,
 ) -> (
     Vec<super::CorrectionView>,
     String,

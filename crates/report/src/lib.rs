@@ -17,6 +17,7 @@ pub mod render;
 pub mod results;
 pub mod sliding;
 pub mod sliding_tables;
+pub mod study;
 pub mod study_table;
 pub mod tex;
 

@@ -51,7 +51,8 @@ pub use error::{Drawn, FigureError};
 pub use geometry::Geometry;
 pub use legend::Layout;
 
-use crate::results::{Results, Study};
+use crate::results::Results;
+use crate::study::{self, Run, Study};
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use serde::Serialize;
@@ -210,146 +211,145 @@ fn write_png(path: &std::path::Path, rgb: &[u8], (w, h): (u32, u32)) -> Result<(
     writer.finish().drawn()
 }
 
-/// Every figure's name, in the report's order.
-pub const NAMES: [&str; 20] = [
-    "fig1",
-    "tek04",
-    "tek01",
-    "tek02",
-    "Omega",
-    "tek726",
-    "tek728",
-    "Odot",
-    "residuals",
-    "coverage",
-    "stability-map",
-    "frequency",
-    "energy-drift",
-    "path",
-    "spin-down-alpha",
-    "lab-frame-difference",
-    "work-precision",
-    "slip-stick",
-    "slip-stick-path",
-    "mechanisms",
+/// Figures drawn together from the same results (the experiment's eight share one analysis):
+/// their names, in the report's order, the studies they read, and how they are drawn. Adding
+/// a figure is its file and its row here.
+pub struct Family {
+    /// The figures' names.
+    pub names: &'static [&'static str],
+    /// The studies they are drawn from (none for the algebra of the geometry and the stability
+    /// map, nor for the coverage studies, which are stored: `experiment::coverage_record`).
+    pub needs: &'static [&'static dyn Run],
+    /// Draws them from the results.
+    pub build: fn(&Results) -> Result<Vec<Figure>, FigureError>,
+}
+
+/// Every family, in the report's order.
+pub const FAMILIES: &[Family] = &[
+    Family {
+        names: &["fig1"],
+        needs: &[],
+        build: |_| Ok(vec![geometry_figure()?]),
+    },
+    Family {
+        names: &[
+            "tek04",
+            "tek01",
+            "tek02",
+            "Omega",
+            "tek726",
+            "tek728",
+            "Odot",
+            "residuals",
+        ],
+        needs: &[&study::Experiment],
+        build: |r| experiment::figures(need(r, &study::Experiment)?),
+    },
+    Family {
+        names: &["coverage"],
+        needs: &[],
+        build: |_| {
+            let stored = ::experiment::coverage_record::stored().map_err(|e| e.to_string())?;
+            Ok(vec![coverage::studies(&stored)])
+        },
+    },
+    Family {
+        names: &["stability-map"],
+        needs: &[],
+        build: |r| Ok(vec![stability::figure(paper(r)?)?]),
+    },
+    Family {
+        names: &["frequency"],
+        needs: &[&study::Frequency],
+        build: |r| {
+            Ok(vec![frequency::figure(
+                need(r, &study::Frequency)?,
+                paper(r)?,
+            )?])
+        },
+    },
+    Family {
+        names: &["energy-drift"],
+        needs: &[&study::EnergyDrift],
+        build: |r| Ok(vec![energy::figure(need(r, &study::EnergyDrift)?)?]),
+    },
+    Family {
+        names: &["path"],
+        needs: &[&study::Paths, &study::SpinDown],
+        build: |r| {
+            let mut runs = need(r, &study::Paths)?.clone();
+            runs.push(need(r, &study::SpinDown)?.path.clone());
+            Ok(vec![path::figure(&runs)?])
+        },
+    },
+    Family {
+        names: &["spin-down-alpha"],
+        needs: &[&study::SpinDown],
+        build: |r| Ok(vec![spin_down::figure(need(r, &study::SpinDown)?)?]),
+    },
+    Family {
+        names: &["lab-frame-difference"],
+        needs: &[&study::LabFrame],
+        build: |r| Ok(vec![lab_frame::figure(need(r, &study::LabFrame)?)?]),
+    },
+    Family {
+        names: &["work-precision"],
+        needs: &[&study::Precision],
+        build: |r| Ok(vec![precision::figure(need(r, &study::Precision)?)]),
+    },
+    Family {
+        names: &["slip-stick", "slip-stick-path", "mechanisms"],
+        needs: &[&study::Friction],
+        build: |r| {
+            let f = need(r, &study::Friction)?;
+            Ok(vec![
+                sliding::slip_stick(f)?,
+                sliding::paths(f)?,
+                sliding::mechanisms(f)?,
+            ])
+        },
+    },
 ];
 
 /// Every figure's name, in the report's order.
-pub fn names() -> &'static [&'static str] {
-    &NAMES
+pub fn names() -> Vec<&'static str> {
+    FAMILIES
+        .iter()
+        .flat_map(|f| f.names.iter().copied())
+        .collect()
 }
 
-/// Families of figures built together (the experiment's seven share one analysis).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Family {
-    Geometry,
-    Coverage,
-    Experiment,
-    Stability,
-    Frequency,
-    Energy,
-    Path,
-    SpinDown,
-    LabFrame,
-    Precision,
-    Friction,
+fn family(name: &str) -> Result<&'static Family, String> {
+    FAMILIES
+        .iter()
+        .find(|f| f.names.contains(&name))
+        .ok_or_else(|| {
+            format!(
+                "no figure named {name:?}; the figures are: {}",
+                names().join(", ")
+            )
+        })
 }
 
-fn family(name: &str) -> Option<Family> {
-    Some(match name {
-        "fig1" => Family::Geometry,
-        "tek04" | "tek01" | "tek02" | "Omega" | "tek726" | "tek728" | "Odot" | "residuals" => {
-            Family::Experiment
-        }
-        "coverage" => Family::Coverage,
-        "stability-map" => Family::Stability,
-        "frequency" => Family::Frequency,
-        "energy-drift" => Family::Energy,
-        "path" => Family::Path,
-        "spin-down-alpha" => Family::SpinDown,
-        "lab-frame-difference" => Family::LabFrame,
-        "work-precision" => Family::Precision,
-        "slip-stick" | "slip-stick-path" | "mechanisms" => Family::Friction,
-        _ => return None,
+/// The studies a figure is drawn from; an unknown name is an error that lists the figures.
+pub fn needs(name: &str) -> Result<&'static [&'static dyn Run], FigureError> {
+    Ok(family(name)?.needs)
+}
+
+fn need<'r, S: Study>(r: &'r Results, study: &S) -> Result<&'r S::Output, FigureError> {
+    r.get(study).ok_or_else(|| {
+        format!(
+            "the figures need the {} study, which was not computed",
+            S::NAME
+        )
+        .into()
     })
-}
-
-fn unknown(name: &str) -> String {
-    format!(
-        "no figure named {name:?}; the figures are: {}",
-        NAMES.join(", ")
-    )
-}
-
-/// The studies a figure is drawn from (none for the geometry and the stability map, which are
-/// algebra); an unknown name is an error that lists the figures.
-pub fn needs(name: &str) -> Result<&'static [Study], FigureError> {
-    Ok(match family(name).ok_or_else(|| unknown(name))? {
-        // The coverage studies are stored, not computed by a run (see
-        // `experiment::coverage_record`).
-        Family::Geometry | Family::Stability | Family::Coverage => &[],
-        Family::Experiment => &[Study::Experiment],
-        Family::Frequency => &[Study::Frequency],
-        Family::Energy => &[Study::EnergyDrift],
-        Family::Path => &[Study::Paths, Study::SpinDown],
-        Family::SpinDown => &[Study::SpinDown],
-        Family::LabFrame => &[Study::LabFrame],
-        Family::Precision => &[Study::Precision],
-        Family::Friction => &[Study::Friction],
-    })
-}
-
-fn need<T>(x: &Option<T>, study: Study) -> Result<&T, FigureError> {
-    x.as_ref()
-        .ok_or_else(|| format!("the figures need the {study} study, which was not computed").into())
 }
 
 fn paper(r: &Results) -> Result<&paper::Paper, FigureError> {
     r.paper
         .as_ref()
         .ok_or_else(|| "the figures need the paper the results were computed from".into())
-}
-
-fn build_family(f: Family, r: &Results) -> Result<Vec<Figure>, FigureError> {
-    match f {
-        Family::Geometry => Ok(vec![geometry_figure()?]),
-        Family::Coverage => Ok(vec![coverage::studies(
-            &::experiment::coverage_record::stored().map_err(|e| e.to_string())?,
-        )]),
-        Family::Experiment => experiment::figures(need(&r.experiment, Study::Experiment)?),
-        Family::Stability => Ok(vec![stability::figure(paper(r)?)?]),
-        Family::Frequency => Ok(vec![frequency::figure(
-            need(&r.frequency, Study::Frequency)?,
-            paper(r)?,
-        )?]),
-        Family::Energy => Ok(vec![energy::figure(need(&r.energy, Study::EnergyDrift)?)?]),
-        Family::Path => {
-            let mut runs = need(&r.paths, Study::Paths)?.clone();
-            let sd = need(&r.spin_down, Study::SpinDown)?;
-            runs.push(sd.path.clone());
-            Ok(vec![path::figure(&runs)?])
-        }
-        Family::SpinDown => Ok(vec![spin_down::figure(need(
-            &r.spin_down,
-            Study::SpinDown,
-        )?)?]),
-        Family::LabFrame => Ok(vec![lab_frame::figure(need(
-            &r.lab_frame,
-            Study::LabFrame,
-        )?)?]),
-        Family::Precision => Ok(vec![precision::figure(need(
-            &r.precision,
-            Study::Precision,
-        )?)]),
-        Family::Friction => {
-            let f = need(&r.friction, Study::Friction)?;
-            Ok(vec![
-                sliding::slip_stick(f)?,
-                sliding::paths(f)?,
-                sliding::mechanisms(f)?,
-            ])
-        }
-    }
 }
 
 /// Figure 1: the geometry of a uniform disk (the toy's a = 37.5 mm) in the steady motion at
@@ -392,17 +392,15 @@ pub fn geometry_figure() -> Result<Figure, FigureError> {
 /// Families are built on rayon's threads; the result does not depend on that.
 pub fn some(names: &[&str], results: &Results) -> Result<Vec<Figure>, FigureError> {
     use rayon::prelude::*;
-    let mut families: Vec<Family> = Vec::new();
+    let mut families: Vec<&'static Family> = Vec::new();
     for n in names {
-        let f = family(n).ok_or_else(|| unknown(n))?;
-        if !families.contains(&f) {
+        let f = family(n)?;
+        if !families.iter().any(|g| std::ptr::eq(*g, f)) {
             families.push(f);
         }
     }
-    let built: Vec<Result<Vec<Figure>, FigureError>> = families
-        .par_iter()
-        .map(|&f| build_family(f, results))
-        .collect();
+    let built: Vec<Result<Vec<Figure>, FigureError>> =
+        families.par_iter().map(|f| (f.build)(results)).collect();
     let mut pool = Vec::new();
     for b in built {
         pool.extend(b?);
@@ -421,7 +419,7 @@ pub fn some(names: &[&str], results: &Results) -> Result<Vec<Figure>, FigureErro
 
 /// Every figure, in the report's order, drawn from `results`.
 pub fn all(results: &Results) -> Result<Vec<Figure>, FigureError> {
-    some(&NAMES, results)
+    some(&names(), results)
 }
 
 /// Keeps at most about `bins` points of a long series for drawing, honestly: the samples are
@@ -531,10 +529,7 @@ mod tests {
             .to_string();
         assert!(e.contains("spin-down"), "{e}");
         // The algebraic figures need no study.
-        let with_paper = Results {
-            paper: Some(paper::Paper::built_in().unwrap()),
-            ..Results::default()
-        };
+        let with_paper = Results::of(Some(paper::Paper::built_in().unwrap()));
         let f = some(&["fig1", "stability-map"], &with_paper).unwrap();
         assert_eq!(f.len(), 2);
     }

@@ -1,0 +1,107 @@
+//! The report's studies, each a computation in the style of argmin's `Solver`: a [`Study`] names
+//! itself and computes its result from the bench; the executor ([`crate::pipeline::compute`])
+//! runs those a report or a figure needs, each once, and gives every one the same observer
+//! ([`Observer`]). Adding a study is one file here and its row in [`ALL`]; the figures that read
+//! it name it in their own row (`crate::figures::FAMILIES`).
+
+use crate::error::ReportError;
+use checks::equations::Bench;
+use std::any::Any;
+use std::sync::Arc;
+
+mod checks_run;
+mod corrections;
+mod energy_drift;
+mod experiment;
+mod frequency;
+mod friction;
+mod lab_frame;
+mod paths;
+mod precision;
+mod spin_down;
+
+pub use checks_run::Checks;
+pub use corrections::{Corrections, CorrectionsStudy};
+pub use energy_drift::EnergyDrift;
+pub use experiment::Experiment;
+pub use frequency::Frequency;
+pub use friction::Friction;
+pub use lab_frame::LabFrame;
+pub use paths::Paths;
+pub use precision::Precision;
+pub use spin_down::SpinDown;
+
+/// One step of a study that counts its work: `done` of `total`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Step {
+    /// Steps done.
+    pub done: usize,
+    /// Steps in all.
+    pub total: usize,
+}
+
+/// What every study reports its steps to.
+pub type Observer<'a> = dyn Fn(Step) + Sync + 'a;
+
+/// A computation of the report.
+pub trait Study: Sync {
+    /// Its result: plain data that the figures and renderers read.
+    type Output: Send + Sync + 'static;
+    /// Its name, in progress lines and errors.
+    const NAME: &'static str;
+    /// Computes the result for `bench`; `observe` hears each step the study counts.
+    fn compute(&self, bench: &Bench, observe: &Observer) -> Result<Self::Output, ReportError>;
+}
+
+/// A result of any study, kept under the study's name.
+pub type Output = Arc<dyn Any + Send + Sync>;
+
+/// Any [`Study`] behind one face, for the executor's table.
+pub trait Run: Sync {
+    /// The study's name.
+    fn name(&self) -> &'static str;
+    /// Computes the study's result.
+    fn run(&self, bench: &Bench, observe: &Observer) -> Result<Output, ReportError>;
+}
+
+impl<S: Study> Run for S {
+    fn name(&self) -> &'static str {
+        S::NAME
+    }
+
+    fn run(&self, bench: &Bench, observe: &Observer) -> Result<Output, ReportError> {
+        Ok(Arc::new(self.compute(bench, observe)?))
+    }
+}
+
+/// Every study, in the order the report lists them; the checks first, as the longest.
+pub const ALL: &[&dyn Run] = &[
+    &Checks,
+    &Experiment,
+    &Precision,
+    &EnergyDrift,
+    &Frequency,
+    &Paths,
+    &SpinDown,
+    &LabFrame,
+    &Corrections,
+    &Friction,
+];
+
+/// The names of `studies`, in order.
+pub fn names(studies: &[&dyn Run]) -> Vec<&'static str> {
+    studies.iter().map(|s| s.name()).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_study_has_its_own_name() {
+        let mut n = names(ALL);
+        n.sort_unstable();
+        n.dedup();
+        assert_eq!(n.len(), ALL.len(), "{:?}", names(ALL));
+    }
+}
