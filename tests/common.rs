@@ -37,3 +37,15 @@ pub fn temp_dir(family: &str, tag: &str) -> PathBuf {
     std::fs::create_dir_all(&d).expect("a scratch directory");
     d
 }
+
+/// Asserts that `results` hold exactly the studies `expected` (in any order), each computed once.
+pub fn assert_computed_once(results: &report::results::Results, mut expected: Vec<&str>) {
+    let studies: Vec<&str> = results.computed.keys().copied().collect();
+    expected.sort_unstable();
+    assert_eq!(studies, expected);
+    assert!(
+        results.computed.values().all(|&n| n == 1),
+        "{:?}",
+        results.computed
+    );
+}

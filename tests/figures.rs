@@ -40,18 +40,11 @@ fn every_figure_builds_draws_and_is_deterministic() {
     let built = start.elapsed();
     // One pipeline: the figures need every study but the checks and the corrections (which
     // feed the summary, not a figure), and each ran once.
-    let studies: Vec<&str> = results.computed.keys().copied().collect();
-    let mut expected: Vec<&str> = study::names(study::ALL)
+    let figures_read: Vec<&str> = study::names(study::ALL)
         .into_iter()
         .filter(|s| !["checks", "corrections"].contains(s))
         .collect();
-    expected.sort_unstable();
-    assert_eq!(studies, expected);
-    assert!(
-        results.computed.values().all(|&n| n == 1),
-        "{:?}",
-        results.computed
-    );
+    crate::common::assert_computed_once(&results, figures_read);
     println!("all figures' data in {built:?}");
     let names: Vec<&str> = a.iter().map(|f| f.name).collect();
     assert_eq!(names, figures::names());

@@ -36,15 +36,7 @@ fn a_full_report_computes_each_study_once() {
     use report::pipeline::{compute, RunConfig};
     use report::study;
     let results = compute(&RunConfig::report(Bench::default()), &|_| {}).unwrap();
-    let studies: Vec<&str> = results.computed.keys().copied().collect();
-    let mut expected = study::names(study::ALL);
-    expected.sort_unstable();
-    assert_eq!(studies, expected);
-    assert!(
-        results.computed.values().all(|&n| n == 1),
-        "{:?}",
-        results.computed
-    );
+    crate::common::assert_computed_once(&results, study::names(study::ALL));
     let (report, figures) = from_results(&Bench::default(), &results, &|_| {}).unwrap();
     // The figures of the studies, and the premises graph drawn from the checks.
     assert_eq!(figures.len(), report::figures::names().len() + 1);
