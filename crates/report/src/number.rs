@@ -82,12 +82,17 @@ fn exponent(x: f64, digits: usize) -> i32 {
 /// `x` rounded to the decimal place `10^place`, written plainly (`place` -3 gives three
 /// decimals; a positive place rounds to tens, hundreds, ..).
 fn plain_at(x: f64, place: i32) -> String {
-    if place < 0 {
+    let s = if place < 0 {
         let decimals = (-place) as usize;
         format!("{x:.decimals$}")
     } else {
         let unit = 10f64.powi(place);
         format!("{:.0}", (x / unit).round() * unit)
+    };
+    // A small negative value rounded to zero is zero, not "-0.0".
+    match s.strip_prefix('-') {
+        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_string(),
+        _ => s,
     }
 }
 
@@ -103,10 +108,14 @@ pub fn at_place(x: f64, place: i32) -> String {
     let magnitude = exponent(x, 17);
     let digits = magnitude - place + 1;
     if x == 0.0 || digits < 1 {
-        return if plain(place) {
-            plain_at(0.0, place)
+        // Below the place's unit: it rounds to zero or to one unit of the place.
+        return if (-6..=0).contains(&place) {
+            plain_at(x, place)
         } else {
-            format!("0e{place}")
+            format!(
+                "{}e{place}",
+                (x / 10f64.powi(place)).round().abs() * x.signum()
+            )
         };
     }
     let s = format!("{x:.*e}", (digits - 1) as usize);
@@ -146,9 +155,10 @@ pub fn measured(value: f64, sigma: f64) -> String {
     )
 }
 
-/// `value` to the decimal place of an uncertainty `sigma` it is compared with, without the
-/// ±: the place of σ's second significant digit (a column of values beside one with their
-/// uncertainties). Without a usable σ, as [`significant`] writes it.
+/// `value` to the decimal place of an uncertainty or an absolute tolerance `sigma` it is
+/// compared with, without the ±: the place of σ's second significant digit (a fitted order
+/// within 0.25 of the claimed one, a column of values beside one with their uncertainties).
+/// Without a usable σ, as [`significant`] writes it.
 pub fn to_place_of(value: f64, sigma: f64) -> String {
     if !(sigma.is_finite() && sigma > 0.0) {
         return significant(value);
@@ -324,7 +334,7 @@ mod tests {
 
     #[test]
     fn a_value_is_written_to_the_digits_its_uncertainty_or_tolerance_supports() {
-        let cases: [(&str, String, &str); 20] = [
+        let cases: Vec<(&str, String, &str)> = vec![
             (
                 "σ to two digits, the value to its place",
                 measured(1.95312, 0.0481),
@@ -341,6 +351,11 @@ mod tests {
                 "3.00 ± 0.10",
             ),
             ("a negative value", measured(-30.61048, 1.5), "-30.6 ± 1.5"),
+            (
+                "a negative value that rounds to zero",
+                measured(-0.004, 9.6),
+                "0.0 ± 9.6",
+            ),
             (
                 "σ of tens: one power of ten",
                 measured(12345.6, 480.0),
@@ -401,6 +416,16 @@ mod tests {
             ),
             ("an error: three digits", error(0.0481234), "0.0481"),
             ("a column of inputs", places(0.15, 2), "0.15"),
+            (
+                "below the place, rounding up",
+                to_place_of(0.0075961, 0.25),
+                "0.01",
+            ),
+            (
+                "below the place, rounding down",
+                to_place_of(-0.0024, 0.25),
+                "0.00",
+            ),
         ];
         for (what, got, want) in cases {
             assert_eq!(got, want, "{what}");
