@@ -30,8 +30,8 @@ fn moments(pulls: &[f64]) -> (String, String) {
 /// The table: for each stored study, β and t₀.
 pub fn tables(stored: &[StoredCoverage]) -> Vec<StudyTable> {
     let mut t = StudyTable::new(
-        "Coverage of the experiment's stated standard uncertainties σ: the percentage of \
-         recordings whose truth lies inside ±1σ (68.3 % claimed) and ±1.96σ (95 % claimed) of \
+        "Coverage of the experiment's stated standard uncertainties σ, for each kind of \
+         recordings (how many in brackets): the percentage of recordings whose truth lies inside ±1σ (68.3 % claimed) and ±1.96σ (95 % claimed) of \
          the fitted value, and the pulls (fitted − true)/σ (mean 0 and standard deviation 1 \
          claimed), each with its Monte Carlo uncertainty; the worst error of β (dimensionless) \
          and of t₀ (ms).",
@@ -54,7 +54,7 @@ pub fn tables(stored: &[StoredCoverage]) -> Vec<StudyTable> {
         for (what, pulls, worst) in rows {
             let (mean, sd) = moments(pulls);
             t.row(vec![
-                format!("{}, {} ({} refused)", s.recordings, c.runs, c.refused),
+                format!("{} ({})", s.recordings, c.runs),
                 what.into(),
                 inside(c, pulls, 1.0),
                 inside(c, pulls, 1.96),
@@ -92,13 +92,14 @@ pub fn section(
         .iter()
         .map(|s| format!("{} {}", s.coverage.runs, s.recordings))
         .collect();
+    let refused: usize = stored.iter().map(|s| s.coverage.refused).sum();
     let figure = figure.map_or(String::new(), |n| format!(", Figure {n}"));
     let mut made: Vec<String> = stored.iter().map(|s| s.date.clone()).collect();
     made.dedup();
     let summary = format!(
         "Recordings that follow eq 79 exactly (β = 2, Ω = 100 rad/s seven seconds before t₀; {}), \
          each with its own noise seed, are analysed as a user's recording would \
-         be; a refused recording counts as outside. Against the 68.3 % and 95 % the intervals \
+         be; a refused recording ({refused} in all) counts as outside. Against the 68.3 % and 95 % the intervals \
          claim, {} ({}{figure}). A study of hundreds of recordings takes minutes, so the report \
          draws the stored studies (snapshots/coverage.json, made {}); the suite re-runs their \
          first recordings and finds the same pulls to the last bit.",
