@@ -167,3 +167,91 @@ fn no_long_monospace_block_is_a_sections_body() {
         long.join("\n")
     );
 }
+
+/// The numbers `html` gives what follows `opening` (`Table N.` or `Figure N.` opening a
+/// caption), in the order they appear.
+fn numbered(html: &str, opening: &str) -> Vec<usize> {
+    html.match_indices(opening)
+        .filter_map(|(i, _)| {
+            let rest = &html[i + opening.len()..];
+            let end = rest.find(|c: char| !c.is_ascii_digit())?;
+            rest[..end].parse().ok()
+        })
+        .collect()
+}
+
+/// Whether `paragraphs` cite number `n` of `kind` (as `Table 3`, or within a range
+/// `Tables 2–7`).
+fn cited(paragraphs: &str, kind: &str, n: usize) -> bool {
+    paragraphs.contains(&format!("{kind} {n})"))
+        || paragraphs.contains(&format!("{kind} {n},"))
+        || paragraphs.contains(&format!("{kind} {n} "))
+        || paragraphs.contains(&format!("{kind} {n}."))
+        || paragraphs
+            .match_indices(&format!("{kind}s "))
+            .any(|(i, m)| {
+                let rest = &paragraphs[i + m.len()..];
+                let range: Vec<usize> = rest
+                    .split(|c: char| !c.is_ascii_digit())
+                    .take(2)
+                    .filter_map(|x| x.parse().ok())
+                    .collect();
+                matches!(range[..], [a, b] if (a..=b).contains(&n))
+            })
+}
+
+/// The paragraphs of `html`: its `<p>` elements' text.
+fn paragraphs(html: &str) -> String {
+    html.match_indices("<p>")
+        .map(|(i, _)| {
+            let rest = &html[i..];
+            &rest[..rest.find("</p>").unwrap_or(rest.len())]
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+#[test]
+fn tables_and_figures_are_numbered_in_order_and_cited_from_the_text() {
+    let (html, tex, figures, _) = built();
+    let tables = numbered(html, "<figcaption><strong>Table ");
+    assert!(tables.len() >= 9, "{} numbered tables", tables.len());
+    assert_eq!(tables, (1..=tables.len()).collect::<Vec<_>>());
+    assert_eq!(
+        html.matches("<table class=\"study\"").count(),
+        tables.len(),
+        "a study table without a number"
+    );
+    let text = paragraphs(html);
+    let uncited: Vec<usize> = tables
+        .iter()
+        .copied()
+        .filter(|&n| !cited(&text, "Table", n))
+        .collect();
+    assert!(uncited.is_empty(), "tables no paragraph cites: {uncited:?}");
+    // The LaTeX numbers each table as the HTML does.
+    let tex_tables: Vec<usize> = numbered(tex, "\\setcounter{table}{")
+        .into_iter()
+        .map(|n| n + 1)
+        .collect();
+    assert_eq!(tex_tables, tables);
+    assert_eq!(
+        tex.matches("\\caption{").count() - figures.len(),
+        tables.len()
+    );
+    let figure_numbers = numbered(html, "<figcaption><strong>Figure ");
+    assert_eq!(figure_numbers, (1..=figures.len()).collect::<Vec<_>>());
+    // The scanners can fail: a gap in the numbers, and a table no paragraph cites.
+    let gap = numbered(
+        "<figcaption><strong>Table 1.</strong><figcaption><strong>Table 3.</strong>",
+        "<figcaption><strong>Table ",
+    );
+    assert_eq!(gap, vec![1, 3]);
+    assert_ne!(gap, (1..=gap.len()).collect::<Vec<_>>());
+    assert!(!cited(
+        "<p>as Table 2 shows, and Tables 4–6</p>",
+        "Table",
+        3
+    ));
+    assert!(cited("<p>as Table 2 shows, and Tables 4–6</p>", "Table", 5));
+}

@@ -6,23 +6,21 @@
 use super::json;
 use super::mathml::display_math;
 use super::{
-    fmt_num, ClaimView, EquationView, FailureView, FigureView, FindingView, PrecisionRow, Report,
-    RootCauseView, RunSettings, SceneView, SectionView, Summary,
+    fmt_num, ClaimView, EquationView, FailureView, FigureView, FindingView, Report, RootCauseView,
+    RunSettings, SceneView, SectionView, Summary,
 };
 use crate::document::equation_checked;
 use crate::error::ReportError;
 use crate::figures::{self, Drawing, Figure};
 use crate::pipeline::{compute, RunConfig};
 use crate::results::Results;
-use crate::sliding_tables;
-use crate::study::{self, Study};
+use crate::study;
 use checks::check::{Checked, Subject, Tally};
 use checks::equations::{Bench, UNCHECKABLE_CLAIMS, UNCHECKABLE_EQUATIONS};
 use checks::finding::{Finding, Verdict};
 use checks::mutation::StoredScores;
 use physics::scene::{builtin::BUILTIN, Scene};
 use rayon::prelude::*;
-use studies::precision;
 
 /// The subject of each section of the paper, in our words.
 const SECTIONS: [(u32, &str); 10] = [
@@ -47,13 +45,17 @@ const SECTIONS: [(u32, &str); 10] = [
     (12, "Summary of the motion"),
 ];
 
-/// Claimed and reference values as a reader should see them: for an approximation these are
-/// the claimed and the fitted orders.
+/// Claimed and reference values as a reader should see them, to the digits the check's
+/// tolerance supports ([`crate::number::within`]; relative, as the findings' errors are): for
+/// an approximation the claimed and the fitted orders, the fitted one to the place of the
+/// tolerance on their difference.
 fn values(f: &Finding) -> (String, String) {
+    use crate::number::{to_place_of, within};
+    let tolerance = f.tolerance.value;
     if f.method == checks::finding::Method::Asymptotic || f.unit == "order" {
         (
             format!("order {}", fmt_num(f.claimed)),
-            format!("order {:.2}", f.reference),
+            format!("order {}", to_place_of(f.reference, tolerance)),
         )
     } else {
         // With the unit where the check knows it (none shown for a pure number).
@@ -62,8 +64,8 @@ fn values(f: &Finding) -> (String, String) {
             u => format!(" {u}"),
         };
         (
-            format!("{}{unit}", fmt_num(f.claimed)),
-            format!("{}{unit}", fmt_num(f.reference)),
+            format!("{}{unit}", within(f.claimed, tolerance)),
+            format!("{}{unit}", within(f.reference, tolerance)),
         )
     }
 }
@@ -227,37 +229,6 @@ fn premises_figure(bench: &Bench, checked: &[Checked]) -> Figure {
     }
 }
 
-/// The speed/accuracy study's table, for reading and for tools.
-fn precision_rows(study: &precision::Study) -> (Vec<PrecisionRow>, Vec<json::PrecisionRecord>) {
-    let mut rows = Vec::new();
-    let mut records = Vec::new();
-    for p in study.series.iter().flat_map(|s| &s.points) {
-        rows.push(PrecisionRow {
-            label: p.label.clone(),
-            evaluations: p.evaluations,
-            final_error: crate::number::error(p.final_error),
-            trajectory_error: crate::number::error(p.trajectory_error),
-        });
-        records.push(json::PrecisionRecord {
-            label: p.label.clone(),
-            evaluations: p.evaluations,
-            final_error: p.final_error,
-            trajectory_error: p.trajectory_error,
-        });
-    }
-    (rows, records)
-}
-
-/// The result of `study`, or the sentence saying it was not computed.
-fn needed<'r, S: Study>(results: &'r Results, study: &S) -> Result<&'r S::Output, String> {
-    results.get(study).ok_or_else(|| {
-        format!(
-            "the report needs the {} study, which was not computed",
-            S::NAME
-        )
-    })
-}
-
 /// Computes every study once ([`compute`]) and builds the report from the results, at the
 /// bench's accuracy. `progress` receives short status lines.
 pub fn build(
@@ -275,7 +246,7 @@ pub fn from_results(
     results: &Results,
     progress: &(dyn Fn(&str) + Sync),
 ) -> Result<(Report, Vec<Figure>), ReportError> {
-    let checked: &[Checked] = needed(results, &study::Checks)?;
+    let checked: &[Checked] = results.required(&study::Checks, "the report")?;
     let (stored, mutation) = super::mutation::scores_for(bench.paper);
     let (sections, unchecked) = section_views(bench, checked, stored.as_ref())?;
     let (claims, unchecked_claims) = claim_views(bench, checked);
@@ -295,9 +266,8 @@ pub fn from_results(
     progress("drawing the figures");
     let mut figures = figures::all(results)?;
     figures.push(premises_figure(bench, checked));
-    let (precision_rows, precision_records) = precision_rows(needed(results, &study::Precision)?);
-    let synthetic = needed(results, &study::Experiment)?;
     let figure_views = figure_views(&figures)?;
+    let studies = crate::sections::sections(bench, results, &figure_views)?;
 
     let scenes = BUILTIN
         .iter()
@@ -321,13 +291,12 @@ pub fn from_results(
         &settings,
         &figure_views,
         super::document::Records {
-            precision: precision_records,
+            precision: studies.precision_records,
             corrections: correction_records,
             friction: results.get(&study::Friction).map(|f| f.studies.clone()),
         },
     );
 
-    let studies = results.get(&study::Friction).map(|f| &f.studies);
     let report = Report {
         paper: super::document::PAPER.into(),
         version: env!("CARGO_PKG_VERSION").into(),
@@ -348,21 +317,15 @@ pub fn from_results(
         sections,
         claims,
         figures: figure_views,
-        precision: precision_rows,
-        experiment: crate::experiment_section::text(synthetic),
-        experiment_summary: crate::experiment_section::summary(synthetic),
-        experiment_tables: vec![crate::experiment_section::table(synthetic)],
+        experiment: studies.experiment,
         paper_numbers: {
             let f = bench.paper.fit;
             experiment::numbers::numbers(f.beta, f.c_inv_root, physics::Disk::uniform(1.0).k)
                 .to_string()
         },
-        friction: results.get(&study::Friction).map_or_else(String::new, |f| {
-            crate::number::prose(&super::sliding::text(&f.studies, bench.paper))
-        }),
-        friction_summary: studies
-            .map_or(String::new(), |s| sliding_tables::summary(s, bench.paper)),
-        friction_tables: studies.map_or(Vec::new(), sliding_tables::tables),
+        friction: studies.friction,
+        coverage: studies.coverage,
+        precision: studies.precision,
         scenes,
         document,
     };
@@ -485,8 +448,10 @@ fn claim_views(bench: &Bench, checked: &[Checked]) -> (Vec<ClaimView>, Unchecked
 fn figure_views(figures: &[Figure]) -> Result<Vec<FigureView>, ReportError> {
     figures
         .par_iter()
-        .map(|f| {
+        .enumerate()
+        .map(|(i, f)| {
             Ok(FigureView {
+                number: i + 1,
                 name: f.name.to_string(),
                 title: f.title.clone(),
                 caption: crate::number::prose(&f.caption),

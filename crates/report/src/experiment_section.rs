@@ -2,8 +2,8 @@
 //! analysis found, a table of its fits against the simulated model's truth, and the analysis's
 //! full text for the disclosure and the appendix.
 
-use crate::number::prose;
-use crate::study_table::StudyTable;
+use crate::number::{measured, prose, significant, to_place_of};
+use crate::study_table::{cite, StudySection, StudyTable};
 use studies::synthetic::Synthetic;
 
 /// The analysis's full text, with the error split when the model's truth is known.
@@ -29,62 +29,80 @@ pub fn table(e: &Synthetic) -> StudyTable {
     );
     t.row(vec![
         "eq 84, on the light signal".into(),
-        format!("{:.4} ± {:.4}", a.eq84.beta, beta_sigma),
-        format!("{:.4} ± {:.4}", a.eq84.t0, t0_sigma),
+        measured(a.eq84.beta, beta_sigma),
+        measured(a.eq84.t0, t0_sigma),
     ]);
     t.row(vec![
         "eq 85, on the light signal".into(),
-        format!("{:.4} ± {:.4}", a.eq85.beta, a.eq85.beta_sigma),
+        measured(a.eq85.beta, a.eq85.beta_sigma),
         "–".into(),
     ]);
+    // The fit to the exact motion and the truth have no noise: written to the place of the
+    // light signal's uncertainties, against which they are read.
     if let Some(law) = &e.motion_law {
         t.row(vec![
             "eq 84, on the model's exact motion".into(),
-            format!("{:.4}", law.beta),
-            format!("{:.4}", law.t0),
+            to_place_of(law.beta, beta_sigma),
+            to_place_of(law.t0, t0_sigma),
         ]);
     }
     if let Some(truth) = &e.trace.truth {
         t.row(vec![
             "truth: the simulated model".into(),
-            format!("{}", crate::number::significant(truth.beta)),
-            format!("{:.4}", truth.t0),
+            significant(truth.beta),
+            to_place_of(truth.t0, t0_sigma),
         ]);
     }
     t
 }
 
-/// What the analysis found, in a paragraph.
-pub fn summary(e: &Synthetic) -> String {
+/// What the analysis found, in a paragraph citing `tables`.
+pub fn summary(e: &Synthetic, tables: &[StudyTable]) -> String {
     let a = &e.analysis;
     let w = &a.window;
+    let (beta_sigma, t0_sigma) = a.stated_sigmas();
     let mut s = format!(
         "The analysis fits {} cycles between t = {:.2} s and {:.2} s, Ω rising to {:.0} rad/s. \
-         Eq 84 gives β = {:.3} and eq 85 β = {:.3}.",
+         Eq 84 gives β = {} and eq 85 β = {} ({}).",
         w.cycles.len(),
         w.t_first,
         w.t_last,
         w.omega_last,
-        a.eq84.beta,
-        a.eq85.beta
+        measured(a.eq84.beta, beta_sigma),
+        measured(a.eq85.beta, a.eq85.beta_sigma),
+        cite(tables)
     );
     if let Some(truth) = &e.trace.truth {
+        let ms = 1e3 * t0_sigma;
         s.push_str(&format!(
-            " The model that made the signal has β = {}; eq 84's t₀ falls {:.1} ms before the \
+            " The model that made the signal has β = {}; eq 84's t₀ falls ({}) ms before the \
              model's singular time",
-            crate::number::significant(truth.beta),
-            1e3 * (truth.t0 - a.eq84.t0)
+            significant(truth.beta),
+            measured(1e3 * (truth.t0 - a.eq84.t0), ms)
         ));
         match &e.motion_law {
             Some(law) => s.push_str(&format!(
-                ", and eq 84 fitted to the model's exact motion (no light, no noise) falls {:.1} \
-                 ms before it: that part of the error is the law's (the model is not eq 79 \
-                 exactly), the rest, {:.2} ms, the analysis's own.",
-                1e3 * (truth.t0 - law.t0),
-                1e3 * (law.t0 - a.eq84.t0)
+                ", and eq 84 fitted to the model's exact motion (no light, no noise) falls {} ms \
+                 before it: that part of the error is the law's (the model is not eq 79 \
+                 exactly), the rest, ({}) ms, the analysis's own.",
+                to_place_of(1e3 * (truth.t0 - law.t0), ms),
+                measured(1e3 * (law.t0 - a.eq84.t0), ms)
             )),
             None => s.push('.'),
         }
     }
     s
+}
+
+/// The section, its tables numbered already.
+pub fn section(e: &Synthetic, tables: Vec<StudyTable>) -> StudySection {
+    StudySection {
+        title: "The experiment, simulated".into(),
+        summary: summary(e, &tables),
+        tables,
+        output: text(e),
+        output_title: "The analysis's full output: the window, the fits of eqs 84 and 85, the \
+                       model choice, the checks of a spin-down, and the error split"
+            .into(),
+    }
 }

@@ -3,6 +3,7 @@
 //! by templates (`render`) to HTML, LaTeX or JSON. Templates and figures only read it.
 
 pub mod build;
+pub mod coverage_section;
 pub mod document;
 pub mod error;
 pub mod experiment_section;
@@ -13,8 +14,10 @@ pub mod mathml;
 pub mod mutation;
 pub mod number;
 pub mod pipeline;
+pub mod precision_section;
 pub mod render;
 pub mod results;
+pub mod sections;
 pub mod sliding;
 pub mod sliding_tables;
 pub mod study;
@@ -41,22 +44,16 @@ pub struct Report {
     pub claims: Vec<ClaimView>,
     /// The figures.
     pub figures: Vec<FigureView>,
-    /// The speed/accuracy study on the benchmark scene.
-    pub precision: Vec<PrecisionRow>,
     /// The synthetic experiment of section 11: the analysis of a simulated light signal.
-    pub experiment: String,
-    /// What the simulated experiment found, in a paragraph.
-    pub experiment_summary: String,
-    /// Its fits against the simulated model's truth.
-    pub experiment_tables: Vec<study_table::StudyTable>,
+    pub experiment: study_table::StudySection,
     /// The paper's own numbers of section 11, recomputed from its fitted constants.
     pub paper_numbers: String,
-    /// The friction studies (sliding model): their full text output.
-    pub friction: String,
-    /// The friction studies in a paragraph: what was run and found (empty when not computed).
-    pub friction_summary: String,
-    /// The friction studies' numbers as tables.
-    pub friction_tables: Vec<study_table::StudyTable>,
+    /// The friction studies (sliding model), when computed.
+    pub friction: Option<study_table::StudySection>,
+    /// The Monte Carlo coverage of the experiment's stated uncertainties (stored studies).
+    pub coverage: study_table::StudySection,
+    /// The speed/accuracy study on the benchmark scene.
+    pub precision: study_table::StudySection,
     /// The built-in scenes the figures and checks use.
     pub scenes: Vec<SceneView>,
     /// The same results for tools (`report.json`), with numbers as numbers.
@@ -261,6 +258,8 @@ pub struct ClaimView {
 /// A figure, rendered.
 #[derive(Debug, Clone, Serialize)]
 pub struct FigureView {
+    /// Its number in the report (Figure 1, ..), the same in the HTML and the LaTeX.
+    pub number: usize,
     /// Its name (the paper's where it is one of the paper's).
     pub name: String,
     /// Title.
@@ -289,19 +288,6 @@ pub struct PaperScaleView {
     pub svg: String,
     /// File name of its paper-size PNG (LaTeX report), relative to the report.
     pub file: String,
-}
-
-/// A row of the speed/accuracy study.
-#[derive(Debug, Clone, Serialize)]
-pub struct PrecisionRow {
-    /// Method and tolerance.
-    pub label: String,
-    /// Right-hand-side evaluations.
-    pub evaluations: u64,
-    /// Relative error at the final time.
-    pub final_error: String,
-    /// Largest relative error over the trajectory.
-    pub trajectory_error: String,
 }
 
 /// A built-in scene.

@@ -1,6 +1,18 @@
-//! How the report writes a number, in one place: six significant digits for a value, two for an
-//! error or a tolerance, scientific notation as `1e-12` (never `0.000000000001`), and the
-//! numbers inside sentences that the checks and studies compose brought to the same form.
+//! How the report writes a number, in one place (the HTML and the LaTeX; `report.json` keeps
+//! every number whole):
+//!
+//! - a value with a stated uncertainty σ ([`measured`]): σ to two significant digits and the
+//!   value to the same decimal place, `1.953 ± 0.048` (not `1.95312 ± 0.0481`);
+//! - a value compared within a relative tolerance r ([`within`]): to the ⌈−log₁₀ r⌉ + 1
+//!   significant digits the tolerance supports (the last one the first the tolerance can move),
+//!   at least two and at most the default six;
+//! - a value with neither ([`significant`]): the default, six significant digits, trailing
+//!   zeros dropped;
+//! - an error or a tolerance ([`error`]): three significant digits;
+//! - a table's column of inputs ([`places`]): a fixed number of decimals, so that it aligns;
+//!
+//! scientific notation as `1e-12` (never `0.000000000001`), and the numbers inside sentences
+//! that the checks and studies compose brought to the same form ([`prose`]).
 
 use std::collections::HashMap;
 use tera::{Result, Value};
@@ -51,6 +63,142 @@ pub fn error(x: f64) -> String {
     }
 }
 
+/// Significant digits of a stated uncertainty.
+const UNCERTAINTY_DIGITS: usize = 2;
+
+/// The fewest significant digits a value compared within a tolerance is shown with.
+const FEWEST_DIGITS: usize = 2;
+
+/// The exponent of `x` in scientific notation once rounded to `digits` significant digits
+/// (`9.96` to two digits is `1.0e1`: exponent 1).
+fn exponent(x: f64, digits: usize) -> i32 {
+    let places = digits.saturating_sub(1);
+    format!("{x:.places$e}")
+        .split_once('e')
+        .and_then(|(_, e)| e.parse().ok())
+        .unwrap_or(0)
+}
+
+/// `x` rounded to the decimal place `10^place`, written plainly (`place` -3 gives three
+/// decimals; a positive place rounds to tens, hundreds, ..).
+fn plain_at(x: f64, place: i32) -> String {
+    let s = if place < 0 {
+        let decimals = (-place) as usize;
+        format!("{x:.decimals$}")
+    } else {
+        let unit = 10f64.powi(place);
+        format!("{:.0}", (x / unit).round() * unit)
+    };
+    // A small negative value rounded to zero is zero, not "-0.0".
+    match s.strip_prefix('-') {
+        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_string(),
+        _ => s,
+    }
+}
+
+/// `x` rounded to the decimal place `10^place`: plainly when it lies between 1e-3 and 1e5 and
+/// the place is between units and six decimals, else as a mantissa and a power of ten
+/// (`4.80e-7`, `1.23e3`: a plain `1230` would not say whether its zero is a digit). Trailing
+/// zeros are kept: they are digits the uncertainty or tolerance supports.
+pub fn at_place(x: f64, place: i32) -> String {
+    if !x.is_finite() {
+        return format!("{x}");
+    }
+    let plain = |magnitude: i32| (-3..5).contains(&magnitude) && (-6..=0).contains(&place);
+    let magnitude = exponent(x, 17);
+    let digits = magnitude - place + 1;
+    if x == 0.0 || digits < 1 {
+        // Below the place's unit: it rounds to zero or to one unit of the place.
+        return if (-6..=0).contains(&place) {
+            plain_at(x, place)
+        } else {
+            format!(
+                "{}e{place}",
+                (x / 10f64.powi(place)).round().abs() * x.signum()
+            )
+        };
+    }
+    let s = format!("{x:.*e}", (digits - 1) as usize);
+    let (mantissa, rounded) = s.split_once('e').unwrap_or((&s, "0"));
+    let rounded: i32 = rounded.parse().unwrap_or(magnitude);
+    if plain(rounded) {
+        return plain_at(x, place);
+    }
+    // A carry into a new leading digit (9.96e-8 to two digits is 1.0e-7) keeps the place: one
+    // more digit.
+    let mut mantissa = mantissa.to_string();
+    if rounded > magnitude {
+        mantissa.push_str(if mantissa.contains('.') { "0" } else { ".0" });
+    }
+    format!("{mantissa}e{rounded}")
+}
+
+/// A value with its stated standard uncertainty `sigma`: σ to two significant digits and the
+/// value to the same decimal place, `1.953 ± 0.048`; outside 1e-3..1e5, or when σ is 10 or
+/// more, with one power of ten, `(4.80 ± 0.13)e-7`, `(1.235 ± 0.048)e4`. Without a usable σ (zero, negative, not finite) the value alone, as
+/// [`significant`] writes it.
+pub fn measured(value: f64, sigma: f64) -> String {
+    if !(sigma.is_finite() && sigma > 0.0 && value.is_finite()) {
+        return significant(value);
+    }
+    let place = exponent(sigma, UNCERTAINTY_DIGITS) - (UNCERTAINTY_DIGITS as i32 - 1);
+    let scale = exponent(value.abs().max(sigma), 17);
+    if (-3..5).contains(&scale) && (-6..=0).contains(&place) {
+        return format!("{} ± {}", plain_at(value, place), plain_at(sigma, place));
+    }
+    let unit = 10f64.powi(scale);
+    let mantissa = scale - place;
+    format!(
+        "({} ± {})e{scale}",
+        plain_at(value / unit, -mantissa),
+        plain_at(sigma / unit, -mantissa)
+    )
+}
+
+/// `value` to the decimal place of an uncertainty or an absolute tolerance `sigma` it is
+/// compared with, without the ±: the place of σ's second significant digit (a fitted order
+/// within 0.25 of the claimed one, a column of values beside one with their uncertainties).
+/// Without a usable σ, as [`significant`] writes it.
+pub fn to_place_of(value: f64, sigma: f64) -> String {
+    if !(sigma.is_finite() && sigma > 0.0) {
+        return significant(value);
+    }
+    at_place(
+        value,
+        exponent(sigma, UNCERTAINTY_DIGITS) - (UNCERTAINTY_DIGITS as i32 - 1),
+    )
+}
+
+/// The significant digits a relative tolerance `r` supports: ⌈−log₁₀ r⌉ + 1, at least two and
+/// at most the default six (a tolerance of 5 % supports three: 52.2, not 52.2388).
+pub fn digits_within(r: f64) -> usize {
+    if !(r.is_finite() && r > 0.0) {
+        return VALUE_DIGITS;
+    }
+    // The small slack keeps exact powers of ten (log10(0.01) may be -1.9999999999999996) on
+    // their digit.
+    let supported = (-r.log10() - 1e-9).ceil() + 1.0;
+    (supported.max(FEWEST_DIGITS as f64) as usize).min(VALUE_DIGITS)
+}
+
+/// A value compared within the relative tolerance `r`, to the digits `r` supports
+/// ([`digits_within`]), trailing zeros kept. Where `r` supports the default six digits or
+/// more, and for an integer (a printed number such as the paper's 60°, or an exact order),
+/// as [`significant`] writes it.
+pub fn within(value: f64, r: f64) -> String {
+    let digits = digits_within(r);
+    let integer = value.fract() == 0.0 && value.abs() < 1e6;
+    if digits >= VALUE_DIGITS || integer || !value.is_finite() {
+        return significant(value);
+    }
+    at_place(value, exponent(value, digits) - (digits as i32 - 1))
+}
+
+/// A column's value with a fixed number of decimals (`places`), so that a table's inputs align.
+pub fn places(x: f64, places: usize) -> String {
+    format!("{x:.places$}")
+}
+
 /// Drops the trailing zeros of a decimal fraction, and the point when nothing follows it.
 fn trim_fraction(s: &str) -> String {
     if s.contains('.') {
@@ -62,10 +210,9 @@ fn trim_fraction(s: &str) -> String {
 
 /// A sentence composed elsewhere (a check's worst case, a study's note) with its numbers
 /// written as the report writes them: a decimal with more than six significant digits is
-/// rounded to six, and a record written as `Name { field: value, .. }` becomes
-/// `symbol = value unit, ..` in the paper's symbols.
+/// rounded to six.
 pub fn prose(text: &str) -> String {
-    records(&decimals(text))
+    decimals(text)
 }
 
 /// Rounds every decimal of `text` that carries more than six significant digits.
@@ -139,62 +286,6 @@ fn rounded(token: &str) -> String {
     }
 }
 
-/// The paper's symbol and the unit of a field of a state record.
-fn symbol(field: &str) -> (&str, &'static str) {
-    match field {
-        "alpha" => ("alpha", " rad"),
-        "alpha_dot" => ("alpha_dot", " rad/s"),
-        "precession" => ("Omega", " rad/s"),
-        "spin" => ("omega_1", " rad/s"),
-        other => (other, ""),
-    }
-}
-
-/// Rewrites each `Name { field: value, .. }` of `text` as `symbol = value unit, ..`.
-fn records(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    let mut rest = text;
-    while let Some(open) = rest.find(" { ") {
-        let name_start = rest[..open]
-            .rfind(|c: char| !c.is_ascii_alphanumeric() && c != '_')
-            .map_or(0, |p| p + 1);
-        let name = &rest[name_start..open];
-        let close = rest[open..].find(" }").map(|p| open + p);
-        let fields = close.and_then(|c| record_fields(&rest[open + 3..c]));
-        match (name.chars().next(), close, fields) {
-            (Some(first), Some(close), Some(fields)) if first.is_ascii_uppercase() => {
-                out.push_str(&rest[..name_start]);
-                out.push_str(&fields);
-                rest = &rest[close + 2..];
-            }
-            _ => {
-                out.push_str(&rest[..open + 3]);
-                rest = &rest[open + 3..];
-            }
-        }
-    }
-    out.push_str(rest);
-    out
-}
-
-/// `field: value, ..` as `symbol = value unit, ..`, or None when it is not a record's fields.
-fn record_fields(body: &str) -> Option<String> {
-    let parts: Option<Vec<String>> = body
-        .split(", ")
-        .map(|part| {
-            let (field, value) = part.split_once(": ")?;
-            let simple = !field.is_empty()
-                && field.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
-                && value.parse::<f64>().is_ok();
-            simple.then(|| {
-                let (symbol, unit) = symbol(field);
-                format!("{symbol} = {value}{unit}")
-            })
-        })
-        .collect();
-    parts.map(|p| p.join(", "))
-}
-
 /// The tera filter `num`: a number as [`significant`] writes it.
 pub fn filter(value: &Value, _: &HashMap<String, Value>) -> Result<Value> {
     match value.as_f64() {
@@ -222,11 +313,7 @@ mod tests {
     }
 
     #[test]
-    fn sentences_lose_their_long_decimals_and_record_dumps() {
-        assert_eq!(
-            prose("k 0.9, Motion { alpha: 0.05978412879850955, alpha_dot: 17.778814092951272, precession: -30.61048371006373, spin: -46.961570275632866 } (worst of 600 points)"),
-            "k 0.9, alpha = 0.0597841 rad, alpha_dot = 17.7788 rad/s, Omega = -30.6105 rad/s, omega_1 = -46.9616 rad/s (worst of 600 points)"
-        );
+    fn sentences_lose_their_long_decimals() {
         assert_eq!(
             prose("3 -> 3.0029999999999997 at t = 13.569437099558 s"),
             "3 -> 3.003 at t = 13.5694 s"
@@ -243,5 +330,191 @@ mod tests {
             prose("a solver: { project: energy }"),
             "a solver: { project: energy }"
         );
+    }
+
+    #[test]
+    fn a_value_is_written_to_the_digits_its_uncertainty_or_tolerance_supports() {
+        let cases: Vec<(&str, String, &str)> = vec![
+            (
+                "σ to two digits, the value to its place",
+                measured(1.95312, 0.0481),
+                "1.953 ± 0.048",
+            ),
+            (
+                "zeros the uncertainty supports are kept",
+                measured(2.0, 0.12),
+                "2.00 ± 0.12",
+            ),
+            (
+                "σ rounding up to a new digit",
+                measured(3.0, 0.0996),
+                "3.00 ± 0.10",
+            ),
+            ("a negative value", measured(-30.61048, 1.5), "-30.6 ± 1.5"),
+            (
+                "a negative value that rounds to zero",
+                measured(-0.004, 9.6),
+                "0.0 ± 9.6",
+            ),
+            (
+                "σ of tens: one power of ten",
+                measured(12345.6, 480.0),
+                "(1.235 ± 0.048)e4",
+            ),
+            (
+                "a small value: one power of ten",
+                measured(4.8012e-7, 1.27e-8),
+                "(4.80 ± 0.13)e-7",
+            ),
+            (
+                "no uncertainty: the default",
+                measured(0.0123456789, 0.0),
+                "0.0123457",
+            ),
+            (
+                "an unusable uncertainty: the default",
+                measured(1.5, f64::NAN),
+                "1.5",
+            ),
+            (
+                "5 % supports three digits",
+                within(52.23875609352411, 0.05),
+                "52.2",
+            ),
+            ("an integer is exact", within(60.0, 0.05), "60"),
+            (
+                "1.3e-4 supports five digits",
+                within(17.047998919996346, 1.28e-4),
+                "17.048",
+            ),
+            (
+                "a small value within 3.6 %",
+                within(0.006158361541386154, 0.0362),
+                "0.00616",
+            ),
+            (
+                "a tight tolerance: the default six",
+                within(1.9881334659624084, 1e-12),
+                "1.98813",
+            ),
+            ("scientific within 5 %", within(1.85175e-7, 0.05), "1.85e-7"),
+            ("a carry keeps the digits", within(0.99996, 0.05), "1.00"),
+            (
+                "tens within 5 %: one power of ten",
+                within(1234.5, 0.05),
+                "1.23e3",
+            ),
+            (
+                "a carry in scientific notation",
+                at_place(9.96e-8, -9),
+                "1.00e-7",
+            ),
+            (
+                "a value to the place of σ",
+                to_place_of(1.95312, 0.0481),
+                "1.953",
+            ),
+            ("an error: three digits", error(0.0481234), "0.0481"),
+            ("a column of inputs", places(0.15, 2), "0.15"),
+            (
+                "below the place, rounding up",
+                to_place_of(0.0075961, 0.25),
+                "0.01",
+            ),
+            (
+                "below the place, rounding down",
+                to_place_of(-0.0024, 0.25),
+                "0.00",
+            ),
+        ];
+        for (what, got, want) in cases {
+            assert_eq!(got, want, "{what}");
+        }
+        let digits: Vec<usize> = [0.01, 0.1, 0.5, 1e-3, 1e-12, 2.0, 0.05]
+            .map(digits_within)
+            .to_vec();
+        assert_eq!(digits, [3, 2, 2, 4, 6, 2, 3]);
+    }
+
+    /// The significant digits of a written number: its mantissa's digits without the sign, the
+    /// point and the leading zeros.
+    fn figures(s: &str) -> String {
+        let mantissa = s.split('e').next().unwrap_or(s);
+        mantissa
+            .chars()
+            .filter(char::is_ascii_digit)
+            .collect::<String>()
+            .trim_start_matches('0')
+            .to_string()
+    }
+
+    /// The value's and the uncertainty's digits of a `value ± sigma` as written.
+    fn parts(s: &str) -> (String, String) {
+        let s = s.trim_start_matches('(');
+        let (v, rest) = s.split_once(" ± ").expect("a value and its uncertainty");
+        let sigma = rest.split(')').next().unwrap_or(rest);
+        (figures(v), figures(sigma))
+    }
+
+    /// Whether `write` keeps the digits of every case when value and σ are scaled by a power of
+    /// ten (a change of unit: m to mm, s to ms, to μs).
+    fn keeps_digits_across_units(write: &dyn Fn(f64, f64) -> String, cases: &[(f64, f64)]) -> bool {
+        cases.iter().all(|&(v, sigma)| {
+            let here = parts(&write(v, sigma));
+            (-6..=6).all(|k| {
+                let s = 10f64.powi(k);
+                parts(&write(v * s, sigma * s)) == here
+            })
+        })
+    }
+
+    const MEASURED: [(f64, f64); 6] = [
+        (1.95312, 0.0481),
+        (-30.61048, 1.53),
+        (0.0637, 0.0021),
+        (2.0, 0.12),
+        (4.8012e-7, 1.27e-8),
+        (587.3, 41.7),
+    ];
+
+    #[test]
+    fn the_same_value_in_other_units_keeps_its_digits() {
+        assert!(keeps_digits_across_units(&measured, &MEASURED));
+        // The test can fail: fixed decimals write 1.9531 ± 0.0481 in m but 1953.1200 ±
+        // 48.1000 in mm.
+        let fixed = |v: f64, s: f64| format!("{v:.4} ± {s:.4}");
+        assert!(!keeps_digits_across_units(&fixed, &MEASURED));
+        // Any other scale (degrees to radians, feet to metres): σ keeps two digits, and the
+        // value's count moves by at most the one digit a decimal carry adds.
+        for (v, sigma) in MEASURED {
+            let (v0, s0) = parts(&measured(v, sigma));
+            for scale in [std::f64::consts::PI / 180.0, 0.3048, 7.0, 1.0 / 3.0] {
+                let (v1, s1) = parts(&measured(v * scale, sigma * scale));
+                assert_eq!(s1.len(), 2, "{v} ± {sigma} times {scale}");
+                assert!(
+                    s0.len() == 2 && v1.len().abs_diff(v0.len()) <= 1,
+                    "{v} ± {sigma} times {scale}"
+                );
+            }
+        }
+        // Within a tolerance the count depends on the tolerance alone: any scale keeps it.
+        for v in [
+            52.23875609352411,
+            0.006158361541386154,
+            17.047998919996346,
+            1.85175e-7,
+        ] {
+            for r in [0.05, 0.0362, 1.28e-4, 0.25] {
+                let n = figures(&within(v, r)).len();
+                assert_eq!(n, digits_within(r), "{v} within {r}");
+                for scale in [1e3, 1e-6, std::f64::consts::PI / 180.0, 0.3048, 7.0] {
+                    assert_eq!(
+                        figures(&within(v * scale, r)).len(),
+                        n,
+                        "{v} times {scale} within {r}"
+                    );
+                }
+            }
+        }
     }
 }

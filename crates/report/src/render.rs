@@ -35,6 +35,14 @@ fn templates() -> Result<Tera, ReportError> {
             include_str!("../../../templates/partials/study_table.html.tera"),
         ),
         (
+            "partials/study_section.html",
+            include_str!("../../../templates/partials/study_section.html.tera"),
+        ),
+        (
+            "partials/study_section.tex",
+            include_str!("../../../templates/partials/study_section.tex.tera"),
+        ),
+        (
             "partials/study_table.tex",
             include_str!("../../../templates/partials/study_table.tex.tera"),
         ),

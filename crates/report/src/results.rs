@@ -30,6 +30,17 @@ impl Results {
         self.outputs.get(S::NAME)?.downcast_ref()
     }
 
+    /// The result of `study`, or the sentence saying that `reader` (the report, the figures)
+    /// needs it and it was not computed.
+    pub fn required<S: Study>(&self, study: &S, reader: &str) -> Result<&S::Output, String> {
+        self.get(study).ok_or_else(|| {
+            format!(
+                "{reader} need the {} study, which was not computed",
+                S::NAME
+            )
+        })
+    }
+
     /// Keeps `output` as the result of the study `name`, counting the computation.
     pub(crate) fn insert(&mut self, name: &'static str, output: Output) {
         *self.computed.entry(name).or_insert(0) += 1;

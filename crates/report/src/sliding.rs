@@ -398,7 +398,7 @@ fn mechanisms(o: &mut String, m: &experiment::mechanisms::Mechanisms) {
     );
     for r in &m.spin_downs {
         let fitted = match (r.beta, &r.refused) {
-            (Some((b, e)), None) => format!("{b:.3} +- {e:.3}"),
+            (Some((b, e)), None) => crate::number::measured(b, e),
             (_, Some(_)) => "refused".into(),
             (None, None) => "-".into(),
         };

@@ -1,13 +1,9 @@
 //! The "Friction and contact" section as the paper would print it: a paragraph of what was run
 //! and found, and the studies' numbers in tables (the full program text is [`crate::sliding`]).
 
-use crate::study_table::StudyTable;
+use crate::number::{measured, places as fixed, prose, scientific};
+use crate::study_table::{StudySection, StudyTable};
 use studies::sliding::Studies;
-
-/// A number with `places` decimals.
-fn fixed(x: f64, places: usize) -> String {
-    format!("{x:.places$}")
-}
 
 /// The section's tables.
 pub fn tables(s: &Studies) -> Vec<StudyTable> {
@@ -188,10 +184,10 @@ fn mechanisms(s: &Studies) -> StudyTable {
         };
         t.row(vec![
             r.mechanism.clone(),
-            format!("{}{unit}", crate::number::scientific(r.coefficient, 3)),
+            format!("{}{unit}", scientific(r.coefficient, 3)),
             fixed(r.exponent, 1),
             match (r.beta, &r.refused) {
-                (Some((b, e)), None) => format!("{b:.3} ± {e:.3}"),
+                (Some((b, e)), None) => measured(b, e),
                 (_, Some(_)) => "refused".into(),
                 (None, None) => "–".into(),
             },
@@ -202,8 +198,39 @@ fn mechanisms(s: &Studies) -> StudyTable {
     t
 }
 
-/// What was run and what was found, in a paragraph.
-pub fn summary(s: &Studies, paper: &paper::Paper) -> String {
+/// The section, its tables ([`tables`]) numbered already; `figures` are the numbers of the
+/// slip-stick figures.
+pub fn section(
+    s: &Studies,
+    paper: &paper::Paper,
+    tables: Vec<StudyTable>,
+    figures: &[usize],
+) -> StudySection {
+    let mut summary = summary(s, paper, &tables);
+    if let [first, second, ..] = figures {
+        summary.push_str(&format!(
+            " Figures {first} and {second} show a run that slips and sticks."
+        ));
+    }
+    StudySection {
+        title: "Friction and contact".into(),
+        summary,
+        tables,
+        output: prose(&crate::sliding::text(s, paper)),
+        output_title: "The studies' full output: every run, the fall study run by run, the notes"
+            .into(),
+    }
+}
+
+/// "Table N", the number of the `i`th of `tables`.
+fn table(tables: &[StudyTable], i: usize) -> String {
+    tables
+        .get(i)
+        .map_or(String::new(), |t| format!(" (Table {})", t.number))
+}
+
+/// What was run and what was found, in a paragraph citing `tables` (as [`tables`] orders them).
+pub fn summary(s: &Studies, paper: &paper::Paper, tables: &[StudyTable]) -> String {
     let (lo, hi) = s
         .slip_onset
         .iter()
@@ -227,11 +254,17 @@ pub fn summary(s: &Studies, paper: &paper::Paper) -> String {
         .map(|r| r.mechanism.as_str())
         .collect();
     format!(
-        "Eq 42's bound on b differs from the largest b that rolls by {lo:.1} % to {hi:.0} %. \
+        "Eq 42's bound on b differs from the largest b that rolls by {lo:.1} % to {hi:.0} %{}. \
          On {held_below} of the {} tables with less friction than eq 43 requires, \
-         part of the range of negative b still rolls. The spinning-down disk of eqs 80-81 \
-         {}. Of the dissipation mechanisms, {} gives the paper's β = 2. {}",
+         part of the range of negative b still rolls{}. Steady rolls that eq 42 says must slip are \
+         followed as they slip{}, and a disk launched nearly upright as it rises{}. The \
+         spinning-down disk of \
+         eqs 80-81 {}{}. Of the dissipation mechanisms, {} gives the paper's β = 2{}. {}",
+        table(tables, 0),
         below.len(),
+        table(tables, 1),
+        table(tables, 2),
+        table(tables, 3),
         if never.is_empty() {
             "slips or lifts on every table".to_string()
         } else {
@@ -240,11 +273,13 @@ pub fn summary(s: &Studies, paper: &paper::Paper) -> String {
                 never.join(", ")
             )
         },
+        table(tables, 4),
         if two.is_empty() {
             "none".to_string()
         } else {
             two.join(", ")
         },
+        table(tables, 5),
         fall(&s.fall, paper),
     )
 }

@@ -8,6 +8,7 @@
 use crate::figures::chart::{Axis, Legend, Plot, Series, Style};
 use crate::figures::FigureError;
 use crate::figures::{min_max_decimate, Drawing, Figure};
+use crate::number::{measured, significant, to_place_of};
 use studies::synthetic::Synthetic;
 
 pub use crate::figures::coverage::coverage;
@@ -218,15 +219,13 @@ fn omega(e: &Synthetic) -> Result<Figure, FigureError> {
              2 pi/period, an angular frequency). {} cycles; the last {} peaks are left out of the \
              fits, where the law breaks as the spin-down ends. The fastest fitted cycle is \
              {:.0} rad/s (the paper's last analysable cycle: 680). The dashed curve is eq 79 with \
-             the parameters fitted to eq 84: beta = {:.3} +- {:.3}, t0 = {:.4} +- {:.4} s (total \
-             uncertainties: the fit's and the law's drift over the window).{}",
+             the parameters fitted to eq 84: beta = {}, t0 = ({}) s (total uncertainties: the \
+             fit's and the law's drift over the window).{}",
             a.cycles.len(),
             a.settings.drop_last,
             a.window.omega_last,
-            f.beta,
-            a.stated_sigmas().0,
-            f.t0,
-            a.stated_sigmas().1,
+            measured(f.beta, a.stated_sigmas().0),
+            measured(f.t0, a.stated_sigmas().1),
             a.early_end.as_ref().map_or(String::new(), |e| format!(
                 " Impossible end: {}.",
                 e.message
@@ -393,7 +392,7 @@ fn odot(e: &Synthetic) -> Result<Figure, FigureError> {
              t0: the dashed lines have slopes beta + 3 for beta = 0 to 4 and pass through the \
              data's centre (the fitted curve at the middle of the range of Omega); they are not \
              fits. The points follow the beta = 2 line; the fit of eq \
-             85 gives a slope of {:.3} +- {:.3}, beta = {:.3}. The scatter grows at low Omega, \
+             85 gives a slope of {}, beta = {}. The scatter grows at low Omega, \
              where the differences of differences of peak times are smallest against the timing \
              noise.",
             rows.len(),
@@ -402,9 +401,8 @@ fn odot(e: &Synthetic) -> Result<Figure, FigureError> {
             } else {
                 String::new()
             },
-            f.slope,
-            f.slope_sigma,
-            f.beta
+            measured(f.slope, f.slope_sigma),
+            to_place_of(f.beta, f.slope_sigma)
         ),
         drawing: Drawing::Plot(plot),
     })
@@ -450,7 +448,7 @@ pub fn omega_band(a: &experiment::Analysis) -> Figure {
     let plot = Plot::new("Ωᵢ with eq 79 and its 95 % band", "time t (s)", "Ω (rad/s)")
         .with(Series::new("Ωᵢ, fitted cycles", pts, Style::Points))
         .with(Series::new(
-            format!("eq 79: β = {:.4} ± {:.4}", f.beta, f.beta_sigma),
+            format!("eq 79: β = {}", measured(f.beta, f.beta_sigma)),
             law,
             Style::Line,
         ))
@@ -462,15 +460,13 @@ pub fn omega_band(a: &experiment::Analysis) -> Figure {
         title: "The frequency track with the fitted law and its band".into(),
         caption: format!(
             "{}: the rate of each fitted cycle and eq 79 with the parameters of eq 84's fit, \
-             beta = {:.4} +- {:.4}, t0 = {:.5} +- {:.5} s (total uncertainties: the fit's and \
+             beta = {}, t0 = ({}) s (total uncertainties: the fit's and \
              the law's drift over the window); the dotted lines are the 95 % band of the curve \
              from the fit's covariance (scaled by the whitened residuals' own covariance: \
              reduced chi2 {:.2} and their correlation), without the law's drift.",
             a.source,
-            f.beta,
-            a.stated_sigmas().0,
-            f.t0,
-            a.stated_sigmas().1,
+            measured(f.beta, a.stated_sigmas().0),
+            measured(f.t0, a.stated_sigmas().1),
             f.reduced_chi2
         ),
         drawing: Drawing::Plot(plot),
@@ -546,8 +542,9 @@ pub fn sound_track(s: &experiment::SoundAnalysis) -> Figure {
         .with(Series::new("spectral track (frames)", pts, Style::Points))
         .with(Series::new(
             format!(
-                "eq 79: β = {:.3} ± {:.3}, t₀ = {:.4} s",
-                s.fit.beta, s.fit.beta_sigma, s.fit.t0
+                "eq 79: β = {}, t₀ = {} s",
+                measured(s.fit.beta, s.fit.beta_sigma),
+                significant(s.fit.t0)
             ),
             fit,
             Style::Line,

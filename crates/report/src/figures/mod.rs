@@ -337,13 +337,7 @@ pub fn needs(name: &str) -> Result<&'static [&'static dyn Run], FigureError> {
 }
 
 fn need<'r, S: Study>(r: &'r Results, study: &S) -> Result<&'r S::Output, FigureError> {
-    r.get(study).ok_or_else(|| {
-        format!(
-            "the figures need the {} study, which was not computed",
-            S::NAME
-        )
-        .into()
-    })
+    Ok(r.required(study, "the figures")?)
 }
 
 fn paper(r: &Results) -> Result<&paper::Paper, FigureError> {

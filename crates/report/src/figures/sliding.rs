@@ -7,6 +7,7 @@
 use crate::figures::chart::{Legend, Plot, Series, Style};
 use crate::figures::FigureError;
 use crate::figures::{min_max_decimate, Drawing, Figure, Panels};
+use crate::number::measured;
 use physics::run::Run;
 use studies::slip_stick::SlipStick;
 
@@ -226,7 +227,7 @@ pub fn mechanisms(r: &SlipStick) -> Result<Figure, FigureError> {
         .spin_downs
         .iter()
         .map(|m| match (m.beta, &m.refused) {
-            (Some((b, e)), None) => format!("{}, beta = {:.3} +- {:.3}", m.mechanism, b, e),
+            (Some((b, e)), None) => format!("{}, beta = {}", m.mechanism, measured(b, e)),
             (_, Some(_)) => format!("{} refused", m.mechanism),
             (None, None) => format!("{} not fitted", m.mechanism),
         })
