@@ -5,6 +5,7 @@ use physics::model::dissipation::PowerLaw;
 use physics::model::frictionless::Frictionless;
 use physics::model::rolling::Rolling;
 use physics::model::steady::{b_bound, steady_motion, vertical_spin};
+use physics::model::work::WithWork;
 use physics::model::{Extras, Model, Motion};
 use physics::solve::{solve, Dynamics, Ending, Problem, Settings, State};
 
@@ -106,23 +107,6 @@ fn steady_motion_from_eq_29_stays_steady() {
     }
 }
 
-/// The rolling model with the work done by the dissipation integrated beside it:
-/// $\dot W = P$ (eq 75). Then $E(t) - E(0) = W(t)$ is the energy balance, measured along the run.
-struct WithWork {
-    model: Rolling<4>,
-    law: PowerLaw,
-}
-
-impl Dynamics<5> for WithWork {
-    fn rhs(&self, y: &State<5>, dy: &mut State<5>) {
-        let core = State::<4>::new(y[0], y[1], y[2], y[3]);
-        let mut d = State::<4>::zeros();
-        self.model.rhs(&core, &mut d);
-        dy.fixed_rows_mut::<4>(0).copy_from(&d);
-        dy[4] = self.law.power(&self.model.disk, y[2]);
-    }
-}
-
 #[test]
 fn dissipation_removes_energy_at_the_rate_of_eq_75() {
     let d = euler_disk(0.25);
@@ -160,7 +144,6 @@ fn dissipation_removes_energy_at_the_rate_of_eq_75() {
         // 2. Integrated: the energy lost equals the work of eq 75's power along the run.
         let sys = WithWork {
             model: model.clone(),
-            law,
         };
         let z0 = State::<5>::new(y0[0], y0[1], y0[2], y0[3], 0.0);
         let sol = solve(Problem::new(&sys, 0.0, z0, 2.0).sampled(0.05), &tight()).unwrap();

@@ -14,6 +14,7 @@ use physics::disk::Disk;
 use physics::model::dissipation::PowerLaw;
 use physics::model::rolling::Rolling;
 use physics::model::steady::steady_motion;
+use physics::model::work::WithWork;
 use physics::model::Extras;
 use physics::solve::{solve, Dynamics, Event, Problem, State};
 use std::f64::consts::PI;
@@ -30,23 +31,6 @@ pub(crate) fn steady_precession<T: DualNum<f64> + Copy>(d: &Disk, alpha: T) -> T
 
 /// The tilts at which the small-angle approximations are measured (two decades).
 pub(crate) const SMALL_ALPHAS: [f64; 5] = [0.2, 0.1, 0.05, 0.025, 0.0125];
-
-/// The rolling model with the dissipation of eq 75 and the integral
-/// $W = \int\epsilon\,|\Omega|^\beta dt$ carried as a fifth state.
-pub(crate) struct WithWork {
-    pub(crate) model: Rolling<4>,
-    pub(crate) law: PowerLaw,
-}
-
-impl Dynamics<5> for WithWork {
-    fn rhs(&self, y: &State<5>, dy: &mut State<5>) {
-        let core = State::<4>::new(y[0], y[1], y[2], y[3]);
-        let mut d = State::<4>::zeros();
-        self.model.rhs(&core, &mut d);
-        dy.fixed_rows_mut::<4>(0).copy_from(&d);
-        dy[4] = self.law.epsilon * y[2].abs().powf(self.law.beta);
-    }
-}
 
 /// What the full dissipative model does from steady $b = 0$ motion at `alpha0`, over 20
 /// precession periods (epsilon set so that alpha falls by about 2 % over them): the ratio
@@ -90,7 +74,6 @@ fn run_descent(b: &Bench, d: &Disk, beta: f64, alpha0: f64) -> Option<Descent> {
     let law = PowerLaw { epsilon, beta };
     let sys = WithWork {
         model: Rolling::<4>::new(*d, Extras::default(), Some(law)),
-        law,
     };
     let alpha_dot0 = -2.0 / 3.0 * epsilon * om0.powf(beta) / alpha0.cos();
     let y0 = State::<5>::new(alpha0, alpha_dot0, om0, 0.0, 0.0);

@@ -15,6 +15,7 @@ pub mod mechanism;
 pub mod rolling;
 pub mod sliding;
 pub mod steady;
+pub mod work;
 
 pub use layout::{Extras, Layout};
 

@@ -8,20 +8,20 @@ use crate::figures::{Drawn, FigureError};
 use plotters::coord::ranged1d::Ranged;
 use plotters::prelude::*;
 
+/// An axis of plain numbers, linear or logarithmic.
+pub(super) trait NumberAxis: Ranged<ValueType = f64> {}
+
+impl<T: Ranged<ValueType = f64>> NumberAxis for T {}
+
 impl Chart {
     /// One series in its style and colour, with its legend entry when it has a label.
-    pub(super) fn draw_series<'a, DB, XC, YC>(
+    pub(super) fn draw_series<'a, DB: DrawingBackend + 'a, XC: NumberAxis, YC: NumberAxis>(
         &self,
         chart: &mut Ctx<'a, DB, XC, YC>,
         scale: f64,
         s: &Series,
         color: RGBColor,
-    ) -> Result<(), FigureError>
-    where
-        DB: DrawingBackend + 'a,
-        XC: Ranged<ValueType = f64>,
-        YC: Ranged<ValueType = f64>,
-    {
+    ) -> Result<(), FigureError> {
         let width = px(1.6, scale).max(1);
         let pts: Vec<(f64, f64)> = s
             .points
@@ -126,17 +126,12 @@ impl Chart {
     }
 
     /// The notes, each at its point, a line per line of text.
-    pub(super) fn draw_notes<'a, DB, XC, YC>(
+    pub(super) fn draw_notes<'a, DB: DrawingBackend + 'a, XC: NumberAxis, YC: NumberAxis>(
         &self,
         chart: &mut Ctx<'a, DB, XC, YC>,
         scale: f64,
         o: &Options,
-    ) -> Result<(), FigureError>
-    where
-        DB: DrawingBackend + 'a,
-        XC: Ranged<ValueType = f64>,
-        YC: Ranged<ValueType = f64>,
-    {
+    ) -> Result<(), FigureError> {
         for n in o.notes.iter().filter(|n| self.inside((n.x, n.y))) {
             let step = px(14.0, scale) as i32;
             chart
@@ -154,17 +149,12 @@ impl Chart {
     }
 
     /// The legend's box at the corner chosen (none when hidden or when no series has a label).
-    pub(super) fn draw_legend_box<'a, DB, XC, YC>(
+    pub(super) fn draw_legend_box<'a, DB: DrawingBackend + 'a, XC: NumberAxis, YC: NumberAxis>(
         &self,
         chart: &mut Ctx<'a, DB, XC, YC>,
         scale: f64,
         chosen: Legend,
-    ) -> Result<(), FigureError>
-    where
-        DB: DrawingBackend + 'a,
-        XC: Ranged<ValueType = f64>,
-        YC: Ranged<ValueType = f64>,
-    {
+    ) -> Result<(), FigureError> {
         let position = match chosen {
             Legend::Auto | Legend::UpperRight => SeriesLabelPosition::UpperRight,
             Legend::UpperLeft => SeriesLabelPosition::UpperLeft,
