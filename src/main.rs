@@ -27,8 +27,8 @@ mod cli;
 struct Cli {
     #[command(subcommand)]
     command: Command,
-    /// Wall-time budget of each integration, in seconds (default 600): a run that takes longer
-    /// ends and says so instead of running on.
+    /// Wall-time budget of each integration and of each analysis or simulation of a recording,
+    /// in seconds (default 600): work that takes longer ends and says so instead of running on.
     #[arg(long, global = true, value_name = "SECONDS")]
     max_seconds: Option<f64>,
 }
