@@ -2,7 +2,7 @@
 //! the fix is applied as the sentence says, and the re-run succeeds. Inputs that could hang
 //! are refused (or finish) within seconds.
 
-use crate::common::{cli_timed, temp_dir};
+use crate::common::{cli_timed, read_wav_i16, temp_dir, write_wav_i16};
 use std::time::Duration;
 
 /// The word (up to a space, a comma or a closing parenthesis) after `lead` in `text`, as the
@@ -260,5 +260,63 @@ stop: { time: 1.0 }
         if let Some(i) = line.find("default") {
             assert!(line[i..].contains("1e-12"), "{line}");
         }
+    }
+}
+
+#[test]
+fn stereo_channels_that_cancel_are_refused_with_the_channel_to_take() {
+    let dir = temp_dir("advice", "cancel");
+    let (ok, _, err, _) = cli_timed(&dir, &["experiment", "simulate", "--wav", "mono.wav"]);
+    assert!(ok, "{err}");
+    let (mono, rate) = read_wav_i16(&dir.join("mono.wav"));
+    // Channel 2 is channel 1 with its sign reversed (-32768 has no opposite in 16 bits).
+    let stereo: Vec<i16> = mono
+        .iter()
+        .flat_map(|&x| {
+            let x = x.max(-i16::MAX);
+            [x, -x]
+        })
+        .collect();
+    write_wav_i16(&dir.join("cancel.wav"), &stereo, rate, 2);
+    let (ok, _, err, took) = cli_timed(&dir, &["experiment", "analyze", "cancel.wav"]);
+    assert!(!ok, "a silent mix accepted");
+    assert!(err.contains("channels cancel when mixed"), "{err}");
+    assert!(took < Duration::from_secs(2), "refused after {took:?}");
+    let channel = word_after(&err, "--channel ");
+    let (ok, out, err, _) = cli_timed(
+        &dir,
+        &["experiment", "analyze", "cancel.wav", "--channel", channel],
+    );
+    assert!(ok, "the advised --channel {channel} fails: {err}");
+    assert!(out.contains("beta = "), "{out}");
+    // The flag named is the command line's own.
+    let (_, help, _, _) = cli_timed(&dir, &["experiment", "analyze", "--help"]);
+    assert!(help.contains("--channel <N|mix>"), "{help}");
+}
+
+#[test]
+fn an_analysis_past_its_budget_says_so_and_the_raised_budget_works() {
+    let dir = temp_dir("advice", "budget");
+    for (make, file) in [("--csv", "light.csv"), ("--wav", "sound.wav")] {
+        let (ok, _, err, _) = cli_timed(&dir, &["experiment", "simulate", make, file]);
+        assert!(ok, "{err}");
+        let tiny = ["experiment", "analyze", file, "--max-seconds", "0.001"];
+        let (ok, out, err, took) = cli_timed(&dir, &tiny);
+        assert!(!ok, "{file}: analysed within 1 ms");
+        assert!(out.is_empty(), "{file}: {out}");
+        assert_eq!(err.lines().count(), 1, "{file}: {err}");
+        assert!(
+            err.contains(&format!(
+                "the analysis of {file} ran past the wall-time budget of 0.001 s"
+            )) && err.contains("raise the budget with --max-seconds SECONDS"),
+            "{file}: {err}"
+        );
+        assert!(took < Duration::from_secs(2), "{file}: {took:?}");
+        let raised = ["experiment", "analyze", file, "--max-seconds", "60"];
+        let (ok, out, err, _) = cli_timed(&dir, &raised);
+        assert!(ok, "{file}: the raised budget fails: {err}");
+        assert!(out.contains("beta = "), "{file}: {out}");
+        // Progress is drawn on a terminal only: piped, stderr holds no spinner.
+        assert!(err.trim().is_empty(), "{file}: {err:?}");
     }
 }

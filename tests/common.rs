@@ -49,3 +49,26 @@ pub fn assert_computed_once(results: &report::results::Results, mut expected: Ve
         results.computed
     );
 }
+
+/// The 16-bit samples (interleaved) and the rate of a WAV file.
+pub fn read_wav_i16(path: &Path) -> (Vec<i16>, u32) {
+    let mut r = hound::WavReader::open(path).expect("a WAV file");
+    let rate = r.spec().sample_rate;
+    let v = r.samples::<i16>().map(|s| s.expect("a sample")).collect();
+    (v, rate)
+}
+
+/// Writes interleaved 16-bit samples of `channels` channels as a WAV file.
+pub fn write_wav_i16(path: &Path, v: &[i16], rate: u32, channels: u16) {
+    let spec = hound::WavSpec {
+        channels,
+        sample_rate: rate,
+        bits_per_sample: 16,
+        sample_format: hound::SampleFormat::Int,
+    };
+    let mut w = hound::WavWriter::create(path, spec).expect("a WAV file");
+    for &x in v {
+        w.write_sample(x).expect("a sample");
+    }
+    w.finalize().expect("the WAV written");
+}

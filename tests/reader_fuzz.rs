@@ -1,9 +1,10 @@
 //! Property tests of the other readers of user input (the scene reader has `scene_fuzz.rs`): the
-//! paper's LaTeX, scope CSVs and WAV files. Whatever the input, each returns in bounded time with
+//! paper's LaTeX and symbol table, scope CSVs, WAV files and the command line's arguments. Whatever the input, each returns in bounded time with
 //! a value or an error sentence, never a panic. Seeded, so that CI runs the same cases each time.
 
 use experiment::{parse_trace, wav::parse_wav};
 use paper::parse::parse;
+use paper::{Paper, PaperSource, Texts};
 use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
 
@@ -75,6 +76,91 @@ fn wavish() -> impl Strategy<Value = Vec<u8>> {
         h.extend(body);
         h
     })
+}
+
+/// Lines of a symbol table, the paper's and broken ones, in any order.
+fn symbolsish() -> impl Strategy<Value = String> {
+    let line = proptest::sample::select(vec![
+        "'a': { quantity: a, means: \"radius\", unit: m }\n",
+        "'\\alpha': { quantity: alpha, means: \"tilt\", unit: rad }\n",
+        "'k': { quantity: k, means: \"inertia\", unit: '1' }\n",
+        "'a': { quantity: a }\n",
+        "'x': [1, 2\n",
+        "  - nested\n",
+        "'\\frac{': { quantity: q, means: \"m\", unit: s }\n",
+        "key: value\n",
+        "&a [*a]\n",
+        "# a comment\n",
+        "'\u{e9}': { quantity: e, means: \"\", unit: '' }\n",
+        "\t\n",
+    ]);
+    proptest::collection::vec(line, 0..40).prop_map(|v| v.concat())
+}
+
+/// Command lines of the tool's words, values and nonsense.
+fn argsish() -> impl Strategy<Value = Vec<String>> {
+    let word = proptest::sample::select(vec![
+        "simulate",
+        "report",
+        "check",
+        "scenes",
+        "experiment",
+        "analyze",
+        "peer",
+        "precision",
+        "figures",
+        "mutants",
+        "--csv",
+        "--wav",
+        "--json",
+        "--out",
+        "--channel",
+        "--max-seconds",
+        "--target",
+        "--glitches",
+        "--rate",
+        "--format",
+        "--only",
+        "--paper",
+        "--help",
+        "-h",
+        "--",
+        "-",
+        "spin-down",
+        "x.csv",
+        "2",
+        "mix",
+        "1e9",
+        "nan",
+        "-1",
+        "",
+        "=",
+        "--csv=-",
+        "\u{e9}",
+        "--max-seconds=0",
+    ]);
+    proptest::collection::vec(word.prop_map(String::from), 0..8)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 300, failure_persistence: None, rng_seed: RngSeed::Fixed(20_261_126), ..ProptestConfig::default() })]
+
+    #[test]
+    fn the_symbol_table_reader_answers_in_a_bounded_message(symbols in symbolsish()) {
+        let texts = Texts { symbols: &symbols, ..Texts::BUILT_IN };
+        if let Err(e) = Paper::from_texts(PaperSource::BuiltIn, texts) {
+            let text = e.to_string();
+            prop_assert!(!text.is_empty() && text.chars().count() < 2000, "{text}");
+        }
+    }
+
+    #[test]
+    fn the_command_line_parses_or_says_why(args in argsish()) {
+        let all = std::iter::once("rolling-disk".to_string()).chain(args);
+        if let Err(e) = rolling_disk::parse(all) {
+            prop_assert!(!e.render().to_string().is_empty());
+        }
+    }
 }
 
 proptest! {

@@ -2,8 +2,8 @@
 //! names the file, never panic or hang. Corpus: `fuzz/corpus/csv`.
 #![no_main]
 
-use libfuzzer_sys::fuzz_target;
 use experiment::parse_trace;
+use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
     let Ok(text) = std::str::from_utf8(data) else {

@@ -11,7 +11,10 @@ fuzz_target!(|data: &[u8]| {
         return;
     };
     if let Err(e) = parse(text) {
-        assert!(e.column >= 1 && e.column <= text.chars().count() + 1, "{e:?}");
+        assert!(
+            e.column >= 1 && e.column <= text.chars().count() + 1,
+            "{e:?}"
+        );
         assert!(!e.message.is_empty());
     }
 });

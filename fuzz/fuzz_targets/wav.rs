@@ -2,8 +2,8 @@
 //! an allocation sized by a header field. Corpus: `fuzz/corpus/wav`.
 #![no_main]
 
-use libfuzzer_sys::fuzz_target;
 use experiment::wav::parse_wav;
+use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
     if let Err(e) = parse_wav(data, "fuzz.wav") {

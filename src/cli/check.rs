@@ -17,7 +17,7 @@ pub struct Args {
     #[arg(long)]
     pub json: bool,
     #[command(flatten)]
-    pub input: PaperInput,
+    pub(crate) input: PaperInput,
 }
 
 impl Args {

@@ -1,7 +1,9 @@
 //! `rolling-disk experiment simulate` and `experiment analyze`: the experiment of section 11.
 
+use crate::cli::simulate::stage_spinner;
 use crate::cli::stdout;
 use files::output::SetWriter;
+use physics::budget::Work;
 use physics::scene::Scene;
 use std::path::{Path, PathBuf};
 
@@ -147,22 +149,33 @@ fn experiment_simulate(
 ) -> anyhow::Result<()> {
     let scene = Scene::load(name)?;
     eprintln!("simulating the recording of {}...", scene.name);
-    let (path, bytes, trace) = if let Some((path, rate, format)) = wav {
+    let bar = stage_spinner();
+    let note = |stage: &str| bar.set_message(stage.to_string());
+    let work =
+        Work::start(format!("the simulated recording of {}", scene.name)).with_progress(&note);
+    let made = if let Some((path, rate, format)) = wav {
+        work.stage("simulating the sound")?;
         let mic = experiment::Microphone::phone(rate, args.seed);
         let a = args.artifacts(2.0 * mic.amplitude);
         let trace = experiment::simulate_sound(&scene, &mic, &a)?;
+        work.stage("encoding the sound")?;
         let bytes = experiment::encode_sound(&trace.v, rate, format)?;
-        (path, bytes, trace)
+        Ok((path, bytes, trace))
     } else if let Some(path) = csv {
+        work.stage("simulating the light signal")?;
         let mut light = experiment::LightModel::default();
         light.scope.seed = args.seed;
         let trace = experiment::simulate_trace(&scene, &light)?;
+        work.stage("adding the bench's artifacts")?;
         let trace = trace.with_artifacts(&args.artifacts(light.gain))?;
+        work.stage("writing the CSV")?;
         let bytes = trace.to_csv().into_bytes();
-        (path, bytes, trace)
+        Ok((path, bytes, trace))
     } else {
-        return Err(anyhow::anyhow!("give --csv FILE or --wav FILE"));
+        Err(anyhow::anyhow!("give --csv FILE or --wav FILE"))
     };
+    bar.finish_and_clear();
+    let (path, bytes, trace) = made?;
     let to_stdout = stdout::write_to(path, &bytes)?;
     let mut said = format!("{} samples written to {}", trace.t.len(), path.display());
     if let Some(t) = &trace.truth {
@@ -202,34 +215,12 @@ fn experiment_analyze(
     };
     // The output set is checked before any work, and written whole or not at all.
     let set = out.map(SetWriter::begin).transpose()?;
-    let (text, files) = if is_sound {
-        let rec = experiment::read_recording(csv, channels)?;
-        let mut a = experiment::analyze_sound(
-            &rec.trace,
-            &experiment::TrackSettings::default(),
-            &experiment::plausibility::Plausibility::default(),
-        )?;
-        a.recording = Some(rec.info);
-        let text = if json { a.to_json() } else { a.to_string() };
-        let files = match &set {
-            Some(set) => experiment::write_sound_analysis(&a, set.dir())?,
-            None => Vec::new(),
-        };
-        (text, files)
-    } else {
-        let trace = experiment::read_trace(csv)?;
-        let analysis = experiment::analyze(&trace, &experiment::AnalysisSettings::default())?;
-        let text = if json {
-            analysis.to_json()
-        } else {
-            analysis.to_string()
-        };
-        let files = match &set {
-            Some(set) => experiment::write_analysis(&analysis, set.dir())?,
-            None => Vec::new(),
-        };
-        (text, files)
-    };
+    let bar = stage_spinner();
+    let note = |stage: &str| bar.set_message(format!("{}: {stage}", csv.display()));
+    let work = Work::start(format!("the analysis of {}", csv.display())).with_progress(&note);
+    let analysed = analyse(csv, is_sound, channels, json, set.as_ref(), &work);
+    bar.finish_and_clear();
+    let (text, files) = analysed?;
     if let Some(set) = set {
         let shown: Vec<PathBuf> = files.iter().map(|p| set.final_path(p)).collect();
         set.commit(&files)?;
@@ -239,4 +230,47 @@ fn experiment_analyze(
     }
     println!("{text}");
     Ok(())
+}
+
+/// Reads and analyses the recording `csv` within `work`: the text to print and the files
+/// written into the output set.
+fn analyse(
+    csv: &Path,
+    is_sound: bool,
+    channels: experiment::Channels,
+    json: bool,
+    set: Option<&SetWriter>,
+    work: &Work<'_>,
+) -> anyhow::Result<(String, Vec<PathBuf>)> {
+    work.stage("reading")?;
+    Ok(if is_sound {
+        let rec = experiment::read_recording(csv, channels)?;
+        let mut a = experiment::analyze_sound_within(
+            &rec.trace,
+            &experiment::TrackSettings::default(),
+            &experiment::plausibility::Plausibility::default(),
+            work,
+        )?;
+        a.recording = Some(rec.info);
+        let text = if json { a.to_json() } else { a.to_string() };
+        let files = match set {
+            Some(set) => experiment::write_sound_analysis(&a, set.dir())?,
+            None => Vec::new(),
+        };
+        (text, files)
+    } else {
+        let trace = experiment::read_trace(csv)?;
+        let analysis =
+            experiment::analyze_within(&trace, &experiment::AnalysisSettings::default(), work)?;
+        let text = if json {
+            analysis.to_json()
+        } else {
+            analysis.to_string()
+        };
+        let files = match set {
+            Some(set) => experiment::write_analysis(&analysis, set.dir())?,
+            None => Vec::new(),
+        };
+        (text, files)
+    })
 }

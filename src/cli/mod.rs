@@ -1,5 +1,5 @@
 //! The commands of the binary, one file per command: each has a clap `Args` (or, for a family
-//! of subcommands, a `Command`) with `run()`. `main.rs` holds the command line and calls
+//! of subcommands, a `Command`) with `run()`. `lib.rs` holds the command line and calls
 //! `run`. Errors are anyhow's here, and only here: the library's typed errors print their
 //! sentence.
 

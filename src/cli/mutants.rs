@@ -13,7 +13,7 @@ pub struct Args {
     #[arg(long)]
     pub json: bool,
     #[command(flatten)]
-    pub dir: PaperDir,
+    pub(crate) dir: PaperDir,
 }
 
 impl Args {

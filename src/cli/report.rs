@@ -22,7 +22,7 @@ pub struct Args {
     #[arg(long, value_name = "DIR", default_value = "report")]
     pub out: PathBuf,
     #[command(flatten)]
-    pub input: PaperInput,
+    pub(crate) input: PaperInput,
 }
 
 impl Args {

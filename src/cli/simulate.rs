@@ -39,6 +39,25 @@ pub(crate) fn progress_bar(t_end: f64) -> ProgressBar {
     bar
 }
 
+/// A spinner on stderr naming the stage of work that is not an integration (analysing a
+/// recording, simulating one), drawn only once the work has taken a second (and, as every bar
+/// here, only when stderr is a terminal).
+pub(crate) fn stage_spinner() -> ProgressBar {
+    let bar = ProgressBar::hidden();
+    bar.set_style(
+        ProgressStyle::with_template("{spinner} {msg} {elapsed}").expect("a valid template"),
+    );
+    let late = bar.clone();
+    std::thread::spawn(move || {
+        std::thread::sleep(std::time::Duration::from_secs(1));
+        if !late.is_finished() {
+            late.set_draw_target(ProgressDrawTarget::stderr());
+            late.enable_steady_tick(std::time::Duration::from_millis(120));
+        }
+    });
+    bar
+}
+
 fn simulate(name: &str, csv: Option<PathBuf>, compare: Option<&str>) -> anyhow::Result<()> {
     let scene = Scene::load(name)?;
     if let Some(other) = compare {

@@ -18,6 +18,7 @@ use crate::trace::{Trace, Truth};
 use crate::window::fitting_window;
 pub use crate::window::Window;
 use files::atomic::write_atomically;
+use physics::budget::Work;
 use serde::Serialize;
 use std::fmt;
 use std::fmt::Write as _;
@@ -90,16 +91,31 @@ pub struct Analysis {
 /// Analyses a trace: the settings and the signal checked, glitches and mains hum removed, the
 /// peaks timed, $\Omega_i$ and $d\Omega_i/dt$ formed, the fitting window chosen, eqs 84 and 85
 /// and the other laws fitted, and (for a synthetic trace) the fits scored against the truth.
+/// The work is held to the wall-time budget ([`physics::budget::wall_seconds`]).
 pub fn analyze(trace: &Trace, s: &AnalysisSettings) -> Result<Analysis, ExperimentError> {
+    let work = Work::start(format!("the analysis of {}", trace.source));
+    analyze_within(trace, s, &work)
+}
+
+/// [`analyze`] as part of `work`: each stage checks its budget and reports its progress.
+pub fn analyze_within(
+    trace: &Trace,
+    s: &AnalysisSettings,
+    work: &Work<'_>,
+) -> Result<Analysis, ExperimentError> {
     check_settings(trace, s)?;
     let dt = trace.sample_interval();
+    work.stage("measuring the noise")?;
     let noise = noise_level(&trace.v);
     check_not_flat(trace, noise, &s.peaks)?;
     let mut v = trace.v.clone();
+    work.stage("removing glitches and mains hum")?;
     let glitches = remove_glitches(&mut v, noise);
     let hum = remove_hum(&trace.t, &mut v, noise);
+    work.stage("timing the peaks")?;
     let peaks = find_peaks(&trace.t, &v, dt, noise, &s.peaks);
     check_peak_count(trace, &peaks, s)?;
+    work.stage("fitting the laws")?;
     let tp: Vec<f64> = peaks.iter().map(|p| p.t).collect();
     let w: Vec<f64> = peaks.iter().map(|p| p.sigma * p.sigma).collect();
     let cyc = cycles(&tp);

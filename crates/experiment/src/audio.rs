@@ -22,6 +22,7 @@ use crate::plausibility::{Evidence, Plausibility, Verdict};
 use crate::trace::{Trace, Truth};
 use crate::track::{frequency_track, FrequencyTrack, TrackSettings};
 use nalgebra::SVector;
+use physics::budget::Work;
 use serde::Serialize;
 use std::f64::consts::PI;
 use std::fmt;
@@ -124,7 +125,20 @@ pub fn analyze_sound(
     settings: &TrackSettings,
     checks: &Plausibility,
 ) -> Result<SoundAnalysis, ExperimentError> {
+    let work = Work::start(format!("the analysis of {}", trace.source));
+    analyze_sound_within(trace, settings, checks, &work)
+}
+
+/// [`analyze_sound`] as part of `work`: each stage checks its budget and reports its progress.
+pub fn analyze_sound_within(
+    trace: &Trace,
+    settings: &TrackSettings,
+    checks: &Plausibility,
+    work: &Work<'_>,
+) -> Result<SoundAnalysis, ExperimentError> {
+    work.stage("following the pitch")?;
     let track = frequency_track(trace, settings)?;
+    work.stage("fitting eq 79")?;
     let file = trace.source.clone();
     let refuse = |reason: String| ExperimentError::Refused {
         file: file.clone(),

@@ -59,6 +59,56 @@ pub struct Recording {
     pub info: RecordingInfo,
 }
 
+/// A mix this many times quieter (rms) than its loudest channel is the channels cancelling:
+/// -60 dB, far below what two microphones of one room give (their sum is at most 6 dB down
+/// where they are in phase and about 3 dB down where they are not).
+const CANCELLED: f64 = 1e-3;
+
+/// Refuses a mix of channels that cancel (one the other with its sign reversed): the mean of
+/// such channels is silence, whatever the disk did.
+fn refuse_cancelling(
+    interleaved: &[f64],
+    mix: &[f64],
+    n_ch: usize,
+    format: &str,
+    file: &str,
+) -> Result<(), ExperimentError> {
+    let rms = |x: &mut dyn Iterator<Item = f64>| {
+        let (sum, n) = x.fold((0.0, 0usize), |(s, n), v| (s + v * v, n + 1));
+        (sum / n.max(1) as f64).sqrt()
+    };
+    let (loudest, level) = (1..=n_ch)
+        .map(|k| {
+            let mut it = interleaved.chunks_exact(n_ch).map(|c| c[k - 1]);
+            (k, rms(&mut it))
+        })
+        .fold(
+            (1, 0.0),
+            |best, (k, r)| if r > best.1 { (k, r) } else { best },
+        );
+    let mixed = rms(&mut mix.iter().copied());
+    if level > 0.0 && mixed < CANCELLED * level {
+        let mean = if mixed > 0.0 {
+            format!(
+                "{:.0} dB below channel {loudest}",
+                -20.0 * (mixed / level).log10()
+            )
+        } else {
+            "silence".to_string()
+        };
+        return Err(refuse(
+            file,
+            format,
+            format!(
+                "its {n_ch} channels cancel when mixed (they are opposite in sign): \
+                 their mean is {mean}"
+            ),
+            &format!("analyse one channel alone: --channel {loudest}"),
+        ));
+    }
+    Ok(())
+}
+
 pub(crate) fn refuse(file: &str, format: &str, message: String, fix: &str) -> ExperimentError {
     ExperimentError::Audio {
         file: file.into(),
@@ -104,13 +154,14 @@ pub(crate) fn mix(
     }
     let (v, used): (Vec<f64>, String) = match channels {
         Channels::Mix if n_ch == 1 => (interleaved, "mono".into()),
-        Channels::Mix => (
-            interleaved
+        Channels::Mix => {
+            let v: Vec<f64> = interleaved
                 .chunks_exact(n_ch)
                 .map(|c| c.iter().sum::<f64>() / n_ch as f64)
-                .collect(),
-            format!("mix of {n_ch}"),
-        ),
+                .collect();
+            refuse_cancelling(&interleaved, &v, n_ch, &format, file)?;
+            (v, format!("mix of {n_ch}"))
+        }
         Channels::One(k) if (1..=n_ch).contains(&k) => (
             interleaved.chunks_exact(n_ch).map(|c| c[k - 1]).collect(),
             format!("channel {k} of {n_ch}"),

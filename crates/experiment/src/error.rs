@@ -120,6 +120,9 @@ pub enum ExperimentError {
         /// What the decoder said.
         message: String,
     },
+    /// The work ran past the wall-time budget (`--max-seconds`).
+    #[error(transparent)]
+    OverBudget(#[from] physics::budget::OverBudget),
     /// A sound recording that can be read but not used, or not decoded.
     #[error("{file}: {format} recording: {message}: {fix}")]
     Audio {

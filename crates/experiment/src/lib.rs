@@ -65,9 +65,9 @@ pub mod track;
 pub mod wav;
 pub mod window;
 
-pub use analysis::{analyze, write_analysis, Analysis, AnalysisSettings};
+pub use analysis::{analyze, analyze_within, write_analysis, Analysis, AnalysisSettings};
 pub use artifacts::Artifacts;
-pub use audio::{analyze_sound, write_sound_analysis, SoundAnalysis};
+pub use audio::{analyze_sound, analyze_sound_within, write_sound_analysis, SoundAnalysis};
 pub use channel::{Channels, Recording, RecordingInfo};
 pub use csv::{parse_trace, read_trace};
 pub use error::ExperimentError;

@@ -103,6 +103,61 @@ impl Deadline {
     }
 }
 
+/// Work that is not an integration (reading, cleaning and analysing a recording; simulating its
+/// artifacts) under the same wall-time budget as an integration: each stage it starts first
+/// checks the clock, and tells `progress` its name.
+pub struct Work<'a> {
+    what: String,
+    deadline: Deadline,
+    progress: Option<&'a dyn Fn(&str)>,
+}
+
+/// Work that ran past the wall-time budget.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{what} ran past the wall-time budget of {seconds} s (before {stage}): raise the budget with --max-seconds SECONDS (at most 86400)")]
+pub struct OverBudget {
+    /// The work, e.g. "the analysis of run.csv".
+    pub what: String,
+    /// The stage that was to start.
+    pub stage: String,
+    /// The budget, in seconds.
+    pub seconds: f64,
+}
+
+impl<'a> Work<'a> {
+    /// Starts the clock of `what` with the current budget.
+    pub fn start(what: impl Into<String>) -> Self {
+        Self {
+            what: what.into(),
+            deadline: Deadline::start(),
+            progress: None,
+        }
+    }
+
+    /// The same work, telling `progress` each stage it starts.
+    pub fn with_progress(self, progress: &'a dyn Fn(&str)) -> Self {
+        Self {
+            progress: Some(progress),
+            ..self
+        }
+    }
+
+    /// Starts `stage`: an error once the budget is spent.
+    pub fn stage(&self, stage: &str) -> Result<(), OverBudget> {
+        if self.deadline.passed() {
+            return Err(OverBudget {
+                what: self.what.clone(),
+                stage: stage.into(),
+                seconds: self.deadline.seconds(),
+            });
+        }
+        if let Some(p) = self.progress {
+            p(stage);
+        }
+        Ok(())
+    }
+}
+
 /// Bytes that `steps` stored steps of an `n`-state system take in the solver (a time and a
 /// state each, twice: the solver's own vectors and the copy handed back).
 pub fn trajectory_bytes(steps: u64, n: usize) -> u64 {
@@ -112,6 +167,37 @@ pub fn trajectory_bytes(steps: u64, n: usize) -> u64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn work_past_its_budget_names_the_budget_and_the_option() {
+        let said = std::cell::RefCell::new(Vec::new());
+        let note = |s: &str| said.borrow_mut().push(s.to_string());
+        let work = Work {
+            what: "the analysis of x.csv".into(),
+            deadline: Deadline {
+                end: Instant::now() + Duration::from_secs(60),
+                seconds: 60.0,
+            },
+            progress: None,
+        }
+        .with_progress(&note);
+        assert_eq!(work.stage("cleaning"), Ok(()));
+        assert_eq!(*said.borrow(), ["cleaning"]);
+        let spent = Work {
+            deadline: Deadline {
+                end: Instant::now(),
+                seconds: 0.001,
+            },
+            ..work
+        };
+        let e = spent.stage("fitting").unwrap_err().to_string();
+        assert_eq!(
+            e,
+            "the analysis of x.csv ran past the wall-time budget of 0.001 s (before fitting): \
+             raise the budget with --max-seconds SECONDS (at most 86400)"
+        );
+        assert_eq!(said.borrow().len(), 1, "no progress for a stage refused");
+    }
 
     #[test]
     fn a_suggested_least_value_prints_at_or_above_the_limit() {

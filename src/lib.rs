@@ -1,0 +1,107 @@
+//! The `rolling-disk` command line: parse, call the library, print. No physics here. The
+//! binary (`src/main.rs`) runs [`main`]; the fuzz target of the arguments parses them with
+//! [`parse`].
+
+use clap::{Parser, Subcommand};
+use std::ffi::OsString;
+use std::process::ExitCode;
+
+/// `print!` through [`cli::stdout::write`]: a closed pipe ends the program quietly.
+macro_rules! print {
+    ($($arg:tt)*) => { $crate::cli::stdout::write(format_args!($($arg)*)) };
+}
+
+/// `println!` through [`cli::stdout::write`]: a closed pipe ends the program quietly.
+macro_rules! println {
+    () => { $crate::cli::stdout::write(format_args!("\n")) };
+    ($($arg:tt)*) => {
+        $crate::cli::stdout::write(format_args!("{}\n", format_args!($($arg)*)))
+    };
+}
+
+pub mod cli;
+
+/// The command line.
+#[derive(Parser)]
+#[command(
+    name = "rolling-disk",
+    version,
+    about = "Reproduces and checks McDonald & McDonald (2001), The Rolling Motion of a Disk on a Horizontal Plane"
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    command: Command,
+    /// Wall-time budget of each integration and of each analysis or simulation of a recording,
+    /// in seconds (default 600): work that takes longer ends and says so instead of running on.
+    #[arg(long, global = true, value_name = "SECONDS")]
+    max_seconds: Option<f64>,
+}
+
+/// The commands.
+#[derive(Subcommand)]
+pub enum Command {
+    /// Integrates a scene (a YAML file, or a built-in scene by name) and prints a summary.
+    Simulate(cli::simulate::Args),
+    /// Writes the reproduction report (HTML, LaTeX and/or JSON) from the built-in scenes.
+    Report(cli::report::Args),
+    /// Regenerates figures alone, by the paper's names (see `--only`).
+    Figures(cli::figures::Args),
+    /// Lists the built-in scenes, or prints one as a YAML template to edit.
+    Scenes(cli::scenes::Args),
+    /// The mutation suite: mutants of each printed equation (constants nudged, signs flipped, sin
+    /// for cos, terms and factors dropped, powers raised, inequalities reversed) run through the
+    /// equation's own check; prints how many each check kills and every survivor.
+    Mutants(cli::mutants::Args),
+    /// Checks the paper's equations and prose claims, each against an independent reference.
+    Check(cli::check::Args),
+    /// Measures speed against accuracy for a scene (default: the benchmark scene): error
+    /// against a validated reference, right-hand-side evaluations and wall time, per method.
+    Precision(cli::precision::Args),
+    /// The paper's experiment (section 11): a simulated light signal, and the analysis of a
+    /// scope CSV (synthetic or real).
+    #[command(subcommand)]
+    Experiment(cli::experiment::Command),
+    /// An independent program as a reference (M. Batista's Euler disk simulation, built and run
+    /// by scripts/peer_run.sh): write its input for a scene, compare its output with this tool.
+    #[command(subcommand)]
+    Peer(cli::peer::Command),
+}
+
+/// Parses `args` (the program's name first) as the command line.
+pub fn parse<I, T>(args: I) -> Result<Cli, clap::Error>
+where
+    I: IntoIterator<Item = T>,
+    T: Into<OsString> + Clone,
+{
+    Cli::try_parse_from(args)
+}
+
+/// Runs the command line of this process.
+pub fn main() -> ExitCode {
+    let cli = Cli::parse();
+    if let Some(seconds) = cli.max_seconds {
+        if let Err(message) = physics::budget::set_wall_seconds(seconds) {
+            eprintln!("error: {message}");
+            return ExitCode::FAILURE;
+        }
+    }
+    let result = match cli.command {
+        Command::Simulate(a) => a.run(),
+        Command::Report(a) => a.run(),
+        Command::Figures(a) => a.run(),
+        Command::Scenes(a) => a.run(),
+        Command::Mutants(a) => a.run(),
+        Command::Check(a) => a.run(),
+        Command::Precision(a) => a.run(),
+        Command::Experiment(c) => c.run(),
+        Command::Peer(c) => c.run(),
+    };
+    cli::stdout::flush();
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(message) => {
+            eprintln!("error: {message}");
+            ExitCode::FAILURE
+        }
+    }
+}
