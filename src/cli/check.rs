@@ -173,13 +173,15 @@ pub(crate) fn print_table(checked: &[Checked]) {
     let line = |what: &str, t: Tally, n: usize| {
         format!(
             "{n} {what}: {} hold, {} hold approximately, {} definitions, {} estimates (scaling \
-             confirmed), {} hold only under a premise that fails, {} fail, {} could not run",
+             confirmed), {} hold only under a premise that fails, {} fail, {} fail as the \
+             equation they restate (counted there), {} could not run",
             t.holds,
             t.approximately,
             t.definitions,
             t.estimates,
             t.premise_fails,
             t.fails,
+            t.restated,
             t.not_run
         )
     };

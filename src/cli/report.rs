@@ -68,7 +68,8 @@ fn report(
     let t = &report.summary.equations;
     println!(
         "{} equations checked: {} hold, {} hold approximately, {} definitions, {} estimates \
-         (scaling confirmed), {} hold only under a premise that fails, {} fail; {} claims fail",
+         (scaling confirmed), {} hold only under a premise that fails, {} fail; {} claims fail \
+         (and {} more as the equation they restate, counted there)",
         t.holds
             + t.approximately
             + t.definitions
@@ -82,7 +83,8 @@ fn report(
         t.estimates,
         t.premise_fails,
         t.fails,
-        report.summary.claims.fails
+        report.summary.claims.fails,
+        report.summary.claims.restated
     );
     for p in written
         .iter()

@@ -210,10 +210,19 @@ fn jobs(bench: &Bench, selection: &Selection) -> Result<Vec<Job>, CheckError> {
     let mut out: Vec<Job> = Vec::new();
     let registered = equations::equations();
     let derivations = equations::derivations();
-    let needed = selection
-        .numbers
-        .as_ref()
-        .map(|ns| with_premises(bench, ns));
+    // The equations a selected claim restates run too (silently), so that its verdict does not
+    // depend on what else was selected.
+    let restated = bench.paper.claims.iter().filter_map(|c| {
+        let wanted = selection
+            .claims
+            .as_ref()
+            .is_none_or(|ids| ids.contains(&c.id));
+        c.restates.filter(|_| wanted)
+    });
+    let needed = selection.numbers.as_ref().map(|ns| {
+        let ns: Vec<u32> = ns.iter().copied().chain(restated).collect();
+        with_premises(bench, &ns)
+    });
     if let Some(numbers) = &selection.numbers {
         for n in numbers {
             if !registered.iter().any(|e| e.number == *n) {
@@ -282,6 +291,7 @@ pub fn run_checks(
     let mut all = run_jobs(bench, &jobs, threads, progress)?;
     attach_causes(bench, &mut all);
     attach_premises(bench, &mut all);
+    attach_restated(bench, &mut all);
     Ok(all
         .into_iter()
         .zip(&jobs)
@@ -470,9 +480,12 @@ fn attach_premises(bench: &Bench, checked: &mut [Checked]) {
         let failing_names: Vec<String> = checked
             .iter()
             .filter(|c| {
-                c.finding
-                    .as_ref()
-                    .is_ok_and(|f| matches!(f.verdict, Verdict::Fails | Verdict::PremiseFails))
+                c.finding.as_ref().is_ok_and(|f| {
+                    matches!(
+                        f.verdict,
+                        Verdict::Fails | Verdict::PremiseFails | Verdict::Restates { .. }
+                    )
+                })
             })
             .map(|c| premise_name(&c.subject))
             .collect();
@@ -499,6 +512,44 @@ fn attach_premises(bench: &Bench, checked: &mut [Checked]) {
     }
 }
 
+/// A failing claim that restates a numbered equation (`restates:` in claims.yaml) whose
+/// finding fails too becomes [`Verdict::Restates`]: the fact is counted once, at the equation.
+/// A claim that disagrees with its equation (one fails, the other passes) keeps its verdict, so
+/// the disagreement shows.
+fn attach_restated(bench: &Bench, checked: &mut [Checked]) {
+    use crate::finding::Verdict;
+    let fails = |n: u32, checked: &[Checked]| {
+        checked.iter().any(|c| {
+            matches!(c.subject, Subject::Equation { number, .. } if number == n)
+                && c.finding
+                    .as_ref()
+                    .is_ok_and(|f| f.verdict == Verdict::Fails)
+        })
+    };
+    let restating: Vec<(usize, u32)> = checked
+        .iter()
+        .enumerate()
+        .filter_map(|(i, c)| match &c.subject {
+            Subject::Claim { id } => bench
+                .paper
+                .claims
+                .iter()
+                .find(|e| e.id == *id)
+                .and_then(|e| e.restates)
+                .map(|n| (i, n)),
+            Subject::Equation { .. } => None,
+        })
+        .filter(|&(_, n)| fails(n, checked))
+        .collect();
+    for (i, equation) in restating {
+        if let Ok(f) = checked[i].finding.as_mut() {
+            if f.verdict == Verdict::Fails {
+                f.verdict = Verdict::Restates { equation };
+            }
+        }
+    }
+}
+
 /// Counts of verdicts, for the summary line.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize)]
 pub struct Tally {
@@ -514,6 +565,8 @@ pub struct Tally {
     pub premise_fails: usize,
     /// Fail.
     pub fails: usize,
+    /// Claims that fail as the equation they restate fails (counted there).
+    pub restated: usize,
     /// Could not run.
     pub not_run: usize,
 }
@@ -533,6 +586,7 @@ impl Tally {
                     Verdict::Estimate { .. } => t.estimates += 1,
                     Verdict::PremiseFails => t.premise_fails += 1,
                     Verdict::Fails => t.fails += 1,
+                    Verdict::Restates { .. } => t.restated += 1,
                 },
             }
         }

@@ -71,12 +71,20 @@ pub enum Verdict {
         /// The factor the reading allows, either way.
         factor: f64,
     },
+    /// A claim that fails and states the same fact as a numbered equation that fails too
+    /// (`restates:` in claims.yaml): one fact, counted once, at the equation. The finding keeps
+    /// the claim's own numbers.
+    Restates {
+        /// The printed number of the equation it restates.
+        equation: u32,
+    },
 }
 
 impl Verdict {
-    /// True for every verdict but [`Verdict::Fails`].
+    /// True for every verdict but [`Verdict::Fails`] and [`Verdict::Restates`] (a failing fact
+    /// counted at its equation).
     pub fn passes(&self) -> bool {
-        !matches!(self, Verdict::Fails)
+        !matches!(self, Verdict::Fails | Verdict::Restates { .. })
     }
 }
 
@@ -95,6 +103,12 @@ impl fmt::Display for Verdict {
                 "order-of-magnitude estimate (scaling confirmed; constant {constant_ratio:.3} \
                  times the reference's)"
             ),
+            Verdict::Restates { equation } => {
+                write!(
+                    f,
+                    "FAILS as eq {equation} does (the same fact, counted there)"
+                )
+            }
         }
     }
 }

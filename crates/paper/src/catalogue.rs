@@ -102,6 +102,10 @@ pub struct ClaimEntry {
     /// that.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub rests_on: Vec<String>,
+    /// The numbered equation whose fact it states again, if any: where both fail, the fact is
+    /// counted once, at the equation, and the claim links to it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub restates: Option<u32>,
 }
 
 /// The reading of a loosely worded number: exactly one of `digits`, `within`, `factor`,

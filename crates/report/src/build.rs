@@ -49,7 +49,7 @@ const SECTIONS: [(u32, &str); 10] = [
 /// Claimed and reference values as a reader should see them: for an approximation these are
 /// the claimed and the fitted orders.
 fn values(f: &Finding) -> (String, String) {
-    if f.method == checks::finding::Method::Asymptotic || f.unit == "order" {
+    if is_order(f) {
         (
             format!("order {}", fmt_num(f.claimed)),
             format!("order {:.2}", f.reference),
@@ -75,7 +75,7 @@ fn view(f: &Finding) -> FindingView {
         Verdict::Definition => "definition",
         Verdict::Estimate { .. } => "estimate",
         Verdict::PremiseFails => "premise",
-        Verdict::Fails => "fails",
+        Verdict::Fails | Verdict::Restates { .. } => "fails",
     };
     FindingView {
         method: f.method.to_string(),
@@ -96,6 +96,46 @@ fn view(f: &Finding) -> FindingView {
             .shown_by
             .as_deref()
             .map(|s| s.trim_start_matches("figure ").to_string()),
+        headline: f
+            .headline
+            .as_ref()
+            .map(|h| headline_text(h, &format!("paper {{}} ({})", h.paper_is))),
+        headline_at: f.headline.as_ref().map(|h| crate::number::prose(&h.at)),
+        error_measure: if is_order(f) {
+            "|fitted - claimed order|".into()
+        } else {
+            "error (the tolerance rule's measure)".into()
+        },
+        restates: match f.verdict {
+            Verdict::Restates { equation } => Some(equation),
+            _ => None,
+        },
+    }
+}
+
+/// True when a finding compares orders (an approximation's claimed and fitted order).
+fn is_order(f: &Finding) -> bool {
+    f.method == checks::finding::Method::Asymptotic || f.unit == "order"
+}
+
+/// The paper's value and the true one of the same quantity, with the unit: the headline's
+/// where the check gives one, else the finding's own unless it compares orders.
+fn printed_and_true(f: &Finding) -> Option<(f64, f64, String)> {
+    match &f.headline {
+        Some(h) => Some((h.paper, h.reference, h.unit.clone())),
+        None if !is_order(f) => Some((f.claimed, f.reference, f.unit.clone())),
+        None => None,
+    }
+}
+
+/// |true - paper| / |paper|, formatted; a dash where the paper's value is 0 or either is not a
+/// number.
+fn relative_error(paper: f64, truth: f64) -> String {
+    let r = (truth - paper).abs() / paper.abs();
+    if paper != 0.0 && r.is_finite() {
+        crate::number::error(r)
+    } else {
+        "-".into()
     }
 }
 
@@ -128,6 +168,10 @@ fn error_view(message: &str) -> FindingView {
         class: "error".into(),
         at: message.into(),
         figure: None,
+        headline: None,
+        headline_at: None,
+        error_measure: "error".into(),
+        restates: None,
     }
 }
 
@@ -153,6 +197,8 @@ fn failure_view(c: &Checked) -> Option<FailureView> {
         claimed: claimed.clone(),
         reference: reference.clone(),
         error: crate::number::error(f.error),
+        relative_error: printed_and_true(f)
+            .map_or_else(|| "-".into(), |(p, t, _)| relative_error(p, t)),
         headline: f
             .headline
             .as_ref()
@@ -219,7 +265,7 @@ fn premises_figure(bench: &Bench, checked: &[Checked]) -> Figure {
             Verdict::Definition => Status::Definition,
             Verdict::Estimate { .. } => Status::Estimate,
             Verdict::PremiseFails => Status::PremiseFails,
-            Verdict::Fails => Status::Fails,
+            Verdict::Fails | Verdict::Restates { .. } => Status::Fails,
         },
         _ => Status::Unchecked,
     };
@@ -449,6 +495,18 @@ fn section_views(
     Ok((sections, unchecked))
 }
 
+/// The computed value of a claim's quantity, with its unit: the headline's true value, else the
+/// finding's reference (an approximation's fitted order).
+fn computed_text(f: &Finding) -> String {
+    match printed_and_true(f) {
+        Some((_, t, unit)) => match unit.as_str() {
+            "" | "1" => fmt_num(t),
+            u => format!("{} {u}", fmt_num(t)),
+        },
+        None => values(f).1,
+    }
+}
+
 /// Every prose claim's view, and the claims with no check and why.
 fn claim_views(bench: &Bench, checked: &[Checked]) -> (Vec<ClaimView>, Unchecked<String>) {
     let mut claims = Vec::new();
@@ -488,6 +546,15 @@ fn claim_views(bench: &Bench, checked: &[Checked]) -> (Vec<ClaimView>, Unchecked
                 .iter()
                 .map(|l| format!("sec. {} (eq {}): {}", l.section, l.near_equation, l.claim))
                 .collect(),
+            computed: found
+                .and_then(|k| k.finding.as_ref().ok())
+                .map(computed_text)
+                .unwrap_or_default(),
+            relative_error: found
+                .and_then(|k| k.finding.as_ref().ok())
+                .filter(|_| c.claimed_value.is_some())
+                .and_then(printed_and_true)
+                .map_or_else(|| "-".into(), |(p, t, _)| relative_error(p, t)),
             finding: found.map(finding_of),
             uncheckable: why,
         });

@@ -38,7 +38,7 @@ pub(super) fn eq73_second_approximation_sign(b: &Bench) -> Finding {
     let c = disk.a * add / disk.g + 1.5;
     single(
         Method::Derivation,
-        "coefficient of m a g alpha_dot in eq 73 at F_z = 0",
+        "coefficient of m a g alpha_dot in eq 73's first form (eq 72's energy) at F_z = 0",
         b.claim(printed(b, "eq73-second-approximation-sign")),
         c,
         Tolerance::bisection(WIDTH),
