@@ -263,9 +263,11 @@ fn the_report_commands_count_is_every_equation() {
     let claims = |k: &str| c[k].as_u64().unwrap_or(0);
     assert!(
         line.contains(&format!(
-            "{} claims fail (and {} more as the equation they restate",
+            "{} claims fail (and {} more as the equation they restate, counted there), {} unit \
+             misprints",
             claims("fails"),
-            claims("restated")
+            claims("restated"),
+            claims("unit_misprints")
         )),
         "{line}"
     );

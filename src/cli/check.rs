@@ -174,7 +174,7 @@ pub(crate) fn print_table(checked: &[Checked]) {
         format!(
             "{n} {what}: {} hold, {} hold approximately, {} definitions, {} estimates (scaling \
              confirmed), {} hold only under a premise that fails, {} fail, {} fail as the \
-             equation they restate (counted there), {} could not run",
+             equation they restate (counted there), {} unit misprints, {} could not run",
             t.holds,
             t.approximately,
             t.definitions,
@@ -182,6 +182,7 @@ pub(crate) fn print_table(checked: &[Checked]) {
             t.premise_fails,
             t.fails,
             t.restated,
+            t.unit_misprints,
             t.not_run
         )
     };

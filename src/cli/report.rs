@@ -69,7 +69,7 @@ fn report(
     println!(
         "{} equations checked: {} hold, {} hold approximately, {} definitions, {} estimates \
          (scaling confirmed), {} hold only under a premise that fails, {} fail; {} claims fail \
-         (and {} more as the equation they restate, counted there)",
+         (and {} more as the equation they restate, counted there), {} unit misprints",
         t.holds
             + t.approximately
             + t.definitions
@@ -84,7 +84,8 @@ fn report(
         t.premise_fails,
         t.fails,
         report.summary.claims.fails,
-        report.summary.claims.restated
+        report.summary.claims.restated,
+        report.summary.claims.unit_misprints
     );
     for p in written
         .iter()

@@ -483,7 +483,10 @@ fn attach_premises(bench: &Bench, checked: &mut [Checked]) {
                 c.finding.as_ref().is_ok_and(|f| {
                     matches!(
                         f.verdict,
-                        Verdict::Fails | Verdict::PremiseFails | Verdict::Restates { .. }
+                        Verdict::Fails
+                            | Verdict::PremiseFails
+                            | Verdict::Restates { .. }
+                            | Verdict::UnitMisprint
                     )
                 })
             })
@@ -567,6 +570,8 @@ pub struct Tally {
     pub fails: usize,
     /// Claims that fail as the equation they restate fails (counted there).
     pub restated: usize,
+    /// Numbers wrong in the unit printed and right in the unit meant.
+    pub unit_misprints: usize,
     /// Could not run.
     pub not_run: usize,
 }
@@ -587,6 +592,7 @@ impl Tally {
                     Verdict::PremiseFails => t.premise_fails += 1,
                     Verdict::Fails => t.fails += 1,
                     Verdict::Restates { .. } => t.restated += 1,
+                    Verdict::UnitMisprint => t.unit_misprints += 1,
                 },
             }
         }

@@ -78,13 +78,20 @@ pub enum Verdict {
         /// The printed number of the equation it restates.
         equation: u32,
     },
+    /// A number that is wrong in the unit printed beside it and right in the unit the text
+    /// means ("Hz" for rad/s, "g-cm^-1-s" for g/(cm s)): a unit misprint, reported as one and
+    /// never silently read in the unit meant. The finding's `at` gives both readings.
+    UnitMisprint,
 }
 
 impl Verdict {
-    /// True for every verdict but [`Verdict::Fails`] and [`Verdict::Restates`] (a failing fact
-    /// counted at its equation).
+    /// True for every verdict but [`Verdict::Fails`], [`Verdict::Restates`] (a failing fact
+    /// counted at its equation) and [`Verdict::UnitMisprint`].
     pub fn passes(&self) -> bool {
-        !matches!(self, Verdict::Fails | Verdict::Restates { .. })
+        !matches!(
+            self,
+            Verdict::Fails | Verdict::Restates { .. } | Verdict::UnitMisprint
+        )
     }
 }
 
@@ -103,6 +110,7 @@ impl fmt::Display for Verdict {
                 "order-of-magnitude estimate (scaling confirmed; constant {constant_ratio:.3} \
                  times the reference's)"
             ),
+            Verdict::UnitMisprint => write!(f, "unit misprint (right in the unit meant)"),
             Verdict::Restates { equation } => {
                 write!(
                     f,

@@ -75,7 +75,7 @@ fn view(f: &Finding) -> FindingView {
         Verdict::Definition => "definition",
         Verdict::Estimate { .. } => "estimate",
         Verdict::PremiseFails => "premise",
-        Verdict::Fails | Verdict::Restates { .. } => "fails",
+        Verdict::Fails | Verdict::Restates { .. } | Verdict::UnitMisprint => "fails",
     };
     FindingView {
         method: f.method.to_string(),
@@ -186,7 +186,7 @@ fn finding_of(c: &Checked) -> FindingView {
 fn failure_view(c: &Checked) -> Option<FailureView> {
     let f = c.finding.as_ref().ok()?;
     let (claimed, reference) = values(f);
-    (f.verdict == Verdict::Fails).then(|| FailureView {
+    matches!(f.verdict, Verdict::Fails | Verdict::UnitMisprint).then(|| FailureView {
         name: c.subject.name(),
         at: crate::number::prose(&f.at),
         anchor: match &c.subject {
@@ -265,7 +265,7 @@ fn premises_figure(bench: &Bench, checked: &[Checked]) -> Figure {
             Verdict::Definition => Status::Definition,
             Verdict::Estimate { .. } => Status::Estimate,
             Verdict::PremiseFails => Status::PremiseFails,
-            Verdict::Fails | Verdict::Restates { .. } => Status::Fails,
+            Verdict::Fails | Verdict::Restates { .. } | Verdict::UnitMisprint => Status::Fails,
         },
         _ => Status::Unchecked,
     };

@@ -146,6 +146,8 @@ pub struct Counts {
     /// Claims that fail as the numbered equation they restate fails: one fact, counted at the
     /// equation (their outcome's `restates` names it).
     pub restated: usize,
+    /// Numbers wrong in the unit printed beside them and right in the unit the text means.
+    pub unit_misprints: usize,
     /// Could not run.
     pub not_run: usize,
 }
@@ -160,6 +162,7 @@ impl From<Tally> for Counts {
             premise_fails: t.premise_fails,
             fails: t.fails,
             restated: t.restated,
+            unit_misprints: t.unit_misprints,
             not_run: t.not_run,
         }
     }
@@ -318,6 +321,8 @@ pub enum VerdictKind {
     /// A claim that fails as the numbered equation it restates fails (`restates` names it):
     /// counted once, at the equation.
     Restates,
+    /// Wrong in the unit printed, right in the unit the text means (`at` gives both).
+    UnitMisprint,
 }
 
 /// An order-of-magnitude estimate's constant, against the reference's.
@@ -408,6 +413,7 @@ impl Outcome {
             Verdict::PremiseFails => (VerdictKind::PremiseFails, None, None),
             Verdict::Fails => (VerdictKind::Fails, None, None),
             Verdict::Restates { .. } => (VerdictKind::Restates, None, None),
+            Verdict::UnitMisprint => (VerdictKind::UnitMisprint, None, None),
         };
         Outcome::Checked {
             verdict,
