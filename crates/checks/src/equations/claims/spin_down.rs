@@ -197,16 +197,18 @@ pub(super) fn air_viscosity(b: &Bench) -> Finding {
          rate, has s^-1"
             .into(),
     )
-    .in_unit("1")
-    .with_headline(Headline::new(
-        "power of the second in the unit printed for air's viscosity",
-        1.0,
+    .in_unit("1");
+    let as_meant = air_viscosity_as_meant(b);
+    let headline = Headline::new(
+        "viscosity of air in g/(cm s), the unit meant (the unit printed, g-cm^-1-s, is g s/cm: \
+         s to the power +1 where a viscosity has -1)",
+        as_meant.claimed,
         "printed",
-        -1.0,
-        "1",
-        "g-cm^-1-s as printed, g/(cm s) as meant",
-    ));
-    unit_misprint(as_printed, air_viscosity_as_meant(b))
+        as_meant.reference,
+        "g/(cm s)",
+        as_meant.at.clone(),
+    );
+    unit_misprint(as_printed, as_meant).with_headline(headline)
 }
 
 /// The air's viscosity in g/(cm s) (Sutherland's law) against the printed 1.8e-4.
