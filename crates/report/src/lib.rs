@@ -7,6 +7,7 @@ pub mod document;
 pub mod error;
 pub mod experiment_section;
 pub mod figures;
+mod finding_view;
 pub mod fonts;
 pub mod json;
 pub mod mathml;
