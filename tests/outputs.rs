@@ -259,6 +259,18 @@ fn the_report_commands_count_is_every_equation() {
         "{line}"
     );
     assert!(line.contains(&format!("{} fail;", n("fails"))), "{line}");
+    let c = &doc["summary"]["claims"];
+    let claims = |k: &str| c[k].as_u64().unwrap_or(0);
+    assert!(
+        line.contains(&format!(
+            "{} claims fail (and {} more as the equation they restate, counted there), {} unit \
+             misprints",
+            claims("fails"),
+            claims("restated"),
+            claims("unit_misprints")
+        )),
+        "{line}"
+    );
     assert!(out.join("report.json").is_file());
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -15,7 +15,10 @@ fn name(c: &Checked) -> String {
 }
 
 fn failing(v: &Verdict) -> bool {
-    matches!(v, Verdict::Fails | Verdict::PremiseFails)
+    matches!(
+        v,
+        Verdict::Fails | Verdict::PremiseFails | Verdict::Restates { .. }
+    )
 }
 
 #[test]
@@ -58,8 +61,9 @@ fn no_verdict_holds_on_a_premise_that_fails() {
             }
         }
     }
-    // Eleven premises are named; the two of the uncheckable summary-nutation-10-15-deg claim are
-    // not walked.
+    // Coincidence-eq54 fails on its own (0.168 rad is not within 5 % of 0.2) and names its
+    // failing premise too.
+    assert_eq!(verdict("coincidence-eq54"), Some(Verdict::Fails));
     assert!(walked >= 9, "only {walked} premises walked");
     assert!(wrong.is_empty(), "{wrong:#?}");
     // The examples that motivated the rule.
@@ -68,8 +72,8 @@ fn no_verdict_holds_on_a_premise_that_fails() {
         "eq 58",
         "eq 80",
         "eq 81",
-        "coincidence-eq54",
         "coincidence-eq58",
+        "summary-nutation-10-15-deg",
     ] {
         assert_eq!(verdict(n), Some(Verdict::PremiseFails), "{n}");
     }
@@ -85,8 +89,8 @@ fn a_selection_runs_the_premises_its_subjects_rest_on() {
         (Some(vec![80]), Some(Vec::new()), "eq 80"),
         (
             Some(Vec::new()),
-            Some(vec!["coincidence-eq54".to_string()]),
-            "coincidence-eq54",
+            Some(vec!["coincidence-eq58".to_string()]),
+            "coincidence-eq58",
         ),
     ] {
         let selection = Selection { numbers, claims };
@@ -96,4 +100,50 @@ fn a_selection_runs_the_premises_its_subjects_rest_on() {
         assert_eq!(f.verdict, Verdict::PremiseFails, "{shown}");
         assert!(!f.premises_failing.is_empty(), "{shown}");
     }
+}
+
+/// One fact counted once: the claim that restates eq 73 (`restates: 73`) fails as eq 73 does and
+/// is counted there, whatever else is selected; pointed at an equation that holds (eq 18), the
+/// same claim keeps its own failing verdict, so a disagreement shows.
+#[test]
+fn a_claim_that_restates_a_failing_equation_is_counted_there() {
+    let id = "eq73-second-approximation-sign";
+    let run = |paper: &'static Paper, selection: Selection| {
+        let checked =
+            run_checks(&Bench::with_paper(paper), &selection, 2, &|_, _| {}).expect("runs");
+        checked
+            .into_iter()
+            .find(|c| name(c) == id)
+            .and_then(|c| c.finding.ok())
+            .map(|f| f.verdict)
+    };
+    let alone = Selection {
+        numbers: Some(Vec::new()),
+        claims: Some(vec![id.to_string()]),
+    };
+    let built_in = Paper::built_in_shared();
+    assert_eq!(
+        run(built_in, alone.clone()),
+        Some(Verdict::Restates { equation: 73 })
+    );
+    let dir = std::env::temp_dir().join(format!("restates-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::copy(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("paper/equations.yaml"),
+        dir.join("equations.yaml"),
+    )
+    .unwrap();
+    let claims = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("paper/claims.yaml"),
+    )
+    .unwrap();
+    assert!(claims.contains("  restates: 73\n"));
+    std::fs::write(
+        dir.join("claims.yaml"),
+        claims.replace("  restates: 73\n", "  restates: 18\n"),
+    )
+    .unwrap();
+    let planted: &'static Paper = Box::leak(Box::new(Paper::from_dir(&dir).expect("loads")));
+    assert_eq!(run(planted, alone), Some(Verdict::Fails));
+    let _ = std::fs::remove_dir_all(&dir);
 }

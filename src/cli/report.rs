@@ -56,10 +56,13 @@ fn report(format: ReportFormat, out: &Path, input: &PaperInput) -> anyhow::Resul
     let written = shown;
     let t = &report.summary.equations;
     println!(
-        "{} equations checked: {}; {} claims fail",
+        "{} equations checked: {}; {} claims fail (and {} more as the equation they restate, \
+         counted there), {} unit misprints",
         t.total(),
         t.sentence(),
-        report.summary.claims.fails
+        report.summary.claims.fails,
+        report.summary.claims.restated,
+        report.summary.claims.unit_misprints
     );
     for p in written
         .iter()

@@ -69,6 +69,13 @@ fn the_readmes_verdict_counts_are_the_checks() {
             " hold only under a premise",
         ),
         (claims, "claims", "fails", " fail**"),
+        (
+            claims,
+            "claims",
+            "restated",
+            " fails as the equation it restates",
+        ),
+        (claims, "claims", "unit_misprints", " are unit misprints"),
     ];
     for (text, group, key, words) in cases {
         assert_eq!(
@@ -199,7 +206,9 @@ fn the_readmes_table_of_failures_is_the_checks() {
     let section = &readme[start..];
     let section = &section[..section[3..].find("\n## ").map_or(section.len(), |i| i + 3)];
     for c in checks() {
-        if let (Some(id), Some("fails")) = (c["claim"].as_str(), verdict(c)) {
+        if let (Some(id), Some("fails" | "restates" | "unit_misprint")) =
+            (c["claim"].as_str(), verdict(c))
+        {
             assert!(
                 section.contains(&format!("`{id}`")),
                 "the README does not name the failing claim {id}"

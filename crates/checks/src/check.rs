@@ -210,10 +210,19 @@ fn jobs(bench: &Bench, selection: &Selection) -> Result<Vec<Job>, CheckError> {
     let mut out: Vec<Job> = Vec::new();
     let registered = equations::equations();
     let derivations = equations::derivations();
-    let needed = selection
-        .numbers
-        .as_ref()
-        .map(|ns| with_premises(bench, ns));
+    // The equations a selected claim restates run too (silently), so that its verdict does not
+    // depend on what else was selected.
+    let restated = bench.paper.claims.iter().filter_map(|c| {
+        let wanted = selection
+            .claims
+            .as_ref()
+            .is_none_or(|ids| ids.contains(&c.id));
+        c.restates.filter(|_| wanted)
+    });
+    let needed = selection.numbers.as_ref().map(|ns| {
+        let ns: Vec<u32> = ns.iter().copied().chain(restated).collect();
+        with_premises(bench, &ns)
+    });
     if let Some(numbers) = &selection.numbers {
         for n in numbers {
             if !registered.iter().any(|e| e.number == *n) {
@@ -281,7 +290,8 @@ pub fn run_checks(
     let jobs = jobs(bench, selection)?;
     let mut all = run_jobs(bench, &jobs, threads, progress)?;
     attach_causes(bench, &mut all);
-    attach_premises(bench, &mut all);
+    crate::agreement::attach_premises(bench, &mut all);
+    crate::agreement::attach_restated(bench, &mut all);
     Ok(all
         .into_iter()
         .zip(&jobs)
@@ -439,66 +449,6 @@ fn attach_causes(bench: &Bench, checked: &mut [Checked]) {
     }
 }
 
-/// What `subject` rests on besides its numbered premises: the `rests_on` of its entry.
-fn rests_on<'a>(bench: &'a Bench, subject: &Subject) -> &'a [String] {
-    match subject {
-        Subject::Equation { number, .. } => &bench.paper.equation(*number).entry.rests_on,
-        Subject::Claim { id } => bench
-            .paper
-            .claims
-            .iter()
-            .find(|c| c.id == *id)
-            .map_or(&[], |c| c.rests_on.as_slice()),
-    }
-}
-
-/// The name a `rests_on` list uses for `subject`: its claim id, or `eq N`.
-fn premise_name(subject: &Subject) -> String {
-    match subject {
-        Subject::Equation { number, .. } => format!("eq {number}"),
-        Subject::Claim { id } => id.to_string(),
-    }
-}
-
-/// A finding that would pass but rests on a claim or equation that fails (or itself rests on
-/// one) becomes [`Verdict::PremiseFails`], naming them; a failing finding keeps its verdict and
-/// names them too. Premises that were not run leave it as it is. Repeated to a fixed point, so
-/// a premise's premise counts.
-fn attach_premises(bench: &Bench, checked: &mut [Checked]) {
-    use crate::finding::Verdict;
-    for _ in 0..checked.len() {
-        let failing_names: Vec<String> = checked
-            .iter()
-            .filter(|c| {
-                c.finding
-                    .as_ref()
-                    .is_ok_and(|f| matches!(f.verdict, Verdict::Fails | Verdict::PremiseFails))
-            })
-            .map(|c| premise_name(&c.subject))
-            .collect();
-        let mut changed = false;
-        for c in checked.iter_mut() {
-            let failing: Vec<String> = rests_on(bench, &c.subject)
-                .iter()
-                .filter(|p| failing_names.contains(p))
-                .cloned()
-                .collect();
-            let Ok(f) = c.finding.as_mut() else { continue };
-            if failing.is_empty() || f.premises_failing == failing {
-                continue;
-            }
-            if f.verdict.passes() {
-                f.verdict = Verdict::PremiseFails;
-            }
-            f.premises_failing = failing;
-            changed = true;
-        }
-        if !changed {
-            break;
-        }
-    }
-}
-
 /// The cause settled for each equation among `checked` that has one (a root cause, an inherited
 /// error, or undetermined), by equation number.
 pub fn equation_causes(checked: &[Checked]) -> std::collections::BTreeMap<u32, Cause> {
@@ -526,6 +476,10 @@ pub struct Tally {
     pub premise_fails: usize,
     /// Fail.
     pub fails: usize,
+    /// Claims that fail as the equation they restate fails (counted there).
+    pub restated: usize,
+    /// Numbers wrong in the unit printed and right in the unit meant.
+    pub unit_misprints: usize,
     /// Could not run.
     pub not_run: usize,
 }
@@ -539,11 +493,13 @@ impl Tally {
             + self.estimates
             + self.premise_fails
             + self.fails
+            + self.restated
+            + self.unit_misprints
             + self.not_run
     }
 
-    /// The counts in words, every verdict named; those that could not run only when there are
-    /// some.
+    /// The counts in words, every verdict named; restatements, unit misprints and those that
+    /// could not run only when there are some.
     pub fn sentence(&self) -> String {
         let mut s = format!(
             "{} hold, {} hold approximately, {} definitions, {} estimates (scaling confirmed), {} \
@@ -555,8 +511,17 @@ impl Tally {
             self.premise_fails,
             self.fails,
         );
-        if self.not_run > 0 {
-            s.push_str(&format!(", {} could not run", self.not_run));
+        for (n, what) in [
+            (
+                self.restated,
+                "fail as the equation they restate (counted there)",
+            ),
+            (self.unit_misprints, "unit misprints"),
+            (self.not_run, "could not run"),
+        ] {
+            if n > 0 {
+                s.push_str(&format!(", {n} {what}"));
+            }
         }
         s
     }
@@ -575,6 +540,8 @@ impl Tally {
                     Verdict::Estimate { .. } => t.estimates += 1,
                     Verdict::PremiseFails => t.premise_fails += 1,
                     Verdict::Fails => t.fails += 1,
+                    Verdict::Restates { .. } => t.restated += 1,
+                    Verdict::UnitMisprint => t.unit_misprints += 1,
                 },
             }
         }

@@ -71,12 +71,27 @@ pub enum Verdict {
         /// The factor the reading allows, either way.
         factor: f64,
     },
+    /// A claim that fails and states the same fact as a numbered equation that fails too
+    /// (`restates:` in claims.yaml): one fact, counted once, at the equation. The finding keeps
+    /// the claim's own numbers.
+    Restates {
+        /// The printed number of the equation it restates.
+        equation: u32,
+    },
+    /// A number that is wrong in the unit printed beside it and right in the unit the text
+    /// means ("Hz" for rad/s, "g-cm^-1-s" for g/(cm s)): a unit misprint, reported as one and
+    /// never silently read in the unit meant. The finding's `at` gives both readings.
+    UnitMisprint,
 }
 
 impl Verdict {
-    /// True for every verdict but [`Verdict::Fails`].
+    /// True for every verdict but [`Verdict::Fails`], [`Verdict::Restates`] (a failing fact
+    /// counted at its equation) and [`Verdict::UnitMisprint`].
     pub fn passes(&self) -> bool {
-        !matches!(self, Verdict::Fails)
+        !matches!(
+            self,
+            Verdict::Fails | Verdict::Restates { .. } | Verdict::UnitMisprint
+        )
     }
 }
 
@@ -95,6 +110,13 @@ impl fmt::Display for Verdict {
                 "order-of-magnitude estimate (scaling confirmed; constant {constant_ratio:.3} \
                  times the reference's)"
             ),
+            Verdict::UnitMisprint => write!(f, "unit misprint (right in the unit meant)"),
+            Verdict::Restates { equation } => {
+                write!(
+                    f,
+                    "FAILS as eq {equation} does (the same fact, counted there)"
+                )
+            }
         }
     }
 }

@@ -1,8 +1,9 @@
 //! The checks: each of the paper's equations and numeric claims compared with a reference that
 //! does not use it ([`check`], [`equations`]), the verdicts ([`finding`]), root causes against
-//! inherited failures ([`cause`]), the mutation suite ([`mutation`]), the corrected forms
+//! inherited failures ([`cause`]), verdicts that agree with their premises (`agreement`), the mutation suite ([`mutation`]), the corrected forms
 //! ([`corrections`]) and the selection of what to check ([`select`]).
 
+mod agreement;
 pub mod cause;
 pub mod check;
 pub mod corrections;

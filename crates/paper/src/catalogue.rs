@@ -102,6 +102,10 @@ pub struct ClaimEntry {
     /// that.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub rests_on: Vec<String>,
+    /// The numbered equation whose fact it states again, if any: where both fail, the fact is
+    /// counted once, at the equation, and the claim links to it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub restates: Option<u32>,
 }
 
 /// The reading of a loosely worded number: exactly one of `digits`, `within`, `factor`,
@@ -115,7 +119,8 @@ pub struct Rule {
     /// them, must equal it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub digits: Option<u32>,
-    /// Within this relative distance of the printed number.
+    /// Within this relative distance of the printed number; with `range`, of the range's
+    /// nearer end ("about 10 to 15 degrees").
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub within: Option<f64>,
     /// Within this factor of the printed number, either way ("of order").
@@ -134,7 +139,8 @@ impl Rule {
     pub fn problem(&self) -> Option<String> {
         let set = [
             self.digits.is_some(),
-            self.within.is_some(),
+            // With a range, `within` is the band around its ends, not a reading of its own.
+            self.within.is_some() && self.range.is_none(),
             self.factor.is_some(),
             self.at_most.is_some(),
             self.range.is_some(),
@@ -176,16 +182,21 @@ impl Rule {
                  that precision, must equal it",
                 if d == 1 { "" } else { "s" }
             )
-        } else if let Some(w) = self.within {
+        } else if let (Some(w), None) = (self.within, self.range) {
             format!("as within {} % of {value}", w * 100.0)
         } else if let Some(f) = self.factor {
             format!("as within a factor {f} of {value}, either way")
         } else if let Some(m) = self.at_most {
             format!("as no more than {value} plus {} %", m * 100.0)
         } else if let Some([lo, hi]) = self.range {
+            let band = self
+                .within
+                .map(|w| format!(", each end within {} %", w * 100.0))
+                .unwrap_or_default();
             format!("as between {lo} and {hi} {unit}")
                 .trim_end()
                 .to_string()
+                + &band
         } else {
             "(no reading)".into()
         };

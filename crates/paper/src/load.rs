@@ -173,6 +173,16 @@ impl Paper {
                     ),
                 });
             }
+            if let Some(n) = c.restates.filter(|n| !(1..=85).contains(n)) {
+                return Err(PaperError::Structure {
+                    file: file("claims.yaml"),
+                    message: format!(
+                        "claim `{}`, key `restates`: {n} is not an equation number; write the \
+                         printed number of the equation it states again, from 1 to 85",
+                        c.id
+                    ),
+                });
+            }
         }
         for e in &entries {
             if let Some(bad) = e

@@ -6,18 +6,21 @@
 use super::json;
 use super::mathml::display_math;
 use super::{
-    fmt_num, ClaimView, EquationView, FailureView, FigureView, FindingView, Report, RootCauseView,
-    RunSettings, SceneView, SectionView, Summary,
+    fmt_num, EquationView, FailureView, FigureView, Report, RootCauseView, RunSettings, SceneView,
+    SectionView, Summary,
 };
 use crate::document::equation_checked;
 use crate::error::ReportError;
 use crate::figures::{self, Drawing, Figure};
+use crate::finding_view::{
+    claim_views, finding_of, headline_text, printed_and_true, relative_error, values,
+};
 use crate::pipeline::{compute, RunConfig};
 use crate::results::Results;
 use crate::study;
 use checks::check::{Checked, Subject, Tally};
-use checks::equations::{Bench, UNCHECKABLE_CLAIMS, UNCHECKABLE_EQUATIONS};
-use checks::finding::{Finding, Verdict};
+use checks::equations::{Bench, UNCHECKABLE_EQUATIONS};
+use checks::finding::Verdict;
 use checks::mutation::StoredScores;
 use physics::scene::{builtin::BUILTIN, Scene};
 use rayon::prelude::*;
@@ -45,107 +48,11 @@ const SECTIONS: [(u32, &str); 10] = [
     (12, "Summary of the motion"),
 ];
 
-/// Claimed and reference values as a reader should see them, to the digits the check's
-/// tolerance supports ([`crate::number::within`]; relative, as the findings' errors are): for
-/// an approximation the claimed and the fitted orders, the fitted one to the place of the
-/// tolerance on their difference.
-fn values(f: &Finding) -> (String, String) {
-    use crate::number::{to_place_of, within};
-    let tolerance = f.tolerance.value;
-    if f.method == checks::finding::Method::Asymptotic || f.unit == "order" {
-        (
-            format!("order {}", fmt_num(f.claimed)),
-            format!("order {}", to_place_of(f.reference, tolerance)),
-        )
-    } else {
-        // With the unit where the check knows it (none shown for a pure number).
-        let unit = match f.unit.as_str() {
-            "" | "1" | "order" => String::new(),
-            u => format!(" {u}"),
-        };
-        (
-            format!("{}{unit}", within(f.claimed, tolerance)),
-            format!("{}{unit}", within(f.reference, tolerance)),
-        )
-    }
-}
-
-fn view(f: &Finding) -> FindingView {
-    let (claimed, reference) = values(f);
-    let class = match f.verdict {
-        Verdict::Holds => "holds",
-        Verdict::HoldsApproximately { .. } => "approx",
-        Verdict::Definition => "definition",
-        Verdict::Estimate { .. } => "estimate",
-        Verdict::PremiseFails => "premise",
-        Verdict::Fails => "fails",
-    };
-    FindingView {
-        method: f.method.to_string(),
-        compared: crate::number::prose(&f.compared),
-        claimed: claimed.clone(),
-        reference: reference.clone(),
-        error: crate::number::error(f.error),
-        tolerance: crate::number::error(f.tolerance.value),
-        rule: f.tolerance.rule.clone(),
-        verdict: if f.premises_failing.is_empty() {
-            f.verdict.to_string()
-        } else {
-            format!("{} (fails: {})", f.verdict, f.premises_failing.join(", "))
-        },
-        class: class.into(),
-        at: crate::number::prose(&f.at),
-        figure: f
-            .shown_by
-            .as_deref()
-            .map(|s| s.trim_start_matches("figure ").to_string()),
-    }
-}
-
-/// A headline in words: its quantity, the paper's value as `paper` phrases it (`{}` stands for
-/// the number) and the true value, each with the unit.
-fn headline_text(h: &checks::finding::Headline, paper: &str) -> String {
-    let unit = if h.unit == "1" {
-        String::new()
-    } else {
-        format!(" {}", h.unit)
-    };
-    let paper = paper.replacen("{}", &format!("{}{unit}", fmt_num(h.paper)), 1);
-    format!(
-        "{}: {paper}, true {}{unit}",
-        h.quantity,
-        fmt_num(h.reference)
-    )
-}
-
-fn error_view(message: &str) -> FindingView {
-    FindingView {
-        method: "-".into(),
-        compared: "-".into(),
-        claimed: "-".into(),
-        reference: "-".into(),
-        error: "-".into(),
-        tolerance: "-".into(),
-        rule: "-".into(),
-        verdict: "could not run".into(),
-        class: "error".into(),
-        at: message.into(),
-        figure: None,
-    }
-}
-
-fn finding_of(c: &Checked) -> FindingView {
-    match &c.finding {
-        Ok(f) => view(f),
-        Err(e) => error_view(e),
-    }
-}
-
 /// A failing check as one row of the summary; `None` when it does not fail.
 fn failure_view(c: &Checked) -> Option<FailureView> {
     let f = c.finding.as_ref().ok()?;
     let (claimed, reference) = values(f);
-    (f.verdict == Verdict::Fails).then(|| FailureView {
+    matches!(f.verdict, Verdict::Fails | Verdict::UnitMisprint).then(|| FailureView {
         name: c.subject.name(),
         at: crate::number::prose(&f.at),
         anchor: match &c.subject {
@@ -156,6 +63,8 @@ fn failure_view(c: &Checked) -> Option<FailureView> {
         claimed: claimed.clone(),
         reference: reference.clone(),
         error: crate::number::error(f.error),
+        relative_error: printed_and_true(f)
+            .map_or_else(|| "-".into(), |(p, t, _)| relative_error(p, t)),
         headline: f
             .headline
             .as_ref()
@@ -216,7 +125,7 @@ fn premises_figure(bench: &Bench, checked: &[Checked]) -> Figure {
             Verdict::Definition => Status::Definition,
             Verdict::Estimate { .. } => Status::Estimate,
             Verdict::PremiseFails => Status::PremiseFails,
-            Verdict::Fails => Status::Fails,
+            Verdict::Fails | Verdict::Restates { .. } | Verdict::UnitMisprint => Status::Fails,
         },
         _ => Status::Unchecked,
     };
@@ -394,53 +303,6 @@ fn section_views(
     sections.retain(|s| !s.equations.is_empty());
 
     Ok((sections, unchecked))
-}
-
-/// Every prose claim's view, and the claims with no check and why.
-fn claim_views(bench: &Bench, checked: &[Checked]) -> (Vec<ClaimView>, Unchecked<String>) {
-    let mut claims = Vec::new();
-    let mut unchecked_claims = Vec::new();
-    for c in &bench.paper.claims {
-        let found = checked
-            .iter()
-            .find(|k| matches!(k.subject, Subject::Claim { id } if id == c.id));
-        let why = UNCHECKABLE_CLAIMS
-            .iter()
-            .find(|(id, _)| *id == c.id)
-            .map(|(_, why)| why.to_string());
-        if found.is_none() {
-            unchecked_claims.push((
-                c.id.clone(),
-                why.clone().unwrap_or_else(|| "no check yet".into()),
-            ));
-        }
-        claims.push(ClaimView {
-            anchor: format!("claim-{}", c.id),
-            id: c.id.clone(),
-            section: c.section,
-            near_equation: c.near_equation,
-            claim: c.claim.clone(),
-            printed: match c.claimed_value {
-                Some(v) if c.unit == "1" => fmt_num(v),
-                Some(v) => format!("{} {}", fmt_num(v), c.unit),
-                None => "(qualitative)".into(),
-            },
-            how: crate::number::prose(&c.how),
-            rule: c
-                .rule
-                .as_ref()
-                .map(|r| r.describe(c.claimed_value, &c.unit)),
-            also: c
-                .also_at
-                .iter()
-                .map(|l| format!("sec. {} (eq {}): {}", l.section, l.near_equation, l.claim))
-                .collect(),
-            finding: found.map(finding_of),
-            uncheckable: why,
-        });
-    }
-
-    (claims, unchecked_claims)
 }
 
 /// The figures as the HTML and LaTeX reports show them: inline SVG (the premises graph with

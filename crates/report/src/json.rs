@@ -143,6 +143,11 @@ pub struct Counts {
     pub premise_fails: usize,
     /// Fail.
     pub fails: usize,
+    /// Claims that fail as the numbered equation they restate fails: one fact, counted at the
+    /// equation (their outcome's `restates` names it).
+    pub restated: usize,
+    /// Numbers wrong in the unit printed beside them and right in the unit the text means.
+    pub unit_misprints: usize,
     /// Could not run.
     pub not_run: usize,
 }
@@ -156,6 +161,8 @@ impl From<Tally> for Counts {
             estimates: t.estimates,
             premise_fails: t.premise_fails,
             fails: t.fails,
+            restated: t.restated,
+            unit_misprints: t.unit_misprints,
             not_run: t.not_run,
         }
     }
@@ -305,6 +312,11 @@ pub enum VerdictKind {
     PremiseFails,
     /// Outside tolerance.
     Fails,
+    /// A claim that fails as the numbered equation it restates fails (`restates` names it):
+    /// counted once, at the equation.
+    Restates,
+    /// Wrong in the unit printed, right in the unit the text means (`at` gives both).
+    UnitMisprint,
 }
 
 /// An order-of-magnitude estimate's constant, against the reference's.
@@ -358,6 +370,9 @@ pub enum Outcome {
         /// The claims or equations (`eq N`) it rests on that fail.
         #[serde(default, skip_serializing_if = "Vec::is_empty")]
         premises_failing: Vec<String>,
+        /// For a claim that restates a failing equation: that equation's printed number.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        restates: Option<u32>,
         /// For an order-of-magnitude estimate: its constant against the reference's.
         #[serde(default, skip_serializing_if = "Option::is_none")]
         estimate: Option<EstimateOutcome>,
@@ -391,6 +406,8 @@ impl Outcome {
             Verdict::Estimate { .. } => (VerdictKind::Estimate, None, None),
             Verdict::PremiseFails => (VerdictKind::PremiseFails, None, None),
             Verdict::Fails => (VerdictKind::Fails, None, None),
+            Verdict::Restates { .. } => (VerdictKind::Restates, None, None),
+            Verdict::UnitMisprint => (VerdictKind::UnitMisprint, None, None),
         };
         Outcome::Checked {
             verdict,
@@ -408,6 +425,10 @@ impl Outcome {
             shown_by: f.shown_by.clone(),
             headline: f.headline.clone().map(Box::new),
             premises_failing: f.premises_failing.clone(),
+            restates: match f.verdict {
+                Verdict::Restates { equation } => Some(equation),
+                _ => None,
+            },
             estimate: match f.verdict {
                 Verdict::Estimate {
                     constant_ratio,

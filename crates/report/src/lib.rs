@@ -8,6 +8,7 @@ pub mod document;
 pub mod error;
 pub mod experiment_section;
 pub mod figures;
+mod finding_view;
 pub mod fonts;
 pub mod json;
 pub mod mathml;
@@ -150,6 +151,9 @@ pub struct FailureView {
     pub reference: String,
     /// The error, formatted.
     pub error: String,
+    /// |true - paper| / |paper| of the values in `row`, or a dash where the paper's value is 0
+    /// or they are orders.
+    pub relative_error: String,
     /// Where the worst case was, with the unrounded computed value for printed numbers.
     pub at: String,
     /// The comparison in the paper's terms, when the check gives one: "quantity: paper X
@@ -226,6 +230,16 @@ pub struct FindingView {
     pub at: String,
     /// A figure that shows it.
     pub figure: Option<String>,
+    /// The printed value against the true one of the same quantity, in the paper's terms
+    /// ("quantity: paper X (printed), true Y unit"), where the check gives one: the summary's
+    /// comparison, which the card leads with.
+    pub headline: Option<String>,
+    /// Where the headline comparison is made.
+    pub headline_at: Option<String>,
+    /// What `error` measures, named: "relative error", "|fitted - claimed order|", ...
+    pub error_measure: String,
+    /// The equation whose failing finding this claim restates (anchor `eq-N`), if any.
+    pub restates: Option<u32>,
 }
 
 /// One prose claim and its finding.
@@ -251,6 +265,12 @@ pub struct ClaimView {
     pub also: Vec<String>,
     /// The finding (absent when it cannot be checked).
     pub finding: Option<FindingView>,
+    /// The computed value of the quantity printed, with its unit (the headline's true value
+    /// where the check gives one; an approximation's fitted order otherwise).
+    pub computed: String,
+    /// |computed - printed| / |printed|, or a dash where the printed value is 0, qualitative,
+    /// or not the quantity computed (an approximation's order).
+    pub relative_error: String,
     /// Why it cannot be checked, when it cannot.
     pub uncheckable: Option<String>,
 }

@@ -69,6 +69,9 @@ pub fn eq83_from_eq82(b: &Bench) -> Finding {
                 },
             )
             .scalar("eta", eta)
+            // The squeeze film's number, for forms that carry it (the corrected ones): eq 83
+            // follows from eq 82 for any value, so a fixed one serves.
+            .scalar("film_number", 0.1068)
             .scalar("t_0", 7.27)
             .scalar("t", 7.27 - tau);
             // Eq 82 as printed gives alpha; the small-angle precession gives Omega.
@@ -114,6 +117,7 @@ pub fn eq73_from_eq72(b: &Bench) -> Finding {
                 .scalar("m", constant(d.m))
                 .scalar("a", constant(d.a))
                 .scalar("g", constant(d.g))
+                .scalar("k", constant(k))
                 .scalar("alpha", Dual64::new(alpha, alpha_dot))
                 .scalar("alpha_dot", Dual64::new(alpha_dot, alpha_ddot));
             let derived = eq72.chains[0]
@@ -126,6 +130,7 @@ pub fn eq73_from_eq72(b: &Bench) -> Finding {
                 .scalar("m", d.m)
                 .scalar("a", d.a)
                 .scalar("g", d.g)
+                .scalar("k", k)
                 .scalar("alpha_dot", alpha_dot)
                 .scalar("alpha_ddot", alpha_ddot)
                 .scalar("P", derived)
@@ -149,7 +154,9 @@ pub fn eq73_from_eq72(b: &Bench) -> Finding {
 
 /// Eq 76's first relation from eq 73's last form and eq 75, both AS PRINTED: the power of eq 75,
 /// $P = -\epsilon m a g\Omega^\beta$, put into $P \approx \frac52 m a g\dot\alpha$ and solved for
-/// $\dot\alpha$ (a root of the printed relation between eq 73's first and last sides), against the
+/// $\dot\alpha$ (a root of the printed relation between eq 73's first and last sides, with
+/// $\ddot\alpha = 0$: eq 76 is a first-order law for the tilt, the adiabatic regime, so a form
+/// of eq 73 that keeps $\ddot\alpha$ is read there), against the
 /// $\dot\alpha$ eq 76 prints, at tilts and rates over the sweep of the section (k = 1/4, 1/2;
 /// beta = 1, 2, 4; $\Omega$ from 10 to 1000 rad/s). Its second relation (the small-angle form of
 /// eq 31) is derived from the first with eq 31 as printed ([`eq76_second_from_eq31`]).
@@ -183,7 +190,9 @@ pub fn eq76_from_eqs73_75(b: &Bench) -> Finding {
                     epsilon: 1e-3 * omega.powf(1.0 - beta),
                     beta,
                 };
-                let bind = law_bindings(&d, &law).scalar("Omega", omega);
+                let bind = law_bindings(&d, &law)
+                    .scalar("Omega", omega)
+                    .scalar("alpha_ddot", 0.0);
                 let power = last_side(eq75, &bind);
                 let scale = (power / (d.m * d.a * d.g)).abs();
                 let derived = solve_printed(

@@ -193,11 +193,6 @@ pub const UNCHECKABLE_CLAIMS: &[(&str, &str)] = &[
         "contact-speed-exceeds-sound",
         "names no number; its content (Omega unbounded) is checked by finite-time-singularity",
     ),
-    (
-        "summary-nutation-10-15-deg",
-        "a range at whole-degree precision that no 1e-3 change of the claim can move across: \
-         the coincidence tilt is 9.65 deg (linearization) or 11.46 deg (eq 58)",
-    ),
 ];
 
 /// Every registered equation check, by number.

@@ -2,6 +2,7 @@
 //! a relative distance, a factor, a range, a bound), with the comparison stated in the claim's unit.
 
 use super::{Bench, Finding, Headline, Method, Tolerance, Worst};
+use crate::finding::Verdict;
 
 /// The unit a claim's comparison is shown in: claims.yaml keeps the paper's "Hz" where it
 /// writes Hz, but those numbers are rad/s (claim `omega-units-hz-vs-rad-per-s`), and the
@@ -182,7 +183,8 @@ pub(super) fn stated_finding(
             points: 1,
             unit: unit.clone(),
         };
-        return Finding::from_worst(method, compared, w, tolerance(0.0));
+        // The relative band around the ends, where the rule gives one ("about 10 to 15").
+        return Finding::from_worst(method, compared, w, tolerance(rule.within.unwrap_or(0.0)));
     }
     let Some(printed) = c.claimed_value else {
         unreachable!("check::missing_input runs the check only when `{id}` has its number")
@@ -264,6 +266,25 @@ pub(super) fn single(
     let mut w = Worst::default();
     w.add(claimed, reference, reference.abs(), || at);
     Finding::from_worst(method, compared, w, tol)
+}
+
+/// One class for unit misprints: `printed` reads the number in the unit printed beside it,
+/// `meant` in the unit the text means. Wrong as printed and right as meant is a
+/// [`Verdict::UnitMisprint`]; wrong both ways stays a failure; right as printed is no misprint.
+/// Either way the finding's `at` gives the second reading, so neither is silent.
+pub(super) fn unit_misprint(printed: Finding, meant: Finding) -> Finding {
+    if printed.verdict.passes() {
+        return printed;
+    }
+    let mut f = printed;
+    f.at = format!(
+        "{}; in the unit meant: {} {} against {} ({}, error {:.3e})",
+        f.at, meant.compared, meant.claimed, meant.reference, meant.verdict, meant.error
+    );
+    if meant.verdict.passes() {
+        f.verdict = Verdict::UnitMisprint;
+    }
+    f
 }
 
 /// The failing one of two findings, or the first when both pass (its `at` names the second).

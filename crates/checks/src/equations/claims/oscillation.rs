@@ -258,8 +258,9 @@ pub(super) fn coincidence_tilts(b: &Bench) -> (f64, f64) {
 }
 
 /// `coincidence-eq54`: the same coincidence from the full theory with $b = \alpha_0 a$: 0.168 rad
-/// from the linearized eqs 23-25 (eq 54 agrees), which rounds to the printed 0.2 at its one
-/// significant digit (eq 58's linearization in $\alpha_0$ moves it to 0.2).
+/// from the linearized eqs 23-25 (eq 54 agrees), 16 % below the "about 0.2 rad" that eq 58's
+/// linearization in $\alpha_0$ gives. The paper did not compute this tilt, so "about" is read
+/// as every such number is: within 5 % (claims.yaml). FAILS.
 pub(super) fn coincidence_eq54(b: &Bench) -> Finding {
     let (lin, eq54) = coincidence_tilts(b);
     stated(
@@ -341,4 +342,26 @@ pub(super) fn rattling_needs_more_friction(b: &Bench) -> Finding {
         f.verdict = crate::finding::Verdict::Fails;
     }
     f
+}
+
+/// `summary-nutation-10-15-deg`: the summary's "about 10 to 15 degrees" for the beating
+/// nutation, against the tilt where $\varpi = \Omega_0$ with $b = \alpha_0 a$, $k = 1/4$: 9.65 deg
+/// from the linearized eqs 23-25 (eq 58's approximation gives 0.2 rad, 11.46 deg). "About" is
+/// read as for every number the paper did not compute: each end of the range within 5 %
+/// (claims.yaml), so 9.65 deg, 3.5 % below 10, holds.
+pub(super) fn summary_nutation_10_15_deg(b: &Bench) -> Finding {
+    let (lin, eq54) = coincidence_tilts(b);
+    stated(
+        b,
+        "summary-nutation-10-15-deg",
+        Method::Linearization,
+        "tilt where varpi = Omega0 with b = alpha0 a, k = 1/4 (deg)",
+        lin.to_degrees(),
+        format!(
+            "linearization {:.2} deg, eq 54 {:.2} deg; eq 58 gives 0.2 rad = {:.2} deg",
+            lin.to_degrees(),
+            eq54.to_degrees(),
+            0.2f64.to_degrees()
+        ),
+    )
 }

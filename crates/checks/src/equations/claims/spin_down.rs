@@ -1,7 +1,9 @@
 //! Claims of secs. 11-12: the dissipative spin-down, the finite-time singularity of eq 79, the
 //! numbers of the experiment, and the summary's contact loss.
 
-use super::judge::{printed, printed_precision, printed_tolerance, round_sig, single, stated};
+use super::judge::{
+    printed, printed_precision, printed_tolerance, round_sig, single, stated, unit_misprint,
+};
 use super::{
     bisect, c_fit, contact_loss_remaining, log_log_slope, mid, one_period_omega, rolling, solve,
     steady_motion, unit_disk, Adiabatic, Bench, Disk, Dual64, DualNum, Event, Extras, Finding,
@@ -38,7 +40,7 @@ pub(super) fn eq73_second_approximation_sign(b: &Bench) -> Finding {
     let c = disk.a * add / disk.g + 1.5;
     single(
         Method::Derivation,
-        "coefficient of m a g alpha_dot in eq 73 at F_z = 0",
+        "coefficient of m a g alpha_dot in eq 73's first form (eq 72's energy) at F_z = 0",
         b.claim(printed(b, "eq73-second-approximation-sign")),
         c,
         Tolerance::bisection(WIDTH),
@@ -178,8 +180,39 @@ pub(super) fn finite_time_singularity(b: &Bench) -> Finding {
 /// `air-viscosity`: 1.8e-4 g/(cm s) against Sutherland's law for air, $\mu = \mu_0 (T/T_0)^{3/2}
 /// (T_0 + S)/(T + S)$ with $\mu_0 = 1.716\times10^{-5}$ Pa s, $T_0 = 273.15$ K, $S = 110.4$ K
 /// (White, Viscous Fluid Flow), between 15 and 25 C, converted by 1 Pa s = 10 g/(cm s): it
-/// rounds to the printed 1.8e-4 at two digits. (The printed unit "g-cm^-1-s" lacks the -1 on s.)
+/// rounds to the printed 1.8e-4 at two digits in g/(cm s), the unit meant. The unit printed,
+/// "g-cm^-1-s", is g s/cm: its power of the second is +1 where a viscosity's is -1. A unit
+/// misprint, reported as one.
 pub(super) fn air_viscosity(b: &Bench) -> Finding {
+    // The power of the second in the printed unit (the claimed side, so the mutation test moves
+    // it) against a dynamic viscosity's, M L^-1 T^-1.
+    let as_printed = single(
+        Method::Derivation,
+        "power of the second in the printed unit g-cm^-1-s (g s/cm) against a viscosity's \
+         (g/(cm s))",
+        b.claim(1.0),
+        -1.0,
+        Tolerance::roundoff(),
+        "the printed g-cm^-1-s has s to the power +1; a viscosity, force per area over shear \
+         rate, has s^-1"
+            .into(),
+    )
+    .in_unit("1");
+    let as_meant = air_viscosity_as_meant(b);
+    let headline = Headline::new(
+        "viscosity of air in g/(cm s), the unit meant (the unit printed, g-cm^-1-s, is g s/cm: \
+         s to the power +1 where a viscosity has -1)",
+        as_meant.claimed,
+        "printed",
+        as_meant.reference,
+        "g/(cm s)",
+        as_meant.at.clone(),
+    );
+    unit_misprint(as_printed, as_meant).with_headline(headline)
+}
+
+/// The air's viscosity in g/(cm s) (Sutherland's law) against the printed 1.8e-4.
+fn air_viscosity_as_meant(b: &Bench) -> Finding {
     let mut w = Worst::default();
     for &tc in &[15.0, 20.0, 25.0] {
         let t: f64 = 273.15 + tc;
@@ -213,7 +246,16 @@ pub(super) fn omega_units_hz_vs_rad_per_s(b: &Bench) -> Finding {
         "as rad/s: 2 pi / {omega} = {:.5} s, matching the paper",
         2.0 * PI / omega
     );
-    printed_precision(
+    let as_meant = printed_precision(
+        b,
+        Method::Derivation,
+        &format!("period 2 pi / Omega with Omega = {omega} rad/s, against the printed {period} s"),
+        2.0 * PI / omega,
+        period,
+        2,
+        String::new(),
+    );
+    let as_printed = printed_precision(
         b,
         Method::Derivation,
         &format!("period implied by '{omega} Hz' against the printed {period} s"),
@@ -221,16 +263,17 @@ pub(super) fn omega_units_hz_vs_rad_per_s(b: &Bench) -> Finding {
         period,
         2,
         at.clone(),
-    )
-    .in_unit("s")
-    .with_headline(Headline::new(
-        format!("period 1/Omega if the printed {omega} were in Hz"),
-        period,
-        "printed",
-        period_if_hz,
-        "s",
-        at,
-    ))
+    );
+    unit_misprint(as_printed, as_meant)
+        .in_unit("s")
+        .with_headline(Headline::new(
+            format!("period 1/Omega if the printed {omega} were in Hz"),
+            period,
+            "printed",
+            period_if_hz,
+            "s",
+            at,
+        ))
 }
 
 /// `one-period-remaining-omega`: $\Omega$ with $t_0 - t = 2\pi/\Omega$ on eq 79 ($\beta = 2$,

@@ -41,7 +41,8 @@ const EXPECTED: &[(&str, bool)] = &[
     ("ratio-hoop-one", true),
     ("b-of-order-a-alpha", false),
     ("coincidence-eq58", true),
-    ("coincidence-eq54", true),
+    ("coincidence-eq54", false),
+    ("summary-nutation-10-15-deg", true),
     ("frictionless-threshold-uniform", true),
     ("rolling-threshold-uniform", true),
     ("thresholds-ratio", true),
@@ -51,7 +52,7 @@ const EXPECTED: &[(&str, bool)] = &[
     ("drag-exponent-quadratic-air", true),
     ("drag-exponent-moffatt", true),
     ("finite-time-singularity", true),
-    ("air-viscosity", true),
+    ("air-viscosity", false),
     ("omega-units-hz-vs-rad-per-s", false),
     ("one-period-remaining-omega", true),
     ("one-period-remaining-time", true),
@@ -114,13 +115,18 @@ fn rule_of(id: &str) -> Option<&'static paper::Rule> {
 fn a_rule_or_number_edited_in_claims_yaml_changes_the_verdict() {
     let text = paper::Texts::BUILT_IN.claims;
     let rule = "rule: { words: about, within: 0.05 }";
-    assert_eq!(text.matches(rule).count(), 1, "one claim has this rule");
     let verdict = |claims: &str| {
         let paper = paper_with_claims(claims).expect("the edited claims parse");
         positive_b_unstable_large_tilt(&Bench::with_paper(&paper)).verdict
     };
     assert_eq!(verdict(text), Verdict::Fails);
-    let looser = text.replace(rule, "rule: { words: about, within: 0.25 }");
+    let at = text.find("id: positive-b-unstable-large-tilt").unwrap();
+    let at = at + text[at..].find(rule).expect("its rule");
+    let looser = format!(
+        "{}rule: {{ words: about, within: 0.25 }}{}",
+        &text[..at],
+        &text[at + rule.len()..]
+    );
     assert!(verdict(&looser).passes(), "71.4 is within 25 % of 60");
     let block = &looser[looser.find("id: positive-b-unstable-large-tilt").unwrap()..];
     let moved = looser.replacen(
@@ -215,7 +221,7 @@ fn every_stated_reading_is_the_one_applied() {
         );
         tried += 1;
     }
-    assert_eq!(tried, 13);
+    assert_eq!(tried, 14);
 }
 
 /// A printed number edited in claims.yaml reaches a check that makes its own comparison too:
@@ -249,4 +255,37 @@ fn a_printed_number_edited_in_claims_yaml_reaches_the_check() {
     let gone = block.replace("claimed_value: 0.25", "claimed_value: null");
     let e = run(&gone).unwrap_err();
     assert!(e.contains("give `claimed_value`"), "{e}");
+}
+
+/// "About" and "roughly" have one reading for a number the paper did not compute: a relative
+/// band of 5 %; only the numbers the paper computed are read to their printed digits.
+#[test]
+fn about_has_one_reading() {
+    const COMPUTED: &[&str] = &[
+        "ratio-uniform-disk-077",
+        "rolling-threshold-uniform",
+        "one-period-remaining-omega",
+        "one-period-remaining-time",
+        "contact-loss-time",
+        "contact-loss-omega",
+    ];
+    let paper = paper::Paper::built_in_shared();
+    let mut read = 0;
+    for c in &paper.claims {
+        let Some(r) = c.rule.as_ref() else { continue };
+        if !["about", "roughly"].contains(&r.words.as_str()) {
+            continue;
+        }
+        read += 1;
+        if COMPUTED.contains(&c.id.as_str()) {
+            assert!(
+                r.digits.is_some(),
+                "{}: a computed number, to its digits",
+                c.id
+            );
+        } else {
+            assert_eq!(r.within, Some(0.05), "{}: 'about' is within 5 %", c.id);
+        }
+    }
+    assert_eq!(read, COMPUTED.len() + 5, "every 'about' and 'roughly' read");
 }

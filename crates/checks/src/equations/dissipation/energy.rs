@@ -141,13 +141,25 @@ pub fn eq73(b: &Bench) -> Finding {
             if k == 0.25 && i == SMALL_ALPHAS.len() - 1 {
                 let coefficient = d.m * d.a * d.g * alpha_dot;
                 let printed = last_side(eq, &bind);
+                // The form before the last: eq 73's own first approximation, from eq 72's U.
+                let sides = &eq.chains[0].sides;
+                let first = sides
+                    .len()
+                    .checked_sub(2)
+                    .and_then(|i| eq.scalar(&sides[i], &bind).ok())
+                    .unwrap_or(f64::NAN);
                 headline = Some(Headline::new(
-                    "P / (m a g alpha_dot) where F_z = 0 (eq 73's last form; the exact rate gives 1/2 - k)",
+                    "P / (m a g alpha_dot) where F_z = 0 (eq 73's last form), against the exact \
+                     rate of the full energy, 1/2 - k as alpha -> 0",
                     printed / coefficient,
                     "printed",
                     reference / coefficient,
                     "1",
-                    format!("uniform disk (k = 1/4), alpha = {alpha}, b = 0"),
+                    format!(
+                        "uniform disk (k = 1/4), alpha = {alpha}, b = 0; eq 73's own first form \
+                         (eq 72's energy) gives {:.4} there",
+                        first / coefficient
+                    ),
                 ));
             }
         }

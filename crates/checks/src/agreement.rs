@@ -1,0 +1,110 @@
+//! Verdicts that agree with each other: a finding that rests on a failing premise says so
+//! ([`attach_premises`]), and a claim that restates a failing equation is counted once, at the
+//! equation ([`attach_restated`]).
+
+use crate::check::{Checked, Subject};
+use crate::equations::Bench;
+
+/// What `subject` rests on besides its numbered premises: the `rests_on` of its entry.
+fn rests_on<'a>(bench: &'a Bench, subject: &Subject) -> &'a [String] {
+    match subject {
+        Subject::Equation { number, .. } => &bench.paper.equation(*number).entry.rests_on,
+        Subject::Claim { id } => bench
+            .paper
+            .claims
+            .iter()
+            .find(|c| c.id == *id)
+            .map_or(&[], |c| c.rests_on.as_slice()),
+    }
+}
+
+/// The name a `rests_on` list uses for `subject`: its claim id, or `eq N`.
+fn premise_name(subject: &Subject) -> String {
+    match subject {
+        Subject::Equation { number, .. } => format!("eq {number}"),
+        Subject::Claim { id } => id.to_string(),
+    }
+}
+
+/// A finding that would pass but rests on a claim or equation that fails (or itself rests on
+/// one) becomes [`Verdict::PremiseFails`], naming them; a failing finding keeps its verdict and
+/// names them too. Premises that were not run leave it as it is. Repeated to a fixed point, so
+/// a premise's premise counts.
+pub(crate) fn attach_premises(bench: &Bench, checked: &mut [Checked]) {
+    use crate::finding::Verdict;
+    for _ in 0..checked.len() {
+        let failing_names: Vec<String> = checked
+            .iter()
+            .filter(|c| {
+                c.finding.as_ref().is_ok_and(|f| {
+                    matches!(
+                        f.verdict,
+                        Verdict::Fails
+                            | Verdict::PremiseFails
+                            | Verdict::Restates { .. }
+                            | Verdict::UnitMisprint
+                    )
+                })
+            })
+            .map(|c| premise_name(&c.subject))
+            .collect();
+        let mut changed = false;
+        for c in checked.iter_mut() {
+            let failing: Vec<String> = rests_on(bench, &c.subject)
+                .iter()
+                .filter(|p| failing_names.contains(p))
+                .cloned()
+                .collect();
+            let Ok(f) = c.finding.as_mut() else { continue };
+            if failing.is_empty() || f.premises_failing == failing {
+                continue;
+            }
+            if f.verdict.passes() {
+                f.verdict = Verdict::PremiseFails;
+            }
+            f.premises_failing = failing;
+            changed = true;
+        }
+        if !changed {
+            break;
+        }
+    }
+}
+
+/// A failing claim that restates a numbered equation (`restates:` in claims.yaml) whose
+/// finding fails too becomes [`Verdict::Restates`]: the fact is counted once, at the equation.
+/// A claim that disagrees with its equation (one fails, the other passes) keeps its verdict, so
+/// the disagreement shows.
+pub(crate) fn attach_restated(bench: &Bench, checked: &mut [Checked]) {
+    use crate::finding::Verdict;
+    let fails = |n: u32, checked: &[Checked]| {
+        checked.iter().any(|c| {
+            matches!(c.subject, Subject::Equation { number, .. } if number == n)
+                && c.finding
+                    .as_ref()
+                    .is_ok_and(|f| f.verdict == Verdict::Fails)
+        })
+    };
+    let restating: Vec<(usize, u32)> = checked
+        .iter()
+        .enumerate()
+        .filter_map(|(i, c)| match &c.subject {
+            Subject::Claim { id } => bench
+                .paper
+                .claims
+                .iter()
+                .find(|e| e.id == *id)
+                .and_then(|e| e.restates)
+                .map(|n| (i, n)),
+            Subject::Equation { .. } => None,
+        })
+        .filter(|&(_, n)| fails(n, checked))
+        .collect();
+    for (i, equation) in restating {
+        if let Ok(f) = checked[i].finding.as_mut() {
+            if f.verdict == Verdict::Fails {
+                f.verdict = Verdict::Restates { equation };
+            }
+        }
+    }
+}
