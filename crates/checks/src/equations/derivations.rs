@@ -8,7 +8,9 @@
 //! Only the equations that fail and have a failing premise need this (an equation that fails
 //! while all its premises hold cannot follow from them): the chain of section 11.
 
-use super::spin_down_reference::{derivation_from_eq76, law_bindings, printed_c, SMALL_ALPHAS};
+use super::spin_down_reference::{
+    derivation_from_eq76, law_bindings, printed_c, toy_laws, SMALL_ALPHAS,
+};
 use super::{last_side, printed_relations, solve_printed, worst_order, Bench, Derivation};
 use crate::finding::{Finding, Method, Tolerance, Worst};
 use num_dual::Dual64;
@@ -235,28 +237,21 @@ fn eq76_second_from_eq31(b: &Bench) -> Finding {
     let eq76 = b.paper.equation(76);
     let rels = eq76.relations();
     let mut errors = vec![0.0f64; SMALL_ALPHAS.len()];
-    for &k in &[0.25, 0.5] {
-        let d = toy_sized(k);
-        for &beta in &[1.0, 2.0, 4.0] {
-            let law = PowerLaw {
-                epsilon: 1e-3,
-                beta,
-            };
-            for (i, &alpha) in SMALL_ALPHAS.iter().enumerate() {
-                let bind = law_bindings(&d, &law);
-                let omega = omega_from_eq31(b, &d, alpha, &bind);
-                let at = bind.scalar("alpha", alpha).scalar("Omega", omega);
-                let e = match (rels.first(), rels.get(1)) {
-                    (Some(r1), Some(r2)) => {
-                        match (eq76.scalar(r1.rhs, &at), eq76.scalar(r2.rhs, &at)) {
-                            (Ok(l), Ok(r)) => ((b.claim(r) - l) / l).abs(),
-                            _ => f64::INFINITY,
-                        }
+    for (d, law) in toy_laws(&[1.0, 2.0, 4.0]) {
+        for (i, &alpha) in SMALL_ALPHAS.iter().enumerate() {
+            let bind = law_bindings(&d, &law);
+            let omega = omega_from_eq31(b, &d, alpha, &bind);
+            let at = bind.scalar("alpha", alpha).scalar("Omega", omega);
+            let e = match (rels.first(), rels.get(1)) {
+                (Some(r1), Some(r2)) => {
+                    match (eq76.scalar(r1.rhs, &at), eq76.scalar(r2.rhs, &at)) {
+                        (Ok(l), Ok(r)) => ((b.claim(r) - l) / l).abs(),
+                        _ => f64::INFINITY,
                     }
-                    _ => f64::INFINITY,
-                };
-                errors[i] = errors[i].max(if e.is_nan() { f64::INFINITY } else { e });
-            }
+                }
+                _ => f64::INFINITY,
+            };
+            errors[i] = errors[i].max(if e.is_nan() { f64::INFINITY } else { e });
         }
     }
     Finding::from_order(
@@ -329,49 +324,42 @@ pub fn eq78_from_eq77(b: &Bench) -> Finding {
 pub fn eq79_from_eqs78_31(b: &Bench) -> Finding {
     let (eq78, eq79) = (b.paper.equation(78), b.paper.equation(79));
     let mut errors = vec![0.0f64; SMALL_ALPHAS.len()];
-    for &k in &[0.25, 0.5] {
-        let d = toy_sized(k);
-        for &beta in &[1.0, 2.0, 2.5, 4.0] {
-            let law = PowerLaw {
-                epsilon: 1e-3,
-                beta,
-            };
-            let c = printed_c(b, &d, &law);
-            for (i, &alpha) in SMALL_ALPHAS.iter().enumerate() {
-                let base = law_bindings(&d, &law).scalar("t", 0.0).scalar("C", c);
-                // The time before t_0 at which eq 78 gives this tilt.
-                let t0 = eq78
-                    .relations()
-                    .first()
-                    .and_then(|r| {
-                        solve_printed(
-                            eq78,
-                            r,
-                            "t_0",
-                            &base.clone().scalar("alpha", alpha),
-                            1e-12,
-                            1e12,
-                        )
-                    })
-                    .unwrap_or(f64::NAN);
-                let bind = base.scalar("t_0", t0);
-                let tilt = last_side(eq78, &bind);
-                let omega = omega_from_eq31(b, &d, tilt, &bind);
-                let first = eq79
-                    .relations()
-                    .first()
-                    .and_then(|r| eq79.scalar(r.rhs, &bind).ok())
-                    .unwrap_or(f64::NAN);
-                let last = last_side(eq79, &bind);
-                let e = [first, last]
-                    .iter()
-                    .map(|v| ((b.claim(*v) - omega) / omega).abs())
-                    .fold(
-                        0.0,
-                        |m: f64, e| if e.is_nan() { f64::INFINITY } else { m.max(e) },
-                    );
-                errors[i] = errors[i].max(e);
-            }
+    for (d, law) in toy_laws(&[1.0, 2.0, 2.5, 4.0]) {
+        let c = printed_c(b, &d, &law);
+        for (i, &alpha) in SMALL_ALPHAS.iter().enumerate() {
+            let base = law_bindings(&d, &law).scalar("t", 0.0).scalar("C", c);
+            // The time before t_0 at which eq 78 gives this tilt.
+            let t0 = eq78
+                .relations()
+                .first()
+                .and_then(|r| {
+                    solve_printed(
+                        eq78,
+                        r,
+                        "t_0",
+                        &base.clone().scalar("alpha", alpha),
+                        1e-12,
+                        1e12,
+                    )
+                })
+                .unwrap_or(f64::NAN);
+            let bind = base.scalar("t_0", t0);
+            let tilt = last_side(eq78, &bind);
+            let omega = omega_from_eq31(b, &d, tilt, &bind);
+            let first = eq79
+                .relations()
+                .first()
+                .and_then(|r| eq79.scalar(r.rhs, &bind).ok())
+                .unwrap_or(f64::NAN);
+            let last = last_side(eq79, &bind);
+            let e = [first, last]
+                .iter()
+                .map(|v| ((b.claim(*v) - omega) / omega).abs())
+                .fold(
+                    0.0,
+                    |m: f64, e| if e.is_nan() { f64::INFINITY } else { m.max(e) },
+                );
+            errors[i] = errors[i].max(e);
         }
     }
     Finding::from_order(
@@ -425,20 +413,13 @@ fn omega_from_eq31(b: &Bench, d: &physics::disk::Disk, alpha: f64, bind: &Bindin
 /// is seen).
 fn chain_points() -> Vec<(physics::disk::Disk, PowerLaw, f64, Bindings<f64>)> {
     let mut out = Vec::new();
-    for &k in &[0.25, 0.5] {
-        let d = toy_sized(k);
-        for &beta in &[1.0, 2.0, 2.5, 4.0] {
-            let law = PowerLaw {
-                epsilon: 1e-3,
-                beta,
-            };
-            for i in 0..9 {
-                let tau = 10f64.powi(i - 6);
-                let bind = law_bindings(&d, &law)
-                    .scalar("t", 0.3)
-                    .scalar("t_0", 0.3 + tau);
-                out.push((d, law, tau, bind));
-            }
+    for (d, law) in toy_laws(&[1.0, 2.0, 2.5, 4.0]) {
+        for i in 0..9 {
+            let tau = 10f64.powi(i - 6);
+            let bind = law_bindings(&d, &law)
+                .scalar("t", 0.3)
+                .scalar("t_0", 0.3 + tau);
+            out.push((d, law, tau, bind));
         }
     }
     out

@@ -94,6 +94,25 @@ fn run_descent(b: &Bench, d: &Disk, beta: f64, alpha0: f64) -> Option<Descent> {
     })
 }
 
+/// The laws of eq 75 at $\epsilon = 10^{-3}$ with each of `betas`, on the toy-sized uniform disk
+/// ($k = 1/4$) and on one with $k = 1/2$: the points of the single-step derivations.
+pub(crate) fn toy_laws(betas: &[f64]) -> Vec<(Disk, PowerLaw)> {
+    [toy_sized(0.25), toy_sized(0.5)]
+        .into_iter()
+        .flat_map(|d| {
+            betas.iter().map(move |&beta| {
+                (
+                    d,
+                    PowerLaw {
+                        epsilon: 1e-3,
+                        beta,
+                    },
+                )
+            })
+        })
+        .collect()
+}
+
 /// The dissipation exponents and disks of the spin-down checks.
 pub(crate) const BETAS: [f64; 3] = [1.0, 2.0, 4.0];
 

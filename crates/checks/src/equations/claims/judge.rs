@@ -119,43 +119,42 @@ pub(super) fn stated(
     computed: f64,
     at: String,
 ) -> Finding {
-    let f = stated_finding(b, id, method, compared, computed, at.clone());
-    match b.paper.claims.iter().find(|c| c.id == id) {
-        // The comparison in the claim's own unit: the number printed (the lower end of a printed
-        // range) against the computed value, unrounded.
-        Some(c) if f.headline.is_none() => {
-            let paper = c
-                .rule
-                .as_ref()
-                .and_then(|r| r.range.map(|[lo, _]| lo))
-                .or(c.claimed_value)
-                .unwrap_or(f.claimed);
-            let h = Headline::new(
-                compared,
-                paper,
-                &paper_is(c),
-                computed,
-                &unit_of(&c.unit),
-                at,
-            );
-            f.with_headline(h)
-        }
-        _ => f,
+    let Some(c) = b.paper.claims.iter().find(|c| c.id == id) else {
+        unreachable!("check::missing_input runs the check only when claims.yaml has `{id}`")
+    };
+    let f = judged(b, c, method, compared, computed, at.clone());
+    if f.headline.is_some() {
+        return f;
     }
+    // The comparison in the claim's own unit: the number printed (the lower end of a printed
+    // range) against the computed value, unrounded.
+    let paper = c
+        .rule
+        .as_ref()
+        .and_then(|r| r.range.map(|[lo, _]| lo))
+        .or(c.claimed_value)
+        .unwrap_or(f.claimed);
+    let h = Headline::new(
+        compared,
+        paper,
+        &paper_is(c),
+        computed,
+        &unit_of(&c.unit),
+        at,
+    );
+    f.with_headline(h)
 }
 
-/// [`stated`] without its headline.
-pub(super) fn stated_finding(
+/// [`stated`] for the claim `c`, without its headline.
+fn judged(
     b: &Bench,
-    id: &str,
+    c: &paper::ClaimEntry,
     method: Method,
     compared: &str,
     computed: f64,
     at: String,
 ) -> Finding {
-    let Some(c) = b.paper.claims.iter().find(|c| c.id == id) else {
-        unreachable!("check::missing_input runs the check only when claims.yaml has `{id}`")
-    };
+    let id = &c.id;
     let Some(rule) = &c.rule else {
         unreachable!("check::missing_input runs the check only when `{id}` has its rule")
     };
