@@ -57,20 +57,22 @@ fn check(only: Option<&str>, json: bool, input: &PaperInput) -> anyhow::Result<(
     let elapsed = started.elapsed().as_secs_f64();
     if json {
         use ::report::json;
+        let settings = json::Settings {
+            method: "DOP853".into(),
+            rtol: bench.rtol,
+            command: std::iter::once("rolling-disk".to_string())
+                .chain(std::env::args().skip(1))
+                .collect::<Vec<_>>()
+                .join(" "),
+        };
         let document = json::CheckDocument {
-            schema: json::CHECK_SCHEMA_ID.into(),
-            schema_version: json::SCHEMA_VERSION,
-            tool: json::Tool::this(),
-            paper: json::PaperSource::of(PAPER, bench.paper),
-            settings: json::Settings {
-                method: "DOP853".into(),
-                rtol: bench.rtol,
-                command: std::iter::once("rolling-disk".to_string())
-                    .chain(std::env::args().skip(1))
-                    .collect::<Vec<_>>()
-                    .join(" "),
-            },
-            summary: json::SummaryCounts::of(&checked),
+            header: json::Header::new(
+                json::CHECK_SCHEMA_ID,
+                PAPER,
+                bench.paper,
+                settings,
+                &checked,
+            ),
             checks: checked.iter().map(json::CheckRecord::of).collect(),
         };
         println!(

@@ -461,24 +461,27 @@ pub fn equation_causes(checked: &[Checked]) -> std::collections::BTreeMap<u32, C
         .collect()
 }
 
-/// Counts of verdicts, for the summary line.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize)]
+/// Counts of verdicts.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, schemars::JsonSchema)]
+#[schemars(rename = "Counts")]
 pub struct Tally {
     /// Hold.
     pub holds: usize,
-    /// Hold approximately.
-    pub approximately: usize,
-    /// Definitions.
+    /// Hold approximately, at the order they claim.
+    pub holds_approximately: usize,
+    /// Definitions consistent with the rest.
     pub definitions: usize,
-    /// Order-of-magnitude estimates whose scaling holds.
+    /// Order-of-magnitude estimates whose scaling holds and whose constant is within the
+    /// estimate's reading.
     pub estimates: usize,
     /// Would hold, but only under a premise that fails.
     pub premise_fails: usize,
     /// Fail.
     pub fails: usize,
-    /// Claims that fail as the equation they restate fails (counted there).
+    /// Claims that fail as the numbered equation they restate fails: one fact, counted at the
+    /// equation (their outcome's `restates` names it).
     pub restated: usize,
-    /// Numbers wrong in the unit printed and right in the unit meant.
+    /// Numbers wrong in the unit printed beside them and right in the unit the text means.
     pub unit_misprints: usize,
     /// Could not run.
     pub not_run: usize,
@@ -488,7 +491,7 @@ impl Tally {
     /// How many were counted.
     pub fn total(&self) -> usize {
         self.holds
-            + self.approximately
+            + self.holds_approximately
             + self.definitions
             + self.estimates
             + self.premise_fails
@@ -505,7 +508,7 @@ impl Tally {
             "{} hold, {} hold approximately, {} definitions, {} estimates (scaling confirmed), {} \
              hold only under a premise that fails, {} fail",
             self.holds,
-            self.approximately,
+            self.holds_approximately,
             self.definitions,
             self.estimates,
             self.premise_fails,
@@ -535,7 +538,7 @@ impl Tally {
                 Err(_) => t.not_run += 1,
                 Ok(f) => match f.verdict {
                     Verdict::Holds => t.holds += 1,
-                    Verdict::HoldsApproximately { .. } => t.approximately += 1,
+                    Verdict::HoldsApproximately { .. } => t.holds_approximately += 1,
                     Verdict::Definition => t.definitions += 1,
                     Verdict::Estimate { .. } => t.estimates += 1,
                     Verdict::PremiseFails => t.premise_fails += 1,

@@ -39,16 +39,17 @@ pub fn document(
     records: Records,
 ) -> Document {
     Document {
-        schema: json::SCHEMA_ID.into(),
-        schema_version: json::SCHEMA_VERSION,
-        tool: json::Tool::this(),
-        paper: json::PaperSource::of(PAPER, bench.paper),
-        settings: json::Settings {
-            method: settings.method.clone(),
-            rtol: settings.rtol,
-            command: settings.command.clone(),
-        },
-        summary: json::SummaryCounts::of(checked),
+        header: json::Header::new(
+            json::SCHEMA_ID,
+            PAPER,
+            bench.paper,
+            json::Settings {
+                method: settings.method.clone(),
+                rtol: settings.rtol,
+                command: settings.command.clone(),
+            },
+            checked,
+        ),
         equations: bench
             .paper
             .equations

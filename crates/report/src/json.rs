@@ -20,11 +20,10 @@ pub const SCHEMA_VERSION: u32 = 1;
 /// The document's identifier, also the schema's `$id`.
 pub const SCHEMA_ID: &str = "https://rolling-disk.invalid/schemas/report.schema.json";
 
-/// `report.json`.
+/// What both documents of the tool begin with.
 #[derive(Debug, Clone, PartialEq, Serialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct Document {
-    /// The schema this document follows: always [`SCHEMA_ID`].
+pub struct Header {
+    /// The `$id` of the schema this document follows.
     pub schema: String,
     /// The schema's version: [`SCHEMA_VERSION`].
     pub schema_version: u32,
@@ -34,8 +33,38 @@ pub struct Document {
     pub paper: PaperSource,
     /// How the integrations of the checks were run.
     pub settings: Settings,
-    /// Counts of verdicts.
+    /// Counts of verdicts, and the root causes.
     pub summary: SummaryCounts,
+}
+
+impl Header {
+    /// The header of a document of schema `schema` for the checks `checked` of `paper` (titled
+    /// `title`), run with `settings`.
+    pub fn new(
+        schema: &str,
+        title: &str,
+        paper: &paper::Paper,
+        settings: Settings,
+        checked: &[Checked],
+    ) -> Self {
+        Self {
+            schema: schema.into(),
+            schema_version: SCHEMA_VERSION,
+            tool: Tool::this(),
+            paper: PaperSource::of(title, paper),
+            settings,
+            summary: SummaryCounts::of(checked),
+        }
+    }
+}
+
+/// `report.json`.
+#[derive(Debug, Clone, PartialEq, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Document {
+    /// The schema, the tool, the paper, the settings and the counts.
+    #[serde(flatten)]
+    pub header: Header,
     /// The 85 numbered equations, in order.
     pub equations: Vec<EquationRecord>,
     /// The prose claims.
@@ -128,45 +157,7 @@ pub struct Settings {
 }
 
 /// Counts of verdicts.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, JsonSchema)]
-pub struct Counts {
-    /// Hold.
-    pub holds: usize,
-    /// Hold approximately, at the order they claim.
-    pub holds_approximately: usize,
-    /// Definitions consistent with the rest.
-    pub definitions: usize,
-    /// Order-of-magnitude estimates whose scaling holds and whose constant is within the
-    /// estimate's reading.
-    pub estimates: usize,
-    /// Would hold, but only under a premise that fails.
-    pub premise_fails: usize,
-    /// Fail.
-    pub fails: usize,
-    /// Claims that fail as the numbered equation they restate fails: one fact, counted at the
-    /// equation (their outcome's `restates` names it).
-    pub restated: usize,
-    /// Numbers wrong in the unit printed beside them and right in the unit the text means.
-    pub unit_misprints: usize,
-    /// Could not run.
-    pub not_run: usize,
-}
-
-impl From<Tally> for Counts {
-    fn from(t: Tally) -> Self {
-        Self {
-            holds: t.holds,
-            holds_approximately: t.approximately,
-            definitions: t.definitions,
-            estimates: t.estimates,
-            premise_fails: t.premise_fails,
-            fails: t.fails,
-            restated: t.restated,
-            unit_misprints: t.unit_misprints,
-            not_run: t.not_run,
-        }
-    }
-}
+pub type Counts = Tally;
 
 /// Counts for equations and claims, and the root causes of the failing equations.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, JsonSchema)]
@@ -195,8 +186,8 @@ impl SummaryCounts {
             .iter()
             .partition(|c| matches!(c.subject, Subject::Equation { .. }));
         Self {
-            equations: Tally::of(eqs.iter().copied()).into(),
-            claims: Tally::of(cls.iter().copied()).into(),
+            equations: Tally::of(eqs.iter().copied()),
+            claims: Tally::of(cls.iter().copied()),
             root_causes: root_causes(checked),
         }
     }
@@ -218,18 +209,9 @@ pub fn root_causes(checked: &[Checked]) -> Vec<RootCauseRecord> {
 #[derive(Debug, Clone, PartialEq, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct CheckDocument {
-    /// The schema this document follows: always [`CHECK_SCHEMA_ID`].
-    pub schema: String,
-    /// The schema's version: [`SCHEMA_VERSION`].
-    pub schema_version: u32,
-    /// The tool that wrote it.
-    pub tool: Tool,
-    /// The paper and the transcription of it the checks used.
-    pub paper: PaperSource,
-    /// How the integrations of the checks were run.
-    pub settings: Settings,
-    /// Counts of verdicts, and the root causes.
-    pub summary: SummaryCounts,
+    /// The schema, the tool, the paper, the settings and the counts.
+    #[serde(flatten)]
+    pub header: Header,
     /// Every check that ran, in registry order.
     pub checks: Vec<CheckRecord>,
 }
