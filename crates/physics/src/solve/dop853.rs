@@ -24,12 +24,26 @@
 use super::tableau::*;
 use super::{Dynamics, State, Stats};
 
-/// Safety factor of the step-size controller.
-const SAFETY: f64 = 0.9;
-/// The new step is at least this fraction of the old one ...
-const FAC_MIN: f64 = 0.333;
-/// ... and at most this multiple.
-const FAC_MAX: f64 = 6.0;
+/// A step-size controller's constants, as Hairer's codes set them by default.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct StepControl {
+    /// Safety factor on the step the error estimate allows.
+    pub(super) safety: f64,
+    /// Exponent of the previous step's error in the stabilized (PI) controller; 0 for none.
+    pub(super) beta: f64,
+    /// The new step is at least this fraction of the old one ...
+    pub(super) fac_min: f64,
+    /// ... and at most this multiple.
+    pub(super) fac_max: f64,
+}
+
+/// DOP853's controller (no stabilization).
+pub(super) const CONTROL: StepControl = StepControl {
+    safety: 0.9,
+    beta: 0.0,
+    fac_min: 0.333,
+    fac_max: 6.0,
+};
 /// Accepted steps between two stiffness tests (the test then runs on every step while it fires).
 const STIFF_EVERY: u64 = 1000;
 /// $|h \lambda|$ above which a step counts as stiff: the boundary of DOP853's stability region
@@ -236,7 +250,8 @@ impl<'a, D: Dynamics<N>, const N: usize> Dop853<'a, D, N> {
                 err.sqrt().sqrt().sqrt()
             };
             if err <= 1.0 {
-                let fac = (1.0 / FAC_MAX).max((1.0 / FAC_MIN).min(fac11 / SAFETY));
+                let fac = (1.0 / CONTROL.fac_max)
+                    .max((1.0 / CONTROL.fac_min).min(fac11 / CONTROL.safety));
                 let mut h_new = h / fac;
                 self.stats.accepted += 1;
                 self.f.rhs(&y_new, &mut self.k[12]);
@@ -262,7 +277,7 @@ impl<'a, D: Dynamics<N>, const N: usize> Dop853<'a, D, N> {
                 self.fresh = true;
                 return Outcome::Accepted;
             }
-            self.h = h / (1.0 / FAC_MIN).min(fac11 / SAFETY);
+            self.h = h / (1.0 / CONTROL.fac_min).min(fac11 / CONTROL.safety);
             self.reject = true;
             if self.stats.accepted >= 1 {
                 self.stats.rejected += 1;

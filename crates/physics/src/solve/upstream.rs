@@ -5,6 +5,7 @@
 //! stop event is detected on the step ends and then located by bisection on re-integrations from
 //! the start of the step that crossed it, and samples are re-integrated from the step before.
 
+use super::dop853::{StepControl, CONTROL};
 use super::{Dynamics, Ending, Event, Method, Problem, Settings, Solution, State, Stats};
 use crate::budget::Deadline;
 use ode_solvers::dop_shared::IntegrationError;
@@ -131,6 +132,14 @@ type Raw<const N: usize> = (
     Vec<State<N>>,
 );
 
+/// DOPRI5's controller, stabilized as Hairer's code sets it.
+const DOPRI5_CONTROL: StepControl = StepControl {
+    safety: 0.9,
+    beta: 0.04,
+    fac_min: 0.2,
+    fac_max: 10.0,
+};
+
 /// One run of an `ode_solvers` integrator from `t0` to `t_end`, keeping every accepted step.
 /// `first_step` = 0 lets the adaptive methods choose it.
 fn raw_run<D: Dynamics<N>, const N: usize>(
@@ -150,10 +159,11 @@ fn raw_run<D: Dynamics<N>, const N: usize>(
             (r, t.clone(), y.clone())
         }};
     }
-    // Hairer's step-size controls for each method: safety factor 0.9, the stabilization
-    // exponent beta, and the bounds on the step's shrink and growth per step.
+    // Each method with its step-size controller: `ode_solvers`' DOP853 with the constants of
+    // ours, DOPRI5 with Hairer's stabilized one.
     macro_rules! adaptive {
-        ($solver:ident, $beta:expr, $fac_min:expr, $fac_max:expr) => {{
+        ($solver:ident, $control:expr) => {{
+            let c: StepControl = $control;
             let mut s = $solver::from_param(
                 bridge,
                 t0,
@@ -162,10 +172,10 @@ fn raw_run<D: Dynamics<N>, const N: usize>(
                 y0,
                 settings.rtol,
                 settings.atol,
-                0.9,
-                $beta,
-                $fac_min,
-                $fac_max,
+                c.safety,
+                c.beta,
+                c.fac_min,
+                c.fac_max,
                 span,
                 first_step,
                 n_max,
@@ -176,8 +186,8 @@ fn raw_run<D: Dynamics<N>, const N: usize>(
         }};
     }
     match settings.method {
-        Method::Dop853 => adaptive!(Dop853, 0.0, 0.333, 6.0),
-        Method::Dopri5 => adaptive!(Dopri5, 0.04, 0.2, 10.0),
+        Method::Dop853 => adaptive!(Dop853, CONTROL),
+        Method::Dopri5 => adaptive!(Dopri5, DOPRI5_CONTROL),
         Method::Rk4 => {
             // ode_solvers takes ceil(span / step) steps of the full step and so overshoots
             // t_end: shorten the step so that a whole number of steps ends exactly there.
