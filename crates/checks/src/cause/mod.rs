@@ -74,7 +74,7 @@ impl Cause {
                 if !also_inherits_from.is_empty() {
                     s.push_str(&format!(
                         ": it does not follow from its printed premises (own error {}), which fail too ({})",
-                        own_error.map_or("-".into(), |e| format!("{e:.3e}")),
+                        own_error.map_or("-".into(), short),
                         eqs(also_inherits_from)
                     ));
                 }
@@ -216,6 +216,17 @@ pub fn consequences(causes: &BTreeMap<u32, Cause>) -> BTreeMap<u32, Vec<u32>> {
     out
 }
 
+/// `x` to three significant digits, in plain notation where that is short (2.000, 0.0312),
+/// else in scientific (1.23e-7).
+fn short(x: f64) -> String {
+    if (1e-3..1e4).contains(&x.abs()) {
+        let decimals = (2 - x.abs().log10().floor() as i32).max(0) as usize;
+        format!("{x:.decimals$}")
+    } else {
+        format!("{x:.2e}")
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -299,5 +310,13 @@ mod tests {
         let c = classify(&nodes);
         assert!(matches!(&c[&3], Cause::Inherits { roots, .. } if roots == &[4]));
         assert!(matches!(&c[&4], Cause::RootCause { .. }));
+    }
+
+    #[test]
+    fn an_own_error_is_written_to_three_digits() {
+        assert_eq!(short(2.0), "2.00");
+        assert_eq!(short(0.031234), "0.0312");
+        assert_eq!(short(1234.5), "1234");
+        assert_eq!(short(1.234e-7), "1.23e-7");
     }
 }
