@@ -2,7 +2,7 @@
 //! ([`attach_premises`]), and a claim that restates a failing equation is counted once, at the
 //! equation ([`attach_restated`]).
 
-use crate::check::{Checked, Subject};
+use crate::checked::{Checked, Subject};
 use crate::equations::Bench;
 
 /// What `subject` rests on besides its numbered premises: the `rests_on` of its entry.

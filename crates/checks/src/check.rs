@@ -8,39 +8,12 @@
 //! panic), so a panic in a check is a defect of this program and is not caught.
 
 use crate::cause::{classify, Cause, Node};
+pub use crate::checked::{Checked, Subject};
 use crate::equations::{self, Bench};
 use crate::finding::Finding;
 use rayon::prelude::*;
 use serde::Serialize;
 use std::sync::atomic::{AtomicUsize, Ordering};
-
-/// What was checked.
-#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
-#[serde(tag = "kind", rename_all = "snake_case")]
-pub enum Subject {
-    /// A numbered equation.
-    Equation {
-        /// Printed number.
-        number: u32,
-        /// LaTeX label.
-        label: &'static str,
-    },
-    /// A prose claim.
-    Claim {
-        /// Its id in paper/claims.yaml.
-        id: &'static str,
-    },
-}
-
-impl Subject {
-    /// "eq 29" or the claim's id.
-    pub fn name(&self) -> String {
-        match self {
-            Subject::Equation { number, .. } => format!("eq {number}"),
-            Subject::Claim { id } => id.to_string(),
-        }
-    }
-}
 
 /// Why a selection of checks could not be run.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -79,21 +52,6 @@ impl From<CheckError> for String {
     fn from(e: CheckError) -> Self {
         e.to_string()
     }
-}
-
-/// One check's outcome.
-#[derive(Debug, Clone, Serialize)]
-pub struct Checked {
-    /// What was checked.
-    pub subject: Subject,
-    /// The paper's section.
-    pub section: u32,
-    /// The finding, or why the check could not run.
-    pub finding: Result<Finding, String>,
-    /// For an equation with a derivation check: whether it follows from its printed premises.
-    pub derivation: Option<Result<Finding, String>>,
-    /// For a failing equation: root cause, inherited, or undetermined ([`crate::cause`]).
-    pub cause: Option<Cause>,
 }
 
 /// Which checks to run.

@@ -6,6 +6,7 @@
 mod agreement;
 pub mod cause;
 pub mod check;
+pub mod checked;
 pub mod corrections;
 pub mod equations;
 pub mod finding;

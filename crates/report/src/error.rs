@@ -1,7 +1,7 @@
 //! What can go wrong making the report: each variant carries what the user needs (the study,
 //! the template, the path) and its sentence is the one the tool prints.
 
-use crate::figures::FigureError;
+use crate::figures::error::FigureError;
 use std::path::PathBuf;
 
 /// A report that could not be made.
