@@ -14,7 +14,6 @@ use physics::disk::Disk;
 use physics::model::dissipation::PowerLaw;
 use physics::model::rolling::Rolling;
 use physics::model::steady::steady_motion;
-use physics::model::work::WithWork;
 use physics::model::Extras;
 use physics::solve::{solve, Dynamics, Event, Problem, State};
 use std::f64::consts::PI;
@@ -72,11 +71,9 @@ fn run_descent(b: &Bench, d: &Disk, beta: f64, alpha0: f64) -> Option<Descent> {
     let om0 = start.precession;
     let epsilon = 1.5e-4 * alpha0 * om0.powf(1.0 - beta);
     let law = PowerLaw { epsilon, beta };
-    let sys = WithWork {
-        model: Rolling::<4>::new(*d, Extras::default(), Some(law)),
-    };
+    let sys = Rolling::<4>::new(*d, Extras::default(), Some(law));
     let alpha_dot0 = -2.0 / 3.0 * epsilon * om0.powf(beta) / alpha0.cos();
-    let y0 = State::<5>::new(alpha0, alpha_dot0, om0, 0.0, 0.0);
+    let y0 = State::<4>::new(alpha0, alpha_dot0, om0, 0.0);
     let t_end = 20.0 * 2.0 * PI / om0;
     let sol = solve(
         Problem::new(&sys, 0.0, y0, t_end).sampled(t_end / 400.0),
