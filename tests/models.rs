@@ -5,7 +5,6 @@ use physics::model::dissipation::PowerLaw;
 use physics::model::frictionless::Frictionless;
 use physics::model::rolling::Rolling;
 use physics::model::steady::{b_bound, steady_motion, vertical_spin};
-use physics::model::work::WithWork;
 use physics::model::{Extras, Model, Motion};
 use physics::solve::{solve, Dynamics, Ending, Problem, Settings, State};
 
@@ -104,6 +103,27 @@ fn steady_motion_from_eq_29_stays_steady() {
             .fold(0.0, f64::max);
         eprintln!("b = {b:+.5} m: alpha drift {drift:.2e} rad over 10 s");
         assert!(drift < 1e-9, "b = {b}: alpha drifted by {drift:e}");
+    }
+}
+
+/// The rolling model with the work its eq 75 dissipation does, $W = \int P\,dt$ with
+/// $P = -\epsilon m a g|\Omega|^\beta$, carried as a fifth state (J): along a run,
+/// $E(t) - E(0) = W(t)$ is the energy balance. Without dissipation $W$ stays zero.
+struct WithWork {
+    /// The rolling model, with its dissipation.
+    model: Rolling<4>,
+}
+
+impl Dynamics<5> for WithWork {
+    fn rhs(&self, y: &State<5>, dy: &mut State<5>) {
+        let core = State::<4>::new(y[0], y[1], y[2], y[3]);
+        let mut d = State::<4>::zeros();
+        self.model.rhs(&core, &mut d);
+        dy.fixed_rows_mut::<4>(0).copy_from(&d);
+        dy[4] = self
+            .model
+            .dissipation
+            .map_or(0.0, |law| law.power(&self.model.disk, y[2]));
     }
 }
 

@@ -15,7 +15,6 @@ pub mod mechanism;
 pub mod rolling;
 pub mod sliding;
 pub mod steady;
-pub mod work;
 
 pub use layout::{Extras, Layout};
 
