@@ -8,6 +8,7 @@
 pub mod adiabatic;
 pub mod air_film;
 pub mod dissipation;
+pub mod film_bound;
 pub mod frictionless;
 pub mod lab_frame;
 pub mod layout;
