@@ -55,6 +55,9 @@ pub struct PeerComparison {
     pub switches: Vec<(f64, f64)>,
     /// Switch counts: (peer, tool) before the end of the comparison.
     pub switch_counts: (usize, usize),
+    /// At each compared print time: $(t, \alpha_{\rm tool}, \alpha_{\rm peer})$ (s, rad).
+    #[serde(skip)]
+    pub tilts: Vec<[f64; 3]>,
 }
 
 impl PeerComparison {
@@ -106,6 +109,7 @@ pub fn compare(scene: &Scene, rows: &[PeerRow]) -> Result<PeerComparison, PeerEr
         },
         switches: Vec::new(),
         switch_counts: (0, 0),
+        tilts: Vec::new(),
     };
     // The peer prints times with 7 decimals.
     let tol = 1e-6;
@@ -129,6 +133,7 @@ pub fn compare(scene: &Scene, rows: &[PeerRow]) -> Result<PeerComparison, PeerEr
         out.heading.see(dh.abs(), r.t);
         let dc = (mine.centre - theirs.centre).xy().norm();
         out.centre.see(dc, r.t);
+        out.tilts.push([r.t, a.alpha, b.alpha]);
         out.rows += 1;
         out.until = r.t;
     }

@@ -8,6 +8,7 @@
 //! - [`result::parse`] reads its `result.txt`;
 //! - [`compare::compare`] runs the scene here and measures the differences
 //!   (`rolling-disk peer compare`);
+//! - [`stored::compare_stored`] compares the stored runs, built into the tool;
 //! - [`mapping`] is the one place where its Euler angles and rates meet this tool's state.
 //!
 //! **Its modelling choices** that a comparison meets (read from its source):
@@ -35,6 +36,7 @@ pub mod compare;
 pub mod mapping;
 pub mod response;
 pub mod result;
+pub mod stored;
 
 use physics::scene::Scene;
 use std::path::Path;
