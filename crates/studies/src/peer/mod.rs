@@ -20,8 +20,10 @@
 //!   $5\times10^{-3}\max(F_z/m, 1)$ (m/s², i.e. $\mu_s$ raised by about 0.005), and starts the slip
 //!   with a seed velocity of $5\varepsilon = 5$ mm/s against the friction;
 //! - it starts every run sliding; a relock it finds at its first print step is not carried out
-//!   and the run restarts sliding with the seed, so a scene that starts rolling starts there
-//!   with a 5 mm/s slip;
+//!   and the run restarts sliding with the seed ($\max(10^4\,{\rm atol}, 5\varepsilon)$) from the
+//!   state one print step on, its clock set back to 0, so that its later rows are labelled one
+//!   print step early (read from its records: two rows at $t = 0$, the second with $\psi$
+//!   advanced by $\dot\psi$ times the print step); [`result::retimed`] moves them back;
 //! - its resistance moments take the sign of the rotation they oppose, like this tool's, and
 //!   neither program has a phase in which that rotation stays stopped: where it passes through
 //!   zero and the moment could hold it, both stall;

@@ -5,7 +5,7 @@
 //! peer's commit, compiler and response file) is in each folder's `provenance.txt`.
 
 use super::compare::{compare, Largest, PeerComparison};
-use super::result::parse;
+use super::result::{parse, retimed};
 use super::PeerError;
 use physics::scene::Scene;
 use serde::Serialize;
@@ -17,7 +17,9 @@ pub struct StoredRun {
     pub name: &'static str,
     /// The scene in words.
     pub words: &'static str,
-    /// What explains a difference larger than the peer's printed digits, if one remains.
+    /// What explains a difference larger than the peer's printed digits, in a phrase of
+    /// [`EXPLANATIONS`] (first with the peer's source's regularization, then with
+    /// $\varepsilon = 10^{-7}$ m/s), or "–".
     pub explained_by: &'static str,
     /// `scene.yaml`.
     pub scene: &'static str,
@@ -58,68 +60,88 @@ macro_rules! stored {
     };
 }
 
+/// The phrases that explain a difference, and what each means.
+pub const EXPLANATIONS: [(&str, &str); 4] = [
+    (
+        "regularization",
+        "the peer's slip regularization: its kinetic friction falls short of μ F_z by about \
+         ε²/2v² while the contact slides at v",
+    ),
+    (
+        "creep",
+        "where the slip ends, the regularized peer creeps (slip 1e-4 to 5e-3 m/s) and never \
+         relocks, while this tool rolls",
+    ),
+    (
+        "relock at a print step",
+        "the peer relocks only at a print step, up to 1 ms after this tool; the rest is not \
+         traced further here",
+    ),
+    (
+        "its start",
+        "the print step the peer slides at its start before it relocks (its later rows read \
+         on the clock of its run)",
+    ),
+];
+
 /// The ten stored runs, thin first.
 pub const STORED: [StoredRun; 10] = [
     stored!(
         "thin-fall",
-        "nearly thin disk (0.2 mm) falling without spin from near upright, frictionless",
-        "nothing: both stop near the table (this tool at the scene's 0.1 rad)"
+        "a nearly thin disk (0.2 mm) falling without spin from near upright, frictionless",
+        "–"
     ),
     stored!(
         "thin-sliding",
-        "nearly thin disk sliding fast on a slippery table for the whole run",
-        "the peer's slip regularization (its friction is short of mu F_z by eps^2/2v^2)"
+        "a nearly thin disk sliding fast on a slippery table for the whole run",
+        "regularization"
     ),
     stored!(
         "thin-slide",
-        "nearly thin disk spinning in place, launched slipping; friction ends the slip",
-        "the peer's slip regularization: where the slip ends it creeps (1e-4 to 5e-3 m/s) and \
-         never relocks; with eps = 1e-7 the rest is its start, sliding with a 5 mm/s seed",
+        "a nearly thin disk spinning in place, launched slipping; friction ends the slip",
+        "creep; then relock at a print step",
         sharp
     ),
     stored!(
         "thick-fall",
         "the toy (12.8 mm, fillet 2 mm) falling without spin from near upright, frictionless",
-        "nothing: both stop near the table (this tool at the scene's 0.1 rad)"
+        "–"
     ),
     stored!(
         "thick-sliding",
         "the toy sliding fast on a slippery table for the whole run",
-        "the peer's slip regularization (its friction is short of mu F_z by eps^2/2v^2)",
+        "regularization",
         sharp
     ),
     stored!(
         "thick-sliding-resisted",
         "the toy sliding fast against rolling and boring resistance (arms 0.01 a and 0.05 a)",
-        "the peer's slip regularization",
+        "regularization",
         sharp
     ),
     stored!(
         "thick-slip-stick",
         "the toy with static 0.3 and kinetic 0.2 friction launched slipping sideways",
-        "the peer's slip regularization: it creeps where this tool sticks; with eps = 1e-7 \
-         the rest is its seeded start and its relock found only at print steps",
+        "creep; then relock at a print step",
         sharp
     ),
     stored!(
         "thick-roll",
         "the toy rolling on a circle from the thin disk's steady motion, high friction",
-        "the peer's start (every run starts sliding, here with a 5 mm/s seed slip) and its \
-         creep with eps = 1e-3 m/s",
+        "creep; then its start",
         sharp
     ),
     stored!(
         "thick-spin-down",
-        "the toy spinning in place at 34 deg under rolling and boring resistance (arms 0.001 a \
+        "the toy spinning in place at 34° under rolling and boring resistance (arms 0.001 a \
          and 0.01 a), 2 s",
-        "the peer's seeded start and its creep with eps = 1e-3 m/s",
+        "creep; then its start",
         sharp
     ),
     stored!(
         "thick-near-vertical",
-        "the toy launched 3 deg from upright with a fast spin and a slip (outside the peer's \
-         0.02 rad smoothing band)",
-        "the peer's slip regularization before its relock",
+        "the toy launched 3° from upright with a fast spin and a slip",
+        "regularization",
         sharp
     ),
 ];
@@ -143,6 +165,10 @@ pub struct Differences {
     pub switch_time: f64,
     /// Switches (peer, this tool) before `until`.
     pub switch_counts: (usize, usize),
+    /// Where the peer's record ends (s).
+    pub peer_end: f64,
+    /// Where this tool's run ends (s).
+    pub tool_end: f64,
     /// $(t, |\Delta\alpha|)$ at each compared print time (s, rad), for the figures.
     #[serde(skip)]
     #[schemars(skip)]
@@ -165,6 +191,8 @@ impl Differences {
             centre: v(c.centre),
             switch_time: c.switch_time(),
             switch_counts: c.switch_counts,
+            peer_end: c.peer_end,
+            tool_end: c.tool_end.0,
             tilt_gap: c
                 .tilts
                 .iter()
@@ -201,6 +229,12 @@ pub struct StoredComparison {
     pub sharp: Option<Differences>,
     /// What explains what remains above the printed digits.
     pub explained_by: String,
+    /// True when the peer restarted its clock after a relock at its first print step
+    /// ([`super::result::retimed`]), in the run with $\varepsilon = 10^{-7}$ m/s if stored.
+    pub restarted: bool,
+    /// The peer's least $|\theta|$, the tilt from upright (rad): its near-vertical smoothing
+    /// acts below 0.02 rad.
+    pub closest_to_upright: f64,
 }
 
 /// Every stored run compared with this tool's run of its scene.
@@ -211,9 +245,11 @@ pub fn compare_stored() -> Result<Vec<StoredComparison>, PeerError> {
             let file = format!("tests/reference/peer/{}/scene.yaml", s.name);
             let scene = Scene::parse(s.scene, &file)
                 .map_err(|e| PeerError::Scene(file.clone(), e.to_string()))?;
+            let rows = |text: &str, what: &str| {
+                parse(text, &format!("tests/reference/peer/{}/{what}", s.name))
+            };
             let against = |text: &str, what: &str| -> Result<Differences, PeerError> {
-                let name = format!("tests/reference/peer/{}/{what}", s.name);
-                Ok(Differences::of(compare(&scene, &parse(text, &name)?)?))
+                Ok(Differences::of(compare(&scene, &rows(text, what)?)?))
             };
             Ok(StoredComparison {
                 name: s.name.into(),
@@ -225,6 +261,17 @@ pub fn compare_stored() -> Result<Vec<StoredComparison>, PeerError> {
                     .map(|t| against(t, "eps-1e-7/result.txt"))
                     .transpose()?,
                 explained_by: s.explained_by.into(),
+                restarted: {
+                    let (text, what) = s
+                        .sharp
+                        .map_or((s.result, "result.txt"), |t| (t, "eps-1e-7/result.txt"));
+                    let r = rows(text, what)?;
+                    retimed(&r, scene.sample.unwrap_or(1e-3)) != r
+                },
+                closest_to_upright: rows(s.result, "result.txt")?
+                    .iter()
+                    .map(|r| r.state.theta.abs())
+                    .fold(f64::INFINITY, f64::min),
             })
         })
         .collect()
