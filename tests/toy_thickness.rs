@@ -43,7 +43,7 @@ fn thickness_changes_the_steady_motion_and_the_oscillation() {
         assert!(held < 1e-6, "alpha0 {alpha0}: drifts {held:e} rad in 0.2 s");
     }
     // The thin disk's shooting needs no guess near eq 29's own.
-    let far = steady_precession(Shape::Thin, 0.6, 2.0 * t.steady[1].eq29).unwrap();
+    let far = steady_precession(Shape::Thin, 0.6, 0.0, 2.0 * t.steady[1].eq29).unwrap();
     assert!((far / t.steady[1].eq29 - 1.0).abs() < 1e-7);
 }
 
@@ -73,4 +73,36 @@ fn thickness_changes_the_spin_down_constant_not_the_law() {
     assert!(thin.least_normal.0 > 0.5 && toy.least_normal.0 > 0.5);
     // Both runs reach the tilt floor rolling.
     assert!(thin.end.1 <= 1.0001e-4 && toy.end.1 <= 1.0001e-4);
+}
+
+/// The fall from unstable steady motion (sec. 7, "to about 60 degrees"): the thin disk in the
+/// sliding model (rolling, mu = 10) falls where the fall study's rolling model (eqs 23-25) says,
+/// and the toy from the same tilt and b falls to the tilts printed.
+#[test]
+fn the_toy_falls_from_the_thin_disks_unstable_band() {
+    let t = compute().unwrap();
+    let fall = studies::sliding::fall::fall(
+        &physics::disk::toy_disk(),
+        &physics::solve::Settings::dop853(1e-10, 1e-12),
+    )
+    .unwrap();
+    assert!(!t.falls.is_empty());
+    for f in &t.falls {
+        println!(
+            "alpha0 {} deg, b/a {:.4}: Omega0 thin {:.3}, toy {:?} rad/s; falls to thin {:?}, toy {:?} deg",
+            f.alpha0_deg, f.b_over_a, f.precession.0, f.precession.1, f.fell_to_deg.0, f.fell_to_deg.1
+        );
+        let rolling = fall
+            .cases
+            .iter()
+            .find(|c| c.alpha0_deg == f.alpha0_deg && c.mu.is_none())
+            .unwrap();
+        let (Some(here), Some(there)) = (f.fell_to_deg.0, rolling.fell_to_deg) else {
+            panic!("the thin disk did not fall: {f:?} {rolling:?}");
+        };
+        assert!(
+            (here - there).abs() < 0.05,
+            "{here} vs the fall study's {there}"
+        );
+    }
 }

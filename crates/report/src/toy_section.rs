@@ -6,7 +6,9 @@ use crate::number::{error, places, scientific};
 use crate::study_table::{StudySection, StudyTable};
 use std::fmt::Write;
 use studies::peer::stored::{Differences, StoredComparison};
-use studies::thickness::{SpinDownLaw, Thickness, DRAG, FIT_TILTS, SPIN_DOWN_START, TOY};
+use studies::thickness::{
+    SpinDownLaw, Thickness, DRAG, FALL_LEFT, FALL_TIME, FIT_TILTS, SPIN_DOWN_START, TOY,
+};
 use studies::toy::Toy;
 
 /// The switches: "peer / here, largest paired time difference", or "none".
@@ -90,7 +92,13 @@ pub fn tables(t: &Toy) -> Vec<StudyTable> {
             explanation(c),
         ]);
     }
-    vec![peer, why, steady(&t.thickness), spin_down(&t.thickness)]
+    vec![
+        peer,
+        why,
+        steady(&t.thickness),
+        spin_down(&t.thickness),
+        fall(&t.thickness),
+    ]
 }
 
 /// What explains `c`'s differences, or that none needs explaining.
@@ -205,6 +213,39 @@ fn spin_down(t: &Thickness) -> StudyTable {
     s
 }
 
+/// Sec. 7's fall "to about 60°": thin and toy from the thin disk's unstable band.
+fn fall(t: &Thickness) -> StudyTable {
+    let mut s = StudyTable::new(
+        format!(
+            "The fall from unstable steady motion (sec. 7, \"to about 60°\"): the steady roll \
+             at α₀ with b at the middle of the thin disk's unstable band (the fall study's \
+             starts), the tilt lowered by 1 mrad, rolling for {FALL_TIME} s; it falls to the first \
+             minimum of α once {FALL_LEFT}° below α₀. The toy's steady Ω₀ at that b is found by \
+             shooting; a dash: none within 0.3 to 5 times the thin disk's, or no fall."
+        ),
+        &[
+            "α₀ (°)",
+            "b / a",
+            "Ω₀ thin (rad/s)",
+            "Ω₀ toy (rad/s)",
+            "falls to, thin (°)",
+            "falls to, toy (°)",
+        ],
+    );
+    let deg = |x: Option<f64>| x.map_or("–".into(), |v| places(v, 1));
+    for f in &t.falls {
+        s.row(vec![
+            places(f.alpha0_deg, 0),
+            places(f.b_over_a, 3),
+            places(f.precession.0, 3),
+            f.precession.1.map_or("–".into(), |v| places(v, 3)),
+            deg(f.fell_to_deg.0),
+            deg(f.fell_to_deg.1),
+        ]);
+    }
+    s
+}
+
 /// The section, its tables ([`tables`]) numbered already; `figures` are the numbers of the
 /// agreement figures.
 pub fn section(t: &Toy, tables: Vec<StudyTable>, figures: &[usize]) -> StudySection {
@@ -280,8 +321,10 @@ fn summary(t: &Toy, tables: &[StudyTable], figures: &[usize]) -> String {
          C is {pc} times the thin disk's simulated one: eq 73's 5/2 against the 3/2 of the \
          disk's energy); the tilt where that law would lose contact is {lt} mrad for the toy \
          against {li} mrad thin, yet neither run comes near it (least F_z / m g {nt} toy, {ni} \
-         thin), so the premise of eqs 80-81 fails for the toy as for the thin disk. Not computed \
-         here: the condition on b of eq 30 and the fall to about 60° for the toy.",
+         thin), so the premise of eqs 80-81 fails for the toy as for the thin disk. From the \
+         thin disk's unstable steady rolls{t4}, the toy falls {falls}: \"to about 60°\" does not \
+         survive for the toy, which falls further. Not computed here: the condition on b of \
+         eq 30 for the toy.",
         n = t.peer.len(),
         t0 = cite(tables, 0),
         t1 = cite(tables, 1),
@@ -348,6 +391,29 @@ fn summary(t: &Toy, tables: &[StudyTable], figures: &[usize]) -> String {
         lt = places(toy.loss_tilt * 1e3, 2),
         li = places(thin.loss_tilt * 1e3, 2),
         nt = places(toy.least_normal.0, 2),
+        t4 = cite(tables, 4),
+        falls = th
+            .falls
+            .iter()
+            .map(|f| match f.fell_to_deg {
+                (thin, Some(to)) => format!(
+                    "from {:.0}° to {:.1}° (thin: {})",
+                    f.alpha0_deg,
+                    to,
+                    thin.map_or("no fall".into(), |x| format!("{x:.1}°"))
+                ),
+                (_, None) => format!(
+                    "from {:.0}°: {}",
+                    f.alpha0_deg,
+                    if f.precession.1.is_none() {
+                        "no steady motion of the toy found at that b"
+                    } else {
+                        "no fall within the run"
+                    }
+                ),
+            })
+            .collect::<Vec<_>>()
+            .join("; "),
         ni = places(thin.least_normal.0, 2),
     )
 }

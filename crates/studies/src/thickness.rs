@@ -66,16 +66,17 @@ impl Shape {
         }
     }
 
-    /// $\omega_1/\Omega$ of the disk spinning in place at `alpha0`: $-\sin\alpha\,p/q$.
-    pub fn spin_ratio(self, alpha0: f64) -> f64 {
-        match self {
-            Shape::Thin => 0.0,
+    /// $\omega_1/\Omega$ of the rolling disk whose centre goes round a circle of radius `b` at
+    /// the tilt `alpha0`: $(b - p\sin\alpha)/q$ (module documentation; eq 28's $b/a$ for the
+    /// thin disk).
+    pub fn spin_ratio(self, alpha0: f64, b: f64) -> f64 {
+        let (p, q) = match self {
+            Shape::Thin => (0.0, TOY.0),
             Shape::Toy => {
-                let solid = Solid::new(TOY.0, TOY.3, TOY.1, TOY.2);
-                let (p, q) = solid.offsets(TOY.0, alpha0.cos(), alpha0.sin());
-                -alpha0.sin() * p / q
+                Solid::new(TOY.0, TOY.3, TOY.1, TOY.2).offsets(TOY.0, alpha0.cos(), alpha0.sin())
             }
-        }
+        };
+        (b - alpha0.sin() * p) / q
     }
 
     /// The centre's height $h(\alpha)$ and its first two derivatives (module documentation).
@@ -140,16 +141,16 @@ pub fn samples(s: &Scene) -> Result<Vec<[f64; 5]>, StudyError> {
         .collect())
 }
 
-/// The precession that makes `shape` spinning in place steady at `alpha0`, searched in
-/// `[0.3, 3] guess`.
-pub fn steady_precession(shape: Shape, alpha0: f64, guess: f64) -> Result<f64, StudyError> {
+/// The precession that makes `shape` rolling with its centre on a circle of radius `b` steady
+/// at `alpha0`, searched in `[0.3, 5] guess`.
+pub fn steady_precession(shape: Shape, alpha0: f64, b: f64, guess: f64) -> Result<f64, StudyError> {
     let tau = 1e-3;
-    let ratio = shape.spin_ratio(alpha0);
+    let ratio = shape.spin_ratio(alpha0, b);
     let drift = |om: f64| -> Result<f64, StudyError> {
         let r = samples(&scene(shape, alpha0, 0.0, om, ratio * om, tau, tau, "")?)?;
         Ok(r.last().map_or(0.0, |x| x[1]) - alpha0)
     };
-    let (mut lo, mut hi) = (0.3 * guess, 3.0 * guess);
+    let (mut lo, mut hi) = (0.3 * guess, 5.0 * guess);
     let f_lo = drift(lo)?;
     if f_lo * drift(hi)? >= 0.0 {
         return Err(format!("no steady spin at alpha0 = {alpha0} in [{lo}, {hi}] rad/s").into());
@@ -167,7 +168,7 @@ pub fn steady_precession(shape: Shape, alpha0: f64, guess: f64) -> Result<f64, S
 
 /// The period of the tilt's oscillation about the steady start (`alpha0`, `precession`).
 pub fn period(shape: Shape, alpha0: f64, precession: f64) -> Result<f64, StudyError> {
-    let spin = shape.spin_ratio(alpha0) * precession;
+    let spin = shape.spin_ratio(alpha0, 0.0) * precession;
     let r = samples(&scene(
         shape, alpha0, 1e-3, precession, spin, 1.0, 1e-4, "",
     )?)?;
@@ -224,6 +225,88 @@ pub struct SpinDownLaw {
     pub end: (f64, f64),
 }
 
+/// One fall from unstable steady motion (sec. 7), thin and toy.
+#[derive(Debug, Clone, PartialEq, Serialize, schemars::JsonSchema)]
+pub struct FallPair {
+    /// The steady tilt (deg).
+    pub alpha0_deg: f64,
+    /// $b/a$: the middle of the thin disk's unstable band (`sliding::fall::band`).
+    pub b_over_a: f64,
+    /// The steady $\Omega_0$ of the thin disk (eq 29) and of the toy (shot), rad/s; `None`
+    /// when the shooting finds no steady motion of the toy within 0.3 to 5 times the thin
+    /// disk's.
+    pub precession: (f64, Option<f64>),
+    /// The tilt each falls to (deg), thin and toy; `None`: it did not fall [`FALL_LEFT`]° within
+    /// [`FALL_TIME`] s.
+    pub fell_to_deg: (Option<f64>, Option<f64>),
+}
+
+/// How long each fall runs (s), as the fall study.
+pub const FALL_TIME: f64 = 3.0;
+/// How far below $\alpha_0$ the tilt must go to have fallen (deg), as the fall study.
+pub const FALL_LEFT: f64 = 5.0;
+
+/// The tilt (deg) `shape` falls to from its steady motion at (`alpha0`, `b`, `precession`)
+/// with the tilt lowered by 1 mrad, rolling: the first minimum of $\alpha$ (to the 1 ms
+/// sampling) once it is [`FALL_LEFT`]° below $\alpha_0$, as `sliding::fall` defines it.
+pub fn fall_to(
+    shape: Shape,
+    alpha0: f64,
+    b: f64,
+    precession: f64,
+) -> Result<Option<f64>, StudyError> {
+    let spin = shape.spin_ratio(alpha0, b) * precession;
+    let r = samples(&scene(
+        shape,
+        alpha0 - 1e-3,
+        0.0,
+        precession,
+        spin,
+        FALL_TIME,
+        1e-3,
+        "",
+    )?)?;
+    let Some(left) = r
+        .iter()
+        .position(|x| x[1] < alpha0 - FALL_LEFT.to_radians())
+    else {
+        return Ok(None);
+    };
+    Ok(r[left..]
+        .windows(2)
+        .find(|w| w[0][2] < 0.0 && w[1][2] >= 0.0)
+        .map(|w| w[0][1].min(w[1][1]).to_degrees()))
+}
+
+/// The falls at each tilt of `sliding::fall::TILTS_DEG` from the middle of the thin disk's
+/// unstable band.
+fn falls() -> Result<Vec<FallPair>, StudyError> {
+    let d = physics::disk::toy_disk();
+    let mut out = Vec::new();
+    for deg in crate::sliding::fall::TILTS_DEG {
+        let alpha0 = deg.to_radians();
+        let Some(band) = crate::sliding::fall::band(&d, alpha0) else {
+            continue;
+        };
+        let b = band.start * d.a;
+        let thin = steady_motion(&d, alpha0, b)?.precession;
+        let toy = steady_precession(Shape::Toy, alpha0, b, thin).ok();
+        out.push(FallPair {
+            alpha0_deg: deg,
+            b_over_a: band.start,
+            precession: (thin, toy),
+            fell_to_deg: (
+                fall_to(Shape::Thin, alpha0, b, thin)?,
+                match toy {
+                    Some(om) => fall_to(Shape::Toy, alpha0, b, om)?,
+                    None => None,
+                },
+            ),
+        });
+    }
+    Ok(out)
+}
+
 /// The toy against the thin disk.
 #[derive(Debug, Clone, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct Thickness {
@@ -231,6 +314,8 @@ pub struct Thickness {
     pub steady: Vec<SteadyPair>,
     /// Thin, then toy.
     pub spin_down: Vec<SpinDownLaw>,
+    /// The falls from unstable steady motion.
+    pub falls: Vec<FallPair>,
     /// Eq 79's printed $C = 5g/(\epsilon(\beta+2)ak)$ for the thin disk.
     pub eq79_c: f64,
     /// Eq 80's $\Omega_{\max}$ from the thin disk's fitted $C$, and the tilt there by eq 31
@@ -258,7 +343,7 @@ pub fn spin_down(shape: Shape) -> Result<SpinDownLaw, StudyError> {
     let guess = steady_motion(&physics::disk::toy_disk(), alpha0, 0.0)?.precession;
     let om = match shape {
         Shape::Thin => guess,
-        Shape::Toy => steady_precession(shape, alpha0, guess)?,
+        Shape::Toy => steady_precession(shape, alpha0, 0.0, guess)?,
     };
     let drag = format!("dissipation: {{ epsilon: {epsilon:e}, beta: {beta:e} }}\n");
     let s = scene(
@@ -266,7 +351,7 @@ pub fn spin_down(shape: Shape) -> Result<SpinDownLaw, StudyError> {
         alpha0,
         0.0,
         om,
-        shape.spin_ratio(alpha0) * om,
+        shape.spin_ratio(alpha0, 0.0) * om,
         120.0,
         1e-3,
         &drag,
@@ -362,14 +447,14 @@ pub fn compute() -> Result<Thickness, StudyError> {
     let mut steady = Vec::new();
     for alpha0 in STEADY_TILTS {
         let eq29 = steady_motion(&thin_disk, alpha0, 0.0)?.precession;
-        let thin = steady_precession(Shape::Thin, alpha0, eq29)?;
-        let toy = steady_precession(Shape::Toy, alpha0, eq29)?;
+        let thin = steady_precession(Shape::Thin, alpha0, 0.0, eq29)?;
+        let toy = steady_precession(Shape::Toy, alpha0, 0.0, eq29)?;
         steady.push(SteadyPair {
             alpha0,
             eq29,
             thin,
             toy,
-            toy_spin: Shape::Toy.spin_ratio(alpha0) * toy,
+            toy_spin: Shape::Toy.spin_ratio(alpha0, 0.0) * toy,
             thin_period: period(Shape::Thin, alpha0, thin)?,
             toy_period: period(Shape::Toy, alpha0, toy)?,
         });
@@ -383,6 +468,7 @@ pub fn compute() -> Result<Thickness, StudyError> {
     Ok(Thickness {
         steady,
         spin_down,
+        falls: falls()?,
         eq79_c,
         eq80_thin: (omega_max, g / (a * k * omega_max * omega_max)),
     })
