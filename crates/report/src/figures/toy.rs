@@ -16,7 +16,7 @@ type Points = Vec<(f64, f64)>;
 const FLOOR: f64 = 1e-10;
 
 /// The runs the tilt figure shows.
-const SHOWN: [&str; 2] = ["thick-slip-stick", "thick-spin-down"];
+const SHOWN: [&str; 2] = ["thick-slip-stick", "thick-long-spin-down"];
 
 fn run<'t>(t: &'t Toy, name: &str) -> Result<&'t StoredComparison, FigureError> {
     t.peer
@@ -109,9 +109,15 @@ pub fn difference(t: &Toy) -> Result<Figure, FigureError> {
             .y_range(FLOOR / 2.0, top * 1e5)
             .mark(Axis::Y, 5e-8, "the peer's printed digits")
             .legend_at(legend);
-        for c in &both {
+        for (i, c) in both.iter().enumerate() {
+            // Past the palette's colours, the same colours dashed.
+            let style = if i < crate::figures::chart::PALETTE.len() {
+                Style::Line
+            } else {
+                Style::Dashed
+            };
             if let Some(points) = pick(c) {
-                p = p.with(Series::new(c.name.clone(), points, Style::Line));
+                p = p.with(Series::new(c.name.clone(), points, style));
             }
         }
         p

@@ -84,8 +84,8 @@ pub const EXPLANATIONS: [(&str, &str); 4] = [
     ),
 ];
 
-/// The ten stored runs, thin first.
-pub const STORED: [StoredRun; 10] = [
+/// The eleven stored runs, thin first.
+pub const STORED: [StoredRun; 11] = [
     stored!(
         "thin-fall",
         "a nearly thin disk (0.2 mm) falling without spin from near upright, frictionless",
@@ -135,6 +135,13 @@ pub const STORED: [StoredRun; 10] = [
         "thick-spin-down",
         "the toy spinning in place at 34° under rolling and boring resistance (arms 0.001 a \
          and 0.01 a), 2 s",
+        "creep; then its start",
+        sharp
+    ),
+    stored!(
+        "thick-long-spin-down",
+        "the toy spinning in place from 29° under rolling and boring resistance (arms 0.001 a \
+         and 0.01 a), 6 s, losing a quarter of its energy",
         "creep; then its start",
         sharp
     ),
