@@ -203,6 +203,7 @@ pub fn from_results(
             precision: studies.precision_records,
             corrections: correction_records,
             friction: results.get(&study::Friction).map(|f| f.studies.clone()),
+            toy: results.get(&study::Toy).cloned(),
         },
     );
 
@@ -233,6 +234,7 @@ pub fn from_results(
                 .to_string()
         },
         friction: studies.friction,
+        toy: studies.toy,
         coverage: studies.coverage,
         precision: studies.precision,
         scenes,

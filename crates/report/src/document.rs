@@ -20,6 +20,8 @@ pub struct Records {
     pub corrections: Vec<json::CorrectionRecord>,
     /// The sliding studies, when computed.
     pub friction: Option<studies::sliding::Studies>,
+    /// The toy's studies, when computed.
+    pub toy: Option<studies::toy::Toy>,
 }
 
 /// The checked equation `n`, if it was checked.
@@ -119,5 +121,6 @@ pub fn document(
         precision: records.precision,
         corrections: records.corrections,
         friction: records.friction,
+        toy: records.toy,
     }
 }

@@ -77,6 +77,9 @@ pub struct Document {
     pub corrections: Vec<CorrectionRecord>,
     /// The friction studies on the sliding model (absent when not computed).
     pub friction: Option<studies::sliding::Studies>,
+    /// The real toy: the peer program's stored runs compared, and the toy's thickness against
+    /// the thin disk (absent when not computed).
+    pub toy: Option<studies::toy::Toy>,
 }
 
 /// A corrected equation and the verdicts of its printed and corrected forms.

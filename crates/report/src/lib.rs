@@ -24,6 +24,7 @@ pub mod sliding_tables;
 pub mod study;
 pub mod study_table;
 pub mod tex;
+pub mod toy_section;
 
 use checks::check::Tally;
 use serde::Serialize;
@@ -51,6 +52,8 @@ pub struct Report {
     pub paper_numbers: String,
     /// The friction studies (sliding model), when computed.
     pub friction: Option<study_table::StudySection>,
+    /// The real toy against the thin disk and the peer program, when computed.
+    pub toy: Option<study_table::StudySection>,
     /// The Monte Carlo coverage of the experiment's stated uncertainties (stored studies).
     pub coverage: study_table::StudySection,
     /// The speed/accuracy study on the benchmark scene.

@@ -7,7 +7,10 @@ use crate::json::PrecisionRecord;
 use crate::results::Results;
 use crate::study;
 use crate::study_table::{number_tables, StudySection};
-use crate::{coverage_section, experiment_section, precision_section, sliding_tables, FigureView};
+use crate::{
+    coverage_section, experiment_section, precision_section, sliding_tables, toy_section,
+    FigureView,
+};
 use checks::equations::Bench;
 
 /// The studies' sections.
@@ -16,6 +19,8 @@ pub struct Sections {
     pub experiment: StudySection,
     /// Friction and contact, when the friction studies were computed.
     pub friction: Option<StudySection>,
+    /// The real toy and the peer program, when computed.
+    pub toy: Option<StudySection>,
     /// The coverage of the experiment's stated uncertainties.
     pub coverage: StudySection,
     /// Speed against accuracy.
@@ -37,12 +42,15 @@ pub fn sections(
 
     let mut experiment_tables = vec![experiment_section::table(synthetic)];
     let mut friction_tables = friction.map_or(Vec::new(), sliding_tables::tables);
+    let toy = results.get(&study::Toy);
+    let mut toy_tables = toy.map_or(Vec::new(), toy_section::tables);
     let mut coverage_tables = coverage_section::tables(&stored);
     let mut precision_tables = precision_section::tables(precision);
     number_tables([
         &mut experiment_tables,
         &mut coverage_tables,
         &mut friction_tables,
+        &mut toy_tables,
         &mut precision_tables,
     ]);
     let figure = |name: &str| figures.iter().find(|f| f.name == name).map(|f| f.number);
@@ -55,6 +63,13 @@ pub fn sections(
         friction: friction
             .map(|s| sliding_tables::section(s, bench.paper, friction_tables, &slip_stick)),
         coverage: coverage_section::section(&stored, coverage_tables, figure("coverage")),
+        toy: toy.map(|t| {
+            let agreement: Vec<usize> = ["peer-tilt", "peer-difference"]
+                .iter()
+                .filter_map(|n| figure(n))
+                .collect();
+            toy_section::section(t, toy_tables, &agreement)
+        }),
         precision: precision_section::section(
             precision,
             precision_tables,

@@ -3,6 +3,8 @@
 //! - [`sliding`]: the paper's claims that need Coulomb friction, run with the sliding model;
 //! - [`precision`]: speed against accuracy, measured at equal error;
 //! - [`peer`]: the thick toy against an independent program's stored runs;
+//! - [`thickness`]: the toy's thickness against the paper's thin-disk numbers; [`toy`] both for
+//!   the report;
 //! - [`compare`]: one scene run in two models side by side;
 //! - the studies behind the report's figures: [`energy`] (drift of six methods), [`frequency`]
 //!   (small oscillations measured, eqs 54, 55, 71), [`lab_frame`] (eqs 23-25 against the
@@ -21,5 +23,7 @@ pub mod runs;
 pub mod sliding;
 pub mod slip_stick;
 pub mod synthetic;
+pub mod thickness;
+pub mod toy;
 
 pub use error::StudyError;

@@ -19,6 +19,7 @@
 //! | `lab-frame-difference` | eqs 23-25 against the lab-frame model | `lab_frame.rs` |
 //! | `work-precision` | error against work of each method (the speed/accuracy study) | `precision.rs` |
 //! | `slip-stick`, `slip-stick-path` | the sliding model's slip-stick scene: slip, normal force, energy; paths | `friction.rs` |
+//! | `peer-tilt`, `peer-difference` | the toy's tilt and its difference, this tool against the peer program | `toy.rs` |
 //! | `mechanisms` | the power of each dissipation mechanism against $\Omega$, and what the record needs | `friction.rs` |
 //!
 //! Everything is deterministic: the same build gives the same bytes.
@@ -45,6 +46,7 @@ pub mod sliding;
 pub mod spin_down;
 pub mod stability;
 pub mod ticks;
+pub mod toy;
 
 pub use chart::{Axis, Chart, Legend, Mark, Note, Options, Plot, Series, Style};
 pub use error::{Drawn, FigureError};
@@ -307,6 +309,14 @@ pub const FAMILIES: &[Family] = &[
                 sliding::paths(f)?,
                 sliding::mechanisms(f)?,
             ])
+        },
+    },
+    Family {
+        names: &["peer-tilt", "peer-difference"],
+        needs: &[&study::Toy],
+        build: |r| {
+            let t = need(r, &study::Toy)?;
+            Ok(vec![toy::tilt(t)?, toy::difference(t)?])
         },
     },
 ];

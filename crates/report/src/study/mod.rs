@@ -19,6 +19,7 @@ mod lab_frame;
 mod paths;
 mod precision;
 mod spin_down;
+mod toy;
 
 pub use checks_run::Checks;
 pub use corrections::{Corrections, CorrectionsStudy};
@@ -30,6 +31,7 @@ pub use lab_frame::LabFrame;
 pub use paths::Paths;
 pub use precision::Precision;
 pub use spin_down::SpinDown;
+pub use toy::Toy;
 
 /// One step of a study that counts its work: `done` of `total`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -86,6 +88,7 @@ pub const ALL: &[&dyn Run] = &[
     &LabFrame,
     &Corrections,
     &Friction,
+    &Toy,
 ];
 
 /// The names of `studies`, in order.

@@ -4,7 +4,7 @@
 //! between rolling and sliding, paired in order.
 
 use super::mapping::PeerState;
-use super::result::{switches, PeerRow};
+use super::result::{retimed, switches, PeerRow};
 use super::PeerError;
 use physics::dispatch::sliding_model;
 use physics::model::lab_frame::Snapshot;
@@ -55,6 +55,9 @@ pub struct PeerComparison {
     pub switches: Vec<(f64, f64)>,
     /// Switch counts: (peer, tool) before the end of the comparison.
     pub switch_counts: (usize, usize),
+    /// At each compared print time: $(t, \alpha_{\rm tool}, \alpha_{\rm peer})$ (s, rad).
+    #[serde(skip)]
+    pub tilts: Vec<[f64; 3]>,
 }
 
 impl PeerComparison {
@@ -73,13 +76,15 @@ pub fn peer_snapshot(model: &Sliding, p: &PeerState) -> Snapshot {
 }
 
 /// Runs `scene` in the sliding model, sampled at the peer's print step, and compares it with
-/// the peer's `rows` (from [`super::result::parse`]).
+/// the peer's `rows` (from [`super::result::parse`]), on the clock of its run
+/// ([`super::result::retimed`]).
 pub fn compare(scene: &Scene, rows: &[PeerRow]) -> Result<PeerComparison, PeerError> {
     let m = sliding_model(scene);
     same_start(&m, scene, rows)?;
     let dt = scene
         .sample
         .unwrap_or(rows.get(1).map_or(1e-3, |r| r.t - rows[0].t));
+    let rows = &retimed(rows, dt)[..];
     let run = integrate(&m, scene, Some(dt)).map_err(PeerError::Settings)?;
     let tool_end = *run.t.last().unwrap_or(&0.0);
     let peer_end = rows.last().map_or(0.0, |r| r.t);
@@ -106,6 +111,7 @@ pub fn compare(scene: &Scene, rows: &[PeerRow]) -> Result<PeerComparison, PeerEr
         },
         switches: Vec::new(),
         switch_counts: (0, 0),
+        tilts: Vec::new(),
     };
     // The peer prints times with 7 decimals.
     let tol = 1e-6;
@@ -129,6 +135,7 @@ pub fn compare(scene: &Scene, rows: &[PeerRow]) -> Result<PeerComparison, PeerEr
         out.heading.see(dh.abs(), r.t);
         let dc = (mine.centre - theirs.centre).xy().norm();
         out.centre.see(dc, r.t);
+        out.tilts.push([r.t, a.alpha, b.alpha]);
         out.rows += 1;
         out.until = r.t;
     }

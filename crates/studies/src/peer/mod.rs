@@ -8,6 +8,7 @@
 //! - [`result::parse`] reads its `result.txt`;
 //! - [`compare::compare`] runs the scene here and measures the differences
 //!   (`rolling-disk peer compare`);
+//! - [`stored::compare_stored`] compares the stored runs, built into the tool;
 //! - [`mapping`] is the one place where its Euler angles and rates meet this tool's state.
 //!
 //! **Its modelling choices** that a comparison meets (read from its source):
@@ -19,8 +20,10 @@
 //!   $5\times10^{-3}\max(F_z/m, 1)$ (m/s², i.e. $\mu_s$ raised by about 0.005), and starts the slip
 //!   with a seed velocity of $5\varepsilon = 5$ mm/s against the friction;
 //! - it starts every run sliding; a relock it finds at its first print step is not carried out
-//!   and the run restarts sliding with the seed, so a scene that starts rolling starts there
-//!   with a 5 mm/s slip;
+//!   and the run restarts sliding with the seed ($\max(10^4\,{\rm atol}, 5\varepsilon)$) from the
+//!   state one print step on, its clock set back to 0, so that its later rows are labelled one
+//!   print step early (read from its records: two rows at $t = 0$, the second with $\psi$
+//!   advanced by $\dot\psi$ times the print step); [`result::retimed`] moves them back;
 //! - its resistance moments take the sign of the rotation they oppose, like this tool's, and
 //!   neither program has a phase in which that rotation stays stopped: where it passes through
 //!   zero and the moment could hold it, both stall;
@@ -35,6 +38,7 @@ pub mod compare;
 pub mod mapping;
 pub mod response;
 pub mod result;
+pub mod stored;
 
 use physics::scene::Scene;
 use std::path::Path;

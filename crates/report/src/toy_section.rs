@@ -1,0 +1,461 @@
+//! The friction part's section on the real toy: the peer program's stored runs against this
+//! tool, and what the toy's thickness does to the paper's numbers, as tables and a paragraph
+//! that says, number by number, whether the paper's conclusion survives for the toy.
+
+use crate::number::{error, places, scientific};
+use crate::study_table::{StudySection, StudyTable};
+use std::fmt::Write;
+use studies::peer::stored::{Differences, StoredComparison};
+use studies::thickness::{
+    SpinDownLaw, Thickness, DRAG, FALL_LEFT, FALL_TIME, FIT_TILTS, SPIN_DOWN_START, TOY,
+};
+use studies::toy::Toy;
+
+/// The switches: "peer / here, largest paired time difference", or "none".
+fn switches(d: &Differences) -> String {
+    if d.switch_counts.0 + d.switch_counts.1 == 0 {
+        "none".into()
+    } else if d.switch_counts.0.min(d.switch_counts.1) == 0 {
+        format!("{} / {}", d.switch_counts.0, d.switch_counts.1)
+    } else {
+        format!(
+            "{} / {}, {} s",
+            d.switch_counts.0,
+            d.switch_counts.1,
+            error(d.switch_time)
+        )
+    }
+}
+
+/// The section's tables: the peer runs, their explanations, the steady motions, the spin-down.
+pub fn tables(t: &Toy) -> Vec<StudyTable> {
+    let scenes: Vec<String> = t
+        .peer
+        .iter()
+        .map(|c| format!("{}, {}", c.name, c.words))
+        .collect();
+    let mut peer = StudyTable::new(
+        format!(
+            "The peer program's stored runs (its slip regularization ε = 1e-3 m/s, as in its source) \
+         against this tool on the same scene: the largest differences over the print times both \
+         reach. Both integrate with DOP853 at rtol = atol = 1e-10; the peer prints 7 decimals, so \
+         5e-8 is the finest difference it can show. Switches: rolling/sliding changes in the \
+         peer / here, and the largest difference of their paired times. The scenes: {}.",
+            scenes.join("; ")
+        ),
+        &[
+            "scene",
+            "compared to (s)",
+            "Δα (rad)",
+            "Δ spin (rad/s)",
+            "Δ heading (rad)",
+            "Δ centre (m)",
+            "switches",
+        ],
+    );
+    let meanings: Vec<String> = studies::peer::stored::EXPLANATIONS
+        .iter()
+        .map(|(phrase, means)| format!("{phrase}: {means}"))
+        .collect();
+    let mut why = StudyTable::new(
+        format!(
+            "What each difference larger than the printed digits comes from: the tilt difference \
+             against the peer run with ε = 1e-3 m/s and with ε = 1e-7 m/s (where stored), and \
+             the peer's modelling choice that explains it, first with ε = 1e-3 m/s, then with \
+             1e-7 m/s. The choices: {}.",
+            meanings.join("; ")
+        ),
+        &[
+            "scene",
+            "Δα, ε = 1e-3 (rad)",
+            "Δα, ε = 1e-7 (rad)",
+            "explained by",
+        ],
+    );
+    for c in &t.peer {
+        let d = &c.regularized;
+        peer.row(vec![
+            c.name.clone(),
+            places(d.until, 3),
+            scientific(d.tilt, 2),
+            scientific(d.spin, 2),
+            scientific(d.heading, 2),
+            scientific(d.centre, 2),
+            switches(d),
+        ]);
+        why.row(vec![
+            c.name.clone(),
+            scientific(d.tilt, 2),
+            c.sharp
+                .as_ref()
+                .map_or("–".into(), |s| scientific(s.tilt, 2)),
+            explanation(c),
+        ]);
+    }
+    vec![
+        peer,
+        why,
+        steady(&t.thickness),
+        spin_down(&t.thickness),
+        fall(&t.thickness),
+    ]
+}
+
+/// What explains `c`'s differences, or that none needs explaining.
+fn explanation(c: &StoredComparison) -> String {
+    if c.regularized.at_printed_digits() {
+        return "– (at the printed digits)".into();
+    }
+    match &c.sharp {
+        Some(s) if s.at_printed_digits() => format!("{} (gone at ε = 1e-7)", c.explained_by),
+        _ => c.explained_by.clone(),
+    }
+}
+
+/// Eqs 29 and 54-55: the steady motion spinning in place and its small oscillations.
+fn steady(t: &Thickness) -> StudyTable {
+    let mut s = StudyTable::new(
+        format!(
+            "The steady motion spinning in place (b = 0, eq 29) and its small oscillations: the \
+             thin uniform disk (k = 1/4) and the toy (a = {} mm, {} mm thick, fillet {} mm, same \
+             mass), both rolling. Ω₀ is the precession that keeps dα/dt = 0 (found by shooting; the \
+             thin disk's equals eq 29's to 1e-7), ϖ = 2π/period of the tilt about it.",
+            TOY.0 * 1e3,
+            TOY.1 * 1e3,
+            TOY.2 * 1e3
+        ),
+        &[
+            "α₀ (rad)",
+            "Ω₀ thin, eq 29 (rad/s)",
+            "Ω₀ toy (rad/s)",
+            "change",
+            "ω₁ toy (rad/s)",
+            "ϖ thin (rad/s)",
+            "ϖ toy (rad/s)",
+            "change",
+        ],
+    );
+    let tau = 2.0 * std::f64::consts::PI;
+    for r in &t.steady {
+        s.row(vec![
+            places(r.alpha0, 1),
+            places(r.eq29, 3),
+            places(r.toy, 3),
+            format!("{:+.1} %", 100.0 * (r.toy / r.eq29 - 1.0)),
+            places(r.toy_spin, 3),
+            places(tau / r.thin_period, 2),
+            places(tau / r.toy_period, 2),
+            format!("{:+.1} %", 100.0 * (r.thin_period / r.toy_period - 1.0)),
+        ]);
+    }
+    s
+}
+
+/// Eqs 79-81: the spin-down law's constant and where contact would be lost.
+fn spin_down(t: &Thickness) -> StudyTable {
+    let (epsilon, beta) = DRAG;
+    let mut s = StudyTable::new(
+        format!(
+            "Eqs 79-81 for the thin disk and the toy: each spins down rolling from steady b = 0 \
+             at {SPIN_DOWN_START} rad under eq 75's power (β = {beta}, ε = {} s²) as a torque; \
+             eq 79's C and eq 85's exponent fitted for {} < α < {} rad; the tilt where the \
+             fitted law α = A (t₀ − t)^(2/(β+2)) would need F_z < 0, on each disk's own centre \
+             height; the least F_z / m g the run reaches.",
+            scientific(epsilon, 2),
+            FIT_TILTS.0,
+            FIT_TILTS.1
+        ),
+        &[
+            "quantity",
+            "eq 79-80 printed, thin",
+            "thin",
+            "toy",
+            "toy / thin",
+        ],
+    );
+    let [thin, toy] = [&t.spin_down[0], &t.spin_down[1]];
+    let ratio = |f: fn(&SpinDownLaw) -> f64| places(f(toy) / f(thin), 3);
+    s.row(vec![
+        "C of eq 79 (1/s³)".into(),
+        scientific(t.eq79_c, 3),
+        scientific(thin.c, 3),
+        scientific(toy.c, 3),
+        ratio(|l| l.c),
+    ]);
+    s.row(vec![
+        "eq 85's exponent β + 3".into(),
+        places(beta + 3.0, 0),
+        places(thin.exponent, 3),
+        places(toy.exponent, 3),
+        "–".into(),
+    ]);
+    s.row(vec![
+        "tilt of lost contact (mrad)".into(),
+        format!("{} (eq 80, fitted C)", places(t.eq80_thin.1 * 1e3, 3)),
+        places(thin.loss_tilt * 1e3, 3),
+        places(toy.loss_tilt * 1e3, 3),
+        ratio(|l| l.loss_tilt),
+    ]);
+    s.row(vec![
+        "t₀ − t there (ms)".into(),
+        "–".into(),
+        places(thin.loss_before_t0 * 1e3, 3),
+        places(toy.loss_before_t0 * 1e3, 3),
+        ratio(|l| l.loss_before_t0),
+    ]);
+    s.row(vec![
+        "least F_z / m g in the run".into(),
+        "0 (eq 80)".into(),
+        places(thin.least_normal.0, 3),
+        places(toy.least_normal.0, 3),
+        "–".into(),
+    ]);
+    s
+}
+
+/// Sec. 7's fall "to about 60°": thin and toy from the thin disk's unstable band.
+fn fall(t: &Thickness) -> StudyTable {
+    let mut s = StudyTable::new(
+        format!(
+            "The fall from unstable steady motion (sec. 7, \"to about 60°\"): the steady roll \
+             at α₀ with b at the middle of the thin disk's unstable band (the fall study's \
+             starts), the tilt lowered by 1 mrad, rolling for {FALL_TIME} s; it falls to the first \
+             minimum of α once {FALL_LEFT}° below α₀. The toy's steady Ω₀ at that b is found by \
+             shooting; a dash: none within 0.3 to 5 times the thin disk's, or no fall."
+        ),
+        &[
+            "α₀ (°)",
+            "b / a",
+            "Ω₀ thin (rad/s)",
+            "Ω₀ toy (rad/s)",
+            "falls to, thin (°)",
+            "falls to, toy (°)",
+        ],
+    );
+    let deg = |x: Option<f64>| x.map_or("–".into(), |v| places(v, 1));
+    for f in &t.falls {
+        s.row(vec![
+            places(f.alpha0_deg, 0),
+            places(f.b_over_a, 3),
+            places(f.precession.0, 3),
+            f.precession.1.map_or("–".into(), |v| places(v, 3)),
+            deg(f.fell_to_deg.0),
+            deg(f.fell_to_deg.1),
+        ]);
+    }
+    s
+}
+
+/// The section, its tables ([`tables`]) numbered already; `figures` are the numbers of the
+/// agreement figures.
+pub fn section(t: &Toy, tables: Vec<StudyTable>, figures: &[usize]) -> StudySection {
+    StudySection {
+        title: "The real toy, and an independent program".into(),
+        summary: summary(t, &tables, figures),
+        output: output(&tables),
+        output_title: "The toy's tables as text".into(),
+        tables,
+    }
+}
+
+/// " (Table N)" for the `i`th of `tables`.
+fn cite(tables: &[StudyTable], i: usize) -> String {
+    tables
+        .get(i)
+        .map_or(String::new(), |t| format!(" (Table {})", t.number))
+}
+
+/// What was compared and found, and for each of the paper's numbers whether its conclusion
+/// survives for the toy.
+fn summary(t: &Toy, tables: &[StudyTable], figures: &[usize]) -> String {
+    let at = t
+        .peer
+        .iter()
+        .filter(|c| c.regularized.at_printed_digits())
+        .count();
+    let sharp = t
+        .peer
+        .iter()
+        .filter(|c| c.sharp.as_ref().is_some_and(Differences::at_printed_digits))
+        .count();
+    let worst = t
+        .peer
+        .iter()
+        .map(|c| c.regularized.tilt)
+        .fold(0.0, f64::max);
+    let figs = match figures {
+        [a, b, ..] => format!(" Figures {a} and {b} show the tilts and their differences."),
+        [a] => format!(" Figure {a} shows the differences."),
+        [] => String::new(),
+    };
+    let th = &t.thickness;
+    let change = |f: &dyn Fn(&studies::thickness::SteadyPair) -> f64| {
+        th.steady
+            .iter()
+            .map(|r| format!("{:+.1} % at {} rad", 100.0 * f(r), r.alpha0))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let [thin, toy] = [&th.spin_down[0], &th.spin_down[1]];
+    format!(
+        "M. Batista's Euler disk program (Fortran 90, DOP853; a disk of finite thickness with \
+         a rounded rim, Coulomb static and kinetic friction, rolling and boring resistance) was \
+         run on {n} scenes, thin and thick{t0}. With its source's slip regularization \
+         (ε = 1e-3 m/s), {at} of the {n} agree with this tool to the peer's printed digits; \
+         the largest tilt difference is {worst} rad, where the peer's regularized friction \
+         creeps at a slip this tool ends. With ε = 1e-7 m/s, {sharp} of the {ns} runs stored with it \
+         agree to the printed digits{t1}. The runs that start rolling ({restarted}) are compared \
+         on the clock of the peer's run: after a relock found at its first print step, which it \
+         does not carry out, the peer restarts from the state one print step on with its clock \
+         set back to 0, so its later rows are labelled one print step early (read from its \
+         records); so compared they agree to {rest} rad with ε = 1e-7 m/s, what the print step \
+         it slides at its start leaves. In the runs that end a slip, the peer with ε = 1e-7 m/s \
+         relocks only at a print step; the rest there is not traced further here. Its \
+         near-vertical smoothing (within 0.02 rad of upright) {smooth}, and its stops (the \
+         energy stop among them) {stops}.{figs} \
+         What the toy's thickness does to the paper's numbers{t2}: the steady precession of eq 29 \
+         changes by {om}, so eq 29 survives for the toy at the small tilts of a late spin-down \
+         and fails at large tilt; the frequency of small oscillations changes by {w}, the same \
+         pattern. The spin-down law's form survives (eq 85's exponent {te} for the toy, {ti} \
+         thin, β + 3 = 5), but its constant C is {cr} times the thin disk's (the printed eq 79's \
+         C is {pc} times the thin disk's simulated one: eq 73's 5/2 against the 3/2 of the \
+         disk's energy); the tilt where that law would lose contact is {lt} mrad for the toy \
+         against {li} mrad thin, yet neither run comes near it (least F_z / m g {nt} toy, {ni} \
+         thin), so the premise of eqs 80-81 fails for the toy as for the thin disk. From the \
+         thin disk's unstable steady rolls{t4}, the toy falls {falls}: \"to about 60°\" does not \
+         survive for the toy, which falls further. Not computed here: the condition on b of \
+         eq 30 for the toy.",
+        n = t.peer.len(),
+        t0 = cite(tables, 0),
+        t1 = cite(tables, 1),
+        t2 = tables
+            .get(2..4)
+            .map_or(String::new(), |t| format!(" ({})", crate::study_table::cite(t))),
+        smooth = {
+            let closest = t
+                .peer
+                .iter()
+                .map(|c| c.closest_to_upright)
+                .fold(f64::INFINITY, f64::min);
+            if closest < 0.02 {
+                format!(
+                    "acts in some run (it comes within {} rad of upright)",
+                    places(closest, 4)
+                )
+            } else {
+                format!(
+                    "acts in none (the closest any run comes is {} rad)",
+                    places(closest, 3)
+                )
+            }
+        },
+        stops = {
+            let early: Vec<&str> = t
+                .peer
+                .iter()
+                .filter(|c| c.regularized.peer_end < c.regularized.tool_end - 2e-3)
+                .map(|c| c.name.as_str())
+                .collect();
+            if early.is_empty() {
+                "end no record before this tool's run ends".to_string()
+            } else {
+                format!(
+                    "end the records of {} before this tool's run",
+                    early.join(", ")
+                )
+            }
+        },
+        ns = t.peer.iter().filter(|c| c.sharp.is_some()).count(),
+        restarted = t
+            .peer
+            .iter()
+            .filter(|c| c.restarted)
+            .map(|c| c.name.as_str())
+            .collect::<Vec<_>>()
+            .join(", "),
+        rest = scientific(
+            t.peer
+                .iter()
+                .filter(|c| c.restarted)
+                .filter_map(|c| c.sharp.as_ref().map(|d| d.tilt))
+                .fold(0.0, f64::max),
+            2
+        ),
+        worst = scientific(worst, 2),
+        om = change(&|r| r.toy / r.eq29 - 1.0),
+        w = change(&|r| r.thin_period / r.toy_period - 1.0),
+        te = places(toy.exponent, 2),
+        ti = places(thin.exponent, 2),
+        cr = places(toy.c / thin.c, 2),
+        pc = places(th.eq79_c / thin.c, 2),
+        lt = places(toy.loss_tilt * 1e3, 2),
+        li = places(thin.loss_tilt * 1e3, 2),
+        nt = places(toy.least_normal.0, 2),
+        t4 = cite(tables, 4),
+        falls = th
+            .falls
+            .iter()
+            .map(|f| match f.fell_to_deg {
+                (thin, Some(to)) => format!(
+                    "from {:.0}° to {:.1}° (thin: {})",
+                    f.alpha0_deg,
+                    to,
+                    thin.map_or("no fall".into(), |x| format!("{x:.1}°"))
+                ),
+                (_, None) => format!(
+                    "from {:.0}°: {}",
+                    f.alpha0_deg,
+                    if f.precession.1.is_none() {
+                        "no steady motion of the toy found at that b"
+                    } else {
+                        "no fall within the run"
+                    }
+                ),
+            })
+            .collect::<Vec<_>>()
+            .join("; "),
+        ni = places(thin.least_normal.0, 2),
+    )
+}
+
+/// `text` in ASCII, for the LaTeX appendix's listing: the Greek letters and sub- and
+/// superscripts of the tables spelled out.
+fn ascii(text: &str) -> String {
+    let mut o = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            'α' => o.push_str("alpha"),
+            'β' => o.push_str("beta"),
+            'ε' => o.push_str("eps"),
+            'ϖ' => o.push_str("varpi"),
+            'ω' => o.push_str("omega"),
+            'Ω' => o.push_str("Omega"),
+            'Δ' => o.push('d'),
+            'π' => o.push_str("pi"),
+            'μ' => o.push_str("mu"),
+            '₀' => o.push('0'),
+            '₁' => o.push('1'),
+            '²' => o.push_str("^2"),
+            '³' => o.push_str("^3"),
+            '°' => o.push_str(" deg"),
+            '−' | '–' => o.push('-'),
+            c if c.is_ascii() => o.push(c),
+            _ => o.push('?'),
+        }
+    }
+    o
+}
+
+/// The tables as text, for the disclosure and the appendix.
+fn output(tables: &[StudyTable]) -> String {
+    let mut o = String::new();
+    for t in tables {
+        let _ = writeln!(o, "Table {}: {}", t.number, t.caption);
+        let _ = writeln!(o, "  {}", t.columns.join(" | "));
+        for r in &t.rows {
+            let _ = writeln!(o, "  {}", r.join(" | "));
+        }
+        o.push('\n');
+    }
+    ascii(&o)
+}

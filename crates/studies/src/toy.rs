@@ -1,0 +1,25 @@
+//! The real toy for the report: the peer program's stored runs compared with this tool
+//! ([`crate::peer::stored`]) and what the toy's thickness does to the paper's numbers
+//! ([`crate::thickness`]).
+
+use crate::peer::stored::{compare_stored, StoredComparison};
+use crate::thickness::Thickness;
+use crate::StudyError;
+use serde::Serialize;
+
+/// The toy's studies.
+#[derive(Debug, Clone, PartialEq, Serialize, schemars::JsonSchema)]
+pub struct Toy {
+    /// Every stored peer run against this tool's run of its scene.
+    pub peer: Vec<StoredComparison>,
+    /// The toy against the thin disk.
+    pub thickness: Thickness,
+}
+
+/// Both studies.
+pub fn compute() -> Result<Toy, StudyError> {
+    Ok(Toy {
+        peer: compare_stored().map_err(|e| StudyError::Unusable(e.to_string()))?,
+        thickness: crate::thickness::compute()?,
+    })
+}
