@@ -46,7 +46,7 @@ pub fn tilt(t: &Toy) -> Result<Figure, FigureError> {
         let (_, peer_sharp) = tilts(sharp);
         plots.push(
             Plot::new(*name, "time t (s)", "tilt α (°)")
-                .with(Series::new("this tool", mine, Style::Line))
+                .with(Series::new("this tool", mine, Style::Points))
                 .with(Series::new("peer, ε = 1e-3 m/s", peer, Style::Squares))
                 .with(Series::new(
                     "peer, ε = 1e-7 m/s",
@@ -64,8 +64,9 @@ pub fn tilt(t: &Toy) -> Result<Figure, FigureError> {
         name: "peer-tilt",
         title: "The toy's tilt: this tool against M. Batista's program".into(),
         caption: format!(
-            "The tilt over time of the same scene run by this tool's sliding model (line) and by \
-             the peer program (its stored result.txt, every print time both reach), with its slip \
+            "The tilt over time of the same scene run by this tool's sliding model (dots) and by \
+             the peer program (its stored result.txt, every print time both reach; the samples \
+             are too sparse to follow the nutation, so they are not joined), with its slip \
              regularization as in its source (squares) and set to 1e-7 m/s (crosses). Left: {}. \
              Right: {}. Where a slip ends, the regularized peer creeps instead of rolling and \
              drifts away; with the regularization far below its source's the two agree closely.",
