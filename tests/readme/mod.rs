@@ -4,6 +4,7 @@
 //! `paper/claims.yaml`, `paper/corrections.yaml`; `docs.rs` holds those of `docs/`.
 
 mod docs;
+mod toy;
 mod written;
 
 use serde_json::Value;
