@@ -134,6 +134,60 @@ fn stands_out(v: &[f64], fs: f64, f: f64) -> bool {
     *ratios.select_nth_unstable_by(m, f64::total_cmp).1 > HUM_RATIO
 }
 
+/// Subtracts the mains lines `lines` (Hz) from `v` (sampled at `fs`) as [`remove_hum`] does,
+/// each line's amplitude and phase in a block fitted only on the samples `clear(j, f)` says are
+/// free of the disk (its harmonics far from the line), so that the disk's line sweeping through
+/// a mains line is not taken for hum and subtracted with it. A block with fewer than a quarter of
+/// its samples clear takes the fit of the nearest block that has them; with none, the line is
+/// left.
+pub fn remove_hum_clear(v: &mut [f64], fs: f64, lines: &[f64], clear: &dyn Fn(usize, f64) -> bool) {
+    let block = ((BLOCK_S * fs) as usize).max(1);
+    for &f in lines {
+        let w = TAU * f / fs;
+        let (sw, cw) = w.sin_cos();
+        let phasors = |start: usize| {
+            let (s0, c0) = (w * start as f64).sin_cos();
+            std::iter::successors(Some((c0, s0)), move |&(c, s)| {
+                Some((c * cw - s * sw, s * cw + c * sw))
+            })
+        };
+        let fits: Vec<Option<(f64, f64)>> = v
+            .chunks(block)
+            .enumerate()
+            .map(|(b, chunk)| {
+                let (mut cc, mut ss, mut cs, mut xc, mut xs, mut n) = (0.0, 0.0, 0.0, 0.0, 0.0, 0);
+                for (i, (x, (c, s))) in chunk.iter().zip(phasors(b * block)).enumerate() {
+                    if !clear(b * block + i, f) {
+                        continue;
+                    }
+                    cc += c * c;
+                    ss += s * s;
+                    cs += c * s;
+                    xc += x * c;
+                    xs += x * s;
+                    n += 1;
+                }
+                let det = cc * ss - cs * cs;
+                (4 * n >= chunk.len() && det.abs() >= 1e-12 * cc * ss)
+                    .then(|| ((xc * ss - xs * cs) / det, (xs * cc - xc * cs) / det))
+            })
+            .collect();
+        let nb = fits.len();
+        for (b, chunk) in v.chunks_mut(block).enumerate() {
+            let Some((a, bb)) = (0..nb)
+                .flat_map(|d| [b.checked_sub(d), Some(b + d)])
+                .flatten()
+                .find_map(|k| fits.get(k).copied().flatten())
+            else {
+                break;
+            };
+            for (x, (c, s)) in chunk.iter_mut().zip(phasors(b * block)) {
+                *x -= a * c + bb * s;
+            }
+        }
+    }
+}
+
 /// Subtracts the least-squares sinusoid of frequency `f` from `v`, block by block.
 fn subtract(v: &mut [f64], fs: f64, f: f64) {
     let block = ((BLOCK_S * fs) as usize).max(1);

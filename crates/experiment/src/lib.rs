@@ -50,6 +50,8 @@ pub mod motion_law;
 pub mod numbers;
 pub mod peak;
 pub mod peaks;
+pub mod phase_blocks;
+pub mod phase_fit;
 pub mod plausibility;
 pub mod pulse_drift;
 pub mod rates;
@@ -67,7 +69,9 @@ pub mod window;
 
 pub use analysis::{analyze, analyze_within, write_analysis, Analysis, AnalysisSettings};
 pub use artifacts::Artifacts;
-pub use audio::{analyze_sound, analyze_sound_within, write_sound_analysis, SoundAnalysis};
+pub use audio::{
+    analyze_sound, analyze_sound_within, write_sound_analysis, SoundAnalysis, SoundLaw,
+};
 pub use channel::{Channels, Recording, RecordingInfo};
 pub use csv::{parse_trace, read_trace};
 pub use error::ExperimentError;
