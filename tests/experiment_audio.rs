@@ -339,3 +339,76 @@ fn the_resampler_keeps_time() {
         assert!(lag.abs() < 30e-6, "{to}: {lag}");
     }
 }
+
+/// The tool's own sound encoded as MP3, Ogg Vorbis and M4A/AAC (`tests/fixtures/sound`, see its
+/// PROVENANCE.md) gives the beta and t0 of the WAV of the same samples within their stated
+/// sigma, with the file's format reported and the encoder's priming left out.
+#[test]
+fn compressed_recordings_give_the_wavs_fit() {
+    let dir = std::env::temp_dir().join(format!("rolling-disk-compressed-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let full = dir.join("full.wav");
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_rolling-disk"))
+        .args([
+            "experiment",
+            "simulate",
+            "spin-down",
+            "--rate",
+            "44100",
+            "--seed",
+            "1",
+        ])
+        .arg("--wav")
+        .arg(&full)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let rec = experiment::read_recording(&full, Channels::Mix).unwrap();
+    let cut = &rec.trace.v[132_300..];
+    let wav = parse_recording(
+        encode_sound(cut, 44_100, SoundFormat::Wav).unwrap(),
+        "cut.wav",
+        Channels::Mix,
+    )
+    .unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    let base = sound_of(&wav.trace).unwrap();
+    let b = base.law();
+    println!("WAV: {base}");
+    assert!(b.from_phase, "{base}");
+    let fixtures = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/sound");
+    for (file, format) in [
+        ("spin-down-end.mp3", "MP3"),
+        ("spin-down-end.ogg", "Ogg, Vorbis"),
+        ("spin-down-end.m4a", "M4A/MP4, Advanced Audio Coding"),
+    ] {
+        let r = experiment::read_recording(fixtures.join(file), Channels::Mix).unwrap();
+        assert!(
+            r.info.format.starts_with(format),
+            "{file}: {}",
+            r.info.format
+        );
+        assert_eq!(r.info.sample_rate, 44_100, "{file}");
+        assert_eq!(r.info.samples, cut.len(), "{file}: {}", r.info);
+        let a = sound_of(&r.trace).unwrap_or_else(|e| panic!("{file}: {e}"));
+        // The phase fit's own sigmas (the noise's, without the law's drift, which the WAV shares).
+        let f = a.phase.as_ref().unwrap_or_else(|| panic!("{file}: {a}"));
+        println!(
+            "{file} ({}): beta {:.5} +- {:.5} ({:+.2} sigma from the WAV's), t0 {:.6} +- {:.6} s \
+             ({:+.2} sigma)",
+            r.info.format,
+            f.beta,
+            f.beta_sigma,
+            (f.beta - b.beta) / f.beta_sigma,
+            f.t0,
+            f.t0_sigma,
+            (f.t0 - b.t0) / f.t0_sigma
+        );
+        assert!((f.beta - b.beta).abs() < f.beta_sigma, "{file}: {a}");
+        assert!((f.t0 - b.t0).abs() < f.t0_sigma, "{file}: {a}");
+    }
+}

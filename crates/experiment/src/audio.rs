@@ -136,11 +136,12 @@ fn agrees(p: &PhaseFit, f: &TrackFit) -> bool {
 /// Eq 79's parameters as a sound analysis states them.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct SoundLaw {
-    /// $\beta$ and its standard uncertainty.
+    /// $\beta$ and its total standard uncertainty (the fit's and, where eq 79 drifts over the
+    /// record, the law's).
     pub beta: f64,
     /// (see `beta`)
     pub beta_sigma: f64,
-    /// $t_0$ (s) and its standard uncertainty.
+    /// $t_0$ (s) and its total standard uncertainty.
     pub t0: f64,
     /// (s)
     pub t0_sigma: f64,
@@ -345,7 +346,16 @@ impl fmt::Display for SoundAnalysis {
                 f,
                 "  eq 79 on the phase (the result): beta = {:.5} +- {:.5}, t0 = {:.6} +- {:.6} s, ln C = {:.4} +- {:.4} ({:.1} turns in {} blocks, rms residual {:.4} rad, chi2/dof {:.2}; errors scaled by the residuals)",
                 p.beta, p.beta_sigma, p.t0, p.t0_sigma, p.ln_c, p.ln_c_sigma, p.turns, p.n, p.rms, p.chi2_dof
-            )?,
+            )
+            .and_then(|()| match &p.law {
+                Some(l) if l.drifts => writeln!(
+                    f,
+                    "  the law across the record: the later {} blocks (from t = {:.4} s) give beta = {:.5} +- {:.5}, t0 = {:.6} +- {:.6} s; eq 79 drifts over the record, so the shifts are the law's systematic uncertainty: beta = {:.5} +- {:.5} (stat) +- {:.5} (law), t0 = {:.6} +- {:.6} (stat) +- {:.6} (law) s",
+                    l.cycles, l.t_from, l.beta, l.beta_sigma, l.t0, l.t0_sigma,
+                    p.beta, p.beta_sigma, l.beta_systematic(), p.t0, p.t0_sigma, l.t0_systematic()
+                ),
+                _ => Ok(()),
+            })?,
             (None, Some(why)) => writeln!(f, "  phase not used: {why}")?,
             (None, None) => {}
         }
@@ -379,9 +389,9 @@ impl SoundAnalysis {
         match &self.phase {
             Some(p) => SoundLaw {
                 beta: p.beta,
-                beta_sigma: p.beta_sigma,
+                beta_sigma: p.beta_total(),
                 t0: p.t0,
-                t0_sigma: p.t0_sigma,
+                t0_sigma: p.t0_total(),
                 from_phase: true,
             },
             None => SoundLaw {

@@ -47,6 +47,7 @@ pub mod mechanisms;
 pub mod model_choice;
 pub mod models;
 pub mod motion_law;
+pub mod mp4_edit;
 pub mod numbers;
 pub mod peak;
 pub mod peaks;

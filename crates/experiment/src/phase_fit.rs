@@ -14,10 +14,16 @@
 //! each fit becomes the next reference, so that the offsets shrink to the noise and each block's
 //! mean offset sits at its centroid; the blocks near $t_0$ reach up to five of the last fit's
 //! $\sigma_{t_0}$ (and at least one millisecond) before it.
+//!
+//! **The law's own error.** The heading is refitted on the later half of the blocks; where
+//! $\beta$ or $t_0$ moves by more than [`DRIFT_SIGMAS`] of the half's uncertainty, the shift is
+//! stated as the law's systematic uncertainty, as for the light signal
+//! ([`law_stability`](crate::law_stability)).
 
 use crate::band::Row;
 use crate::fit::phase;
 use crate::hum::remove_hum_clear;
+use crate::law_stability::{LawStability, DRIFT_SIGMAS};
 use crate::least_squares::{solve, FitError, Problem, Scale};
 use crate::phase_blocks::{blocks, Block, BlockSettings, Samples};
 use nalgebra::SVector;
@@ -99,6 +105,22 @@ pub struct PhaseFit {
     pub n: usize,
     /// The blocks.
     pub points: Vec<PhasePoint>,
+    /// The later half's fit against this one: whether eq 79 drifts over the record.
+    pub law: Option<LawStability>,
+}
+
+impl PhaseFit {
+    /// $\beta$'s total standard uncertainty: the fit's and the law's in quadrature.
+    pub fn beta_total(&self) -> f64 {
+        let law = self.law.as_ref().map_or(0.0, LawStability::beta_systematic);
+        self.beta_sigma.hypot(law)
+    }
+
+    /// $t_0$'s total standard uncertainty (s): the fit's and the law's in quadrature.
+    pub fn t0_total(&self) -> f64 {
+        let law = self.law.as_ref().map_or(0.0, LawStability::t0_systematic);
+        self.t0_sigma.hypot(law)
+    }
 }
 
 /// Fits eq 79's heading to the phase of `rec` from `first` (s, where the pitch track first holds
@@ -127,13 +149,45 @@ pub fn fit_phase(
             (p[1] - (5.0 * sigma_t0).max(1e-3)).min(rec.t_start + rec.x.len() as f64 * rec.dt);
         let bl = blocks(rec, &p, shift, (first, end), round == 0, settings);
         FitError::at_least("phase blocks", bl.len(), 12, "")?;
-        let (fit, p4) = fit_blocks(&bl, &p, shift)?;
+        let (mut fit, p4) = fit_blocks(&bl, &p, shift)?;
+        if round + 1 == ROUNDS {
+            fit.law = later_half(&bl, &p, shift, &fit);
+        }
         p = SVector::<f64, 3>::new(p4[0], p4[1], p4[2]);
         shift = p4[3];
         sigma_t0 = fit.t0_sigma;
         result = Some(fit);
     }
     result.ok_or_else(|| FitError::Numerics("no round".into()))
+}
+
+/// The heading refitted on the later half of the blocks `bl` (demodulated against `p` plus
+/// `shift`), against the whole fit `whole`: where $\beta$ or $t_0$ moves by more than
+/// [`DRIFT_SIGMAS`] of the later half's own uncertainty, eq 79 drifts over the record and the
+/// shift is the law's systematic uncertainty ([`law_stability`](crate::law_stability), as for
+/// the light). `None` when the half has too few blocks to fit.
+fn later_half(
+    bl: &[Block],
+    p: &SVector<f64, 3>,
+    shift: f64,
+    whole: &PhaseFit,
+) -> Option<LawStability> {
+    let h = bl.len() / 2;
+    let (half, _) = fit_blocks(&bl[h..], p, shift).ok()?;
+    let beta_shift = half.beta - whole.beta;
+    let t0_shift = half.t0 - whole.t0;
+    Some(LawStability {
+        cycles: bl.len() - h,
+        t_from: bl[h].a,
+        beta: half.beta,
+        beta_sigma: half.beta_sigma,
+        t0: half.t0,
+        t0_sigma: half.t0_sigma,
+        beta_shift,
+        t0_shift,
+        drifts: beta_shift.abs() > DRIFT_SIGMAS * half.beta_sigma
+            || t0_shift.abs() > DRIFT_SIGMAS * half.t0_sigma,
+    })
 }
 
 impl PhaseFit {
@@ -237,6 +291,7 @@ fn fit_blocks(
                 snr: b.snr,
             })
             .collect(),
+        law: None,
     };
     Ok((fit, s.p))
 }
