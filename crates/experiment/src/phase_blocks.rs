@@ -120,10 +120,11 @@ fn sums(
     let mut hi = [Complex::new(0.0, 0.0); HARMONICS];
     let (mut sw, mut swt, mut w2) = (0.0, 0.0, 0.0);
     let mut e = [Complex::new(0.0, 0.0); 2 * HARMONICS + 2];
+    let mut heading = Hermite::new(p, t_start, dt, j0, j1);
     for (j, &xj) in x.iter().enumerate().take(j1 + 1).skip(j0) {
         let t = t_start + j as f64 * dt;
         // dPhi = Omega dt: each sample weighs as the heading it spans.
-        let (phi, w, _) = phase(p, t);
+        let (phi, w) = heading.at(j);
         let (s, c) = (-0.5 * phi).sin_cos();
         // e[k] = exp(-i k phi / 2)
         e[0] = Complex::new(1.0, 0.0);
@@ -149,6 +150,74 @@ fn sums(
         noise: probe,
         t: if sw > 0.0 { swt / sw } else { 0.5 * (ta + tb) },
         w2,
+    }
+}
+
+/// Samples between the nodes at which the heading is evaluated exactly.
+const STRIDE: usize = 16;
+
+/// Eq 79's heading and rate at samples `j0..=j1`, exact at every [`STRIDE`]-th sample and cubic
+/// (Hermite, from the heading and the rate at both ends) between: over $h$ = 16 samples the
+/// error is about $h^4 \Phi^{(4)}/384$, below $10^{-5}$ rad at 8 kS/s even 5 ms before $t_0$.
+struct Hermite<'a> {
+    p: &'a SVector<f64, 3>,
+    t_start: f64,
+    dt: f64,
+    j1: usize,
+    /// The current span's first and last sample, and the heading and rate at both.
+    a: usize,
+    b: usize,
+    ends: [(f64, f64); 2],
+}
+
+impl<'a> Hermite<'a> {
+    fn new(p: &'a SVector<f64, 3>, t_start: f64, dt: f64, j0: usize, j1: usize) -> Self {
+        let mut h = Self {
+            p,
+            t_start,
+            dt,
+            j1,
+            a: j0,
+            b: j0,
+            ends: [(0.0, 0.0); 2],
+        };
+        h.span(j0);
+        h
+    }
+
+    /// The exact heading and rate at sample `j`.
+    fn exact(&self, j: usize) -> (f64, f64) {
+        let (phi, omega, _) = phase(self.p, self.t_start + j as f64 * self.dt);
+        (phi, omega)
+    }
+
+    /// Starts the span at sample `a`.
+    fn span(&mut self, a: usize) {
+        self.a = a;
+        self.b = (a + STRIDE).min(self.j1.max(a + 1));
+        self.ends = [self.exact(a), self.exact(self.b)];
+    }
+
+    /// The heading and the rate at sample `j` (non-decreasing from call to call).
+    fn at(&mut self, j: usize) -> (f64, f64) {
+        if j >= self.b && j > self.a {
+            self.span(j);
+        }
+        if j == self.a {
+            return self.ends[0];
+        }
+        let h = (self.b - self.a) as f64 * self.dt;
+        let u = (j - self.a) as f64 / (self.b - self.a) as f64;
+        let [(f0, w0), (f1, w1)] = self.ends;
+        let (u2, u3) = (u * u, u * u * u);
+        let phi = (2.0 * u3 - 3.0 * u2 + 1.0) * f0
+            + (u3 - 2.0 * u2 + u) * h * w0
+            + (-2.0 * u3 + 3.0 * u2) * f1
+            + (u3 - u2) * h * w1;
+        let omega = ((6.0 * u2 - 6.0 * u) * f0 + (-6.0 * u2 + 6.0 * u) * f1) / h
+            + (3.0 * u2 - 4.0 * u + 1.0) * w0
+            + (3.0 * u2 - 2.0 * u) * w1;
+        (phi, omega)
     }
 }
 
