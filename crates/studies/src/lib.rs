@@ -20,6 +20,7 @@ pub mod precision;
 pub mod runs;
 pub mod sliding;
 pub mod slip_stick;
+pub mod sound;
 pub mod synthetic;
 
 pub use error::StudyError;

@@ -18,6 +18,7 @@ mod friction;
 mod lab_frame;
 mod paths;
 mod precision;
+mod sound;
 mod spin_down;
 
 pub use checks_run::Checks;
@@ -29,6 +30,7 @@ pub use friction::Friction;
 pub use lab_frame::LabFrame;
 pub use paths::Paths;
 pub use precision::Precision;
+pub use sound::Sound;
 pub use spin_down::SpinDown;
 
 /// One step of a study that counts its work: `done` of `total`.
@@ -78,6 +80,7 @@ impl<S: Study> Run for S {
 pub const ALL: &[&dyn Run] = &[
     &Checks,
     &Experiment,
+    &Sound,
     &Precision,
     &EnergyDrift,
     &Frequency,
