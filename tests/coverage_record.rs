@@ -48,16 +48,30 @@ fn the_stored_coverage_studies_are_this_codes() {
     }
 }
 
-/// Runs the studies and, with ROLLING_DISK_BLESS=1, stores them. Several minutes.
+/// Runs the studies and, with ROLLING_DISK_BLESS=1, stores them; with ROLLING_DISK_STUDY=NAME,
+/// runs that study alone and keeps the others as stored (the fast test above proves them
+/// current). Tens of minutes for all on two cores.
 #[test]
-#[ignore = "slow: 900 light recordings and 200 sounds, a few minutes; run with ROLLING_DISK_BLESS=1 to store them"]
+#[ignore = "slow: 900 light recordings and 200 sounds, tens of minutes; run with ROLLING_DISK_BLESS=1 to store them"]
 fn record_the_coverage_studies() {
     let date = std::env::var("ROLLING_DISK_DATE").unwrap_or_else(|_| "undated".into());
+    let only = std::env::var("ROLLING_DISK_STUDY").ok();
+    let kept = stored().unwrap_or_default();
     let command = "ROLLING_DISK_BLESS=1 cargo test --release --test integration coverage_record:: -- --ignored";
     let studies: Vec<StoredCoverage> = STUDIES
         .iter()
         .map(|&(name, runs, seed0, artifacts, sound)| {
-            let s = run(name, (runs, seed0), (artifacts, sound), command, &date).unwrap();
+            if let Some(old) = kept
+                .iter()
+                .find(|k| k.recordings == name && only.as_deref().is_some_and(|o| o != name))
+            {
+                return old.clone();
+            }
+            let command = match &only {
+                Some(o) => format!("ROLLING_DISK_STUDY='{o}' {command}"),
+                None => command.to_string(),
+            };
+            let s = run(name, (runs, seed0), (artifacts, sound), &command, &date).unwrap();
             println!("{}", s.line());
             s
         })
