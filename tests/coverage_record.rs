@@ -1,35 +1,37 @@
 //! The stored coverage studies the report draws (`snapshots/coverage.json`) are this code's:
 //! the first recordings of each are run again and must give the same pulls.
 
-use experiment::coverage::coverage;
-use experiment::coverage_record::{run, stored, StoredCoverage};
+use experiment::coverage_record::{run, stored, study, StoredCoverage};
 
 /// The studies, as `ROLLING_DISK_BLESS=1 cargo test --release --test integration coverage_record:: --
 /// --ignored` runs and stores them: 400 clean recordings (seeds 5000-5399) and 500 with every
-/// artifact (seeds 10000-10499), the same as the full studies of `tests/experiment.rs`.
-const STUDIES: [(&str, usize, u64, bool); 2] = [
-    ("clean", 400, 5000, false),
-    ("artifact-laden", 500, 10_000, true),
+/// artifact (seeds 10000-10499), the same as the full studies of `tests/experiment.rs`, and 200
+/// phone sounds with hum (seeds 20000-20199, `experiment::sound_coverage`).
+const STUDIES: [(&str, usize, u64, bool, bool); 3] = [
+    ("clean", 400, 5000, false, false),
+    ("artifact-laden", 500, 10_000, true, false),
+    ("phone sound", 200, 20_000, false, true),
 ];
 
 #[test]
 fn the_stored_coverage_studies_are_this_codes() {
     let s = stored().unwrap();
     assert_eq!(s.len(), STUDIES.len(), "run the studies: see STUDIES");
-    for (st, (name, runs, seed0, artifacts)) in s.iter().zip(STUDIES) {
+    for (st, (name, runs, seed0, artifacts, sound)) in s.iter().zip(STUDIES) {
         assert_eq!(
             (
                 st.recordings.as_str(),
                 st.coverage.runs,
                 st.seed0,
-                st.artifacts
+                st.artifacts,
+                st.sound
             ),
-            (name, runs, seed0, artifacts)
+            (name, runs, seed0, artifacts, sound)
         );
         assert_eq!(st.coverage.beta_pulls.len() + st.coverage.refused, runs);
         // The first recordings again: the same pulls (a refusal among them would shift the
         // stored ones, and fails here too).
-        let again = coverage(3, seed0, artifacts).unwrap();
+        let again = study(3, seed0, artifacts, sound).unwrap();
         assert_eq!(again.refused, 0, "{}", st.line());
         for (a, b) in [
             (&again.beta_pulls, &st.coverage.beta_pulls),
@@ -46,16 +48,30 @@ fn the_stored_coverage_studies_are_this_codes() {
     }
 }
 
-/// Runs the studies and, with ROLLING_DISK_BLESS=1, stores them. Several minutes.
+/// Runs the studies and, with ROLLING_DISK_BLESS=1, stores them; with ROLLING_DISK_STUDY=NAME,
+/// runs that study alone and keeps the others as stored (the fast test above proves them
+/// current). Tens of minutes for all on two cores.
 #[test]
-#[ignore = "slow: 900 recordings; run with ROLLING_DISK_BLESS=1 to store them"]
+#[ignore = "slow: 900 light recordings and 200 sounds, tens of minutes; run with ROLLING_DISK_BLESS=1 to store them"]
 fn record_the_coverage_studies() {
     let date = std::env::var("ROLLING_DISK_DATE").unwrap_or_else(|_| "undated".into());
+    let only = std::env::var("ROLLING_DISK_STUDY").ok();
+    let kept = stored().unwrap_or_default();
     let command = "ROLLING_DISK_BLESS=1 cargo test --release --test integration coverage_record:: -- --ignored";
     let studies: Vec<StoredCoverage> = STUDIES
         .iter()
-        .map(|&(name, runs, seed0, artifacts)| {
-            let s = run(name, runs, seed0, artifacts, command, &date).unwrap();
+        .map(|&(name, runs, seed0, artifacts, sound)| {
+            if let Some(old) = kept
+                .iter()
+                .find(|k| k.recordings == name && only.as_deref().is_some_and(|o| o != name))
+            {
+                return old.clone();
+            }
+            let command = match &only {
+                Some(o) => format!("ROLLING_DISK_STUDY='{o}' {command}"),
+                None => command.to_string(),
+            };
+            let s = run(name, (runs, seed0), (artifacts, sound), &command, &date).unwrap();
             println!("{}", s.line());
             s
         })

@@ -26,8 +26,9 @@ fn sound_of(s: &Trace) -> Result<SoundAnalysis, String> {
     analyze_sound(s, &TrackSettings::default(), &Plausibility::default()).map_err(|e| e.to_string())
 }
 
-/// `v` at `from` S/s resampled to `to` S/s (rubato's windowed sinc), its delay removed so that
-/// sample j is at time j/to.
+/// `v` at `from` S/s resampled to `to` S/s (rubato's windowed sinc), sample j at time j/to: the
+/// resampler's output starts aligned with its input (its `output_delay` is already taken out; see
+/// `the_resampler_keeps_time`).
 fn resample(v: &[f64], from: u32, to: u32) -> Vec<f64> {
     let params = SincInterpolationParameters {
         sinc_len: 256,
@@ -38,7 +39,6 @@ fn resample(v: &[f64], from: u32, to: u32) -> Vec<f64> {
     };
     let ratio = f64::from(to) / f64::from(from);
     let mut r = SincFixedIn::<f64>::new(ratio, 1.0, params, 4096, 1).unwrap();
-    let delay = r.output_delay();
     let mut out: Vec<f64> = Vec::with_capacity((v.len() as f64 * ratio) as usize + 8192);
     let mut pos = 0;
     while pos + r.input_frames_next() <= v.len() {
@@ -52,7 +52,6 @@ fn resample(v: &[f64], from: u32, to: u32) -> Vec<f64> {
         out.extend(&r.process_partial::<&[f64]>(None, None).unwrap()[0]);
     }
     let want = (v.len() as f64 * ratio).round() as usize;
-    out.drain(..delay.min(out.len()));
     out.truncate(want);
     out
 }
@@ -62,7 +61,6 @@ fn resample(v: &[f64], from: u32, to: u32) -> Vec<f64> {
 /// and FLAC: each gives beta and t0 within their stated sigma of the 48 kHz analysis, and the
 /// truth within 3 sigma.
 #[test]
-#[ignore = "not met: at 22.05 kHz t0 moves by 1.6 of its sigmas (-3.1 ms) from the 48 kHz analysis"]
 fn the_same_sound_at_every_rate_and_coding_gives_the_same_fit() {
     let mic = Microphone::phone(48_000, 5);
     let art = Artifacts {
@@ -73,7 +71,8 @@ fn the_same_sound_at_every_rate_and_coding_gives_the_same_fit() {
     let truth = made.truth.clone().unwrap();
     let base = sound_of(&made).unwrap();
     println!("48 kHz as made: {base}");
-    let (b0, t0) = (&base.fit, truth.t0);
+    let (b0, t0) = (base.law(), truth.t0);
+    assert!(b0.from_phase, "{base}");
     for rate in [22_050, 44_100, 48_000, 96_000] {
         let v = if rate == 48_000 {
             made.v.clone()
@@ -92,10 +91,11 @@ fn the_same_sound_at_every_rate_and_coding_gives_the_same_fit() {
             assert_eq!(rec.info.sample_rate, rate);
             assert_eq!(rec.info.samples, v.len());
             let a = sound_of(&rec.trace).unwrap_or_else(|e| panic!("{name}: {e}"));
-            let f = &a.fit;
+            let f = a.law();
+            assert!(f.from_phase, "{name}: {a}");
             println!(
-                "{name:>16} ({}): beta {:.4} +- {:.4} (vs 48 kHz {:+.2} sigma, truth {:+.2}), \
-                 t0 {:.5} +- {:.5} s (vs 48 kHz {:+.2} sigma, truth {:+.2}), n {}",
+                "{name:>16} ({}): beta {:.5} +- {:.5} (vs 48 kHz {:+.2} sigma, truth {:+.2}), \
+                 t0 {:.6} +- {:.6} s (vs 48 kHz {:+.2} sigma, truth {:+.2})",
                 rec.info.format,
                 f.beta,
                 f.beta_sigma,
@@ -105,7 +105,6 @@ fn the_same_sound_at_every_rate_and_coding_gives_the_same_fit() {
                 f.t0_sigma,
                 (f.t0 - b0.t0) / f.t0_sigma,
                 (f.t0 - t0) / f.t0_sigma,
-                f.n
             );
             assert!((f.beta - b0.beta).abs() < f.beta_sigma, "{name}: {a}");
             assert!((f.t0 - b0.t0).abs() < f.t0_sigma, "{name}: {a}");
@@ -133,6 +132,11 @@ fn exact_law_sounds_with_room_noise_and_hum_give_beta_and_t0() {
         let a = sound_of(&s).unwrap();
         println!("{a}");
         let t0 = s.truth.as_ref().unwrap().t0;
+        let l = a.law();
+        assert!(l.from_phase, "{a}");
+        assert!((l.beta - beta).abs() < 0.05, "{a}");
+        assert!((l.t0 - t0).abs() < 3e-3, "{a}");
+        // The pitch track's fit, from which the phase's starts, meets the same bounds.
         assert!((a.fit.beta - beta).abs() < 0.05, "{a}");
         assert!((a.fit.t0 - t0).abs() < 3e-3, "{a}");
         assert!(!a.track.hum.is_empty(), "the hum was not found: {a}");
@@ -140,25 +144,38 @@ fn exact_law_sounds_with_room_noise_and_hum_give_beta_and_t0() {
 }
 
 /// Beta's sigma from the sound of a motion against the light signal's of the same motion
-/// (eq 79 exactly, beta = 2, the scope's record: 10 s ending at 7.27 s).
+/// (eq 79 exactly, beta = 2, the scope's record: 10 s ending at 7.27 s), the sound's sigma the
+/// mean over four noise seeds (one seed's sandwich estimate varies by a third).
 #[test]
-#[ignore = "not met: beta's sigma from sound is 24 times the light signal's (0.0036 against 0.00015)"]
+#[ignore = "not met: beta's sigma from sound is 2.3 times the light signal's (mean 0.00035 against 0.00015): the phase's blocks sit near the bound that the simulated room noise sets"]
 fn beta_from_sound_is_about_as_precise_as_from_light() {
     let l = law(2.0);
     let light = law_trace(&l, &Disk::uniform(0.0375), &LightModel::default()).unwrap();
     let la = analyze(&light, &AnalysisSettings::default()).unwrap();
-    let mic = Microphone {
-        sample_rate: 48_000,
-        samples: 480_000,
-        voice: Voice::phone(),
-        noise: 0.003,
-        ..Microphone::default()
-    };
-    let sa = sound_of(&law_sound(&l, &mic, &Artifacts::none()).unwrap()).unwrap();
-    let ratio = sa.fit.beta_sigma / la.eq84.beta_sigma;
+    let mut sigmas = Vec::new();
+    for seed in 1..=4 {
+        let mic = Microphone {
+            sample_rate: 48_000,
+            samples: 480_000,
+            voice: Voice::phone(),
+            noise: 0.003,
+            seed,
+            ..Microphone::default()
+        };
+        let sa = sound_of(&law_sound(&l, &mic, &Artifacts::none()).unwrap()).unwrap();
+        let s = sa.law();
+        assert!(s.from_phase, "{sa}");
+        println!(
+            "seed {seed}: beta from sound {:.5} +- {:.5}",
+            s.beta, s.beta_sigma
+        );
+        sigmas.push(s.beta_sigma);
+    }
+    let mean = sigmas.iter().sum::<f64>() / sigmas.len() as f64;
+    let ratio = mean / la.eq84.beta_sigma;
     println!(
-        "beta from light {:.4} +- {:.4}, from sound {:.4} +- {:.4}: ratio of sigmas {ratio:.2}",
-        la.eq84.beta, la.eq84.beta_sigma, sa.fit.beta, sa.fit.beta_sigma
+        "beta from light {:.5} +- {:.5}; from sound, mean sigma {mean:.5}: ratio of sigmas {ratio:.2}",
+        la.eq84.beta, la.eq84.beta_sigma
     );
     assert!(ratio < 2.0, "{ratio}");
 }
@@ -298,4 +315,100 @@ fn short_wavs_and_channels_are_handled_as_sound() {
         .unwrap_err()
         .to_string();
     assert!(e.starts_with("x.mp3: ") && e.contains("export"), "{e}");
+}
+
+/// The resampling keeps time: a 7 Hz line's phase after resampling from 48 kHz lies within
+/// 30 us of the original's (t0's sigma from sound is about 80 us).
+#[test]
+fn the_resampler_keeps_time() {
+    for to in [22_050u32, 44_100, 96_000] {
+        let w = std::f64::consts::TAU * 7.0;
+        let v: Vec<f64> = (0..96_000)
+            .map(|j| (w * j as f64 / 48_000.0).sin())
+            .collect();
+        let r = resample(&v, 48_000, to);
+        // The phase over one second (seven whole cycles) in the middle.
+        let (mut c, mut s) = (0.0, 0.0);
+        for (j, x) in r.iter().enumerate().skip(to as usize / 2).take(to as usize) {
+            let ph = w * j as f64 / f64::from(to);
+            c += x * ph.cos();
+            s += x * ph.sin();
+        }
+        let lag = -c.atan2(s) / w;
+        println!("{to} S/s: lag {:+.1} us", 1e6 * lag);
+        assert!(lag.abs() < 30e-6, "{to}: {lag}");
+    }
+}
+
+/// The tool's own sound encoded as MP3, Ogg Vorbis and M4A/AAC (`tests/fixtures/sound`, see its
+/// PROVENANCE.md) gives the beta and t0 of the WAV of the same samples within their stated
+/// sigma, with the file's format reported and the encoder's priming left out.
+#[test]
+fn compressed_recordings_give_the_wavs_fit() {
+    let dir = std::env::temp_dir().join(format!("rolling-disk-compressed-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let full = dir.join("full.wav");
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_rolling-disk"))
+        .args([
+            "experiment",
+            "simulate",
+            "spin-down",
+            "--rate",
+            "44100",
+            "--seed",
+            "1",
+        ])
+        .arg("--wav")
+        .arg(&full)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let rec = experiment::read_recording(&full, Channels::Mix).unwrap();
+    let cut = &rec.trace.v[132_300..];
+    let wav = parse_recording(
+        encode_sound(cut, 44_100, SoundFormat::Wav).unwrap(),
+        "cut.wav",
+        Channels::Mix,
+    )
+    .unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    let base = sound_of(&wav.trace).unwrap();
+    let b = base.law();
+    println!("WAV: {base}");
+    assert!(b.from_phase, "{base}");
+    let fixtures = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/sound");
+    for (file, format) in [
+        ("spin-down-end.mp3", "MP3"),
+        ("spin-down-end.ogg", "Ogg, Vorbis"),
+        ("spin-down-end.m4a", "M4A/MP4, Advanced Audio Coding"),
+    ] {
+        let r = experiment::read_recording(fixtures.join(file), Channels::Mix).unwrap();
+        assert!(
+            r.info.format.starts_with(format),
+            "{file}: {}",
+            r.info.format
+        );
+        assert_eq!(r.info.sample_rate, 44_100, "{file}");
+        assert_eq!(r.info.samples, cut.len(), "{file}: {}", r.info);
+        let a = sound_of(&r.trace).unwrap_or_else(|e| panic!("{file}: {e}"));
+        // The phase fit's own sigmas (the noise's, without the law's drift, which the WAV shares).
+        let f = a.phase.as_ref().unwrap_or_else(|| panic!("{file}: {a}"));
+        println!(
+            "{file} ({}): beta {:.5} +- {:.5} ({:+.2} sigma from the WAV's), t0 {:.6} +- {:.6} s \
+             ({:+.2} sigma)",
+            r.info.format,
+            f.beta,
+            f.beta_sigma,
+            (f.beta - b.beta) / f.beta_sigma,
+            f.t0,
+            f.t0_sigma,
+            (f.t0 - b.t0) / f.t0_sigma
+        );
+        assert!((f.beta - b.beta).abs() < f.beta_sigma, "{file}: {a}");
+        assert!((f.t0 - b.t0).abs() < f.t0_sigma, "{file}: {a}");
+    }
 }

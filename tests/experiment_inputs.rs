@@ -342,10 +342,10 @@ fn the_cli_simulates_and_analyses_a_wav_and_refuses_noise() {
     let text = String::from_utf8_lossy(&out.stdout);
     println!("{text}{}", String::from_utf8_lossy(&out.stderr));
     assert!(
-        out.status.success() && text.contains("eq 79: beta"),
+        out.status.success() && text.contains("eq 79 on the phase (the result): beta"),
         "{text}"
     );
-    // --out holds the analysis and the track, one row per frame of the track.
+    // --out holds the analysis, the track (one row per frame) and the phase (one row per block).
     let json = std::fs::read_to_string(dir.join("analysis.json")).unwrap();
     let v: serde_json::Value = serde_json::from_str(&json).unwrap();
     let frames = v["track"]["points"].as_array().unwrap().len();
@@ -353,6 +353,11 @@ fn the_cli_simulates_and_analyses_a_wav_and_refuses_noise() {
     assert!(frames > 6, "{frames} frames");
     assert_eq!(track.lines().count(), frames + 1);
     assert!(track.starts_with("t_start_s,t_end_s,omega_rad_s,sigma_rad_s,check_rad_s,snr\n"));
+    let blocks = v["phase"]["points"].as_array().unwrap().len();
+    let phase = std::fs::read_to_string(dir.join("phase.csv")).unwrap();
+    assert!(blocks > 12, "{blocks} blocks");
+    assert_eq!(phase.lines().count(), blocks + 1);
+    assert!(phase.starts_with("t_start_s,t_end_s,t_mean_s,turns,residual_rad,sigma_rad,snr\n"));
     let noise = temp("noise.csv");
     let rows: String = (0..5000)
         .map(|j| {

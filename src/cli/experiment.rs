@@ -254,7 +254,11 @@ fn analyse(
         a.recording = Some(rec.info);
         let text = if json { a.to_json() } else { a.to_string() };
         let files = match set {
-            Some(set) => experiment::write_sound_analysis(&a, set.dir())?,
+            Some(set) => {
+                let mut f = experiment::write_sound_analysis(&a, set.dir())?;
+                f.extend(crate::cli::sound_figures::write(&a, &rec.trace, set.dir())?);
+                f
+            }
             None => Vec::new(),
         };
         (text, files)

@@ -13,4 +13,5 @@ pub mod precision;
 pub mod report;
 pub mod scenes;
 pub mod simulate;
+pub mod sound_figures;
 pub mod stdout;

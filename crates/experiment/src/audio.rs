@@ -18,6 +18,8 @@ use crate::error::ExperimentError;
 use crate::fit::{start84, FixedBeta};
 use crate::least_squares::{solve, FitError, Problem, Scale};
 use crate::models::{compare, Comparison};
+use crate::phase_blocks::{BlockSettings, Samples};
+use crate::phase_fit::{fit_phase, PhaseFit};
 use crate::plausibility::{Evidence, Plausibility, Verdict};
 use crate::trace::{Trace, Truth};
 use crate::track::{frequency_track, FrequencyTrack, TrackSettings};
@@ -109,14 +111,42 @@ pub struct SoundAnalysis {
     pub recording: Option<crate::channel::RecordingInfo>,
     /// The track.
     pub track: FrequencyTrack,
-    /// The fit.
+    /// Eq 79 fitted to the pitch track.
     pub fit: TrackFit,
+    /// Eq 79's heading fitted to the sound's phase, started from `fit` (the analysis's result).
+    pub phase: Option<PhaseFit>,
+    /// Why the phase was not fitted, when it was not.
+    pub phase_refused: Option<String>,
     /// Model choice.
     pub models: Comparison,
     /// The spin-down checks.
     pub verdict: Verdict,
     /// The truth, for synthetic recordings.
     pub truth: Option<Truth>,
+}
+
+/// How many of the pitch track's sigmas the phase's $\beta$ and $t_0$ may lie from the track's.
+pub const AGREE: f64 = 5.0;
+
+/// Whether the phase's fit lies within [`AGREE`] of the track's sigmas of the track's fit.
+fn agrees(p: &PhaseFit, f: &TrackFit) -> bool {
+    (p.beta - f.beta).abs() <= AGREE * f.beta_sigma && (p.t0 - f.t0).abs() <= AGREE * f.t0_sigma
+}
+
+/// Eq 79's parameters as a sound analysis states them.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SoundLaw {
+    /// $\beta$ and its total standard uncertainty (the fit's and, where eq 79 drifts over the
+    /// record, the law's).
+    pub beta: f64,
+    /// (see `beta`)
+    pub beta_sigma: f64,
+    /// $t_0$ (s) and its total standard uncertainty.
+    pub t0: f64,
+    /// (s)
+    pub t0_sigma: f64,
+    /// Whether they come from the phase (else from the pitch track).
+    pub from_phase: bool,
 }
 
 /// Analyses a sound recording.
@@ -233,9 +263,36 @@ pub fn analyze_sound_within(
             ));
         }
     }
+    work.stage("following the phase")?;
+    let samples = Samples {
+        x: &trace.v,
+        t_start: trace.t[0],
+        dt: 1.0 / track.sample_rate,
+    };
+    let (phase, phase_refused) = match fit_phase(
+        &samples,
+        &track.hum,
+        a[0],
+        SVector::<f64, 3>::new(fit.beta, fit.t0, fit.ln_c),
+        fit.t0_sigma,
+        &BlockSettings::default(),
+    ) {
+        Ok(p) if agrees(&p, &fit) => (Some(p), None),
+        Ok(p) => (
+            None,
+            Some(format!(
+                "the phase's fit (beta = {:.4}, t0 = {:.4} s) lies more than {AGREE} of the \
+                 pitch track's sigmas from the track's: a turn was miscounted",
+                p.beta, p.t0
+            )),
+        ),
+        Err(e) => (None, Some(format!("the phase could not be fitted ({e})"))),
+    };
     Ok(SoundAnalysis {
         source: trace.source.clone(),
         recording: None,
+        phase,
+        phase_refused,
         models: compare(y.len(), candidates),
         track,
         fit,
@@ -281,9 +338,27 @@ impl fmt::Display for SoundAnalysis {
         }
         writeln!(
             f,
-            "  eq 79: beta = {:.4} +- {:.4}, t0 = {:.5} +- {:.5} s, ln C = {:.3} +- {:.3} (rms residual {:.3} rad/s, n = {}, chi2/dof {:.2}; errors scaled by the residuals)",
+            "  eq 79 on the pitch: beta = {:.4} +- {:.4}, t0 = {:.5} +- {:.5} s, ln C = {:.3} +- {:.3} (rms residual {:.3} rad/s, n = {}, chi2/dof {:.2}; errors scaled by the residuals)",
             x.beta, x.beta_sigma, x.t0, x.t0_sigma, x.ln_c, x.ln_c_sigma, x.rms, x.n, x.chi2_dof
         )?;
+        match (&self.phase, &self.phase_refused) {
+            (Some(p), _) => writeln!(
+                f,
+                "  eq 79 on the phase (the result): beta = {:.5} +- {:.5}, t0 = {:.6} +- {:.6} s, ln C = {:.4} +- {:.4} ({:.1} turns in {} blocks, rms residual {:.4} rad, chi2/dof {:.2}; errors scaled by the residuals)",
+                p.beta, p.beta_sigma, p.t0, p.t0_sigma, p.ln_c, p.ln_c_sigma, p.turns, p.n, p.rms, p.chi2_dof
+            )
+            .and_then(|()| match &p.law {
+                Some(l) if l.drifts => writeln!(
+                    f,
+                    "  the law across the record: the later {} blocks (from t = {:.4} s) give beta = {:.5} +- {:.5}, t0 = {:.6} +- {:.6} s; eq 79 drifts over the record, so the shifts are the law's systematic uncertainty: beta = {:.5} +- {:.5} (stat) +- {:.5} (law), t0 = {:.6} +- {:.6} (stat) +- {:.6} (law) s",
+                    l.cycles, l.t_from, l.beta, l.beta_sigma, l.t0, l.t0_sigma,
+                    p.beta, p.beta_sigma, l.beta_systematic(), p.t0, p.t0_sigma, l.t0_systematic()
+                ),
+                _ => Ok(()),
+            })?,
+            (None, Some(why)) => writeln!(f, "  phase not used: {why}")?,
+            (None, None) => {}
+        }
         writeln!(f, "  model choice: {}", self.models.summary)?;
         for c in &self.models.candidates {
             writeln!(
@@ -293,14 +368,15 @@ impl fmt::Display for SoundAnalysis {
             )?;
         }
         if let Some(tr) = &self.truth {
+            let l = self.law();
             writeln!(
                 f,
-                "  truth: beta = {}, t0 = {:.5} s; pulls: beta {:+.2}, t0 {:+.2} ({:+.2} ms)",
+                "  truth: beta = {}, t0 = {:.5} s; pulls: beta {:+.2}, t0 {:+.2} ({:+.3} ms)",
                 tr.beta,
                 tr.t0,
-                (x.beta - tr.beta) / x.beta_sigma,
-                (x.t0 - tr.t0) / x.t0_sigma,
-                1e3 * (x.t0 - tr.t0)
+                (l.beta - tr.beta) / l.beta_sigma,
+                (l.t0 - tr.t0) / l.t0_sigma,
+                1e3 * (l.t0 - tr.t0)
             )?;
         }
         Ok(())
@@ -308,6 +384,26 @@ impl fmt::Display for SoundAnalysis {
 }
 
 impl SoundAnalysis {
+    /// The result: eq 79 fitted to the phase when it was, else to the pitch track.
+    pub fn law(&self) -> SoundLaw {
+        match &self.phase {
+            Some(p) => SoundLaw {
+                beta: p.beta,
+                beta_sigma: p.beta_total(),
+                t0: p.t0,
+                t0_sigma: p.t0_total(),
+                from_phase: true,
+            },
+            None => SoundLaw {
+                beta: self.fit.beta,
+                beta_sigma: self.fit.beta_sigma,
+                t0: self.fit.t0,
+                t0_sigma: self.fit.t0_sigma,
+                from_phase: false,
+            },
+        }
+    }
+
     /// The analysis as pretty JSON.
     pub fn to_json(&self) -> String {
         serde_json::to_string_pretty(self).unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))
@@ -327,8 +423,8 @@ impl SoundAnalysis {
     }
 }
 
-/// Writes a sound analysis to `dir` (`analysis.json`, `track.csv`), each file atomically, and
-/// returns the paths written.
+/// Writes a sound analysis to `dir` (`analysis.json`, `track.csv`, and `phase.csv` when the phase
+/// was fitted), each file atomically, and returns the paths written.
 pub fn write_sound_analysis(
     a: &SoundAnalysis,
     dir: &std::path::Path,
@@ -339,7 +435,11 @@ pub fn write_sound_analysis(
     };
     std::fs::create_dir_all(dir).map_err(|e| io(dir, e))?;
     let mut out = Vec::new();
-    for (name, text) in [("analysis.json", a.to_json()), ("track.csv", a.track_csv())] {
+    let mut texts = vec![("analysis.json", a.to_json()), ("track.csv", a.track_csv())];
+    if let Some(p) = &a.phase {
+        texts.push(("phase.csv", p.csv()));
+    }
+    for (name, text) in texts {
         let p = dir.join(name);
         files::atomic::write_atomically(&p, text.as_bytes()).map_err(|e| io(&p, e))?;
         out.push(p);

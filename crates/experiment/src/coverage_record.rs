@@ -12,6 +12,7 @@
 
 use crate::coverage::{coverage, Coverage};
 use crate::error::ExperimentError;
+use crate::sound_coverage::sound_coverage;
 use serde::{Deserialize, Serialize};
 
 /// One stored coverage study.
@@ -23,6 +24,9 @@ pub struct StoredCoverage {
     pub seed0: u64,
     /// Whether each recording carries realistic artifacts.
     pub artifacts: bool,
+    /// Whether the recordings are sound ([`sound_coverage`]; else the light signal).
+    #[serde(default)]
+    pub sound: bool,
     /// The command that ran it.
     pub command: String,
     /// When (ISO date).
@@ -41,12 +45,26 @@ pub fn stored() -> Result<Vec<StoredCoverage>, ExperimentError> {
     })
 }
 
-/// Runs a study of `runs` recordings from `seed0` and records how it was made.
-pub fn run(
-    recordings: &str,
+/// The study of `runs` recordings from `seed0`: of sound when `sound` (phone recordings with
+/// hum, whatever `artifacts` says), else of the light signal, with artifacts when `artifacts`.
+pub fn study(
     runs: usize,
     seed0: u64,
     artifacts: bool,
+    sound: bool,
+) -> Result<Coverage, ExperimentError> {
+    if sound {
+        sound_coverage(runs, seed0)
+    } else {
+        coverage(runs, seed0, artifacts)
+    }
+}
+
+/// Runs a study of `runs` recordings from `seed0` (see [`study`]) and records how it was made.
+pub fn run(
+    recordings: &str,
+    (runs, seed0): (usize, u64),
+    (artifacts, sound): (bool, bool),
     command: &str,
     date: &str,
 ) -> Result<StoredCoverage, ExperimentError> {
@@ -54,9 +72,10 @@ pub fn run(
         recordings: recordings.to_string(),
         seed0,
         artifacts,
+        sound,
         command: command.to_string(),
         date: date.to_string(),
-        coverage: coverage(runs, seed0, artifacts)?,
+        coverage: study(runs, seed0, artifacts, sound)?,
     })
 }
 

@@ -47,9 +47,12 @@ pub mod mechanisms;
 pub mod model_choice;
 pub mod models;
 pub mod motion_law;
+pub mod mp4_edit;
 pub mod numbers;
 pub mod peak;
 pub mod peaks;
+pub mod phase_blocks;
+pub mod phase_fit;
 pub mod plausibility;
 pub mod pulse_drift;
 pub mod rates;
@@ -58,7 +61,9 @@ pub mod scope;
 pub mod simulate;
 pub mod sliding_record;
 pub mod sound;
+pub mod sound_coverage;
 pub mod sound_file;
+pub mod spectrogram;
 pub mod spectrum;
 pub mod trace;
 pub mod track;
@@ -67,7 +72,9 @@ pub mod window;
 
 pub use analysis::{analyze, analyze_within, write_analysis, Analysis, AnalysisSettings};
 pub use artifacts::Artifacts;
-pub use audio::{analyze_sound, analyze_sound_within, write_sound_analysis, SoundAnalysis};
+pub use audio::{
+    analyze_sound, analyze_sound_within, write_sound_analysis, SoundAnalysis, SoundLaw,
+};
 pub use channel::{Channels, Recording, RecordingInfo};
 pub use csv::{parse_trace, read_trace};
 pub use error::ExperimentError;

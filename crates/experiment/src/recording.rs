@@ -3,6 +3,9 @@
 //! pure-Rust `symphonia` decoders), read into a [`Trace`] of full-scale units with what the file
 //! is ([`RecordingInfo`]: format, rate, channels, length).
 //!
+//! The samples an encoder adds are left out: MP3's (its LAME header) and Ogg's by the decoder in
+//! gapless mode, M4A's by the file's edit list ([`mp4_edit`](crate::mp4_edit)).
+//!
 //! The container is recognised by its first bytes, not by the file's name. Every file goes
 //! through [`read_bounded`] (size limit, regular files only); the decoded length is checked
 //! against [`MAX_SAMPLES`] per channel while decoding, so memory stays bounded. The channels are
@@ -80,6 +83,11 @@ fn decode_compressed(
 ) -> Result<(Vec<f64>, u32, usize, String), ExperimentError> {
     let fix = "the file may be damaged or use a coding this tool does not decode: export it as WAV or FLAC";
     let bad = |e: DecodeError| refuse(file, container, format!("not decodable ({e})"), fix);
+    let edit = if ext == "m4a" {
+        crate::mp4_edit::sound_edit(&bytes)
+    } else {
+        None
+    };
     let mss = MediaSourceStream::new(Box::new(std::io::Cursor::new(bytes)), Default::default());
     let mut hint = Hint::new();
     hint.with_extension(ext);
@@ -87,7 +95,10 @@ fn decode_compressed(
         .format(
             &hint,
             mss,
-            &FormatOptions::default(),
+            &FormatOptions {
+                enable_gapless: true,
+                ..FormatOptions::default()
+            },
             &MetadataOptions::default(),
         )
         .map_err(bad)?;
@@ -145,6 +156,22 @@ fn decode_compressed(
             });
         }
     }
+    let format = match edit {
+        Some(e) => {
+            // The samples the edit list plays (the encoder's priming and padding left out).
+            let ch = channels.max(1);
+            let skip = ((e.start * f64::from(rate)).round() as usize * ch).min(out.len());
+            out.drain(..skip);
+            if let Some(d) = e.duration {
+                out.truncate((d * f64::from(rate)).round() as usize * ch);
+            }
+            format!(
+                "{format}, its edit list's {} priming samples left out",
+                skip / ch
+            )
+        }
+        None => format,
+    };
     if let Some(j) = out.iter().position(|x| !x.is_finite()) {
         return Err(refuse(
             file,

@@ -47,15 +47,28 @@ pub fn tables(stored: &[StoredCoverage]) -> Vec<StudyTable> {
     );
     for s in stored {
         let c = &s.coverage;
+        let law = if s.sound {
+            "eq 79 on the phase"
+        } else {
+            "eq 84"
+        };
         let rows = [
-            ("β, eq 84", &c.beta_pulls, error(c.worst_beta_error)),
-            ("t₀, eq 84", &c.t0_pulls, error(1e3 * c.worst_t0_error)),
+            (
+                format!("β, {law}"),
+                &c.beta_pulls,
+                error(c.worst_beta_error),
+            ),
+            (
+                format!("t₀, {law}"),
+                &c.t0_pulls,
+                error(1e3 * c.worst_t0_error),
+            ),
         ];
         for (what, pulls, worst) in rows {
             let (mean, sd) = moments(pulls);
             t.row(vec![
                 format!("{} ({})", s.recordings, c.runs),
-                what.into(),
+                what,
                 inside(c, pulls, 1.0),
                 inside(c, pulls, 1.96),
                 mean,

@@ -21,6 +21,7 @@ pub mod results;
 pub mod sections;
 pub mod sliding;
 pub mod sliding_tables;
+pub mod sound_section;
 pub mod study;
 pub mod study_table;
 pub mod tex;

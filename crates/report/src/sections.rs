@@ -58,8 +58,22 @@ pub fn sections(
         .iter()
         .filter_map(|n| figure(n))
         .collect();
+    let mut experiment = experiment_section::section(synthetic, experiment_tables);
+    if let Some(sound) = results.get(&study::Sound) {
+        experiment.summary.push_str("\n\n");
+        experiment
+            .summary
+            .push_str(&crate::sound_section::paragraph(
+                sound,
+                figure("sound-spectrogram"),
+                figure("sound-residuals"),
+            ));
+        experiment
+            .output
+            .push_str(&format!("\n\n{}", sound.analysis));
+    }
     Ok(Sections {
-        experiment: experiment_section::section(synthetic, experiment_tables),
+        experiment,
         friction: friction
             .map(|s| sliding_tables::section(s, bench.paper, friction_tables, &slip_stick)),
         coverage: coverage_section::section(&stored, coverage_tables, figure("coverage")),

@@ -22,6 +22,7 @@ pub mod precision;
 pub mod runs;
 pub mod sliding;
 pub mod slip_stick;
+pub mod sound;
 pub mod synthetic;
 pub mod thickness;
 pub mod toy;

@@ -43,6 +43,7 @@ pub mod premises;
 pub mod ranges;
 mod series_drawing;
 pub mod sliding;
+pub mod sound;
 pub mod spin_down;
 pub mod stability;
 pub mod ticks;
@@ -246,6 +247,11 @@ pub const FAMILIES: &[Family] = &[
         ],
         needs: &[&study::Experiment],
         build: |r| experiment::figures(need(r, &study::Experiment)?),
+    },
+    Family {
+        names: &["sound-spectrogram", "sound-residuals"],
+        needs: &[&study::Sound],
+        build: |r| Ok(sound::figures(need(r, &study::Sound)?)),
     },
     Family {
         names: &["coverage"],

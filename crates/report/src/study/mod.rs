@@ -18,6 +18,7 @@ mod friction;
 mod lab_frame;
 mod paths;
 mod precision;
+mod sound;
 mod spin_down;
 mod toy;
 
@@ -30,6 +31,7 @@ pub use friction::Friction;
 pub use lab_frame::LabFrame;
 pub use paths::Paths;
 pub use precision::Precision;
+pub use sound::Sound;
 pub use spin_down::SpinDown;
 pub use toy::Toy;
 
@@ -80,6 +82,7 @@ impl<S: Study> Run for S {
 pub const ALL: &[&dyn Run] = &[
     &Checks,
     &Experiment,
+    &Sound,
     &Precision,
     &EnergyDrift,
     &Frequency,

@@ -1,0 +1,141 @@
+//! The sound of the synthetic experiment ([`studies::sound`]): its spectrogram with the fitted
+//! pitch and harmonics, and the residuals of eq 79's heading fitted to its phase.
+
+use crate::figures::chart::{Axis, Legend, Plot, Series, Style};
+use crate::figures::{Drawing, Figure};
+use crate::number::measured;
+use experiment::spectrogram::Spectrogram;
+use experiment::SoundAnalysis;
+use studies::sound::SoundStudy;
+
+/// The loudness bands drawn (dB relative to the loudest cell), loudest last.
+const BANDS: [(f64, f64); 3] = [(-30.0, -20.0), (-20.0, -10.0), (-10.0, 0.1)];
+
+/// What the report's sound is.
+const PHONE: &str = "the built-in spin-down as a phone beside the disk records it (48 kS/s, \
+    harmonics, the level rising to the end, a rattle, clicks, room noise, 2 % of 50 Hz hum)";
+
+/// The sound's two figures.
+pub fn figures(s: &SoundStudy) -> Vec<Figure> {
+    vec![
+        spectrogram(&s.analysis, &s.spectrogram, PHONE),
+        phase_residuals(&s.analysis),
+    ]
+}
+
+/// The spectrogram `sp` of the recording `about` describes, as loudness bands, with
+/// $h\Omega/2\pi$ of the analysis `a`'s phase fit over it.
+pub fn spectrogram(a: &SoundAnalysis, sp: &Spectrogram, about: &str) -> Figure {
+    let mut plot = Plot::new(
+        "Spectrogram of the sound, with eq 79's pitch and harmonics",
+        "time t (s)",
+        "frequency f (Hz)",
+    );
+    for (lo, hi) in BANDS {
+        let cells: Vec<(f64, f64)> =
+            sp.t.iter()
+                .zip(&sp.db)
+                .flat_map(|(t, row)| {
+                    sp.f.iter()
+                        .zip(row)
+                        .filter(move |(_, d)| **d >= lo && **d < hi)
+                        .map(move |(f, _)| (*t, *f))
+                })
+                .collect();
+        let label = format!("{} to {} dB", lo.round(), hi.round());
+        plot = plot.with(Series::new(label, cells, Style::Cells));
+    }
+    let law = a.law();
+    let f_top = sp.f.last().copied().unwrap_or(1000.0);
+    if let (Some(p), Some(first)) = (&a.phase, a.phase.as_ref().and_then(|p| p.points.first())) {
+        let end = p.points.last().map_or(first.b, |q| q.b);
+        for h in 1..=4 {
+            let pts: Vec<(f64, f64)> = (0..=200)
+                .map(|i| first.a + (end - first.a) * f64::from(i) / 200.0)
+                .map(|t| {
+                    let q = 1.0 / (p.beta + 2.0);
+                    let omega = (q * (p.ln_c - (p.t0 - t).ln())).exp();
+                    (t, f64::from(h) * omega / std::f64::consts::TAU)
+                })
+                .filter(|(_, f)| *f <= f_top)
+                .collect();
+            let label = if h == 1 {
+                format!(
+                    "eq 79 on the phase: hΩ/2π, h = 1..4 (β = {})",
+                    measured(law.beta, law.beta_sigma)
+                )
+            } else {
+                String::new()
+            };
+            plot = plot.with_colored(Series::new(label, pts, Style::Line), [0, 0, 0]);
+        }
+    }
+    let plot = plot.y_range(0.0, f_top).legend_at(Legend::UpperLeft);
+    Figure {
+        name: "sound-spectrogram",
+        title: "Spectrogram of the disk's sound with the fitted pitch".into(),
+        caption: format!(
+            "{}: {about}. Cells of {:.2} s by {:.0} Hz, in three bands of loudness relative to \
+             the loudest cell; the lines are h Omega/2 pi (h = 1 to 4) of eq 79 fitted to the \
+             sound's phase.",
+            a.source,
+            sp.t.get(1).zip(sp.t.first()).map_or(0.0, |(b, a)| b - a),
+            sp.f.get(1).zip(sp.f.first()).map_or(0.0, |(b, a)| b - a),
+        ),
+        drawing: Drawing::Plot(plot),
+    }
+}
+
+/// The residuals of eq 79's heading, block by block, in units of their own sigma.
+pub fn phase_residuals(a: &SoundAnalysis) -> Figure {
+    let pts: Vec<(f64, f64)> = a
+        .phase
+        .as_ref()
+        .map(|p| {
+            p.points
+                .iter()
+                .map(|b| (b.t, b.residual / b.sigma))
+                .collect()
+        })
+        .unwrap_or_default();
+    let plot = Plot::new(
+        "Residuals of eq 79's heading fitted to the sound's phase",
+        "time t (s)",
+        "residual / σ (dimensionless)",
+    )
+    .with(Series::new("blocks of whole turns", pts, Style::Points))
+    .mark(Axis::Y, 0.0, "")
+    .legend_at(Legend::Hidden);
+    let caption = match &a.phase {
+        Some(p) => format!(
+            "{}: each block's heading minus eq 79's fitted heading, over the block's standard \
+             uncertainty from the noise ({} blocks, {:.0} turns; reduced chi2 {:.2}, rms {:.4} \
+             rad). A slow wave far above the noise is the law's own departure from the motion \
+             (eq 79 drifts over the record{}).",
+            a.source,
+            p.n,
+            p.turns,
+            p.chi2_dof,
+            p.rms,
+            match &p.law {
+                Some(l) if l.drifts => format!(
+                    ": the later half's fit moves beta by {:+.4} and t0 by {:+.2} ms",
+                    l.beta_shift,
+                    1e3 * l.t0_shift
+                ),
+                _ => ", by no more than the noise says".into(),
+            }
+        ),
+        None => format!(
+            "{}: the phase was not fitted ({}).",
+            a.source,
+            a.phase_refused.as_deref().unwrap_or("no reason given")
+        ),
+    };
+    Figure {
+        name: "sound-residuals",
+        title: "Residuals of eq 79 on the sound's phase".into(),
+        caption,
+        drawing: Drawing::Plot(plot),
+    }
+}

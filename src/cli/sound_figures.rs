@@ -1,0 +1,40 @@
+//! The figures `experiment analyze FILE --out DIR` draws for a sound recording: its spectrogram
+//! with the fitted pitch and harmonics, and the residuals of eq 79 on its phase (the report's own
+//! figure functions, [`report::figures::sound`]).
+
+use experiment::spectrogram::spectrogram;
+use experiment::{SoundAnalysis, Trace};
+use std::path::{Path, PathBuf};
+
+/// Writes `spectrogram.svg` and `phase-residuals.svg` of the analysis `a` of `trace` into `dir`,
+/// each atomically; returns the paths written.
+pub fn write(a: &SoundAnalysis, trace: &Trace, dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
+    // Up to the fourth harmonic of the fastest fitted pitch, below the Nyquist frequency.
+    let top = a.track.points.iter().map(|p| p.omega).fold(0.0, f64::max) / std::f64::consts::TAU;
+    let f_max = (4.5 * top).clamp(50.0, 0.5 * a.track.sample_rate);
+    let span = trace.v.len() as f64 / a.track.sample_rate;
+    let hop = (span / 300.0).max(0.1);
+    let sp = spectrogram(trace, 2.0 * hop, hop, f_max, 80);
+    let about = match &a.recording {
+        Some(r) => format!("a recording ({r})"),
+        None => "a recording".to_string(),
+    };
+    let figures = [
+        (
+            "spectrogram.svg",
+            report::figures::sound::spectrogram(a, &sp, &about),
+        ),
+        (
+            "phase-residuals.svg",
+            report::figures::sound::phase_residuals(a),
+        ),
+    ];
+    let mut out = Vec::new();
+    for (name, fig) in figures {
+        let svg = fig.drawing.to_svg(900, 600)?;
+        let path = dir.join(name);
+        files::atomic::write_atomically(&path, svg.as_bytes())?;
+        out.push(path);
+    }
+    Ok(out)
+}
