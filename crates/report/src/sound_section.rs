@@ -16,7 +16,7 @@ pub fn paragraph(s: &SoundStudy, spectrogram: Option<usize>, residuals: Option<u
                 "eq 79 integrated to the heading and fitted to the sound's phase over {:.0} turns \
                  in {} blocks of whole turns gives β = {} and t₀ = {} s (total uncertainties: the \
                  fit's and, where the later half of the blocks moves them, the law's drift; \
-                 reduced χ² {:.1})",
+                 reduced chi-squared {:.1})",
                 p.turns,
                 p.n,
                 measured(l.beta, l.beta_sigma),
