@@ -59,6 +59,25 @@ impl LawStability {
         }
     }
 
+    /// The later half's fit (`half`: $\beta$, its sigma, $t_0$, its sigma) of `cycles` cycles
+    /// or turns from `t_from` against the whole fit's (`whole`: $\beta$, $t_0$).
+    pub fn of_halves(cycles: usize, t_from: f64, half: [f64; 4], whole: [f64; 2]) -> Self {
+        let [beta, beta_sigma, t0, t0_sigma] = half;
+        let (beta_shift, t0_shift) = (beta - whole[0], t0 - whole[1]);
+        Self {
+            cycles,
+            t_from,
+            beta,
+            beta_sigma,
+            t0,
+            t0_sigma,
+            beta_shift,
+            t0_shift,
+            drifts: beta_shift.abs() > DRIFT_SIGMAS * beta_sigma
+                || t0_shift.abs() > DRIFT_SIGMAS * t0_sigma,
+        }
+    }
+
     /// The law's systematic uncertainty of $t_0$ (s): the shift where the law drifts, else 0.
     pub fn t0_systematic(&self) -> f64 {
         if self.drifts {
@@ -80,19 +99,10 @@ pub fn later_half(
 ) -> Option<LawStability> {
     let h = ta.len() / 2;
     let half = fit_eq84(&ta[h..], &tb[h..], &start[h..], w).ok()?;
-    let beta_shift = half.beta - whole.beta;
-    let t0_shift = half.t0 - whole.t0;
-    let drifts = beta_shift.abs() > DRIFT_SIGMAS * half.beta_sigma
-        || t0_shift.abs() > DRIFT_SIGMAS * half.t0_sigma;
-    Some(LawStability {
-        cycles: ta.len() - h,
-        t_from: ta[h],
-        beta: half.beta,
-        beta_sigma: half.beta_sigma,
-        t0: half.t0,
-        t0_sigma: half.t0_sigma,
-        beta_shift,
-        t0_shift,
-        drifts,
-    })
+    Some(LawStability::of_halves(
+        ta.len() - h,
+        ta[h],
+        [half.beta, half.beta_sigma, half.t0, half.t0_sigma],
+        [whole.beta, whole.t0],
+    ))
 }

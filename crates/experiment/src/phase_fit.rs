@@ -16,14 +16,14 @@
 //! $\sigma_{t_0}$ (and at least one millisecond) before it.
 //!
 //! **The law's own error.** The heading is refitted on the later half of the blocks; where
-//! $\beta$ or $t_0$ moves by more than [`DRIFT_SIGMAS`] of the half's uncertainty, the shift is
+//! $\beta$ or $t_0$ moves by more than [`DRIFT_SIGMAS`](crate::law_stability::DRIFT_SIGMAS) of the half's uncertainty, the shift is
 //! stated as the law's systematic uncertainty, as for the light signal
 //! ([`law_stability`](crate::law_stability)).
 
 use crate::band::Row;
 use crate::fit::phase;
 use crate::hum::remove_hum_clear;
-use crate::law_stability::{LawStability, DRIFT_SIGMAS};
+use crate::law_stability::LawStability;
 use crate::least_squares::{solve, FitError, Problem, Scale};
 use crate::phase_blocks::{blocks, Block, BlockSettings, Samples};
 use nalgebra::SVector;
@@ -163,7 +163,7 @@ pub fn fit_phase(
 
 /// The heading refitted on the later half of the blocks `bl` (demodulated against `p` plus
 /// `shift`), against the whole fit `whole`: where $\beta$ or $t_0$ moves by more than
-/// [`DRIFT_SIGMAS`] of the later half's own uncertainty, eq 79 drifts over the record and the
+/// [`DRIFT_SIGMAS`](crate::law_stability::DRIFT_SIGMAS) of the later half's own uncertainty, eq 79 drifts over the record and the
 /// shift is the law's systematic uncertainty ([`law_stability`](crate::law_stability), as for
 /// the light). `None` when the half has too few blocks to fit.
 fn later_half(
@@ -174,20 +174,12 @@ fn later_half(
 ) -> Option<LawStability> {
     let h = bl.len() / 2;
     let (half, _) = fit_blocks(&bl[h..], p, shift).ok()?;
-    let beta_shift = half.beta - whole.beta;
-    let t0_shift = half.t0 - whole.t0;
-    Some(LawStability {
-        cycles: bl.len() - h,
-        t_from: bl[h].a,
-        beta: half.beta,
-        beta_sigma: half.beta_sigma,
-        t0: half.t0,
-        t0_sigma: half.t0_sigma,
-        beta_shift,
-        t0_shift,
-        drifts: beta_shift.abs() > DRIFT_SIGMAS * half.beta_sigma
-            || t0_shift.abs() > DRIFT_SIGMAS * half.t0_sigma,
-    })
+    Some(LawStability::of_halves(
+        bl.len() - h,
+        bl[h].a,
+        [half.beta, half.beta_sigma, half.t0, half.t0_sigma],
+        [whole.beta, whole.t0],
+    ))
 }
 
 impl PhaseFit {
