@@ -9,6 +9,15 @@ fn the_readmes_toy_numbers_are_the_toy_studys() {
         .find("**The toy the paper measured is not a thin disk.**")
         .expect("the README's toy paragraph");
     let text = &readme[start..];
+    let stored = std::fs::read_dir("tests/reference/peer")
+        .expect("the stored peer runs")
+        .filter(|e| e.as_ref().is_ok_and(|e| e.path().is_dir()))
+        .count()
+        .to_string();
+    assert_eq!(
+        number_after(text, "independent program on "),
+        Some(stored.as_str())
+    );
     let t = studies::thickness::compute().expect("the toy study");
     let steady = t
         .steady
