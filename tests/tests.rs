@@ -40,5 +40,6 @@ mod sliding;
 mod snapshots;
 mod solver;
 mod toy_scenes;
+mod toy_steady;
 mod toy_thickness;
 mod transcription;

@@ -39,4 +39,13 @@ fn the_readmes_toy_numbers_are_the_toy_studys() {
     let thin = format!("{:.1}", thin.expect("the thin disk falls"));
     assert_eq!(number_after(text, "the toy falls to "), Some(toy.as_str()));
     assert_eq!(number_after(text, "the thin disk to "), Some(thin.as_str()));
+    let (lo, hi) = studies::toy_steady::compute()
+        .expect("the toy's steady motions")
+        .no_spin_in_place_deg;
+    let (lo, hi) = (format!("{lo:.1}"), format!("{hi:.1}"));
+    assert_eq!(
+        number_after(text, "but the toy cannot between "),
+        Some(lo.as_str())
+    );
+    assert_eq!(number_after(text, "° and "), Some(hi.as_str()));
 }

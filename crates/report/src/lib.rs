@@ -26,6 +26,7 @@ pub mod study;
 pub mod study_table;
 pub mod tex;
 pub mod toy_section;
+pub mod toy_steady_table;
 
 use checks::check::Tally;
 use serde::Serialize;

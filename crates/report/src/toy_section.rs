@@ -98,6 +98,7 @@ pub fn tables(t: &Toy) -> Vec<StudyTable> {
         steady(&t.thickness),
         spin_down(&t.thickness),
         fall(&t.thickness),
+        crate::toy_steady_table::table(&t.steady),
     ]
 }
 
@@ -220,8 +221,9 @@ fn fall(t: &Thickness) -> StudyTable {
             "The fall from unstable steady motion (sec. 7, \"to about 60°\"): the steady roll \
              at α₀ with b at the middle of the thin disk's unstable band (the fall study's \
              starts), the tilt lowered by 1 mrad, rolling for {FALL_TIME} s; it falls to the first \
-             minimum of α once {FALL_LEFT}° below α₀. The toy's steady Ω₀ at that b is found by \
-             shooting; a dash: none within 0.3 to 5 times the thin disk's, or no fall."
+             minimum of α once {FALL_LEFT}° below α₀. The toy's steady Ω₀ at that b is eq 29 \
+             for its thickness (the next table); a dash: the toy has no steady motion at that b, \
+             or no fall."
         ),
         &[
             "α₀ (°)",
@@ -323,8 +325,7 @@ fn summary(t: &Toy, tables: &[StudyTable], figures: &[usize]) -> String {
          against {li} mrad thin, yet neither run comes near it (least F_z / m g {nt} toy, {ni} \
          thin), so the premise of eqs 80-81 fails for the toy as for the thin disk. From the \
          thin disk's unstable steady rolls{t4}, the toy falls {falls}: \"to about 60°\" does not \
-         survive for the toy, which falls further. Not computed here: the condition on b of \
-         eq 30 for the toy.",
+         survive for the toy, which falls further. {eq30}",
         n = t.peer.len(),
         t0 = cite(tables, 0),
         t1 = cite(tables, 1),
@@ -406,7 +407,7 @@ fn summary(t: &Toy, tables: &[StudyTable], figures: &[usize]) -> String {
                     "from {:.0}°: {}",
                     f.alpha0_deg,
                     if f.precession.1.is_none() {
-                        "no steady motion of the toy found at that b"
+                        "the toy has no steady motion at that b (eq 30 for the toy)"
                     } else {
                         "no fall within the run"
                     }
@@ -415,6 +416,7 @@ fn summary(t: &Toy, tables: &[StudyTable], figures: &[usize]) -> String {
             .collect::<Vec<_>>()
             .join("; "),
         ni = places(thin.least_normal.0, 2),
+        eq30 = crate::toy_steady_table::sentence(&t.steady, &cite(tables, 5)),
     )
 }
 

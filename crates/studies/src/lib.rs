@@ -4,7 +4,7 @@
 //! - [`precision`]: speed against accuracy, measured at equal error;
 //! - [`peer`]: the thick toy against an independent program's stored runs;
 //! - [`thickness`]: the toy's thickness against the paper's thin-disk numbers; [`toy`] both for
-//!   the report;
+//!   the report, [`toy_steady`] its steady motions (eqs 29-30);
 //! - [`compare`]: one scene run in two models side by side;
 //! - the studies behind the report's figures: [`energy`] (drift of six methods), [`frequency`]
 //!   (small oscillations measured, eqs 54, 55, 71), [`lab_frame`] (eqs 23-25 against the
@@ -26,5 +26,6 @@ pub mod sound;
 pub mod synthetic;
 pub mod thickness;
 pub mod toy;
+pub mod toy_steady;
 
 pub use error::StudyError;

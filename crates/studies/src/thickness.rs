@@ -34,6 +34,7 @@ use crate::StudyError;
 use physics::dispatch::sliding_model;
 use physics::model::sliding::{Mode, Solid};
 use physics::model::steady::steady_motion;
+use physics::model::steady_solid::RollingSolid;
 use physics::run::sliding::integrate;
 use physics::scene::Scene;
 use serde::Serialize;
@@ -67,16 +68,39 @@ impl Shape {
     }
 
     /// $\omega_1/\Omega$ of the rolling disk whose centre goes round a circle of radius `b` at
-    /// the tilt `alpha0`: $(b - p\sin\alpha)/q$ (module documentation; eq 28's $b/a$ for the
-    /// thin disk).
+    /// the tilt `alpha0` ([`RollingSolid::spin_ratio`]).
     pub fn spin_ratio(self, alpha0: f64, b: f64) -> f64 {
-        let (p, q) = match self {
-            Shape::Thin => (0.0, TOY.0),
-            Shape::Toy => {
-                Solid::new(TOY.0, TOY.3, TOY.1, TOY.2).offsets(TOY.0, alpha0.cos(), alpha0.sin())
+        self.rolling().spin_ratio(alpha0, b)
+    }
+
+    /// The disk's [`RollingSolid`]: its mass, moments and rim, for eqs 29-30's closed form.
+    pub fn rolling(self) -> RollingSolid {
+        let (a, _, _, m) = TOY;
+        let g = physics::disk::toy_disk().g;
+        match self {
+            Shape::Thin => {
+                let k = 0.25;
+                RollingSolid {
+                    a,
+                    m,
+                    g,
+                    i11: 2.0 * k * m * a * a,
+                    i22: k * m * a * a,
+                    solid: None,
+                }
             }
-        };
-        (b - alpha0.sin() * p) / q
+            Shape::Toy => {
+                let s = Solid::new(a, m, TOY.1, TOY.2);
+                RollingSolid {
+                    a,
+                    m,
+                    g,
+                    i11: s.i11,
+                    i22: s.i22,
+                    solid: Some(s),
+                }
+            }
+        }
     }
 
     /// The centre's height $h(\alpha)$ and its first two derivatives (module documentation).
@@ -232,9 +256,9 @@ pub struct FallPair {
     pub alpha0_deg: f64,
     /// $b/a$: the middle of the thin disk's unstable band (`sliding::fall::band`).
     pub b_over_a: f64,
-    /// The steady $\Omega_0$ of the thin disk (eq 29) and of the toy (shot), rad/s; `None`
-    /// when the shooting finds no steady motion of the toy within 0.3 to 5 times the thin
-    /// disk's.
+    /// The steady $\Omega_0$ of the thin disk (eq 29) and of the toy (eq 29 for the solid,
+    /// [`RollingSolid::steady`]), rad/s; `None` where the toy has no steady motion at that $b$
+    /// (eq 30 for the solid).
     pub precession: (f64, Option<f64>),
     /// The tilt each falls to (deg), thin and toy; `None`: it did not fall [`FALL_LEFT`]° within
     /// [`FALL_TIME`] s.
@@ -290,7 +314,11 @@ fn falls() -> Result<Vec<FallPair>, StudyError> {
         };
         let b = band.start * d.a;
         let thin = steady_motion(&d, alpha0, b)?.precession;
-        let toy = steady_precession(Shape::Toy, alpha0, b, thin).ok();
+        let toy = Shape::Toy
+            .rolling()
+            .steady(alpha0, b)
+            .ok()
+            .map(|m| m.precession);
         out.push(FallPair {
             alpha0_deg: deg,
             b_over_a: band.start,

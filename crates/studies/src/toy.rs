@@ -1,9 +1,10 @@
 //! The real toy for the report: the peer program's stored runs compared with this tool
 //! ([`crate::peer::stored`]) and what the toy's thickness does to the paper's numbers
-//! ([`crate::thickness`]).
+//! ([`crate::thickness`]), its steady motions ([`crate::toy_steady`]).
 
 use crate::peer::stored::{compare_stored, StoredComparison};
 use crate::thickness::Thickness;
+use crate::toy_steady::ToySteady;
 use crate::StudyError;
 use serde::Serialize;
 
@@ -14,6 +15,8 @@ pub struct Toy {
     pub peer: Vec<StoredComparison>,
     /// The toy against the thin disk.
     pub thickness: Thickness,
+    /// Eqs 29-30 for the toy: its steady motions and condition on $b$.
+    pub steady: ToySteady,
 }
 
 /// Both studies.
@@ -21,5 +24,6 @@ pub fn compute() -> Result<Toy, StudyError> {
     Ok(Toy {
         peer: compare_stored().map_err(|e| StudyError::Unusable(e.to_string()))?,
         thickness: crate::thickness::compute()?,
+        steady: crate::toy_steady::compute()?,
     })
 }

@@ -16,6 +16,7 @@ pub mod mechanism;
 pub mod rolling;
 pub mod sliding;
 pub mod steady;
+pub mod steady_solid;
 
 pub use layout::{Extras, Layout};
 

@@ -1,0 +1,85 @@
+//! Eq 30 for the toy in the report: the toy's condition on $b$ beside the thin disk's, with the
+//! sliding model's checks of it ([`studies::toy_steady`]), and the sentence that says what of
+//! eqs 29-30 survives for the toy.
+
+use crate::number::{places, scientific};
+use crate::study_table::StudyTable;
+use studies::toy_steady::{ToySteady, HOLD, OFFSET};
+
+/// The table: one row per tilt.
+pub fn table(t: &ToySteady) -> StudyTable {
+    let mut s = StudyTable::new(
+        format!(
+            "Eq 30 for the toy: the edge b* of the radii b of steady rolling, the thin disk's \
+             (eq 30, b > b*) beside the toy's (eq 29 solved for its thickness and rounded rim: \
+             b > b* while its contact is ahead of its centre, b < b* once its centre is beyond \
+             the contact), and eq 29's Ω₀ at b = 0 (a dash: the toy has none). Checked on the \
+             sliding model's rolling equations, which the closed form does not use: at b* ± \
+             {OFFSET} a, 80 precessions from 0.05 to 200 √(g/a) are started and the sign of the \
+             tilt's change after 1 ms read; a steady motion is a change of sign (found: allowed \
+             side / other side); the one found is refined by bisection against the closed form; \
+             and the closed form's start at b* ± {OFFSET} a keeps its tilt over {HOLD} s to the \
+             'held' value, against 'missed' with 0.1 % more precession."
+        ),
+        &[
+            "α₀ (°)",
+            "b*/a thin",
+            "b*/a toy",
+            "toy's side",
+            "Ω₀(b = 0) thin (rad/s)",
+            "Ω₀(b = 0) toy (rad/s)",
+            "steady found",
+            "shot / closed form − 1",
+            "held (rad)",
+            "missed (rad)",
+        ],
+    );
+    for r in &t.rows {
+        s.row(vec![
+            places(r.alpha0_deg, 0),
+            format!("{:+.4}", r.thin_edge),
+            format!("{:+.4}", r.toy_edge),
+            if r.toy_above { "b > b*" } else { "b < b*" }.into(),
+            places(r.thin_b0, 2),
+            r.toy_b0.map_or("–".into(), |w| places(w, 2)),
+            format!("{} / {}", r.roots_allowed, r.roots_forbidden),
+            scientific(r.shot_error, 1),
+            scientific(r.held, 1),
+            scientific(r.missed, 1),
+        ]);
+    }
+    s
+}
+
+/// What of eqs 29-30 survives for the toy, with the table's citation `cite`.
+pub fn sentence(t: &ToySteady, cite: &str) -> String {
+    let (lo, hi) = t.no_spin_in_place_deg;
+    let first = &t.rows[0];
+    let held = t
+        .rows
+        .iter()
+        .all(|r| r.roots_allowed == 1 && r.roots_forbidden == 0);
+    format!(
+        "Eq 30's condition on b{cite} {verdict} for the toy: its range of b is narrower \
+         (b* = {toy:+.3} a at {at}° against {thin:+.3} a thin), the edge rises through b = 0 at \
+         {lo}°, so between {lo}° and {hi}° (where its centre comes above its contact) the toy has \
+         no steady motion with its centre at rest, which the thin disk has at every tilt; beyond \
+         {hi}° its steady motions have b below the edge, not above. {checked}",
+        verdict = if held {
+            "does not survive as printed"
+        } else {
+            "could not be checked"
+        },
+        toy = first.toy_edge,
+        at = places(first.alpha0_deg, 0),
+        thin = first.thin_edge,
+        lo = places(lo, 1),
+        hi = places(hi, 1),
+        checked = if held {
+            "The sliding model finds exactly one steady precession on the allowed side at every \
+             tilt and none on the other."
+        } else {
+            "The sliding model's scan disagrees with the closed form at some tilt (see the table)."
+        }
+    )
+}
