@@ -170,3 +170,52 @@ fn friction_and_resistance_work_is_booked() {
     assert!(lost > 1e-4 * e0, "{lost}");
     assert!(worst < 1e-7, "{worst:e}");
 }
+
+/// A thick disk's `steady` start is the solid's steady rolling: its tilt stays put; a `b` on the
+/// wrong side of the solid's edge is refused with the line, the edge and the fix, and the edge
+/// named is where the refusals stop.
+#[test]
+fn a_thick_disks_steady_start_is_steady_and_its_edge_is_named() {
+    let src = |alpha0: f64, b: f64| {
+        format!(
+            "name: toy-steady
+model: sliding
+disk: {{ radius: 0.0375, mass: 0.4, thickness: 0.0128, fillet: 0.002 }}
+friction: {{ mu: 1.0 }}
+start: {{ steady: {{ alpha0: {alpha0}, b: {b} }} }}
+stop: {{ time: 0.5 }}
+record: [alpha]
+sample: 0.001
+solver: {{ rtol: 1e-11, atol: 1e-13 }}
+"
+        )
+    };
+    for (alpha0, b) in [(0.3, 0.0), (1.2, 0.01), (1.2, -0.0005)] {
+        let s = Scene::parse(&src(alpha0, b), "toy-steady.yaml").unwrap();
+        let r = run(&s, None).unwrap();
+        assert!(r.contact_events.is_empty(), "{alpha0} {b}");
+        let drift = r
+            .rows
+            .iter()
+            .map(|x| (x[1] - alpha0).abs())
+            .fold(0.0, f64::max);
+        println!("alpha0 {alpha0}, b {b} m: tilt drifts {drift:e} rad over 0.5 s");
+        assert!(drift < 1e-8, "{drift:e}");
+    }
+    let e = Scene::parse(&src(1.4, 0.0), "toy-steady.yaml")
+        .unwrap_err()
+        .to_string();
+    println!("{e}");
+    assert!(
+        e.starts_with("toy-steady.yaml:5:") && e.contains("raise b"),
+        "{e}"
+    );
+    let edge: f64 = e
+        .split("needs b > ")
+        .nth(1)
+        .and_then(|t| t.split(' ').next())
+        .and_then(|t| t.parse().ok())
+        .expect("the edge in the message");
+    assert!(Scene::parse(&src(1.4, edge * 0.99), "toy-steady.yaml").is_err());
+    assert!(Scene::parse(&src(1.4, edge * 1.01), "toy-steady.yaml").is_ok());
+}

@@ -75,32 +75,11 @@ impl Shape {
 
     /// The disk's [`RollingSolid`]: its mass, moments and rim, for eqs 29-30's closed form.
     pub fn rolling(self) -> RollingSolid {
-        let (a, _, _, m) = TOY;
-        let g = physics::disk::toy_disk().g;
-        match self {
-            Shape::Thin => {
-                let k = 0.25;
-                RollingSolid {
-                    a,
-                    m,
-                    g,
-                    i11: 2.0 * k * m * a * a,
-                    i22: k * m * a * a,
-                    solid: None,
-                }
-            }
-            Shape::Toy => {
-                let s = Solid::new(a, m, TOY.1, TOY.2);
-                RollingSolid {
-                    a,
-                    m,
-                    g,
-                    i11: s.i11,
-                    i22: s.i22,
-                    solid: Some(s),
-                }
-            }
-        }
+        let solid = match self {
+            Shape::Thin => None,
+            Shape::Toy => Some(Solid::new(TOY.0, TOY.3, TOY.1, TOY.2)),
+        };
+        RollingSolid::of(&physics::disk::toy_disk(), solid)
     }
 
     /// The centre's height $h(\alpha)$ and its first two derivatives (module documentation).

@@ -34,6 +34,7 @@
 //! A thick disk's $D_0$ changes sign where $I_{22}\cos\alpha_0\,q = I_{11}\,p\sin\alpha_0$, so at
 //! steeper tilts $b_* > 0$ while $x > 0$: there the disk cannot spin with its centre at rest.
 
+use crate::disk::Disk;
 use crate::model::sliding::Solid;
 use crate::model::Motion;
 use serde::Serialize;
@@ -108,6 +109,22 @@ pub enum SolidSteadyError {
 }
 
 impl RollingSolid {
+    /// The thin `disk` (eq 18's moments) or, with `solid`, the solid of its radius and mass.
+    pub fn of(disk: &Disk, solid: Option<Solid>) -> Self {
+        let (i11, i22) = match &solid {
+            Some(s) => (s.i11, s.i22),
+            None => (disk.i11(), disk.i22()),
+        };
+        RollingSolid {
+            a: disk.a,
+            m: disk.m,
+            g: disk.g,
+            i11,
+            i22,
+            solid,
+        }
+    }
+
     /// $(p, q)$ at the tilt.
     fn offsets(&self, alpha0: f64) -> (f64, f64) {
         match &self.solid {
@@ -189,7 +206,6 @@ impl RollingSolid {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::disk::Disk;
     use crate::model::steady::{b_bound, precession_squared};
 
     fn thin(k: f64) -> RollingSolid {

@@ -8,8 +8,9 @@
 //! ```
 //!
 //! See [`crate::model::sliding`]'s `toy.rs` for what each means. A thick disk's `steady` start
-//! is the thin disk's eqs 29-30 with $k = I_{22}/ma^2$ and the solid's contact at rest: a start,
-//! not a steady motion of the solid.
+//! is the solid's own steady rolling, eqs 29-30 solved for its thickness and rim
+//! ([`crate::model::steady_solid`]); a `b` on the wrong side of its edge is refused with the
+//! edge.
 
 use super::{ModelKind, SceneSpec, Validator};
 use crate::model::sliding::{Resistance, Solid, Toy};

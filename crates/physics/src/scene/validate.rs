@@ -6,6 +6,8 @@ use super::{
     DiskError, Method, ModelKind, Motion, PowerLaw, Projection, Quantity, Scene, SceneError,
     Settings, SteadyError, Stop, PI,
 };
+use crate::model::sliding::Solid;
+use crate::model::steady_solid::{RollingSolid, SolidSteadyError};
 
 /// The fewest steps an adaptive method takes per turn of the disk's fastest rate (DOP853
 /// with the default settings takes about 32 on a vertical spin at 1.5e7 rad/s).
@@ -165,7 +167,7 @@ impl Validator<'_> {
         let mechanisms = self.mechanisms(&s)?;
         let (friction, slip) = self.friction(&s)?;
         let toy = self.toy(&s, solid)?;
-        let start = self.start(&s.start, &disk, s.model)?;
+        let start = self.start(&s.start, &disk, solid, s.model)?;
         let stop = self.stop(&s.stop, &start, s.model)?;
         let record = self.record(&s.record, s.model)?;
         if let Some(dt) = s.sample {
@@ -308,6 +310,7 @@ impl Validator<'_> {
         &self,
         s: &StartSpec,
         disk: &Disk,
+        solid: Option<Solid>,
         model: ModelKind,
     ) -> Result<Motion, SceneError> {
         let forms = [
@@ -324,7 +327,17 @@ impl Validator<'_> {
                  (plus an optional perturb)",
             ));
         }
-        let mut m = if let Some(st) = &s.steady {
+        let mut m = if let (Some(st), Some(_)) = (&s.steady, solid) {
+            RollingSolid::of(disk, solid)
+                .steady(st.alpha0, st.b)
+                .map_err(|e| {
+                    let key = match e {
+                        SolidSteadyError::Radius { .. } => "b",
+                        _ => "alpha0",
+                    };
+                    self.err(&["start", "steady", key], e.to_string())
+                })?
+        } else if let Some(st) = &s.steady {
             steady_motion(disk, st.alpha0, st.b).map_err(|e| {
                 let key = match e {
                     SteadyError::Angle(_) => "alpha0",
