@@ -352,3 +352,36 @@ fn the_peer_commands_export_compare_and_refuse() {
         "{err}"
     );
 }
+
+/// The runs the peer relocks at a print step (ε = 1e-7 m/s), split there: before this tool's
+/// slip ends and after the relock (this tool restarted from the peer's printed state) they agree
+/// far closer than over the whole run, so the interval between the two relocks is what differs.
+#[test]
+fn a_relock_at_a_print_step_is_what_the_slip_stick_runs_differ_by() {
+    let mut slip_ends = 0;
+    for s in studies::peer::stored::STORED
+        .iter()
+        .filter(|s| s.sharp.is_some())
+    {
+        let file = format!("tests/reference/peer/{}/scene.yaml", s.name);
+        let scene = Scene::parse(s.scene, &file).unwrap();
+        let rows = parse(s.sharp.unwrap(), "eps-1e-7/result.txt").unwrap();
+        let Some(split) = studies::peer::relock::split(&scene, &rows).unwrap() else {
+            println!("{}: the peer never relocks", s.name);
+            continue;
+        };
+        println!(
+            "{}: peer relocks at {} s; tilt difference before the slip ends {:.2e} rad, after the relock (restarted) {:.2e} rad, whole run {:.2e} rad",
+            s.name, split.relock, split.before, split.after, split.whole
+        );
+        // Before the slip ends, the printed digits.
+        assert!(split.before < 1e-7, "{}: {split:?}", s.name);
+        // After the relock, from the same state, within a few 1e-6 rad over seconds.
+        assert!(split.after < 3e-6, "{}: {split:?}", s.name);
+        if s.explained_by.contains("relock at a print step") {
+            assert!(split.whole > 100.0 * split.after, "{}: {split:?}", s.name);
+            slip_ends += 1;
+        }
+    }
+    assert_eq!(slip_ends, 2);
+}

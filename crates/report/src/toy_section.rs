@@ -62,13 +62,17 @@ pub fn tables(t: &Toy) -> Vec<StudyTable> {
             "What each difference larger than the printed digits comes from: the tilt difference \
              against the peer run with ε = 1e-3 m/s and with ε = 1e-7 m/s (where stored), and \
              the peer's modelling choice that explains it, first with ε = 1e-3 m/s, then with \
-             1e-7 m/s. The choices: {}.",
+             1e-7 m/s. Where the peer relocks (ε = 1e-7 m/s), the run is split at its relock: \
+             the tilt difference before this tool's slip ends, and after the relock with this \
+             tool restarted from the peer's printed state there. The choices: {}.",
             meanings.join("; ")
         ),
         &[
             "scene",
             "Δα, ε = 1e-3 (rad)",
             "Δα, ε = 1e-7 (rad)",
+            "before the slip ends (rad)",
+            "after the relock, restarted (rad)",
             "explained by",
         ],
     );
@@ -89,6 +93,8 @@ pub fn tables(t: &Toy) -> Vec<StudyTable> {
             c.sharp
                 .as_ref()
                 .map_or("–".into(), |s| scientific(s.tilt, 2)),
+            c.relock.map_or("–".into(), |r| scientific(r.before, 2)),
+            c.relock.map_or("–".into(), |r| scientific(r.after, 2)),
             explanation(c),
         ]);
     }
@@ -267,6 +273,40 @@ fn cite(tables: &[StudyTable], i: usize) -> String {
         .map_or(String::new(), |t| format!(" (Table {})", t.number))
 }
 
+/// The runs that end a slip, split at the peer's relock ([`studies::peer::relock`]).
+fn relocked(t: &Toy) -> String {
+    let slip_ends: Vec<(&str, studies::peer::relock::RelockSplit)> = t
+        .peer
+        .iter()
+        .filter(|c| c.explained_by.contains("relock at a print step"))
+        .filter_map(|c| c.relock.map(|r| (c.name.as_str(), r)))
+        .collect();
+    let largest = |f: fn(&studies::peer::relock::RelockSplit) -> f64| {
+        scientific(slip_ends.iter().map(|(_, r)| f(r)).fold(0.0, f64::max), 1)
+    };
+    format!(
+        "In the runs that end a slip ({}), the peer with ε = 1e-7 m/s relocks only at a print \
+         step, up to 1 ms after this tool. Split there, they agree to {} rad before this tool's \
+         slip ends and to {} rad after the peer's relock, this tool restarted from the peer's \
+         printed state, against at least {} rad over the whole run: the interval between the \
+         two relocks is what they differ by.",
+        slip_ends
+            .iter()
+            .map(|(n, _)| *n)
+            .collect::<Vec<_>>()
+            .join(", "),
+        largest(|r| r.before),
+        largest(|r| r.after),
+        scientific(
+            slip_ends
+                .iter()
+                .map(|(_, r)| r.whole)
+                .fold(f64::INFINITY, f64::min),
+            1
+        ),
+    )
+}
+
 /// What was compared and found, and for each of the paper's numbers whether its conclusion
 /// survives for the toy.
 fn summary(t: &Toy, tables: &[StudyTable], figures: &[usize]) -> String {
@@ -311,8 +351,7 @@ fn summary(t: &Toy, tables: &[StudyTable], figures: &[usize]) -> String {
          does not carry out, the peer restarts from the state one print step on with its clock \
          set back to 0, so its later rows are labelled one print step early (read from its \
          records); so compared they agree to {rest} rad with ε = 1e-7 m/s, what the print step \
-         it slides at its start leaves. In the runs that end a slip, the peer with ε = 1e-7 m/s \
-         relocks only at a print step; the rest there is not traced further here. Its \
+         it slides at its start leaves. {relocked} Its \
          near-vertical smoothing (within 0.02 rad of upright) {smooth}, and its stops (the \
          energy stop among them) {stops}.{figs} \
          What the toy's thickness does to the paper's numbers{t2}: the steady precession of eq 29 \
@@ -367,6 +406,7 @@ fn summary(t: &Toy, tables: &[StudyTable], figures: &[usize]) -> String {
             }
         },
         ns = t.peer.iter().filter(|c| c.sharp.is_some()).count(),
+        relocked = relocked(t),
         restarted = t
             .peer
             .iter()

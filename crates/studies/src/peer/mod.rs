@@ -36,6 +36,7 @@
 
 pub mod compare;
 pub mod mapping;
+pub mod relock;
 pub mod response;
 pub mod result;
 pub mod stored;

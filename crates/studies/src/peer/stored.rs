@@ -5,6 +5,7 @@
 //! peer's commit, compiler and response file) is in each folder's `provenance.txt`.
 
 use super::compare::{compare, Largest, PeerComparison};
+use super::relock::{split, RelockSplit};
 use super::result::{parse, retimed};
 use super::PeerError;
 use physics::scene::Scene;
@@ -74,8 +75,9 @@ pub const EXPLANATIONS: [(&str, &str); 4] = [
     ),
     (
         "relock at a print step",
-        "the peer relocks only at a print step, up to 1 ms after this tool; the rest is not \
-         traced further here",
+        "the peer relocks only at a print step, up to 1 ms after this tool: split there, the \
+         runs agree before this tool's slip ends and after the peer's relock (this tool \
+         restarted from the peer's printed state), far closer than over the whole run",
     ),
     (
         "its start",
@@ -242,6 +244,9 @@ pub struct StoredComparison {
     /// The peer's least $|\theta|$, the tilt from upright (rad): its near-vertical smoothing
     /// acts below 0.02 rad.
     pub closest_to_upright: f64,
+    /// The run with $\varepsilon = 10^{-7}$ m/s split at the peer's first relock
+    /// ([`super::relock::split`]); `None` without that run or without a relock.
+    pub relock: Option<RelockSplit>,
 }
 
 /// Every stored run compared with this tool's run of its scene.
@@ -274,6 +279,10 @@ pub fn compare_stored() -> Result<Vec<StoredComparison>, PeerError> {
                         .map_or((s.result, "result.txt"), |t| (t, "eps-1e-7/result.txt"));
                     let r = rows(text, what)?;
                     retimed(&r, scene.sample.unwrap_or(1e-3)) != r
+                },
+                relock: match s.sharp {
+                    Some(t) => split(&scene, &rows(t, "eps-1e-7/result.txt")?)?,
+                    None => None,
                 },
                 closest_to_upright: rows(s.result, "result.txt")?
                     .iter()
