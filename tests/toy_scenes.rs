@@ -219,3 +219,46 @@ solver: {{ rtol: 1e-11, atol: 1e-13 }}
     assert!(Scene::parse(&src(1.4, edge * 0.99), "toy-steady.yaml").is_err());
     assert!(Scene::parse(&src(1.4, edge * 1.01), "toy-steady.yaml").is_ok());
 }
+
+/// A thick disk started upright (rolling straight, or spinning about a vertical diameter) is
+/// refused with the start's line and a tilt that works; the tilted start runs.
+#[test]
+fn a_thick_disk_started_upright_is_refused_with_a_tilt_that_works() {
+    let src = |start: &str| {
+        format!(
+            "name: toy-upright
+model: sliding
+disk: {{ radius: 0.0375, mass: 0.4, thickness: 0.0128, fillet: 0.002 }}
+friction: {{ mu: 1.0 }}
+start: {{ {start} }}
+stop: {{ time: 0.05 }}
+"
+        )
+    };
+    for start in [
+        "rolling_straight: { spin: 5.0 }",
+        "vertical_spin: { precession: 30.0 }",
+    ] {
+        let e = Scene::parse(&src(start), "toy-upright.yaml")
+            .unwrap_err()
+            .to_string();
+        println!("{e}");
+        assert!(e.starts_with("toy-upright.yaml:5:"), "{e}");
+        let fix = e
+            .split("add ")
+            .nth(1)
+            .expect("the fix in the message")
+            .trim_end_matches('.');
+        let fixed = format!("{start}, {fix}");
+        let r = run(
+            &Scene::parse(&src(&fixed), "toy-upright.yaml").unwrap(),
+            None,
+        )
+        .unwrap();
+        assert!(
+            r.ending.is_complete() && r.rows.last().is_some_and(|x| x[0] > 0.04),
+            "{start}: {}",
+            r.ending
+        );
+    }
+}

@@ -163,6 +163,24 @@ impl RollingSolid {
         Edge { b: -d0 / d1, side }
     }
 
+    /// The tilt where the centre is above the contact ($x = 0$), the solid balancing on its
+    /// rim; `None` for the thin disk (at $\pi/2$). Between it and $\pi/2$ gravity tips the
+    /// solid back toward upright.
+    pub fn balance_tilt(&self) -> Option<f64> {
+        self.solid?;
+        let x = |alpha: f64| self.terms(alpha).0;
+        let (mut lo, mut hi) = (0.0, FRAC_PI_2);
+        for _ in 0..100 {
+            let mid = 0.5 * (lo + hi);
+            if x(mid) > 0.0 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        Some(0.5 * (lo + hi))
+    }
+
     /// Eq 29 for the solid: $\Omega_0^2 = mgx/(D_0 + bD_1)$, of either sign when no steady
     /// motion exists.
     pub fn precession_squared(&self, alpha0: f64, b: f64) -> f64 {
@@ -261,6 +279,12 @@ mod tests {
         let err = s.steady(80f64.to_radians(), 0.0).unwrap_err().to_string();
         assert!(err.contains("raise b"), "{err}");
         assert_eq!(s.edge(85f64.to_radians()).side, Side::Below);
+        // The balance: the centre above the contact, (a - f) cos = (c - f) sin near upright.
+        let balance = s.balance_tilt().unwrap();
+        let (p, q) = solid.offsets(a, balance.cos(), balance.sin());
+        assert!((q * balance.cos() - p * balance.sin()).abs() < 1e-15);
+        assert!((82.0..84.0).contains(&balance.to_degrees()), "{balance}");
+        assert_eq!(thin(0.25).balance_tilt(), None);
         assert!(s.steady(85f64.to_radians(), 0.0).is_ok());
     }
 }

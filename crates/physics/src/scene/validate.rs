@@ -386,6 +386,22 @@ impl Validator<'_> {
                 ),
             ));
         }
+        if let (Some(balance), true) = (
+            RollingSolid::of(disk, solid).balance_tilt(),
+            m.alpha == PI / 2.0,
+        ) {
+            let lean = PI / 2.0 - balance;
+            return Err(self.err(
+                &["start"],
+                format!(
+                    "start: a disk with a thickness upright (alpha = pi/2) stands on a line of its \
+                     rim, which the point-contact model does not run, and tilted less than its \
+                     balance ({lean:.3} rad from upright) gravity tips it back there: tilt it further, \
+                     e.g. add perturb: {{ alpha: {:.2} }}",
+                    -(2.0 * lean).max(0.01)
+                ),
+            ));
+        }
         if model == ModelKind::Adiabatic && m.alpha >= PI / 2.0 {
             return Err(self.err(
                 &["start"],
