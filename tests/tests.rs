@@ -15,6 +15,7 @@ mod experiment_coverage_diagnosis;
 mod experiment_hum;
 mod experiment_inputs;
 mod experiment_models;
+mod experiment_sound_bound;
 mod extremes;
 mod figures;
 mod invariance;
