@@ -42,7 +42,6 @@ pub mod law;
 pub mod law_stability;
 pub mod least_squares;
 pub mod light;
-pub mod mains_drift;
 pub mod mechanism_record;
 pub mod mechanisms;
 pub mod model_choice;
