@@ -8,7 +8,10 @@
 //!
 //! **Frames follow the pitch.** Frames are contiguous and do not overlap (their errors are
 //! independent). Until a line is held, frames of `search` seconds look for a fundamental
-//! between 5 Hz and 2 kHz. Once three frames in a row hold it, the next frame's length is
+//! between 5 Hz and 2 kHz. Once three frames in a row hold it (one line: each searched frame's
+//! fundamental within [`STEP`] of the one before; a tone that stops where the disk's line
+//! starts, as a mains line's residue in a silent lead-in, is not one line with it), the next
+//! frame's length is
 //! chosen from the line's motion $\dot f$ so that the pitch moves by at most `kappa` of a
 //! frequency resolution across it,
 //! $$T = \min\left(T_{max}, \sqrt{\kappa/|\dot f|}\right),$$
@@ -27,7 +30,9 @@
 //! the time variance of $w^2$, which is taken as that part's standard deviation ($\ddot f$
 //! from the neighbouring points).
 //!
-//! **Left out.** Frames whose two estimators disagree by more than 5 of their sigmas plus a
+//! **Left out.** Frames off the line the track follows (cut where a searched frame's
+//! fundamental jumps by more than [`STEP`] from the last one held; the longest run is the line),
+//! frames whose two estimators disagree by more than 5 of their sigmas plus a
 //! hundredth of the resolution $1/T$, and frames found by the wide search that lie more than
 //! 10 % off the median of their four neighbours, as stray; frames without a line, as silent; the last frame before a silence
 //! (the disk may settle inside it), as smeared.
@@ -145,9 +150,14 @@ pub fn frequency_track(
         lens.iter().copied().fold(0.0, f64::max),
     );
     let silent = frames.iter().filter(|f| f.est.is_none()).count();
+    let line = the_line(&frames);
     let (mut kept, mut stray, mut smeared) = (Vec::<(TrackPoint, bool)>::new(), 0, smeared_end);
     for (k, fr) in frames.iter().enumerate() {
         let Some(e) = fr.est else { continue };
+        if !line[k] {
+            stray += 1;
+            continue;
+        }
         if k + 1 < frames.len() && frames[k + 1].est.is_none() {
             smeared += 1;
             continue;
@@ -196,6 +206,28 @@ pub fn frequency_track(
     })
 }
 
+/// Which frames lie on the line the track follows: the frames holding a fundamental are cut into
+/// runs wherever a searched frame's fundamental lies more than [`STEP`] from the last one held
+/// (silent frames between do not cut a run); the run of most frames is the line (the earliest
+/// of equal runs).
+fn the_line(frames: &[Frame]) -> Vec<bool> {
+    let mut run = vec![usize::MAX; frames.len()];
+    let (mut id, mut last): (usize, Option<f64>) = (0, None);
+    for (k, fr) in frames.iter().enumerate() {
+        let Some(e) = fr.est else { continue };
+        if let Some(p) = last {
+            if fr.searched && (e.f / p).max(p / e.f) > STEP {
+                id += 1;
+            }
+        }
+        last = Some(e.f);
+        run[k] = id;
+    }
+    let count = |i: usize| run.iter().filter(|&&r| r == i).count();
+    let best = (0..=id).rev().max_by_key(|&i| count(i)).unwrap_or(0);
+    run.iter().map(|&r| r == best).collect()
+}
+
 /// Walks the record frame by frame (see the module's documentation); returns the frames and 1
 /// when the track ended because the line moved too fast for a frame (counted as one smeared
 /// frame), else 0.
@@ -219,7 +251,7 @@ fn march(v: &[f64], t0: f64, fs: f64, s: &TrackSettings) -> (Vec<Frame>, usize) 
                 let n = frames.len();
                 if t * f_mid >= s.cycles {
                     (t, 0.8 * f_mid, 1.2 * f_mid)
-                } else if n >= 4 && frames[n - 4..].iter().all(|f| f.est.is_some()) {
+                } else if n >= 4 && one_line(&frames[n - 4..]) {
                     smeared = 1;
                     break;
                 } else {
@@ -283,14 +315,25 @@ impl Motion {
     }
 }
 
+/// Largest ratio of consecutive frames' fundamentals on one line.
+pub const STEP: f64 = 1.25;
+
+/// Whether `frames` all hold a fundamental on one line: each frame searched over the whole band
+/// within [`STEP`] of the one before (a frame searched about the line's predicted pitch is on
+/// it by its band).
+fn one_line(frames: &[Frame]) -> bool {
+    frames.iter().all(|f| f.est.is_some())
+        && frames.windows(2).all(|w| match (w[0].est, w[1].est) {
+            (Some(p), Some(q)) => !w[1].searched || (q.f / p.f).max(p.f / q.f) <= STEP,
+            _ => false,
+        })
+}
+
 /// The line's motion from the last frames when the last three held it.
 fn predict(frames: &[Frame]) -> Option<Motion> {
     let mid = |f: &Frame| 0.5 * (f.a + f.b);
     let n = frames.len();
-    if n < 2 {
-        return None;
-    }
-    if n < 3 || frames[n - 3..].iter().any(|f| f.est.is_none()) {
+    if n < 3 || !one_line(&frames[n - 3..]) {
         return None;
     }
     let (p, q) = (&frames[n - 2], &frames[n - 1]);

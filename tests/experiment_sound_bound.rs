@@ -1,0 +1,179 @@
+//! The Cramér-Rao bound on beta from a simulated sound, computed from the simulator's own
+//! signal and noise, independently of the analysis; against the analysis's sigma.
+//!
+//! The sound is $x_j = A g(t_j) \sum_h a_h \sin(h\psi(t_j) + \phi_h) + n_j$ with eq 79's heading
+//! $\psi = -C^q\tau^{1-q}/(1-q)$, $q = 1/(\beta+2)$, $\tau = t_0 - t$. Each harmonic is a
+//! narrow line at $h\Omega/2\pi$, so locally the noise is white with the variance per sample
+//! $\sigma^2_{eff}(f, t) = \sigma^2 + \sigma_r^2(t) + S_{room}(f)$: the microphone's white noise,
+//! the rattle's (white, $\sigma_r = r A e^{-\tau/30\,ms}$ in the last 0.2 s) and the room's
+//! one-pole low-passed noise at the line's frequency, $S_{room}(f) = b^2/|1 - \rho e^{-2\pi i f
+//! \Delta t}|^2$. The Fisher information of $\theta = (\beta, t_0, \ln C, \phi_1..\phi_4)$ is
+//! $$F_{ab} = \sum_j \sum_h \frac{(A g a_h)^2}{2\sigma^2_{eff}} \,
+//!   \frac{\partial(h\psi + \phi_h)}{\partial\theta_a}\frac{\partial(h\psi + \phi_h)}{\partial\theta_b},
+//!   \qquad \frac{\partial\psi}{\partial\theta} = \psi\,\frac{\partial E}{\partial\theta},\
+//!   E = q\ln C + (1-q)\ln\tau - \ln(1-q),$$
+//! (the amplitudes' parameters are orthogonal to the phases' for lines many cycles long), and
+//! the bound is $\sigma_\beta \ge \sqrt{(F^{-1})_{\beta\beta}}$.
+
+use experiment::plausibility::Plausibility;
+use experiment::sound::Voice;
+use experiment::{
+    analyze, analyze_sound, law_sound, law_trace, AnalysisSettings, Artifacts, Law, LightModel,
+    Microphone, TrackSettings,
+};
+use nalgebra::SMatrix;
+use physics::Disk;
+use std::f64::consts::TAU;
+
+/// Eq 79's law with beta and Omega = 100 rad/s at 7 s before t0.
+fn law(beta: f64) -> Law {
+    Law {
+        beta,
+        c: 100f64.powf(beta + 2.0) * 7.0,
+    }
+}
+
+/// The microphone of `beta_from_sound_is_about_as_precise_as_from_light`.
+fn mic(noise: f64, seed: u64) -> Microphone {
+    Microphone {
+        sample_rate: 48_000,
+        samples: 480_000,
+        voice: Voice::phone(),
+        noise,
+        seed,
+        ..Microphone::default()
+    }
+}
+
+/// The Cramér-Rao bound on beta for the sound of `law` recorded by `m` (see the module's
+/// documentation).
+fn bound_beta(law: &Law, m: &Microphone) -> f64 {
+    let fs = f64::from(m.sample_rate);
+    let dt = 1.0 / fs;
+    let t0 = m.end_at;
+    let v = &m.voice;
+    let heading = |j: usize| {
+        let tau = t0 - j as f64 * dt;
+        if tau > 0.0 {
+            law.heading(tau)
+        } else {
+            f64::NAN
+        }
+    };
+    // The level's reference, as the simulator takes it: the largest rate by central differences.
+    let top = (1..m.samples - 1)
+        .map(|j| (heading(j + 1) - heading(j - 1)) / (2.0 * dt))
+        .filter(|w| w.is_finite())
+        .map(f64::abs)
+        .fold(0.0, f64::max);
+    let lp = 1.0 - (-TAU * 300.0 * dt).exp();
+    let b = lp * v.room * ((2.0 - lp) / lp).sqrt();
+    let rho = 1.0 - lp;
+    let room = |f: f64| {
+        let w = TAU * f * dt;
+        b * b / (1.0 - 2.0 * rho * w.cos() + rho * rho)
+    };
+    let q = 1.0 / (law.beta + 2.0);
+    let ln_c = law.c.ln();
+    let mut fisher = SMatrix::<f64, 7, 7>::zeros();
+    for j in 0..m.samples {
+        let t = j as f64 * dt;
+        let tau = t0 - t;
+        if t < v.lead || tau <= 0.0 {
+            continue;
+        }
+        let psi = law.heading(tau);
+        let omega = (law.c / tau).powf(q);
+        let g = (omega / top).powf(v.level_exponent);
+        // dpsi/d(beta, t0, ln C): psi dE/dtheta, dq/dbeta = -q^2.
+        let de_dq = ln_c - tau.ln() + 1.0 / (1.0 - q);
+        let d = [psi * de_dq * (-q * q), psi * (1.0 - q) / tau, psi * q];
+        let rattle = if v.rattle > 0.0 && tau < 0.2 {
+            (v.rattle * m.amplitude * (-tau / 0.03).exp()).powi(2)
+        } else {
+            0.0
+        };
+        for h in 0..4 {
+            let f = (h + 1) as f64 * omega / TAU;
+            if f >= 0.5 * fs {
+                continue;
+            }
+            let a = m.amplitude * g * v.harmonics[h];
+            let w = a * a / (2.0 * (m.noise * m.noise + rattle + room(f)));
+            let mut grad = [0.0; 7];
+            for k in 0..3 {
+                grad[k] = (h + 1) as f64 * d[k];
+            }
+            grad[3 + h] = 1.0;
+            for r in 0..7 {
+                for c in 0..7 {
+                    fisher[(r, c)] += w * grad[r] * grad[c];
+                }
+            }
+        }
+    }
+    let cov = fisher
+        .try_inverse()
+        .expect("the Fisher information is invertible");
+    cov[(0, 0)].sqrt()
+}
+
+/// The bound against the analysis's sigma and the light signal's, on the sounds of
+/// `beta_from_sound_is_about_as_precise_as_from_light` (noise 0.003, the phone's room; four
+/// seeds): no fit states a sigma below the bound, and the bound itself lies within 2x of the
+/// light's sigma, so that an efficient estimator would meet the issue's target on this sound.
+/// With the room's noise on, the microphone's white noise (0.001 to 0.01) hardly moves the
+/// bound; the table prints the bound against the room's level.
+#[test]
+fn beta_from_sound_against_its_cramer_rao_bound() {
+    let l = law(2.0);
+    let light = law_trace(&l, &Disk::uniform(0.0375), &LightModel::default()).unwrap();
+    let light = analyze(&light, &AnalysisSettings::default())
+        .unwrap()
+        .eq84
+        .beta_sigma;
+    let bound = bound_beta(&l, &mic(0.003, 1));
+    let mut sigmas = Vec::new();
+    let mut betas = Vec::new();
+    for seed in 1..=4 {
+        let s = law_sound(&l, &mic(0.003, seed), &Artifacts::none()).unwrap();
+        let a = analyze_sound(&s, &TrackSettings::default(), &Plausibility::default()).unwrap();
+        let f = a.law();
+        assert!(f.from_phase, "{a}");
+        println!("seed {seed}: beta {:.5} +- {:.5}", f.beta, f.beta_sigma);
+        sigmas.push(f.beta_sigma);
+        betas.push(f.beta);
+    }
+    let mean = sigmas.iter().sum::<f64>() / sigmas.len() as f64;
+    let rms = (betas.iter().map(|b| (b - 2.0).powi(2)).sum::<f64>() / betas.len() as f64).sqrt();
+    println!(
+        "light: sigma {light:.6}; Cramer-Rao bound on beta from sound {bound:.6} ({:.2} of the \
+         light's); the fit's mean sigma {mean:.6} ({:.2} of the bound, {:.2} of the light's); rms \
+         of beta about the truth {rms:.6} ({:.2} of the bound)",
+        bound / light,
+        mean / bound,
+        mean / light,
+        rms / bound
+    );
+    for &s in &sigmas {
+        assert!(s > 0.85 * bound, "a sigma {s} below the bound {bound}");
+    }
+    assert!(bound < 2.0 * light, "bound {bound}, light {light}");
+    for room in [0.0, 0.001, 0.003, 0.01] {
+        let row: Vec<String> = [0.001, 0.003, 0.01]
+            .iter()
+            .map(|&noise| {
+                let m = Microphone {
+                    voice: Voice {
+                        room,
+                        ..Voice::phone()
+                    },
+                    ..mic(noise, 1)
+                };
+                let b = bound_beta(&l, &m);
+                format!("noise {noise}: {b:.6} ({:.2} of the light's)", b / light)
+            })
+            .collect();
+        println!("room {room}: {}", row.join("; "));
+    }
+}
