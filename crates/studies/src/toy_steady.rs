@@ -22,6 +22,7 @@
 
 use crate::thickness::{Shape, TOY};
 use crate::StudyError;
+use numerics::oscillation::{bisect, try_bisect};
 use physics::dispatch::sliding_model;
 use physics::model::sliding::{Flow, Mode, Sliding};
 use physics::model::steady_solid::Side;
@@ -131,22 +132,17 @@ fn brackets(shape: Shape, alpha0: f64, b: f64) -> Result<Vec<(f64, f64)>, StudyE
         .collect())
 }
 
-/// The root of the drift in a bracket, by bisection.
-fn shoot(
-    shape: Shape,
-    alpha0: f64,
-    b: f64,
-    (mut lo, mut hi): (f64, f64),
-) -> Result<f64, StudyError> {
+/// The root of the drift in a bracket, by bisection to the last bit.
+fn shoot(shape: Shape, alpha0: f64, b: f64, (lo, hi): (f64, f64)) -> Result<f64, StudyError> {
     let low_sign = drift(shape, alpha0, b, lo)? > 0.0;
-    for _ in 0..60 {
-        let mid = 0.5 * (lo + hi);
-        if (drift(shape, alpha0, b, mid)? > 0.0) == low_sign {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
+    let narrow = |_: f64, _: f64| false;
+    let changed = |w: f64| {
+        drift(shape, alpha0, b, w)
+            .ok()
+            .map(|d| (d > 0.0) != low_sign)
+    };
+    let (lo, hi) = try_bisect(lo, hi, narrow, changed)
+        .ok_or_else(|| format!("a rolling run at alpha0 = {alpha0} rad failed in the bisection"))?;
     Ok(0.5 * (lo + hi))
 }
 
@@ -217,16 +213,9 @@ pub struct ToySteady {
 }
 
 /// The tilt in (`lo`, `hi`) deg where `f` changes sign, by bisection.
-fn crossing(f: impl Fn(f64) -> f64, (mut lo, mut hi): (f64, f64)) -> f64 {
+fn crossing(f: impl Fn(f64) -> f64, (lo, hi): (f64, f64)) -> f64 {
     let low = f(lo) > 0.0;
-    for _ in 0..60 {
-        let mid = 0.5 * (lo + hi);
-        if (f(mid) > 0.0) == low {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
+    let (lo, hi) = bisect(lo, hi, 0.0, |d| (f(d) > 0.0) != low);
     0.5 * (lo + hi)
 }
 

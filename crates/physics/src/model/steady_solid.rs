@@ -37,6 +37,7 @@
 use crate::disk::Disk;
 use crate::model::sliding::Solid;
 use crate::model::Motion;
+use numerics::oscillation::bisect;
 use serde::Serialize;
 use std::f64::consts::FRAC_PI_2;
 use thiserror::Error;
@@ -168,16 +169,7 @@ impl RollingSolid {
     /// solid back toward upright.
     pub fn balance_tilt(&self) -> Option<f64> {
         self.solid?;
-        let x = |alpha: f64| self.terms(alpha).0;
-        let (mut lo, mut hi) = (0.0, FRAC_PI_2);
-        for _ in 0..100 {
-            let mid = 0.5 * (lo + hi);
-            if x(mid) > 0.0 {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
+        let (lo, hi) = bisect(0.0, FRAC_PI_2, 0.0, |alpha| self.terms(alpha).0 <= 0.0);
         Some(0.5 * (lo + hi))
     }
 
@@ -227,15 +219,7 @@ mod tests {
     use crate::model::steady::{b_bound, precession_squared};
 
     fn thin(k: f64) -> RollingSolid {
-        let (a, m) = (0.0375, 0.4);
-        RollingSolid {
-            a,
-            m,
-            g: 9.81,
-            i11: 2.0 * k * m * a * a,
-            i22: k * m * a * a,
-            solid: None,
-        }
+        RollingSolid::of(&Disk::new(0.0375, k, 0.4, 9.81).unwrap(), None)
     }
 
     /// The thin disk's edge and precession are eqs 29-30, at several k, tilts and radii.
@@ -243,7 +227,7 @@ mod tests {
     fn the_thin_limit_is_eqs_29_and_30() {
         for k in [0.25, 0.5] {
             let disk = Disk::new(0.0375, k, 0.4, 9.81).unwrap();
-            let s = thin(k);
+            let s = RollingSolid::of(&disk, None);
             for alpha0 in [0.1, 0.7, 1.4] {
                 let e = s.edge(alpha0);
                 assert_eq!(e.side, Side::Above);
