@@ -16,6 +16,7 @@ mod experiment_hum;
 mod experiment_inputs;
 mod experiment_models;
 mod experiment_sound_bound;
+mod experiment_turn_count;
 mod extremes;
 mod figures;
 mod invariance;

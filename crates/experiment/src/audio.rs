@@ -23,7 +23,8 @@ use crate::phase_fit::{fit_phase, PhaseFit};
 use crate::plausibility::{Evidence, Plausibility, Verdict};
 use crate::trace::{Trace, Truth};
 use crate::track::{frequency_track, FrequencyTrack, TrackSettings};
-use nalgebra::SVector;
+use crate::turn_count::TurnCount;
+use nalgebra::{SMatrix, SVector};
 use physics::budget::Work;
 use serde::Serialize;
 use std::f64::consts::PI;
@@ -117,20 +118,14 @@ pub struct SoundAnalysis {
     pub phase: Option<PhaseFit>,
     /// Why the phase was not fitted, when it was not.
     pub phase_refused: Option<String>,
+    /// The turns the phase's fit counts against the pitch track's, when the phase was fitted.
+    pub turns: Option<TurnCount>,
     /// Model choice.
     pub models: Comparison,
     /// The spin-down checks.
     pub verdict: Verdict,
     /// The truth, for synthetic recordings.
     pub truth: Option<Truth>,
-}
-
-/// How many of the pitch track's sigmas the phase's $\beta$ and $t_0$ may lie from the track's.
-pub const AGREE: f64 = 5.0;
-
-/// Whether the phase's fit lies within [`AGREE`] of the track's sigmas of the track's fit.
-fn agrees(p: &PhaseFit, f: &TrackFit) -> bool {
-    (p.beta - f.beta).abs() <= AGREE * f.beta_sigma && (p.t0 - f.t0).abs() <= AGREE * f.t0_sigma
 }
 
 /// Eq 79's parameters as a sound analysis states them.
@@ -264,41 +259,71 @@ pub fn analyze_sound_within(
         }
     }
     work.stage("following the phase")?;
-    let samples = Samples {
-        x: &trace.v,
-        t_start: trace.t[0],
-        dt: 1.0 / track.sample_rate,
-    };
-    let (phase, phase_refused) = match fit_phase(
-        &samples,
-        &track.hum,
-        a[0],
-        SVector::<f64, 3>::new(fit.beta, fit.t0, fit.ln_c),
-        fit.t0_sigma,
-        &BlockSettings::default(),
-    ) {
-        Ok(p) if agrees(&p, &fit) => (Some(p), None),
-        Ok(p) => (
-            None,
-            Some(format!(
-                "the phase's fit (beta = {:.4}, t0 = {:.4} s) lies more than {AGREE} of the \
-                 pitch track's sigmas from the track's: a turn was miscounted",
-                p.beta, p.t0
-            )),
-        ),
-        Err(e) => (None, Some(format!("the phase could not be fitted ({e})"))),
-    };
+    let (phase, phase_refused, turns) = phase_of(trace, &track, a[0], &fit, &s.cov);
     Ok(SoundAnalysis {
         source: trace.source.clone(),
         recording: None,
         phase,
         phase_refused,
+        turns,
         models: compare(y.len(), candidates),
         track,
         fit,
         verdict,
         truth: trace.truth.clone(),
     })
+}
+
+/// Eq 79's heading fitted to the phase of `trace` from `first` (s), started from the track's fit
+/// `fit` (covariance `cov`); the phase, or why it is not used, and the turns counted.
+fn phase_of(
+    trace: &Trace,
+    track: &FrequencyTrack,
+    first: f64,
+    fit: &TrackFit,
+    cov: &SMatrix<f64, 3, 3>,
+) -> (Option<PhaseFit>, Option<String>, Option<TurnCount>) {
+    let samples = Samples {
+        x: &trace.v,
+        t_start: trace.t[0],
+        dt: 1.0 / track.sample_rate,
+    };
+    let law = |beta: f64, t0: f64, ln_c: f64| SVector::<f64, 3>::new(beta, t0, ln_c);
+    match fit_phase(
+        &samples,
+        &track.hum,
+        first,
+        law(fit.beta, fit.t0, fit.ln_c),
+        fit.t0_sigma,
+        &BlockSettings::default(),
+    ) {
+        Ok(p) => {
+            let span = (
+                p.points.first().map_or(f64::NAN, |b| b.a),
+                p.points.last().map_or(f64::NAN, |b| b.b),
+            );
+            let count = TurnCount::of(
+                &law(p.beta, p.t0, p.ln_c),
+                &law(fit.beta, fit.t0, fit.ln_c),
+                cov,
+                span,
+            );
+            if count.miscounted() {
+                (
+                    None,
+                    Some(format!("{count}: a turn was miscounted")),
+                    Some(count),
+                )
+            } else {
+                (Some(p), None, Some(count))
+            }
+        }
+        Err(e) => (
+            None,
+            Some(format!("the phase could not be fitted ({e})")),
+            None,
+        ),
+    }
 }
 
 impl fmt::Display for SoundAnalysis {
@@ -347,6 +372,10 @@ impl fmt::Display for SoundAnalysis {
                 "  eq 79 on the phase (the result): beta = {:.5} +- {:.5}, t0 = {:.6} +- {:.6} s, ln C = {:.4} +- {:.4} ({:.1} turns in {} blocks, rms residual {:.4} rad, chi2/dof {:.2}; errors scaled by the residuals)",
                 p.beta, p.beta_sigma, p.t0, p.t0_sigma, p.ln_c, p.ln_c_sigma, p.turns, p.n, p.rms, p.chi2_dof
             )
+            .and_then(|()| match &self.turns {
+                Some(c) => writeln!(f, "  turns counted: {c}"),
+                None => Ok(()),
+            })
             .and_then(|()| match &p.law {
                 Some(l) if l.drifts => writeln!(
                     f,

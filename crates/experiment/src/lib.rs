@@ -67,6 +67,7 @@ pub mod spectrogram;
 pub mod spectrum;
 pub mod trace;
 pub mod track;
+pub mod turn_count;
 pub mod wav;
 pub mod window;
 
