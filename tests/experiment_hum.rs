@@ -48,3 +48,36 @@ fn a_near_noiseless_sound_with_hum_is_tracked() {
         assert!((l.t0 - truth.t0).abs() < l.t0_sigma, "{a}");
     }
 }
+
+/// A phone's sound at 48 kHz with 2 % hum whose frequency wanders as a grid's does
+/// ($50 + w \sin(2\pi t/12\,\mathrm{s})$ Hz, $w$ = 0.05, 0.1 and 0.2 Hz) gives the beta and t0
+/// of the same sound without hum, within the sigma of the analysis without hum.
+#[test]
+#[ignore = "not met: with the lines' phase followed, the shifts are -0.42 to +2.23 sigma (beta) and -1.11 to +0.44 sigma (t0) over the four sounds; fitted at one steady frequency, +2.8 to +12.9 sigma and -11.9 to +0.6 sigma"]
+fn a_wandering_mains_frequency_is_followed() {
+    let mut worst: f64 = 0.0;
+    for (seed, wander) in [(1, 0.05), (2, 0.1), (3, 0.2), (4, 0.1)] {
+        let mic = Microphone::phone(48_000, seed);
+        let with = |hum: f64| {
+            let art = Artifacts {
+                hum,
+                mains_wander: wander,
+                seed,
+                ..Artifacts::none()
+            };
+            let s = law_sound(&law(2.0), &mic, &art).unwrap();
+            sound_of(&s).unwrap_or_else(|e| panic!("seed {seed}, hum {hum}: {e}"))
+        };
+        let (clean, hummed) = (with(0.0), with(0.02));
+        let (c, h) = (clean.law(), hummed.law());
+        assert!(c.from_phase && h.from_phase, "{clean}\n{hummed}");
+        let (db, dt) = ((h.beta - c.beta) / c.beta_sigma, (h.t0 - c.t0) / c.t0_sigma);
+        println!(
+            "seed {seed}, wander {wander} Hz: beta {:.5} +- {:.5} with hum, {:.5} +- {:.5} without \
+             ({db:+.2} sigma); t0 {:.6} +- {:.6} s with, {:.6} +- {:.6} s without ({dt:+.2} sigma)",
+            h.beta, h.beta_sigma, c.beta, c.beta_sigma, h.t0, h.t0_sigma, c.t0, c.t0_sigma
+        );
+        worst = worst.max(db.abs()).max(dt.abs());
+    }
+    assert!(worst < 1.0, "a shift of {worst:.2} sigma");
+}

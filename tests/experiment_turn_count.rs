@@ -46,6 +46,13 @@ fn a_slip_of_one_turn_is_called_and_a_fraction_is_not() {
         assert!(c.sigma < 1.0 / SIGMAS, "{c}");
         assert_eq!(c.miscounted(), miscounted, "{c}");
     }
+    // A law whose t0 falls inside the span counts its turns to its t0.
+    let early = SVector::<f64, 3>::new(2.0, 8.41, 20.26);
+    let c = TurnCount::of(&early, &early, &cov, span);
+    assert!(
+        c.track.is_finite() && c.phase == c.track && !c.miscounted(),
+        "{c}"
+    );
     // With the track's count uncertain by a turn, a one-turn difference cannot be told.
     let loose = cov * 1e4;
     let c = TurnCount::of(&with_extra_turns(&track, 1.0, span), &track, &loose, span);

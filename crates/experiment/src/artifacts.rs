@@ -16,6 +16,9 @@ use std::f64::consts::TAU;
 /// at any sample rate the experiment uses (the scope's and the microphone's are kHz).
 pub const MAX_GLITCHES_PER_S: f64 = 1000.0;
 
+/// Period (s) of the mains frequency's wander ([`Artifacts::mains_wander`]).
+pub const WANDER_PERIOD_S: f64 = 12.0;
+
 /// The artifacts to add. All amplitudes are in the signal's unit (V for a scope trace, full
 /// scale 1 for sound).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -26,6 +29,10 @@ pub struct Artifacts {
     pub hum: f64,
     /// Mains frequency (Hz): 50 or 60.
     pub mains: f64,
+    /// The grid frequency's wander (Hz): the mains runs at $f_m + w\sin(2\pi t/P)$,
+    /// $P$ = [`WANDER_PERIOD_S`], as a grid's frequency follows its load (0: steady).
+    #[serde(default)]
+    pub mains_wander: f64,
     /// Clip the signal above this fraction of its range (1 for no clipping).
     pub clip: f64,
     /// Isolated one-sample glitches per second.
@@ -45,6 +52,7 @@ impl Artifacts {
             drift: 0.0,
             hum: 0.0,
             mains: 50.0,
+            mains_wander: 0.0,
             clip: 1.0,
             glitches_per_s: 0.0,
             glitch: 0.0,
@@ -61,6 +69,7 @@ impl Artifacts {
             drift: 0.05 * span,
             hum: 0.02 * span,
             mains: 50.0,
+            mains_wander: 0.0,
             clip: 0.85,
             glitches_per_s: 2.0,
             glitch: 0.5 * span,
@@ -85,6 +94,9 @@ impl Artifacts {
         }
         if !(self.mains.is_finite() && self.mains > 0.0) {
             return bad("the mains frequency must be positive (50 or 60 Hz)");
+        }
+        if !(self.mains_wander.is_finite() && self.mains_wander.abs() < 0.1 * self.mains) {
+            return bad("the mains frequency's wander must be finite and below a tenth of it (a grid wanders by 0.01-0.2 Hz)");
         }
         if !(self.clip > 0.0 && self.clip <= 1.0) {
             return bad("clip must be in (0, 1]: the fraction of the range kept");
@@ -117,7 +129,10 @@ impl Artifacts {
                 .zip(&phases)
                 .map(|(p, f)| (TAU * tj / p + f).sin())
                 .sum();
-            let w = TAU * self.mains * tj + hum_phase;
+            // The phase of f_m + w sin(2 pi t/P): 2 pi f_m t + w P (1 - cos(2 pi t/P)).
+            let wander =
+                self.mains_wander * WANDER_PERIOD_S * (1.0 - (TAU * tj / WANDER_PERIOD_S).cos());
+            let w = TAU * self.mains * tj + wander + hum_phase;
             *x += a * d + self.hum * (w.sin() + 0.5 * (2.0 * w).sin() + 0.25 * (3.0 * w).sin());
         }
         let n = v.len();

@@ -1,15 +1,19 @@
 //! Mains hum found and subtracted from a sound recording before its pitch is tracked.
 //!
-//! Hum is stationary: lines at $k f_m$ ($f_m$ near 50 or 60 Hz, $k = 1..10$) whose amplitude
-//! and phase hold for seconds, while the disk's line sweeps. The mains frequency is the
+//! Hum is nearly stationary: lines at $k f_m$ ($f_m$ near 50 or 60 Hz, $k = 1..10$) whose
+//! amplitude holds for seconds and whose frequency wanders slowly with the grid's load, while
+//! the disk's line sweeps. The mains frequency is the
 //! maximum of the whole record's power $|\sum_j x_j e^{-2\pi i f t_j}|^2$ summed over the first
 //! three harmonics, searched within $\pm 0.3$ Hz of 50 and of 60 Hz (steps of a quarter of
 //! $1/T_{rec}$, then a parabola). A harmonic counts as hum when, in the median block of
 //! [`BLOCK_S`] seconds (Hann-windowed), its power stands [`HUM_RATIO`] times above the median of its
 //! neighbours at $\pm 2 .. 20$ resolutions (the disk's sweeping line crosses a mains line in one
 //! block or two, hum is in all); each such line is then fitted by least squares (a cosine and a
-//! sine) in blocks of [`BLOCK_S`] seconds and subtracted.
+//! sine) in blocks of [`BLOCK_S`] seconds and subtracted. Once the disk's pitch is known, the
+//! lines are fitted again where the disk keeps clear of them, their phase followed as the grid's
+//! frequency wanders ([`remove_hum_clear`]).
 
+use crate::mains_drift::line_phase;
 use std::f64::consts::TAU;
 
 /// A line counts as hum this many times above its neighbours' median power.
@@ -134,9 +138,11 @@ fn stands_out(v: &[f64], fs: f64, f: f64) -> bool {
     *ratios.select_nth_unstable_by(m, f64::total_cmp).1 > HUM_RATIO
 }
 
-/// Subtracts the mains lines `lines` (Hz) from `v` (sampled at `fs`), each fitted over the whole
-/// record as $(a + a'\tau)\cos 2\pi f t + (b + b'\tau)\sin 2\pi f t$ ($\tau$ the time from the
-/// record's middle over its length, so that the line's amplitude and phase may drift slowly)
+/// Subtracts the mains lines `lines` (Hz) from `v` (sampled at `fs`), each line's phase $\Phi$
+/// either steady, $2\pi f t$, or followed as the grid's frequency wanders ([`line_phase`]),
+/// whichever leaves the smaller sum of squares on the clear samples, and the line fitted over the
+/// whole record as $(a + a'\tau)\cos\Phi + (b + b'\tau)\sin\Phi$ ($\tau$ the time from the
+/// record's middle over its length, so that the line's amplitude may drift slowly)
 /// by least squares on the samples `clear(j, f)` says are free of the disk (its harmonics far from
 /// the line). The disk's line sweeping through a mains line is then not taken for hum: fitted
 /// in short blocks, the part of the sweep just outside the guard leaks into the block's fit,
@@ -149,42 +155,60 @@ pub fn remove_hum_clear(v: &mut [f64], fs: f64, lines: &[f64], clear: &dyn Fn(us
     if n < 2 {
         return;
     }
-    let mid = 0.5 * (n - 1) as f64;
     for &f in lines {
-        let w = TAU * f / fs;
-        let (sw, cw) = w.sin_cos();
-        let phasors = || {
-            std::iter::successors(Some((1.0f64, 0.0f64)), move |&(c, s)| {
-                Some((c * cw - s * sw, s * cw + c * sw))
-            })
-        };
-        let basis = |j: usize, c: f64, s: f64| {
-            let tau = (j as f64 - mid) / n as f64;
-            [c, s, c * tau, s * tau]
-        };
-        let mut a = nalgebra::Matrix4::<f64>::zeros();
-        let mut r = nalgebra::Vector4::<f64>::zeros();
-        let mut used = 0;
-        for (j, (x, (c, s))) in v.iter().zip(phasors()).enumerate() {
-            if !clear(j, f) {
-                continue;
-            }
-            let b = nalgebra::Vector4::from(basis(j, c, s));
-            a += b * b.transpose();
-            r += b * *x;
-            used += 1;
-        }
-        if 4 * used < n {
-            continue;
-        }
-        let Some(coef) = a.lu().solve(&r) else {
+        let followed = line_phase(v, fs, f, &|j| clear(j, f));
+        let steady: Vec<f64> = (0..n).map(|j| TAU * f * j as f64 / fs).collect();
+        let fits = [steady, followed].map(|phase| {
+            let fit = line_fit(v, &phase, &|j| clear(j, f));
+            (phase, fit)
+        });
+        let best = fits
+            .iter()
+            .filter_map(|(phase, fit)| fit.map(|(coef, rss)| (phase, coef, rss)))
+            .min_by(|a, b| a.2.total_cmp(&b.2));
+        let Some((phase, coef, _)) = best else {
             continue;
         };
-        for (j, (x, (c, s))) in v.iter_mut().zip(phasors()).enumerate() {
-            let b = basis(j, c, s);
+        for (j, x) in v.iter_mut().enumerate() {
+            let b = basis(phase, j);
             *x -= (0..4).map(|k| coef[k] * b[k]).sum::<f64>();
         }
     }
+}
+
+/// The line's basis at sample `j` of `n`: $\cos\Phi$, $\sin\Phi$ and both times $\tau$.
+fn basis(phase: &[f64], j: usize) -> [f64; 4] {
+    let n = phase.len();
+    let (s, c) = phase[j].sin_cos();
+    let tau = (j as f64 - 0.5 * (n - 1) as f64) / n as f64;
+    [c, s, c * tau, s * tau]
+}
+
+/// The least-squares coefficients of [`basis`] on the samples `clear` admits, and the residual
+/// sum of squares there; `None` with fewer than a quarter of the samples clear.
+fn line_fit(
+    v: &[f64],
+    phase: &[f64],
+    clear: &dyn Fn(usize) -> bool,
+) -> Option<(nalgebra::Vector4<f64>, f64)> {
+    let mut a = nalgebra::Matrix4::<f64>::zeros();
+    let mut r = nalgebra::Vector4::<f64>::zeros();
+    let (mut used, mut xx) = (0, 0.0);
+    for (j, x) in v.iter().enumerate() {
+        if !clear(j) {
+            continue;
+        }
+        let b = nalgebra::Vector4::from(basis(phase, j));
+        a += b * b.transpose();
+        r += b * *x;
+        xx += x * x;
+        used += 1;
+    }
+    if 4 * used < v.len() {
+        return None;
+    }
+    let coef = a.lu().solve(&r)?;
+    Some((coef, xx - coef.dot(&r)))
 }
 
 /// Subtracts the least-squares sinusoid of frequency `f` from `v`, block by block.

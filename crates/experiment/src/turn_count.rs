@@ -6,7 +6,8 @@
 //! turns independently, as the integral of its fitted rate: between the first block's start
 //! $t_a$ and the last block's end $t_b$,
 //! $$N = \frac{\Phi(t_b) - \Phi(t_a)}{2\pi}$$
-//! for eq 79's heading $\Phi$ with either fit's parameters, and the track's count has the standard
+//! for eq 79's heading $\Phi$ with either fit's parameters (a law whose $t_0$ falls before $t_b$
+//! counts its turns to its $t_0$), and the track's count has the standard
 //! uncertainty $\sigma_N = \sqrt{g^{\mathsf T} \Sigma\, g}$, $g = \partial N/\partial(\beta, t_0,
 //! \ln C)$ and $\Sigma$ the track fit's covariance.
 //!
@@ -52,8 +53,8 @@ impl TurnCount {
         (from, to): (f64, f64),
     ) -> Self {
         let count = |p: &SVector<f64, 3>| {
-            let (a, _, ga) = phase(p, from);
-            let (b, _, gb) = phase(p, to);
+            let (a, ga) = heading(p, from);
+            let (b, gb) = heading(p, to);
             ((b - a) / TAU, (gb - ga) / TAU)
         };
         let (phase_turns, _) = count(phase_law);
@@ -72,6 +73,17 @@ impl TurnCount {
     pub fn miscounted(&self) -> bool {
         let d = (self.phase - self.track).abs();
         !(d <= 0.5 || d <= SIGMAS * self.sigma)
+    }
+}
+
+/// Eq 79's heading at `t` and its gradient in $(\beta, t_0, \ln C)$: past the law's $t_0$ the
+/// disk turns no more, and the heading stays at its value there, 0.
+fn heading(p: &SVector<f64, 3>, t: f64) -> (f64, SVector<f64, 3>) {
+    if t < p[1] {
+        let (phi, _, g) = phase(p, t);
+        (phi, g)
+    } else {
+        (0.0, SVector::zeros())
     }
 }
 
