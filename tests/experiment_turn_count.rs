@@ -80,6 +80,6 @@ fn a_drifting_law_is_not_taken_for_a_miscount() {
     );
     let law = p.law.as_ref().expect("the later half's fit");
     assert!(law.drifts, "{a}");
-    let c = a.turns.expect("the turns counted");
+    let c = a.turn_count.expect("the turns counted");
     assert!((c.phase - c.track).abs() < 0.1 && c.sigma < 0.2, "{c}");
 }

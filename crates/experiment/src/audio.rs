@@ -119,7 +119,7 @@ pub struct SoundAnalysis {
     /// Why the phase was not fitted, when it was not.
     pub phase_refused: Option<String>,
     /// The turns the phase's fit counts against the pitch track's, when the phase was fitted.
-    pub turns: Option<TurnCount>,
+    pub turn_count: Option<TurnCount>,
     /// Model choice.
     pub models: Comparison,
     /// The spin-down checks.
@@ -259,13 +259,13 @@ pub fn analyze_sound_within(
         }
     }
     work.stage("following the phase")?;
-    let (phase, phase_refused, turns) = phase_of(trace, &track, a[0], &fit, &s.cov);
+    let (phase, phase_refused, turn_count) = phase_of(trace, &track, a[0], &fit, &s.cov);
     Ok(SoundAnalysis {
         source: trace.source.clone(),
         recording: None,
         phase,
         phase_refused,
-        turns,
+        turn_count,
         models: compare(y.len(), candidates),
         track,
         fit,
@@ -372,7 +372,7 @@ impl fmt::Display for SoundAnalysis {
                 "  eq 79 on the phase (the result): beta = {:.5} +- {:.5}, t0 = {:.6} +- {:.6} s, ln C = {:.4} +- {:.4} ({:.1} turns in {} blocks, rms residual {:.4} rad, chi2/dof {:.2}; errors scaled by the residuals)",
                 p.beta, p.beta_sigma, p.t0, p.t0_sigma, p.ln_c, p.ln_c_sigma, p.turns, p.n, p.rms, p.chi2_dof
             )
-            .and_then(|()| match &self.turns {
+            .and_then(|()| match &self.turn_count {
                 Some(c) => writeln!(f, "  turns counted: {c}"),
                 None => Ok(()),
             })
