@@ -138,6 +138,7 @@ fn beta_from_sound_against_its_cramer_rao_bound() {
     let analysed = bound_beta(&l, &mic(0.003, 1), 1e-3);
     let mut sigmas = Vec::new();
     let mut betas = Vec::new();
+    let mut t0_sigmas = Vec::new();
     for seed in 1..=4 {
         let s = law_sound(&l, &mic(0.003, seed), &Artifacts::none()).unwrap();
         let a = analyze_sound(&s, &TrackSettings::default(), &Plausibility::default()).unwrap();
@@ -146,8 +147,10 @@ fn beta_from_sound_against_its_cramer_rao_bound() {
         println!("seed {seed}: beta {:.5} +- {:.5}", f.beta, f.beta_sigma);
         sigmas.push(f.beta_sigma);
         betas.push(f.beta);
+        t0_sigmas.push(f.t0_sigma);
     }
     let mean = sigmas.iter().sum::<f64>() / sigmas.len() as f64;
+    let t0_sigma = t0_sigmas.iter().sum::<f64>() / t0_sigmas.len() as f64;
     let rms = (betas.iter().map(|b| (b - 2.0).powi(2)).sum::<f64>() / betas.len() as f64).sqrt();
     println!(
         "light: sigma {light:.6}; Cramer-Rao bound on beta from sound {bound:.6} ({:.2} of the \
@@ -161,6 +164,31 @@ fn beta_from_sound_against_its_cramer_rao_bound() {
     for &s in &sigmas {
         assert!(s > 0.85 * bound, "a sigma {s} below the bound {bound}");
     }
+    // Where the information lies: the bound on the sound up to `gap` before t0, and the turns
+    // the gap holds. A fit within 2x of the light must reach closer to t0 than the gap at which
+    // the bound itself is 2x, and come within `needed` of the bound on the whole sound.
+    let q = 1.0 / (l.beta + 2.0);
+    let turns = |gap: f64| l.c.powf(q) * gap.powf(1.0 - q) / (1.0 - q) / TAU;
+    let profile: Vec<(f64, f64)> = [1e-4, 2e-4, 5e-4]
+        .iter()
+        .map(|&gap| (gap, bound_beta(&l, &mic(0.003, 1), gap) / light))
+        .collect();
+    for (gap, ratio) in &profile {
+        println!(
+            "bound on the sound up to {:.1} ms ({:.3} turn) before t0: {ratio:.2} of the light's",
+            gap * 1e3,
+            turns(*gap)
+        );
+    }
+    let needed = 2.0 * light / bound;
+    println!("a fit within 2x of the light comes within {needed:.3} of the whole sound's bound; the fit's mean t0 sigma {:.0} us", t0_sigma * 1e6);
+    assert!(
+        analysed > 2.0 * light,
+        "the bound up to 1 ms before t0 is {analysed}"
+    );
+    assert!(profile
+        .windows(2)
+        .all(|w| w[0].1 < w[1].1 && w[1].1 < analysed / light));
     assert!(bound < 2.0 * light, "bound {bound}, light {light}");
     // What the fit loses to the bound on the sound up to 1 ms before t0 (1.15 of it): its last
     // block ends up to a block's length before that.
@@ -180,6 +208,18 @@ fn beta_from_sound_against_its_cramer_rao_bound() {
             analysed / light
         ),
         format!("the fit's sigma is {:.2} times the latter", mean / analysed),
+        format!(
+            "{:.2}, {:.2} and {:.2} times the light's up to 0.1, 0.2 and 0.5 ms before t₀ \
+             ({:.3}, {:.3} and {:.3} of a turn)",
+            profile[0].1,
+            profile[1].1,
+            profile[2].1,
+            turns(1e-4),
+            turns(2e-4),
+            turns(5e-4)
+        ),
+        format!("within {needed:.3} of the bound on the whole sound"),
+        format!("its own t₀ is uncertain by {:.0} µs", t0_sigma * 1e6),
     ] {
         assert!(
             doc.contains(&written),
