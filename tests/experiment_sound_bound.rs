@@ -118,6 +118,21 @@ fn bound_beta(law: &Law, m: &Microphone, before: f64) -> f64 {
     cov[(0, 0)].sqrt()
 }
 
+/// How long before $t_0$ the disk of `law` leaves the plane (s): eq 79's premise holds while
+/// the contact force $F_z = m(g + \ddot z)$ stays positive, with the centre's height
+/// $z = a\sin\alpha$ and the tilt of steady motion $\sin\alpha = g/(k a \Omega^2)$, so it ends
+/// where $\ddot z = -g$. Found here from the law by finite differences and bisection, not from
+/// the paper's closed form (eq 81).
+fn contact_lost(law: &Law, disk: &Disk) -> f64 {
+    let z = |tau: f64| disk.a * disk.g / (disk.k * disk.a * law.precession(tau).powi(2));
+    let z_ddot = |tau: f64| {
+        let h = 1e-3 * tau;
+        (z(tau + h) - 2.0 * z(tau) + z(tau - h)) / (h * h)
+    };
+    let (lo, hi) = numerics::oscillation::bisect(1e-7, 0.1, 1e-6, |tau| z_ddot(tau) > -disk.g);
+    0.5 * (lo + hi)
+}
+
 /// The bound against the analysis's sigma and the light signal's, on the sounds of
 /// `beta_from_sound_is_about_as_precise_as_from_light` (noise 0.003, the phone's room; four
 /// seeds): no fit states a sigma below the bound, the bound itself lies within 2x of the light's
@@ -129,10 +144,9 @@ fn bound_beta(law: &Law, m: &Microphone, before: f64) -> f64 {
 fn beta_from_sound_against_its_cramer_rao_bound() {
     let l = law(2.0);
     let light = law_trace(&l, &Disk::uniform(0.0375), &LightModel::default()).unwrap();
-    let light = analyze(&light, &AnalysisSettings::default())
-        .unwrap()
-        .eq84
-        .beta_sigma;
+    let light = analyze(&light, &AnalysisSettings::default()).unwrap();
+    let light_last = mic(0.003, 1).end_at - light.window.t_last;
+    let light = light.eq84.beta_sigma;
     let bound = bound_beta(&l, &mic(0.003, 1), 0.0);
     // The phase fit's blocks stop at least 1 ms before its t0.
     let analysed = bound_beta(&l, &mic(0.003, 1), 1e-3);
@@ -181,6 +195,31 @@ fn beta_from_sound_against_its_cramer_rao_bound() {
         );
     }
     let needed = 2.0 * light / bound;
+    // Eq 79 holds only while the disk touches the plane (the premise of eqs 80-81):
+    // the sound after it leaves says nothing about the law, and the bound on the sound before
+    // is already above 2x.
+    let lost = contact_lost(&l, &Disk::uniform(0.0375));
+    let touching = bound_beta(&l, &mic(0.003, 1), lost) / light;
+    println!(
+        "the disk leaves the plane {:.2} ms ({:.3} turn) before t0; the bound on the sound \
+         before that: {touching:.2} of the light's",
+        lost * 1e3,
+        turns(lost)
+    );
+    assert!(
+        touching > 2.0,
+        "the bound while the disk touches: {touching}"
+    );
+    // The light's fit, for its part, ends before the disk leaves the plane (its last peak
+    // used, at the end of its window): the two stand on the same part of the motion.
+    println!(
+        "the light's last peak used: {:.2} ms before t0",
+        light_last * 1e3
+    );
+    assert!(
+        light_last > lost,
+        "the light's fit reads {light_last} s before t0"
+    );
     println!("a fit within 2x of the light comes within {needed:.3} of the whole sound's bound; the fit's mean t0 sigma {:.0} us", t0_sigma * 1e6);
     assert!(
         analysed > 2.0 * light,
@@ -220,6 +259,16 @@ fn beta_from_sound_against_its_cramer_rao_bound() {
         ),
         format!("within {needed:.3} of the bound on the whole sound"),
         format!("its own t₀ is uncertain by {:.0} µs", t0_sigma * 1e6),
+        format!(
+            "leaves the plane {:.2} ms ({:.3} of a turn) before t₀",
+            lost * 1e3,
+            turns(lost)
+        ),
+        format!("the bound on the sound before that is {touching:.2} times the light's"),
+        format!(
+            "the light's fit reads its last peak {:.1} ms before t₀",
+            light_last * 1e3
+        ),
     ] {
         assert!(
             doc.contains(&written),
