@@ -233,10 +233,7 @@ fn beta_from_sound_against_its_cramer_rao_bound() {
     // block ends up to a block's length before that.
     assert!(mean < 1.2 * analysed, "mean sigma {mean}, bound {analysed}");
     // docs/experiment.md states these numbers.
-    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/experiment.md"))
-        .expect("docs/experiment.md")
-        .replace('\n', " ");
-    for written in [
+    docs_say(&[
         format!(
             "is {:.2} times the light signal's on the same motion",
             mean / light
@@ -269,12 +266,23 @@ fn beta_from_sound_against_its_cramer_rao_bound() {
             "the light's fit reads its last peak {:.1} ms before t₀",
             light_last * 1e3
         ),
-    ] {
-        assert!(
-            doc.contains(&written),
-            "docs/experiment.md should say: {written}"
-        );
+    ]);
+    print_bound_against_the_room(&l, light);
+}
+
+/// Fails unless docs/experiment.md says each of `written` (line breaks read as spaces).
+fn docs_say(written: &[String]) {
+    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/experiment.md"))
+        .expect("docs/experiment.md")
+        .replace('\n', " ");
+    for w in written {
+        assert!(doc.contains(w), "docs/experiment.md should say: {w}");
     }
+}
+
+/// Prints the bound on beta from the sound of `l` against the room's level and the
+/// microphone's noise, in units of the light's sigma `light`.
+fn print_bound_against_the_room(l: &Law, light: f64) {
     for room in [0.0, 0.001, 0.003, 0.01] {
         let row: Vec<String> = [0.001, 0.003, 0.01]
             .iter()
@@ -286,7 +294,7 @@ fn beta_from_sound_against_its_cramer_rao_bound() {
                     },
                     ..mic(noise, 1)
                 };
-                let b = bound_beta(&l, &m, 0.0);
+                let b = bound_beta(l, &m, 0.0);
                 format!("noise {noise}: {b:.6} ({:.2} of the light's)", b / light)
             })
             .collect();
