@@ -13,7 +13,7 @@
 //! lines are fitted again where the disk keeps clear of them, their phase followed as the grid's
 //! frequency wanders ([`remove_hum_clear`]).
 
-use crate::mains_drift::line_phase;
+use crate::mains_drift::{line_phase, HOP_S};
 use std::f64::consts::TAU;
 
 /// A line counts as hum this many times above its neighbours' median power.
@@ -139,8 +139,15 @@ fn stands_out(v: &[f64], fs: f64, f: f64) -> bool {
 }
 
 /// Subtracts the mains lines `lines` (Hz) from `v` (sampled at `fs`), each line's phase $\Phi$
-/// either steady, $2\pi f t$, or followed as the grid's frequency wanders ([`line_phase`]),
-/// whichever leaves the smaller sum of squares on the clear samples, and the line fitted over the
+/// either steady, $2\pi f' t$ at the frequency refined on the record ([`steady_phase`]), or
+/// followed as the grid's frequency wanders ([`line_phase`]). The followed phase has about one
+/// more parameter, $k$ in all, per [`HOP_S`] of record, and always fits the clear samples a
+/// little better, partly by following their noise and the disk's leak; it is taken only where
+/// it lowers their sum of squares by more than the Bayesian information criterion asks,
+/// $k\,\hat\sigma^2\ln n$ ($\hat\sigma^2$ the steady fit's residual variance over its $n$
+/// samples). On eight exact-law phone sounds in a quiet room (0.003) with 2 % of steady hum,
+/// the followed phase chosen by the smaller sum alone moved $\beta$ by up to 7 of its sigmas
+/// from the same sounds without hum. The line is fitted over the
 /// whole record as $(a + a'\tau)\cos\Phi + (b + b'\tau)\sin\Phi$ ($\tau$ the time from the
 /// record's middle over its length, so that the line's amplitude may drift slowly)
 /// by least squares on the samples `clear(j, f)` says are free of the disk (its harmonics far from
@@ -156,24 +163,58 @@ pub fn remove_hum_clear(v: &mut [f64], fs: f64, lines: &[f64], clear: &dyn Fn(us
         return;
     }
     for &f in lines {
-        let followed = line_phase(v, fs, f, &|j| clear(j, f));
-        let steady: Vec<f64> = (0..n).map(|j| TAU * f * j as f64 / fs).collect();
-        let fits = [steady, followed].map(|phase| {
-            let fit = line_fit(v, &phase, &|j| clear(j, f));
-            (phase, fit)
-        });
-        let best = fits
-            .iter()
-            .filter_map(|(phase, fit)| fit.map(|(coef, rss)| (phase, coef, rss)))
-            .min_by(|a, b| a.2.total_cmp(&b.2));
-        let Some((phase, coef, _)) = best else {
+        let admits = |j: usize| clear(j, f);
+        let (steady, refined) = steady_phase(v, fs, f, &admits);
+        let Some((steady_coef, steady_rss, used)) = line_fit(v, &steady, &admits) else {
             continue;
         };
+        let followed = line_phase(v, fs, refined, &admits);
+        // The followed phase's extra parameters: about one frequency per hop of its segments.
+        let extra = (n as f64 / fs / HOP_S).round().max(1.0);
+        let penalty = extra * (used as f64).ln() * steady_rss / used as f64;
+        let (phase, coef) = match line_fit(v, &followed, &admits) {
+            Some((coef, rss, _)) if steady_rss - rss > penalty => (followed, coef),
+            _ => (steady, steady_coef),
+        };
         for (j, x) in v.iter_mut().enumerate() {
-            let b = basis(phase, j);
+            let b = basis(&phase, j);
             *x -= (0..4).map(|k| coef[k] * b[k]).sum::<f64>();
         }
     }
+}
+
+/// Gauss-Newton steps on a steady line's frequency in [`steady_phase`].
+pub const FREQUENCY_STEPS: usize = 2;
+
+/// The steady phase $\Phi_j = 2\pi f' j/f_s$ of the line found near `f` Hz, its frequency $f'$
+/// refined on the samples `clear` admits. A line whose frequency is $f + \delta f$, fitted at $f$
+/// as $(a + a'\tau)\cos\Phi + (b + b'\tau)\sin\Phi$ ([`line_fit`]), has the complex amplitude
+/// $(a + a'\tau) - i(b + b'\tau) \propto e^{2\pi i\,\delta f\,t}$, so
+/// $$\delta f \approx \frac{1}{2\pi T}\,\mathrm{Im}\,\frac{a' - ib'}{a - ib},$$
+/// $T$ the record's length ($t = T\tau$). The mains frequency found from the whole record's
+/// spectrum is off by up to a hundredth of a hertz where the disk's harmonics sweep past it,
+/// which over ten seconds turns a line's phase by a radian at 150 Hz: more than the fit's
+/// linear amplitude terms absorb. A step larger than [`reach`](crate::mains_drift::reach)
+/// is not taken.
+fn steady_phase(v: &[f64], fs: f64, f: f64, clear: &dyn Fn(usize) -> bool) -> (Vec<f64>, f64) {
+    let n = v.len();
+    let at = |f: f64| -> Vec<f64> { (0..n).map(|j| TAU * f * j as f64 / fs).collect() };
+    let mut line = f;
+    let mut phase = at(line);
+    for _ in 0..FREQUENCY_STEPS {
+        let Some((c, _, _)) = line_fit(v, &phase, clear) else {
+            break;
+        };
+        let z = rustfft::num_complex::Complex::new(c[0], -c[1]);
+        let dz = rustfft::num_complex::Complex::new(c[2], -c[3]);
+        let step = (dz / z).im / (TAU * n as f64 / fs);
+        if !(step.is_finite() && (line + step - f).abs() <= crate::mains_drift::reach(f)) {
+            break;
+        }
+        line += step;
+        phase = at(line);
+    }
+    (phase, line)
 }
 
 /// The line's basis at sample `j` of `n`: $\cos\Phi$, $\sin\Phi$ and both times $\tau$.
@@ -184,13 +225,14 @@ fn basis(phase: &[f64], j: usize) -> [f64; 4] {
     [c, s, c * tau, s * tau]
 }
 
-/// The least-squares coefficients of [`basis`] on the samples `clear` admits, and the residual
-/// sum of squares there; `None` with fewer than a quarter of the samples clear.
+/// The least-squares coefficients of [`basis`] on the samples `clear` admits, the residual
+/// sum of squares there and the samples used; `None` with fewer than a quarter of the samples
+/// clear.
 fn line_fit(
     v: &[f64],
     phase: &[f64],
     clear: &dyn Fn(usize) -> bool,
-) -> Option<(nalgebra::Vector4<f64>, f64)> {
+) -> Option<(nalgebra::Vector4<f64>, f64, usize)> {
     let mut a = nalgebra::Matrix4::<f64>::zeros();
     let mut r = nalgebra::Vector4::<f64>::zeros();
     let (mut used, mut xx) = (0, 0.0);
@@ -208,7 +250,7 @@ fn line_fit(
         return None;
     }
     let coef = a.lu().solve(&r)?;
-    Some((coef, xx - coef.dot(&r)))
+    Some((coef, xx - coef.dot(&r), used))
 }
 
 /// Subtracts the least-squares sinusoid of frequency `f` from `v`, block by block.
