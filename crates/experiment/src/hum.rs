@@ -139,7 +139,7 @@ fn stands_out(v: &[f64], fs: f64, f: f64) -> bool {
 }
 
 /// Subtracts the mains lines `lines` (Hz) from `v` (sampled at `fs`), each line's phase $\Phi$
-/// either steady, $2\pi f' t$ at the frequency refined on the record ([`steady_phase`]), or
+/// either steady, $2\pi f' t$ at the frequency refined on the record ([`steady_frequency`]), or
 /// followed as the grid's frequency wanders ([`line_phase`]). The followed phase has about one
 /// more parameter, $k$ in all, per [`HOP_S`] of record, and always fits the clear samples a
 /// little better, partly by following their noise and the disk's leak; it is taken only where
@@ -163,32 +163,76 @@ pub fn remove_hum_clear(v: &mut [f64], fs: f64, lines: &[f64], clear: &dyn Fn(us
         return;
     }
     for &f in lines {
-        let admits = |j: usize| clear(j, f);
-        let (steady, refined) = steady_phase(v, fs, f, &admits);
-        let Some((steady_coef, steady_rss, used)) = line_fit(v, &steady, &admits) else {
+        let mask: Vec<bool> = (0..n).map(|j| clear(j, f)).collect();
+        let refined = steady_frequency(v, fs, f, &mask);
+        let Some((steady_coef, steady_rss, used)) = line_fit(v, steady(n, fs, refined), &mask)
+        else {
             continue;
         };
-        let followed = line_phase(v, fs, refined, &admits);
+        let followed = phasors_of(&line_phase(v, fs, refined, &|j| mask[j]));
         // The followed phase's extra parameters: about one frequency per hop of its segments.
         let extra = (n as f64 / fs / HOP_S).round().max(1.0);
         let penalty = extra * (used as f64).ln() * steady_rss / used as f64;
-        let (phase, coef) = match line_fit(v, &followed, &admits) {
-            Some((coef, rss, _)) if steady_rss - rss > penalty => (followed, coef),
-            _ => (steady, steady_coef),
-        };
-        for (j, x) in v.iter_mut().enumerate() {
-            let b = basis(&phase, j);
-            *x -= (0..4).map(|k| coef[k] * b[k]).sum::<f64>();
+        match line_fit(v, followed.iter().copied(), &mask) {
+            Some((coef, rss, _)) if steady_rss - rss > penalty => {
+                subtract_line(v, followed.iter().copied(), &coef);
+            }
+            _ => subtract_line(v, steady(n, fs, refined), &steady_coef),
         }
     }
 }
 
-/// Gauss-Newton steps on a steady line's frequency in [`steady_phase`].
+/// Subtracts the line $(a + a'\tau)\cos\Phi + (b + b'\tau)\sin\Phi$, `coef` = $(a, b, a', b')$,
+/// of phasors `phase`, from `v`.
+fn subtract_line(
+    v: &mut [f64],
+    phase: impl Iterator<Item = [f64; 2]>,
+    coef: &nalgebra::Vector4<f64>,
+) {
+    let n = v.len();
+    for (j, (x, p)) in v.iter_mut().zip(phase).enumerate() {
+        let b = basis(p, j, n);
+        *x -= (0..4).map(|k| coef[k] * b[k]).sum::<f64>();
+    }
+}
+
+/// Gauss-Newton steps on a steady line's frequency in [`steady_frequency`].
 pub const FREQUENCY_STEPS: usize = 2;
 
-/// The steady phase $\Phi_j = 2\pi f' j/f_s$ of the line found near `f` Hz, its frequency $f'$
-/// refined on the samples `clear` admits. A line whose frequency is $f + \delta f$, fitted at $f$
-/// as $(a + a'\tau)\cos\Phi + (b + b'\tau)\sin\Phi$ ([`line_fit`]), has the complex amplitude
+/// The phasors $(\cos\Phi_j, \sin\Phi_j)$ of the phases `phase` (rad).
+fn phasors_of(phase: &[f64]) -> Vec<[f64; 2]> {
+    phase
+        .iter()
+        .map(|p| {
+            let (s, c) = p.sin_cos();
+            [c, s]
+        })
+        .collect()
+}
+
+/// The phasors of the steady phase $2\pi f j/f_s$ at `n` samples of rate `fs`, each the last
+/// turned by $2\pi f/f_s$ and set afresh from the phase every [`RESYNC`] samples, so that the
+/// rounding of the product cannot build up (a sine saved per sample, line and pass).
+fn steady(n: usize, fs: f64, f: f64) -> impl Iterator<Item = [f64; 2]> {
+    let (ws, wc) = (TAU * f / fs).sin_cos();
+    let mut p = [1.0, 0.0];
+    (0..n).map(move |j| {
+        if j % RESYNC == 0 {
+            let (s, c) = (TAU * f * j as f64 / fs).sin_cos();
+            p = [c, s];
+        }
+        let out = p;
+        p = [p[0] * wc - p[1] * ws, p[1] * wc + p[0] * ws];
+        out
+    })
+}
+
+/// Samples between the steady phasors' fresh starts.
+const RESYNC: usize = 1024;
+
+/// The frequency $f'$ of the steady line found near `f` Hz, refined on the samples `mask`
+/// admits. A line whose frequency is $f + \delta f$, fitted at $f$ as
+/// $(a + a'\tau)\cos\Phi + (b + b'\tau)\sin\Phi$ ([`line_fit`]), has the complex amplitude
 /// $(a + a'\tau) - i(b + b'\tau) \propto e^{2\pi i\,\delta f\,t}$, so
 /// $$\delta f \approx \frac{1}{2\pi T}\,\mathrm{Im}\,\frac{a' - ib'}{a - ib},$$
 /// $T$ the record's length ($t = T\tau$). The mains frequency found from the whole record's
@@ -196,13 +240,11 @@ pub const FREQUENCY_STEPS: usize = 2;
 /// which over ten seconds turns a line's phase by a radian at 150 Hz: more than the fit's
 /// linear amplitude terms absorb. A step larger than [`reach`](crate::mains_drift::reach)
 /// is not taken.
-fn steady_phase(v: &[f64], fs: f64, f: f64, clear: &dyn Fn(usize) -> bool) -> (Vec<f64>, f64) {
+fn steady_frequency(v: &[f64], fs: f64, f: f64, mask: &[bool]) -> f64 {
     let n = v.len();
-    let at = |f: f64| -> Vec<f64> { (0..n).map(|j| TAU * f * j as f64 / fs).collect() };
     let mut line = f;
-    let mut phase = at(line);
     for _ in 0..FREQUENCY_STEPS {
-        let Some((c, _, _)) = line_fit(v, &phase, clear) else {
+        let Some((c, _, _)) = line_fit(v, steady(n, fs, line), mask) else {
             break;
         };
         let z = rustfft::num_complex::Complex::new(c[0], -c[1]);
@@ -212,35 +254,34 @@ fn steady_phase(v: &[f64], fs: f64, f: f64, clear: &dyn Fn(usize) -> bool) -> (V
             break;
         }
         line += step;
-        phase = at(line);
     }
-    (phase, line)
+    line
 }
 
-/// The line's basis at sample `j` of `n`: $\cos\Phi$, $\sin\Phi$ and both times $\tau$.
-fn basis(phase: &[f64], j: usize) -> [f64; 4] {
-    let n = phase.len();
-    let (s, c) = phase[j].sin_cos();
+/// The line's basis at sample `j` of `n`, its phasor `[c, s]`: $\cos\Phi$, $\sin\Phi$ and both
+/// times $\tau$.
+fn basis([c, s]: [f64; 2], j: usize, n: usize) -> [f64; 4] {
     let tau = (j as f64 - 0.5 * (n - 1) as f64) / n as f64;
     [c, s, c * tau, s * tau]
 }
 
-/// The least-squares coefficients of [`basis`] on the samples `clear` admits, the residual
-/// sum of squares there and the samples used; `None` with fewer than a quarter of the samples
-/// clear.
+/// The least-squares coefficients of [`basis`] on the samples `mask` admits, the line's
+/// phasors `phase`, the residual sum of squares there and the samples used; `None` with fewer
+/// than a quarter of the samples clear.
 fn line_fit(
     v: &[f64],
-    phase: &[f64],
-    clear: &dyn Fn(usize) -> bool,
+    phase: impl Iterator<Item = [f64; 2]>,
+    mask: &[bool],
 ) -> Option<(nalgebra::Vector4<f64>, f64, usize)> {
+    let n = v.len();
     let mut a = nalgebra::Matrix4::<f64>::zeros();
     let mut r = nalgebra::Vector4::<f64>::zeros();
     let (mut used, mut xx) = (0, 0.0);
-    for (j, x) in v.iter().enumerate() {
-        if !clear(j) {
+    for (j, (x, p)) in v.iter().zip(phase).enumerate() {
+        if !mask[j] {
             continue;
         }
-        let b = nalgebra::Vector4::from(basis(phase, j));
+        let b = nalgebra::Vector4::from(basis(p, j, n));
         a += b * b.transpose();
         r += b * *x;
         xx += x * x;

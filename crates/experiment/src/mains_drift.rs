@@ -151,20 +151,35 @@ pub const REFINE: usize = 2;
 fn refine(v: &[f64], fs: f64, phase: &mut [f64], taper: &[f64]) {
     let seg = ((SEGMENT_S * fs) as usize).max(8);
     let hop = ((HOP_S * fs) as usize).max(1);
+    let hann: Vec<f64> = (0..seg)
+        .map(|i| {
+            (std::f64::consts::PI * (i as f64 + 0.5) / seg as f64)
+                .sin()
+                .powi(2)
+        })
+        .collect();
+    let total: f64 = hann.iter().sum();
+    // Each sample's weighted value against the phase, once for the overlapping segments.
+    let against: Vec<(f64, f64)> = (0..v.len())
+        .map(|j| {
+            if taper[j] > 0.0 {
+                let (s, c) = phase[j].sin_cos();
+                (v[j] * c, -v[j] * s)
+            } else {
+                (0.0, 0.0)
+            }
+        })
+        .collect();
     let mut found: Vec<(f64, f64)> = Vec::new();
     let mut start = 0;
     while start + seg <= v.len() {
-        let (mut re, mut im, mut total, mut kept) = (0.0, 0.0, 0.0, 0.0);
-        for j in start..start + seg {
-            let h = (std::f64::consts::PI * ((j - start) as f64 + 0.5) / seg as f64)
-                .sin()
-                .powi(2);
-            total += h;
+        let (mut re, mut im, mut kept) = (0.0, 0.0, 0.0);
+        for (i, h) in hann.iter().enumerate() {
+            let j = start + i;
             let w = h * taper[j];
             if w > 0.0 {
-                let (s, c) = phase[j].sin_cos();
-                re += w * v[j] * c;
-                im -= w * v[j] * s;
+                re += w * against[j].0;
+                im += w * against[j].1;
                 kept += w;
             }
         }
