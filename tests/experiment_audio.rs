@@ -145,10 +145,10 @@ fn exact_law_sounds_with_room_noise_and_hum_give_beta_and_t0() {
 
 /// Beta's sigma from the sound of a motion against the light signal's of the same motion
 /// (eq 79 exactly, beta = 2, the scope's record: 10 s ending at 7.27 s), the sound's sigma the
-/// mean over four noise seeds (one seed's sandwich estimate varies by a third).
-#[test]
-#[ignore = "not met: beta's sigma from sound is 2.32 times the light signal's (mean 0.000353 against 0.000152); the Cramer-Rao bound on the whole sound is 1.74 of the light's, on the sound up to 1 ms before t0 (where the phase fit stops at the latest) 2.02, and the fit is at 1.15 of that ; a fit within 2x would have to come within 1.147 of the bound on the whole sound, reading it to within 0.1 ms of t0 while its own t0 sigma is 84 us; the disk leaves the plane 1.13 ms before t0, where eq 79 stops holding, and the bound on the sound before that is 2.04 of the light's (tests/experiment_sound_bound.rs, docs/experiment.md)"]
-fn beta_from_sound_is_about_as_precise_as_from_light() {
+/// mean over four noise seeds (one seed's sandwich estimate varies by a third), recorded by a
+/// phone in a room of `room` rms with mains hum of `hum`; each seed's beta lies within 3 of
+/// its sigmas of the truth.
+fn sound_sigma_over_light(room: f64, hum: f64) -> f64 {
     let l = law(2.0);
     let light = law_trace(&l, &Disk::uniform(0.0375), &LightModel::default()).unwrap();
     let la = analyze(&light, &AnalysisSettings::default()).unwrap();
@@ -157,27 +157,64 @@ fn beta_from_sound_is_about_as_precise_as_from_light() {
         let mic = Microphone {
             sample_rate: 48_000,
             samples: 480_000,
-            voice: Voice::phone(),
+            voice: Voice {
+                room,
+                ..Voice::phone()
+            },
             noise: 0.003,
             seed,
             ..Microphone::default()
         };
-        let sa = sound_of(&law_sound(&l, &mic, &Artifacts::none()).unwrap()).unwrap();
+        let art = Artifacts {
+            hum,
+            seed,
+            ..Artifacts::none()
+        };
+        let sa = sound_of(&law_sound(&l, &mic, &art).unwrap()).unwrap();
         let s = sa.law();
         assert!(s.from_phase, "{sa}");
         println!(
             "seed {seed}: beta from sound {:.5} +- {:.5}",
             s.beta, s.beta_sigma
         );
+        assert!((s.beta - 2.0).abs() < 3.0 * s.beta_sigma, "{sa}");
         sigmas.push(s.beta_sigma);
     }
     let mean = sigmas.iter().sum::<f64>() / sigmas.len() as f64;
     let ratio = mean / la.eq84.beta_sigma;
     println!(
-        "beta from light {:.5} +- {:.5}; from sound, mean sigma {mean:.5}: ratio of sigmas {ratio:.2}",
+        "room {room}, hum {hum}: beta from light {:.5} +- {:.5}; from sound, mean sigma \
+         {mean:.5}: ratio of sigmas {ratio:.2}",
         la.eq84.beta, la.eq84.beta_sigma
     );
+    ratio
+}
+
+/// In a phone's room (0.01 rms), without hum.
+#[test]
+#[ignore = "not met: beta's sigma from sound is 2.32 times the light signal's (mean 0.000353 against 0.000152); the Cramer-Rao bound on the whole sound is 1.74 of the light's, on the sound up to 1 ms before t0 (where the phase fit stops at the latest) 2.02, and the fit is at 1.15 of that; a fit within 2x would have to come within 1.147 of the bound on the whole sound, reading it to within 0.1 ms of t0 while its own t0 sigma is 84 us; the disk leaves the plane 1.13 ms before t0, where eq 79 stops holding, and the bound on the sound before that is 2.04 of the light's (tests/experiment_sound_bound.rs, docs/experiment.md)"]
+fn beta_from_sound_is_about_as_precise_as_from_light() {
+    let ratio = sound_sigma_over_light(Voice::phone().room, 0.0);
     assert!(ratio < 2.0, "{ratio}");
+}
+
+/// In a quiet room (0.003 rms, where the Cramér-Rao bound on the sound is 0.76 of the light's
+/// sigma: tests/experiment_sound_bound.rs) with 2 % of 50 Hz hum, the sound's sigma is within
+/// twice the light's.
+#[test]
+fn beta_from_sound_in_a_quiet_room_is_about_as_precise_as_from_light() {
+    let ratio = sound_sigma_over_light(0.003, 0.02);
+    assert!(ratio < 2.0, "{ratio}");
+    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/experiment.md"))
+        .expect("docs/experiment.md")
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ");
+    let written = format!("with 2 % of hum the fit's sigma is {ratio:.2} times the light's");
+    assert!(
+        doc.contains(&written),
+        "docs/experiment.md should say: {written}"
+    );
 }
 
 /// What is not a spin-down is refused, with only the checks that failed.
