@@ -49,6 +49,23 @@ fn a_near_noiseless_sound_with_hum_is_tracked() {
     }
 }
 
+/// The analyses of eq 79's sound (beta = 2) recorded by `mic`, without hum and with 2 % of
+/// 50 Hz hum whose frequency wanders by `wander` Hz (the hum's seed the microphone's).
+fn with_and_without_hum(mic: &Microphone, wander: f64) -> (SoundAnalysis, SoundAnalysis) {
+    let with = |hum: f64| {
+        let art = Artifacts {
+            hum,
+            mains_wander: wander,
+            seed: mic.seed,
+            ..Artifacts::none()
+        };
+        let s = law_sound(&law(2.0), mic, &art).unwrap();
+        let seed = mic.seed;
+        sound_of(&s).unwrap_or_else(|e| panic!("seed {seed}, hum {hum}: {e}"))
+    };
+    (with(0.0), with(0.02))
+}
+
 /// A phone's sound at 48 kHz with 2 % hum whose frequency wanders as a grid's does
 /// ($50 + w \sin(2\pi t/12\,\mathrm{s})$ Hz, $w$ = 0.05, 0.1 and 0.2 Hz) gives the beta and t0
 /// of the same sound without hum, within the sigma of the analysis without hum.
@@ -58,17 +75,7 @@ fn a_wandering_mains_frequency_is_followed() {
     let mut worst: f64 = 0.0;
     for (seed, wander) in [(1, 0.05), (2, 0.1), (3, 0.2), (4, 0.1)] {
         let mic = Microphone::phone(48_000, seed);
-        let with = |hum: f64| {
-            let art = Artifacts {
-                hum,
-                mains_wander: wander,
-                seed,
-                ..Artifacts::none()
-            };
-            let s = law_sound(&law(2.0), &mic, &art).unwrap();
-            sound_of(&s).unwrap_or_else(|e| panic!("seed {seed}, hum {hum}: {e}"))
-        };
-        let (clean, hummed) = (with(0.0), with(0.02));
+        let (clean, hummed) = with_and_without_hum(&mic, wander);
         let (c, h) = (clean.law(), hummed.law());
         assert!(c.from_phase && h.from_phase, "{clean}\n{hummed}");
         let (db, dt) = ((h.beta - c.beta) / c.beta_sigma, (h.t0 - c.t0) / c.t0_sigma);
@@ -102,16 +109,7 @@ fn steady_hum_in_a_quiet_room_leaves_beta_alone() {
             seed,
             ..Microphone::default()
         };
-        let with = |hum: f64| {
-            let art = Artifacts {
-                hum,
-                seed,
-                ..Artifacts::none()
-            };
-            let s = law_sound(&law(2.0), &mic, &art).unwrap();
-            sound_of(&s).unwrap_or_else(|e| panic!("seed {seed}, hum {hum}: {e}"))
-        };
-        let (clean, hummed) = (with(0.0), with(0.02));
+        let (clean, hummed) = with_and_without_hum(&mic, 0.0);
         let (c, h) = (clean.law(), hummed.law());
         assert!(c.from_phase && h.from_phase, "{clean}\n{hummed}");
         let db = (h.beta - c.beta) / c.beta_sigma;

@@ -23,7 +23,7 @@ pub const HUM_RATIO: f64 = 10.0;
 pub const BLOCK_S: f64 = 2.0;
 
 /// The Hann window of `n` points.
-fn hann(n: usize) -> Vec<f64> {
+pub(crate) fn hann(n: usize) -> Vec<f64> {
     (0..n)
         .map(|j| {
             (std::f64::consts::PI * (j as f64 + 0.5) / n as f64)

@@ -13,6 +13,7 @@
 //! $$\Phi(t_j) = 2\pi \sum_{i < j} f\!\left(t_i + \tfrac{\Delta t}{2}\right)\Delta t .$$
 //! A steady line gives $\Phi = 2\pi f t$, its frequency measured to the segments' precision.
 
+use crate::hum::hann;
 use std::f64::consts::TAU;
 
 /// Length of the segments in which the line's frequency is measured (s).
@@ -45,13 +46,7 @@ pub fn line_phase(v: &[f64], fs: f64, f: f64, clear: &dyn Fn(usize) -> bool) -> 
         .collect();
     let seg = ((SEGMENT_S * fs_low) as usize).max(8);
     let hop = ((HOP_S * fs_low) as usize).max(1);
-    let hann: Vec<f64> = (0..seg)
-        .map(|j| {
-            (std::f64::consts::PI * (j as f64 + 0.5) / seg as f64)
-                .sin()
-                .powi(2)
-        })
-        .collect();
+    let hann = hann(seg);
     // (centre time, frequency) of each segment clear enough.
     let mut found: Vec<(f64, f64)> = Vec::new();
     let mut start = 0;
@@ -151,13 +146,7 @@ pub const REFINE: usize = 2;
 fn refine(v: &[f64], fs: f64, phase: &mut [f64], taper: &[f64]) {
     let seg = ((SEGMENT_S * fs) as usize).max(8);
     let hop = ((HOP_S * fs) as usize).max(1);
-    let hann: Vec<f64> = (0..seg)
-        .map(|i| {
-            (std::f64::consts::PI * (i as f64 + 0.5) / seg as f64)
-                .sin()
-                .powi(2)
-        })
-        .collect();
+    let hann = hann(seg);
     let total: f64 = hann.iter().sum();
     // Each sample's weighted value against the phase, once for the overlapping segments.
     let against: Vec<(f64, f64)> = (0..v.len())
