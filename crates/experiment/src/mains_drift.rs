@@ -75,16 +75,16 @@ pub fn line_phase(v: &[f64], fs: f64, f: f64, clear: &dyn Fn(usize) -> bool) -> 
     }
     let freq = found;
     let dt = 1.0 / fs;
-    let at = |t: f64| -> f64 {
-        let n = freq.len();
-        if n < 2 {
+    let m = freq.len();
+    // The segment pair about time t, found by walking forward as t grows.
+    let mut i = 1;
+    let mut at = |t: f64| -> f64 {
+        if m < 2 {
             return freq.first().map_or(f, |p| p.1);
         }
-        let i = freq
-            .iter()
-            .position(|&(c, _)| c > t)
-            .unwrap_or(n)
-            .clamp(1, n - 1);
+        while i < m - 1 && freq[i].0 <= t {
+            i += 1;
+        }
         let ((a, fa), (b, fb)) = (freq[i - 1], freq[i]);
         (fa + (fb - fa) * (t - a) / (b - a)).clamp(f - reach(f), f + reach(f))
     };
@@ -127,9 +127,11 @@ fn tapered(n: usize, fs: f64, clear: &dyn Fn(usize) -> bool) -> Vec<f64> {
     }
     dist.iter()
         .map(|&x| {
-            (0.5 * std::f64::consts::PI * (x / d).min(1.0))
-                .sin()
-                .powi(2)
+            if x >= d {
+                1.0
+            } else {
+                (0.5 * std::f64::consts::PI * x / d).sin().powi(2)
+            }
         })
         .collect()
 }
