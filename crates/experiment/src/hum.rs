@@ -14,6 +14,7 @@
 //! frequency wanders ([`remove_hum_clear`]).
 
 use crate::mains_drift::{line_phase, HOP_S};
+use rustfft::num_complex::Complex;
 use std::f64::consts::TAU;
 
 /// A line counts as hum this many times above its neighbours' median power.
@@ -170,17 +171,32 @@ fn coarse_to_fine(s: i64, score: &dyn Fn(i64) -> f64) -> Vec<Option<f64>> {
 /// one block's neighbourhood, hum every block's line.
 fn stands_out(v: &[f64], fs: f64, f: f64) -> bool {
     let block = ((BLOCK_S * fs) as usize).max(1);
-    let res = 1.0 / BLOCK_S;
     let w = hann(block);
+    let fft = rustfft::FftPlanner::<f64>::new().plan_fft_forward(block);
+    // One resolution, 1/BLOCK_S, is one bin of the block's transform: shifted down by f, the
+    // block's bins k and block - k are the powers at f + k res and f - k res.
+    let (sw, cw) = (-TAU * f / fs).sin_cos();
+    let mut buf = vec![Complex::new(0.0, 0.0); block];
     let mut ratios: Vec<f64> = v
         .chunks_exact(block)
         .map(|b| {
+            let mut p = Complex::new(1.0, 0.0);
+            for (j, (z, (x, w))) in buf.iter_mut().zip(b.iter().zip(&w)).enumerate() {
+                if j % 4096 == 0 {
+                    let (s, c) = (-TAU * f * j as f64 / fs).sin_cos();
+                    p = Complex::new(c, s);
+                }
+                *z = p * (x * w);
+                p *= Complex::new(cw, sw);
+            }
+            fft.process(&mut buf);
+            let power = |k: usize| buf[k % block].norm_sqr();
             let mut around: Vec<f64> = (2..=20)
-                .flat_map(|i| [-1.0, 1.0].map(|s| power(b, &w, fs, f + s * f64::from(i) * res)))
+                .flat_map(|i| [power(i), power(block - i)])
                 .collect();
             let m = around.len() / 2;
             let floor = *around.select_nth_unstable_by(m, f64::total_cmp).1;
-            power(b, &w, fs, f) / floor.max(f64::MIN_POSITIVE)
+            power(0) / floor.max(f64::MIN_POSITIVE)
         })
         .collect();
     if ratios.is_empty() {
@@ -380,8 +396,44 @@ fn subtract(v: &mut [f64], fs: f64, f: f64) {
 
 #[cfg(test)]
 mod tests {
-    use super::{coarse_to_fine, hann, power};
+    use super::{coarse_to_fine, hann, power, remove_hum};
     use std::f64::consts::TAU;
+
+    /// A disk's sweeping line in white noise (8 kS/s, 10 s), with and without 2 % of 50 Hz hum
+    /// and its second and third harmonics.
+    fn sweep(hum: f64) -> Vec<f64> {
+        let fs = 8000.0;
+        let mut state: u64 = 0x2545_F491_4F6C_DD1D;
+        (0..80_000)
+            .map(|j| {
+                let t = f64::from(j) / fs;
+                state ^= state << 13;
+                state ^= state >> 7;
+                state ^= state << 17;
+                let u = (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5;
+                let w = TAU * 50.0 * t;
+                0.3 * (TAU * (20.0 * t + 14.0 * t * t)).sin()
+                    + 0.01 * u
+                    + hum * (w.sin() + 0.5 * (2.0 * w).sin() + 0.25 * (3.0 * w).sin())
+            })
+            .collect()
+    }
+
+    /// Hum is found at its three lines, and nothing where there is none.
+    #[test]
+    fn hum_is_found_where_it_is_and_only_there() {
+        let mut clean = sweep(0.0);
+        assert_eq!(remove_hum(&mut clean, 8000.0), Vec::<f64>::new());
+        let mut hummed = sweep(0.02);
+        let lines = remove_hum(&mut hummed, 8000.0);
+        assert_eq!(lines.len(), 3, "{lines:?}");
+        for (k, f) in (1..).zip(&lines) {
+            assert!(
+                (f - 50.0 * f64::from(k)).abs() < 0.01 * f64::from(k),
+                "{lines:?}"
+            );
+        }
+    }
 
     /// On the search's own score (three harmonics' power under the Hann window, 10 s at 2 kS/s)
     /// of mains hum anywhere within the search's reach, with a disk's line sweeping past, the
