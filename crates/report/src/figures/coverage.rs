@@ -53,8 +53,8 @@ pub fn coverage(c: &Coverage) -> Figure {
     }
 }
 
-/// The stored studies (clean and artifact-laden recordings): the fraction of recordings whose
-/// truth lies inside $\pm z$ stated standard uncertainties against $z$, beta and t0 of each,
+/// The stored studies (clean and artifact-laden light recordings, phone sounds): the fraction of
+/// recordings whose truth lies inside $\pm z$ stated standard uncertainties against $z$, beta and t0 of each,
 /// with the normal curve the intervals claim. Drawn from `snapshots/coverage.json`, not run.
 pub fn studies(stored: &[StoredCoverage]) -> Figure {
     let zs: Vec<f64> = (1..=30).map(|k| 0.1 * k as f64).collect();
@@ -64,11 +64,15 @@ pub fn studies(stored: &[StoredCoverage]) -> Figure {
         "z (stated standard uncertainties)",
         "fraction inside ± z (dimensionless)",
     );
+    // Markers for the light's studies, lines for the sound's; a study beyond these would reuse
+    // the last pair rather than be left out.
     let styles = [
         (Style::Points, Style::Squares),
         (Style::Crosses, Style::Triangles),
+        (Style::Line, Style::Dotted),
     ];
-    for (s, (sb, st)) in stored.iter().zip(styles) {
+    for (i, s) in stored.iter().enumerate() {
+        let (sb, st) = styles[i.min(styles.len() - 1)];
         let c = &s.coverage;
         let curve = |pulls: &[f64]| -> Vec<(f64, f64)> {
             zs.iter().map(|&z| (z, c.fraction(pulls, z))).collect()
@@ -100,5 +104,30 @@ pub fn studies(stored: &[StoredCoverage]) -> Figure {
             lines.join("; ")
         ),
         drawing: Drawing::Plot(plot),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::studies;
+    use crate::figures::Drawing;
+
+    /// Every stored study is drawn, beta and t0 each, besides the claimed curve.
+    #[test]
+    fn every_stored_study_is_drawn() {
+        let stored = experiment::coverage_record::stored().expect("snapshots/coverage.json");
+        let Drawing::Plot(plot) = studies(&stored).drawing else {
+            panic!("the coverage figure is a plot");
+        };
+        let labels: Vec<&str> = plot.chart.series.iter().map(|s| s.label.as_str()).collect();
+        for s in &stored {
+            for q in ["β", "t₀"] {
+                let label = format!("{q}, {}", s.recordings);
+                assert!(
+                    labels.contains(&label.as_str()),
+                    "{label} not in {labels:?}"
+                );
+            }
+        }
     }
 }
