@@ -93,7 +93,7 @@ fn a_wandering_mains_frequency_is_followed() {
 /// the phone's own room) with 2 % of steady 50 Hz hum give the beta of the same sounds without
 /// hum within twice the sigma of the analysis without hum. The mains frequency found from the
 /// record's spectrum is off by up to 0.006 Hz; fitted at it, or followed as if it wandered,
-/// the lines' residue moved beta by up to 7 sigmas on these sounds.
+/// the lines' residue moved beta by up to 6.7 sigmas on these sounds.
 #[test]
 fn steady_hum_in_a_quiet_room_leaves_beta_alone() {
     let mut shifts = Vec::new();

@@ -213,9 +213,9 @@ fn stands_out(v: &[f64], fs: f64, f: f64) -> bool {
 /// little better, partly by following their noise and the disk's leak; it is taken only where
 /// it lowers their sum of squares by more than the Bayesian information criterion asks,
 /// $k\,\hat\sigma^2\ln n$ ($\hat\sigma^2$ the steady fit's residual variance over its $n$
-/// samples). On eight exact-law phone sounds in a quiet room (0.003) with 2 % of steady hum,
-/// the followed phase chosen by the smaller sum alone moved $\beta$ by up to 7 of its sigmas
-/// from the same sounds without hum. The line is fitted over the
+/// samples). On six exact-law phone sounds in a quiet room (0.003) with 2 % of steady hum,
+/// the followed phase chosen by the smaller sum alone moved $\beta$ by up to 6.7 of its sigmas
+/// from the same sounds without hum (`steady_hum_in_a_quiet_room_leaves_beta_alone`). The line is fitted over the
 /// whole record as $(a + a'\tau)\cos\Phi + (b + b'\tau)\sin\Phi$ ($\tau$ the time from the
 /// record's middle over its length, so that the line's amplitude may drift slowly)
 /// by least squares on the samples `clear(j, f)` says are free of the disk (its harmonics far from
