@@ -13,7 +13,7 @@
 //! lines are fitted again where the disk keeps clear of them, their phase followed as the grid's
 //! frequency wanders ([`remove_hum_clear`]).
 
-use crate::mains_drift::{line_phase, HOP_S};
+use crate::mains_drift::{hann, line_phase, HOP_S};
 use rustfft::num_complex::Complex;
 use std::f64::consts::TAU;
 
@@ -22,17 +22,6 @@ pub const HUM_RATIO: f64 = 10.0;
 
 /// Length of the blocks in which each hum line's amplitude and phase are fitted (s).
 pub const BLOCK_S: f64 = 2.0;
-
-/// The Hann window of `n` points.
-pub(crate) fn hann(n: usize) -> Vec<f64> {
-    (0..n)
-        .map(|j| {
-            (std::f64::consts::PI * (j as f64 + 0.5) / n as f64)
-                .sin()
-                .powi(2)
-        })
-        .collect()
-}
 
 /// The (unnormalised) power at `f` Hz of `v` weighted by the window `w` (as long as `v`).
 fn power(v: &[f64], w: &[f64], fs: f64, f: f64) -> f64 {

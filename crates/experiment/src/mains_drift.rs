@@ -13,7 +13,6 @@
 //! $$\Phi(t_j) = 2\pi \sum_{i < j} f\!\left(t_i + \tfrac{\Delta t}{2}\right)\Delta t .$$
 //! A steady line gives $\Phi = 2\pi f t$, its frequency measured to the segments' precision.
 
-use crate::hum::hann;
 use std::f64::consts::TAU;
 
 /// Length of the segments in which the line's frequency is measured (s).
@@ -217,4 +216,15 @@ fn peak(power: &dyn Fn(f64) -> f64, f: f64, reach: f64, step: f64) -> Option<f64
     let d = l - 2.0 * c + r;
     let off = if d < 0.0 { 0.5 * (l - r) / d } else { 0.0 };
     Some(grid[best].0 + off.clamp(-0.5, 0.5) * step)
+}
+
+/// The Hann window of `n` points.
+pub(crate) fn hann(n: usize) -> Vec<f64> {
+    (0..n)
+        .map(|j| {
+            (std::f64::consts::PI * (j as f64 + 0.5) / n as f64)
+                .sin()
+                .powi(2)
+        })
+        .collect()
 }
