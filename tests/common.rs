@@ -72,3 +72,16 @@ pub fn write_wav_i16(path: &Path, v: &[i16], rate: u32, channels: u16) {
     }
     w.finalize().expect("the WAV written");
 }
+
+/// Fails unless docs/experiment.md says each of `written` (any run of white space read as one
+/// space).
+pub fn experiment_docs_say(written: &[String]) {
+    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/experiment.md"))
+        .expect("docs/experiment.md")
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ");
+    for w in written {
+        assert!(doc.contains(w), "docs/experiment.md should say: {w}");
+    }
+}

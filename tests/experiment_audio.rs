@@ -205,16 +205,9 @@ fn beta_from_sound_is_about_as_precise_as_from_light() {
 fn beta_from_sound_in_a_quiet_room_is_about_as_precise_as_from_light() {
     let ratio = sound_sigma_over_light(0.003, 0.02);
     assert!(ratio < 2.0, "{ratio}");
-    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/experiment.md"))
-        .expect("docs/experiment.md")
-        .split_whitespace()
-        .collect::<Vec<_>>()
-        .join(" ");
-    let written = format!("with 2 % of hum the fit's sigma is {ratio:.2} times the light's");
-    assert!(
-        doc.contains(&written),
-        "docs/experiment.md should say: {written}"
-    );
+    crate::common::experiment_docs_say(&[format!(
+        "with 2 % of hum the fit's sigma is {ratio:.2} times the light's"
+    )]);
 }
 
 /// What is not a spin-down is refused, with only the checks that failed.

@@ -241,7 +241,7 @@ fn beta_from_sound_against_its_cramer_rao_bound() {
     };
     let quiet = bound_beta(&l, &quiet, 0.0) / light;
     // docs/experiment.md states these numbers.
-    docs_say(&[
+    crate::common::experiment_docs_say(&[
         format!("a quiet room (0.003 rms) the bound is {quiet:.2} times the light's"),
         format!(
             "is {:.2} times the light signal's on the same motion",
@@ -277,19 +277,6 @@ fn beta_from_sound_against_its_cramer_rao_bound() {
         ),
     ]);
     print_bound_against_the_room(&l, light);
-}
-
-/// Fails unless docs/experiment.md says each of `written` (any run of white space read as one
-/// space).
-fn docs_say(written: &[String]) {
-    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/experiment.md"))
-        .expect("docs/experiment.md")
-        .split_whitespace()
-        .collect::<Vec<_>>()
-        .join(" ");
-    for w in written {
-        assert!(doc.contains(w), "docs/experiment.md should say: {w}");
-    }
 }
 
 /// Prints the bound on beta from the sound of `l` against the room's level and the

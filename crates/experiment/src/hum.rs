@@ -13,7 +13,7 @@
 //! lines are fitted again where the disk keeps clear of them, their phase followed as the grid's
 //! frequency wanders ([`remove_hum_clear`]).
 
-use crate::mains_drift::{hann, line_phase, HOP_S};
+use crate::mains_drift::{hann, line_phase, reach, HOP_S};
 use rustfft::num_complex::Complex;
 use std::f64::consts::TAU;
 
@@ -164,19 +164,15 @@ fn stands_out(v: &[f64], fs: f64, f: f64) -> bool {
     let fft = rustfft::FftPlanner::<f64>::new().plan_fft_forward(block);
     // One resolution, 1/BLOCK_S, is one bin of the block's transform: shifted down by f, the
     // block's bins k and block - k are the powers at f + k res and f - k res.
-    let (sw, cw) = (-TAU * f / fs).sin_cos();
     let mut buf = vec![Complex::new(0.0, 0.0); block];
     let mut ratios: Vec<f64> = v
         .chunks_exact(block)
         .map(|b| {
-            let mut p = Complex::new(1.0, 0.0);
-            for (j, (z, (x, w))) in buf.iter_mut().zip(b.iter().zip(&w)).enumerate() {
-                if j % 4096 == 0 {
-                    let (s, c) = (-TAU * f * j as f64 / fs).sin_cos();
-                    p = Complex::new(c, s);
-                }
-                *z = p * (x * w);
-                p *= Complex::new(cw, sw);
+            for (z, ((x, w), [c, s])) in buf
+                .iter_mut()
+                .zip(b.iter().zip(&w).zip(steady(block, fs, f)))
+            {
+                *z = Complex::new(c, -s) * (x * w);
             }
             fft.process(&mut buf);
             let power = |k: usize| buf[k % block].norm_sqr();
@@ -304,10 +300,10 @@ fn steady_frequency(v: &[f64], fs: f64, f: f64, mask: &[bool]) -> f64 {
         let Some((c, _, _)) = line_fit(v, steady(n, fs, line), mask) else {
             break;
         };
-        let z = rustfft::num_complex::Complex::new(c[0], -c[1]);
-        let dz = rustfft::num_complex::Complex::new(c[2], -c[3]);
+        let z = Complex::new(c[0], -c[1]);
+        let dz = Complex::new(c[2], -c[3]);
         let step = (dz / z).im / (TAU * n as f64 / fs);
-        if !(step.is_finite() && (line + step - f).abs() <= crate::mains_drift::reach(f)) {
+        if !(step.is_finite() && (line + step - f).abs() <= reach(f)) {
             break;
         }
         line += step;
