@@ -13,7 +13,9 @@
 //! lines are fitted again where the disk keeps clear of them, their phase followed as the grid's
 //! frequency wanders ([`remove_hum_clear`]).
 
-use crate::mains_drift::{hann, line_phase, reach, HOP_S};
+use crate::line_power::{hann, power};
+use crate::mains_drift::{line_phase, phasors, reach, HOP_S};
+use rayon::prelude::*;
 use rustfft::num_complex::Complex;
 use std::f64::consts::TAU;
 
@@ -22,27 +24,6 @@ pub const HUM_RATIO: f64 = 10.0;
 
 /// Length of the blocks in which each hum line's amplitude and phase are fitted (s).
 pub const BLOCK_S: f64 = 2.0;
-
-/// The (unnormalised) power at `f` Hz of `v` weighted by the window `w` (as long as `v`).
-fn power(v: &[f64], w: &[f64], fs: f64, f: f64) -> f64 {
-    let (c, s) = (TAU * f / fs).sin_cos();
-    let rot = (s, -c);
-    let (mut re, mut im) = (0.0, 0.0);
-    let (mut pr, mut pi) = (1.0, 0.0);
-    for (j, (x, w)) in v.iter().zip(w).enumerate() {
-        re += x * w * pr;
-        im += x * w * pi;
-        let nr = pr * rot.0 - pi * rot.1;
-        pi = pr * rot.1 + pi * rot.0;
-        pr = nr;
-        if j % 4096 == 4095 {
-            let m = (pr * pr + pi * pi).sqrt();
-            pr /= m;
-            pi /= m;
-        }
-    }
-    re * re + im * im
-}
 
 /// Subtracts mains hum from `v` (sampled at `fs`); returns the frequencies removed (Hz).
 ///
@@ -114,22 +95,30 @@ pub fn remove_hum(v: &mut [f64], fs: f64) -> Vec<f64> {
 /// of the best of those, and the best's neighbours should it lie at that window's edge. The
 /// maximum and its neighbours are then those of the whole grid, at a third of its cost; points
 /// not visited are `None`.
-fn coarse_to_fine(s: i64, score: &dyn Fn(i64) -> f64) -> Vec<Option<f64>> {
+fn coarse_to_fine(s: i64, score: &(dyn Fn(i64) -> f64 + Sync)) -> Vec<Option<f64>> {
     let mut grid: Vec<Option<f64>> = vec![None; (2 * s + 1) as usize];
+    // Scores at the points `at`, on rayon's threads, into the grid.
+    let visit = |grid: &mut Vec<Option<f64>>, at: Vec<i64>| {
+        let scores: Vec<f64> = at.par_iter().map(|&i| score(i)).collect();
+        for (i, v) in at.into_iter().zip(scores) {
+            grid[(i + s) as usize] = Some(v);
+        }
+    };
+    visit(
+        &mut grid,
+        (-s..=s).filter(|i| i.rem_euclid(4) == 0).collect(),
+    );
     let mut best = (f64::MIN, 0);
     for i in (-s..=s).filter(|i| i.rem_euclid(4) == 0) {
-        let v = score(i);
-        grid[(i + s) as usize] = Some(v);
+        let v = grid[(i + s) as usize].unwrap_or(f64::MIN);
         if v > best.0 {
             best = (v, i);
         }
     }
-    for i in (best.1 - 5).max(-s)..=(best.1 + 5).min(s) {
-        let k = (i + s) as usize;
-        if grid[k].is_none() {
-            grid[k] = Some(score(i));
-        }
-    }
+    let near: Vec<i64> = ((best.1 - 5).max(-s)..=(best.1 + 5).min(s))
+        .filter(|i| grid[(i + s) as usize].is_none())
+        .collect();
+    visit(&mut grid, near);
     // Should the best lie at the window's edge, its neighbours too.
     loop {
         let Some(top) = (0..grid.len())
@@ -142,16 +131,15 @@ fn coarse_to_fine(s: i64, score: &dyn Fn(i64) -> f64) -> Vec<Option<f64>> {
         else {
             return grid;
         };
-        let missing: Vec<usize> = [top.wrapping_sub(1), top + 1]
+        let missing: Vec<i64> = [top.wrapping_sub(1), top + 1]
             .into_iter()
             .filter(|&k| k < grid.len() && grid[k].is_none())
+            .map(|k| k as i64 - s)
             .collect();
         if missing.is_empty() {
             return grid;
         }
-        for k in missing {
-            grid[k] = Some(score(k as i64 - s));
-        }
+        visit(&mut grid, missing);
     }
 }
 
@@ -164,10 +152,10 @@ fn stands_out(v: &[f64], fs: f64, f: f64) -> bool {
     let fft = rustfft::FftPlanner::<f64>::new().plan_fft_forward(block);
     // One resolution, 1/BLOCK_S, is one bin of the block's transform: shifted down by f, the
     // block's bins k and block - k are the powers at f + k res and f - k res.
-    let mut buf = vec![Complex::new(0.0, 0.0); block];
     let mut ratios: Vec<f64> = v
-        .chunks_exact(block)
+        .par_chunks_exact(block)
         .map(|b| {
+            let mut buf = vec![Complex::new(0.0, 0.0); block];
             for (z, ((x, w), [c, s])) in buf
                 .iter_mut()
                 .zip(b.iter().zip(&w).zip(steady(block, fs, f)))
@@ -218,17 +206,20 @@ pub fn remove_hum_clear(v: &mut [f64], fs: f64, lines: &[f64], clear: &dyn Fn(us
     for &f in lines {
         let mask: Vec<bool> = (0..n).map(|j| clear(j, f)).collect();
         let refined = steady_frequency(v, fs, f, &mask);
-        let Some((steady_coef, steady_rss, used)) = line_fit(v, steady(n, fs, refined), &mask)
-        else {
+        // The steady line's fit and the followed phase, each on its own thread.
+        let (fit, followed) = rayon::join(
+            || line_fit(v, steady(n, fs, refined), &mask),
+            || line_phase(v, fs, refined, &|j| mask[j]),
+        );
+        let Some((steady_coef, steady_rss, used)) = fit else {
             continue;
         };
-        let followed = phasors_of(&line_phase(v, fs, refined, &|j| mask[j]));
         // The followed phase's extra parameters: about one frequency per hop of its segments.
         let extra = (n as f64 / fs / HOP_S).round().max(1.0);
         let penalty = extra * (used as f64).ln() * steady_rss / used as f64;
-        match line_fit(v, followed.iter().copied(), &mask) {
+        match line_fit(v, phasors(&followed, refined, fs), &mask) {
             Some((coef, rss, _)) if steady_rss - rss > penalty => {
-                subtract_line(v, followed.iter().copied(), &coef);
+                subtract_line(v, phasors(&followed, refined, fs), &coef);
             }
             _ => subtract_line(v, steady(n, fs, refined), &steady_coef),
         }
@@ -251,17 +242,6 @@ fn subtract_line(
 
 /// Gauss-Newton steps on a steady line's frequency in [`steady_frequency`].
 pub const FREQUENCY_STEPS: usize = 2;
-
-/// The phasors $(\cos\Phi_j, \sin\Phi_j)$ of the phases `phase` (rad).
-fn phasors_of(phase: &[f64]) -> Vec<[f64; 2]> {
-    phase
-        .iter()
-        .map(|p| {
-            let (s, c) = p.sin_cos();
-            [c, s]
-        })
-        .collect()
-}
 
 /// The phasors of the steady phase $2\pi f j/f_s$ at `n` samples of rate `fs`, each the last
 /// turned by $2\pi f/f_s$ and set afresh from the phase every [`RESYNC`] samples, so that the
@@ -334,15 +314,21 @@ fn line_fit(
         if !mask[j] {
             continue;
         }
-        let b = nalgebra::Vector4::from(basis(p, j, n));
-        a += b * b.transpose();
-        r += b * *x;
+        let b = basis(p, j, n);
+        // The normal matrix's upper triangle; the lower is its mirror.
+        for row in 0..4 {
+            for col in row..4 {
+                a[(row, col)] += b[row] * b[col];
+            }
+            r[row] += b[row] * *x;
+        }
         xx += x * x;
         used += 1;
     }
     if 4 * used < v.len() {
         return None;
     }
+    a.fill_lower_triangle_with_upper_triangle();
     let coef = a.lu().solve(&r)?;
     Some((coef, xx - coef.dot(&r), used))
 }
@@ -352,7 +338,7 @@ fn subtract(v: &mut [f64], fs: f64, f: f64) {
     let block = ((BLOCK_S * fs) as usize).max(1);
     let w = TAU * f / fs;
     let (sw, cw) = w.sin_cos();
-    for (b, chunk) in v.chunks_mut(block).enumerate() {
+    v.par_chunks_mut(block).enumerate().for_each(|(b, chunk)| {
         let phasors = || {
             let (s0, c0) = (w * (b * block) as f64).sin_cos();
             std::iter::successors(Some((c0, s0)), move |&(c, s)| {
@@ -369,19 +355,20 @@ fn subtract(v: &mut [f64], fs: f64, f: f64) {
         }
         let det = cc * ss - cs * cs;
         if det.abs() < 1e-12 * cc * ss {
-            continue;
+            return;
         }
         let a = (xc * ss - xs * cs) / det;
         let bb = (xs * cc - xc * cs) / det;
         for (x, (c, s)) in chunk.iter_mut().zip(phasors()) {
             *x -= a * c + bb * s;
         }
-    }
+    });
 }
 
 #[cfg(test)]
 mod tests {
-    use super::{coarse_to_fine, hann, power, remove_hum};
+    use super::{coarse_to_fine, remove_hum};
+    use crate::line_power::{hann, power};
     use std::f64::consts::TAU;
 
     /// A disk's sweeping line in white noise (8 kS/s, 10 s), with and without 2 % of 50 Hz hum

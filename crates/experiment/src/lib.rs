@@ -42,6 +42,7 @@ pub mod law;
 pub mod law_stability;
 pub mod least_squares;
 pub mod light;
+pub mod line_power;
 pub mod mains_drift;
 pub mod mechanism_record;
 pub mod mechanisms;

@@ -30,6 +30,7 @@
 
 use crate::fit::phase;
 use nalgebra::SVector;
+use rayon::prelude::*;
 use rustfft::num_complex::Complex;
 use std::f64::consts::{PI, TAU};
 
@@ -245,7 +246,9 @@ pub fn blocks(
 ) -> Vec<Block> {
     let (x, t_start, dt) = (rec.x, rec.t_start, rec.dt);
     let fs = 1.0 / dt;
-    let mut raw: Vec<(f64, f64, usize, Sums, usize)> = Vec::new();
+    // Each block's start, end, turns and harmonics; then their sums, independent of each other,
+    // on rayon's threads (the order kept, so the result does not depend on them).
+    let mut cuts: Vec<(f64, f64, usize, usize)> = Vec::new();
     let mut ta = first;
     while ta < last {
         let (phi_a, omega, _) = phase(p, ta);
@@ -265,10 +268,16 @@ pub fn blocks(
         if harmonics == 0 {
             break;
         }
-        let sm = sums(x, t_start, dt, p, (ta, tb), harmonics);
-        raw.push((ta, tb, turns, sm, harmonics));
+        cuts.push((ta, tb, turns, harmonics));
         ta = tb;
     }
+    let raw: Vec<(f64, f64, usize, Sums, usize)> = cuts
+        .into_par_iter()
+        .map(|(ta, tb, turns, harmonics)| {
+            let sm = sums(x, t_start, dt, p, (ta, tb), harmonics);
+            (ta, tb, turns, sm, harmonics)
+        })
+        .collect();
     combine(&raw, shift, unwrap, s)
 }
 
