@@ -124,3 +124,30 @@ fn steady_hum_in_a_quiet_room_leaves_beta_alone() {
         assert!(db.abs() < 2.0, "seed {seed}: a shift of {db:.2} sigma");
     }
 }
+
+/// The sound's analysis runs parts of its work on rayon's threads (the phase blocks' sums, the
+/// mains search's grid, the hum's blocks, the followed phase beside the steady line's fit); a
+/// phone's sound with wandering hum, analysed on one thread and on three, gives the same
+/// analysis to the last bit.
+#[test]
+fn the_sound_analysis_does_not_depend_on_the_threads() {
+    let mic = Microphone::phone(48_000, 3);
+    let art = Artifacts {
+        hum: 0.02,
+        mains_wander: 0.2,
+        seed: mic.seed,
+        ..Artifacts::none()
+    };
+    let s = law_sound(&law(2.0), &mic, &art).unwrap();
+    let on = |threads: usize| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+            .install(|| sound_of(&s).unwrap())
+    };
+    let one = on(1);
+    assert!(one.law().from_phase, "{one}");
+    assert_eq!(one.track.hum.len(), 3, "{:?}", one.track.hum);
+    assert_eq!(format!("{one:?}"), format!("{:?}", on(3)));
+}
