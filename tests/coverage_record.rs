@@ -83,3 +83,32 @@ fn record_the_coverage_studies() {
         println!("stored in {}", path.display());
     }
 }
+
+/// docs/experiment.md tabulates the stored studies: each row's counts and percentages are the
+/// stored file's.
+#[test]
+fn the_docs_table_is_the_stored_studies() {
+    let rows: Vec<String> = stored()
+        .unwrap()
+        .iter()
+        .map(|st| {
+            let c = &st.coverage;
+            let cell = |pulls: &[f64], z: f64| {
+                let within = pulls.iter().filter(|p| p.abs() <= z).count();
+                format!("{within} ({:.1} %)", 100.0 * c.fraction(pulls, z))
+            };
+            format!(
+                "| {} | {} | {} | {} | {} | {} | {} | {} |",
+                st.recordings,
+                c.runs,
+                c.refused,
+                cell(&c.beta_pulls, 1.0),
+                cell(&c.beta_pulls, 1.96),
+                cell(&c.t0_pulls, 1.0),
+                cell(&c.t0_pulls, 1.96),
+                c.law_drifts
+            )
+        })
+        .collect();
+    crate::common::experiment_docs_say(&rows);
+}

@@ -66,14 +66,24 @@ fn with_and_without_hum(mic: &Microphone, wander: f64) -> (SoundAnalysis, SoundA
     (with(0.0), with(0.02))
 }
 
-/// A phone's sound at 48 kHz with 2 % hum whose frequency wanders as a grid's does
-/// ($50 + w \sin(2\pi t/12\,\mathrm{s})$ Hz, $w$ = 0.05, 0.1 and 0.2 Hz) gives the beta and t0
-/// of the same sound without hum, within the sigma of the analysis without hum.
+/// Eight phone sounds at 48 kHz with 2 % hum whose frequency wanders as a grid's does
+/// ($50 + w \sin(2\pi t/12\,\mathrm{s})$ Hz, $w$ = 0.05, 0.1 and 0.2 Hz) give the beta and t0
+/// of the same sounds without hum, within the sigma of the analysis without hum. Each line
+/// followed alone, and the choice made line by line, the shifts were -1.45 to +2.25 sigma;
+/// fitted at one steady frequency, +2.8 to +12.9 sigma.
 #[test]
-#[ignore = "not met: with the lines' phase followed where the information criterion takes it, the shifts are -1.45 to +2.25 sigma (beta) and -0.79 to +0.44 sigma (t0) over the four sounds; fitted at one steady frequency, +2.8 to +12.9 sigma and -11.9 to +0.6 sigma"]
 fn a_wandering_mains_frequency_is_followed() {
     let mut worst: f64 = 0.0;
-    for (seed, wander) in [(1, 0.05), (2, 0.1), (3, 0.2), (4, 0.1)] {
+    for (seed, wander) in [
+        (1, 0.05),
+        (2, 0.1),
+        (3, 0.2),
+        (4, 0.1),
+        (5, 0.2),
+        (6, 0.05),
+        (7, 0.2),
+        (8, 0.1),
+    ] {
         let mic = Microphone::phone(48_000, seed);
         let (clean, hummed) = with_and_without_hum(&mic, wander);
         let (c, h) = (clean.law(), hummed.law());
@@ -87,6 +97,7 @@ fn a_wandering_mains_frequency_is_followed() {
         worst = worst.max(db.abs()).max(dt.abs());
     }
     assert!(worst < 1.0, "a shift of {worst:.2} sigma");
+    crate::common::experiment_docs_say(&[format!("stay within {worst:.2} of their sigmas")]);
 }
 
 /// Phone sounds of 10 s at 48 kHz in a quiet room (0.003 rms, where beta is three times as precise as in

@@ -14,7 +14,8 @@
 //! frequency wanders ([`remove_hum_clear`]).
 
 use crate::line_power::{hann, power};
-use crate::mains_drift::{line_phase, phasors, reach, HOP_S};
+use crate::mains_drift::{phasors, reach, HOP_S};
+use crate::mains_phase::mains_phase;
 use rayon::prelude::*;
 use rustfft::num_complex::Complex;
 use std::f64::consts::TAU;
@@ -179,51 +180,109 @@ fn stands_out(v: &[f64], fs: f64, f: f64) -> bool {
     *ratios.select_nth_unstable_by(m, f64::total_cmp).1 > HUM_RATIO
 }
 
-/// Subtracts the mains lines `lines` (Hz) from `v` (sampled at `fs`), each line's phase $\Phi$
-/// either steady, $2\pi f' t$ at the frequency refined on the record ([`steady_frequency`]), or
-/// followed as the grid's frequency wanders ([`line_phase`]). The followed phase has about one
-/// more parameter, $k$ in all, per [`HOP_S`] of record, and always fits the clear samples a
-/// little better, partly by following their noise and the disk's leak; it is taken only where
-/// it lowers their sum of squares by more than the Bayesian information criterion asks,
-/// $k\,\hat\sigma^2\ln n$ ($\hat\sigma^2$ the steady fit's residual variance over its $n$
-/// samples). On six exact-law phone sounds in a quiet room (0.003) with 2 % of steady hum,
-/// the followed phase chosen by the smaller sum alone moved $\beta$ by up to 6.7 of its sigmas
-/// from the same sounds without hum (`steady_hum_in_a_quiet_room_leaves_beta_alone`). The line is fitted over the
-/// whole record as $(a + a'\tau)\cos\Phi + (b + b'\tau)\sin\Phi$ ($\tau$ the time from the
-/// record's middle over its length, so that the line's amplitude may drift slowly)
-/// by least squares on the samples `clear(j, f)` says are free of the disk (its harmonics far from
-/// the line). The disk's line sweeping through a mains line is then not taken for hum: fitted
-/// in short blocks, the part of the sweep just outside the guard leaks into the block's fit,
-/// always with the disk's phase, and the subtraction biases the disk's phase near the crossing
-/// (on twelve exact-law phone sounds with 2 % hum, against the same sounds without it, $t_0$ moved
-/// by +33 us on average, half its sigma, with the lines fitted in 2 s blocks; by +8 us fitted
-/// thus). A line with fewer than a quarter of the samples clear is left.
-pub fn remove_hum_clear(v: &mut [f64], fs: f64, lines: &[f64], clear: &dyn Fn(usize, f64) -> bool) {
+/// Subtracts the mains lines `lines` (Hz) from `v` (sampled at `fs`), grid by grid
+/// ([`families`]). Each line $k$ of a grid is fitted over the whole record as
+/// $(a + a'\tau)\cos\Phi_k + (b + b'\tau)\sin\Phi_k$ ($\tau$ the time from the record's middle
+/// over its length, so that the line's amplitude may drift slowly) by least squares on the
+/// samples `clear(j, f)` says are free of the disk (its harmonics far from the line), and
+/// subtracted, one line after the other. The phases are either all steady, $\Phi_k = 2\pi f'_k t$
+/// at each line's frequency refined on the record ([`steady_frequency`]), or all followed as the
+/// grid's frequency wanders, $\Phi_k = k\Phi$ ([`mains_phase`]).
+///
+/// **Which.** The followed phase has about one more parameter, $p$ in all, per [`HOP_S`] of
+/// record, shared by the grid's lines, and always fits the clear samples a little better, partly
+/// by following their noise and the disk's leak. It is taken where the grid's lines together
+/// say so by the Bayesian information criterion: $\sum_k \Delta S_k/\hat\sigma_k^2 > p \ln n$,
+/// $\Delta S_k$ the drop in line $k$'s residual sum of squares, $\hat\sigma_k^2$ its steady fit's
+/// residual variance, $n$ the most samples a line uses. On six exact-law phone sounds in a quiet
+/// room (0.003) with 2 % of steady hum, the followed phase chosen by the smaller sum alone moved
+/// $\beta$ by up to 6.7 of its sigmas from the same sounds without hum
+/// (`steady_hum_in_a_quiet_room_leaves_beta_alone`). Chosen line by line, a line whose clear
+/// samples say little may stay steady while its grid wanders, and its phase is then wrong where
+/// the disk covers it, which is where the disk's phase is read.
+///
+/// **Why the whole record.** The disk's line sweeping through a mains line is then not taken for
+/// hum: fitted in short blocks, the part of the sweep just outside the guard leaks into the
+/// block's fit, always with the disk's phase, and the subtraction biases the disk's phase near
+/// the crossing (on twelve exact-law phone sounds with 2 % hum, against the same sounds without
+/// it, $t_0$ moved by +33 us on average, half its sigma, with the lines fitted in 2 s blocks; by
+/// +8 us fitted thus). A line with fewer than a quarter of the samples clear is left.
+pub fn remove_hum_clear(
+    v: &mut [f64],
+    fs: f64,
+    lines: &[f64],
+    clear: &(dyn Fn(usize, f64) -> bool + Sync),
+) {
     let n = v.len();
     if n < 2 {
         return;
     }
-    for &f in lines {
-        let mask: Vec<bool> = (0..n).map(|j| clear(j, f)).collect();
-        let refined = steady_frequency(v, fs, f, &mask);
-        // The steady line's fit and the followed phase, each on its own thread.
-        let (fit, followed) = rayon::join(
-            || line_fit(v, steady(n, fs, refined), &mask),
-            || line_phase(v, fs, refined, &|j| mask[j]),
-        );
-        let Some((steady_coef, steady_rss, used)) = fit else {
-            continue;
-        };
+    let masks: Vec<Vec<bool>> = lines
+        .par_iter()
+        .map(|&f| (0..n).map(|j| clear(j, f)).collect())
+        .collect();
+    for (mains, members) in families(lines) {
+        let ks: Vec<usize> = members.iter().map(|m| m.1).collect();
+        let followed = mains_phase(v, fs, mains, &ks, &|j, i| masks[members[i].0][j]);
+        // The record with the grid's lines subtracted steady, and followed; the evidence.
+        let (mut by_steady, mut by_followed) = (v.to_vec(), v.to_vec());
+        let (mut evidence, mut most) = (0.0, 1usize);
+        for &(i, k) in &members {
+            let mask = &masks[i];
+            let refined = steady_frequency(&by_steady, fs, lines[i], mask);
+            let fits = rayon::join(
+                || line_fit(&by_steady, steady(n, fs, refined), mask),
+                || line_fit(&by_followed, phasors(&followed, k as f64, mains, fs), mask),
+            );
+            let (Some((steady_coef, steady_rss, used)), Some((coef, rss, _))) = fits else {
+                continue;
+            };
+            subtract_line(&mut by_steady, steady(n, fs, refined), &steady_coef);
+            subtract_line(
+                &mut by_followed,
+                phasors(&followed, k as f64, mains, fs),
+                &coef,
+            );
+            evidence += (steady_rss - rss) / (steady_rss / used as f64);
+            most = most.max(used);
+        }
         // The followed phase's extra parameters: about one frequency per hop of its segments.
         let extra = (n as f64 / fs / HOP_S).round().max(1.0);
-        let penalty = extra * (used as f64).ln() * steady_rss / used as f64;
-        match line_fit(v, phasors(&followed, refined, fs), &mask) {
-            Some((coef, rss, _)) if steady_rss - rss > penalty => {
-                subtract_line(v, phasors(&followed, refined, fs), &coef);
-            }
-            _ => subtract_line(v, steady(n, fs, refined), &steady_coef),
-        }
+        let chosen = if evidence > extra * (most as f64).ln() {
+            by_followed
+        } else {
+            by_steady
+        };
+        v.copy_from_slice(&chosen);
     }
+}
+
+/// The mains lines `lines` (Hz) grouped by grid: each family's fundamental (Hz) and its
+/// members' (index in `lines`, harmonic number). A line is $k f_m$ for the first family whose
+/// fundamental it is a whole multiple of (to $10^{-9}$); else it starts a family whose fundamental
+/// is the line over the harmonic number that puts it within [`reach`] of 50 or 60 Hz.
+fn families(lines: &[f64]) -> Vec<(f64, Vec<(usize, usize)>)> {
+    let mut out: Vec<(f64, Vec<(usize, usize)>)> = Vec::new();
+    for (i, &f) in lines.iter().enumerate() {
+        let member = out.iter_mut().find_map(|(m, members)| {
+            let k = (f / *m).round();
+            ((f - k * *m).abs() <= 1e-9 * f && k >= 1.0).then_some((members, k as usize))
+        });
+        if let Some((members, k)) = member {
+            members.push((i, k));
+            continue;
+        }
+        let k = [50.0, 60.0]
+            .into_iter()
+            .map(|nominal: f64| (f / nominal).round().max(1.0))
+            .find(|k| {
+                let m = f / k;
+                (m - 50.0).abs() <= reach(50.0) || (m - 60.0).abs() <= reach(60.0)
+            })
+            .unwrap_or(1.0);
+        out.push((f / k, vec![(i, k as usize)]));
+    }
+    out
 }
 
 /// Subtracts the line $(a + a'\tau)\cos\Phi + (b + b'\tau)\sin\Phi$, `coef` = $(a, b, a', b')$,

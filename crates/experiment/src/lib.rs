@@ -44,6 +44,7 @@ pub mod least_squares;
 pub mod light;
 pub mod line_power;
 pub mod mains_drift;
+pub mod mains_phase;
 pub mod mechanism_record;
 pub mod mechanisms;
 pub mod model_choice;

@@ -1,19 +1,14 @@
-//! A mains line's phase followed over a record, as the grid's frequency wanders.
+//! The pieces with which a mains line's phase is followed as the grid's frequency wanders
+//! ([`mains_phase`](crate::mains_phase) follows a grid's lines together with them).
 //!
 //! A grid's frequency follows its load: $f(t) = k f_m + \delta(t)$, $\delta$ a slow wander of
-//! hundredths to tenths of a hertz. The line's frequency is measured in segments of
-//! [`SEGMENT_S`] seconds every [`HOP_S`] seconds: the maximum of the segment's power
-//! $|\sum_j w_j x_j e^{-2\pi i g t_j}|^2$ ($w$ the Hann window times the samples the caller says
-//! are clear of the disk) over $g$ within [`reach`] of the line (steps of a quarter of
-//! $1/T_{seg}$, then a parabola), on a copy averaged to about 2 kS/s; the samples near the disk
-//! weigh nothing, and their neighbours less ([`TAPER_S`]). Segments of less than half their
-//! window's weight are left out; the phase is then refined by the line's own phase in each
-//! segment ([`REFINE`] rounds). Between the segments' centres $f(t)$ is linear (and extended so beyond
-//! the first and last, within the search's reach), and the phase is its integral,
-//! $$\Phi(t_j) = 2\pi \sum_{i < j} f\!\left(t_i + \tfrac{\Delta t}{2}\right)\Delta t .$$
-//! A steady line gives $\Phi = 2\pi f t$, its frequency measured to the segments' precision.
+//! hundredths to tenths of a hertz. It is measured in segments of [`SEGMENT_S`] seconds every
+//! [`HOP_S`] seconds, within [`reach`] of the line, the maximum of a power ([`peak`]) on the
+//! samples clear of the disk, weighed by a taper ([`tapered`]); the phase is its integral
+//! ([`integrate`]), corrected by the phase measured in the segments ([`add_between`]); and the
+//! line's phasors follow from the phase ([`phasors`]). A steady line gives $\Phi = 2\pi f t$,
+//! its frequency measured to the segments' precision.
 
-use crate::line_power::{hann, power};
 use std::f64::consts::TAU;
 
 /// Length of the segments in which the line's frequency is measured (s).
@@ -28,43 +23,10 @@ pub fn reach(f: f64) -> f64 {
     0.3f64.max(0.006 * f)
 }
 
-/// The phase (rad) at every sample of `v` (rate `fs`) of the line near `f` Hz, its frequency
-/// followed segment by segment on the samples `clear(j)` admits (see the module's documentation).
-pub fn line_phase(v: &[f64], fs: f64, f: f64, clear: &dyn Fn(usize) -> bool) -> Vec<f64> {
-    let taper = tapered(v.len(), fs, clear);
-    let q = ((fs / 2000.0).floor() as usize).max(1);
-    let fs_low = fs / q as f64;
-    let low: Vec<(f64, f64)> = v
-        .chunks_exact(q)
-        .zip(taper.chunks_exact(q))
-        .map(|(c, w)| {
-            (
-                c.iter().sum::<f64>() / q as f64,
-                w.iter().sum::<f64>() / q as f64,
-            )
-        })
-        .collect();
-    let seg = ((SEGMENT_S * fs_low) as usize).max(8);
-    let hop = ((HOP_S * fs_low) as usize).max(1);
-    let hann = hann(seg);
-    let total: f64 = hann.iter().sum();
-    // (centre time, frequency) of each segment clear enough.
-    let mut found: Vec<(f64, f64)> = Vec::new();
-    let mut start = 0;
-    while start + seg <= low.len() {
-        let part = &low[start..start + seg];
-        let kept: f64 = hann.iter().zip(part).map(|(w, p)| w * p.1).sum();
-        if kept >= 0.5 * total {
-            let weighed: Vec<f64> = part.iter().map(|(x, ok)| x * ok).collect();
-            let at = |g: f64| power(&weighed, &hann, fs_low, g);
-            if let Some(g) = peak(&at, f, reach(f), 0.25 / SEGMENT_S) {
-                let t0 = start as f64 / fs_low;
-                found.push((t0 + 0.5 * seg as f64 / fs_low, g));
-            }
-        }
-        start += hop;
-    }
-    let freq = found;
+/// The phase (rad) at `n` samples of rate `fs` of a line whose frequency is `freq` (segment
+/// centre time (s), frequency (Hz)), linear between the centres and extended so beyond the first
+/// and last, within [`reach`] of `f`: $\Phi(t_j) = 2\pi \sum_{i < j} f(t_i + \Delta t/2)\,\Delta t$.
+pub(crate) fn integrate(freq: &[(f64, f64)], f: f64, n: usize, fs: f64) -> Vec<f64> {
     let dt = 1.0 / fs;
     let m = freq.len();
     // The segment pair about time t, found by walking forward as t grows.
@@ -79,14 +41,11 @@ pub fn line_phase(v: &[f64], fs: f64, f: f64, clear: &dyn Fn(usize) -> bool) -> 
         let ((a, fa), (b, fb)) = (freq[i - 1], freq[i]);
         (fa + (fb - fa) * (t - a) / (b - a)).clamp(f - reach(f), f + reach(f))
     };
-    let mut phase = Vec::with_capacity(v.len());
+    let mut phase = Vec::with_capacity(n);
     let mut acc = 0.0;
-    for j in 0..v.len() {
+    for j in 0..n {
         phase.push(acc);
         acc += TAU * at((j as f64 + 0.5) * dt) * dt;
-    }
-    for _ in 0..REFINE {
-        refine(v, fs, f, &mut phase, &taper);
     }
     phase
 }
@@ -99,7 +58,7 @@ pub const TAPER_S: f64 = 0.4;
 /// $\sin^2(\pi d/2D)$ with the time $d$ to the nearest such sample, $D$ = [`TAPER_S`], to 1: a
 /// segment's sums then have no sharp edge through which the disk's line, a few hertz off, would
 /// leak.
-fn tapered(n: usize, fs: f64, clear: &dyn Fn(usize) -> bool) -> Vec<f64> {
+pub(crate) fn tapered(n: usize, fs: f64, clear: &dyn Fn(usize) -> bool) -> Vec<f64> {
     let d = (TAPER_S * fs).max(1.0);
     let mut dist = vec![f64::INFINITY; n];
     let mut last = f64::NEG_INFINITY;
@@ -126,50 +85,10 @@ fn tapered(n: usize, fs: f64, clear: &dyn Fn(usize) -> bool) -> Vec<f64> {
     dist
 }
 
-/// Rounds in which the phase is corrected by the line's own phase in each segment.
-pub const REFINE: usize = 2;
-
-/// Corrects `phase` by the line's phase against it in each segment, $\arg\sum_j w_j x_j
-/// e^{-i\Phi_j}$ ($w$ the Hann window on the clear samples; the weighted mean of the phase's error
-/// over the segment, referred to its centre), unwrapped from segment to segment and linear
-/// between the centres (extended so beyond the first and last), `f` the line's nominal
-/// frequency (Hz). A segment measures the mean of
-/// the frequency over it, which differs from the frequency at its centre where the wander
-/// curves; the phase measures what the frequency left.
-fn refine(v: &[f64], fs: f64, f: f64, phase: &mut [f64], taper: &[f64]) {
-    let seg = ((SEGMENT_S * fs) as usize).max(8);
-    let hop = ((HOP_S * fs) as usize).max(1);
-    let hann = hann(seg);
-    let total: f64 = hann.iter().sum();
-    // Each segment's sums, the samples streamed once: sample j lies in the segments that
-    // start at k hop for k hop <= j < k hop + seg.
-    let count = if v.len() >= seg {
-        (v.len() - seg) / hop + 1
-    } else {
-        0
-    };
-    let mut sums = vec![(0.0, 0.0, 0.0); count];
-    for (j, ([c, s], (x, w))) in phasors(phase, f, fs).zip(v.iter().zip(taper)).enumerate() {
-        let (re, im) = (w * x * c, -w * x * s);
-        let first = (j + hop).saturating_sub(seg) / hop;
-        for (k, sum) in sums.iter_mut().enumerate().take(j / hop + 1).skip(first) {
-            let h = hann[j - k * hop];
-            sum.0 += h * re;
-            sum.1 += h * im;
-            sum.2 += h * w;
-        }
-    }
-    let mut found: Vec<(f64, f64)> = Vec::new();
-    for (k, &(re, im, kept)) in sums.iter().enumerate() {
-        if kept >= 0.5 * total && re.hypot(im) > 0.0 {
-            let centre = (k as f64 * hop as f64 + 0.5 * seg as f64) / fs;
-            let mut psi = im.atan2(re);
-            if let Some(&(_, last)) = found.last() {
-                psi = last + crate::phase_blocks::wrap(psi - last);
-            }
-            found.push((centre, psi));
-        }
-    }
+/// Adds to `phase` (samples at rate `fs`) the corrections `found` (segment centre time (s),
+/// phase (rad)), linear between the centres and extended so beyond the first and last; nothing
+/// with fewer than two.
+pub(crate) fn add_between(phase: &mut [f64], found: &[(f64, f64)], fs: f64) {
     let n = found.len();
     if n < 2 {
         return;
@@ -192,7 +111,7 @@ fn refine(v: &[f64], fs: f64, f: f64, phase: &mut [f64], taper: &[f64]) {
 
 /// The maximum of `power` within `reach` of `f` (steps `step`, then a parabola); `None` when it
 /// lies on the search's edge (no line there).
-fn peak(power: &dyn Fn(f64) -> f64, f: f64, reach: f64, step: f64) -> Option<f64> {
+pub(crate) fn peak(power: &dyn Fn(f64) -> f64, f: f64, reach: f64, step: f64) -> Option<f64> {
     let n = (reach / step).ceil() as i64;
     let grid: Vec<(f64, f64)> = (-n..=n)
         .map(|i| {
@@ -213,26 +132,27 @@ fn peak(power: &dyn Fn(f64) -> f64, f: f64, reach: f64, step: f64) -> Option<f64
 /// Samples between the exact phasors of [`phasors`].
 const ANCHOR: usize = 16;
 
-/// The phasors $(\cos\Phi_j, \sin\Phi_j)$ of a followed phase `phase` (rad) of a line near
-/// `f` Hz, sampled at `fs`. Every [`ANCHOR`]-th is exact; between, the phase is the anchor's
-/// $\Phi_k$ plus the steady line's $2\pi f (j - k)/f_s$ (a table of [`ANCHOR`] phasors) plus the
-/// wander's small remainder $\epsilon = \Phi_j - \Phi_k - 2\pi f (j - k)/f_s$, whose phasor is
-/// its Taylor series to $\epsilon^6$ (error below $\epsilon^7/5040$, $10^{-13}$ at the largest
-/// $|\epsilon|$ it is used for, [`SMALL`]; a larger remainder takes its sine and cosine). The
-/// wander is a few hertz at most, so over [`ANCHOR`] samples $\epsilon$ stays below
-/// a hundredth of a radian at 8 kS/s, and a sine and a cosine per sample become one per anchor.
-pub fn phasors(phase: &[f64], f: f64, fs: f64) -> impl Iterator<Item = [f64; 2]> + '_ {
-    let w = TAU * f / fs;
+/// The phasors $(\cos k\Phi_j, \sin k\Phi_j)$ of $k$ times a followed phase `phase` (rad) of a
+/// line near `f` Hz, sampled at `fs`. Every [`ANCHOR`]-th is exact; between, the phase is the
+/// anchor's $k\Phi_a$ plus the steady line's $2\pi k f (j - a)/f_s$ (a table of [`ANCHOR`]
+/// phasors) plus the wander's small remainder $\epsilon = k(\Phi_j - \Phi_a) - 2\pi k f (j -
+/// a)/f_s$, whose phasor is its Taylor series to $\epsilon^6$ (error below $\epsilon^7/5040$,
+/// $10^{-13}$ at the largest $|\epsilon|$ it is used for, [`SMALL`]; a larger remainder takes its
+/// sine and cosine). The wander is a few hertz at most, so over [`ANCHOR`] samples $\epsilon$
+/// stays below a hundredth of a radian at 8 kS/s, and a sine and a cosine per sample become one
+/// per anchor.
+pub fn phasors(phase: &[f64], k: f64, f: f64, fs: f64) -> impl Iterator<Item = [f64; 2]> + '_ {
+    let w = TAU * k * f / fs;
     let table: [(f64, f64); ANCHOR] = std::array::from_fn(|m| (w * m as f64).sin_cos());
     let mut anchor = (0.0, [1.0, 0.0]);
     phase.iter().enumerate().map(move |(j, &p)| {
         let m = j % ANCHOR;
         if m == 0 {
-            let (s, c) = p.sin_cos();
+            let (s, c) = (k * p).sin_cos();
             anchor = (p, [c, s]);
             return [c, s];
         }
-        let e = p - anchor.0 - w * m as f64;
+        let e = k * (p - anchor.0) - w * m as f64;
         let (es, ec) = if e.abs() <= SMALL {
             let e2 = e * e;
             (
