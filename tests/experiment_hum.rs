@@ -137,7 +137,8 @@ fn steady_hum_in_a_quiet_room_leaves_beta_alone() {
 }
 
 /// The sound's analysis runs parts of its work on rayon's threads (the phase blocks' sums, the
-/// mains search's grid, the hum's blocks, the followed phase beside the steady line's fit); a
+/// mains search's grid, the hum's blocks, a grid's followed phase, each line's steady and followed
+/// fits); a
 /// phone's sound with wandering hum, analysed on one thread and on three, gives the same
 /// analysis to the last bit.
 #[test]
