@@ -137,10 +137,9 @@ fn steady_hum_in_a_quiet_room_leaves_beta_alone() {
 }
 
 /// The sound's analysis runs parts of its work on rayon's threads (the phase blocks' sums, the
-/// mains search's grid, the hum's blocks, a grid's followed phase, each line's steady and followed
-/// fits); a
-/// phone's sound with wandering hum, analysed on one thread and on three, gives the same
-/// analysis to the last bit.
+/// mains search's grid, the hum's blocks, a grid's followed phase, each line's steady and
+/// followed fits); a phone's sound with wandering hum, analysed on one thread and on three,
+/// gives the same analysis to the last bit.
 #[test]
 fn the_sound_analysis_does_not_depend_on_the_threads() {
     let mic = Microphone::phone(48_000, 3);
