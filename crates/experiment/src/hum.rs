@@ -426,7 +426,7 @@ fn subtract(v: &mut [f64], fs: f64, f: f64) {
 
 #[cfg(test)]
 mod tests {
-    use super::{coarse_to_fine, remove_hum};
+    use super::{coarse_to_fine, families, remove_hum};
     use crate::line_power::{hann, power};
     use std::f64::consts::TAU;
 
@@ -509,5 +509,22 @@ mod tests {
                 assert_eq!(grid[k], Some(full[k]), "mains {mains}");
             }
         }
+    }
+
+    /// Lines of a 50 Hz grid and of a 60 Hz grid (whose fundamental did not stand out) fall
+    /// into two families with their harmonic numbers; 300 Hz, a harmonic of both nominal
+    /// frequencies, goes to the grid it is a multiple of.
+    #[test]
+    fn lines_are_grouped_by_grid() {
+        let (a, b) = (50.013, 59.987);
+        let lines = [a, 2.0 * a, 6.0 * a, 2.0 * b, 3.0 * b, 5.0 * b];
+        let got = families(&lines);
+        assert_eq!(got.len(), 2, "{got:?}");
+        assert!(
+            (got[0].0 - a).abs() < 1e-12 && (got[1].0 - b).abs() < 1e-12,
+            "{got:?}"
+        );
+        assert_eq!(got[0].1, vec![(0, 1), (1, 2), (2, 6)]);
+        assert_eq!(got[1].1, vec![(3, 2), (4, 3), (5, 5)]);
     }
 }
