@@ -68,9 +68,7 @@ fn with_and_without_hum(mic: &Microphone, wander: f64) -> (SoundAnalysis, SoundA
 
 /// Eight phone sounds at 48 kHz with 2 % hum whose frequency wanders as a grid's does
 /// ($50 + w \sin(2\pi t/12\,\mathrm{s})$ Hz, $w$ = 0.05, 0.1 and 0.2 Hz) give the beta and t0
-/// of the same sounds without hum, within the sigma of the analysis without hum. Each line
-/// followed alone, and the choice made line by line, the shifts were -1.45 to +2.25 sigma;
-/// fitted at one steady frequency, +2.8 to +12.9 sigma.
+/// of the same sounds without hum, within the sigma of the analysis without hum.
 #[test]
 fn a_wandering_mains_frequency_is_followed() {
     let mut worst: f64 = 0.0;

@@ -260,7 +260,8 @@ pub fn remove_hum_clear(
 /// The mains lines `lines` (Hz) grouped by grid: each family's fundamental (Hz) and its
 /// members' (index in `lines`, harmonic number). A line is $k f_m$ for the first family whose
 /// fundamental it is a whole multiple of (to $10^{-9}$); else it starts a family whose fundamental
-/// is the line over the harmonic number that puts it within [`reach`] of 50 or 60 Hz.
+/// is the line over the harmonic number that puts it within [`reach`] of 50 or 60 Hz (the line
+/// itself where neither does).
 fn families(lines: &[f64]) -> Vec<(f64, Vec<(usize, usize)>)> {
     let mut out: Vec<(f64, Vec<(usize, usize)>)> = Vec::new();
     for (i, &f) in lines.iter().enumerate() {

@@ -138,9 +138,9 @@ const ANCHOR: usize = 16;
 /// phasors) plus the wander's small remainder $\epsilon = k(\Phi_j - \Phi_a) - 2\pi k f (j -
 /// a)/f_s$, whose phasor is its Taylor series to $\epsilon^6$ (error below $\epsilon^7/5040$,
 /// $10^{-13}$ at the largest $|\epsilon|$ it is used for, [`SMALL`]; a larger remainder takes its
-/// sine and cosine). The wander is a few hertz at most, so over [`ANCHOR`] samples $\epsilon$
-/// stays below a hundredth of a radian at 8 kS/s, and a sine and a cosine per sample become one
-/// per anchor.
+/// sine and cosine). A line's wander stays within [`reach`] (3 Hz at 500 Hz), so over [`ANCHOR`]
+/// samples $\epsilon$ stays below 0.04 rad at 8 kS/s, and a sine and a cosine per sample become
+/// one per anchor.
 pub fn phasors(phase: &[f64], k: f64, f: f64, fs: f64) -> impl Iterator<Item = [f64; 2]> + '_ {
     let w = TAU * k * f / fs;
     let table: [(f64, f64); ANCHOR] = std::array::from_fn(|m| (w * m as f64).sin_cos());

@@ -92,10 +92,10 @@ fn frequencies(v: &[f64], fs: f64, f: f64, ks: &[usize], tapers: &[Vec<f64>]) ->
                         .then(|| (*k as f64, part.iter().zip(w).map(|(x, w)| x * w).collect()))
                 })
                 .collect();
-            let top = lines.iter().map(|l| l.0).fold(0.0, f64::max);
             if lines.is_empty() {
                 return None;
             }
+            let top = lines.iter().map(|l| l.0).fold(0.0, f64::max);
             let score = |g: f64| -> f64 {
                 lines
                     .iter()
