@@ -108,7 +108,7 @@ fn the_layer_rule_would_catch_a_reference_reading_the_paper() {
     );
 }
 
-fn rust_files(path: &Path, out: &mut Vec<std::path::PathBuf>) {
+pub(crate) fn rust_files(path: &Path, out: &mut Vec<std::path::PathBuf>) {
     if path.is_dir() {
         let mut entries: Vec<_> = std::fs::read_dir(path)
             .unwrap()
@@ -124,7 +124,7 @@ fn rust_files(path: &Path, out: &mut Vec<std::path::PathBuf>) {
 }
 
 /// Every source directory of the workspace: the binary's and each crate's.
-fn source_dirs() -> Vec<std::path::PathBuf> {
+pub(crate) fn source_dirs() -> Vec<std::path::PathBuf> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut dirs = vec![root.join("src")];
     dirs.extend(
@@ -155,7 +155,7 @@ const COMPUTES: &[&str] = &[
 ];
 
 /// The lines of `text` before its unit tests (`#[cfg(test)]`), numbered from 1.
-fn code_lines(text: &str) -> Vec<(usize, &str)> {
+pub(crate) fn code_lines(text: &str) -> Vec<(usize, &str)> {
     text.lines()
         .enumerate()
         .take_while(|(_, l)| !l.trim_start().starts_with("#[cfg(test)]"))

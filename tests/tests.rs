@@ -23,6 +23,7 @@ mod invariance;
 mod lab_frame;
 mod lab_frame_invariants;
 mod limits;
+mod model_kinds;
 mod models;
 mod mutation;
 mod notation;

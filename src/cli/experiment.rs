@@ -26,7 +26,7 @@ pub enum Command {
         #[arg(long, value_name = "R", default_value_t = 48000)]
         rate: u32,
         /// The sound's coding: 16-bit WAV, 24-bit WAV, 32-bit float WAV, or 16-bit FLAC.
-        #[arg(long, value_enum, default_value = "wav")]
+        #[arg(long, value_parser = super::choice::parser::<experiment::SoundFormat>(), default_value = "wav")]
         format: experiment::SoundFormat,
         #[command(flatten)]
         artifacts: ArtifactArgs,

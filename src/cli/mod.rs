@@ -4,6 +4,7 @@
 //! sentence.
 
 pub mod check;
+pub(crate) mod choice;
 pub mod experiment;
 pub mod figures;
 pub mod mutants;

@@ -11,7 +11,7 @@ pub(crate) struct PaperInput {
     /// Integration accuracy of the checks (fast: DOPRI5 at rtol 1e-6; standard and high:
     /// DOP853 at 1e-10 and 1e-13; each prints what it reaches on the benchmark scene);
     /// without it, DOP853 at rtol 1e-12, the accuracy the tolerances were designed at.
-    #[arg(long, value_enum)]
+    #[arg(long, value_parser = super::choice::parser::<Accuracy>())]
     pub accuracy: Option<Accuracy>,
     #[command(flatten)]
     pub dir: PaperDir,

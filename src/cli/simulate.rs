@@ -179,7 +179,7 @@ pub(crate) fn summary(scene: &Scene, r: &Run) -> String {
         "work        {} right-hand-side evaluations ({} more to locate events and sample), {} accepted and {} rejected steps",
         r.stats.evaluations, r.stats.extra_evaluations, r.stats.accepted, r.stats.rejected
     );
-    if scene.model == physics::scene::ModelKind::Sliding {
+    if scene.model.has_coulomb_friction() {
         let _ = writeln!(
             s,
             "contact     {} switches and impacts",

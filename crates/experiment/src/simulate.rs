@@ -9,7 +9,7 @@ use crate::sliding_record::sliding_motion;
 use crate::trace::{Motion, Trace, Truth};
 use physics::model::rolling::Rolling;
 use physics::model::{Extras, Model};
-use physics::scene::{ModelKind, Scene};
+use physics::scene::Scene;
 use physics::solve::{solve, Ending, Event, Problem, Solution, State};
 
 /// States: the core four and the heading.
@@ -73,7 +73,7 @@ pub fn simulate_motion(
             "the record needs a positive sample rate and end time, got {rate} S/s and {end_at} s"
         )));
     }
-    if !matches!(scene.model, ModelKind::Dissipative | ModelKind::Sliding) {
+    if !scene.model.spins_down_in_motion() {
         return Err(scene_err(format!(
             "the experiment needs a spinning-down disk: model must be dissipative (rolling) or \
              sliding (with friction), not {}",
@@ -99,7 +99,7 @@ pub fn simulate_motion(
                 .into(),
         ));
     }
-    if scene.model == ModelKind::Sliding {
+    if scene.model.has_coulomb_friction() {
         return sliding_motion(scene, law, end_at, rate, samples);
     }
     let extras = Extras {

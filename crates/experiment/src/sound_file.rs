@@ -8,7 +8,7 @@ use flacenc::error::Verify;
 use flacenc::source::{Fill, FrameBuf};
 
 /// The coding of a written sound.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum SoundFormat {
     /// WAV, 16-bit integer.
     Wav,
@@ -18,6 +18,36 @@ pub enum SoundFormat {
     WavFloat,
     /// FLAC, 16-bit.
     Flac,
+}
+
+impl SoundFormat {
+    /// Every coding, in the order `--format` lists them.
+    pub const ALL: [SoundFormat; 4] = [
+        SoundFormat::Wav,
+        SoundFormat::Wav24,
+        SoundFormat::WavFloat,
+        SoundFormat::Flac,
+    ];
+
+    /// The coding's name, as `--format` takes it.
+    pub fn name(self) -> &'static str {
+        match self {
+            SoundFormat::Wav => "wav",
+            SoundFormat::Wav24 => "wav24",
+            SoundFormat::WavFloat => "wav-float",
+            SoundFormat::Flac => "flac",
+        }
+    }
+
+    /// The coding, in one line.
+    pub fn summary(self) -> &'static str {
+        match self {
+            SoundFormat::Wav => "WAV, 16-bit integer",
+            SoundFormat::Wav24 => "WAV, 24-bit integer",
+            SoundFormat::WavFloat => "WAV, 32-bit float",
+            SoundFormat::Flac => "FLAC, 16-bit",
+        }
+    }
 }
 
 /// Encodes a mono signal of full scale 1 (clipped there) at `rate` S/s.

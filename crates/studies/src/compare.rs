@@ -75,13 +75,10 @@ pub struct Comparison {
 
 /// The lab-frame model that referees a scene's model.
 pub fn lab_frame_for(model: ModelKind) -> Result<ModelKind, CompareError> {
-    match model {
-        ModelKind::Rolling | ModelKind::LabFrame => Ok(ModelKind::LabFrame),
-        ModelKind::Frictionless | ModelKind::LabFrameFrictionless => {
-            Ok(ModelKind::LabFrameFrictionless)
-        }
-        ModelKind::Sliding => Err(CompareError::Sliding),
-        ModelKind::Dissipative | ModelKind::Adiabatic => Err(CompareError::Dissipative(model)),
+    match model.lab_frame_referee() {
+        Some(referee) => Ok(referee),
+        None if model.has_coulomb_friction() => Err(CompareError::Sliding),
+        None => Err(CompareError::Dissipative(model)),
     }
 }
 

@@ -8,14 +8,14 @@ pub use table::{ContactLost, Run};
 use crate::budget;
 use crate::dispatch::{dispatch, problem, Visit};
 use crate::model::{Model, Quantity};
-use crate::scene::{ModelKind, Scene};
+use crate::scene::Scene;
 use crate::solve::{solve, Ending, SettingsError, Solution, State};
 
 /// Runs a scene. `progress` receives the simulated time now and then. A run records at most
 /// [`budget::MAX_ROWS`] rows: a scene that samples more finely is refused before integrating (by
 /// [`solve`]), and an unsampled run that takes more steps is refused after it.
 pub fn run(scene: &Scene, progress: Option<&dyn Fn(f64)>) -> Result<Run, SettingsError> {
-    if scene.model == ModelKind::Sliding {
+    if scene.model.has_coulomb_friction() {
         return sliding::run(scene);
     }
     dispatch(scene, Integrate { progress })

@@ -48,7 +48,7 @@ impl Validator<'_> {
     /// The friction law and the start slip of a scene: required and checked for
     /// `model: sliding`, refused for every other model.
     pub(super) fn friction(&self, s: &SceneSpec) -> Result<(Option<Friction>, Slip), SceneError> {
-        let sliding = s.model == ModelKind::Sliding;
+        let sliding = s.model.has_coulomb_friction();
         let slip = s.start.slip.unwrap_or_default();
         if !sliding {
             if s.friction.is_some() {
@@ -66,11 +66,10 @@ impl Validator<'_> {
                         "start: the {} model cannot start slipping (its contact point {}): remove \
                          `slip`, or use model: sliding",
                         s.model,
-                        match s.model {
-                            ModelKind::Frictionless | ModelKind::LabFrameFrictionless => {
-                                "slides freely, with no friction to compare a slip against"
-                            }
-                            _ => "is at rest by construction",
+                        if s.model.is_frictionless() {
+                            "slides freely, with no friction to compare a slip against"
+                        } else {
+                            "is at rest by construction"
                         }
                     ),
                 ));
@@ -174,10 +173,7 @@ impl Validator<'_> {
                 | Quantity::Dissipated
                 | Quantity::ContactPath
         );
-        let lab = matches!(
-            model,
-            ModelKind::Sliding | ModelKind::LabFrame | ModelKind::LabFrameFrictionless
-        );
+        let lab = model.is_lab_frame();
         if contact_only && !lab {
             return Err(self.err(
                 &["record"],

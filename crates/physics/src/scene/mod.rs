@@ -19,11 +19,13 @@ mod friction;
 pub mod locate;
 mod mechanisms;
 pub mod message;
+mod model_kind;
 pub mod range;
 mod spec;
 mod toy;
 mod validate;
 
+pub use model_kind::ModelKind;
 use spec::SceneSpec;
 use validate::Validator;
 
@@ -65,40 +67,6 @@ impl fmt::Display for SceneError {
 }
 
 impl std::error::Error for SceneError {}
-
-/// The model a scene integrates.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum ModelKind {
-    /// Rolling without slipping, eqs 23-25.
-    Rolling,
-    /// No friction at the contact, eqs 60-62.
-    Frictionless,
-    /// Rolling with the power-law dissipation of eq 75 as a torque.
-    Dissipative,
-    /// The paper's one-state spin-down law, eq 76.
-    Adiabatic,
-    /// The independent Newton-Euler model in lab coordinates, rolling without slipping.
-    LabFrame,
-    /// The independent Newton-Euler model in lab coordinates, without friction.
-    LabFrameFrictionless,
-    /// The lab-frame model with Coulomb friction, stick/slip and flight.
-    Sliding,
-}
-
-impl fmt::Display for ModelKind {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(match self {
-            ModelKind::Rolling => "rolling",
-            ModelKind::Frictionless => "frictionless",
-            ModelKind::Dissipative => "dissipative",
-            ModelKind::Adiabatic => "adiabatic",
-            ModelKind::LabFrame => "lab-frame",
-            ModelKind::LabFrameFrictionless => "lab-frame-frictionless",
-            ModelKind::Sliding => "sliding",
-        })
-    }
-}
 
 /// When a run stops.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]

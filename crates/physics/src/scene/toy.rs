@@ -49,7 +49,7 @@ impl Validator<'_> {
                 )),
             };
         };
-        if s.model != ModelKind::Sliding {
+        if !s.model.has_coulomb_friction() {
             return Err(self.err(
                 &["disk", "thickness"],
                 format!(
@@ -102,7 +102,7 @@ impl Validator<'_> {
         let kinetic = self.kinetic(s)?;
         let resistance = match s.resistance {
             None => None,
-            Some(_) if s.model != ModelKind::Sliding => {
+            Some(_) if !s.model.has_coulomb_friction() => {
                 return Err(self.absent_from_model(
                     s,
                     "resistance",

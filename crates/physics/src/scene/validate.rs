@@ -95,7 +95,7 @@ impl Validator<'_> {
             }
         }
         let sv = &s.solver;
-        if sv.method != Method::Rk4 && s.model != ModelKind::Adiabatic {
+        if sv.method != Method::Rk4 && !s.model.is_spin_down_law() {
             let rows = s.sample.is_none().then_some(budget::MAX_ROWS);
             self.turns(start, time, u64::from(sv.max_steps), rows)?;
         }
@@ -222,13 +222,7 @@ impl Validator<'_> {
         let Some(p) = s.solver.project else {
             return Ok(None);
         };
-        let conservative = matches!(
-            s.model,
-            ModelKind::Rolling
-                | ModelKind::Frictionless
-                | ModelKind::LabFrame
-                | ModelKind::LabFrameFrictionless
-        );
+        let conservative = s.model.conserves_energy();
         if !conservative {
             return Err(self.err(
                 &["solver", "project"],
@@ -252,12 +246,9 @@ impl Validator<'_> {
 
     pub(super) fn dissipation(&self, s: &SceneSpec) -> Result<Option<PowerLaw>, SceneError> {
         // The sliding model takes eq 75's law as a drag torque (a spin-down with friction).
-        let allowed = matches!(
-            s.model,
-            ModelKind::Dissipative | ModelKind::Adiabatic | ModelKind::Sliding
-        );
+        let allowed = s.model.takes_dissipation_law();
         // Mechanisms alone make a dissipative model too; the adiabatic model is eq 76, the law.
-        let required = s.model == ModelKind::Adiabatic
+        let required = s.model.is_spin_down_law()
             || (s.model == ModelKind::Dissipative && s.mechanisms.is_empty());
         let Some(d) = s.dissipation else {
             if required {
@@ -402,7 +393,7 @@ impl Validator<'_> {
                 ),
             ));
         }
-        if model == ModelKind::Adiabatic && m.alpha >= PI / 2.0 {
+        if model.is_spin_down_law() && m.alpha >= PI / 2.0 {
             return Err(self.err(
                 &["start"],
                 "start: eq 76 is a small-angle law; start it with alpha well below pi/2",
@@ -446,7 +437,7 @@ impl Validator<'_> {
                 ));
             }
         }
-        if s.lift_off && model == ModelKind::Adiabatic {
+        if s.lift_off && model.is_spin_down_law() {
             return Err(self.err(
                 &["stop", "lift_off"],
                 "stop: the adiabatic law has no contact force, so lift_off cannot be detected: \
@@ -467,7 +458,7 @@ impl Validator<'_> {
     ) -> Result<Vec<Quantity>, SceneError> {
         let mut out: Vec<Quantity> = Vec::new();
         // The default records what every model has: the adiabatic law has no spin.
-        let list = if r.is_empty() && model == ModelKind::Adiabatic {
+        let list = if r.is_empty() && model.is_spin_down_law() {
             &[Quantity::Alpha, Quantity::Precession][..]
         } else if r.is_empty() {
             &[Quantity::Alpha, Quantity::Precession, Quantity::Spin][..]
@@ -482,7 +473,7 @@ impl Validator<'_> {
                 q,
                 Quantity::Alpha | Quantity::AlphaDot | Quantity::Precession | Quantity::Energy
             );
-            if model == ModelKind::Adiabatic && !adiabatic_ok {
+            if model.is_spin_down_law() && !adiabatic_ok {
                 return Err(self.err(
                     &["record"],
                     format!(

@@ -7,7 +7,7 @@
 use super::mapping::PeerState;
 use super::PeerError;
 use physics::dispatch::sliding_model;
-use physics::scene::{ModelKind, Scene};
+use physics::scene::Scene;
 
 /// The peer's gravity, fixed in its source (m/s²).
 pub const PEER_G: f64 = 9.8067;
@@ -19,7 +19,7 @@ pub const PEER_G: f64 = 9.8067;
 /// being per unit mass.
 pub fn response(scene: &Scene) -> Result<String, PeerError> {
     let refuse = |why: String| Err(PeerError::Scene(scene.source.clone(), why));
-    if scene.model != ModelKind::Sliding {
+    if !scene.model.has_coulomb_friction() {
         return refuse(format!(
             "the peer integrates the disk with friction; this scene is model: {}: use model: sliding",
             scene.model

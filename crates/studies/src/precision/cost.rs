@@ -20,7 +20,7 @@ use super::PrecisionError;
 use numerics::fit::log_log_slope;
 use physics::dispatch::{dispatch, Visit};
 use physics::model::Model;
-use physics::scene::{ModelKind, Scene};
+use physics::scene::Scene;
 use physics::solve::{onto_level, solve, Ending, Problem, Projection, Settings, State};
 use serde::Serialize;
 use std::f64::consts::PI;
@@ -141,7 +141,7 @@ pub fn energy_drift(
     periods: f64,
     checkpoints: u32,
 ) -> Result<Drift, PrecisionError> {
-    if !matches!(scene.model, ModelKind::Rolling | ModelKind::Frictionless) {
+    if !scene.model.conserves_energy() || scene.model.is_lab_frame() {
         return Err(PrecisionError::NotConservative(scene.model));
     }
     let om = scene.start.precession.abs();

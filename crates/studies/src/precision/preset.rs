@@ -17,7 +17,7 @@ use serde::{Deserialize, Serialize};
 use std::fmt;
 
 /// An accuracy preset.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Accuracy {
     /// DOPRI5 at rtol 1e-6: figures and quick looks.
@@ -58,13 +58,31 @@ impl Accuracy {
     }
 }
 
-impl fmt::Display for Accuracy {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(match self {
+impl Accuracy {
+    /// The preset's name, as `--accuracy` takes it.
+    pub fn name(self) -> &'static str {
+        match self {
             Accuracy::Fast => "fast",
             Accuracy::Standard => "standard",
             Accuracy::High => "high",
-        })
+        }
+    }
+
+    /// What the preset is for, in one line.
+    pub fn summary(self) -> &'static str {
+        match self {
+            Accuracy::Fast => "DOPRI5 at rtol 1e-6: figures and quick looks",
+            Accuracy::Standard => {
+                "DOP853 at rtol 1e-10, looser than the checks' default (rtol 1e-12)"
+            }
+            Accuracy::High => "DOP853 at rtol 1e-13: near the limit of double precision",
+        }
+    }
+}
+
+impl fmt::Display for Accuracy {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
     }
 }
 
