@@ -73,6 +73,32 @@ fn html_holds_every_equation_claim_and_figure_as_mathml_and_svg() {
     assert!(html.matches("<svg").count() >= figures.len());
 }
 
+/// Every registered part is in the full report: its section in the HTML under its own anchor,
+/// and its program output in the LaTeX's appendix, one subsection each, in the table's order.
+#[test]
+fn every_registered_part_is_in_both_formats() {
+    let (html, latex, _, _) = built();
+    let mut at = 0;
+    for p in report::parts::PARTS {
+        let anchor = format!("id=\"{}\"", p.name());
+        let found = html[at..].find(&anchor);
+        assert!(
+            found.is_some(),
+            "part {} missing or out of order in the HTML",
+            p.name()
+        );
+        at += found.unwrap_or(0);
+    }
+    let appendix = latex
+        .split_once("\\section{Program output}")
+        .map_or("", |(_, a)| a);
+    assert_eq!(
+        appendix.matches("\\subsection{").count(),
+        report::parts::PARTS.len(),
+        "one appendix subsection per part"
+    );
+}
+
 #[test]
 fn html_refers_to_nothing_outside_itself() {
     let (html, _, _, _) = built();

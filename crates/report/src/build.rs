@@ -176,7 +176,7 @@ pub fn from_results(
     let mut figures = figures::all(results)?;
     figures.push(premises_figure(bench, checked));
     let figure_views = figure_views(&figures)?;
-    let studies = crate::sections::sections(bench, results, &figure_views)?;
+    let parts = crate::parts::parts(bench, results, &figure_views)?;
 
     let scenes = BUILTIN
         .iter()
@@ -200,7 +200,9 @@ pub fn from_results(
         &settings,
         &figure_views,
         super::document::Records {
-            precision: studies.precision_records,
+            precision: crate::parts::precision::section::records(
+                results.required(&study::Precision, "the report")?,
+            ),
             corrections: correction_records,
             friction: results.get(&study::Friction).map(|f| f.studies.clone()),
             toy: results.get(&study::Toy).cloned(),
@@ -227,16 +229,7 @@ pub fn from_results(
         sections,
         claims,
         figures: figure_views,
-        experiment: studies.experiment,
-        paper_numbers: {
-            let f = bench.paper.fit;
-            experiment::numbers::numbers(f.beta, f.c_inv_root, physics::Disk::uniform(1.0).k)
-                .to_string()
-        },
-        friction: studies.friction,
-        toy: studies.toy,
-        coverage: studies.coverage,
-        precision: studies.precision,
+        parts,
         scenes,
         document,
     };

@@ -3,10 +3,8 @@
 //! by templates (`render`) to HTML, LaTeX or JSON. Templates and figures only read it.
 
 pub mod build;
-pub mod coverage_section;
 pub mod document;
 pub mod error;
-pub mod experiment_section;
 pub mod figures;
 mod finding_view;
 pub mod fonts;
@@ -14,19 +12,13 @@ pub mod json;
 pub mod mathml;
 pub mod mutation;
 pub mod number;
+pub mod parts;
 pub mod pipeline;
-pub mod precision_section;
 pub mod render;
 pub mod results;
-pub mod sections;
-pub mod sliding;
-pub mod sliding_tables;
-pub mod sound_section;
 pub mod study;
 pub mod study_table;
 pub mod tex;
-pub mod toy_section;
-pub mod toy_steady_table;
 
 use checks::check::Tally;
 use serde::Serialize;
@@ -48,18 +40,8 @@ pub struct Report {
     pub claims: Vec<ClaimView>,
     /// The figures.
     pub figures: Vec<FigureView>,
-    /// The synthetic experiment of section 11: the analysis of a simulated light signal.
-    pub experiment: study_table::StudySection,
-    /// The paper's own numbers of section 11, recomputed from its fitted constants.
-    pub paper_numbers: String,
-    /// The friction studies (sliding model), when computed.
-    pub friction: Option<study_table::StudySection>,
-    /// The real toy against the thin disk and the peer program, when computed.
-    pub toy: Option<study_table::StudySection>,
-    /// The Monte Carlo coverage of the experiment's stated uncertainties (stored studies).
-    pub coverage: study_table::StudySection,
-    /// The speed/accuracy study on the benchmark scene.
-    pub precision: study_table::StudySection,
+    /// The parts whose studies were computed, in the report's order ([`parts::PARTS`]).
+    pub parts: Vec<parts::PartView>,
     /// The built-in scenes the figures and checks use.
     pub scenes: Vec<SceneView>,
     /// The same results for tools (`report.json`), with numbers as numbers.

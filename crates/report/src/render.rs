@@ -4,6 +4,7 @@
 use super::Report;
 use crate::error::ReportError;
 use crate::figures::Figure;
+use crate::parts::PartView;
 use files::atomic::write_atomically;
 use std::path::{Path, PathBuf};
 use tera::{Context, Tera};
@@ -56,10 +57,56 @@ fn templates() -> Result<Tera, ReportError> {
         ),
     ])
     .map_err(|e| ReportError::Template(format!("a report template is broken: {e:?}")))?;
+    for p in crate::parts::PARTS {
+        let own = p.templates();
+        t.add_raw_templates([
+            (format!("parts/{}.html", p.name()), own.html),
+            (format!("parts/{}.tex", p.name()), own.tex),
+        ])
+        .map_err(|e| {
+            ReportError::Template(format!(
+                "the templates of the report part {} are broken: {e:?}",
+                p.name()
+            ))
+        })?;
+    }
     t.register_filter("tex", super::tex::filter);
     t.register_filter("num", super::number::filter);
     t.autoescape_on(vec![".html"]);
     Ok(t)
+}
+
+/// The message of a failed rendering of `template`, with its causes.
+fn failed(template: &str, e: &tera::Error) -> ReportError {
+    let mut msg = format!("cannot render {template}: {e}");
+    let mut source = std::error::Error::source(e);
+    while let Some(s) = source {
+        msg.push_str(&format!(": {s}"));
+        source = s.source();
+    }
+    ReportError::Template(msg)
+}
+
+/// `part` rendered by its own template in `format` (`html` or `tex`).
+fn render_part(t: &Tera, part: &PartView, format: &str) -> Result<String, ReportError> {
+    let template = format!("parts/{}.{format}", part.name);
+    let mut ctx = Context::new();
+    ctx.insert("part", part);
+    t.render(&template, &ctx).map_err(|e| failed(&template, &e))
+}
+
+/// Each of the report's parts rendered by its own template in `format` (`html` or `tex`).
+fn parts(t: &Tera, report: &Report, format: &str) -> Result<Vec<String>, ReportError> {
+    report
+        .parts
+        .iter()
+        .map(|p| render_part(t, p, format))
+        .collect()
+}
+
+/// One part rendered alone in `format` (`html` or `tex`), as the report includes it.
+pub fn part(part: &PartView, format: &str) -> Result<String, ReportError> {
+    render_part(&templates()?, part, format)
 }
 
 fn render(report: &Report, template: &str) -> Result<String, ReportError> {
@@ -76,16 +123,11 @@ fn render(report: &Report, template: &str) -> Result<String, ReportError> {
     ctx.insert("paper_svgs", &paper_svgs);
     if template == "report.html" {
         ctx.insert("fonts", super::fonts::css());
+        ctx.insert("parts_html", &parts(&t, report, "html")?);
+    } else {
+        ctx.insert("parts_tex", &parts(&t, report, "tex")?);
     }
-    t.render(template, &ctx).map_err(|e| {
-        let mut msg = format!("cannot render {template}: {e}");
-        let mut source = std::error::Error::source(&e);
-        while let Some(s) = source {
-            msg.push_str(&format!(": {s}"));
-            source = s.source();
-        }
-        ReportError::Template(msg)
-    })
+    t.render(template, &ctx).map_err(|e| failed(template, &e))
 }
 
 /// The HTML report: one file, math as MathML, figures as inline SVG, nothing fetched.

@@ -104,7 +104,7 @@ pub fn tables(t: &Toy) -> Vec<StudyTable> {
         steady(&t.thickness),
         spin_down(&t.thickness),
         fall(&t.thickness),
-        crate::toy_steady_table::table(&t.steady),
+        super::steady_table::table(&t.steady),
     ]
 }
 
@@ -456,7 +456,7 @@ fn summary(t: &Toy, tables: &[StudyTable], figures: &[usize]) -> String {
             .collect::<Vec<_>>()
             .join("; "),
         ni = places(thin.least_normal.0, 2),
-        eq30 = crate::toy_steady_table::sentence(&t.steady, &cite(tables, 5)),
+        eq30 = super::steady_table::sentence(&t.steady, &cite(tables, 5)),
     )
 }
 

@@ -1,5 +1,5 @@
 //! The "Friction and contact" section as the paper would print it: a paragraph of what was run
-//! and found, and the studies' numbers in tables (the full program text is [`crate::sliding`]).
+//! and found, and the studies' numbers in tables (the full program text is [`super::text`]).
 
 use crate::number::{measured, places as fixed, prose, scientific};
 use crate::study_table::{StudySection, StudyTable};
@@ -216,7 +216,7 @@ pub fn section(
         title: "Friction and contact".into(),
         summary,
         tables,
-        output: prose(&crate::sliding::text(s, paper)),
+        output: prose(&super::text::text(s, paper)),
         output_title: "The studies' full output: every run, the fall study run by run, the notes"
             .into(),
     }
@@ -286,7 +286,7 @@ pub fn summary(s: &Studies, paper: &paper::Paper, tables: &[StudyTable]) -> Stri
 
 /// The fall study in a sentence: how fast the disk falls, and how often to the claimed tilt.
 fn fall(f: &studies::sliding::fall::Fall, paper: &paper::Paper) -> String {
-    let Some((claimed, within)) = crate::sliding::fall_claim(paper) else {
+    let Some((claimed, within)) = super::text::fall_claim(paper) else {
         return String::new();
     };
     let (lo, hi) = (claimed * (1.0 - within), claimed * (1.0 + within));

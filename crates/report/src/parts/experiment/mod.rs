@@ -1,0 +1,70 @@
+//! The part "The experiment, simulated": the analysis of section 11 run on a simulated light
+//! signal ([`section`]), the phone's sound of the same spin-down ([`sound`]), and the paper's
+//! own numbers recomputed from its fitted constants.
+
+pub mod section;
+pub mod sound;
+
+use super::{Draft, Part, Templates, Written};
+use crate::error::ReportError;
+use crate::results::Results;
+use crate::study::{self, Run};
+use checks::equations::Bench;
+
+/// The experiment, simulated.
+pub struct Experiment;
+
+const TEMPLATES: Templates = Templates {
+    html: include_str!("../../../../../templates/parts/experiment/section.html.tera"),
+    tex: include_str!("../../../../../templates/parts/experiment/section.tex.tera"),
+    text: &[],
+};
+
+impl Part for Experiment {
+    fn name(&self) -> &'static str {
+        "experiment"
+    }
+
+    fn contents(&self) -> Option<&'static str> {
+        Some("The experiment, simulated")
+    }
+
+    fn studies(&self) -> &'static [&'static dyn Run] {
+        &[&study::Experiment, &study::Sound]
+    }
+
+    fn templates(&self) -> &'static Templates {
+        &TEMPLATES
+    }
+
+    fn draft<'r>(
+        &self,
+        bench: &'r Bench,
+        results: &'r Results,
+    ) -> Result<Option<Draft<'r>>, ReportError> {
+        let synthetic = results.required(&study::Experiment, "the report")?;
+        let sound = results.get(&study::Sound);
+        let fit = bench.paper.fit;
+        let paper_numbers =
+            experiment::numbers::numbers(fit.beta, fit.c_inv_root, physics::Disk::uniform(1.0).k)
+                .to_string();
+        Ok(Some(Draft {
+            tables: vec![section::table(synthetic)],
+            finish: Box::new(move |tables, figures| {
+                let mut s = section::section(synthetic, tables);
+                if let Some(sound) = sound {
+                    s.summary.push_str("\n\n");
+                    s.summary.push_str(&sound::paragraph(
+                        sound,
+                        figures.number("sound-spectrogram"),
+                        figures.number("sound-residuals"),
+                    ));
+                    s.output.push_str(&format!("\n\n{}", sound.analysis));
+                }
+                let mut written = Written::from(s);
+                written.values.insert("paper_numbers", paper_numbers);
+                Ok(written)
+            }),
+        }))
+    }
+}

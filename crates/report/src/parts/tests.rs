@@ -1,0 +1,80 @@
+//! The table of parts is complete: every part's folder, here and in `templates/parts/`, is a
+//! registered part, and every registered part renders its section in HTML and in LaTeX.
+
+use super::*;
+use std::path::Path;
+
+/// The folders under `dir`, sorted.
+fn folders(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+        .filter_map(Result::ok)
+        .filter(|e| e.path().is_dir())
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    names
+}
+
+fn registered() -> Vec<String> {
+    let mut names: Vec<String> = PARTS.iter().map(|p| p.name().to_string()).collect();
+    names.sort();
+    names
+}
+
+#[test]
+fn every_part_folder_is_a_registered_part() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    assert_eq!(folders(&root.join("src/parts")), registered());
+    assert_eq!(folders(&root.join("../../templates/parts")), registered());
+}
+
+#[test]
+fn every_part_has_its_own_name() {
+    let mut names = registered();
+    names.dedup();
+    assert_eq!(names.len(), PARTS.len(), "{names:?}");
+    assert!(PARTS.iter().all(|p| part(p.name()).is_some()));
+}
+
+/// A part's view with a marked section and one table.
+fn marked(name: &str) -> PartView {
+    let mut table = StudyTable::new("marker caption", &["marker column"]);
+    table.number = 7;
+    table.row(vec!["marker cell".into()]);
+    PartView {
+        name: name.into(),
+        contents: None,
+        section: StudySection {
+            title: "marker title".into(),
+            summary: "marker summary".into(),
+            tables: vec![table],
+            output: "marker output".into(),
+            output_title: "marker output title".into(),
+        },
+        values: BTreeMap::from([("paper_numbers", "marker numbers".to_string())]),
+    }
+}
+
+#[test]
+fn every_registered_part_renders_in_both_formats() {
+    for p in PARTS {
+        for format in ["html", "tex"] {
+            let text = crate::render::part(&marked(p.name()), format)
+                .unwrap_or_else(|e| panic!("{} in {format}: {e}", p.name()));
+            for marker in ["marker summary", "marker caption", "marker cell"] {
+                assert!(
+                    text.contains(marker),
+                    "{} in {format} lacks {marker:?}:\n{text}",
+                    p.name()
+                );
+            }
+        }
+        let html = crate::render::part(&marked(p.name()), "html").unwrap();
+        assert!(
+            html.contains(&format!("id=\"{}\"", p.name())),
+            "{} has no anchor of its name",
+            p.name()
+        );
+    }
+}
