@@ -2,7 +2,7 @@
 //! every mutant of an equation's printed text must be killed by the check of that equation,
 //! except the survivors listed here with the reason each cannot be told apart.
 
-use checks::equations::{Bench, FROM_LATEX};
+use checks::equations::{from_latex, Bench};
 use checks::mutation::{mutation_scores, StoredScores};
 
 /// Survivors that are not weaknesses: (equation, change, why).
@@ -10,7 +10,7 @@ const EXPLAINED: &[(u32, &str, &str)] = &[];
 
 #[test]
 fn every_mutant_of_the_printed_equations_is_killed() {
-    let scores = mutation_scores(&Bench::default(), FROM_LATEX, &|_, _| {});
+    let scores = mutation_scores(&Bench::default(), &from_latex(), &|_, _| {});
     let mut unexplained = Vec::new();
     let (mut made, mut killed) = (0, 0);
     for s in &scores {

@@ -3,7 +3,7 @@
 //! equation ([`attach_restated`]).
 
 use crate::checked::{Checked, Subject};
-use crate::equations::Bench;
+use crate::harness::Bench;
 
 /// What `subject` rests on besides its numbered premises: the `rests_on` of its entry.
 fn rests_on<'a>(bench: &'a Bench, subject: &Subject) -> &'a [String] {

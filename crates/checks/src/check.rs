@@ -9,8 +9,9 @@
 
 use crate::cause::{classify, Cause, Node};
 pub use crate::checked::{Checked, Subject};
-use crate::equations::{self, Bench};
+use crate::equations;
 use crate::finding::Finding;
+use crate::harness::Bench;
 use rayon::prelude::*;
 use serde::Serialize;
 use std::sync::atomic::{AtomicUsize, Ordering};

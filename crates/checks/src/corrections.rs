@@ -14,8 +14,8 @@
 //! ($\beta = 2$, $C^{-1/4} = 0.0055$ s).
 
 use crate::check::{run_findings, Checked, Selection, Subject};
-use crate::equations::{solve_printed, Bench};
 use crate::finding::{Finding, Headline, Verdict};
+use crate::harness::{solve_printed, Bench};
 use paper::{Bindings, Correction, Paper, PaperError};
 use serde::Serialize;
 
@@ -229,7 +229,7 @@ pub fn downstream(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::equations::built_in_paper;
+    use crate::harness::built_in_paper;
 
     #[test]
     fn the_built_in_corrections_read_and_substitute() {

@@ -1,7 +1,8 @@
 //! The checks: each of the paper's equations and numeric claims compared with a reference that
-//! does not use it ([`check`], [`equations`]), the verdicts ([`finding`]), root causes against
-//! inherited failures ([`cause`]), verdicts that agree with their premises (`agreement`), the mutation suite ([`mutation`]), the corrected forms
-//! ([`corrections`]) and the selection of what to check ([`select`]).
+//! does not use it (the registry [`equations`], run by [`check`]; the [`harness`] they share),
+//! the verdicts ([`finding`]), root causes against inherited failures ([`cause`]), verdicts that
+//! agree with their premises (`agreement`), the mutation suite ([`mutation`]), the corrected
+//! forms ([`corrections`]) and the selection of what to check ([`select`]).
 
 mod agreement;
 pub mod cause;
@@ -10,5 +11,6 @@ pub mod checked;
 pub mod corrections;
 pub mod equations;
 pub mod finding;
+pub mod harness;
 pub mod mutation;
 pub mod select;

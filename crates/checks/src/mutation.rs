@@ -7,9 +7,10 @@
 //! eq 77 is wrong physically, but a mutant of it no longer follows from eq 76. Otherwise it has
 //! no score: a check that already fails would "kill" every mutant without telling anything.
 
-use crate::equations::{derivations, equations, Bench};
+use crate::equations::{derivations, equations};
 use crate::finding::Finding;
 use crate::finding::Verdict;
+use crate::harness::Bench;
 use paper::mutate::mutants;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};

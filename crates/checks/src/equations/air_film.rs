@@ -25,8 +25,9 @@
 //! $\alpha^3 = K\tau$).
 
 use super::spin_down_reference::steady_precession;
-use super::{solve_printed, Bench, Equation};
+use crate::equations::{row, Row};
 use crate::finding::{Finding, Headline, Method, Tolerance, Verdict, Worst};
+use crate::harness::{solve_printed, Bench};
 use num_dual::Dual64;
 use paper::Bindings;
 use physics::disk::toy_sized;
@@ -36,18 +37,7 @@ use physics::model::Motion;
 use physics::solve::{solve, Dynamics, Problem, State};
 
 /// The checks of this part of the paper.
-pub const EQUATIONS: &[Equation] = &[
-    Equation {
-        number: 82,
-        label: "e111",
-        check: eq82,
-    },
-    Equation {
-        number: 83,
-        label: "e112",
-        check: eq83,
-    },
-];
+pub const EQUATIONS: &[Row] = &[row(82, eq82), row(83, eq83)];
 
 /// Air's viscosity, the paper's $1.8\times10^{-4}$ g cm$^{-1}$ s$^{-1}$ (Pa s).
 const ETA: f64 = 1.8e-5;
@@ -317,7 +307,7 @@ pub fn eq83(b: &Bench) -> Finding {
             .scalar("m", d.m)
             .scalar("t_0", NOW + tau)
             .scalar("t", NOW);
-        let printed = b.claim(super::last_side(eq, &bind));
+        let printed = b.claim(crate::harness::last_side(eq, &bind));
         taus.push(tau);
         printed_omega.push(printed);
         steady_omega.push(omega);

@@ -11,8 +11,9 @@
 use super::spin_down_reference::{
     derivation_from_eq76, law_bindings, printed_c, toy_laws, SMALL_ALPHAS,
 };
-use super::{last_side, printed_relations, solve_printed, worst_order, Bench, Derivation};
+use crate::equations::Derivation;
 use crate::finding::{Finding, Method, Tolerance, Worst};
+use crate::harness::{last_side, printed_relations, solve_printed, worst_order, Bench};
 use num_dual::Dual64;
 use paper::{Bindings, Relation};
 use physics::disk::toy_sized;

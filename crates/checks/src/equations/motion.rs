@@ -9,9 +9,10 @@
 //! cross-checked against the printed relations by `rates_satisfy_the_printed_equations`.) Eq 26 is compared with
 //! the energy computed directly in the lab, at random states.
 
-use super::{printed_relations, term_scale, Bench, Equation};
-use crate::equations::disk_constants;
+use crate::equations::{row, Row};
 use crate::finding::{Finding, Method, Tolerance, Worst};
+use crate::harness::disk_constants;
+use crate::harness::{printed_relations, term_scale, Bench};
 use numerics::memo::{bits, Memo};
 use numerics::rng::Rng;
 use paper::Bindings;
@@ -23,28 +24,7 @@ use physics::solve::{solve, Dynamics, Problem, State};
 use std::sync::Arc;
 
 /// The checks of eqs 23-26.
-pub const EQUATIONS: &[Equation] = &[
-    Equation {
-        number: 23,
-        label: "e18",
-        check: eq23,
-    },
-    Equation {
-        number: 24,
-        label: "e19",
-        check: eq24,
-    },
-    Equation {
-        number: 25,
-        label: "e20",
-        check: eq25,
-    },
-    Equation {
-        number: 26,
-        label: "e20a",
-        check: eq26,
-    },
-];
+pub const EQUATIONS: &[Row] = &[row(23, eq23), row(24, eq24), row(25, eq25), row(26, eq26)];
 
 /// Starts with every rate of eqs 23-25 well away from zero: perturbed steady motions with
 /// b > 0, b = 0 and b < 0 (inside eq 30's bound), and the benchmark scene's start.

@@ -7,9 +7,10 @@
 //! so the friction needed is $\mu_* = |b|\Omega_0^2/g$.
 
 use super::steady_reference::{rho_edge, steady_ref};
-use super::{printed_threshold, Bench, Equation};
-use crate::equations::disk_constants;
+use crate::equations::{row, Row};
 use crate::finding::{Finding, Headline, Method, Tolerance, Worst};
+use crate::harness::disk_constants;
+use crate::harness::{printed_threshold, Bench};
 use nalgebra::Vector3;
 use paper::Bindings;
 use physics::disk::toy_sized;
@@ -17,23 +18,7 @@ use physics::disk::Disk;
 use physics::model::rolling::{contact_force, rates};
 
 /// The checks of this part of the paper.
-pub const EQUATIONS: &[Equation] = &[
-    Equation {
-        number: 41,
-        label: "e25a",
-        check: eq41,
-    },
-    Equation {
-        number: 42,
-        label: "e25c",
-        check: eq42,
-    },
-    Equation {
-        number: 43,
-        label: "e25d",
-        check: eq43,
-    },
-];
+pub const EQUATIONS: &[Row] = &[row(41, eq41), row(42, eq42), row(43, eq43)];
 
 /// The model's contact force $(F_z, F_r, F_2)$ at the steady motion with $b/a = $ `rho`.
 fn force(d: &Disk, alpha0: f64, rho: f64) -> [f64; 3] {
@@ -113,7 +98,7 @@ fn small_b_order(compared: &str, error: impl Fn(&Disk, f64, f64, f64, f64) -> f6
             }
         }
     }
-    super::worst_order(fits)
+    crate::harness::worst_order(fits)
 }
 
 /// Eq 42, $\mu \ge \dfrac{|b|}{a k\sin\alpha_0}$.

@@ -3,9 +3,9 @@
 //! printed law integrated as a one-state system ([`law_runs`]), and the $t_0$ a printed relation
 //! implies along a run ([`implied_t0`]). Checks call these; no check imports another check.
 
-use super::{solve_printed, Bench};
-use crate::equations::disk_constants;
 use crate::finding::{Finding, Headline, Method, Tolerance, Worst};
+use crate::harness::disk_constants;
+use crate::harness::{solve_printed, Bench};
 use num_dual::DualNum;
 use numerics::memo::{bits, Memo};
 use paper::{Bindings, Relation};

@@ -4,8 +4,8 @@
 //! $\alpha_0$ and a ratio $\rho = \omega_{10}/\Omega_0$, never from the paper's steady-motion
 //! formulas; its radii are measured on integrations. Not a check: no check file imports another.
 
-use super::Bench;
-use crate::equations::disk_constants;
+use crate::harness::disk_constants;
+use crate::harness::Bench;
 use num_dual::Dual64;
 use numerics::oscillation::bisect;
 use paper::Bindings;

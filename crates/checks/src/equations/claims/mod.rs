@@ -27,8 +27,9 @@
 //! range's nearer end. A number the paper computed (sqrt(3/5) as 0.77, the sec. 11 numbers
 //! from its fitted C) is read to the digits it printed.
 
-use super::{Bench, Claim};
+use crate::equations::Claim;
 use crate::finding::{Finding, Headline, Method, Tolerance, Worst};
+use crate::harness::Bench;
 use nalgebra::SMatrix;
 use num_dual::{second_derivative, Dual64, DualNum};
 use numerics::fit::log_log_slope;

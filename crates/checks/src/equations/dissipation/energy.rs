@@ -3,7 +3,7 @@
 use super::{
     energy, last_side, steady_precession, Bench, Dual64, Finding, Headline, Motion, SMALL_ALPHAS,
 };
-use crate::equations::disk_constants;
+use crate::harness::disk_constants;
 use physics::disk::toy_sized;
 
 /// Eq 72 at states of the $b = 0$ family (steady precession at each tilt, $\omega_1 = 0$) with

@@ -16,8 +16,9 @@ use super::spin_down_reference::{
     descent, energy, law_bindings, slope, steady_precession, time_remaining_on_model, PrintedLaw,
     BETAS, SMALL_ALPHAS,
 };
-use super::{last_side, printed_relations, solve_printed, Bench, Equation};
+use crate::equations::{row, Row};
 use crate::finding::{Finding, Headline, Method, Tolerance, Worst};
+use crate::harness::{last_side, printed_relations, solve_printed, Bench};
 use num_dual::{Dual2_64, Dual64, DualNum};
 use numerics::oscillation::bisect;
 use paper::Bindings;
@@ -28,67 +29,19 @@ use physics::model::{Extras, Model, Motion};
 use physics::solve::{solve, Dynamics, Problem, State};
 
 /// The checks of this part of the paper.
-pub const EQUATIONS: &[Equation] = &[
-    Equation {
-        number: 72,
-        label: "e101",
-        check: eq72,
-    },
-    Equation {
-        number: 73,
-        label: "e102",
-        check: eq73,
-    },
-    Equation {
-        number: 74,
-        label: "e103",
-        check: eq74,
-    },
-    Equation {
-        number: 75,
-        label: "e103a",
-        check: eq75,
-    },
-    Equation {
-        number: 76,
-        label: "e104",
-        check: eq76,
-    },
-    Equation {
-        number: 77,
-        label: "e105",
-        check: eq77,
-    },
-    Equation {
-        number: 78,
-        label: "e106",
-        check: eq78,
-    },
-    Equation {
-        number: 79,
-        label: "e107",
-        check: eq79,
-    },
-    Equation {
-        number: 80,
-        label: "e108",
-        check: eq80,
-    },
-    Equation {
-        number: 81,
-        label: "e109",
-        check: eq81,
-    },
-    Equation {
-        number: 84,
-        label: "e120",
-        check: eq84,
-    },
-    Equation {
-        number: 85,
-        label: "e121",
-        check: eq85,
-    },
+pub const EQUATIONS: &[Row] = &[
+    row(72, eq72),
+    row(73, eq73),
+    row(74, eq74),
+    row(75, eq75),
+    row(76, eq76),
+    row(77, eq77),
+    row(78, eq78),
+    row(79, eq79),
+    row(80, eq80),
+    row(81, eq81),
+    row(84, eq84),
+    row(85, eq85),
 ];
 
 mod data;

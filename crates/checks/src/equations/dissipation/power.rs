@@ -205,7 +205,7 @@ pub fn eq76(b: &Bench) -> Finding {
         &errors2,
         claimed_order,
     );
-    crate::equations::worst_order(vec![
+    crate::harness::worst_order(vec![
         ("first relation".into(), first),
         ("second relation".into(), second),
     ])
@@ -292,7 +292,7 @@ pub fn eq79(b: &Bench) -> Finding {
     );
     physical.at = format!("{}; {seen}", physical.at);
     physical.headline = headline;
-    crate::equations::worst_order(vec![
+    crate::harness::worst_order(vec![
         ("first relation".into(), first),
         ("C of the second relation".into(), physical),
     ])

@@ -16,9 +16,10 @@
 //! paper's eqs 60-62 enters it. The reference is generic over dual numbers, so its Jacobians (for
 //! the linearizations) are exact too.
 
-use super::{add_threshold, printed_relations, printed_threshold, term_scale, Bench, Equation};
-use crate::equations::disk_constants;
+use crate::equations::{row, Row};
 use crate::finding::{Finding, Method, Tolerance, Verdict, Worst};
+use crate::harness::disk_constants;
+use crate::harness::{add_threshold, printed_relations, printed_threshold, term_scale, Bench};
 use nalgebra::{Complex, Matrix3, SMatrix, Vector3};
 use num_dual::{Dual, Dual64, DualNum, HyperDual};
 use numerics::linearize::{eigenvalues, jacobian};
@@ -42,72 +43,20 @@ use oscillation::{eq66, eq67, eq68, eq69, eq70, eq71};
 use sleeping::{eq64, eq65};
 
 /// The checks of this part of the paper.
-pub const EQUATIONS: &[Equation] = &[
-    Equation {
-        number: 59,
-        label: "e401",
-        check: eq59,
-    },
-    Equation {
-        number: 60,
-        label: "e402",
-        check: eq60,
-    },
-    Equation {
-        number: 61,
-        label: "e403",
-        check: eq61,
-    },
-    Equation {
-        number: 62,
-        label: "e404",
-        check: eq62,
-    },
-    Equation {
-        number: 63,
-        label: "e405",
-        check: eq63,
-    },
-    Equation {
-        number: 64,
-        label: "e406",
-        check: eq64,
-    },
-    Equation {
-        number: 65,
-        label: "e407",
-        check: eq65,
-    },
-    Equation {
-        number: 66,
-        label: "e408",
-        check: eq66,
-    },
-    Equation {
-        number: 67,
-        label: "e409",
-        check: eq67,
-    },
-    Equation {
-        number: 68,
-        label: "e410",
-        check: eq68,
-    },
-    Equation {
-        number: 69,
-        label: "e411",
-        check: eq69,
-    },
-    Equation {
-        number: 70,
-        label: "e412",
-        check: eq70,
-    },
-    Equation {
-        number: 71,
-        label: "e413",
-        check: eq71,
-    },
+pub const EQUATIONS: &[Row] = &[
+    row(59, eq59),
+    row(60, eq60),
+    row(61, eq61),
+    row(62, eq62),
+    row(63, eq63),
+    row(64, eq64),
+    row(65, eq65),
+    row(66, eq66),
+    row(67, eq67),
+    row(68, eq68),
+    row(69, eq69),
+    row(70, eq70),
+    row(71, eq71),
 ];
 
 /// The inertia factors swept: thin shells to hoops, with the uniform disk (1/4) and hoop (1/2).

@@ -130,7 +130,7 @@ pub(super) fn eq60(b: &Bench) -> Finding {
                     if r.rel.is_inequality() {
                         continue;
                     }
-                    let rate = crate::equations::solve_printed(
+                    let rate = crate::harness::solve_printed(
                         eq,
                         r,
                         "omega_1_dot",

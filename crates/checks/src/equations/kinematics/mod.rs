@@ -30,8 +30,9 @@
 //! that makes angle $\alpha$ with $\hat{\mathbf z}$ (axis 1 points below the horizontal for
 //! $\alpha < \pi/2$). The checks adopt the equations' convention.
 
-use super::{printed_relation, printed_relations, Bench, Equation};
+use crate::equations::{row, Row};
 use crate::finding::{Finding, Method, Stated, Tolerance, Worst};
+use crate::harness::{printed_relation, printed_relations, Bench};
 use nalgebra::{Matrix3, Vector3};
 use num_dual::{Dual, Dual64, DualNum};
 use numerics::rng::Rng;
@@ -49,29 +50,29 @@ use rolling::{eq12, eq13, eq14, eq15, eq16, eq17, v_cm_rolling, A};
 
 /// The checks of this part of the paper.
 #[rustfmt::skip]
-pub const EQUATIONS: &[Equation] = &[
-    Equation { number: 1, label: "e1", check: identity_check::<1> },
-    Equation { number: 2, label: "e2", check: identity_check::<2> },
-    Equation { number: 3, label: "e4", check: identity_check::<3> },
-    Equation { number: 4, label: "e3", check: identity_check::<4> },
-    Equation { number: 5, label: "e5", check: identity_check::<5> },
-    Equation { number: 6, label: "e6", check: identity_check::<6> },
-    Equation { number: 7, label: "e7", check: identity_check::<7> },
-    Equation { number: 8, label: "e25b", check: eq8 },
-    Equation { number: 9, label: "e250", check: identity_check::<9> },
-    Equation { number: 10, label: "e8", check: identity_check::<10> },
-    Equation { number: 11, label: "e9", check: identity_check::<11> },
-    Equation { number: 12, label: "e10", check: eq12 },
-    Equation { number: 13, label: "e11", check: eq13 },
-    Equation { number: 14, label: "e10a", check: eq14 },
-    Equation { number: 15, label: "e10b", check: eq15 },
-    Equation { number: 16, label: "e11a", check: eq16 },
-    Equation { number: 17, label: "e11b", check: eq17 },
-    Equation { number: 18, label: "e12", check: eq18 },
-    Equation { number: 19, label: "e13", check: eq19 },
-    Equation { number: 20, label: "e14", check: eq20 },
-    Equation { number: 21, label: "e15", check: eq21 },
-    Equation { number: 22, label: "e17", check: eq22 },
+pub const EQUATIONS: &[Row] = &[
+    row(1, identity_check::<1>),
+    row(2, identity_check::<2>),
+    row(3, identity_check::<3>),
+    row(4, identity_check::<4>),
+    row(5, identity_check::<5>),
+    row(6, identity_check::<6>),
+    row(7, identity_check::<7>),
+    row(8, eq8),
+    row(9, identity_check::<9>),
+    row(10, identity_check::<10>),
+    row(11, identity_check::<11>),
+    row(12, eq12),
+    row(13, eq13),
+    row(14, eq14),
+    row(15, eq15),
+    row(16, eq16),
+    row(17, eq17),
+    row(18, eq18),
+    row(19, eq19),
+    row(20, eq20),
+    row(21, eq21),
+    row(22, eq22),
 ];
 
 // ------------------------------------------------------------------------------------------

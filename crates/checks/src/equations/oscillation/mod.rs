@@ -10,12 +10,12 @@
 //! $b/a$ enters as the ratio $\omega_{10}/\Omega_0$ (eq 28, checked by measuring the path).
 
 use super::steady_reference::{rho_edge, state, steady_ref, KS};
-use super::{
-    add_threshold, implied_square, printed_relations, printed_threshold, term_scale, Bench,
-    Equation,
-};
-use crate::equations::disk_constants;
+use crate::equations::{row, Row};
 use crate::finding::{Finding, Method, Tolerance, Worst};
+use crate::harness::disk_constants;
+use crate::harness::{
+    add_threshold, implied_square, printed_relations, printed_threshold, term_scale, Bench,
+};
 use nalgebra::{Complex, SMatrix};
 use numerics::oscillation::{angular_frequency, bisect};
 use paper::Bindings;
@@ -27,82 +27,22 @@ use physics::solve::{solve, Ending, Event, Problem, State};
 use std::f64::consts::{FRAC_PI_2, PI};
 
 /// The checks of this part of the paper.
-pub const EQUATIONS: &[Equation] = &[
-    Equation {
-        number: 44,
-        label: "e41",
-        check: eq44,
-    },
-    Equation {
-        number: 45,
-        label: "e42",
-        check: eq45,
-    },
-    Equation {
-        number: 46,
-        label: "e43",
-        check: eq46,
-    },
-    Equation {
-        number: 47,
-        label: "e44",
-        check: eq47,
-    },
-    Equation {
-        number: 48,
-        label: "e45",
-        check: eq48,
-    },
-    Equation {
-        number: 49,
-        label: "e46",
-        check: eq49,
-    },
-    Equation {
-        number: 50,
-        label: "e47",
-        check: eq50,
-    },
-    Equation {
-        number: 51,
-        label: "e48",
-        check: eq51,
-    },
-    Equation {
-        number: 52,
-        label: "e49",
-        check: eq52,
-    },
-    Equation {
-        number: 53,
-        label: "e49a",
-        check: eq53,
-    },
-    Equation {
-        number: 54,
-        label: "e50",
-        check: eq54,
-    },
-    Equation {
-        number: 55,
-        label: "e51",
-        check: eq55,
-    },
-    Equation {
-        number: 56,
-        label: "e52",
-        check: eq56,
-    },
-    Equation {
-        number: 57,
-        label: "e53",
-        check: eq57,
-    },
-    Equation {
-        number: 58,
-        label: "e54",
-        check: eq58,
-    },
+pub const EQUATIONS: &[Row] = &[
+    row(44, eq44),
+    row(45, eq45),
+    row(46, eq46),
+    row(47, eq47),
+    row(48, eq48),
+    row(49, eq49),
+    row(50, eq50),
+    row(51, eq51),
+    row(52, eq52),
+    row(53, eq53),
+    row(54, eq54),
+    row(55, eq55),
+    row(56, eq56),
+    row(57, eq57),
+    row(58, eq58),
 ];
 
 mod ansatz;

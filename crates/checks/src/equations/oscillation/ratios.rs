@@ -85,7 +85,7 @@ pub(super) fn eq55(b: &Bench) -> Finding {
             }
         }
     }
-    crate::equations::worst_order(fits)
+    crate::harness::worst_order(fits)
 }
 
 /// Eq 56, $\dfrac{\varpi}{\Omega_0} \approx \sqrt{\dfrac{3k}{k+1}}$ at small tilt ($b = 0$).
@@ -109,7 +109,7 @@ pub(super) fn eq56(b: &Bench) -> Finding {
             Finding::from_order("varpi/Omega_0 at small tilt, b = 0", &small, &errs, 2.0),
         ));
     }
-    crate::equations::worst_order(fits)
+    crate::harness::worst_order(fits)
 }
 
 /// Shared by eqs 57-58: $\varpi/\Omega_0$ at $b = \alpha_0 a$ against the printed eq `n`, over
@@ -138,7 +138,7 @@ pub(super) fn small_tilt_b(b: &Bench, n: u32, ks: &[f64]) -> Finding {
             ),
         ));
     }
-    crate::equations::worst_order(fits)
+    crate::harness::worst_order(fits)
 }
 
 /// Eq 57, $\varpi \approx \Omega_0\sqrt{\dfrac{3k + (6k+1)\alpha_0}{k+1}}$ with $b = \alpha_0 a$.

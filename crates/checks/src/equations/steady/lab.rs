@@ -5,7 +5,7 @@ use super::{
     printed_relations, solve, Bench, Bindings, Contact, Disk, Finding, LabFrame, Method, Problem,
     Snapshot, State, Tolerance, Vector3, Worst, PI,
 };
-use crate::equations::disk_constants;
+use crate::harness::disk_constants;
 use numerics::memo::{bits, Memo};
 use physics::disk::toy_sized;
 use std::sync::Arc;

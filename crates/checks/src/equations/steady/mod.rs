@@ -18,11 +18,11 @@
 //! The steady motions themselves come from `steady_reference.rs`, shared with `slippage.rs` and
 //! `oscillation.rs`.
 
-use super::{
-    add_threshold, printed_relations, printed_threshold, solve_printed, solve_printed_with, Bench,
-    Equation,
-};
+use crate::equations::{row, Row};
 use crate::finding::{Finding, Method, Tolerance, Worst};
+use crate::harness::{
+    add_threshold, printed_relations, printed_threshold, solve_printed, solve_printed_with, Bench,
+};
 use nalgebra::Vector3;
 use paper::Bindings;
 use physics::disk::Disk;
@@ -41,77 +41,21 @@ use circles::{eq27, eq28, eq29, eq30, eq31, eq32, eq38, eq39, eq40};
 use lab::{eq33, eq34, eq35, eq36, eq37};
 
 /// The checks of this part of the paper.
-pub const EQUATIONS: &[Equation] = &[
-    Equation {
-        number: 27,
-        label: "e21",
-        check: eq27,
-    },
-    Equation {
-        number: 28,
-        label: "e22",
-        check: eq28,
-    },
-    Equation {
-        number: 29,
-        label: "e23",
-        check: eq29,
-    },
-    Equation {
-        number: 30,
-        label: "e23a",
-        check: eq30,
-    },
-    Equation {
-        number: 31,
-        label: "e24",
-        check: eq31,
-    },
-    Equation {
-        number: 32,
-        label: "e25",
-        check: eq32,
-    },
-    Equation {
-        number: 33,
-        label: "e26",
-        check: eq33,
-    },
-    Equation {
-        number: 34,
-        label: "e27",
-        check: eq34,
-    },
-    Equation {
-        number: 35,
-        label: "e28",
-        check: eq35,
-    },
-    Equation {
-        number: 36,
-        label: "e29",
-        check: eq36,
-    },
-    Equation {
-        number: 37,
-        label: "e30",
-        check: eq37,
-    },
-    Equation {
-        number: 38,
-        label: "e31",
-        check: eq38,
-    },
-    Equation {
-        number: 39,
-        label: "e32",
-        check: eq39,
-    },
-    Equation {
-        number: 40,
-        label: "e33",
-        check: eq40,
-    },
+pub const EQUATIONS: &[Row] = &[
+    row(27, eq27),
+    row(28, eq28),
+    row(29, eq29),
+    row(30, eq30),
+    row(31, eq31),
+    row(32, eq32),
+    row(33, eq33),
+    row(34, eq34),
+    row(35, eq35),
+    row(36, eq36),
+    row(37, eq37),
+    row(38, eq38),
+    row(39, eq39),
+    row(40, eq40),
 ];
 
 fn at(k: f64, alpha0: f64, rho: f64) -> String {
