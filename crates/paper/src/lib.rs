@@ -10,6 +10,7 @@ pub mod catalogue;
 pub mod correction;
 pub mod eval;
 pub mod expr;
+pub mod forms;
 mod load;
 pub use load::Texts;
 pub mod mutate;

@@ -90,6 +90,25 @@ impl Paper {
                 path: eqfile.clone(),
                 message: super::yaml_message(&e),
             })?;
+        let mut numbered = found.iter().filter(|t| t.number.is_some());
+        if let Some(extra) =
+            numbered.find(|t| !entries.iter().any(|e| Some(&e.label) == t.label.as_ref()))
+        {
+            return Err(PaperError::Structure {
+                file: format!("{file}:{}", extra.line),
+                message: format!(
+                    "equation ({}){} has no entry in {eqfile}: add one with its label, or \
+                     write \\nonumber if it is not one of the paper's equations",
+                    extra.number.unwrap_or(0),
+                    extra
+                        .label
+                        .as_ref()
+                        .map_or(" (without a \\label)".to_string(), |l| format!(
+                            " labelled `{l}`"
+                        ))
+                ),
+            });
+        }
         let mut notes = Vec::new();
         for entry in &mut entries {
             let Some(eq) = found
@@ -151,26 +170,6 @@ impl Paper {
                 ));
             }
             entry.latex = eq.latex.clone();
-        }
-        let numbered = found.iter().filter(|t| t.number.is_some());
-        if let Some(extra) = numbered
-            .clone()
-            .find(|t| !entries.iter().any(|e| Some(&e.label) == t.label.as_ref()))
-        {
-            return Err(PaperError::Structure {
-                file: format!("{file}:{}", extra.line),
-                message: format!(
-                    "equation ({}){} has no entry in {eqfile}: add one with its label, or \
-                     write \\nonumber if it is not one of the paper's equations",
-                    extra.number.unwrap_or(0),
-                    extra
-                        .label
-                        .as_ref()
-                        .map_or(" (without a \\label)".to_string(), |l| format!(
-                            " labelled `{l}`"
-                        ))
-                ),
-            });
         }
         let merged = serde_yaml::to_string(&entries).map_err(|e| PaperError::Yaml {
             path: eqfile.clone(),

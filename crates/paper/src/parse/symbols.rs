@@ -29,6 +29,8 @@ impl Parser {
         if let Some(e) = self.derivative(col) {
             return Ok(e);
         }
+        self.pos = save.0;
+        self.seen.truncate(save.1);
         if let Some(order) = self.derivative_operator() {
             let at = self.column();
             let mut sym = self.symbol_base()?;
