@@ -16,7 +16,7 @@ const LAYERS: &[(&str, &[&str])] = &[
     ("numerics", &[]),
     ("files", &[]),
     ("physics", &["numerics", "files"]),
-    ("paper", &["numerics"]),
+    ("paper", &["numerics", "files"]),
     ("experiment", &["numerics", "files", "physics"]),
     ("studies", &["numerics", "files", "physics", "experiment"]),
     ("checks", &["numerics", "files", "physics", "paper", "experiment", "studies"]),

@@ -10,12 +10,15 @@ pub mod catalogue;
 pub mod correction;
 pub mod eval;
 pub mod expr;
+pub mod forms;
 mod load;
 pub use load::Texts;
 pub mod mutate;
 pub mod notation;
 pub mod parse;
 pub mod printed;
+pub mod tex;
+mod tex_paper;
 
 pub use catalogue::{ClaimEntry, EquationEntry, EstimateReading, Location, Rule, SymbolInfo};
 pub use correction::Correction;
@@ -271,6 +274,9 @@ pub struct Paper {
     pub fit: Fit,
     /// symbols.yaml resolved, for equations parsed later ([`Paper::with_latex`]).
     global: BTreeMap<Symbol, SymbolInfo>,
+    /// What a user should know about how the paper was read: where a LaTeX source's form of
+    /// an equation differs from equations.yaml's (the source's is read).
+    pub notes: Vec<String>,
 }
 
 impl Paper {

@@ -61,13 +61,14 @@ impl Paper {
                     return Err(too_large(&path.display().to_string(), meta.len()));
                 }
             }
-            match (std::fs::read_to_string(&path), fallback) {
-                (Ok(s), _) => Ok(s),
+            match (std::fs::symlink_metadata(&path), fallback) {
                 (Err(e), Some(f)) if e.kind() == std::io::ErrorKind::NotFound => Ok(f.to_string()),
-                (Err(source), _) => Err(PaperError::Read {
+                (Err(source), None) => Err(PaperError::Read {
                     path: path.display().to_string(),
                     source,
                 }),
+                // A FIFO or a device is refused before it is opened (opening one blocks).
+                _ => crate::tex_paper::read(&path, MAX_FILE_BYTES as u64),
             }
         };
         let eqs = read("equations.yaml", None)?;
@@ -219,6 +220,7 @@ impl Paper {
             corrections,
             fit,
             global,
+            notes: Vec::new(),
         })
     }
 }

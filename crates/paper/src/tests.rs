@@ -60,3 +60,19 @@ fn evaluation_follows_the_symbol_tables() {
     let err = eq.scalar(r.lhs, &b).unwrap_err();
     assert!(err.to_string().contains("Omega_0"), "{err}");
 }
+
+/// The paper's own source, beside the checkout in CI (`../shared/paper/`), read through the
+/// LaTeX reader: its 85 equations found by label. Skipped with a message where it is absent.
+#[test]
+fn the_papers_source_gives_its_85_equations() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../..");
+    let source = root.join("shared/paper/000_b5819d499ad0b272.txt");
+    if !source.exists() {
+        eprintln!("skipped: the paper's source {} is absent", source.display());
+        return;
+    }
+    let p = crate::Paper::from_path(&source).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(p.equations.len(), 85);
+    // Every equation reads as the same tree as its transcription in equations.yaml.
+    assert!(p.notes.is_empty(), "{:#?}", p.notes);
+}

@@ -53,6 +53,7 @@ pub const MAX_DEPTH: usize = 256;
 pub type Occurrence = (Symbol, usize);
 
 mod lex;
+mod normalize;
 mod symbols;
 #[cfg(test)]
 mod tests;
@@ -72,13 +73,26 @@ pub fn parse(latex: &str) -> Result<(Vec<Chain>, Vec<Occurrence>), ParseError> {
             ),
         });
     }
-    let toks = lex(latex)?;
+    let normalized = normalize::normalize(lex(latex)?);
+    let mut seen = Vec::new();
+    for condition in normalized.conditions {
+        let (_, symbols) = parse_tokens(condition, chars + 1)?;
+        seen.extend(symbols);
+    }
+    let (chains, symbols) = parse_tokens(normalized.toks, chars + 1)?;
+    seen.extend(symbols);
+    Ok((chains, seen))
+}
+
+/// The chains of a list of tokens (`end` is the column past the last character).
+fn parse_tokens(toks: Vec<(Tok, usize)>, end: usize) -> R<(Vec<Chain>, Vec<Occurrence>)> {
     let mut p = Parser {
         toks,
         pos: 0,
-        end: chars + 1,
+        end,
         seen: Vec::new(),
         depth: 0,
+        abs_depth: 0,
     };
     let mut chains = vec![p.chain()?];
     loop {
@@ -109,6 +123,8 @@ struct Parser {
     seen: Vec<Occurrence>,
     /// How many groups deep the reader is (see [`MAX_DEPTH`]).
     depth: usize,
+    /// How many `|...|` the reader is inside (a `|` there closes, never opens).
+    abs_depth: usize,
 }
 
 /// An error at `column` when `e` raises a vector to a power.
@@ -168,6 +184,18 @@ impl Parser {
             Some(Tok::Num(_, t)) if t.len() > 40 => format!("{}...", &t[..40]),
             Some(Tok::Num(_, t)) => t.clone(),
             Some(Tok::Letter(l)) => l.to_string(),
+            Some(Tok::Text(w)) => format!(
+                "\\text{{{}}} ({})",
+                w.chars().take(40).collect::<String>(),
+                lex::hint("text").unwrap_or_default()
+            ),
+            Some(Tok::Amp) => {
+                "& (an alignment point belongs between the sides of a relation, as in a &= b)"
+                    .into()
+            }
+            Some(Tok::RowEnd) => {
+                "\\\\ (a row ends after a relation, or a row starting with & continues it)".into()
+            }
             Some(t) => format!("{t:?}").to_lowercase(),
         };
         ParseError {
@@ -308,19 +336,13 @@ impl Parser {
         Ok(e)
     }
 
-    /// `\times` and `\cdot` between runs of juxtaposed factors, left to right: the vector and
-    /// scalar products, or a plain product where a side is a scalar.
+    /// `\times` and `\cdot` between runs of factors, left to right: the vector and scalar
+    /// products, or a plain product where a side is a scalar.
     fn cross(&mut self) -> R<Expr> {
-        let mut e = self.product()?;
-        loop {
-            let op = if self.eat_cmd("times") {
-                Op::Cross
-            } else if self.eat_cmd("cdot") {
-                Op::Dot
-            } else {
-                return Ok(e);
-            };
-            let rhs = self.product()?;
+        let (mut e, mut pending) = self.run(None)?;
+        while let Some((op, first)) = pending {
+            let (rhs, next) = self.run(Some(first))?;
+            pending = next;
             let op = if e.is_scalar() || rhs.is_scalar() {
                 Op::Mul
             } else {
@@ -328,19 +350,46 @@ impl Parser {
             };
             e = Expr::bin(op, e, rhs);
         }
+        Ok(e)
     }
 
-    fn product(&mut self) -> R<Expr> {
-        let mut e = self.factor()?;
-        while self.starts_factor() {
-            e = Expr::bin(Op::Mul, e, self.factor()?);
+    /// A run of factors: juxtaposed, or joined by `\cdot` or `\times` between two scalar
+    /// factors (`m \cdot g` is `m g`, so `a \hat{3} \times m \cdot g \hat{z}` is
+    /// $a\hat 3 \times (m g \hat z)$). Where a `\cdot` or `\times` has a vector factor on a
+    /// side, the run ends; the operator and the factor after it are returned for [`Self::cross`].
+    fn run(&mut self, first: Option<Expr>) -> R<(Expr, Option<(Op, Expr)>)> {
+        let mut e = match first {
+            Some(f) => f,
+            None => self.factor()?,
+        };
+        let mut last_scalar = e.is_scalar();
+        loop {
+            if self.starts_factor() {
+                let f = self.factor()?;
+                last_scalar = f.is_scalar();
+                e = Expr::bin(Op::Mul, e, f);
+                continue;
+            }
+            let op = if self.eat_cmd("times") {
+                Op::Cross
+            } else if self.eat_cmd("cdot") {
+                Op::Dot
+            } else {
+                return Ok((e, None));
+            };
+            let f = self.factor()?;
+            if last_scalar && f.is_scalar() {
+                e = Expr::bin(Op::Mul, e, f);
+                continue;
+            }
+            return Ok((e, Some((op, f))));
         }
-        Ok(e)
     }
 
     fn starts_factor(&self) -> bool {
         match self.peek() {
             Some(Tok::Num(..) | Tok::Letter(_) | Tok::LParen | Tok::LBrace | Tok::LBrack) => true,
+            Some(Tok::Pipe) => self.abs_depth == 0,
             Some(Tok::Cmd(c)) => !matches!(
                 c.as_str(),
                 "times"
@@ -353,6 +402,7 @@ impl Parser {
                     | "geq"
                     | "ge"
                     | "propto"
+                    | "over"
             ),
             _ => false,
         }
@@ -418,7 +468,19 @@ impl Parser {
                 self.expect(&Tok::RBrack, "] closing the [")?;
                 Ok(e)
             }
+            Some(Tok::Letter('d')) if self.looks_like_slash_derivative() => {
+                self.slash_derivative(col)
+            }
             Some(Tok::Letter(_)) => self.symbol_with_scripts(col),
+            Some(Tok::Pipe) if self.abs_depth == 0 => {
+                self.pos += 1;
+                self.abs_depth += 1;
+                let e = self.expr();
+                self.abs_depth -= 1;
+                let e = e?;
+                self.expect(&Tok::Pipe, "| closing the |")?;
+                Ok(Expr::Call(Func::Abs, Box::new(e)))
+            }
             Some(Tok::Cmd(c)) => match c.as_str() {
                 "pi" => {
                     self.pos += 1;
@@ -463,7 +525,11 @@ impl Parser {
             _ => return Err(self.error("(, [ or | after \\left")),
         };
         self.pos += 1;
-        let e = self.expr()?;
+        let saved = self.abs_depth;
+        self.abs_depth = 0;
+        let e = self.expr();
+        self.abs_depth = saved;
+        let e = e?;
         if !self.eat_cmd("right") {
             return Err(self.error("\\right"));
         }
@@ -492,6 +558,7 @@ impl Parser {
         };
         let arg = match self.peek() {
             Some(Tok::LParen) => self.atom()?,
+            Some(Tok::LBrace) => self.braced(&format!("the argument of \\{name}"))?,
             Some(Tok::Cmd(c)) if c == "left" => self.atom()?,
             _ => {
                 let mut arg = self.plain_symbol()?;

@@ -2,7 +2,7 @@
 //! derivatives.
 
 use super::lex::{Tok, GREEK};
-use super::{Parser, R};
+use super::{ParseError, Parser, R};
 use crate::expr::{Accent, Expr, Op, Symbol};
 
 impl Parser {
@@ -22,11 +22,31 @@ impl Parser {
         self.symbol_with_scripts(col)
     }
 
-    /// `\frac{A}{B}`, or a time derivative `\frac{d X}{dt}` / `\frac{d^2 X}{dt^2}`.
+    /// `\frac{A}{B}`, or a time derivative `\frac{d X}{dt}` / `\frac{d^2 X}{dt^2}`, or the
+    /// operator written before its symbol, `\frac{d}{dt} X` / `\frac{d^2}{dt^2} X`.
     pub(super) fn fraction(&mut self, col: usize) -> R<Expr> {
         let save = (self.pos, self.seen.len());
         if let Some(e) = self.derivative(col) {
             return Ok(e);
+        }
+        self.pos = save.0;
+        self.seen.truncate(save.1);
+        if let Some(order) = self.derivative_operator() {
+            let at = self.column();
+            let mut sym = self.symbol_base()?;
+            if sym.derivative != 0 {
+                return Err(ParseError {
+                    column: at,
+                    message: "a derivative of a derivative: write \\frac{d^2}{dt^2} X".into(),
+                });
+            }
+            if self.peek() == Some(&Tok::Under) {
+                self.pos += 1;
+                sym.sub = self.subscript_text()?;
+            }
+            sym.derivative = order;
+            self.seen.push((sym.clone(), at));
+            return Ok(Expr::Sym(sym));
         }
         self.pos = save.0;
         self.seen.truncate(save.1);
@@ -102,6 +122,110 @@ impl Parser {
             last.0 = sym.clone();
         }
         Some(Expr::Sym(sym))
+    }
+
+    /// `{d}{dt}` or `{d^2}{dt^2}` after `\frac`, followed by a symbol: the order, the tokens
+    /// eaten; `None` with nothing eaten otherwise.
+    fn derivative_operator(&mut self) -> Option<u8> {
+        let start = self.pos;
+        let ok = (|| {
+            if !(self.eat(&Tok::LBrace) && self.eat(&Tok::Letter('d'))) {
+                return None;
+            }
+            let order = self.order()?;
+            if !(self.eat(&Tok::RBrace)
+                && self.eat(&Tok::LBrace)
+                && self.eat(&Tok::Letter('d'))
+                && self.eat(&Tok::Letter('t')))
+            {
+                return None;
+            }
+            if self.order()? != order || !self.eat(&Tok::RBrace) {
+                return None;
+            }
+            self.starts_plain_symbol_or_accent().then_some(order)
+        })();
+        if ok.is_none() {
+            self.pos = start;
+        }
+        ok
+    }
+
+    fn starts_plain_symbol_or_accent(&self) -> bool {
+        self.starts_plain_symbol()
+            || matches!(self.peek(), Some(Tok::Cmd(c)) if matches!(c.as_str(), "hat" | "vec" | "mathbf" | "mathrm"))
+    }
+
+    /// True when the tokens from here read `d X / dt` or `d^2 X / dt^2` with X one symbol
+    /// (its accent and subscript; a bold or accented X in braces).
+    pub(super) fn looks_like_slash_derivative(&self) -> bool {
+        let tok = |i: usize| self.toks.get(i).map(|(t, _)| t);
+        if tok(self.pos) != Some(&Tok::Letter('d')) {
+            return false;
+        }
+        // Find the first `/` at depth 0 within a short reach, then `d t` (or `d t ^ 2`).
+        let mut depth = 0usize;
+        let mut i = self.pos + 1;
+        while let Some(t) = tok(i) {
+            match t {
+                Tok::LBrace => depth += 1,
+                Tok::RBrace if depth == 0 => return false,
+                Tok::RBrace => depth -= 1,
+                Tok::Slash if depth == 0 => break,
+                Tok::Cmd(c)
+                    if depth == 0
+                        && !(GREEK.contains(&c.as_str())
+                            || matches!(
+                                c.as_str(),
+                                "hat" | "vec" | "dot" | "ddot" | "mathbf" | "mathrm"
+                            )) =>
+                {
+                    return false
+                }
+                Tok::Plus | Tok::Minus | Tok::Equals | Tok::LParen | Tok::RParen | Tok::Comma
+                    if depth == 0 =>
+                {
+                    return false
+                }
+                _ => {}
+            }
+            i += 1;
+            if i > self.pos + 40 {
+                return false;
+            }
+        }
+        i > self.pos + 1
+            && tok(i) == Some(&Tok::Slash)
+            && tok(i + 1) == Some(&Tok::Letter('d'))
+            && tok(i + 2) == Some(&Tok::Letter('t'))
+    }
+
+    /// `d X / dt` or `d^2 X / dt^2`: the time derivative of the symbol X.
+    pub(super) fn slash_derivative(&mut self, col: usize) -> R<Expr> {
+        self.pos += 1;
+        let order = self
+            .order()
+            .ok_or_else(|| self.error("the order 2 of d^2"))?;
+        let at = self.column();
+        let e = self.symbol_with_scripts(col)?;
+        let Expr::Sym(mut sym) = e else {
+            return Err(ParseError {
+                column: at,
+                message: "a derivative d X/dt of a power: write the power after it, (dX/dt)^2"
+                    .into(),
+            });
+        };
+        self.expect(&Tok::Slash, "/ of dX/dt")?;
+        self.expect(&Tok::Letter('d'), "dt")?;
+        self.expect(&Tok::Letter('t'), "dt")?;
+        if self.order() != Some(order) {
+            return Err(self.error("the same order on dt as on d"));
+        }
+        sym.derivative = order;
+        if let Some(last) = self.seen.last_mut() {
+            last.0 = sym.clone();
+        }
+        Ok(Expr::Sym(sym))
     }
 
     /// `^2` after a `d` of a derivative (2), or nothing (1).
@@ -183,21 +307,36 @@ impl Parser {
                     _ => None,
                 };
                 if let Some(accent) = accent {
-                    self.expect(&Tok::LBrace, &format!("{{ after \\{c}"))?;
-                    let mut inner = self.symbol_base()?;
-                    if self.peek() == Some(&Tok::Under) {
-                        self.pos += 1;
-                        inner.sub = self.subscript_text()?;
+                    // `\dot{\alpha}`, or `\dot\alpha` (one token, as TeX takes it).
+                    let mut inner = if self.eat(&Tok::LBrace) {
+                        let mut inner = self.symbol_base()?;
+                        if self.peek() == Some(&Tok::Under) {
+                            self.pos += 1;
+                            inner.sub = self.subscript_text()?;
+                        }
+                        self.expect(&Tok::RBrace, &format!("}} closing \\{c}"))?;
+                        inner
+                    } else {
+                        self.symbol_base()?
+                    };
+                    if accent == Accent::Vec && inner.accent == Accent::Vec && !inner.bold {
+                        // `\vec{\vec I}`: a tensor, as `\mathbf{I}` writes it.
+                        inner.accent = Accent::None;
+                        inner.bold = true;
+                        return Ok(inner);
                     }
-                    self.expect(&Tok::RBrace, &format!("}} closing \\{c}"))?;
                     inner.accent = accent;
                     return Ok(inner);
                 }
                 match c.as_str() {
                     "mathbf" | "boldsymbol" => {
-                        self.expect(&Tok::LBrace, "{ after \\mathbf")?;
-                        let mut inner = self.symbol_base()?;
-                        self.expect(&Tok::RBrace, "} closing \\mathbf")?;
+                        let mut inner = if self.eat(&Tok::LBrace) {
+                            let inner = self.symbol_base()?;
+                            self.expect(&Tok::RBrace, "} closing \\mathbf")?;
+                            inner
+                        } else {
+                            self.symbol_base()?
+                        };
                         inner.bold = true;
                         Ok(inner)
                     }
@@ -232,6 +371,18 @@ impl Parser {
             _ => None,
         };
         if !self.eat(&Tok::LBrace) {
+            // `_\mathrm{cm}` (from `_{\rm cm}`) and `_\alpha`: one command, as TeX takes it.
+            match self.peek().cloned() {
+                Some(Tok::Cmd(c)) if c == "mathrm" => {
+                    self.pos += 1;
+                    return self.word();
+                }
+                Some(Tok::Cmd(c)) if GREEK.contains(&c.as_str()) => {
+                    self.pos += 1;
+                    return Ok(c);
+                }
+                _ => {}
+            }
             let t = self.peek().and_then(single);
             return match t {
                 Some(s) => {
@@ -248,9 +399,15 @@ impl Parser {
                     self.pos += 1;
                     break;
                 }
-                Some(Tok::Cmd(c)) if c == "mathrm" || c == "text" => {
+                Some(Tok::Cmd(c)) if c == "mathrm" => {
                     self.pos += 1;
                     text.push_str(&self.word()?);
+                }
+                Some(Tok::Text(w))
+                    if !w.is_empty() && w.chars().all(|c| c.is_ascii_alphanumeric()) =>
+                {
+                    self.pos += 1;
+                    text.push_str(&w);
                 }
                 Some(Tok::Cmd(c)) if GREEK.contains(&c.as_str()) => {
                     self.pos += 1;

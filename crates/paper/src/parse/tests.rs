@@ -78,9 +78,14 @@ fn errors_name_the_column() {
 fn other_notations_read_the_same() {
     let same =
         |a: &str, b: &str| assert_eq!(parse(a).unwrap().0, parse(b).unwrap().0, "{a} vs {b}");
+    // Between scalar factors, `\cdot` and `\times` are juxtaposition, left to right.
     same(
         r"\frac{g}{k \cdot a \sin(\alpha_{0})}",
-        r"\frac{g}{k (a \sin\alpha_0)}",
+        r"\frac{g}{k a \sin\alpha_0}",
+    );
+    same(
+        r"a \hat{\mathbf{3}} \times m \cdot g \hat{\mathbf{z}}",
+        r"a \hat{\mathbf{3}} \times m g \hat{\mathbf{z}}",
     );
     same(r"g \cdot 1", "g 1");
     same(r"2 \times k", "2 k");
