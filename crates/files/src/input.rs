@@ -119,6 +119,7 @@ pub fn read_bytes(path: &Path, limit: u64) -> Result<Vec<u8>, InputError> {
             kind: kind_of(&opened),
         });
     }
+    crate::inputs::record(path, &opened);
     let mut bytes = Vec::new();
     file.take(limit.saturating_add(1))
         .read_to_end(&mut bytes)

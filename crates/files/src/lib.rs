@@ -3,5 +3,7 @@
 
 pub mod atomic;
 pub mod input;
+pub mod inputs;
 pub mod output;
 pub mod output_file;
+pub mod temporary;

@@ -59,11 +59,12 @@ pub enum SetError {
 /// then swapped with the target in one rename. A reader, or a run killed at any moment, sees
 /// the previous complete set or the new complete set, never a mix.
 ///
-/// Temporaries are named `.NAME.tmp-PID` beside the target; those of processes no longer alive
-/// are removed by the next [`SetWriter::begin`] (a killed run cannot clean up after itself).
-/// On Linux the swap is `renameat2(RENAME_EXCHANGE)`, atomic even when the target exists;
-/// elsewhere the old set is first moved aside, and a run killed between the two renames leaves
-/// it as `.NAME.old-PID`, which the next run puts back.
+/// Temporaries are named and marked by [`crate::temporary`]: unique names beside the target,
+/// never a name already taken; those of runs no longer alive that the tool can prove its own are
+/// removed by the next [`SetWriter::begin`] (a killed run cannot clean up after itself), and
+/// nothing else. On Linux the swap is `renameat2(RENAME_EXCHANGE)`, atomic even when the target
+/// exists; elsewhere the old set is first moved aside, and a run killed between the two renames
+/// leaves it aside, which the next run puts back.
 #[derive(Debug)]
 pub struct SetWriter {
     target: PathBuf,
@@ -76,20 +77,17 @@ fn io_err(target: &Path, what: &'static str) -> impl FnOnce(std::io::Error) -> S
     move |source| SetError::Io { path, what, source }
 }
 
-/// The pid in a temporary's name `.NAME.KIND-PID`, and whether that process is gone.
-fn is_stale(file_name: &str, prefix: &str) -> bool {
-    let Some(pid) = file_name.strip_prefix(prefix) else {
-        return false;
-    };
-    let Ok(pid) = pid.parse::<u32>() else {
-        return false;
-    };
-    if pid == std::process::id() {
-        return true;
+/// Writes one file of a set under construction, at `path` inside [`SetWriter::dir`] (or inside
+/// a directory of the caller's own making): atomically, and only where nothing is or a regular
+/// file is; a symbolic link or anything else there is refused, never replaced.
+pub fn write_set_file(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    match std::fs::symlink_metadata(path) {
+        Ok(m) if !m.is_file() => Err(std::io::Error::new(
+            std::io::ErrorKind::AlreadyExists,
+            "something that is not a regular file is in the way",
+        )),
+        _ => write_atomically(path, bytes),
     }
-    let proc_fs = Path::new("/proc/self");
-    // Without /proc, no process can be asked about: treat every temporary as stale.
-    !proc_fs.exists() || !Path::new(&format!("/proc/{pid}")).exists()
 }
 
 /// The files a set's manifest lists, relative to the set's directory; `None` without a manifest.
@@ -170,15 +168,12 @@ impl SetWriter {
             }
             Err(_) => {}
         }
-        let tmp = parent.join(format!(".{name}.tmp-{}", std::process::id()));
-        if tmp.exists() {
-            std::fs::remove_dir_all(&tmp).map_err(io_err(target, "removing a temporary"))?;
-        }
-        std::fs::create_dir(&tmp).map_err(|source| SetError::Unwritable {
-            path: shown,
-            parent: parent.display().to_string(),
-            source,
-        })?;
+        let tmp =
+            crate::temporary::create(&parent, &name).map_err(|source| SetError::Unwritable {
+                path: shown,
+                parent: parent.display().to_string(),
+                source,
+            })?;
         Ok(SetWriter {
             target: target.to_path_buf(),
             tmp,
@@ -186,24 +181,22 @@ impl SetWriter {
         })
     }
 
-    /// Removes the temporaries of runs no longer alive; puts back a previous set left aside by
-    /// a run killed in the middle of a non-atomic swap.
+    /// Removes the temporaries of runs no longer alive that are provably this tool's; puts back
+    /// a previous set left aside by a run killed in the middle of a non-atomic swap.
     fn clean_stale(target: &Path, parent: &Path, name: &str) -> Result<(), SetError> {
-        let (tmp_prefix, old_prefix) = (format!(".{name}.tmp-"), format!(".{name}.old-"));
-        let entries = std::fs::read_dir(parent).map_err(io_err(target, "listing the parent"))?;
-        for entry in entries.flatten() {
-            let file_name = entry.file_name().to_string_lossy().into_owned();
-            let path = entry.path();
-            if is_stale(&file_name, &tmp_prefix) {
-                std::fs::remove_dir_all(&path).map_err(io_err(target, "removing a temporary"))?;
-            } else if is_stale(&file_name, &old_prefix) {
-                if target.exists() {
+        use crate::temporary::LeftOver;
+        let found = crate::temporary::left_overs(parent, name)
+            .map_err(io_err(target, "listing the parent"))?;
+        for left in found {
+            match left {
+                LeftOver::Temporary(path) => std::fs::remove_dir_all(&path)
+                    .map_err(io_err(target, "removing a temporary"))?,
+                LeftOver::Aside(path) if std::fs::symlink_metadata(target).is_ok() => {
                     std::fs::remove_dir_all(&path)
-                        .map_err(io_err(target, "removing a previous set"))?;
-                } else {
-                    std::fs::rename(&path, target)
-                        .map_err(io_err(target, "restoring the previous set"))?;
+                        .map_err(io_err(target, "removing a previous set"))?
                 }
+                LeftOver::Aside(path) => std::fs::rename(&path, target)
+                    .map_err(io_err(target, "restoring the previous set"))?,
             }
         }
         Ok(())
@@ -233,6 +226,7 @@ impl SetWriter {
         }
         write_atomically(&self.tmp.join(MANIFEST), manifest.as_bytes())
             .map_err(io_err(&target, "writing the manifest"))?;
+        crate::temporary::unmark(&self.tmp).map_err(io_err(&target, "writing the manifest"))?;
         if let Ok(d) = std::fs::File::open(&self.tmp) {
             let _ = d.sync_all();
         }
@@ -277,9 +271,8 @@ impl SetWriter {
             .file_name()
             .map(|n| n.to_string_lossy().into_owned())
             .unwrap_or_default();
-        let old = self
-            .tmp
-            .with_file_name(format!(".{name}.old-{}", std::process::id()));
+        let parent = self.tmp.parent().unwrap_or(Path::new("."));
+        let old = crate::temporary::aside(parent, &name);
         std::fs::rename(&self.target, &old)?;
         std::fs::rename(&self.tmp, &self.target)?;
         std::fs::remove_dir_all(&old)
@@ -383,8 +376,20 @@ mod tests {
         write_set(&target, "old").ok();
         // A pid that no process has: above the kernel's largest (2^22).
         let dead = 4_194_304 + 17;
-        std::fs::create_dir_all(root.join(format!(".report.tmp-{dead}"))).ok();
-        std::fs::rename(&target, root.join(format!(".report.old-{dead}"))).ok();
+        let tmp = root.join(format!(".report.rolling-disk-{dead}-0"));
+        std::fs::create_dir_all(&tmp).ok();
+        std::fs::write(
+            tmp.join(crate::temporary::MARKER),
+            format!("a temporary directory of rolling-disk, process {dead}\n"),
+        )
+        .ok();
+        std::fs::rename(
+            &target,
+            root.join(format!(".report.rolling-disk-old-{dead}-0")),
+        )
+        .ok();
+        let users = root.join(format!(".report.tmp-{dead}"));
+        std::fs::create_dir_all(&users).ok();
         let set = SetWriter::begin(&target);
         assert!(set.is_ok());
         assert_eq!(
@@ -393,9 +398,15 @@ mod tests {
                 .as_deref(),
             Some("old")
         );
-        assert!(!root.join(format!(".report.tmp-{dead}")).exists());
+        assert!(!tmp.exists());
+        assert!(users.is_dir());
         drop(set);
-        assert_eq!(entries(&root), vec!["report".to_string()]);
+        let mut left = entries(&root);
+        left.sort();
+        assert_eq!(
+            left,
+            vec![format!(".report.tmp-{dead}"), "report".to_string()]
+        );
         let _ = std::fs::remove_dir_all(&root);
     }
 

@@ -1,9 +1,14 @@
-//! Where one output file (`--csv FILE`, `--wav FILE`) goes, decided from what the path names
-//! before anything is written: a new path or a regular file is written atomically
-//! ([`crate::atomic::write_atomically`]); a symbolic link is followed and its target treated the
-//! same way; a FIFO or a character device (`/dev/null`, a terminal) is written through, as a
-//! shell's `>` would; a read-only file, a directory and anything else are refused with a sentence.
-//! Nothing that is not a regular file is ever replaced by one.
+//! Where one output file (`--csv FILE`, `--wav FILE`, `--out FILE`) goes, decided from what the
+//! path names before anything is written: a new path or a regular file with one name is written
+//! atomically ([`crate::atomic::write_atomically`]); a regular file with other names (hard links)
+//! is written into, so that every name keeps showing the same file; a symbolic link is followed
+//! and its target treated the same way; a FIFO or a character device (`/dev/null`, a terminal) is
+//! written through, as a shell's `>` would; one of the command's own inputs
+//! ([`crate::inputs`]), a read-only file, a directory and anything else are refused with a
+//! sentence. Nothing that is not a regular file is ever replaced by one.
+//!
+//! This is the one door for a file at a path the user named; the files of a set (a report, a
+//! folder of figures) go through [`crate::output::SetWriter`].
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -11,8 +16,12 @@ use std::path::{Path, PathBuf};
 /// What an output path names.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum OutputTarget {
-    /// A path where nothing is yet, or a regular file the user may write: replaced atomically.
+    /// A path where nothing is yet, or a regular file with one name that the user may write:
+    /// replaced atomically.
     Replace(PathBuf),
+    /// A regular file with other names (hard links): written into, so that all its names keep
+    /// naming it.
+    WriteInto(PathBuf),
     /// A FIFO or a character device: opened and written through, never replaced.
     WriteThrough(PathBuf),
 }
@@ -32,6 +41,9 @@ pub enum OutputError {
     /// A block device, a socket or another kind of file that is not written to.
     #[error("{0}: is not a regular file, a FIFO or a character device; give the path of a file")]
     Special(String),
+    /// The path names a file this command reads.
+    #[error("{0}: is an input of this command (read as {1}); give another path for the output")]
+    Input(String, String),
     /// The write itself failed.
     #[error("cannot write {0} ({1})")]
     Io(String, std::io::Error),
@@ -52,8 +64,14 @@ pub fn output_target(path: &Path) -> Result<OutputTarget, OutputError> {
         return Err(OutputError::Directory(shown));
     }
     if meta.is_file() {
+        if let Some(input) = crate::inputs::input_named(path) {
+            return Err(OutputError::Input(shown, input.display().to_string()));
+        }
         if meta.permissions().readonly() || !writable(path) {
             return Err(OutputError::ReadOnly(shown));
+        }
+        if link_count(&meta) > 1 {
+            return Ok(OutputTarget::WriteInto(path.to_path_buf()));
         }
         return Ok(OutputTarget::Replace(path.to_path_buf()));
     }
@@ -70,12 +88,30 @@ pub fn write_output(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
         OutputTarget::Replace(p) => {
             crate::atomic::write_atomically(&p, bytes).map_err(|e| OutputError::Io(shown(&p), e))
         }
+        OutputTarget::WriteInto(p) => std::fs::OpenOptions::new()
+            .write(true)
+            .truncate(true)
+            .open(&p)
+            .and_then(|mut f| f.write_all(bytes).and_then(|()| f.sync_all()))
+            .map_err(|e| OutputError::Io(shown(&p), e)),
         OutputTarget::WriteThrough(p) => std::fs::OpenOptions::new()
             .write(true)
             .open(&p)
             .and_then(|mut f| f.write_all(bytes).and_then(|()| f.flush()))
             .map_err(|e| OutputError::Io(shown(&p), e)),
     }
+}
+
+/// How many names (hard links) the file has.
+#[cfg(unix)]
+fn link_count(meta: &std::fs::Metadata) -> u64 {
+    use std::os::unix::fs::MetadataExt;
+    meta.nlink()
+}
+
+#[cfg(not(unix))]
+fn link_count(_meta: &std::fs::Metadata) -> u64 {
+    1
 }
 
 #[cfg(unix)]
@@ -159,6 +195,40 @@ mod tests {
             Err(OutputError::ReadOnly(_))
         ));
         assert_eq!(std::fs::read(&real).ok().as_deref(), Some(&b"new"[..]));
+        let _ = std::fs::remove_dir_all(&root);
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_hard_link_is_written_into_and_an_input_is_refused() {
+        let root = scratch("hard");
+        let one = root.join("one.csv");
+        let two = root.join("two.csv");
+        std::fs::write(&one, "old").ok();
+        std::fs::hard_link(&one, &two).ok();
+        assert_eq!(
+            output_target(&two).map_err(|e| e.to_string()),
+            Ok(OutputTarget::WriteInto(two.clone()))
+        );
+        assert!(write_output(&two, b"new").is_ok());
+        assert_eq!(std::fs::read(&one).ok().as_deref(), Some(&b"new"[..]));
+        let scene = root.join("my.yaml");
+        std::fs::write(&scene, "name: x\n").ok();
+        assert!(crate::input::read_text(&scene, 100).is_ok());
+        assert!(matches!(
+            write_output(&scene, b"t,alpha\n"),
+            Err(OutputError::Input(..))
+        ));
+        let link = root.join("link.yaml");
+        std::os::unix::fs::symlink(&scene, &link).ok();
+        assert!(matches!(
+            write_output(&link, b"t,alpha\n"),
+            Err(OutputError::Input(..))
+        ));
+        assert_eq!(
+            std::fs::read(&scene).ok().as_deref(),
+            Some(&b"name: x\n"[..])
+        );
         let _ = std::fs::remove_dir_all(&root);
     }
 
