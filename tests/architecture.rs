@@ -2,11 +2,14 @@
 //! references (`physics`, and the `experiment` and `studies` built on them) never see the
 //! paper's claims, so a reference cannot end up checking a claim against itself, and the
 //! compiler refuses an import that would break that. Then: figures and renderers never
-//! integrate; no check file imports another (what checks share lives in the harness); only the
-//! `paper` crate reads the paper's files; no source file is over 600 lines. Each rule has a test
+//! integrate, and figures take no function from `physics` (`architecture/figures.rs`); no check
+//! file imports another (what checks share lives in the harness); only the `paper` crate reads
+//! the paper's files; no source file is over 600 lines. Each rule has a test
 //! showing that its scan can fail.
 
 use std::path::Path;
+
+mod figures;
 
 /// The workspace crates each crate may depend on: the layers of the design. The references
 /// (`physics`) and the paper's reader (`paper`) never see each other, and nothing below

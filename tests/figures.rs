@@ -176,7 +176,7 @@ fn a_legend_over_the_data_is_caught() {
 fn figures_can_be_built_by_name() {
     let wanted = ["tek02", "fig1", "tek02"];
     let config = RunConfig::figures(Bench::default(), &wanted).expect("known");
-    assert_eq!(config.study_names(), vec!["experiment"]);
+    assert_eq!(config.study_names(), vec!["experiment", "steady-motion"]);
     let results = compute(&config, &|_| {}).expect("computes");
     let some = figures::some(&wanted, &results).expect("builds");
     let names: Vec<&str> = some.iter().map(|f| f.name).collect();

@@ -113,7 +113,10 @@ mod tests {
             &["path", "spin-down-alpha", "tek01", "tek02", "fig1"],
         )
         .unwrap();
-        assert_eq!(c.study_names(), vec!["paths", "spin-down", "experiment"]);
+        assert_eq!(
+            c.study_names(),
+            vec!["paths", "spin-down", "experiment", "steady-motion"]
+        );
         assert!(RunConfig::figures(Bench::default(), &["fig99"]).is_err());
     }
 }

@@ -4,21 +4,20 @@
 use crate::figures::chart::{Legend, Plot, Series, Style};
 use crate::figures::FigureError;
 use crate::figures::{max_per_bin, Drawing, Figure};
-use physics::solve::Method;
-use studies::energy::{DriftRun, EnergyDrift};
+use crate::study::energy_drift::{DriftCurve, Stepping};
 
 /// How a run's curve is drawn: fixed steps and DOP853 solid, DOPRI5 dashed, DOP853 projected
 /// onto the energy dotted.
-fn style(run: &DriftRun) -> Style {
-    match run.method {
-        Method::Dopri5 => Style::Dashed,
-        Method::Dop853 if run.projected => Style::Dotted,
-        Method::Rk4 | Method::Dop853 => Style::Line,
+fn style(run: &DriftCurve) -> Style {
+    match run.stepping {
+        Stepping::Dopri5 => Style::Dashed,
+        Stepping::Dop853Projected => Style::Dotted,
+        Stepping::FixedStep | Stepping::Dop853 => Style::Line,
     }
 }
 
 /// The figure, from the study's runs (no integration here).
-pub fn figure(study: &EnergyDrift) -> Result<Figure, FigureError> {
+pub fn figure(runs: &[DriftCurve]) -> Result<Figure, FigureError> {
     let mut plot = Plot::new(
         "Energy drift on the benchmark scene",
         "time t (s)",
@@ -28,7 +27,7 @@ pub fn figure(study: &EnergyDrift) -> Result<Figure, FigureError> {
     .legend_at(Legend::UpperRight);
     let mut lowest = f64::INFINITY;
     let mut summary = Vec::new();
-    for run in &study.runs {
+    for run in runs {
         let last = run.drift.last().map_or(0.0, |p| p.1);
         summary.push(format!(
             "{}: {last:.1e} at 10 s, {} evaluations",

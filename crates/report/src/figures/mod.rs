@@ -6,11 +6,14 @@
 //!
 //! | name | what | file |
 //! |---|---|---|
-//! | `fig1` | the geometry, from the triad and a steady motion (eqs 1-9, 28-29) | `geometry.rs` |
+//! | `fig1` | the geometry, from the triad and a steady motion (eqs 1-9, 28-29) | `geometry/` |
 //! | `tek04`, `tek01`, `tek02` | the synthetic light signal: 10 s, last 0.25 s, last 0.06 s | `experiment.rs` |
 //! | `Omega` | $\Omega_i$ against $t$ | `experiment.rs` |
 //! | `tek726`, `tek728` | $1/\Omega$ against $t_0 - t$ for two $t_0$, lines of eq 84 | `experiment.rs` |
 //! | `Odot` | $d\Omega/dt$ against $\Omega$, lines of eq 85 | `experiment.rs` |
+//! | `residuals` | the residuals of the fits of eqs 84 and 85 | `experiment.rs` |
+//! | `sound-spectrogram`, `sound-residuals` | the phone's sound: its spectrogram with the fitted pitch, the residuals of the phase's fit | `sound.rs` |
+//! | `coverage` | the coverage of the experiment's stated uncertainties (stored studies) | `coverage.rs` |
 //! | `stability-map` | where eq 54 gives $\varpi^2 < 0$, against the paper's boundary | `stability.rs` |
 //! | `frequency` | measured against predicted $\varpi/\Omega_0$ (eqs 54, 55, 71) | `frequency.rs` |
 //! | `energy-drift` | energy drift of each method on the benchmark scene | `energy.rs` |
@@ -18,15 +21,20 @@
 //! | `spin-down-alpha` | $\alpha$ against $t_0 - t$, eq 78 with 2/5 and with 2/3 | `spin_down.rs` |
 //! | `lab-frame-difference` | eqs 23-25 against the lab-frame model | `lab_frame.rs` |
 //! | `work-precision` | error against work of each method (the speed/accuracy study) | `precision.rs` |
-//! | `slip-stick`, `slip-stick-path` | the sliding model's slip-stick scene: slip, normal force, energy; paths | `friction.rs` |
+//! | `slip-stick`, `slip-stick-path` | the sliding model's slip-stick scene: slip, normal force, energy; paths | `sliding.rs` |
+//! | `mechanisms` | the power of each dissipation mechanism against $\Omega$, and what the record needs | `sliding.rs` |
 //! | `peer-tilt`, `peer-difference` | the toy's tilt and its difference, this tool against the peer program | `toy.rs` |
-//! | `mechanisms` | the power of each dissipation mechanism against $\Omega$, and what the record needs | `friction.rs` |
+//! | `premises` | which equation follows from which, coloured by verdict (drawn by the report from the checks) | `premises.rs` |
+//!
+//! What a figure draws and how it is rendered (SVG, PNG) is `drawing.rs`, the PNG encoder
+//! `png.rs`; a test holds this table to [`FAMILIES`].
 //!
 //! Everything is deterministic: the same build gives the same bytes.
 
 pub mod canvas;
 pub mod chart;
 pub mod coverage;
+mod drawing;
 pub mod energy;
 pub mod error;
 pub mod experiment;
@@ -38,6 +46,7 @@ pub mod legend;
 mod mark_label;
 pub mod paper_scale;
 pub mod path;
+mod png;
 pub mod precision;
 pub mod premises;
 pub mod ranges;
@@ -50,14 +59,13 @@ pub mod ticks;
 pub mod toy;
 
 pub use chart::{Axis, Chart, Legend, Mark, Note, Options, Plot, Series, Style};
+pub use drawing::{Drawing, Panels};
 pub use error::{Drawn, FigureError};
 pub use geometry::Geometry;
 pub use legend::Layout;
 
 use crate::results::Results;
 use crate::study::{self, Run, Study};
-use plotters::prelude::*;
-use plotters::style::text_anchor::{HPos, Pos, VPos};
 use serde::Serialize;
 
 /// A figure of the report.
@@ -74,154 +82,15 @@ pub struct Figure {
     pub drawing: Drawing,
 }
 
-/// Side-by-side plots under one title.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Panels {
-    /// The overall title.
-    pub title: String,
-    /// The plots, left to right.
-    pub plots: Vec<Plot>,
-}
-
-/// What a figure draws.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub enum Drawing {
-    /// A chart with default options.
-    Chart(Chart),
-    /// A chart with options (ranges, colours, reference lines, notes).
-    Plot(Plot),
-    /// Several plots side by side.
-    Panels(Panels),
-    /// Figure 1's geometry.
-    Geometry(Geometry),
-    /// The premises graph, coloured by verdict ([`checks::cause::graph`]).
-    Premises(checks::cause::graph::PremisesGraph),
-}
-
-impl Drawing {
-    /// Draws on any plotters backend; `scale` multiplies fonts and line widths.
-    pub fn draw<DB: DrawingBackend>(
-        &self,
-        root: &DrawingArea<DB, plotters::coord::Shift>,
-        scale: f64,
-    ) -> Result<(), FigureError> {
-        match self {
-            Drawing::Chart(c) => {
-                c.draw(root, scale)?;
-                root.present().drawn()
-            }
-            Drawing::Plot(p) => {
-                p.draw(root, scale)?;
-                root.present().drawn()
-            }
-            Drawing::Geometry(g) => g.draw(root, scale),
-            Drawing::Premises(g) => premises::draw(g, root, scale),
-            Drawing::Panels(p) => {
-                chart::register_font();
-                root.fill(&WHITE).drawn()?;
-                let band = (36.0 * scale).round() as u32;
-                let (top, inner) = root.split_vertically(band);
-                let (w, _) = top.dim_in_pixel();
-                top.draw(&Text::new(
-                    p.title.clone(),
-                    ((w / 2) as i32, (band / 2) as i32),
-                    (chart::FIGURE_FONT, 17.0 * scale)
-                        .into_font()
-                        .color(&BLACK)
-                        .pos(Pos::new(HPos::Center, VPos::Center)),
-                ))
-                .drawn()?;
-                let n = p.plots.len().max(1);
-                for (area, plot) in inner.split_evenly((1, n)).iter().zip(&p.plots) {
-                    plot.draw(area, scale)?;
-                }
-                root.present().drawn()
-            }
-        }
-    }
-
-    /// For each plot of the drawing (one, or one per panel; none for a geometry): where its
-    /// legend goes, how many plotted pixels it covers, and its labelled ticks per axis, when
-    /// drawn at `width` x `height` px and `scale` (the report's sizes: 760 x 480 at 1, and
-    /// 1800 x 1200 at 3).
-    pub fn layouts(&self, width: u32, height: u32, scale: f64) -> Result<Vec<Layout>, FigureError> {
-        chart::register_font();
-        match self {
-            Drawing::Chart(c) => Ok(vec![c.layout(
-                (width, height),
-                scale,
-                &Options::default(),
-            )?]),
-            Drawing::Plot(p) => Ok(vec![p.layout((width, height), scale)?]),
-            Drawing::Geometry(_) | Drawing::Premises(_) => Ok(vec![]),
-            Drawing::Panels(p) => {
-                // The same split as `draw`: a title band, then equal columns.
-                let band = (36.0 * scale).round() as u32;
-                let n = p.plots.len().max(1) as u32;
-                let dim = (width / n, height.saturating_sub(band));
-                p.plots.iter().map(|plot| plot.layout(dim, scale)).collect()
-            }
-        }
-    }
-
-    /// The drawing as an SVG document, `width` x `height` px.
-    pub fn to_svg(&self, width: u32, height: u32) -> Result<String, FigureError> {
-        let mut out = String::new();
-        {
-            let root = SVGBackend::with_string(&mut out, (width, height)).into_drawing_area();
-            self.draw(&root, 1.0)?;
-        }
-        Ok(out)
-    }
-
-    /// The drawing as a PNG file at `path`: 1800 x 1200 px (6 x 4 in at 300 dpi), scale 3.
-    pub fn to_png(&self, path: &std::path::Path) -> Result<(), FigureError> {
-        self.to_png_sized(path, (600, 400), 3.0)
-    }
-
-    /// The drawing as a PNG file at `path` laid out on `size` px with fonts and lines of their
-    /// usual size, every length then multiplied by `scale` for resolution.
-    pub fn to_png_sized(
-        &self,
-        path: &std::path::Path,
-        size: (u32, u32),
-        scale: f64,
-    ) -> Result<(), FigureError> {
-        let px = |v: u32| (v as f64 * scale).round() as u32;
-        let (w, h) = (px(size.0), px(size.1));
-        let mut rgb = vec![0u8; 3 * w as usize * h as usize];
-        {
-            let root = BitMapBackend::with_buffer(&mut rgb, (w, h)).into_drawing_area();
-            self.draw(&root, scale)?;
-            root.present().drawn()?;
-        }
-        write_png(path, &rgb, (w, h))
-    }
-}
-
-/// Writes 8-bit RGB pixels as a PNG file: deflate at its fast setting with the Paeth filter
-/// (flat colour and line art). Measured on the 18 figures, 2026-11-25: 0.05 s to encode and
-/// 3.9 MB, against 0.43 s and 2.6 MB at the png crate's default level.
-fn write_png(path: &std::path::Path, rgb: &[u8], (w, h): (u32, u32)) -> Result<(), FigureError> {
-    let file = std::fs::File::create(path).drawn()?;
-    let mut encoder = png::Encoder::new(std::io::BufWriter::new(file), w, h);
-    encoder.set_color(png::ColorType::Rgb);
-    encoder.set_depth(png::BitDepth::Eight);
-    encoder.set_compression(png::Compression::Fast);
-    encoder.set_filter(png::FilterType::Paeth);
-    let mut writer = encoder.write_header().drawn()?;
-    writer.write_image_data(rgb).drawn()?;
-    writer.finish().drawn()
-}
-
 /// Figures drawn together from the same results (the experiment's eight share one analysis):
 /// their names, in the report's order, the studies they read, and how they are drawn. Adding
 /// a figure is its file and its row here.
 pub struct Family {
     /// The figures' names.
     pub names: &'static [&'static str],
-    /// The studies they are drawn from (none for the algebra of the geometry and the stability
-    /// map, nor for the coverage studies, which are stored: `experiment::coverage_record`).
+    /// The studies they are drawn from (none for the stability map, drawn from the paper's
+    /// printed eq 54, nor for the coverage studies, which are stored:
+    /// `experiment::coverage_record`).
     pub needs: &'static [&'static dyn Run],
     /// Draws them from the results.
     pub build: fn(&Results) -> Result<Vec<Figure>, FigureError>,
@@ -231,8 +100,8 @@ pub struct Family {
 pub const FAMILIES: &[Family] = &[
     Family {
         names: &["fig1"],
-        needs: &[],
-        build: |_| Ok(vec![geometry_figure()?]),
+        needs: &[&study::SteadyMotion],
+        build: |r| Ok(vec![geometry_figure(need(r, &study::SteadyMotion)?)?]),
     },
     Family {
         names: &[
@@ -362,15 +231,14 @@ fn paper(r: &Results) -> Result<&paper::Paper, FigureError> {
         .ok_or_else(|| "the figures need the paper the results were computed from".into())
 }
 
-/// Figure 1: the geometry of a uniform disk (the toy's a = 37.5 mm) in the steady motion at
-/// alpha0 = 1 rad with b = 0.6 a.
-pub fn geometry_figure() -> Result<Figure, FigureError> {
-    let disk = physics::Disk::uniform(0.0375);
+/// Figure 1: the geometry of the disk in the steady motion `steady` (the toy's a = 37.5 mm at
+/// alpha0 = 1 rad with b = 0.6 a: [`study::SteadyMotion`]).
+pub fn geometry_figure(steady: &study::steady_motion::SteadyDisk) -> Result<Figure, FigureError> {
     let view = geometry::View {
         azimuth: -0.95,
         elevation: 0.45,
     };
-    let g = Geometry::steady(&disk, 1.0, 0.6 * disk.a, std::f64::consts::FRAC_PI_2, view)?;
+    let g = Geometry::steady(steady, std::f64::consts::FRAC_PI_2, view);
     Ok(Figure {
         name: "fig1",
         title: "The disk, its triad and its lengths".into(),
@@ -510,6 +378,29 @@ pub fn log_thin(points: &[(f64, f64)], n: usize) -> Vec<(f64, f64)> {
 mod tests {
     use super::*;
 
+    /// The table of the module's documentation names every figure, and the file it names is
+    /// there.
+    #[test]
+    fn the_doc_table_names_every_figure_and_its_file() {
+        let doc = include_str!("mod.rs");
+        let table: Vec<&str> = doc.lines().filter(|l| l.starts_with("//! | `")).collect();
+        for name in names().into_iter().chain(["premises"]) {
+            let row = table.iter().find(|l| {
+                l.split(" | ")
+                    .nth(1)
+                    .is_some_and(|c| c.contains(&format!("`{name}`")))
+            });
+            let row = row.unwrap_or_else(|| panic!("{name} is not in the table"));
+            let file = row
+                .trim_end_matches(" |")
+                .rsplit('`')
+                .nth(1)
+                .unwrap_or_default();
+            let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src/figures");
+            assert!(dir.join(file).exists(), "{name}: {file} does not exist");
+        }
+    }
+
     #[test]
     fn decimation_keeps_the_envelope() {
         let pts: Vec<(f64, f64)> = (0..10_000)
@@ -538,10 +429,14 @@ mod tests {
             .unwrap_err()
             .to_string();
         assert!(e.contains("spin-down"), "{e}");
-        // The algebraic figures need no study.
+        let e = some(&["fig1"], &Results::default())
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("steady-motion"), "{e}");
+        // The stability map needs no study, only the paper.
         let with_paper = Results::of(Some(paper::Paper::built_in().unwrap()));
-        let f = some(&["fig1", "stability-map"], &with_paper).unwrap();
-        assert_eq!(f.len(), 2);
+        let f = some(&["stability-map"], &with_paper).unwrap();
+        assert_eq!(f.len(), 1);
     }
 
     #[test]

@@ -19,6 +19,7 @@ pub mod coverage;
 pub mod experiment;
 pub mod friction;
 pub mod precision;
+pub mod prose;
 pub mod toy;
 
 /// A part's templates, compiled into the binary: its section in each format, and the
@@ -28,7 +29,7 @@ pub struct Templates {
     pub html: &'static str,
     /// Its section in LaTeX (`templates/parts/NAME/section.tex.tera`).
     pub tex: &'static str,
-    /// Its paragraphs as text, by name (`templates/parts/NAME/NAME.txt.tera`).
+    /// Its paragraphs as text, by name (`templates/parts/NAME/PARAGRAPH.txt.tera`).
     pub text: &'static [(&'static str, &'static str)],
 }
 

@@ -1,5 +1,6 @@
 //! The table of parts is complete: every part's folder, here and in `templates/parts/`, is a
-//! registered part, and every registered part renders its section in HTML and in LaTeX.
+//! registered part, every file of its templates' folder is one of its registered templates, and
+//! every registered part renders its section in HTML and in LaTeX.
 
 use super::*;
 use std::path::Path;
@@ -27,6 +28,43 @@ fn every_part_folder_is_a_registered_part() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     assert_eq!(folders(&root.join("src/parts")), registered());
     assert_eq!(folders(&root.join("../../templates/parts")), registered());
+}
+
+/// Every file of `templates/parts/NAME/` is one of the part's registered templates (the same
+/// text), and every registered paragraph is a template Tera reads.
+#[test]
+fn every_template_file_of_a_part_is_registered() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../templates/parts");
+    for p in PARTS {
+        let own = p.templates();
+        let mut registered: Vec<(String, &str)> = vec![
+            ("section.html.tera".into(), own.html),
+            ("section.tex.tera".into(), own.tex),
+        ];
+        registered.extend(own.text.iter().map(|(n, t)| (format!("{n}.txt.tera"), *t)));
+        registered.sort();
+        let dir = root.join(p.name());
+        let mut files: Vec<(String, String)> = std::fs::read_dir(&dir)
+            .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+            .filter_map(Result::ok)
+            .map(|e| {
+                let name = e.file_name().to_string_lossy().into_owned();
+                (name, std::fs::read_to_string(e.path()).unwrap_or_default())
+            })
+            .collect();
+        files.sort();
+        let file_names: Vec<&str> = files.iter().map(|f| f.0.as_str()).collect();
+        let registered_names: Vec<&str> = registered.iter().map(|f| f.0.as_str()).collect();
+        assert_eq!(file_names, registered_names, "{}", p.name());
+        for ((file, text), (_, own)) in files.iter().zip(&registered) {
+            assert_eq!(text, own, "{}/{file} is not the registered text", p.name());
+        }
+        for (name, text) in own.text {
+            tera::Tera::default()
+                .add_raw_template(name, text)
+                .unwrap_or_else(|e| panic!("{}/{name}: {e:?}", p.name()));
+        }
+    }
 }
 
 #[test]

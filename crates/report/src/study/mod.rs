@@ -11,7 +11,7 @@ use std::sync::Arc;
 
 mod checks_run;
 mod corrections;
-mod energy_drift;
+pub mod energy_drift;
 mod experiment;
 mod frequency;
 mod friction;
@@ -20,6 +20,7 @@ mod paths;
 mod precision;
 mod sound;
 mod spin_down;
+pub mod steady_motion;
 mod toy;
 
 pub use checks_run::Checks;
@@ -33,6 +34,7 @@ pub use paths::Paths;
 pub use precision::Precision;
 pub use sound::Sound;
 pub use spin_down::SpinDown;
+pub use steady_motion::SteadyMotion;
 pub use toy::Toy;
 
 /// One step of a study that counts its work: `done` of `total`.
@@ -89,6 +91,7 @@ pub const ALL: &[&dyn Run] = &[
     &Paths,
     &SpinDown,
     &LabFrame,
+    &SteadyMotion,
     &Corrections,
     &Friction,
     &Toy,

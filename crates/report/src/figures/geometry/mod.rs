@@ -6,7 +6,7 @@
 //! \sin\alpha\,\hat{\mathbf z}$ (centre to contact, $\alpha$ below the horizontal) and
 //! $\hat{\mathbf 1} = -\sin\alpha\,\hat{\mathbf r} - \cos\alpha\,\hat{\mathbf z}$ (eq 8), so that
 //! $\hat{\mathbf 2} = \hat{\mathbf 3}\times\hat{\mathbf 1}$. The lengths $b$ and $r$ come from a
-//! steady motion of the model ([`steady_motion`]): $b = a\omega_{10}/\Omega_0$ (eq 28) and
+//! steady motion of the model (the study [`crate::study::SteadyMotion`]): $b = a\omega_{10}/\Omega_0$ (eq 28) and
 //! $r = b + a\cos\alpha_0$ (eq 29's $b = r - a\cos\alpha$). With the axis of the circular motion
 //! at the origin, the contact point is $r\hat{\mathbf r}$ and the centre of mass
 //! $r\hat{\mathbf r} - a\hat{\mathbf 3} = b\hat{\mathbf r} + a\sin\alpha\,\hat{\mathbf z}$ (eq 14).
@@ -17,9 +17,8 @@
 
 use crate::figures::chart::register_font;
 use crate::figures::FigureError;
+use crate::study::steady_motion::SteadyDisk;
 use nalgebra::Vector3;
-use physics::disk::Disk;
-use physics::model::steady::steady_motion;
 
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use serde::Serialize;
@@ -183,29 +182,24 @@ const VERMILION: [u8; 3] = [213, 94, 0];
 const GREEN: [u8; 3] = [0, 140, 100];
 
 impl Geometry {
-    /// The geometry of the disk in the steady motion at tilt `alpha0` with radius `b` of the
-    /// centre of mass's circle (eqs 28-29), seen from `view`.
-    pub fn steady(
-        disk: &Disk,
-        alpha0: f64,
-        b: f64,
-        heading: f64,
-        view: View,
-    ) -> Result<Self, FigureError> {
-        let m = steady_motion(disk, alpha0, b).map_err(|e| FigureError::Data(e.to_string()))?;
+    /// The geometry of the disk in the steady motion `steady` (eqs 28-29), heading `heading`,
+    /// seen from `view`.
+    pub fn steady(steady: &SteadyDisk, heading: f64, view: View) -> Self {
+        let (m, a) = (&steady.motion, steady.a);
+        let alpha0 = m.alpha;
         // Eq 28 read backwards: b = a omega_10 / Omega_0; then r = b + a cos(alpha0).
-        let b = disk.a * m.spin / m.precession;
-        let r = b + disk.a * alpha0.cos();
+        let b = a * m.spin / m.precession;
+        let r = b + a * alpha0.cos();
         let triad = Triad::new(alpha0, heading);
         let contact = triad.r * r;
-        let centre = contact + (triad.e3 * -disk.a);
-        Ok(Self {
+        let centre = contact + (triad.e3 * -a);
+        Self {
             title: format!(
                 "The rolling disk in steady motion (α = {:.0}°, b = {:.2}a)",
                 alpha0.to_degrees(),
-                b / disk.a
+                b / a
             ),
-            a: disk.a,
+            a,
             alpha: alpha0,
             heading,
             b,
@@ -216,7 +210,7 @@ impl Geometry {
             centre,
             contact,
             view,
-        })
+        }
     }
 
     /// The scene as 3-D shapes, in drawing order.

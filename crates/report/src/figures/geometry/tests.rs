@@ -2,6 +2,8 @@
 
 use super::draw::dash;
 use super::*;
+use physics::model::steady::steady_motion;
+use physics::Disk;
 
 #[test]
 fn the_triad_is_the_papers() {
@@ -31,7 +33,11 @@ fn drawn_arrows_point_along_the_triad_and_lengths_follow_eqs_28_29() {
         azimuth: -0.9,
         elevation: 0.4,
     };
-    let g = Geometry::steady(&disk, 1.0, 0.6 * disk.a, 1.9, view).unwrap();
+    let steady = SteadyDisk {
+        a: disk.a,
+        motion: steady_motion(&disk, 1.0, 0.6 * disk.a).unwrap(),
+    };
+    let g = Geometry::steady(&steady, 1.9, view);
     assert!((g.b - 0.6 * disk.a).abs() < 1e-15);
     assert!((g.r - (0.6 + 1f64.cos()) * disk.a).abs() < 1e-15);
     // The centre is at height a sin(alpha), horizontal distance b from the axis.

@@ -15,7 +15,10 @@ pub struct Coverage;
 const TEMPLATES: Templates = Templates {
     html: include_str!("../../../../../templates/parts/coverage/section.html.tera"),
     tex: include_str!("../../../../../templates/parts/coverage/section.tex.tera"),
-    text: &[],
+    text: &[(
+        "summary",
+        include_str!("../../../../../templates/parts/coverage/summary.txt.tera"),
+    )],
 };
 
 impl Part for Coverage {
@@ -41,7 +44,7 @@ impl Part for Coverage {
         Ok(Some(Draft {
             tables: section::tables(&stored),
             finish: Box::new(move |tables, figures| {
-                Ok(section::section(&stored, tables, figures.number("coverage")).into())
+                Ok(section::section(&stored, tables, figures.number("coverage"))?.into())
             }),
         }))
     }

@@ -3,7 +3,9 @@
 //! paragraph, a table of the fractions inside ±1σ and ±1.96σ with their binomial
 //! uncertainties, and the stored studies' own lines for the disclosure and the appendix.
 
+use crate::error::ReportError;
 use crate::number::{error, measured, prose};
+use crate::parts::prose::paragraph;
 use crate::study_table::{cite, StudySection, StudyTable};
 use experiment::coverage::Coverage;
 use experiment::coverage_record::StoredCoverage;
@@ -80,25 +82,24 @@ pub fn tables(stored: &[StoredCoverage]) -> Vec<StudyTable> {
     vec![t]
 }
 
-/// The section, its tables numbered already; `figure` is the coverage figure's number.
+/// The section, its tables numbered already; `figure` is the coverage figure's number. Its
+/// paragraph is `templates/parts/coverage/summary.txt.tera`.
 pub fn section(
     stored: &[StoredCoverage],
     tables: Vec<StudyTable>,
     figure: Option<usize>,
-) -> StudySection {
-    let found: Vec<String> = stored
+) -> Result<StudySection, ReportError> {
+    let found: Vec<serde_json::Value> = stored
         .iter()
         .map(|s| {
             let c = &s.coverage;
-            format!(
-                "on {} recordings β lies inside ±1σ in {} % and inside ±1.96σ in {} % of them, \
-                 t₀ in {} % and {} %",
-                s.recordings,
-                inside(c, &c.beta_pulls, 1.0),
-                inside(c, &c.beta_pulls, 1.96),
-                inside(c, &c.t0_pulls, 1.0),
-                inside(c, &c.t0_pulls, 1.96),
-            )
+            serde_json::json!({
+                "recordings": s.recordings,
+                "beta_1": inside(c, &c.beta_pulls, 1.0),
+                "beta_2": inside(c, &c.beta_pulls, 1.96),
+                "t0_1": inside(c, &c.t0_pulls, 1.0),
+                "t0_2": inside(c, &c.t0_pulls, 1.96),
+            })
         })
         .collect();
     let runs: Vec<String> = stored
@@ -106,22 +107,18 @@ pub fn section(
         .map(|s| format!("{} {}", s.coverage.runs, s.recordings))
         .collect();
     let refused: usize = stored.iter().map(|s| s.coverage.refused).sum();
-    let figure = figure.map_or(String::new(), |n| format!(", Figure {n}"));
     let mut made: Vec<String> = stored.iter().map(|s| s.date.clone()).collect();
     made.dedup();
-    let summary = format!(
-        "Recordings that follow eq 79 exactly (β = 2, Ω = 100 rad/s seven seconds before t₀; {}), \
-         each with its own noise seed, are analysed as a user's recording would \
-         be; a refused recording ({refused} in all) counts as outside. Against the 68.3 % and 95 % the intervals \
-         claim, {} ({}{figure}). A study of hundreds of recordings takes minutes, so the report \
-         draws the stored studies (snapshots/coverage.json, made {}); the suite re-runs their \
-         first recordings and finds the same pulls to the last bit.",
-        runs.join(" and "),
-        found.join("; "),
-        cite(&tables),
-        made.join(" and "),
-    );
-    StudySection {
+    let values = serde_json::json!({
+        "runs": runs,
+        "refused": refused,
+        "found": found,
+        "tables": cite(&tables),
+        "figure": figure,
+        "made": made,
+    });
+    let summary = paragraph(&super::TEMPLATES, "summary", &values)?;
+    Ok(StudySection {
         title: "Coverage of the stated uncertainties".into(),
         summary,
         tables,
@@ -134,5 +131,5 @@ pub fn section(
         ),
         output_title: "The stored studies as they record themselves: seeds, summary, command"
             .into(),
-    }
+    })
 }

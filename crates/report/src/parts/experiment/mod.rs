@@ -17,7 +17,16 @@ pub struct Experiment;
 const TEMPLATES: Templates = Templates {
     html: include_str!("../../../../../templates/parts/experiment/section.html.tera"),
     tex: include_str!("../../../../../templates/parts/experiment/section.tex.tera"),
-    text: &[],
+    text: &[
+        (
+            "summary",
+            include_str!("../../../../../templates/parts/experiment/summary.txt.tera"),
+        ),
+        (
+            "sound",
+            include_str!("../../../../../templates/parts/experiment/sound.txt.tera"),
+        ),
+    ],
 };
 
 impl Part for Experiment {
@@ -51,14 +60,14 @@ impl Part for Experiment {
         Ok(Some(Draft {
             tables: vec![section::table(synthetic)],
             finish: Box::new(move |tables, figures| {
-                let mut s = section::section(synthetic, tables);
+                let mut s = section::section(synthetic, tables)?;
                 if let Some(sound) = sound {
                     s.summary.push_str("\n\n");
-                    s.summary.push_str(&sound::paragraph(
+                    s.summary.push_str(&sound::paragraph_of(
                         sound,
                         figures.number("sound-spectrogram"),
                         figures.number("sound-residuals"),
-                    ));
+                    )?);
                     s.output.push_str(&format!("\n\n{}", sound.analysis));
                 }
                 let mut written = Written::from(s);

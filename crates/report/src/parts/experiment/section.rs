@@ -2,7 +2,9 @@
 //! analysis found, a table of its fits against the simulated model's truth, and the analysis's
 //! full text for the disclosure and the appendix.
 
+use crate::error::ReportError;
 use crate::number::{measured, prose, significant, to_place_of};
+use crate::parts::prose::paragraph;
 use crate::study_table::{cite, StudySection, StudyTable};
 use studies::synthetic::Synthetic;
 
@@ -56,53 +58,43 @@ pub fn table(e: &Synthetic) -> StudyTable {
     t
 }
 
-/// What the analysis found, in a paragraph citing `tables`.
-pub fn summary(e: &Synthetic, tables: &[StudyTable]) -> String {
+/// What the analysis found, in a paragraph citing `tables`
+/// (`templates/parts/experiment/summary.txt.tera`).
+pub fn summary(e: &Synthetic, tables: &[StudyTable]) -> Result<String, ReportError> {
     let a = &e.analysis;
     let w = &a.window;
     let (beta_sigma, t0_sigma) = a.stated_sigmas();
-    let mut s = format!(
-        "The analysis fits {} cycles between t = {:.2} s and {:.2} s, Ω rising to {:.0} rad/s. \
-         Eq 84 gives β = {} and eq 85 β = {} ({}).",
-        w.cycles.len(),
-        w.t_first,
-        w.t_last,
-        w.omega_last,
-        measured(a.eq84.beta, beta_sigma),
-        measured(a.eq85.beta, a.eq85.beta_sigma),
-        cite(tables)
-    );
-    if let Some(truth) = &e.trace.truth {
-        let ms = 1e3 * t0_sigma;
-        s.push_str(&format!(
-            " The model that made the signal has β = {}; eq 84's t₀ falls ({}) ms before the \
-             model's singular time",
-            significant(truth.beta),
-            measured(1e3 * (truth.t0 - a.eq84.t0), ms)
-        ));
-        match &e.motion_law {
-            Some(law) => s.push_str(&format!(
-                ", and eq 84 fitted to the model's exact motion (no light, no noise) falls {} ms \
-                 before it: that part of the error is the law's (the model is not eq 79 \
-                 exactly), the rest, ({}) ms, the analysis's own.",
-                to_place_of(1e3 * (truth.t0 - law.t0), ms),
-                measured(1e3 * (law.t0 - a.eq84.t0), ms)
-            )),
-            None => s.push('.'),
-        }
-    }
-    s
+    let ms = 1e3 * t0_sigma;
+    let truth = e.trace.truth.as_ref();
+    let values = serde_json::json!({
+        "cycles": w.cycles.len(),
+        "t_first": format!("{:.2}", w.t_first),
+        "t_last": format!("{:.2}", w.t_last),
+        "omega_last": format!("{:.0}", w.omega_last),
+        "beta_84": measured(a.eq84.beta, beta_sigma),
+        "beta_85": measured(a.eq85.beta, a.eq85.beta_sigma),
+        "tables": cite(tables),
+        "truth": truth.map(|t| serde_json::json!({
+            "beta": significant(t.beta),
+            "t0_before": measured(1e3 * (t.t0 - a.eq84.t0), ms),
+        })),
+        "law": truth.zip(e.motion_law.as_ref()).map(|(t, law)| serde_json::json!({
+            "t0_before": to_place_of(1e3 * (t.t0 - law.t0), ms),
+            "analysis": measured(1e3 * (law.t0 - a.eq84.t0), ms),
+        })),
+    });
+    paragraph(&super::TEMPLATES, "summary", &values)
 }
 
 /// The section, its tables numbered already.
-pub fn section(e: &Synthetic, tables: Vec<StudyTable>) -> StudySection {
-    StudySection {
+pub fn section(e: &Synthetic, tables: Vec<StudyTable>) -> Result<StudySection, ReportError> {
+    Ok(StudySection {
         title: "The experiment, simulated".into(),
-        summary: summary(e, &tables),
+        summary: summary(e, &tables)?,
         tables,
         output: text(e),
         output_title: "The analysis's full output: the window, the fits of eqs 84 and 85, the \
                        model choice, the checks of a spin-down, and the error split"
             .into(),
-    }
+    })
 }

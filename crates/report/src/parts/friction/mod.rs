@@ -16,7 +16,10 @@ pub struct Friction;
 const TEMPLATES: Templates = Templates {
     html: include_str!("../../../../../templates/parts/friction/section.html.tera"),
     tex: include_str!("../../../../../templates/parts/friction/section.tex.tera"),
-    text: &[],
+    text: &[(
+        "summary",
+        include_str!("../../../../../templates/parts/friction/summary.txt.tera"),
+    )],
 };
 
 impl Part for Friction {
@@ -49,7 +52,7 @@ impl Part for Friction {
             tables: section::tables(studies),
             finish: Box::new(move |tables, figures| {
                 let slip_stick = figures.numbers(&["slip-stick", "slip-stick-path"]);
-                Ok(section::section(studies, bench.paper, tables, &slip_stick).into())
+                Ok(section::section(studies, bench.paper, tables, &slip_stick)?.into())
             }),
         }))
     }

@@ -1,7 +1,9 @@
 //! The "Friction and contact" section as the paper would print it: a paragraph of what was run
 //! and found, and the studies' numbers in tables (the full program text is [`super::text`]).
 
+use crate::error::ReportError;
 use crate::number::{measured, places as fixed, prose, scientific};
+use crate::parts::prose::paragraph;
 use crate::study_table::{StudySection, StudyTable};
 use studies::sliding::Studies;
 
@@ -199,38 +201,38 @@ fn mechanisms(s: &Studies) -> StudyTable {
 }
 
 /// The section, its tables ([`tables`]) numbered already; `figures` are the numbers of the
-/// slip-stick figures.
+/// slip-stick figures. Its paragraph is `templates/parts/friction/summary.txt.tera`.
 pub fn section(
     s: &Studies,
     paper: &paper::Paper,
     tables: Vec<StudyTable>,
     figures: &[usize],
-) -> StudySection {
-    let mut summary = summary(s, paper, &tables);
-    if let [first, second, ..] = figures {
-        summary.push_str(&format!(
-            " Figures {first} and {second} show a run that slips and sticks."
-        ));
-    }
-    StudySection {
+) -> Result<StudySection, ReportError> {
+    Ok(StudySection {
         title: "Friction and contact".into(),
-        summary,
+        summary: summary(s, paper, &tables, figures)?,
         tables,
         output: prose(&super::text::text(s, paper)),
         output_title: "The studies' full output: every run, the fall study run by run, the notes"
             .into(),
-    }
+    })
 }
 
-/// "Table N", the number of the `i`th of `tables`.
+/// " (Table N)", the number of the `i`th of `tables`.
 fn table(tables: &[StudyTable], i: usize) -> String {
     tables
         .get(i)
         .map_or(String::new(), |t| format!(" (Table {})", t.number))
 }
 
-/// What was run and what was found, in a paragraph citing `tables` (as [`tables`] orders them).
-pub fn summary(s: &Studies, paper: &paper::Paper, tables: &[StudyTable]) -> String {
+/// What was run and what was found, in a paragraph citing `tables` (as [`tables`] orders them)
+/// and the slip-stick `figures`.
+pub fn summary(
+    s: &Studies,
+    paper: &paper::Paper,
+    tables: &[StudyTable],
+    figures: &[usize],
+) -> Result<String, ReportError> {
     let (lo, hi) = s
         .slip_onset
         .iter()
@@ -253,42 +255,23 @@ pub fn summary(s: &Studies, paper: &paper::Paper, tables: &[StudyTable]) -> Stri
         .filter(|r| r.gives(2.0))
         .map(|r| r.mechanism.as_str())
         .collect();
-    format!(
-        "Eq 42's bound on b differs from the largest b that rolls by {lo:.1} % to {hi:.0} %{}. \
-         On {held_below} of the {} tables with less friction than eq 43 requires, \
-         part of the range of negative b still rolls{}. Steady rolls that eq 42 says must slip are \
-         followed as they slip{}, and a disk launched nearly upright as it rises{}. The \
-         spinning-down disk of \
-         eqs 80-81 {}{}. Of the dissipation mechanisms, {} gives the paper's β = 2{}. {}",
-        table(tables, 0),
-        below.len(),
-        table(tables, 1),
-        table(tables, 2),
-        table(tables, 3),
-        if never.is_empty() {
-            "slips or lifts on every table".to_string()
-        } else {
-            format!(
-                "neither slips nor lifts only at μ = {}; with less friction it slips first",
-                never.join(", ")
-            )
-        },
-        table(tables, 4),
-        if two.is_empty() {
-            "none".to_string()
-        } else {
-            two.join(", ")
-        },
-        table(tables, 5),
-        fall(&s.fall, paper),
-    )
+    let values = serde_json::json!({
+        "lo": format!("{lo:.1}"),
+        "hi": format!("{hi:.0}"),
+        "held_below": held_below,
+        "below": below.len(),
+        "cite": (0..6).map(|i| table(tables, i)).collect::<Vec<_>>(),
+        "never": never,
+        "two": two,
+        "fall": fall(&s.fall, paper),
+        "slip_stick": figures,
+    });
+    paragraph(&super::TEMPLATES, "summary", &values)
 }
 
-/// The fall study in a sentence: how fast the disk falls, and how often to the claimed tilt.
-fn fall(f: &studies::sliding::fall::Fall, paper: &paper::Paper) -> String {
-    let Some((claimed, within)) = super::text::fall_claim(paper) else {
-        return String::new();
-    };
+/// The fall study's numbers: how fast the disk falls, and how often to the claimed tilt.
+fn fall(f: &studies::sliding::fall::Fall, paper: &paper::Paper) -> Option<serde_json::Value> {
+    let (claimed, within) = super::text::fall_claim(paper)?;
     let (lo, hi) = (claimed * (1.0 - within), claimed * (1.0 + within));
     let slowest = f
         .cases
@@ -300,11 +283,12 @@ fn fall(f: &studies::sliding::fall::Fall, paper: &paper::Paper) -> String {
         .iter()
         .filter(|c| c.fell_to_deg.is_some_and(|x| (lo..=hi).contains(&x)))
         .count();
-    format!(
-        "From unstable steady motion at large tilt the disk does fall quickly (within \
-         {slowest:.2} precession periods), but to about {claimed:.0}° ({lo:.0}° to {hi:.0}°) in \
-         {held} of {} runs: the tilt it falls to depends on where it starts (each run is in the \
-         full output).",
-        f.cases.len()
-    )
+    Some(serde_json::json!({
+        "slowest": format!("{slowest:.2}"),
+        "claimed": format!("{claimed:.0}"),
+        "lo": format!("{lo:.0}"),
+        "hi": format!("{hi:.0}"),
+        "held": held,
+        "runs": f.cases.len(),
+    }))
 }

@@ -15,7 +15,10 @@ pub struct Precision;
 const TEMPLATES: Templates = Templates {
     html: include_str!("../../../../../templates/parts/precision/section.html.tera"),
     tex: include_str!("../../../../../templates/parts/precision/section.tex.tera"),
-    text: &[],
+    text: &[(
+        "summary",
+        include_str!("../../../../../templates/parts/precision/summary.txt.tera"),
+    )],
 };
 
 impl Part for Precision {
@@ -44,7 +47,7 @@ impl Part for Precision {
         Ok(Some(Draft {
             tables: section::tables(precision),
             finish: Box::new(move |tables, figures| {
-                Ok(section::section(precision, tables, figures.number("work-precision")).into())
+                Ok(section::section(precision, tables, figures.number("work-precision"))?.into())
             }),
         }))
     }

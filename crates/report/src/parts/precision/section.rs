@@ -2,8 +2,10 @@
 //! range of steps or tolerances, as a paragraph, a table of what each method costs for an
 //! accuracy, and every run's numbers for the disclosure and the appendix (and `report.json`).
 
+use crate::error::ReportError;
 use crate::json::PrecisionRecord;
 use crate::number::{error, places, scientific};
+use crate::parts::prose::paragraph;
 use crate::study_table::{cite, StudySection, StudyTable};
 use physics::solve::Method;
 use studies::precision::{reference, Series, Study};
@@ -97,7 +99,12 @@ pub fn records(study: &Study) -> Vec<PrecisionRecord> {
 }
 
 /// The section, its tables numbered already; `figure` is the work-precision figure's number.
-pub fn section(study: &Study, tables: Vec<StudyTable>, figure: Option<usize>) -> StudySection {
+/// Its paragraph is `templates/parts/precision/summary.txt.tera`.
+pub fn section(
+    study: &Study,
+    tables: Vec<StudyTable>,
+    figure: Option<usize>,
+) -> Result<StudySection, ReportError> {
     let costs: Vec<String> = study
         .series
         .iter()
@@ -107,7 +114,6 @@ pub fn section(study: &Study, tables: Vec<StudyTable>, figure: Option<usize>) ->
         })
         .collect();
     let runs: usize = study.series.iter().map(|s| s.points.len()).sum();
-    let figure = figure.map_or(String::new(), |n| format!("Figure {n}, "));
     let rtols = study
         .series
         .iter()
@@ -117,24 +123,23 @@ pub fn section(study: &Study, tables: Vec<StudyTable>, figure: Option<usize>) ->
     let (tightest, loosest) = rtols.fold((f64::INFINITY, 0.0_f64), |(lo, hi), r| {
         (lo.min(r), hi.max(r))
     });
-    let summary = format!(
-        "The benchmark scene is integrated {runs} times: by RK4 at fixed steps and by DOPRI5 and \
-         DOP853 at tolerances from {} to {}, each run's error measured against a reference ({}) \
-         whose own error is below {}. For a largest relative error of {} over the run, {} \
-         right-hand-side evaluations ({figure}{}).",
-        scientific(loosest, 1),
-        scientific(tightest, 1),
-        reference::label(&study.reference.trace.settings),
-        error(study.reference.uncertainty),
-        error(TARGET),
-        costs.join(", "),
-        cite(&tables),
-    );
-    StudySection {
+    let values = serde_json::json!({
+        "runs": runs,
+        "loosest": scientific(loosest, 1),
+        "tightest": scientific(tightest, 1),
+        "reference": reference::label(&study.reference.trace.settings),
+        "reference_error": error(study.reference.uncertainty),
+        "target": error(TARGET),
+        "costs": costs,
+        "figure": figure,
+        "tables": cite(&tables),
+    });
+    let summary = paragraph(&super::TEMPLATES, "summary", &values)?;
+    Ok(StudySection {
         title: "Speed against accuracy".into(),
         summary,
         tables,
         output: output(study),
         output_title: "Every run: its evaluations and errors".into(),
-    }
+    })
 }

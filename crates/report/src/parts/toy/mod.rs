@@ -17,7 +17,10 @@ pub struct Toy;
 const TEMPLATES: Templates = Templates {
     html: include_str!("../../../../../templates/parts/toy/section.html.tera"),
     tex: include_str!("../../../../../templates/parts/toy/section.tex.tera"),
-    text: &[],
+    text: &[(
+        "summary",
+        include_str!("../../../../../templates/parts/toy/summary.txt.tera"),
+    )],
 };
 
 impl Part for Toy {
@@ -51,7 +54,7 @@ impl Part for Toy {
             tables: section::tables(toy),
             finish: Box::new(move |tables, figures| {
                 let agreement = figures.numbers(&["peer-tilt", "peer-difference"]);
-                Ok(section::section(toy, tables, &agreement).into())
+                Ok(section::section(toy, tables, &agreement)?.into())
             }),
         }))
     }

@@ -2,7 +2,9 @@
 //! tool, and what the toy's thickness does to the paper's numbers, as tables and a paragraph
 //! that says, number by number, whether the paper's conclusion survives for the toy.
 
+use crate::error::ReportError;
 use crate::number::{error, places, scientific};
+use crate::parts::prose::paragraph;
 use crate::study_table::{StudySection, StudyTable};
 use std::fmt::Write;
 use studies::peer::stored::{Differences, StoredComparison};
@@ -256,14 +258,18 @@ fn fall(t: &Thickness) -> StudyTable {
 
 /// The section, its tables ([`tables`]) numbered already; `figures` are the numbers of the
 /// agreement figures.
-pub fn section(t: &Toy, tables: Vec<StudyTable>, figures: &[usize]) -> StudySection {
-    StudySection {
+pub fn section(
+    t: &Toy,
+    tables: Vec<StudyTable>,
+    figures: &[usize],
+) -> Result<StudySection, ReportError> {
+    Ok(StudySection {
         title: "The real toy, and an independent program".into(),
-        summary: summary(t, &tables, figures),
+        summary: summary(t, &tables, figures)?,
         output: output(&tables),
         output_title: "The toy's tables as text".into(),
         tables,
-    }
+    })
 }
 
 /// " (Table N)" for the `i`th of `tables`.
@@ -309,7 +315,7 @@ fn relocked(t: &Toy) -> String {
 
 /// What was compared and found, and for each of the paper's numbers whether its conclusion
 /// survives for the toy.
-fn summary(t: &Toy, tables: &[StudyTable], figures: &[usize]) -> String {
+fn summary(t: &Toy, tables: &[StudyTable], figures: &[usize]) -> Result<String, ReportError> {
     let at = t
         .peer
         .iter()
@@ -325,11 +331,6 @@ fn summary(t: &Toy, tables: &[StudyTable], figures: &[usize]) -> String {
         .iter()
         .map(|c| c.regularized.tilt)
         .fold(0.0, f64::max);
-    let figs = match figures {
-        [a, b, ..] => format!(" Figures {a} and {b} show the tilts and their differences."),
-        [a] => format!(" Figure {a} shows the differences."),
-        [] => String::new(),
-    };
     let th = &t.thickness;
     let change = |f: &dyn Fn(&studies::thickness::SteadyPair) -> f64| {
         th.steady
@@ -339,39 +340,14 @@ fn summary(t: &Toy, tables: &[StudyTable], figures: &[usize]) -> String {
             .join(", ")
     };
     let [thin, toy] = [&th.spin_down[0], &th.spin_down[1]];
-    format!(
-        "M. Batista's Euler disk program (Fortran 90, DOP853; a disk of finite thickness with \
-         a rounded rim, Coulomb static and kinetic friction, rolling and boring resistance) was \
-         run on {n} scenes, thin and thick{t0}. With its source's slip regularization \
-         (ε = 1e-3 m/s), {at} of the {n} agree with this tool to the peer's printed digits; \
-         the largest tilt difference is {worst} rad, where the peer's regularized friction \
-         creeps at a slip this tool ends. With ε = 1e-7 m/s, {sharp} of the {ns} runs stored with it \
-         agree to the printed digits{t1}. The runs that start rolling ({restarted}) are compared \
-         on the clock of the peer's run: after a relock found at its first print step, which it \
-         does not carry out, the peer restarts from the state one print step on with its clock \
-         set back to 0, so its later rows are labelled one print step early (read from its \
-         records); so compared they agree to {rest} rad with ε = 1e-7 m/s, what the print step \
-         it slides at its start leaves. {relocked} Its \
-         near-vertical smoothing (within 0.02 rad of upright) {smooth}, and its stops (the \
-         energy stop among them) {stops}.{figs} \
-         What the toy's thickness does to the paper's numbers{t2}: the steady precession of eq 29 \
-         changes by {om}, so eq 29 survives for the toy at the small tilts of a late spin-down \
-         and fails at large tilt; the frequency of small oscillations changes by {w}, the same \
-         pattern. The spin-down law's form survives (eq 85's exponent {te} for the toy, {ti} \
-         thin, β + 3 = 5), but its constant C is {cr} times the thin disk's (the printed eq 79's \
-         C is {pc} times the thin disk's simulated one: eq 73's 5/2 against the 3/2 of the \
-         disk's energy); the tilt where that law would lose contact is {lt} mrad for the toy \
-         against {li} mrad thin, yet neither run comes near it (least F_z / m g {nt} toy, {ni} \
-         thin), so the premise of eqs 80-81 fails for the toy as for the thin disk. From the \
-         thin disk's unstable steady rolls{t4}, the toy falls {falls}: \"to about 60°\" does not \
-         survive for the toy, which falls further. {eq30}",
-        n = t.peer.len(),
-        t0 = cite(tables, 0),
-        t1 = cite(tables, 1),
-        t2 = tables
+    let values = serde_json::json!({
+        "n": t.peer.len(),
+        "t0": cite(tables, 0),
+        "t1": cite(tables, 1),
+        "t2": tables
             .get(2..4)
             .map_or(String::new(), |t| format!(" ({})", crate::study_table::cite(t))),
-        smooth = {
+        "smooth": ({
             let closest = t
                 .peer
                 .iter()
@@ -388,8 +364,8 @@ fn summary(t: &Toy, tables: &[StudyTable], figures: &[usize]) -> String {
                     places(closest, 3)
                 )
             }
-        },
-        stops = {
+        }),
+        "stops": ({
             let early: Vec<&str> = t
                 .peer
                 .iter()
@@ -404,17 +380,17 @@ fn summary(t: &Toy, tables: &[StudyTable], figures: &[usize]) -> String {
                     early.join(", ")
                 )
             }
-        },
-        ns = t.peer.iter().filter(|c| c.sharp.is_some()).count(),
-        relocked = relocked(t),
-        restarted = t
+        }),
+        "ns": t.peer.iter().filter(|c| c.sharp.is_some()).count(),
+        "relocked": relocked(t),
+        "restarted": t
             .peer
             .iter()
             .filter(|c| c.restarted)
             .map(|c| c.name.as_str())
             .collect::<Vec<_>>()
             .join(", "),
-        rest = scientific(
+        "rest": scientific(
             t.peer
                 .iter()
                 .filter(|c| c.restarted)
@@ -422,18 +398,18 @@ fn summary(t: &Toy, tables: &[StudyTable], figures: &[usize]) -> String {
                 .fold(0.0, f64::max),
             2
         ),
-        worst = scientific(worst, 2),
-        om = change(&|r| r.toy / r.eq29 - 1.0),
-        w = change(&|r| r.thin_period / r.toy_period - 1.0),
-        te = places(toy.exponent, 2),
-        ti = places(thin.exponent, 2),
-        cr = places(toy.c / thin.c, 2),
-        pc = places(th.eq79_c / thin.c, 2),
-        lt = places(toy.loss_tilt * 1e3, 2),
-        li = places(thin.loss_tilt * 1e3, 2),
-        nt = places(toy.least_normal.0, 2),
-        t4 = cite(tables, 4),
-        falls = th
+        "worst": scientific(worst, 2),
+        "om": change(&|r| r.toy / r.eq29 - 1.0),
+        "w": change(&|r| r.thin_period / r.toy_period - 1.0),
+        "te": places(toy.exponent, 2),
+        "ti": places(thin.exponent, 2),
+        "cr": places(toy.c / thin.c, 2),
+        "pc": places(th.eq79_c / thin.c, 2),
+        "lt": places(toy.loss_tilt * 1e3, 2),
+        "li": places(thin.loss_tilt * 1e3, 2),
+        "nt": places(toy.least_normal.0, 2),
+        "t4": cite(tables, 4),
+        "falls": th
             .falls
             .iter()
             .map(|f| match f.fell_to_deg {
@@ -455,9 +431,13 @@ fn summary(t: &Toy, tables: &[StudyTable], figures: &[usize]) -> String {
             })
             .collect::<Vec<_>>()
             .join("; "),
-        ni = places(thin.least_normal.0, 2),
-        eq30 = super::steady_table::sentence(&t.steady, &cite(tables, 5)),
-    )
+        "ni": places(thin.least_normal.0, 2),
+        "eq30": super::steady_table::sentence(&t.steady, &cite(tables, 5)),
+        "at": at,
+        "sharp": sharp,
+        "figures": figures,
+    });
+    paragraph(&super::TEMPLATES, "summary", &values)
 }
 
 /// `text` in ASCII, for the LaTeX appendix's listing: the Greek letters and sub- and
