@@ -55,5 +55,8 @@ fn every_equation_of_the_catalogue_is_registered_and_read_from_its_latex() {
         assert_eq!(e.label, entry.label);
     }
     // The registry runs its checks as registered: eq 1 is a consistent definition.
-    assert_eq!((all[0].check)(&Bench::default()).verdict, Verdict::Definition);
+    assert_eq!(
+        (all[0].check)(&Bench::default()).verdict,
+        Verdict::Definition
+    );
 }
