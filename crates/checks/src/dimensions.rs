@@ -56,7 +56,7 @@ pub fn claim_unit(unit: &str) -> Option<Dimension> {
     let inner = unit.strip_prefix("sqrt(").and_then(|u| u.strip_suffix(')'));
     let tokens: Vec<&str> = inner
         .unwrap_or(unit)
-        .split(|c: char| c == ' ' || c == '/' || c == '(' || c == ')')
+        .split([' ', '/', '(', ')'])
         .filter(|t| !t.is_empty())
         .map(|t| t.split('^').next().unwrap_or(t))
         .collect();

@@ -58,7 +58,7 @@ impl Finding {
     /// Whether the verdict is the same under every alternative the check tried; `None` when it
     /// tried none.
     pub fn robust(&self) -> Option<bool> {
-        (!self.robustness.is_empty()).then(|| !matches!(self.verdict, Verdict::DependsOn { .. }))
+        (!self.robustness.is_empty()).then_some(!matches!(self.verdict, Verdict::DependsOn { .. }))
     }
 
     /// The verdict under the reading the finding was made under: the first alternative's for a
