@@ -1,6 +1,7 @@
 //! The mutation suite over the equations whose claims are evaluated from the paper's LaTeX:
-//! every mutant of an equation's printed text must be killed by the check of that equation,
-//! except the survivors listed here with the reason each cannot be told apart.
+//! every mutant of an equation's printed text must be killed by the check of that equation (a
+//! failure with a verdict: a check that could not evaluate a mutant has not killed it), except
+//! the survivors listed here with the reason each cannot be told apart.
 
 use checks::equations::{from_latex, Bench};
 use checks::mutation::{mutation_scores, StoredScores};
@@ -24,6 +25,12 @@ fn every_mutant_of_the_printed_equations_is_killed() {
             "eq {:2}: {}/{} killed by its {} check",
             s.equation, s.killed, s.mutants, s.judged_by
         );
+        for change in &s.unevaluated {
+            eprintln!(
+                "eq {}: its check could not evaluate the mutant {change}",
+                s.equation
+            );
+        }
         for change in &s.survivors {
             let explained = EXPLAINED
                 .iter()

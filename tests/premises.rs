@@ -14,10 +14,17 @@ fn name(c: &Checked) -> String {
     }
 }
 
+/// A verdict that does not establish what it checks: a failure, or one that depends on a
+/// choice the paper leaves open, or a dimensional slip (a premise with either is not one to rest
+/// on).
 fn failing(v: &Verdict) -> bool {
     matches!(
         v,
-        Verdict::Fails | Verdict::PremiseFails | Verdict::Restates { .. }
+        Verdict::Fails
+            | Verdict::PremiseFails
+            | Verdict::Restates { .. }
+            | Verdict::DependsOn { .. }
+            | Verdict::DimensionalSlip
     )
 }
 

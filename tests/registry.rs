@@ -72,7 +72,8 @@ fn every_check_fails_when_its_claim_is_perturbed() {
             .and_then(|k| k.rule.as_ref());
         for p in mutation_moves(rule, holds) {
             let f = (c.check)(&Bench::perturbed(p));
-            if f.verdict != Verdict::Fails {
+            // A verdict that depends on a choice is judged under the reading it was made in.
+            if f.as_read() != Verdict::Fails {
                 survivors.push(format!("{} under {p:+e}: {}", c.id, f.verdict));
             }
         }
@@ -106,4 +107,40 @@ fn every_equation_and_claim_is_checked_or_says_why_not() {
             c.id
         );
     }
+}
+
+/// A printed inequality that can be evaluated and points the wrong way is a failure with its
+/// explanation, never a check that could not run: `check --paper DIR` with eq 30's `>`
+/// reversed reports eq 30 as failing and exits 0.
+#[test]
+fn a_reversed_inequality_fails_and_says_why() {
+    let dir = crate::common::temp_dir("registry", "reversed-30");
+    let printed = "latex: 'b > - \\frac{a k \\cos\\alpha_0}{2k + 1}'";
+    let yaml = paper::Texts::BUILT_IN.equations;
+    assert!(yaml.contains(printed), "eq 30 as printed");
+    let reversed = yaml.replacen(printed, &printed.replacen(" > ", " < ", 1), 1);
+    std::fs::write(dir.join("equations.yaml"), reversed).unwrap();
+    let (ok, out, err) =
+        crate::common::cli_in(&dir, &["check", "--paper", ".", "--only", "30", "--json"]);
+    assert!(ok, "exit status: {err}");
+    let doc: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let eq30 = doc["checks"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["equation"] == 30)
+        .expect("eq 30 in check --json");
+    let outcome = &eq30["outcome"];
+    assert_eq!(outcome["status"], "checked", "{outcome}");
+    assert_eq!(outcome["verdict"], "fails", "{outcome}");
+    let at = outcome["at"].as_str().unwrap();
+    assert!(
+        at.contains("the printed inequality holds below the edge and fails above it"),
+        "{at}"
+    );
+    assert!(
+        outcome["error"].as_f64().is_some_and(f64::is_finite),
+        "{outcome}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -132,8 +132,12 @@ pub(crate) fn print_table(checked: &[Checked]) {
                     "" | "1" => String::new(),
                     u => format!(" {u}"),
                 };
+                let verdict = match f.verdict {
+                    ::checks::finding::Verdict::Fails => "FAILS".to_string(),
+                    v => v.to_string().to_uppercase(),
+                };
                 println!(
-                    "\n{} FAILS: {}\n  claimed {:.9e}{unit}, reference {:.9e}{unit}, error {:.3e} > {:.3e} ({})\n  at {}",
+                    "\n{} {verdict}: {}\n  claimed {:.9e}{unit}, reference {:.9e}{unit}, error {:.3e} > {:.3e} ({})\n  at {}",
                     c.subject.name(),
                     f.compared,
                     f.claimed,
@@ -143,6 +147,15 @@ pub(crate) fn print_table(checked: &[Checked]) {
                     f.tolerance.rule,
                     f.at
                 );
+                for a in &f.robustness {
+                    println!(
+                        "  {}: {}: reference {:.6e}{unit}, {}",
+                        a.choice, a.alternative, a.reference, a.verdict
+                    );
+                }
+                if !c.dimensions.starts_with("consistent") {
+                    println!("  dimensions: {}", c.dimensions);
+                }
                 if let Some(cause) = &c.cause {
                     println!("  cause: {}", cause.describe());
                 }

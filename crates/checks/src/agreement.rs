@@ -43,6 +43,8 @@ pub(crate) fn attach_premises(bench: &Bench, checked: &mut [Checked]) {
                             | Verdict::PremiseFails
                             | Verdict::Restates { .. }
                             | Verdict::UnitMisprint
+                            | Verdict::DependsOn { .. }
+                            | Verdict::DimensionalSlip
                     )
                 })
             })

@@ -300,12 +300,16 @@ fn run_jobs(
                         ),
                         (None, _) => Ok(check(bench)),
                     };
+                let finding = finding.and_then(|f| evaluated(f, bench));
+                let dimensions = crate::dimensions::of(bench, &subject, finding.as_ref().ok());
+                let finding = finding.map(|f| crate::dimensions::slip(&subject, f, &dimensions));
                 let checked = Checked {
                     subject,
                     section,
-                    finding: finding.and_then(|f| evaluated(f, bench)),
+                    finding,
                     derivation: derivation.map(|d| evaluated(d(bench), bench)),
                     cause: None,
+                    dimensions,
                 };
                 progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
                 checked
@@ -442,6 +446,10 @@ pub struct Tally {
     pub restated: usize,
     /// Numbers wrong in the unit printed beside them and right in the unit the text means.
     pub unit_misprints: usize,
+    /// Verdicts that change under a reasonable alternative to a choice the paper leaves open.
+    pub depends: usize,
+    /// Printed relations right up to a dropped factor with a dimension.
+    pub dimensional_slips: usize,
     /// Could not run.
     pub not_run: usize,
 }
@@ -457,6 +465,8 @@ impl Tally {
             + self.fails
             + self.restated
             + self.unit_misprints
+            + self.depends
+            + self.dimensional_slips
             + self.not_run
     }
 
@@ -479,6 +489,8 @@ impl Tally {
                 "fail as the equation they restate (counted there)",
             ),
             (self.unit_misprints, "unit misprints"),
+            (self.depends, "depend on a choice the paper leaves open"),
+            (self.dimensional_slips, "dimensional slips"),
             (self.not_run, "could not run"),
         ] {
             if n > 0 {
@@ -504,6 +516,8 @@ impl Tally {
                     Verdict::Fails => t.fails += 1,
                     Verdict::Restates { .. } => t.restated += 1,
                     Verdict::UnitMisprint => t.unit_misprints += 1,
+                    Verdict::DependsOn { .. } => t.depends += 1,
+                    Verdict::DimensionalSlip => t.dimensional_slips += 1,
                 },
             }
         }

@@ -46,4 +46,7 @@ pub struct Checked {
     pub derivation: Option<Result<Finding, String>>,
     /// For a failing equation: root cause, inherited, or undetermined ([`crate::cause`]).
     pub cause: Option<Cause>,
+    /// Its dimensional analysis: `consistent`, or where and how it is not
+    /// ([`crate::dimensions`]).
+    pub dimensions: String,
 }

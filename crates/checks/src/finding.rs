@@ -82,6 +82,18 @@ pub enum Verdict {
     /// means ("Hz" for rad/s, "g-cm^-1-s" for g/(cm s)): a unit misprint, reported as one and
     /// never silently read in the unit meant. The finding's `at` gives both readings.
     UnitMisprint,
+    /// The verdict changes under a reasonable alternative to a choice the paper leaves open
+    /// (where a claim is evaluated, where a dissipative torque acts): the finding's `robustness`
+    /// gives each alternative's value and verdict, the first being the reading it was made
+    /// under ([`crate::robustness`]).
+    DependsOn {
+        /// The choice, in words.
+        choice: &'static str,
+    },
+    /// A printed relation right up to a factor with a dimension: it drops a factor of the
+    /// physics (`L = -Omega 3-hat` for $-k m a^2\Omega\hat{\mathbf 3}$), its direction right.
+    /// The subject's dimensional analysis names the factor.
+    DimensionalSlip,
 }
 
 impl Verdict {
@@ -90,7 +102,11 @@ impl Verdict {
     pub fn passes(&self) -> bool {
         !matches!(
             self,
-            Verdict::Fails | Verdict::Restates { .. } | Verdict::UnitMisprint
+            Verdict::Fails
+                | Verdict::Restates { .. }
+                | Verdict::UnitMisprint
+                | Verdict::DependsOn { .. }
+                | Verdict::DimensionalSlip
         )
     }
 }
@@ -111,6 +127,8 @@ impl fmt::Display for Verdict {
                  times the reference's)"
             ),
             Verdict::UnitMisprint => write!(f, "unit misprint (right in the unit meant)"),
+            Verdict::DependsOn { choice } => write!(f, "depends on {choice}"),
+            Verdict::DimensionalSlip => write!(f, "dimensional slip"),
             Verdict::Restates { equation } => {
                 write!(
                     f,
@@ -228,11 +246,27 @@ impl Worst {
         unit: &str,
         at: impl FnOnce() -> String,
     ) {
+        let e = (claimed - reference).abs() / scale;
+        self.add_error(claimed, reference, e, unit, at);
+    }
+
+    /// Records one comparison whose error is not a difference of the two values: `error` is
+    /// what the comparison measured (infinite if it is not a number), `claimed` and `reference`
+    /// are what it shows beside it.
+    pub fn add_error(
+        &mut self,
+        claimed: f64,
+        reference: f64,
+        error: f64,
+        unit: &str,
+        at: impl FnOnce() -> String,
+    ) {
         self.points += 1;
-        let mut e = (claimed - reference).abs() / scale;
-        if !e.is_finite() {
-            e = f64::INFINITY;
-        }
+        let e = if error.is_finite() {
+            error
+        } else {
+            f64::INFINITY
+        };
         if e > self.error || self.points == 1 {
             self.error = e;
             self.claimed = claimed;
@@ -276,6 +310,10 @@ pub struct Finding {
     /// The premises (claim ids, or `eq N`) that rest under it and fail, when its verdict is
     /// [`Verdict::PremiseFails`].
     pub premises_failing: Vec<String>,
+    /// The verdicts under the alternatives to the choices the paper leaves open, the reading
+    /// this finding was made under first ([`crate::robustness`]); empty where the check tries
+    /// none.
+    pub robustness: Vec<crate::robustness::Alternative>,
 }
 
 /// One comparison in the paper's terms: a named quantity, the value the paper prints (or
@@ -377,6 +415,7 @@ impl Finding {
             shown_by: None,
             headline: None,
             premises_failing: Vec::new(),
+            robustness: Vec::new(),
         }
     }
 
@@ -430,6 +469,7 @@ impl Finding {
             shown_by: None,
             headline: None,
             premises_failing: Vec::new(),
+            robustness: Vec::new(),
         }
     }
 

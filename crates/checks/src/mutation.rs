@@ -1,5 +1,8 @@
 //! The mutation suite: mutants of each equation's printed LaTeX ([`paper::mutate`]) run
-//! through the checks. A mutant is killed when the check of ITS equation fails; a survivor is
+//! through the checks. A mutant is killed when the check of ITS equation fails with a verdict:
+//! a check that could not evaluate the mutant (its claimed value is not a number) has not told
+//! it from the printed form, so such a mutant is listed apart (`unevaluated`), never counted as
+//! killed. A survivor is
 //! listed with what was changed, for a reader to judge (mathematically equivalent, outside the
 //! checked domain, or a weak check to fix). An equation whose printed form already fails its own
 //! check is judged instead by its derivation check (whether it follows from its printed
@@ -7,6 +10,7 @@
 //! eq 77 is wrong physically, but a mutant of it no longer follows from eq 76. Otherwise it has
 //! no score: a check that already fails would "kill" every mutant without telling anything.
 
+use crate::check::evaluated;
 use crate::equations::{derivations, equations};
 use crate::finding::Finding;
 use crate::finding::Verdict;
@@ -31,6 +35,11 @@ pub struct Score {
     /// by design (neither killed nor survivors).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub within_reading: Vec<String>,
+    /// Mutants whose check could not evaluate them (a claimed value that is not a number: a
+    /// symbol left without a value, the root of a negative number): neither killed nor
+    /// survivors, with what was changed and why.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub unevaluated: Vec<String>,
     /// The printed equation itself fails its check: its mutants say nothing (a check that
     /// already fails "kills" everything), so none are run.
     pub printed_fails: bool,
@@ -80,12 +89,13 @@ pub fn mutation_scores(
             killed: 0,
             survivors: Vec::new(),
             within_reading: Vec::new(),
+            unevaluated: Vec::new(),
             printed_fails,
             judged_by: judged_by.into(),
         };
         // The mutants of one equation are independent: checked in parallel on rayon's pool,
         // collected in their order, so the score does not depend on the thread count.
-        let verdicts: Vec<(Verdict, _)> = ms
+        let verdicts: Vec<(Result<Verdict, String>, _)> = ms
             .into_par_iter()
             .map(|m| {
                 let paper = bench.paper.with_chains(n, m.chains);
@@ -93,14 +103,16 @@ pub fn mutation_scores(
                     paper: &paper,
                     ..*bench
                 };
-                (check(&b).verdict, m.change)
+                let verdict = evaluated(check(&b), &b).map(|f| f.verdict);
+                (verdict, m.change)
             })
             .collect();
         for (verdict, change) in verdicts {
             match verdict {
-                Verdict::Fails => score.killed += 1,
-                Verdict::Estimate { .. } => score.within_reading.push(change),
-                _ => score.survivors.push(change),
+                Ok(Verdict::Fails) => score.killed += 1,
+                Ok(Verdict::Estimate { .. }) => score.within_reading.push(change),
+                Ok(_) => score.survivors.push(change),
+                Err(why) => score.unevaluated.push(format!("{change} ({why})")),
             }
         }
         out.push(score);
@@ -173,6 +185,13 @@ impl Score {
                 "; {} within the estimate's reading (a constant moved inside its factor): {}",
                 self.within_reading.len(),
                 self.within_reading.join("; ")
+            ));
+        }
+        if !self.unevaluated.is_empty() {
+            text.push_str(&format!(
+                "; {} its check could not evaluate (not counted as killed): {}",
+                self.unevaluated.len(),
+                self.unevaluated.join("; ")
             ));
         }
         if !self.survivors.is_empty() {

@@ -8,6 +8,7 @@
 
 pub mod catalogue;
 pub mod correction;
+pub mod dimensions;
 pub mod eval;
 pub mod expr;
 pub mod forms;

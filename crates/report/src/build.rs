@@ -125,6 +125,7 @@ fn premises_figure(bench: &Bench, checked: &[Checked]) -> Figure {
             Verdict::Definition => Status::Definition,
             Verdict::Estimate { .. } => Status::Estimate,
             Verdict::PremiseFails => Status::PremiseFails,
+            Verdict::DependsOn { .. } | Verdict::DimensionalSlip => Status::Fails,
             Verdict::Fails | Verdict::Restates { .. } | Verdict::UnitMisprint => Status::Fails,
         },
         _ => Status::Unchecked,

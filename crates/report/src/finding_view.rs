@@ -39,8 +39,11 @@ pub(crate) fn view(f: &Finding) -> FindingView {
         Verdict::HoldsApproximately { .. } => "approx",
         Verdict::Definition => "definition",
         Verdict::Estimate { .. } => "estimate",
-        Verdict::PremiseFails => "premise",
-        Verdict::Fails | Verdict::Restates { .. } | Verdict::UnitMisprint => "fails",
+        Verdict::PremiseFails | Verdict::DependsOn { .. } => "premise",
+        Verdict::Fails
+        | Verdict::Restates { .. }
+        | Verdict::UnitMisprint
+        | Verdict::DimensionalSlip => "fails",
     };
     FindingView {
         method: f.method.to_string(),

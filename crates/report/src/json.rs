@@ -241,6 +241,8 @@ pub struct CheckRecord {
     pub cause: Option<Cause>,
     /// The cause in one sentence.
     pub cause_text: Option<String>,
+    /// Its dimensional analysis: `consistent`, or where and how it is not.
+    pub dimensions: String,
 }
 
 impl CheckRecord {
@@ -259,6 +261,7 @@ impl CheckRecord {
             derivation: derivation_outcome(c),
             cause: c.cause.clone(),
             cause_text: c.cause.as_ref().map(Cause::describe),
+            dimensions: c.dimensions.clone(),
         }
     }
 }
@@ -302,6 +305,41 @@ pub enum VerdictKind {
     Restates,
     /// Wrong in the unit printed, right in the unit the text means (`at` gives both).
     UnitMisprint,
+    /// Changes under an alternative the paper leaves open (`depends_on`, `robustness`).
+    Depends,
+    /// Right up to a dropped factor with a dimension (`dimensions` names it).
+    DimensionalSlip,
+}
+
+/// The verdict under one alternative reading of a choice the paper leaves open.
+#[derive(Debug, Clone, PartialEq, Serialize, JsonSchema)]
+pub struct AlternativeRecord {
+    /// The choice, in words.
+    pub choice: String,
+    /// This reading of it, with its parameters.
+    pub alternative: String,
+    /// The reference's value under it, in the outcome's unit.
+    pub reference: f64,
+    /// The verdict under it.
+    pub verdict: VerdictKind,
+}
+
+impl VerdictKind {
+    /// The word for a verdict.
+    pub fn of(v: &Verdict) -> Self {
+        match v {
+            Verdict::Holds => VerdictKind::Holds,
+            Verdict::HoldsApproximately { .. } => VerdictKind::HoldsApproximately,
+            Verdict::Definition => VerdictKind::Definition,
+            Verdict::Estimate { .. } => VerdictKind::Estimate,
+            Verdict::PremiseFails => VerdictKind::PremiseFails,
+            Verdict::Fails => VerdictKind::Fails,
+            Verdict::Restates { .. } => VerdictKind::Restates,
+            Verdict::UnitMisprint => VerdictKind::UnitMisprint,
+            Verdict::DependsOn { .. } => VerdictKind::Depends,
+            Verdict::DimensionalSlip => VerdictKind::DimensionalSlip,
+        }
+    }
 }
 
 /// An order-of-magnitude estimate's constant, against the reference's.
@@ -361,6 +399,15 @@ pub enum Outcome {
         /// For an order-of-magnitude estimate: its constant against the reference's.
         #[serde(default, skip_serializing_if = "Option::is_none")]
         estimate: Option<EstimateOutcome>,
+        /// For a verdict that depends on a choice the paper leaves open: the choice.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        depends_on: Option<String>,
+        /// The verdict under each alternative reading, the one it was made under first.
+        #[serde(default, skip_serializing_if = "Vec::is_empty")]
+        robustness: Vec<AlternativeRecord>,
+        /// Whether the verdict is the same under every alternative tried.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        robust: Option<bool>,
     },
     /// The check could not run.
     Error {
@@ -377,22 +424,13 @@ pub enum Outcome {
 impl Outcome {
     /// The outcome of a finding.
     pub fn of(f: &Finding) -> Self {
-        let (verdict, measured_order, claimed_order) = match f.verdict {
-            Verdict::Holds => (VerdictKind::Holds, None, None),
+        let verdict = VerdictKind::of(&f.verdict);
+        let (measured_order, claimed_order) = match f.verdict {
             Verdict::HoldsApproximately {
                 measured_order,
                 claimed_order,
-            } => (
-                VerdictKind::HoldsApproximately,
-                Some(measured_order),
-                Some(claimed_order),
-            ),
-            Verdict::Definition => (VerdictKind::Definition, None, None),
-            Verdict::Estimate { .. } => (VerdictKind::Estimate, None, None),
-            Verdict::PremiseFails => (VerdictKind::PremiseFails, None, None),
-            Verdict::Fails => (VerdictKind::Fails, None, None),
-            Verdict::Restates { .. } => (VerdictKind::Restates, None, None),
-            Verdict::UnitMisprint => (VerdictKind::UnitMisprint, None, None),
+            } => (Some(measured_order), Some(claimed_order)),
+            _ => (None, None),
         };
         Outcome::Checked {
             verdict,
@@ -424,6 +462,21 @@ impl Outcome {
                 }),
                 _ => None,
             },
+            depends_on: match f.verdict {
+                Verdict::DependsOn { choice } => Some(choice.to_string()),
+                _ => None,
+            },
+            robustness: f
+                .robustness
+                .iter()
+                .map(|a| AlternativeRecord {
+                    choice: a.choice.to_string(),
+                    alternative: a.alternative.clone(),
+                    reference: a.reference,
+                    verdict: VerdictKind::of(&a.verdict),
+                })
+                .collect(),
+            robust: f.robust(),
         }
     }
 

@@ -182,7 +182,9 @@ fn eq43(b: &Bench) -> Finding {
         edge_tolerance(),
     );
     let h = Headline::new(
-        "friction coefficient mu that steady motion with negative b needs (eq 43 bounds it)",
+        "friction coefficient mu that steady motion with negative b needs (eq 43 bounds it): \
+         unbounded, mu* = beta/(1 - beta) cot(alpha0)/(2k + 1) at b = beta times eq 30's edge; \
+         the value shown is where the samples stop, beta = 0.99",
         f.claimed,
         "implied",
         f.reference,

@@ -10,7 +10,7 @@
 //! eq 25 multiplied by $-k$).
 
 use crate::disk::Disk;
-use crate::model::dissipation::PowerLaw;
+use crate::model::dissipation::{Placement, PowerLaw};
 use crate::model::mechanism::Mechanism;
 use crate::model::{leading_state, Extras, Layout, Model, Motion, Quantity};
 use crate::solve::{Dynamics, State};
@@ -138,6 +138,8 @@ pub struct Rolling<const N: usize> {
     /// Mechanisms of dissipation from their physics, added to eq 75's law
     /// ([`crate::model::mechanism`]).
     pub mechanisms: Vec<Mechanism>,
+    /// Where eq 75's torque acts (against $\vec\omega$ unless set).
+    pub placement: Placement,
     layout: Layout,
 }
 
@@ -155,8 +157,15 @@ impl<const N: usize> Rolling<N> {
             disk,
             dissipation,
             mechanisms: Vec::new(),
+            placement: Placement::default(),
             layout,
         }
+    }
+
+    /// The same model with eq 75's torque along `placement`'s axis.
+    pub fn with_placement(mut self, placement: Placement) -> Self {
+        self.placement = placement;
+        self
     }
 
     /// The same model with these mechanisms of dissipation as well.
@@ -166,9 +175,9 @@ impl<const N: usize> Rolling<N> {
     }
 
     fn torque(&self, m: &Motion) -> [f64; 3] {
-        let mut n = self
-            .dissipation
-            .map_or([0.0; 3], |d| d.torque_per_ma2(&self.disk, m));
+        let mut n = self.dissipation.map_or([0.0; 3], |d| {
+            d.placed_torque_per_ma2(&self.disk, m, self.placement)
+        });
         for mech in &self.mechanisms {
             let t = mech.torque_per_ma2(&self.disk, m);
             for (n, t) in n.iter_mut().zip(t) {

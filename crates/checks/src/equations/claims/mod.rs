@@ -50,6 +50,7 @@ use std::f64::consts::{FRAC_PI_2, FRAC_PI_3, PI};
 mod frictionless;
 mod integrals;
 mod judge;
+mod leaves_table;
 mod motion;
 mod oscillation;
 mod rising;
@@ -63,6 +64,7 @@ use frictionless::{
 };
 use integrals::rolling_extra_integrals;
 pub use judge::with_printed_headline;
+use leaves_table::disk_leaves_table;
 use motion::{
     center_of_motion_constant, face_figure_rate_vanishes, k_rim_disk, k_uniform_disk,
     negative_b_friction_angle, no_steady_motion_beyond_vertical, slip_when_b_large,
@@ -74,11 +76,11 @@ use oscillation::{
 };
 use rising::rising_needs_slip;
 use spin_down::{
-    air_viscosity, contact_loss_omega, contact_loss_time, disk_leaves_table,
-    drag_exponent_linear_force, drag_exponent_moffatt, drag_exponent_quadratic_air,
-    eq73_second_approximation_sign, finite_time_singularity, larger_t0_lowers_beta,
-    omega_units_hz_vs_rad_per_s, one_period_remaining_omega, one_period_remaining_time,
-    summary_contact_lost_few_degrees, t0_after_last_peak,
+    air_viscosity, contact_loss_omega, contact_loss_time, drag_exponent_linear_force,
+    drag_exponent_moffatt, drag_exponent_quadratic_air, eq73_second_approximation_sign,
+    finite_time_singularity, larger_t0_lowers_beta, omega_units_hz_vs_rad_per_s,
+    one_period_remaining_omega, one_period_remaining_time, summary_contact_lost_few_degrees,
+    t0_after_last_peak,
 };
 
 /// How far the mutation test moves the printed number of a claim read by `rule` (relative, two

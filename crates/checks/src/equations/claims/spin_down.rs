@@ -6,9 +6,8 @@ use super::judge::{
 };
 use super::{
     bisect, c_fit, contact_loss_remaining, log_log_slope, mid, one_period_omega, rolling, solve,
-    steady_motion, unit_disk, Adiabatic, Bench, Disk, Dual64, DualNum, Event, Extras, Finding,
-    Headline, Method, Model, Motion, PowerLaw, Problem, Rates, Rolling, State, Tolerance, Worst,
-    PI, WIDTH,
+    unit_disk, Adiabatic, Bench, Disk, Dual64, DualNum, Event, Finding, Headline, Method, Motion,
+    PowerLaw, Problem, Rates, State, Tolerance, Worst, PI, WIDTH,
 };
 
 // ------------------------------------------------------------------------------ sec. 11
@@ -494,65 +493,4 @@ pub(super) fn summary_contact_lost_few_degrees(b: &Bench) -> Finding {
             1e3 * toy * (tilt(toy) / 1.0).powf((beta + 1.0) / (beta - 1.0))
         ),
     )
-}
-
-/// `disk-leaves-table`, the premise of eqs 80-81: when the rolling motion ends, the contact
-/// force $F_z$ vanishes and the disk leaves the table. The reference: the toy disk (a = 37.5 mm,
-/// k = 1/4, m = 0.4 kg) rolling with eq 75's drag ($\beta = 2$; $\epsilon$ = 1.2e-6 s², what
-/// the paper's fit means through its printed eq 79, and half and twice that) from steady $b = 0$
-/// motion at 0.15 rad until the tilt falls below 1e-4 rad, and the smallest
-/// $F_z/mg = 1 + (a/g)(\ddot\alpha\cos\alpha - \dot\alpha^2\sin\alpha)$ over the solver's steps
-/// (eq 20's exact contact force). It stays near 0.83: the disk keeps pressing on the table down
-/// to 1e-4 rad. FAILS.
-pub(super) fn disk_leaves_table(b: &Bench) -> Finding {
-    let disk = Disk {
-        a: 0.0375,
-        k: 0.25,
-        m: 0.4,
-        g: 9.81,
-    };
-    let floor = 1e-4;
-    let mut lowest: (f64, String) = (f64::INFINITY, String::new());
-    for epsilon in [0.6e-6, 1.2e-6, 2.4e-6] {
-        let law = PowerLaw { epsilon, beta: 2.0 };
-        let model = Rolling::<4>::new(disk, Extras::default(), Some(law));
-        let Ok(start) = steady_motion(&disk, 0.15, 0.0) else {
-            continue;
-        };
-        let y0 = model.state(&start);
-        let stop = Event::new("the tilt falls below 1e-4 rad", move |y: &State<4>| {
-            y[0] - floor
-        });
-        let Ok(sol) = solve(
-            Problem::new(&model, 0.0, y0, 120.0).stop_when(stop),
-            &b.settings(),
-        ) else {
-            continue;
-        };
-        let end = sol.y.last().map_or(f64::NAN, |y| y[0]);
-        for (t, y) in sol.t.iter().zip(&sol.y) {
-            let fz = rolling::contact_force(&disk, &model.motion(y), &model.rates(y))[0]
-                / (disk.m * disk.g);
-            if fz < lowest.0 {
-                lowest = (
-                    fz,
-                    format!(
-                        "epsilon = {epsilon:e} s^2: smallest F_z = {fz:.4} m g at t = {t:.4} s, \
-                         alpha = {:.3e} rad (the run ends at alpha = {end:.1e} rad, t = {:.3} s)",
-                        y[0],
-                        sol.t.last().copied().unwrap_or(f64::NAN)
-                    ),
-                );
-            }
-        }
-    }
-    let claimed = b.claim(printed(b, "disk-leaves-table"));
-    let mut w = Worst::default();
-    w.add_in(claimed, lowest.0, 1.0, "m g", || lowest.1.clone());
-    Finding::from_worst(
-        Method::Integration,
-        "smallest contact force F_z / m g along the toy disk's spin-down in the rolling model with \
-         eq 75's drag, against 0 (the disk leaves the table)",
-        w,
-        Tolerance::solver(b.rtol))
 }
