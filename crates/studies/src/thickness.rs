@@ -16,7 +16,7 @@
 //! $\alpha$ over 1 s (mean spacing of its maxima).
 //!
 //! **Spin-down** (eqs 76-79). Eq 75's power $P = -\epsilon m a g \Omega^\beta$ ($\beta = 2$,
-//! $\epsilon = 1.2\times10^{-6}$ s², the built-in spin-down's) as a torque against
+//! $\epsilon = 1.2\times10^{-6}$ s (its unit is s^(β−1)), the built-in spin-down's) as a torque against
 //! $\boldsymbol\omega$, from the steady $b = 0$ motion at 0.15 rad down to $10^{-4}$ rad. Eq 79's
 //! law $\Omega^{-(\beta+2)} = (t_0 - t)/C$ is fitted by least squares on the samples with
 //! $\alpha$ between [`FIT_TILTS`]; its exponent by eq 85, the slope of $\ln\dot\Omega$ against

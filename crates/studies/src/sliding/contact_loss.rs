@@ -8,7 +8,7 @@
 //! torque: [`physics::model::sliding::Sliding::drag_torque`]) for several $\mu$ and reports what
 //! happens first: the contact point starts to slip, the contact is lost, or the tilt reaches
 //! $10^{-4}$ rad. Start: the built-in spin-down scene (toy disk, steady $b = 0$ at
-//! $\alpha = 0.15$, $\epsilon = 1.2\times10^{-6}$ s², $\beta = 2$).
+//! $\alpha = 0.15$, $\epsilon = 1.2\times10^{-6}$ s (its unit is s^(β−1)), $\beta = 2$).
 //!
 //! After the first slip the contact creeps: the friction it needs stays at the edge of the cone
 //! while its direction turns with the precession, and the contact point slips at micrometres

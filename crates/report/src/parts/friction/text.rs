@@ -115,7 +115,7 @@ pub fn text(s: &Studies, paper: &paper::Paper) -> String {
     heading(
         &mut o,
         "Eqs 80-81's premise: the built-in spin-down (steady b = 0 at 0.15 rad, eq 75 with \
-         beta = 2, epsilon = 1.2e-6 s^2) on Coulomb tables, with eq 75's power as a torque",
+         beta = 2, epsilon = 1.2e-6 s, its unit s^(beta-1)) on Coulomb tables, with eq 75's power as a torque",
     );
     let _ = writeln!(
         o,

@@ -166,7 +166,7 @@ fn spin_down(t: &Thickness) -> StudyTable {
     let mut s = StudyTable::new(
         format!(
             "Eqs 79-81 for the thin disk and the toy: each spins down rolling from steady b = 0 \
-             at {SPIN_DOWN_START} rad under eq 75's power (β = {beta}, ε = {} s²) as a torque; \
+             at {SPIN_DOWN_START} rad under eq 75's power (β = {beta}, ε = {} s^(β−1)) as a torque; \
              eq 79's C and eq 85's exponent fitted for {} < α < {} rad; the tilt where the \
              fitted law α = A (t₀ − t)^(2/(β+2)) would need F_z < 0, on each disk's own centre \
              height; the least F_z / m g the run reaches.",
