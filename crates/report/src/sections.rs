@@ -37,7 +37,7 @@ pub fn sections(
 ) -> Result<Sections, ReportError> {
     let synthetic = results.required(&study::Experiment, "the report")?;
     let precision = results.required(&study::Precision, "the report")?;
-    let stored = experiment::coverage_record::stored().map_err(|e| e.to_string())?;
+    let stored = studies::coverage_record::stored().map_err(|e| e.to_string())?;
     let friction = results.get(&study::Friction).map(|f| &f.studies);
 
     let mut experiment_tables = vec![experiment_section::table(synthetic)];

@@ -221,7 +221,7 @@ pub struct Family {
     /// The figures' names.
     pub names: &'static [&'static str],
     /// The studies they are drawn from (none for the algebra of the geometry and the stability
-    /// map, nor for the coverage studies, which are stored: `experiment::coverage_record`).
+    /// map, nor for the coverage studies, which are stored: `studies::coverage_record`).
     pub needs: &'static [&'static dyn Run],
     /// Draws them from the results.
     pub build: fn(&Results) -> Result<Vec<Figure>, FigureError>,
@@ -257,7 +257,7 @@ pub const FAMILIES: &[Family] = &[
         names: &["coverage"],
         needs: &[],
         build: |_| {
-            let stored = ::experiment::coverage_record::stored().map_err(|e| e.to_string())?;
+            let stored = ::studies::coverage_record::stored().map_err(|e| e.to_string())?;
             Ok(vec![coverage::studies(&stored)])
         },
     },
