@@ -4,7 +4,9 @@
 //! is ([`RecordingInfo`]: format, rate, channels, length).
 //!
 //! The samples an encoder adds are left out: MP3's (its LAME header) and Ogg's by the decoder in
-//! gapless mode, M4A's by the file's edit list ([`mp4_edit`](crate::formats::mp4_edit)).
+//! gapless mode, M4A's by the file's edit list ([`mp4_edit`](crate::formats::mp4_edit)). A raw
+//! AAC stream (ADTS, a `.aac` file) records no encoder delay: the [`ADTS_PRIMING`] samples that
+//! AAC-LC encoders put first (ffmpeg's, FAAC's) are left out, and the format says so.
 //!
 //! The container is recognised by its first bytes, not by the file's name. Every file goes
 //! through [`read_bounded`] (size limit, regular files only); the decoded length is checked
@@ -23,6 +25,29 @@ use symphonia::core::io::MediaSourceStream;
 use symphonia::core::meta::MetadataOptions;
 use symphonia::core::probe::Hint;
 
+/// The priming samples an AAC-LC encoder puts before the sound (one frame of 1024, ffmpeg's and
+/// FAAC's), left out of a raw ADTS stream, which does not record its own.
+pub const ADTS_PRIMING: usize = 1024;
+
+/// Whether the first bytes are an ADTS frame header: the 12-bit sync word and layer 00 (MPEG
+/// audio's layers I-III, which share the sync word, have a non-zero layer).
+fn adts(bytes: &[u8]) -> bool {
+    bytes.len() > 1 && bytes[0] == 0xFF && bytes[1] & 0xF6 == 0xF0
+}
+
+/// A sound format recognised by its first bytes that no decoder here reads: Core Audio (CAF)
+/// and Ogg Opus.
+fn unread(bytes: &[u8]) -> Option<&'static str> {
+    let head = &bytes[..bytes.len().min(64)];
+    if head.starts_with(b"caff") {
+        Some("Core Audio (CAF)")
+    } else if head.starts_with(b"OggS") && head.windows(8).any(|w| w == b"OpusHead") {
+        Some("Ogg Opus")
+    } else {
+        None
+    }
+}
+
 /// The container, by the file's first bytes.
 fn container(bytes: &[u8]) -> Option<(&'static str, &'static str)> {
     let head = |s: &[u8]| bytes.starts_with(s);
@@ -34,6 +59,8 @@ fn container(bytes: &[u8]) -> Option<(&'static str, &'static str)> {
         Some(("Ogg", "ogg"))
     } else if bytes.len() > 8 && &bytes[4..8] == b"ftyp" {
         Some(("M4A/MP4", "m4a"))
+    } else if adts(bytes) {
+        Some(("raw AAC (ADTS)", "aac"))
     } else if head(b"ID3") || (bytes.len() > 1 && bytes[0] == 0xFF && bytes[1] & 0xE0 == 0xE0) {
         Some(("MP3", "mp3"))
     } else {
@@ -52,12 +79,31 @@ pub fn read_recording(
     parse_recording(bytes, &file, channels)
 }
 
+/// Whether the file at `path` is a sound recording by its first bytes (WAV, FLAC, Ogg, MP3,
+/// M4A or raw AAC), whatever its name; `false` when it cannot be read (the reader then says why).
+pub fn is_recording(path: &Path) -> bool {
+    use std::io::Read;
+    let mut head = [0u8; 12];
+    let n = std::fs::File::open(path)
+        .and_then(|f| f.take(12).read(&mut head))
+        .unwrap_or(0);
+    container(&head[..n]).is_some() || head[..n].starts_with(b"caff")
+}
+
 /// Decodes a recording's bytes; `file` names them in errors.
 pub fn parse_recording(
     bytes: Vec<u8>,
     file: &str,
     channels: Channels,
 ) -> Result<Recording, ExperimentError> {
+    if let Some(what) = unread(&bytes) {
+        return Err(refuse(
+            file,
+            what,
+            "this tool has no decoder for it".into(),
+            "convert it to WAV or FLAC (for example `ffmpeg -i FILE FILE.wav`) and analyse that",
+        ));
+    }
     let Some((format, ext)) = container(&bytes) else {
         return Err(refuse(
             file,
@@ -167,6 +213,16 @@ fn decode_compressed(
             }
             format!(
                 "{format}, its edit list's {} priming samples left out",
+                skip / ch
+            )
+        }
+        None if ext == "aac" => {
+            let ch = channels.max(1);
+            let skip = (ADTS_PRIMING * ch).min(out.len());
+            out.drain(..skip);
+            format!(
+                "{format}, {} encoder priming samples left out (a raw AAC stream does not record \
+                 its encoder's delay: these are AAC-LC encoders' usual {ADTS_PRIMING})",
                 skip / ch
             )
         }

@@ -150,21 +150,23 @@ pub fn simulate_motion(
     let to_start = solve(Problem::new(&model, 0.0, y0, t_start), &scene.settings)
         .map_err(|e| scene_err(e.to_string()))?;
     let (_, y_start) = to_start.last();
-    // 3. Sampled from there to the end.
+    // 3. Sampled from there to the end: every sample, or every `stride`-th where that would
+    // record more rows than the solver keeps, the samples between interpolated.
     let dt = 1.0 / rate;
-    let run = stopped(t_start, y_start, t_stop + 1.0, Some(dt))?;
+    let rows = (t_stop + 1.0 - t_start) * rate;
+    let stride = (rows / (0.9 * physics::budget::MAX_ROWS as f64))
+        .ceil()
+        .max(1.0) as usize;
+    let run = stopped(t_start, y_start, t_stop + 1.0, Some(stride as f64 * dt))?;
     let t_end = ended(&run)?;
     let (_, y_end) = run.last();
 
     let times: Vec<f64> = (0..samples).map(|j| j as f64 * dt).collect();
-    let mut alpha = vec![f64::NAN; samples];
-    let mut heading = vec![f64::NAN; samples];
     // The last point of a sampled solution is the event, off the grid: skip it.
     let on_grid = run.t.len().saturating_sub(1);
-    for (j, y) in run.y.iter().take(on_grid.min(samples)).enumerate() {
-        alpha[j] = y[0];
-        heading[j] = y[HEADING];
-    }
+    let coarse = |k: usize| -> Vec<f64> { run.y[..on_grid].iter().map(|y| y[k]).collect() };
+    let alpha = between(&coarse(0), stride, samples);
+    let heading = between(&coarse(HEADING), stride, samples);
 
     Ok(Motion {
         t: times,
@@ -181,4 +183,31 @@ pub fn simulate_motion(
             ),
         ),
     })
+}
+
+/// `samples` values at every sample from `coarse`, known at every `stride`-th: the known ones
+/// kept, those between by the cubic through the four nearest known ones (the two nearest at
+/// the ends), NaN past the last known one. With `stride` 1, `coarse` itself.
+fn between(coarse: &[f64], stride: usize, samples: usize) -> Vec<f64> {
+    let n = coarse.len();
+    (0..samples)
+        .map(|j| {
+            let (i, r) = (j / stride, j % stride);
+            if r == 0 {
+                return coarse.get(i).copied().unwrap_or(f64::NAN);
+            }
+            if i + 1 >= n {
+                return f64::NAN;
+            }
+            let x = r as f64 / stride as f64;
+            if i == 0 || i + 2 >= n {
+                return coarse[i] + x * (coarse[i + 1] - coarse[i]);
+            }
+            // Lagrange's cubic through the known points at -1, 0, 1, 2 (in strides).
+            let [a, b, c, d] = [coarse[i - 1], coarse[i], coarse[i + 1], coarse[i + 2]];
+            -a * x * (x - 1.0) * (x - 2.0) / 6.0 + b * (x + 1.0) * (x - 1.0) * (x - 2.0) / 2.0
+                - c * (x + 1.0) * x * (x - 2.0) / 2.0
+                + d * (x + 1.0) * x * (x - 1.0) / 6.0
+        })
+        .collect()
 }
