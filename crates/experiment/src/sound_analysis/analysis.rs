@@ -369,7 +369,11 @@ impl fmt::Display for SoundAnalysis {
         match (&self.phase, &self.phase_refused) {
             (Some(p), _) => writeln!(
                 f,
-                "  eq 79 on the phase (the result): beta = {:.5} +- {:.5}, t0 = {:.6} +- {:.6} s, ln C = {:.4} +- {:.4} ({:.1} turns in {} blocks, rms residual {:.4} rad, chi2/dof {:.2}; errors scaled by the residuals)",
+                "  eq 79 on the phase ({}): beta = {:.5} +- {:.5}, t0 = {:.6} +- {:.6} s, ln C = {:.4} +- {:.4} ({:.1} turns in {} blocks, rms residual {:.4} rad, chi2/dof {:.2}; errors scaled by the residuals)",
+                self.phase_implausible().map_or_else(
+                    || "the result".to_string(),
+                    |why| format!("not the result: {why}; the pitch's fit is reported")
+                ),
                 p.beta, p.beta_sigma, p.t0, p.t0_sigma, p.ln_c, p.ln_c_sigma, p.turns, p.n, p.rms, p.chi2_dof
             )
             .and_then(|()| match &self.turn_count {
@@ -416,14 +420,14 @@ impl SoundAnalysis {
     /// The result: eq 79 fitted to the phase when it was, else to the pitch track.
     pub fn law(&self) -> SoundLaw {
         match &self.phase {
-            Some(p) => SoundLaw {
+            Some(p) if self.phase_implausible().is_none() => SoundLaw {
                 beta: p.beta,
                 beta_sigma: p.beta_total(),
                 t0: p.t0,
                 t0_sigma: p.t0_total(),
                 from_phase: true,
             },
-            None => SoundLaw {
+            _ => SoundLaw {
                 beta: self.fit.beta,
                 beta_sigma: self.fit.beta_sigma,
                 t0: self.fit.t0,
@@ -431,6 +435,31 @@ impl SoundAnalysis {
                 from_phase: false,
             },
         }
+    }
+
+    /// Why the phase's fit cannot be the result, if it cannot; then [`law`](Self::law) is the
+    /// pitch track's fit. Eq 79's $t_0$ is where the disk stops: a $t_0$ more than three of its
+    /// sigmas before the middle of the last tracked frame contradicts a pitch that was heard;
+    /// and a $\beta$ whose standard uncertainty exceeds it is not determined by the fit.
+    pub fn phase_implausible(&self) -> Option<String> {
+        let p = self.phase.as_ref()?;
+        let last = self.track.points.last().map(|q| 0.5 * (q.a + q.b))?;
+        if p.t0 + 3.0 * p.t0_total() < last {
+            return Some(format!(
+                "its t0 = {:.4} +- {:.4} s is before the last tracked pitch, at {last:.4} s, \
+                 where the disk was still heard turning",
+                p.t0,
+                p.t0_total()
+            ));
+        }
+        let sigma = p.beta_total();
+        if sigma.is_nan() || sigma >= p.beta.abs() {
+            return Some(format!(
+                "its beta = {:.3} +- {sigma:.3} is not determined: the sigma is at least beta",
+                p.beta
+            ));
+        }
+        None
     }
 
     /// The analysis as pretty JSON.
