@@ -1,12 +1,12 @@
 //! The stored coverage studies the report draws (`snapshots/coverage.json`) are this code's:
 //! the first recordings of each are run again and must give the same pulls.
 
-use experiment::coverage_record::{run, stored, study, StoredCoverage};
+use studies::coverage_record::{run, stored, study, StoredCoverage};
 
 /// The studies, as `ROLLING_DISK_BLESS=1 cargo test --release --test integration coverage_record:: --
 /// --ignored` runs and stores them: 400 clean recordings (seeds 5000-5399) and 500 with every
 /// artifact (seeds 10000-10499), the same as the full studies of `tests/experiment.rs`, and 200
-/// phone sounds with hum (seeds 20000-20199, `experiment::sound_coverage`).
+/// phone sounds with hum (seeds 20000-20199, `studies::sound_coverage`).
 const STUDIES: [(&str, usize, u64, bool, bool); 3] = [
     ("clean", 400, 5000, false, false),
     ("artifact-laden", 500, 10_000, true, false),

@@ -1,10 +1,12 @@
 //! The experiment of section 11: synthetic traces, their analysis, CSV validation, the paper's
 //! numbers.
 
+use experiment::fit::crossover;
 use experiment::*;
 use physics::scene::Scene;
 use physics::Disk;
 use std::f64::consts::PI;
+use studies::coverage;
 
 /// A dissipative spin-down with exponent `beta` lasting about 9 s, started in its adiabatic
 /// state (steady b = 0 motion plus the drift of alpha that dissipation imposes) so that little

@@ -87,7 +87,7 @@ fn the_eq84_fit_alone_is_unbiased_on_exact_peak_times() {
 #[test]
 fn peak_timing_offsets_on_a_noise_free_law_trace() {
     use experiment::fit::fit_eq84;
-    use experiment::peaks::{find_peaks, noise_level, PeakSettings};
+    use experiment::light_analysis::peak_search::{find_peaks, noise_level, PeakSettings};
     let law = Law {
         beta: 2.0,
         c: 100f64.powi(4) * 7.0,

@@ -1,11 +1,13 @@
 //! The experiment of section 11 on files: scope CSVs and WAV recordings read (and refused with
 //! file and line), the command line end to end, the analysis written to a directory, the figures.
 
+use experiment::formats::input;
 use experiment::numbers::numbers;
 use experiment::*;
 use paper::Paper;
 use physics::Disk;
 use std::f64::consts::PI;
+use studies::coverage;
 
 #[test]
 fn a_trace_survives_its_csv() {

@@ -13,6 +13,8 @@ mod experiment;
 mod experiment_audio;
 mod experiment_bias;
 mod experiment_coverage_diagnosis;
+mod experiment_fallback;
+mod experiment_formats;
 mod experiment_hum;
 mod experiment_inputs;
 mod experiment_models;

@@ -198,13 +198,16 @@ fn experiment_analyze(
     json: bool,
     channel: &str,
 ) -> anyhow::Result<()> {
-    let is_sound = csv.extension().is_some_and(|e| {
-        [
-            "wav", "wave", "flac", "mp3", "ogg", "oga", "m4a", "mp4", "aac",
-        ]
-        .iter()
-        .any(|x| e.eq_ignore_ascii_case(x))
-    });
+    // A recording by its first bytes whatever its name; by its extension where the bytes cannot
+    // be read or are damaged (the sound reader then says why).
+    let is_sound = experiment::recording::is_recording(csv)
+        || csv.extension().is_some_and(|e| {
+            [
+                "wav", "wave", "flac", "mp3", "ogg", "oga", "m4a", "mp4", "aac",
+            ]
+            .iter()
+            .any(|x| e.eq_ignore_ascii_case(x))
+        });
     let channels = match channel {
         "mix" => experiment::Channels::Mix,
         n => experiment::Channels::One(n.parse().map_err(|_| {

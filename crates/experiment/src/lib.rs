@@ -20,75 +20,47 @@
 //! - the paper's own numbers recomputed from its constants ([`numbers::numbers`] with the fit the paper prints).
 //!
 //! The paper's "Hz" are angular frequencies, rad/s ($\Omega_i = 2\pi/\Delta t$); so are ours.
+//!
+//! The rooms, in the order a recording flows through them:
+//! - [`formats`]: the files read (a scope's CSV, sound in any format) and written;
+//! - [`synthetic`]: the synthetic experiment, light and sound, with what a room adds;
+//! - [`light_analysis`]: the light signal's peaks timed, its rates, the fitting window;
+//! - [`sound_analysis`]: the sound's hum removed, its pitch tracked, its phase followed;
+//! - [`fit`]: the fits of eqs 84 and 85 with their uncertainties, the law chosen, the checks;
+//! - [`numbers`]: the paper's own numbers of section 11; [`trace`]: the record itself;
+//!   [`error`]: what can go wrong.
 
-pub mod analysis;
-pub mod analysis_settings;
-pub mod artifacts;
-pub mod audio;
-pub mod band;
-pub mod calibration;
-pub mod channel;
-pub mod clean;
-pub mod coverage;
-pub mod coverage_record;
-pub mod crossover;
-pub mod csv;
-pub mod early_end;
 pub mod error;
 pub mod fit;
-pub mod hum;
-pub mod input;
-pub mod law;
-pub mod law_stability;
-pub mod least_squares;
-pub mod light;
-pub mod line_power;
-pub mod mains_drift;
-pub mod mains_phase;
-pub mod mechanism_record;
-pub mod mechanisms;
-pub mod model_choice;
-pub mod models;
-pub mod motion_law;
-pub mod mp4_edit;
+pub mod formats;
+pub mod light_analysis;
 pub mod numbers;
-pub mod peak;
-pub mod peaks;
-pub mod phase_blocks;
-pub mod phase_fit;
-pub mod plausibility;
-pub mod pulse_drift;
-pub mod rates;
-pub mod recording;
-pub mod scope;
-pub mod simulate;
-pub mod sliding_record;
-pub mod sound;
-pub mod sound_coverage;
-pub mod sound_file;
-pub mod spectrogram;
-pub mod spectrum;
+pub mod sound_analysis;
+pub mod synthetic;
 pub mod trace;
-pub mod track;
-pub mod turn_count;
-pub mod wav;
-pub mod window;
 
-pub use analysis::{analyze, analyze_within, write_analysis, Analysis, AnalysisSettings};
-pub use artifacts::Artifacts;
-pub use audio::{
+// The modules whose paths callers outside this crate name, at the root as before the rooms.
+pub use fit::{motion_law, plausibility};
+pub use formats::{recording, wav};
+pub use sound_analysis::{spectrogram, track, turn_count};
+pub use synthetic::{law, mechanisms, simulate, sound};
+
+pub use error::ExperimentError;
+pub use formats::channel::{Channels, Recording, RecordingInfo};
+pub use formats::csv::{parse_trace, read_trace};
+pub use formats::recording::read_recording;
+pub use formats::sound_file::{encode_sound, SoundFormat};
+pub use formats::wav::{encode_wav, read_wav, wav_bytes, WavCoding};
+pub use light_analysis::analysis::{analyze, analyze_within, write_analysis, Analysis};
+pub use light_analysis::settings::AnalysisSettings;
+pub use sound_analysis::analysis::{
     analyze_sound, analyze_sound_within, write_sound_analysis, SoundAnalysis, SoundLaw,
 };
-pub use channel::{Channels, Recording, RecordingInfo};
-pub use csv::{parse_trace, read_trace};
-pub use error::ExperimentError;
-pub use law::{law_trace, Law};
-pub use light::{Direction, LightModel};
-pub use recording::read_recording;
-pub use scope::Scope;
-pub use simulate::simulate_trace;
-pub use sound::{law_sound, simulate_sound, Microphone};
-pub use sound_file::{encode_sound, SoundFormat};
+pub use sound_analysis::track::TrackSettings;
+pub use synthetic::artifacts::Artifacts;
+pub use synthetic::law::{law_trace, Law};
+pub use synthetic::light::{Direction, LightModel};
+pub use synthetic::scope::Scope;
+pub use synthetic::simulate::simulate_trace;
+pub use synthetic::sound::{law_sound, simulate_sound, Microphone};
 pub use trace::{Trace, Truth};
-pub use track::TrackSettings;
-pub use wav::{encode_wav, read_wav, wav_bytes, WavCoding};

@@ -15,7 +15,7 @@ use serde::Serialize;
 /// can be seen. Times are record times (the first sample at 0).
 ///
 /// A model is not eq 79 exactly, so eq 84 fitted even to its exact motion finds another $t_0$
-/// (20 ms earlier over the built-in record; [`crate::motion_law`] computes it and
+/// (20 ms earlier over the built-in record; [`crate::fit::motion_law`] computes it and
 /// tells the law's part of an analysis's error from the analysis's own).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Truth {

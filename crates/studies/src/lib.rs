@@ -11,18 +11,26 @@
 //!   Newton-Euler model), [`runs`] (the path scenes and the one spin-down run), [`slip_stick`]
 //!   (the sliding model's scene and the sliding studies), [`synthetic`] (the experiment of
 //!   sec. 11 simulated and analysed).
+//! - the Monte Carlo studies of the experiment's analysis, over many simulated records:
+//!   [`coverage`] (do the light's stated intervals hold?), [`sound_coverage`] (the sound's),
+//!   [`coverage_record`] (both as stored for the report), [`law_choice_study`] (how often the
+//!   law choice takes one mechanism for two; stored as the calibration the choice states).
 
 pub mod compare;
+pub mod coverage;
+pub mod coverage_record;
 pub mod energy;
 pub mod error;
 pub mod frequency;
 pub mod lab_frame;
+pub mod law_choice_study;
 pub mod peer;
 pub mod precision;
 pub mod runs;
 pub mod sliding;
 pub mod slip_stick;
 pub mod sound;
+pub mod sound_coverage;
 pub mod synthetic;
 pub mod thickness;
 pub mod toy;

@@ -1,10 +1,10 @@
 //! The coverage of the experiment's stated intervals (issue 15): for one Monte Carlo study, and
-//! for the stored studies the report draws ([`experiment::coverage_record`]).
+//! for the stored studies the report draws ([`studies::coverage_record`]).
 
 use crate::figures::chart::{Axis, Legend, Plot, Series, Style};
 use crate::figures::{Drawing, Figure};
-use experiment::coverage::Coverage;
-use experiment::coverage_record::StoredCoverage;
+use studies::coverage::Coverage;
+use studies::coverage_record::StoredCoverage;
 
 /// $P(|Z| \le z)$ for a standard normal $Z$, by Simpson's rule on $e^{-x^2/2}$ (400 panels;
 /// accurate to 1e-10 for $z \le 4$): the claimed coverage curve.
@@ -115,7 +115,7 @@ mod tests {
     /// Every stored study is drawn, beta and t0 each, besides the claimed curve.
     #[test]
     fn every_stored_study_is_drawn() {
-        let stored = experiment::coverage_record::stored().expect("snapshots/coverage.json");
+        let stored = studies::coverage_record::stored().expect("snapshots/coverage.json");
         let Drawing::Plot(plot) = studies(&stored).drawing else {
             panic!("the coverage figure is a plot");
         };

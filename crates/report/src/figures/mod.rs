@@ -90,7 +90,7 @@ pub struct Family {
     pub names: &'static [&'static str],
     /// The studies they are drawn from (none for the stability map, drawn from the paper's
     /// printed eq 54, nor for the coverage studies, which are stored:
-    /// `experiment::coverage_record`).
+    /// `studies::coverage_record`).
     pub needs: &'static [&'static dyn Run],
     /// Draws them from the results.
     pub build: fn(&Results) -> Result<Vec<Figure>, FigureError>,
@@ -126,7 +126,7 @@ pub const FAMILIES: &[Family] = &[
         names: &["coverage"],
         needs: &[],
         build: |_| {
-            let stored = ::experiment::coverage_record::stored().map_err(|e| e.to_string())?;
+            let stored = ::studies::coverage_record::stored().map_err(|e| e.to_string())?;
             Ok(vec![coverage::studies(&stored)])
         },
     },

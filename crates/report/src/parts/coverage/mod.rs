@@ -40,7 +40,7 @@ impl Part for Coverage {
     }
 
     fn draft<'r>(&self, _: &'r Bench, _: &'r Results) -> Result<Option<Draft<'r>>, ReportError> {
-        let stored = experiment::coverage_record::stored().map_err(|e| e.to_string())?;
+        let stored = studies::coverage_record::stored().map_err(|e| e.to_string())?;
         Ok(Some(Draft {
             tables: section::tables(&stored),
             finish: Box::new(move |tables, figures| {

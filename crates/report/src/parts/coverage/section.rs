@@ -1,5 +1,5 @@
 //! The section "Coverage of the stated uncertainties": whether the experiment's intervals
-//! mean what they say, from the stored Monte Carlo studies ([`experiment::coverage_record`]), as a
+//! mean what they say, from the stored Monte Carlo studies ([`studies::coverage_record`]), as a
 //! paragraph, a table of the fractions inside ±1σ and ±1.96σ with their binomial
 //! uncertainties, and the stored studies' own lines for the disclosure and the appendix.
 
@@ -7,8 +7,8 @@ use crate::error::ReportError;
 use crate::number::{error, measured, prose};
 use crate::parts::prose::paragraph;
 use crate::study_table::{cite, StudySection, StudyTable};
-use experiment::coverage::Coverage;
-use experiment::coverage_record::StoredCoverage;
+use studies::coverage::Coverage;
+use studies::coverage_record::StoredCoverage;
 
 /// The fraction of `c`'s recordings with `pulls` inside ±`z`, in percent, with its binomial
 /// standard uncertainty $\sqrt{p(1-p)/N}$.

@@ -1,0 +1,282 @@
+//! Scope CSV: a header (time in s, signal in V) and one row per sample, as a scope exports it.
+//!
+//! Reading validates every row and names the file, the 1-based line and column of the first
+//! problem: a missing column, a cell that is not a number, NaN or infinity, a time that does not
+//! increase, an unknown time unit, too many rows. Files are opened only through
+//! [`read_bounded`](crate::formats::input::read_bounded). Lines starting with `#` are comments; a synthetic trace writes its truth there
+//! (`# truth.beta: 2`), and reading it back restores it.
+
+use crate::error::ExperimentError;
+use crate::formats::input::{read_bounded, MAX_BYTES, MAX_SAMPLES};
+use crate::trace::{Trace, Truth};
+use std::fmt::Write as _;
+use std::path::Path;
+
+impl Trace {
+    /// The trace as CSV: comments (source, truth), the header `time_s,signal_V`, the samples.
+    /// Numbers are written in their shortest exact form, so they read back bit for bit.
+    pub fn to_csv(&self) -> String {
+        let mut s = String::with_capacity(self.t.len() * 32 + 256);
+        let _ = writeln!(s, "# rolling-disk scope trace");
+        let _ = writeln!(s, "# source: {}", self.source);
+        if let Some(tr) = &self.truth {
+            let _ = writeln!(s, "# truth.beta: {}", tr.beta);
+            let _ = writeln!(s, "# truth.t0: {}", tr.t0);
+            let _ = writeln!(s, "# truth.t_stop: {}", tr.t_stop);
+            let _ = writeln!(s, "# truth.tau_rem: {}", tr.tau_rem);
+            if let Some(c) = tr.c {
+                let _ = writeln!(s, "# truth.c: {c}");
+            }
+            let _ = writeln!(s, "# truth.origin: {}", tr.origin);
+        }
+        s.push_str("time_s,signal_V\n");
+        for (t, v) in self.t.iter().zip(&self.v) {
+            let _ = writeln!(s, "{t},{v}");
+        }
+        s
+    }
+}
+
+/// Reads and validates a scope CSV file (at most [`MAX_BYTES`] bytes, [`MAX_SAMPLES`] rows).
+pub fn read_trace(path: impl AsRef<Path>) -> Result<Trace, ExperimentError> {
+    let path = path.as_ref();
+    let file = path.display().to_string();
+    let bytes = read_bounded(path, MAX_BYTES)?;
+    let text = String::from_utf8(bytes).map_err(|e| ExperimentError::Io {
+        file: file.clone(),
+        message: format!(
+            "not UTF-8 text (byte {} is invalid): save the CSV as UTF-8 or ASCII text",
+            e.utf8_error().valid_up_to() + 1
+        ),
+    })?;
+    parse_trace(&text, &file)
+}
+
+/// The lines of `text` whatever their ends: LF, CRLF or CR alone.
+fn lines_any(text: &str) -> impl Iterator<Item = &str> {
+    let mut rest = Some(text);
+    std::iter::from_fn(move || {
+        let r = rest?;
+        match r.find(['\n', '\r']) {
+            Some(k) => {
+                let skip = if r[k..].starts_with("\r\n") { 2 } else { 1 };
+                rest = Some(&r[k + skip..]);
+                Some(&r[..k])
+            }
+            None => {
+                rest = None;
+                (!r.is_empty()).then_some(r)
+            }
+        }
+    })
+}
+
+/// The cells of a line, split at commas, else tabs, else semicolons, else runs of spaces;
+/// empty cells at the end (trailing separators) dropped.
+fn cells(s: &str) -> Vec<&str> {
+    let mut c: Vec<&str> = if s.contains(',') {
+        s.split(',').map(str::trim).collect()
+    } else if s.contains('\t') {
+        s.split('\t').map(str::trim).collect()
+    } else if s.contains(';') {
+        s.split(';').map(str::trim).collect()
+    } else {
+        s.split_whitespace().collect()
+    };
+    while c.last().is_some_and(|x| x.is_empty()) {
+        c.pop();
+    }
+    c
+}
+
+/// The unit written in a header cell: in parentheses or brackets (`Time (ms)`, `CH1 [V]`), or
+/// after the last `_` or `/` (`time_s`, `t/ms`); `None` when the cell names none.
+fn header_unit(cell: &str) -> Option<&str> {
+    let c = cell.trim();
+    for (open, close) in [('(', ')'), ('[', ']')] {
+        if let (Some(a), Some(b)) = (c.rfind(open), c.rfind(close)) {
+            if a < b {
+                return Some(c[a + 1..b].trim());
+            }
+        }
+    }
+    c.rfind(['_', '/']).map(|k| c[k + 1..].trim())
+}
+
+/// The factor to seconds of a time unit.
+fn time_factor(unit: &str) -> Option<f64> {
+    match unit {
+        "s" | "sec" | "S" | "seconds" | "second" => Some(1.0),
+        "ms" => Some(1e-3),
+        "us" | "µs" | "μs" => Some(1e-6),
+        "ns" => Some(1e-9),
+        _ => None,
+    }
+}
+
+/// The factor to volts of a signal unit; other units (counts, a.u.) are kept as they are: the
+/// timing does not depend on the signal's scale.
+fn signal_factor(unit: &str) -> f64 {
+    match unit {
+        "mV" => 1e-3,
+        "uV" | "µV" | "μV" => 1e-6,
+        "kV" => 1e3,
+        _ => 1.0,
+    }
+}
+
+/// Parses and validates CSV text; `file` names it in errors.
+///
+/// Accepted: a UTF-8 byte-order mark; LF, CRLF or CR line ends; cells separated by commas,
+/// tabs, semicolons or spaces; trailing separators; `#` comment lines; a header whose cells
+/// name units (time in s, ms, us or ns, converted to s; signal in V, mV or uV, converted to V,
+/// or any other unit, kept); columns after the second ignored. At most [`MAX_SAMPLES`] rows.
+pub fn parse_trace(text: &str, file: &str) -> Result<Trace, ExperimentError> {
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let mut t = Vec::new();
+    let mut v = Vec::new();
+    let mut header_line = None;
+    let (mut kt, mut kv) = (1.0, 1.0);
+    let mut truth = TruthFields::default();
+    for (i, raw) in lines_any(text).enumerate() {
+        let line = i + 1;
+        let s = raw.trim();
+        if s.is_empty() {
+            continue;
+        }
+        if let Some(c) = s.strip_prefix('#') {
+            truth.read(c.trim());
+            continue;
+        }
+        let cells = cells(s);
+        let missing = || ExperimentError::MissingColumn {
+            file: file.into(),
+            line,
+            found: cells.iter().filter(|c| !c.is_empty()).count(),
+        };
+        let numeric = cells.first().is_some_and(|c| c.parse::<f64>().is_ok());
+        if header_line.is_none() && t.is_empty() && !numeric {
+            if cells.len() < 2 || cells[1].is_empty() {
+                return Err(missing());
+            }
+            if let Some(u) = header_unit(cells[0]) {
+                kt = time_factor(u).ok_or_else(|| ExperimentError::UnknownUnit {
+                    file: file.into(),
+                    line,
+                    column: 1,
+                    unit: physics::scene::message::cut(u),
+                })?;
+            }
+            kv = header_unit(cells[1]).map_or(1.0, signal_factor);
+            header_line = Some(line);
+            continue;
+        }
+        if cells.len() < 2 || cells[1].is_empty() {
+            return Err(missing());
+        }
+        if t.len() >= MAX_SAMPLES {
+            return Err(ExperimentError::TooManySamples {
+                file: file.into(),
+                line,
+                limit: MAX_SAMPLES,
+            });
+        }
+        let num = |k: usize, name: &str| -> Result<f64, ExperimentError> {
+            let x = cells[k]
+                .parse::<f64>()
+                .map_err(|_| ExperimentError::NotANumber {
+                    file: file.into(),
+                    line,
+                    column: name.into(),
+                    col: k + 1,
+                    // Quoted cut to a few dozen characters, control characters escaped: one line.
+                    cell: physics::scene::message::cut(cells[k]),
+                })?;
+            if x.is_finite() {
+                Ok(x)
+            } else {
+                Err(ExperimentError::NonFinite {
+                    file: file.into(),
+                    line,
+                    column: name.into(),
+                    col: k + 1,
+                    value: x,
+                })
+            }
+        };
+        let ti = num(0, "time")? * kt;
+        let vi = num(1, "signal")? * kv;
+        if let Some(&prev) = t.last() {
+            if ti <= prev {
+                return Err(ExperimentError::NotIncreasing {
+                    file: file.into(),
+                    line,
+                    previous: prev,
+                    t: ti,
+                });
+            }
+        }
+        t.push(ti);
+        v.push(vi);
+    }
+    if t.is_empty() {
+        return Err(match header_line {
+            Some(line) => ExperimentError::HeaderOnly {
+                file: file.into(),
+                line,
+            },
+            None => ExperimentError::Empty { file: file.into() },
+        });
+    }
+    Ok(Trace {
+        source: file.into(),
+        t,
+        v,
+        truth: truth.finish(),
+    })
+}
+
+/// The truth as read from `# truth.KEY: VALUE` comments.
+#[derive(Default)]
+struct TruthFields {
+    beta: Option<f64>,
+    t0: Option<f64>,
+    t_stop: Option<f64>,
+    tau_rem: Option<f64>,
+    c: Option<f64>,
+    origin: Option<String>,
+}
+
+impl TruthFields {
+    fn read(&mut self, comment: &str) {
+        let Some(rest) = comment.strip_prefix("truth.") else {
+            return;
+        };
+        let Some((key, value)) = rest.split_once(':') else {
+            return;
+        };
+        let value = value.trim();
+        let x = value.parse::<f64>().ok().filter(|x| x.is_finite());
+        match key.trim() {
+            "beta" => self.beta = x,
+            "t0" => self.t0 = x,
+            "t_stop" => self.t_stop = x,
+            "tau_rem" => self.tau_rem = x,
+            "c" => self.c = x,
+            "origin" => self.origin = Some(value.to_string()),
+            _ => {}
+        }
+    }
+
+    fn finish(self) -> Option<Truth> {
+        let (beta, t0) = (self.beta?, self.t0?);
+        Some(Truth {
+            beta,
+            t0,
+            t_stop: self.t_stop.unwrap_or(t0),
+            tau_rem: self.tau_rem.unwrap_or(0.0),
+            c: self.c,
+            origin: self.origin.unwrap_or_default(),
+        })
+    }
+}

@@ -1,0 +1,240 @@
+//! A sound recording as a person has it: WAV (through `hound`, 8-32 bit integer or 32-bit float)
+//! or a compressed file a phone or an editor writes (FLAC, MP3, Ogg Vorbis, M4A/AAC, through the
+//! pure-Rust `symphonia` decoders), read into a [`Trace`] of full-scale units with what the file
+//! is ([`RecordingInfo`]: format, rate, channels, length).
+//!
+//! The samples an encoder adds are left out: MP3's (its LAME header) and Ogg's by the decoder in
+//! gapless mode, M4A's by the file's edit list ([`mp4_edit`](crate::formats::mp4_edit)). A raw
+//! AAC stream (ADTS, a `.aac` file) records no encoder delay: the [`ADTS_PRIMING`] samples that
+//! AAC-LC encoders put first (ffmpeg's, FAAC's) are left out, and the format says so.
+//!
+//! The container is recognised by its first bytes, not by the file's name. Every file goes
+//! through [`read_bounded`] (size limit, regular files only); the decoded length is checked
+//! against [`MAX_SAMPLES`] per channel while decoding, so memory stays bounded. The channels are
+//! averaged, or one is chosen ([`Channels`]).
+
+use crate::error::ExperimentError;
+use crate::formats::channel::{mix, refuse, Channels, Recording};
+use crate::formats::input::{read_bounded, MAX_BYTES, MAX_SAMPLES};
+use std::path::Path;
+use symphonia::core::audio::SampleBuffer;
+use symphonia::core::codecs::{DecoderOptions, CODEC_TYPE_NULL};
+use symphonia::core::errors::Error as DecodeError;
+use symphonia::core::formats::FormatOptions;
+use symphonia::core::io::MediaSourceStream;
+use symphonia::core::meta::MetadataOptions;
+use symphonia::core::probe::Hint;
+
+/// The priming samples an AAC-LC encoder puts before the sound (one frame of 1024, ffmpeg's and
+/// FAAC's), left out of a raw ADTS stream, which does not record its own.
+pub const ADTS_PRIMING: usize = 1024;
+
+/// Whether the first bytes are an ADTS frame header: the 12-bit sync word and layer 00 (MPEG
+/// audio's layers I-III, which share the sync word, have a non-zero layer).
+fn adts(bytes: &[u8]) -> bool {
+    bytes.len() > 1 && bytes[0] == 0xFF && bytes[1] & 0xF6 == 0xF0
+}
+
+/// A sound format recognised by its first bytes that no decoder here reads: Core Audio (CAF)
+/// and Ogg Opus.
+fn unread(bytes: &[u8]) -> Option<&'static str> {
+    let head = &bytes[..bytes.len().min(64)];
+    if head.starts_with(b"caff") {
+        Some("Core Audio (CAF)")
+    } else if head.starts_with(b"OggS") && head.windows(8).any(|w| w == b"OpusHead") {
+        Some("Ogg Opus")
+    } else {
+        None
+    }
+}
+
+/// The container, by the file's first bytes.
+fn container(bytes: &[u8]) -> Option<(&'static str, &'static str)> {
+    let head = |s: &[u8]| bytes.starts_with(s);
+    if head(b"RIFF") || head(b"RF64") || head(b"RIFX") {
+        Some(("WAV", "wav"))
+    } else if head(b"fLaC") {
+        Some(("FLAC", "flac"))
+    } else if head(b"OggS") {
+        Some(("Ogg", "ogg"))
+    } else if bytes.len() > 8 && &bytes[4..8] == b"ftyp" {
+        Some(("M4A/MP4", "m4a"))
+    } else if adts(bytes) {
+        Some(("raw AAC (ADTS)", "aac"))
+    } else if head(b"ID3") || (bytes.len() > 1 && bytes[0] == 0xFF && bytes[1] & 0xE0 == 0xE0) {
+        Some(("MP3", "mp3"))
+    } else {
+        None
+    }
+}
+
+/// Reads a recording of any supported format.
+pub fn read_recording(
+    path: impl AsRef<Path>,
+    channels: Channels,
+) -> Result<Recording, ExperimentError> {
+    let path = path.as_ref();
+    let file = path.display().to_string();
+    let bytes = read_bounded(path, MAX_BYTES)?;
+    parse_recording(bytes, &file, channels)
+}
+
+/// Whether the file at `path` is a sound recording by its first bytes (WAV, FLAC, Ogg, MP3,
+/// M4A or raw AAC), whatever its name; `false` when it cannot be read (the reader then says why).
+pub fn is_recording(path: &Path) -> bool {
+    use std::io::Read;
+    let mut head = [0u8; 12];
+    let n = std::fs::File::open(path)
+        .and_then(|f| f.take(12).read(&mut head))
+        .unwrap_or(0);
+    container(&head[..n]).is_some() || head[..n].starts_with(b"caff")
+}
+
+/// Decodes a recording's bytes; `file` names them in errors.
+pub fn parse_recording(
+    bytes: Vec<u8>,
+    file: &str,
+    channels: Channels,
+) -> Result<Recording, ExperimentError> {
+    if let Some(what) = unread(&bytes) {
+        return Err(refuse(
+            file,
+            what,
+            "this tool has no decoder for it".into(),
+            "convert it to WAV or FLAC (for example `ffmpeg -i FILE FILE.wav`) and analyse that",
+        ));
+    }
+    let Some((format, ext)) = container(&bytes) else {
+        return Err(refuse(
+            file,
+            "sound",
+            "the first bytes are not those of a WAV, FLAC, Ogg, MP3 or M4A file".into(),
+            "export the recording as WAV, FLAC, MP3, Ogg Vorbis or M4A",
+        ));
+    };
+    let (interleaved, rate, n_ch, format) = if ext == "wav" {
+        crate::formats::wav::decode_wav(&bytes, file)?
+    } else {
+        decode_compressed(bytes, file, format, ext)?
+    };
+    mix(interleaved, rate, n_ch, format, file, channels)
+}
+
+/// Decodes FLAC, Ogg Vorbis, MP3 or M4A/AAC bytes to interleaved full-scale samples.
+fn decode_compressed(
+    bytes: Vec<u8>,
+    file: &str,
+    container: &str,
+    ext: &str,
+) -> Result<(Vec<f64>, u32, usize, String), ExperimentError> {
+    let fix = "the file may be damaged or use a coding this tool does not decode: export it as WAV or FLAC";
+    let bad = |e: DecodeError| refuse(file, container, format!("not decodable ({e})"), fix);
+    let edit = if ext == "m4a" {
+        crate::formats::mp4_edit::sound_edit(&bytes)
+    } else {
+        None
+    };
+    let mss = MediaSourceStream::new(Box::new(std::io::Cursor::new(bytes)), Default::default());
+    let mut hint = Hint::new();
+    hint.with_extension(ext);
+    let probed = symphonia::default::get_probe()
+        .format(
+            &hint,
+            mss,
+            &FormatOptions {
+                enable_gapless: true,
+                ..FormatOptions::default()
+            },
+            &MetadataOptions::default(),
+        )
+        .map_err(bad)?;
+    let mut reader = probed.format;
+    let track = reader
+        .tracks()
+        .iter()
+        .find(|t| t.codec_params.codec != CODEC_TYPE_NULL)
+        .ok_or_else(|| refuse(file, container, "no audio track".into(), fix))?;
+    let (id, params) = (track.id, track.codec_params.clone());
+    let codec = symphonia::default::get_codecs()
+        .get_codec(params.codec)
+        .map_or("unknown coding", |d| d.long_name);
+    let format = format!("{container}, {codec}");
+    let n_ch = params.channels.map_or(0, |c| c.count());
+    if params.n_frames.is_some_and(|n| n > MAX_SAMPLES as u64) {
+        return Err(ExperimentError::TooManySamples {
+            file: file.into(),
+            line: 0,
+            limit: MAX_SAMPLES,
+        });
+    }
+    let mut decoder = symphonia::default::get_codecs()
+        .make(&params, &DecoderOptions::default())
+        .map_err(bad)?;
+    let mut out: Vec<f64> = Vec::new();
+    let mut rate = params.sample_rate.unwrap_or(0);
+    let mut channels = n_ch;
+    loop {
+        let packet = match reader.next_packet() {
+            Ok(p) => p,
+            Err(DecodeError::IoError(e)) if e.kind() == std::io::ErrorKind::UnexpectedEof => break,
+            Err(DecodeError::ResetRequired) => break,
+            Err(e) => return Err(bad(e)),
+        };
+        if packet.track_id() != id {
+            continue;
+        }
+        let buf = match decoder.decode(&packet) {
+            Ok(b) => b,
+            Err(DecodeError::DecodeError(_)) => continue,
+            Err(e) => return Err(bad(e)),
+        };
+        let spec = *buf.spec();
+        rate = spec.rate;
+        channels = spec.channels.count();
+        let mut sb = SampleBuffer::<f32>::new(buf.capacity() as u64, spec);
+        sb.copy_interleaved_ref(buf);
+        out.extend(sb.samples().iter().map(|&x| f64::from(x)));
+        if out.len() > MAX_SAMPLES * channels.max(1) {
+            return Err(ExperimentError::TooManySamples {
+                file: file.into(),
+                line: 0,
+                limit: MAX_SAMPLES,
+            });
+        }
+    }
+    let format = match edit {
+        Some(e) => {
+            // The samples the edit list plays (the encoder's priming and padding left out).
+            let ch = channels.max(1);
+            let skip = ((e.start * f64::from(rate)).round() as usize * ch).min(out.len());
+            out.drain(..skip);
+            if let Some(d) = e.duration {
+                out.truncate((d * f64::from(rate)).round() as usize * ch);
+            }
+            format!(
+                "{format}, its edit list's {} priming samples left out",
+                skip / ch
+            )
+        }
+        None if ext == "aac" => {
+            let ch = channels.max(1);
+            let skip = (ADTS_PRIMING * ch).min(out.len());
+            out.drain(..skip);
+            format!(
+                "{format}, {} encoder priming samples left out (a raw AAC stream does not record \
+                 its encoder's delay: these are AAC-LC encoders' usual {ADTS_PRIMING})",
+                skip / ch
+            )
+        }
+        None => format,
+    };
+    if let Some(j) = out.iter().position(|x| !x.is_finite()) {
+        return Err(refuse(
+            file,
+            &format,
+            format!("sample {j} decodes to NaN or infinity"),
+            fix,
+        ));
+    }
+    Ok((out, rate, channels, format))
+}

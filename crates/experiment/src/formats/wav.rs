@@ -1,0 +1,131 @@
+//! Sound recordings as WAV files (`hound`): read (mono, stereo or up to eight channels, 8-32 bit
+//! integer or 32-bit float, 1-384 kS/s) into a [`Trace`] of full-scale units, and written
+//! (16-bit, 24-bit or float, any rate) by `experiment simulate`.
+//!
+//! Reading goes through [`read_bounded`](crate::formats::input::read_bounded) like every
+//! file; the header's sample count is checked against [`MAX_SAMPLES`] before any sample is
+//! decoded. [`read_wav`] averages the channels;
+//! [`read_recording`](crate::formats::recording::read_recording) can choose one.
+
+use crate::error::ExperimentError;
+use crate::formats::channel::{mix, Channels};
+use crate::formats::input::{read_bounded, MAX_BYTES, MAX_SAMPLES};
+use crate::trace::Trace;
+use hound::{SampleFormat, WavReader, WavSpec, WavWriter};
+use std::io::Cursor;
+use std::path::Path;
+
+/// Reads a WAV file into a trace (time in s from the first sample, signal in full-scale units).
+pub fn read_wav(path: impl AsRef<Path>) -> Result<Trace, ExperimentError> {
+    let path = path.as_ref();
+    let file = path.display().to_string();
+    let bytes = read_bounded(path, MAX_BYTES)?;
+    parse_wav(&bytes, &file)
+}
+
+/// Decodes WAV bytes, channels averaged; `file` names them in errors.
+pub fn parse_wav(bytes: &[u8], file: &str) -> Result<Trace, ExperimentError> {
+    let (v, rate, ch, format) = decode_wav(bytes, file)?;
+    Ok(mix(v, rate, ch, format, file, Channels::Mix)?.trace)
+}
+
+/// Decodes WAV bytes to interleaved full-scale samples, the rate, the channel count and a
+/// description of the coding.
+pub(crate) fn decode_wav(
+    bytes: &[u8],
+    file: &str,
+) -> Result<(Vec<f64>, u32, usize, String), ExperimentError> {
+    let wav = |message: String| ExperimentError::Wav {
+        file: file.into(),
+        message,
+    };
+    let mut reader = WavReader::new(Cursor::new(bytes)).map_err(|e| wav(e.to_string()))?;
+    let spec = reader.spec();
+    let ch = usize::from(spec.channels);
+    if ch == 0 || ch > crate::formats::channel::MAX_CHANNELS {
+        return Err(wav(format!(
+            "{} channels; mono, stereo or up to 8 channels are read",
+            spec.channels
+        )));
+    }
+    if spec.sample_rate == 0 {
+        return Err(wav("a sample rate of 0".into()));
+    }
+    let frames = reader.duration() as usize;
+    if frames > MAX_SAMPLES {
+        return Err(ExperimentError::TooManySamples {
+            file: file.into(),
+            line: 0,
+            limit: MAX_SAMPLES,
+        });
+    }
+    let mut v = Vec::with_capacity(frames * ch);
+    let format = match (spec.sample_format, spec.bits_per_sample) {
+        (SampleFormat::Float, 32) => {
+            for s in reader.samples::<f32>() {
+                let x = s.map_err(|e| wav(e.to_string()))?;
+                if !x.is_finite() {
+                    return Err(wav("a sample is NaN or infinite".into()));
+                }
+                v.push(f64::from(x));
+            }
+            "WAV, 32-bit float".to_string()
+        }
+        (SampleFormat::Int, b @ 8..=32) => {
+            let full = (1u64 << (b - 1)) as f64;
+            for s in reader.samples::<i32>() {
+                v.push(f64::from(s.map_err(|e| wav(e.to_string()))?) / full);
+            }
+            format!("WAV, {b}-bit integer PCM")
+        }
+        (f, b) => {
+            return Err(wav(format!("{b}-bit {f:?} samples are not supported")));
+        }
+    };
+    Ok((v, spec.sample_rate, ch, format))
+}
+
+/// How [`encode_wav`] stores samples.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum WavCoding {
+    /// 16-bit integer.
+    Int16,
+    /// 24-bit integer.
+    Int24,
+    /// 32-bit float.
+    Float32,
+}
+
+/// Encodes a uniformly sampled signal (full scale 1, clipped there) as 16-bit mono WAV bytes.
+pub fn wav_bytes(v: &[f64], sample_rate: u32) -> Result<Vec<u8>, hound::Error> {
+    encode_wav(v, sample_rate, WavCoding::Int16)
+}
+
+/// Encodes a uniformly sampled signal (full scale 1, clipped there) as mono WAV bytes.
+pub fn encode_wav(v: &[f64], sample_rate: u32, coding: WavCoding) -> Result<Vec<u8>, hound::Error> {
+    let (bits, sample_format) = match coding {
+        WavCoding::Int16 => (16, SampleFormat::Int),
+        WavCoding::Int24 => (24, SampleFormat::Int),
+        WavCoding::Float32 => (32, SampleFormat::Float),
+    };
+    let spec = WavSpec {
+        channels: 1,
+        sample_rate,
+        bits_per_sample: bits,
+        sample_format,
+    };
+    let mut out = Cursor::new(Vec::with_capacity(4 * v.len() + 64));
+    {
+        let mut w = WavWriter::new(&mut out, spec)?;
+        for &x in v {
+            let x = x.clamp(-1.0, 1.0);
+            match coding {
+                WavCoding::Int16 => w.write_sample((x * 32767.0).round() as i16)?,
+                WavCoding::Int24 => w.write_sample((x * 8_388_607.0).round() as i32)?,
+                WavCoding::Float32 => w.write_sample(x as f32)?,
+            }
+        }
+        w.finalize()?;
+    }
+    Ok(out.into_inner())
+}

@@ -1,0 +1,506 @@
+//! The analysis of a sound recording: its pitch track ([`track`](crate::sound_analysis::track)),
+//! eq 79 fitted to it, the model choice and the spin-down checks.
+//!
+//! Each frame $[a_k, b_k]$ gives $\Omega_k$, the mean of the rate over the frame weighted by the
+//! window's energy $w^2$, $w$ the Hann window (a spectrum's centroid is the instantaneous
+//! frequency's mean weighted by the windowed signal's energy); the law's own weighted mean
+//! $$\bar\Omega_k = \frac{\int_{a_k}^{b_k} w^2(t)\,\Omega(t)\,dt}{\int_{a_k}^{b_k} w^2(t)\,dt}, \qquad
+//!   \Omega(t) = \left(\frac{C}{t_0 - t}\right)^{1/(\beta+2)} \quad (79),$$
+//! (32 midpoints) is fitted to it, so the rate's change within a frame costs no bias.
+//! Frames do not overlap and their errors are taken as independent, each with its own
+//! variance $\sigma_k^2$ from the track (noise and the pitch's motion) as the weight; the
+//! covariance is $s^2 (J^{\mathsf T}J)^{-1}$ of the whitened problem with $s^2$ the reduced
+//! $\chi^2$ ([`least_squares`](crate::fit::least_squares), [`Scale::Unknown`]), so a
+//! common misstatement of the $\sigma_k$ is measured by the residuals.
+
+use crate::error::ExperimentError;
+use crate::fit::band::Row;
+use crate::fit::eq84_85::{start84, FixedBeta};
+use crate::fit::law_choice::{compare, Comparison};
+use crate::fit::least_squares::{solve, FitError, Problem, Scale};
+use crate::fit::plausibility::{Evidence, Plausibility, Verdict};
+use crate::sound_analysis::phase_blocks::{BlockSettings, Samples};
+use crate::sound_analysis::phase_fit::{fit_phase, PhaseFit};
+use crate::sound_analysis::track::{frequency_track, FrequencyTrack, TrackSettings};
+use crate::sound_analysis::turn_count::TurnCount;
+use crate::trace::{Trace, Truth};
+use nalgebra::{SMatrix, SVector};
+use physics::budget::Work;
+use serde::Serialize;
+use std::f64::consts::PI;
+use std::fmt;
+
+/// Midpoints per frame of the law's weighted mean.
+const MIDPOINTS: usize = 32;
+
+/// Eq 79's frame means weighted by the Hann window's square.
+struct TrackLaw<'a> {
+    a: &'a [f64],
+    b: &'a [f64],
+    y: &'a [f64],
+}
+
+impl Problem<3> for TrackLaw<'_> {
+    fn y(&self) -> &[f64] {
+        self.y
+    }
+    fn model(&self, p: &SVector<f64, 3>, i: usize) -> (f64, SVector<f64, 3>) {
+        let q = 1.0 / (p[0] + 2.0);
+        let (mut sw, mut m) = (0.0, 0.0);
+        let mut g = SVector::<f64, 3>::zeros();
+        for j in 0..MIDPOINTS {
+            let u = (j as f64 + 0.5) / MIDPOINTS as f64;
+            let w = (PI * u).sin().powi(4);
+            let t = self.a[i] + u * (self.b[i] - self.a[i]);
+            let ln_tau = (p[1] - t).ln();
+            let om = (q * (p[2] - ln_tau)).exp();
+            sw += w;
+            m += w * om;
+            g += w * SVector::<f64, 3>::new(
+                -q * q * om * (p[2] - ln_tau),
+                -q * om / (p[1] - t),
+                q * om,
+            );
+        }
+        (m / sw, g / sw)
+    }
+    fn rows(&self, _p: &SVector<f64, 3>) -> Vec<Row> {
+        (0..self.y.len())
+            .map(|i| Row {
+                start: i,
+                coef: vec![1.0],
+            })
+            .collect()
+    }
+    fn admissible(&self, p: &SVector<f64, 3>) -> bool {
+        let bmax = self.b.iter().copied().fold(f64::MIN, f64::max);
+        p.iter().all(|v| v.is_finite()) && p[0] > -0.9 && p[0] < 50.0 && p[1] > bmax
+    }
+}
+
+/// Eq 79 fitted to a frequency track.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TrackFit {
+    /// $\beta$ and its standard uncertainty.
+    pub beta: f64,
+    /// (see `beta`)
+    pub beta_sigma: f64,
+    /// $t_0$ (s) and its standard uncertainty.
+    pub t0: f64,
+    /// (s)
+    pub t0_sigma: f64,
+    /// $\ln C$ and its standard uncertainty.
+    pub ln_c: f64,
+    /// (see `ln_c`)
+    pub ln_c_sigma: f64,
+    /// The rms residual (rad/s).
+    pub rms: f64,
+    /// The reduced $\chi^2$ of the weighted residuals.
+    pub chi2_dof: f64,
+    /// Frames fitted.
+    pub n: usize,
+    /// The law's frame means (rad/s), one per track point.
+    pub model: Vec<f64>,
+}
+
+/// A sound recording analysed.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SoundAnalysis {
+    /// The recording.
+    pub source: String,
+    /// What the file is (format, rate, channels, length), when it was read from a file.
+    pub recording: Option<crate::formats::channel::RecordingInfo>,
+    /// The track.
+    pub track: FrequencyTrack,
+    /// Eq 79 fitted to the pitch track.
+    pub fit: TrackFit,
+    /// Eq 79's heading fitted to the sound's phase, started from `fit` (the analysis's result).
+    pub phase: Option<PhaseFit>,
+    /// Why the phase was not fitted, when it was not.
+    pub phase_refused: Option<String>,
+    /// The turns the phase's fit counts against the pitch track's, when the phase was fitted.
+    pub turn_count: Option<TurnCount>,
+    /// Model choice.
+    pub models: Comparison,
+    /// The spin-down checks.
+    pub verdict: Verdict,
+    /// The truth, for synthetic recordings.
+    pub truth: Option<Truth>,
+}
+
+/// Eq 79's parameters as a sound analysis states them.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SoundLaw {
+    /// $\beta$ and its total standard uncertainty (the fit's and, where eq 79 drifts over the
+    /// record, the law's).
+    pub beta: f64,
+    /// (see `beta`)
+    pub beta_sigma: f64,
+    /// $t_0$ (s) and its total standard uncertainty.
+    pub t0: f64,
+    /// (s)
+    pub t0_sigma: f64,
+    /// Whether they come from the phase (else from the pitch track).
+    pub from_phase: bool,
+}
+
+/// Analyses a sound recording.
+pub fn analyze_sound(
+    trace: &Trace,
+    settings: &TrackSettings,
+    checks: &Plausibility,
+) -> Result<SoundAnalysis, ExperimentError> {
+    let work = Work::start(format!("the analysis of {}", trace.source));
+    analyze_sound_within(trace, settings, checks, &work)
+}
+
+/// [`analyze_sound`] as part of `work`: each stage checks its budget and reports its progress.
+pub fn analyze_sound_within(
+    trace: &Trace,
+    settings: &TrackSettings,
+    checks: &Plausibility,
+    work: &Work<'_>,
+) -> Result<SoundAnalysis, ExperimentError> {
+    work.stage("following the pitch")?;
+    let track = frequency_track(trace, settings)?;
+    work.stage("fitting eq 79")?;
+    let file = trace.source.clone();
+    let refuse = |reason: String| ExperimentError::Refused {
+        file: file.clone(),
+        reason,
+    };
+    let pts = &track.points;
+    if pts.len() < 6 {
+        return Err(refuse(format!(
+            "{} frames hold a tone ({} silent, {} stray, {} smeared): no rising line to follow",
+            pts.len(),
+            track.silent,
+            track.stray,
+            track.smeared
+        )));
+    }
+    let a: Vec<f64> = pts.iter().map(|p| p.a).collect();
+    let b: Vec<f64> = pts.iter().map(|p| p.b).collect();
+    let y: Vec<f64> = pts.iter().map(|p| p.omega).collect();
+    let mid: Vec<f64> = a.iter().zip(&b).map(|(a, b)| 0.5 * (a + b)).collect();
+    let inv: Vec<f64> = y.iter().map(|o| 1.0 / o).collect();
+    let bmax = b.iter().copied().fold(f64::MIN, f64::max);
+    let w: Vec<f64> = pts.iter().map(|p| p.sigma.powi(2)).collect();
+    let law = TrackLaw {
+        a: &a,
+        b: &b,
+        y: &y,
+    };
+    let fitted = start84(&mid, &inv, bmax)
+        .ok_or(FitError::Shape("the rate does not rise toward an end time"))
+        .and_then(|p0| solve(&law, &w, p0, Scale::Unknown));
+    let s = match fitted {
+        Ok(s) => s,
+        Err(m) => return Err(refuse(format!("eq 79 cannot be fitted to the track ({m})"))),
+    };
+    let fit = TrackFit {
+        beta: s.p[0],
+        beta_sigma: s.cov[(0, 0)].sqrt(),
+        t0: s.p[1],
+        t0_sigma: s.cov[(1, 1)].sqrt(),
+        ln_c: s.p[2],
+        ln_c_sigma: s.cov[(2, 2)].sqrt(),
+        rms: (s.residual.iter().map(|r| r * r).sum::<f64>() / y.len() as f64).sqrt(),
+        chi2_dof: s.s2,
+        n: y.len(),
+        model: s.model.clone(),
+    };
+    let verdict = checks.judge(&Evidence {
+        t: &mid,
+        omega: &y,
+        anomalous: track.stray,
+        y: &y,
+        residual: &s.residual,
+        crossover_residual_ss: None,
+        beta: fit.beta,
+        t0: fit.t0,
+        t_first: a[0],
+        t_last: bmax,
+    });
+    if !verdict.refusals.is_empty() {
+        return Err(refuse(verdict.refusals.join("; ")));
+    }
+    let mut candidates = vec![(
+        "beta free".to_string(),
+        format!("beta = {:.3} +- {:.3}", fit.beta, fit.beta_sigma),
+        3,
+        s.chi2,
+        0.0,
+    )];
+    for beta in [1.0, 2.0, 3.0, 4.0] {
+        let fixed = FixedBeta {
+            law: TrackLaw {
+                a: &a,
+                b: &b,
+                y: &y,
+            },
+            beta,
+        };
+        let m = y.len() / 2;
+        let ln_c = (beta + 2.0) * y[m].ln() + (fit.t0 - mid[m]).ln();
+        if let Ok(f) = solve(
+            &fixed,
+            &w,
+            SVector::<f64, 2>::new(fit.t0, ln_c),
+            Scale::Unknown,
+        ) {
+            candidates.push((
+                format!("beta = {beta}"),
+                format!("t0 = {:.4} +- {:.4} s", f.p[0], f.cov[(0, 0)].sqrt()),
+                2,
+                f.chi2,
+                0.0,
+            ));
+        }
+    }
+    work.stage("following the phase")?;
+    let (phase, phase_refused, turn_count) = phase_of(trace, &track, a[0], &fit, &s.cov);
+    Ok(SoundAnalysis {
+        source: trace.source.clone(),
+        recording: None,
+        phase,
+        phase_refused,
+        turn_count,
+        models: compare(y.len(), candidates),
+        track,
+        fit,
+        verdict,
+        truth: trace.truth.clone(),
+    })
+}
+
+/// Eq 79's heading fitted to the phase of `trace` from `first` (s), started from the track's fit
+/// `fit` (covariance `cov`); the phase, or why it is not used, and the turns counted.
+fn phase_of(
+    trace: &Trace,
+    track: &FrequencyTrack,
+    first: f64,
+    fit: &TrackFit,
+    cov: &SMatrix<f64, 3, 3>,
+) -> (Option<PhaseFit>, Option<String>, Option<TurnCount>) {
+    let samples = Samples {
+        x: &trace.v,
+        t_start: trace.t[0],
+        dt: 1.0 / track.sample_rate,
+    };
+    let law = |beta: f64, t0: f64, ln_c: f64| SVector::<f64, 3>::new(beta, t0, ln_c);
+    match fit_phase(
+        &samples,
+        &track.hum,
+        first,
+        law(fit.beta, fit.t0, fit.ln_c),
+        fit.t0_sigma,
+        &BlockSettings::default(),
+    ) {
+        Ok(p) => {
+            let span = (
+                p.points.first().map_or(f64::NAN, |b| b.a),
+                p.points.last().map_or(f64::NAN, |b| b.b),
+            );
+            let count = TurnCount::of(
+                &law(p.beta, p.t0, p.ln_c),
+                &law(fit.beta, fit.t0, fit.ln_c),
+                cov,
+                span,
+            );
+            if count.miscounted() {
+                (
+                    None,
+                    Some(format!("{count}: a turn was miscounted")),
+                    Some(count),
+                )
+            } else {
+                (Some(p), None, Some(count))
+            }
+        }
+        Err(e) => (
+            None,
+            Some(format!("the phase could not be fitted ({e})")),
+            None,
+        ),
+    }
+}
+
+impl fmt::Display for SoundAnalysis {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let (t, x) = (&self.track, &self.fit);
+        writeln!(f, "sound: {}", self.source)?;
+        if let Some(r) = &self.recording {
+            writeln!(f, "  recording: {r}")?;
+        }
+        writeln!(
+            f,
+            "  {} frames of {:.1} to {:.1} ms at {:.0} S/s; {} on the line Omega/2pi ({} silent, {} stray, {} smeared left out)",
+            t.frames,
+            1e3 * t.frame_span.0,
+            1e3 * t.frame_span.1,
+            t.sample_rate,
+            t.points.len(),
+            t.silent,
+            t.stray,
+            t.smeared
+        )?;
+        if !t.hum.is_empty() {
+            let lines: Vec<String> = t.hum.iter().map(|h| format!("{h:.2}")).collect();
+            writeln!(f, "  mains hum subtracted at {} Hz", lines.join(", "))?;
+        }
+        if let (Some(p), Some(q)) = (t.points.first(), t.points.last()) {
+            writeln!(
+                f,
+                "  Omega rises from {:.1} rad/s ({:.2} Hz) at {:.3} s to {:.1} rad/s ({:.2} Hz) at {:.3} s",
+                p.omega,
+                p.omega / (2.0 * PI),
+                0.5 * (p.a + p.b),
+                q.omega,
+                q.omega / (2.0 * PI),
+                0.5 * (q.a + q.b)
+            )?;
+        }
+        writeln!(
+            f,
+            "  eq 79 on the pitch: beta = {:.4} +- {:.4}, t0 = {:.5} +- {:.5} s, ln C = {:.3} +- {:.3} (rms residual {:.3} rad/s, n = {}, chi2/dof {:.2}; errors scaled by the residuals)",
+            x.beta, x.beta_sigma, x.t0, x.t0_sigma, x.ln_c, x.ln_c_sigma, x.rms, x.n, x.chi2_dof
+        )?;
+        match (&self.phase, &self.phase_refused) {
+            (Some(p), _) => writeln!(
+                f,
+                "  eq 79 on the phase ({}): beta = {:.5} +- {:.5}, t0 = {:.6} +- {:.6} s, ln C = {:.4} +- {:.4} ({:.1} turns in {} blocks, rms residual {:.4} rad, chi2/dof {:.2}; errors scaled by the residuals)",
+                self.phase_implausible().map_or_else(
+                    || "the result".to_string(),
+                    |why| format!("not the result: {why}; the pitch's fit is reported")
+                ),
+                p.beta, p.beta_sigma, p.t0, p.t0_sigma, p.ln_c, p.ln_c_sigma, p.turns, p.n, p.rms, p.chi2_dof
+            )
+            .and_then(|()| match &self.turn_count {
+                Some(c) => writeln!(f, "  turns counted: {c}"),
+                None => Ok(()),
+            })
+            .and_then(|()| match &p.law {
+                Some(l) if l.drifts => writeln!(
+                    f,
+                    "  the law across the record: the later {} blocks (from t = {:.4} s) give beta = {:.5} +- {:.5}, t0 = {:.6} +- {:.6} s; eq 79 drifts over the record, so the shifts are the law's systematic uncertainty: beta = {:.5} +- {:.5} (stat) +- {:.5} (law), t0 = {:.6} +- {:.6} (stat) +- {:.6} (law) s",
+                    l.cycles, l.t_from, l.beta, l.beta_sigma, l.t0, l.t0_sigma,
+                    p.beta, p.beta_sigma, l.beta_systematic(), p.t0, p.t0_sigma, l.t0_systematic()
+                ),
+                _ => Ok(()),
+            })?,
+            (None, Some(why)) => writeln!(f, "  phase not used: {why}")?,
+            (None, None) => {}
+        }
+        writeln!(f, "  model choice: {}", self.models.summary)?;
+        for c in &self.models.candidates {
+            writeln!(
+                f,
+                "    {:<12} {:<28} dAIC {:>9.1}  dBIC {:>9.1}  weight {:.3}",
+                c.name, c.parameters, c.delta_aic, c.delta_bic, c.weight
+            )?;
+        }
+        if let Some(tr) = &self.truth {
+            let l = self.law();
+            writeln!(
+                f,
+                "  truth: beta = {}, t0 = {:.5} s; pulls: beta {:+.2}, t0 {:+.2} ({:+.3} ms)",
+                tr.beta,
+                tr.t0,
+                (l.beta - tr.beta) / l.beta_sigma,
+                (l.t0 - tr.t0) / l.t0_sigma,
+                1e3 * (l.t0 - tr.t0)
+            )?;
+        }
+        Ok(())
+    }
+}
+
+impl SoundAnalysis {
+    /// The result: eq 79 fitted to the phase when it was, else to the pitch track.
+    pub fn law(&self) -> SoundLaw {
+        match &self.phase {
+            Some(p) if self.phase_implausible().is_none() => SoundLaw {
+                beta: p.beta,
+                beta_sigma: p.beta_total(),
+                t0: p.t0,
+                t0_sigma: p.t0_total(),
+                from_phase: true,
+            },
+            _ => SoundLaw {
+                beta: self.fit.beta,
+                beta_sigma: self.fit.beta_sigma,
+                t0: self.fit.t0,
+                t0_sigma: self.fit.t0_sigma,
+                from_phase: false,
+            },
+        }
+    }
+
+    /// Why the phase's fit cannot be the result, if it cannot; then [`law`](Self::law) is the
+    /// pitch track's fit. Eq 79's $t_0$ is where the disk stops: a $t_0$ more than three of its
+    /// sigmas before the middle of the last tracked frame contradicts a pitch that was heard;
+    /// and a $\beta$ whose standard uncertainty exceeds it is not determined by the fit.
+    pub fn phase_implausible(&self) -> Option<String> {
+        let p = self.phase.as_ref()?;
+        let last = self.track.points.last().map(|q| 0.5 * (q.a + q.b))?;
+        if p.t0 + 3.0 * p.t0_total() < last {
+            return Some(format!(
+                "its t0 = {:.4} +- {:.4} s is before the last tracked pitch, at {last:.4} s, \
+                 where the disk was still heard turning",
+                p.t0,
+                p.t0_total()
+            ));
+        }
+        let sigma = p.beta_total();
+        if sigma.is_nan() || sigma >= p.beta.abs() {
+            return Some(format!(
+                "its beta = {:.3} +- {sigma:.3} is not determined: the sigma is at least beta",
+                p.beta
+            ));
+        }
+        None
+    }
+
+    /// The analysis as pretty JSON.
+    pub fn to_json(&self) -> String {
+        serde_json::to_string_pretty(self).unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))
+    }
+
+    /// The frequency track as CSV: frame start and end (s), $\Omega$ (rad/s), its standard
+    /// uncertainty (rad/s), the cross-check's $\Omega$ (rad/s), signal-to-noise.
+    pub fn track_csv(&self) -> String {
+        let mut s = String::from("t_start_s,t_end_s,omega_rad_s,sigma_rad_s,check_rad_s,snr\n");
+        for p in &self.track.points {
+            s.push_str(&format!(
+                "{},{},{},{},{},{}\n",
+                p.a, p.b, p.omega, p.sigma, p.check, p.snr
+            ));
+        }
+        s
+    }
+}
+
+/// Writes a sound analysis to `dir` (`analysis.json`, `track.csv`, and `phase.csv` when the phase
+/// was fitted), each file atomically, and returns the paths written.
+pub fn write_sound_analysis(
+    a: &SoundAnalysis,
+    dir: &std::path::Path,
+) -> Result<Vec<std::path::PathBuf>, ExperimentError> {
+    let io = |p: &std::path::Path, e: std::io::Error| ExperimentError::Io {
+        file: p.display().to_string(),
+        message: format!("cannot write ({e})"),
+    };
+    std::fs::create_dir_all(dir).map_err(|e| io(dir, e))?;
+    let mut out = Vec::new();
+    let mut texts = vec![("analysis.json", a.to_json()), ("track.csv", a.track_csv())];
+    if let Some(p) = &a.phase {
+        texts.push(("phase.csv", p.csv()));
+    }
+    for (name, text) in texts {
+        let p = dir.join(name);
+        files::atomic::write_atomically(&p, text.as_bytes()).map_err(|e| io(&p, e))?;
+        out.push(p);
+    }
+    Ok(out)
+}

@@ -1,0 +1,14 @@
+//! The sound recording analysed: mains hum out ([`mains`]), the fundamental of each frame
+//! ([`spectrum`]) followed into a pitch track ([`track`]), the spectrogram for the eye
+//! ([`spectrogram`]), the phase followed turn by turn ([`phase_blocks`]) and eq 79's heading
+//! fitted to it ([`phase_fit`]), the turns it counts checked against the track's
+//! ([`turn_count`]), and the whole analysis ([`analysis`]).
+
+pub mod analysis;
+pub mod mains;
+pub mod phase_blocks;
+pub mod phase_fit;
+pub mod spectrogram;
+pub mod spectrum;
+pub mod track;
+pub mod turn_count;

@@ -1,0 +1,289 @@
+//! Eq 79's heading fitted to the sound's phase ([`phase_blocks`](crate::sound_analysis::phase_blocks)): the turns of the
+//! contact point counted to the last one the record holds.
+//!
+//! Eq 79, $\Omega = (C/(t_0 - t))^{1/(\beta+2)}$, integrates to the heading
+//! $$\psi(t) = \psi_0 - \frac{C^{q}\,(t_0 - t)^{1-q}}{1 - q}, \qquad q = \frac{1}{\beta + 2},$$
+//! fitted for $(\beta, t_0, \ln C, \psi_0)$ to the blocks' headings $\Phi_{ref}(\bar t_k) +
+//! \delta_k$, each weighted by its variance from the noise. The blocks do not overlap and their
+//! noise is independent; the covariance is the sandwich with the whitened residuals' stationary
+//! covariance ([`least_squares`](crate::fit::least_squares), [`Scale::Stationary`]), so the noise
+//! variances are relative weights whose common size and correlation the residuals measure.
+//!
+//! **Iterated.** The reference starts at the pitch track's fit (its offset from the heading may
+//! drift by turns over the record, so the first blocks' offsets are unwrapped from block to block);
+//! each fit becomes the next reference, so that the offsets shrink to the noise and each block's
+//! mean offset sits at its centroid; the blocks near $t_0$ reach up to five of the last fit's
+//! $\sigma_{t_0}$ (and at least one millisecond) before it.
+//!
+//! **The law's own error.** The heading is refitted on the later half of the blocks; where
+//! $\beta$ or $t_0$ moves by more than [`DRIFT_SIGMAS`](crate::fit::law_stability::DRIFT_SIGMAS) of the half's uncertainty, the shift is
+//! stated as the law's systematic uncertainty, as for the light signal
+//! ([`law_stability`](crate::fit::law_stability)).
+
+use crate::fit::band::Row;
+use crate::fit::eq84_85::phase;
+use crate::fit::law_stability::LawStability;
+use crate::fit::least_squares::{solve, FitError, Problem, Scale};
+use crate::sound_analysis::mains::hum::remove_hum_clear;
+use crate::sound_analysis::phase_blocks::{blocks, Block, BlockSettings, Samples};
+use nalgebra::SVector;
+use serde::Serialize;
+
+/// Rounds of blocks and fit.
+const ROUNDS: usize = 3;
+
+/// Eq 79's heading with an offset: parameters $(\beta, t_0, \ln C, \psi_0)$.
+struct Heading<'a> {
+    t: &'a [f64],
+    y: &'a [f64],
+    last: f64,
+}
+
+impl Problem<4> for Heading<'_> {
+    fn y(&self) -> &[f64] {
+        self.y
+    }
+    fn model(&self, p: &SVector<f64, 4>, i: usize) -> (f64, SVector<f64, 4>) {
+        let p3 = SVector::<f64, 3>::new(p[0], p[1], p[2]);
+        let (phi, _, g) = phase(&p3, self.t[i]);
+        (phi + p[3], SVector::<f64, 4>::new(g[0], g[1], g[2], 1.0))
+    }
+    fn rows(&self, _p: &SVector<f64, 4>) -> Vec<Row> {
+        (0..self.y.len())
+            .map(|i| Row {
+                start: i,
+                coef: vec![1.0],
+            })
+            .collect()
+    }
+    fn admissible(&self, p: &SVector<f64, 4>) -> bool {
+        p.iter().all(|v| v.is_finite()) && p[0] > -0.9 && p[0] < 50.0 && p[1] > self.last
+    }
+}
+
+/// A block of the fit, kept for plotting.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct PhasePoint {
+    /// Block start and end (s).
+    pub a: f64,
+    /// (s)
+    pub b: f64,
+    /// The centroid time (s).
+    pub t: f64,
+    /// Turns in the block.
+    pub turns: usize,
+    /// The heading's residual from the fitted law (rad).
+    pub residual: f64,
+    /// Its standard uncertainty from the noise (rad).
+    pub sigma: f64,
+    /// The fundamental's power over the noise's.
+    pub snr: f64,
+}
+
+/// Eq 79 fitted to the sound's phase.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PhaseFit {
+    /// $\beta$ and its standard uncertainty.
+    pub beta: f64,
+    /// (see `beta`)
+    pub beta_sigma: f64,
+    /// $t_0$ (s) and its standard uncertainty.
+    pub t0: f64,
+    /// (s)
+    pub t0_sigma: f64,
+    /// $\ln C$ and its standard uncertainty.
+    pub ln_c: f64,
+    /// (see `ln_c`)
+    pub ln_c_sigma: f64,
+    /// Turns of the heading followed, from the first block's start to the last block's end.
+    pub turns: f64,
+    /// The rms residual (rad).
+    pub rms: f64,
+    /// The reduced $\chi^2$ of the residuals weighted by their noise variances.
+    pub chi2_dof: f64,
+    /// Blocks fitted.
+    pub n: usize,
+    /// The blocks.
+    pub points: Vec<PhasePoint>,
+    /// The later half's fit against this one: whether eq 79 drifts over the record.
+    pub law: Option<LawStability>,
+}
+
+impl PhaseFit {
+    /// $\beta$'s total standard uncertainty: the fit's and the law's in quadrature.
+    pub fn beta_total(&self) -> f64 {
+        let law = self.law.as_ref().map_or(0.0, LawStability::beta_systematic);
+        self.beta_sigma.hypot(law)
+    }
+
+    /// $t_0$'s total standard uncertainty (s): the fit's and the law's in quadrature.
+    pub fn t0_total(&self) -> f64 {
+        let law = self.law.as_ref().map_or(0.0, LawStability::t0_systematic);
+        self.t0_sigma.hypot(law)
+    }
+}
+
+/// Fits eq 79's heading to the phase of `rec` from `first` (s, where the pitch track first holds
+/// the line) toward $t_0$, starting from `start` = $(\beta, t_0, \ln C)$ with $t_0$'s uncertainty
+/// `t0_sigma` (s). The mains lines `hum` (Hz) are subtracted from the record first, each fitted
+/// where the disk's first eight harmonics by `start` keep [`HUM_GUARD`] away from it.
+pub fn fit_phase(
+    rec: &Samples<'_>,
+    hum: &[f64],
+    first: f64,
+    start: SVector<f64, 3>,
+    t0_sigma: f64,
+    settings: &BlockSettings,
+) -> Result<PhaseFit, FitError> {
+    let x = without_hum(rec, hum, &start);
+    let rec = &Samples {
+        x: &x,
+        t_start: rec.t_start,
+        dt: rec.dt,
+    };
+    let mut p = start;
+    let (mut shift, mut sigma_t0) = (0.0, t0_sigma);
+    let mut result = None;
+    for round in 0..ROUNDS {
+        let end =
+            (p[1] - (5.0 * sigma_t0).max(1e-3)).min(rec.t_start + rec.x.len() as f64 * rec.dt);
+        let bl = blocks(rec, &p, shift, (first, end), round == 0, settings);
+        FitError::at_least("phase blocks", bl.len(), 12, "")?;
+        let (mut fit, p4) = fit_blocks(&bl, &p, shift)?;
+        if round + 1 == ROUNDS {
+            fit.law = later_half(&bl, &p, shift, &fit);
+        }
+        p = SVector::<f64, 3>::new(p4[0], p4[1], p4[2]);
+        shift = p4[3];
+        sigma_t0 = fit.t0_sigma;
+        result = Some(fit);
+    }
+    result.ok_or_else(|| FitError::Numerics("no round".into()))
+}
+
+/// The heading refitted on the later half of the blocks `bl` (demodulated against `p` plus
+/// `shift`), against the whole fit `whole`: where $\beta$ or $t_0$ moves by more than
+/// [`DRIFT_SIGMAS`](crate::fit::law_stability::DRIFT_SIGMAS) of the later half's own uncertainty, eq 79 drifts over the record and the
+/// shift is the law's systematic uncertainty ([`law_stability`](crate::fit::law_stability), as for
+/// the light). `None` when the half has too few blocks to fit.
+fn later_half(
+    bl: &[Block],
+    p: &SVector<f64, 3>,
+    shift: f64,
+    whole: &PhaseFit,
+) -> Option<LawStability> {
+    let h = bl.len() / 2;
+    let (half, _) = fit_blocks(&bl[h..], p, shift).ok()?;
+    Some(LawStability::of_halves(
+        bl.len() - h,
+        bl[h].a,
+        [half.beta, half.beta_sigma, half.t0, half.t0_sigma],
+        [whole.beta, whole.t0],
+    ))
+}
+
+impl PhaseFit {
+    /// The blocks as CSV: start, end and centroid time (s), turns, the heading's residual from
+    /// the fitted law and its standard uncertainty (rad), the fundamental's signal-to-noise.
+    pub fn csv(&self) -> String {
+        let mut s = String::from("t_start_s,t_end_s,t_mean_s,turns,residual_rad,sigma_rad,snr\n");
+        for p in &self.points {
+            s.push_str(&format!(
+                "{},{},{},{},{},{},{}\n",
+                p.a, p.b, p.t, p.turns, p.residual, p.sigma, p.snr
+            ));
+        }
+        s
+    }
+}
+
+/// Closest approach (Hz) of the disk's harmonics to a mains line for a sample to enter the line's
+/// fit.
+pub const HUM_GUARD: f64 = 5.0;
+
+/// The record with the mains lines `hum` subtracted where the disk, by `p`, keeps clear of them.
+fn without_hum(rec: &Samples<'_>, hum: &[f64], p: &SVector<f64, 3>) -> Vec<f64> {
+    let mut x = rec.x.to_vec();
+    if hum.is_empty() {
+        return x;
+    }
+    // The pitch by chunks of 1 ms (NaN past t0, where the disk is silent).
+    let chunk = ((1e-3 / rec.dt) as usize).max(1);
+    let pitch: Vec<f64> = (0..x.len().div_ceil(chunk))
+        .map(|c| {
+            let t = rec.t_start + ((c as f64 + 0.5) * chunk as f64) * rec.dt;
+            if t < p[1] {
+                phase(p, t).1 / std::f64::consts::TAU
+            } else {
+                f64::NAN
+            }
+        })
+        .collect();
+    let clear = |j: usize, line: f64| {
+        let f = pitch[j / chunk];
+        !(1..=8).any(|h| (f64::from(h) * f - line).abs() < HUM_GUARD)
+    };
+    remove_hum_clear(&mut x, 1.0 / rec.dt, hum, &clear);
+    x
+}
+
+/// Fits the heading to blocks demodulated against `p` plus `shift`.
+fn fit_blocks(
+    bl: &[Block],
+    p: &SVector<f64, 3>,
+    shift: f64,
+) -> Result<(PhaseFit, SVector<f64, 4>), FitError> {
+    let t: Vec<f64> = bl.iter().map(|b| b.t).collect();
+    let y: Vec<f64> = bl
+        .iter()
+        .map(|b| phase(p, b.t).0 + shift + b.offset)
+        .collect();
+    let w: Vec<f64> = bl.iter().map(|b| b.sigma * b.sigma).collect();
+    let last = bl.iter().map(|b| b.b).fold(f64::MIN, f64::max);
+    let law = Heading { t: &t, y: &y, last };
+    let p0 = SVector::<f64, 4>::new(p[0], p[1], p[2], {
+        let (mut num, mut den) = (0.0, 0.0);
+        for (i, b) in bl.iter().enumerate() {
+            num += (y[i] - phase(p, b.t).0) / w[i];
+            den += 1.0 / w[i];
+        }
+        num / den
+    });
+    let s = solve(&law, &w, p0, Scale::Stationary)?;
+    let n = y.len();
+    let chi2: f64 = s
+        .residual
+        .iter()
+        .zip(&w)
+        .map(|(r, w)| r * r / w)
+        .sum::<f64>();
+    let q = |tt: f64| phase(&SVector::<f64, 3>::new(s.p[0], s.p[1], s.p[2]), tt).0;
+    let turns = (q(last) - q(bl[0].a)) / std::f64::consts::TAU;
+    let fit = PhaseFit {
+        beta: s.p[0],
+        beta_sigma: s.cov[(0, 0)].sqrt(),
+        t0: s.p[1],
+        t0_sigma: s.cov[(1, 1)].sqrt(),
+        ln_c: s.p[2],
+        ln_c_sigma: s.cov[(2, 2)].sqrt(),
+        turns,
+        rms: (s.residual.iter().map(|r| r * r).sum::<f64>() / n as f64).sqrt(),
+        chi2_dof: chi2 / (n - 4) as f64,
+        n,
+        points: bl
+            .iter()
+            .zip(&s.residual)
+            .map(|(b, r)| PhasePoint {
+                a: b.a,
+                b: b.b,
+                t: b.t,
+                turns: b.turns,
+                residual: *r,
+                sigma: b.sigma,
+                snr: b.snr,
+            })
+            .collect(),
+        law: None,
+    };
+    Ok((fit, s.p))
+}

@@ -1,0 +1,387 @@
+//! A pitch track from a sound recording, in seconds and hertz, whatever the sample rate.
+//!
+//! **Which line is followed.** The sound of a spinning disk is at the contact point's rate,
+//! $\Omega/2\pi$, with harmonics at $h\Omega/2\pi$ (see [`sound`](crate::synthetic::sound)).
+//! Each frame's fundamental is found by the harmonic sum and refined by reassignment, with a
+//! parabola as the cross-check ([`spectrum`](crate::sound_analysis::spectrum)). Mains hum is
+//! subtracted first ([`hum`](crate::sound_analysis::mains::hum)).
+//!
+//! **Frames follow the pitch.** Frames are contiguous and do not overlap (their errors are
+//! independent). Until a line is held, frames of `search` seconds look for a fundamental
+//! between 5 Hz and 2 kHz. Once three frames in a row hold it (one line: each searched frame's
+//! fundamental within [`STEP`] of the one before; a tone that stops where the disk's line
+//! starts, as a mains line's residue in a silent lead-in, is not one line with it), the next
+//! frame's length is
+//! chosen from the line's motion $\dot f$ so that the pitch moves by at most `kappa` of a
+//! frequency resolution across it,
+//! $$T = \min\left(T_{max}, \sqrt{\kappa/|\dot f|}\right),$$
+//! long early where the pitch moves slowly, short near $t_0$, and at most half the time left
+//! to the singularity that $\dot f \propto f^q$ (fitted to the last three frames) predicts, so
+//! that no frame runs past the disk's end; and the search narrows to
+//! $\pm 20\,\%$ about the predicted pitch. The track ends where $T$ would hold fewer than
+//! `cycles` periods (the line smears near $t_0$) after four frames in a row held the line;
+//! that end counts as one smeared frame.
+//!
+//! **Each point's uncertainty** is the noise's (from the frame's own power over its noise, see
+//! [`spectrum`](crate::sound_analysis::spectrum)) and the pitch's motion within the frame, in
+//! quadrature. The fit takes the rate's mean over the frame weighted by the window's energy
+//! $w^2$; the estimate may miss the curvature's part of it, about
+//! $|\ddot f|\,\mathrm{Var}_{w^2}(t)/2$ with $\mathrm{Var}_{w^2}(t) = T^2(1/4 - 15/(8\pi^2))/3$
+//! the time variance of $w^2$, which is taken as that part's standard deviation ($\ddot f$
+//! from the neighbouring points).
+//!
+//! **Left out.** Frames off the line the track follows (cut where a searched frame's
+//! fundamental jumps by more than [`STEP`] from the last one held; the longest run is the line),
+//! frames whose two estimators disagree by more than 5 of their sigmas plus a
+//! hundredth of the resolution $1/T$, and frames found by the wide search that lie more than
+//! 10 % off the median of their four neighbours, as stray; frames without a line, as silent; the last frame before a silence
+//! (the disk may settle inside it), as smeared.
+
+use crate::error::ExperimentError;
+use crate::sound_analysis::mains::hum::remove_hum;
+use crate::sound_analysis::spectrum::{Analyser, Estimate};
+use crate::trace::Trace;
+use serde::{Deserialize, Serialize};
+use std::f64::consts::PI;
+
+/// How the track is made.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct TrackSettings {
+    /// Frame length (s) while searching for the line.
+    pub search: f64,
+    /// Longest frame (s).
+    pub max_frame: f64,
+    /// Largest pitch motion across a frame, in frequency resolutions: $\dot f T^2$.
+    pub kappa: f64,
+    /// Fewest periods of the fundamental in a frame.
+    pub cycles: f64,
+    /// A harmonic counts when its power stands this many times above the noise per bin.
+    pub min_snr: f64,
+}
+
+impl Default for TrackSettings {
+    fn default() -> Self {
+        Self {
+            search: 0.5,
+            max_frame: 0.25,
+            kappa: 0.5,
+            cycles: 3.0,
+            min_snr: 30.0,
+        }
+    }
+}
+
+/// One frame of the track.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct TrackPoint {
+    /// Frame start (s).
+    pub a: f64,
+    /// Frame end (s).
+    pub b: f64,
+    /// The fundamental, $\Omega$ (rad/s), by reassignment.
+    pub omega: f64,
+    /// Its standard uncertainty (rad/s): the noise's and the motion's in quadrature.
+    pub sigma: f64,
+    /// The fundamental by parabolic interpolation (rad/s), the cross-check.
+    pub check: f64,
+    /// The harmonics' power over the noise's per bin.
+    pub snr: f64,
+}
+
+/// The track.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FrequencyTrack {
+    /// Sample rate (S/s).
+    pub sample_rate: f64,
+    /// The shortest and longest frame analysed (s).
+    pub frame_span: (f64, f64),
+    /// Frames analysed.
+    pub frames: usize,
+    /// Frames kept, in time order.
+    pub points: Vec<TrackPoint>,
+    /// Frames left out as silent, stray or smeared.
+    pub silent: usize,
+    /// (see `silent`)
+    pub stray: usize,
+    /// (see `silent`)
+    pub smeared: usize,
+    /// Mains lines subtracted (Hz).
+    pub hum: Vec<f64>,
+}
+
+/// A frame as analysed: its span and what it held.
+struct Frame {
+    a: f64,
+    b: f64,
+    est: Option<Estimate>,
+    /// Searched over the whole band (no line held before it).
+    searched: bool,
+}
+
+/// The pitch track of a uniformly sampled sound recording.
+pub fn frequency_track(
+    trace: &Trace,
+    s: &TrackSettings,
+) -> Result<FrequencyTrack, ExperimentError> {
+    let file = trace.source.clone();
+    let dt = trace.sample_interval();
+    if dt.is_nan() || dt <= 0.0 {
+        return Err(ExperimentError::Setting(format!(
+            "{file}: the samples have no positive interval"
+        )));
+    }
+    let fs = 1.0 / dt;
+    let span = trace.v.len() as f64 * dt;
+    if span < 8.0 * s.search {
+        return Err(ExperimentError::TooFewPeaks {
+            file,
+            what: "seconds of sound".into(),
+            found: span as usize,
+            needed: (8.0 * s.search).ceil() as usize,
+            hint: format!("record at least {:.1} s of sound", 8.0 * s.search),
+        });
+    }
+    let mut v = trace.v.clone();
+    let hum = remove_hum(&mut v, fs);
+    let (frames, smeared_end) = march(&v, trace.t[0], fs, s);
+    let lens: Vec<f64> = frames.iter().map(|f| f.b - f.a).collect();
+    let frame_span = (
+        lens.iter().copied().fold(f64::INFINITY, f64::min),
+        lens.iter().copied().fold(0.0, f64::max),
+    );
+    let silent = frames.iter().filter(|f| f.est.is_none()).count();
+    let line = the_line(&frames);
+    let (mut kept, mut stray, mut smeared) = (Vec::<(TrackPoint, bool)>::new(), 0, smeared_end);
+    for (k, fr) in frames.iter().enumerate() {
+        let Some(e) = fr.est else { continue };
+        if !line[k] {
+            stray += 1;
+            continue;
+        }
+        if k + 1 < frames.len() && frames[k + 1].est.is_none() {
+            smeared += 1;
+            continue;
+        }
+        let tol = 5.0 * e.sigma + 0.01 / (fr.b - fr.a);
+        if (e.f - e.check).abs() > tol {
+            stray += 1;
+            continue;
+        }
+        let p = TrackPoint {
+            a: fr.a,
+            b: fr.b,
+            omega: 2.0 * PI * e.f,
+            sigma: 2.0 * PI * e.sigma,
+            check: 2.0 * PI * e.check,
+            snr: e.snr,
+        };
+        kept.push((p, fr.searched));
+    }
+    let mut points = Vec::with_capacity(kept.len());
+    for (k, (p, searched)) in kept.iter().enumerate() {
+        let mut nb: Vec<f64> = (k.saturating_sub(2)..(k + 3).min(kept.len()))
+            .filter(|&j| j != k)
+            .map(|j| kept[j].0.omega)
+            .collect();
+        if *searched && nb.len() >= 2 {
+            let m = nb.len() / 2;
+            let med = *nb.select_nth_unstable_by(m, f64::total_cmp).1;
+            if (p.omega / med - 1.0).abs() > 0.1 {
+                stray += 1;
+                continue;
+            }
+        }
+        points.push(*p);
+    }
+    add_motion(&mut points);
+    Ok(FrequencyTrack {
+        sample_rate: fs,
+        frame_span,
+        frames: frames.len(),
+        points,
+        silent,
+        stray,
+        smeared,
+        hum,
+    })
+}
+
+/// Which frames lie on the line the track follows: the frames holding a fundamental are cut into
+/// runs wherever a searched frame's fundamental lies more than [`STEP`] from the last one held
+/// (silent frames between do not cut a run); the run of most frames is the line (the earliest
+/// of equal runs).
+fn the_line(frames: &[Frame]) -> Vec<bool> {
+    let mut run = vec![usize::MAX; frames.len()];
+    let (mut id, mut last): (usize, Option<f64>) = (0, None);
+    for (k, fr) in frames.iter().enumerate() {
+        let Some(e) = fr.est else { continue };
+        if let Some(p) = last {
+            if fr.searched && (e.f / p).max(p / e.f) > STEP {
+                id += 1;
+            }
+        }
+        last = Some(e.f);
+        run[k] = id;
+    }
+    let count = |i: usize| run.iter().filter(|&&r| r == i).count();
+    let best = (0..=id).rev().max_by_key(|&i| count(i)).unwrap_or(0);
+    run.iter().map(|&r| r == best).collect()
+}
+
+/// Walks the record frame by frame (see the module's documentation); returns the frames and 1
+/// when the track ended because the line moved too fast for a frame (counted as one smeared
+/// frame), else 0.
+fn march(v: &[f64], t0: f64, fs: f64, s: &TrackSettings) -> (Vec<Frame>, usize) {
+    let mut an = Analyser::new(fs);
+    let mut frames: Vec<Frame> = Vec::new();
+    let mut pos = 0usize;
+    let mut smeared = 0;
+    loop {
+        let (len_s, lo, hi) = match predict(&frames) {
+            Some(motion) => {
+                // T and the pitch at the frame's middle, each from the other (two rounds).
+                let mut t = s.max_frame;
+                let mut f_mid = motion.f;
+                let limit = s.max_frame.min(0.5 * motion.remaining());
+                for _ in 0..3 {
+                    f_mid = motion.pitch(motion.end + 0.5 * t);
+                    let fdot = motion.slope(f_mid);
+                    t = (s.kappa / fdot.max(f64::MIN_POSITIVE)).sqrt().min(limit);
+                }
+                let n = frames.len();
+                if t * f_mid >= s.cycles {
+                    (t, 0.8 * f_mid, 1.2 * f_mid)
+                } else if n >= 4 && one_line(&frames[n - 4..]) {
+                    smeared = 1;
+                    break;
+                } else {
+                    (s.search, 0.0, 2000.0)
+                }
+            }
+            None => (s.search, 0.0, 2000.0),
+        };
+        let len = ((len_s * fs).round() as usize).max(16);
+        if pos + len > v.len() {
+            break;
+        }
+        let band = (lo.max(5.0).max(2.5 / len_s), hi.min(2000.0));
+        let est = an.fundamental(&v[pos..pos + len], band.0, band.1, s.min_snr);
+        frames.push(Frame {
+            a: t0 + pos as f64 / fs,
+            b: t0 + (pos + len) as f64 / fs,
+            est,
+            searched: lo == 0.0,
+        });
+        pos += len;
+    }
+    (frames, smeared)
+}
+
+/// The line's motion at the end of the frames held: the last pitch $f$ at time $t$, its rate
+/// $\dot f$, and the exponent $q$ of $\dot f \propto f^q$ (from the last three frames, 0 with two).
+struct Motion {
+    f: f64,
+    t: f64,
+    fdot: f64,
+    q: f64,
+    end: f64,
+}
+
+impl Motion {
+    /// $\dot f$ at pitch `f`.
+    fn slope(&self, f: f64) -> f64 {
+        self.fdot.abs() * (f / self.f).powf(self.q)
+    }
+
+    /// The time from the last frame's end to the singularity of $\dot f \propto f^q$ (for
+    /// $q > 1$, $t_0 - t = f/((q-1)\dot f)$); infinite for $q \le 1$.
+    fn remaining(&self) -> f64 {
+        if self.q > 1.0 && self.fdot > 0.0 {
+            self.f / ((self.q - 1.0) * self.fdot) - (self.end - self.t)
+        } else {
+            f64::INFINITY
+        }
+    }
+
+    /// The pitch at time `t`, by two midpoint steps of $\dot f(f)$.
+    fn pitch(&self, t: f64) -> f64 {
+        let h = 0.5 * (t - self.t);
+        let mut f = self.f;
+        for _ in 0..2 {
+            let mid = f + 0.5 * h * self.slope(f);
+            f += h * self.slope(mid);
+        }
+        f
+    }
+}
+
+/// Largest ratio of consecutive frames' fundamentals on one line.
+pub const STEP: f64 = 1.25;
+
+/// Whether `frames` all hold a fundamental on one line: each frame searched over the whole band
+/// within [`STEP`] of the one before (a frame searched about the line's predicted pitch is on
+/// it by its band).
+fn one_line(frames: &[Frame]) -> bool {
+    frames.iter().all(|f| f.est.is_some())
+        && frames.windows(2).all(|w| match (w[0].est, w[1].est) {
+            (Some(p), Some(q)) => !w[1].searched || (q.f / p.f).max(p.f / q.f) <= STEP,
+            _ => false,
+        })
+}
+
+/// The line's motion from the last frames when the last three held it.
+fn predict(frames: &[Frame]) -> Option<Motion> {
+    let mid = |f: &Frame| 0.5 * (f.a + f.b);
+    let n = frames.len();
+    if n < 3 || !one_line(&frames[n - 3..]) {
+        return None;
+    }
+    let (p, q) = (&frames[n - 2], &frames[n - 1]);
+    let (e, g) = (p.est?, q.est?);
+    let fdot = (g.f - e.f) / (mid(q) - mid(p));
+    let exponent = match frames[n - 3].est.map(|d| (&frames[n - 3], d)) {
+        Some((o, d)) => {
+            let fdot0 = (e.f - d.f) / (mid(p) - mid(o));
+            let r = (fdot / fdot0).ln() / (0.5 * (g.f + e.f) / (0.5 * (e.f + d.f))).ln();
+            if r.is_finite() {
+                r.clamp(0.0, 8.0)
+            } else {
+                0.0
+            }
+        }
+        None => 0.0,
+    };
+    Some(Motion {
+        f: g.f,
+        t: mid(q),
+        fdot,
+        q: exponent,
+        end: q.b,
+    })
+}
+
+/// Adds the pitch's motion within each frame to its uncertainty (see the module's
+/// documentation).
+fn add_motion(points: &mut [TrackPoint]) {
+    let n = points.len();
+    if n < 3 {
+        return;
+    }
+    let mid = |p: &TrackPoint| 0.5 * (p.a + p.b);
+    let curv: Vec<f64> = (0..n)
+        .map(|k| {
+            let j = k.clamp(1, n - 2);
+            let (p, q, r) = (&points[j - 1], &points[j], &points[j + 1]);
+            let (t0, t1, t2) = (mid(p), mid(q), mid(r));
+            let d1 = (q.omega - p.omega) / (t1 - t0);
+            let d2 = (r.omega - q.omega) / (t2 - t1);
+            2.0 * (d2 - d1) / (t2 - t0)
+        })
+        .collect();
+    let var_w = (0.25 - 15.0 / (8.0 * PI * PI)) / 3.0;
+    for (p, c) in points.iter_mut().zip(curv) {
+        let t = p.b - p.a;
+        let motion = 0.5 * c.abs() * var_w * t * t;
+        p.sigma = p.sigma.hypot(motion);
+    }
+}
