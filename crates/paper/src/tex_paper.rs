@@ -148,7 +148,11 @@ impl Paper {
                     caret,
                 }
             })?;
-            let same = parse::parse(&entry.latex).is_ok_and(|(c, _)| c == tex_chains);
+            let read = |c: Vec<super::Chain>| -> Vec<super::Chain> {
+                c.into_iter().map(super::orient::oriented).collect()
+            };
+            let tex_chains = read(tex_chains);
+            let same = parse::parse(&entry.latex).is_ok_and(|(c, _)| read(c) == tex_chains);
             if !same {
                 notes.push(format!(
                     "eq {} ({file}:{}): the source's form is read, and differs from {eqfile}'s: \
