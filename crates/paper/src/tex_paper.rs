@@ -94,6 +94,20 @@ impl Paper {
         if let Some(extra) =
             numbered.find(|t| !entries.iter().any(|e| Some(&e.label) == t.label.as_ref()))
         {
+            let lost = entries.iter().find(|e| {
+                Some(e.number) == extra.number
+                    && !found.iter().any(|t| t.label.as_ref() == Some(&e.label))
+            });
+            if let (None, Some(entry)) = (&extra.label, lost) {
+                return Err(PaperError::Structure {
+                    file: format!("{file}:{}", extra.line),
+                    message: format!(
+                        "equation ({}) has no \\label, and eq {} of {eqfile} has the label `{}` \
+                         that no equation carries: add \\label{{{}}} to it",
+                        entry.number, entry.number, entry.label, entry.label
+                    ),
+                });
+            }
             return Err(PaperError::Structure {
                 file: format!("{file}:{}", extra.line),
                 message: format!(
