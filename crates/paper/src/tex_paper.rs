@@ -81,7 +81,7 @@ impl Paper {
         let corrections = optional(dir, "corrections.yaml")?;
         let built_in = Texts::BUILT_IN;
         let eqfile = match (&equations, dir) {
-            (Some(_), Some(d)) => d.join("equations.yaml").display().to_string(),
+            (Some(_), Some(d)) => format!("{}/equations.yaml", d.display()),
             _ => "paper/equations.yaml (built in)".to_string(),
         };
         let yaml = equations.as_deref().unwrap_or(built_in.equations);
