@@ -164,7 +164,7 @@ fn sides_swapped_and_author_forms_two_at_a_time_give_the_printed_outcomes() {
 }
 
 #[test]
-#[ignore = "every pair of author forms: 105 full check runs, about 8 minutes on two cores"]
+#[ignore = "every pair of author forms: 105 full check runs, about 6.5 minutes on two cores"]
 fn every_pair_of_author_forms_gives_the_printed_outcomes() {
     let base = outcomes(Paper::built_in_shared());
     for pair in pairs() {
