@@ -20,10 +20,10 @@ pub(crate) struct PaperInput {
 /// The paper's directory, as an option.
 #[derive(clap::Args)]
 pub(crate) struct PaperDir {
-    /// Read the paper's equations from DIR/equations.yaml (and DIR/symbols.yaml, DIR/claims.yaml
-    /// when present) instead of the built-in copy: an edited equation is re-checked without
-    /// rebuilding.
-    #[arg(long, value_name = "DIR")]
+    /// Read the paper's equations from its LaTeX source (a .tex file, or a folder holding one),
+    /// or from DIR/equations.yaml (and DIR/symbols.yaml, DIR/claims.yaml when present), instead
+    /// of the built-in copy: an edited equation is re-checked without rebuilding.
+    #[arg(long, value_name = "PATH")]
     pub paper: Option<PathBuf>,
 }
 
@@ -45,8 +45,13 @@ impl PaperDir {
 fn load_paper(dir: Option<&Path>) -> anyhow::Result<&'static Paper> {
     match dir {
         None => Ok(built_in_paper()),
-        Some(d) => match Paper::from_dir(d) {
-            Ok(p) => Ok(Box::leak(Box::new(p))),
+        Some(d) => match Paper::from_path(d) {
+            Ok(p) => {
+                for note in &p.notes {
+                    eprintln!("note: {note}");
+                }
+                Ok(Box::leak(Box::new(p)))
+            }
             Err(e) => Err(anyhow::anyhow!("--paper {}: {e}", d.display())),
         },
     }

@@ -323,15 +323,24 @@ fn run_jobs(
 /// could not be evaluated (a symbol without a value, an operation on values of the wrong kinds,
 /// a square root of a negative number), so the check reports that instead of failing the paper,
 /// and the finding can be neither a failure nor a root cause.
+/// The same holds for a finding whose error is not a number: a comparison that gives no number
+/// is not evidence against the paper.
 pub fn evaluated(f: Finding, bench: &Bench) -> Result<Finding, String> {
-    if f.claimed.is_finite() {
-        Ok(f)
-    } else {
+    if !f.claimed.is_finite() {
         Err(format!(
             "could not evaluate the claim ({}): {}",
             bench.paper.origin(),
             f.at
         ))
+    } else if !f.error.is_finite() {
+        Err(format!(
+            "could not evaluate the comparison ({}): the error is {} ({})",
+            bench.paper.origin(),
+            f.error,
+            f.at
+        ))
+    } else {
+        Ok(f)
     }
 }
 

@@ -3,7 +3,7 @@
 //! letters and minus, accents and `\mathbf` without braces, `\mathrm{d}`, `\frac12`, rows and
 //! alignment points, labels and tags, words in `\text`, `\operatorname`, `\sin{x}`, `|b|`,
 //! `dX/dt`, `\frac{d}{dt}X`). Each rewrite keeps the mathematics, so the text it gives reads back
-//! as the same relations, node for node; `tests/invariance.rs` requires the checks' outcomes on
+//! as the same relations, node for node; `tests/author_forms.rs` requires the checks' outcomes on
 //! them to be those of the printed text.
 
 /// One family of rewrites: its name and the rewrite.

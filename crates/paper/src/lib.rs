@@ -16,6 +16,7 @@ mod load;
 pub use load::Texts;
 pub mod mutate;
 pub mod notation;
+pub mod orient;
 pub mod parse;
 pub mod printed;
 pub mod tex;
@@ -395,6 +396,7 @@ fn parse_entry(
     };
     let (chains, seen) =
         parse::parse(&entry.latex).map_err(|e| latex_error(e.column, e.message))?;
+    let chains = chains.into_iter().map(orient::oriented).collect();
     let local = resolve_table(&entry.symbols, eqfile, entry.number)?;
     let mut symbols = rustc_hash::FxHashMap::default();
     let mut columns = rustc_hash::FxHashMap::default();

@@ -56,7 +56,9 @@ pub(super) fn read_fit(claims: &[ClaimEntry], file: &str) -> Result<Fit, PaperEr
 }
 
 impl Paper {
-    /// The right side of eq `n`'s first printed relation with the symbols bound by `bind`.
+    /// The claimed side of eq `n`'s first printed relation with the symbols bound by `bind`:
+    /// its right side, or its left side where only that one has every symbol bound (the
+    /// relation written with its sides in the other order, `b = a`, gives what `a = b` gives).
     pub fn right_side(&self, n: u32, bind: &Bindings<f64>) -> Result<f64, EvalError> {
         let eq = self.equation(n);
         let rel = eq
@@ -64,7 +66,10 @@ impl Paper {
             .into_iter()
             .next()
             .ok_or_else(|| EvalError::Unbound(format!("eq {n} prints no relation")))?;
-        eq.scalar(rel.rhs, bind)
+        match (eq.scalar(rel.rhs, bind), eq.scalar(rel.lhs, bind)) {
+            (Err(EvalError::Unbound(_)), Ok(left)) => Ok(left),
+            (right, _) => right,
+        }
     }
 
     /// Eq 54's right side, $(k+1)\varpi^2/\Omega_0^2$, at tilt $\alpha_0$ as a quadratic in

@@ -81,7 +81,7 @@ impl Paper {
         let corrections = optional(dir, "corrections.yaml")?;
         let built_in = Texts::BUILT_IN;
         let eqfile = match (&equations, dir) {
-            (Some(_), Some(d)) => d.join("equations.yaml").display().to_string(),
+            (Some(_), Some(d)) => format!("{}/equations.yaml", d.display()),
             _ => "paper/equations.yaml (built in)".to_string(),
         };
         let yaml = equations.as_deref().unwrap_or(built_in.equations);
@@ -94,6 +94,20 @@ impl Paper {
         if let Some(extra) =
             numbered.find(|t| !entries.iter().any(|e| Some(&e.label) == t.label.as_ref()))
         {
+            let lost = entries.iter().find(|e| {
+                Some(e.number) == extra.number
+                    && !found.iter().any(|t| t.label.as_ref() == Some(&e.label))
+            });
+            if let (None, Some(entry)) = (&extra.label, lost) {
+                return Err(PaperError::Structure {
+                    file: format!("{file}:{}", extra.line),
+                    message: format!(
+                        "equation ({}) has no \\label, and eq {} of {eqfile} has the label `{}` \
+                         that no equation carries: add \\label{{{}}} to it",
+                        entry.number, entry.number, entry.label, entry.label
+                    ),
+                });
+            }
             return Err(PaperError::Structure {
                 file: format!("{file}:{}", extra.line),
                 message: format!(
@@ -148,7 +162,11 @@ impl Paper {
                     caret,
                 }
             })?;
-            let same = parse::parse(&entry.latex).is_ok_and(|(c, _)| c == tex_chains);
+            let read = |c: Vec<super::Chain>| -> Vec<super::Chain> {
+                c.into_iter().map(super::orient::oriented).collect()
+            };
+            let tex_chains = read(tex_chains);
+            let same = parse::parse(&entry.latex).is_ok_and(|(c, _)| read(c) == tex_chains);
             if !same {
                 notes.push(format!(
                     "eq {} ({file}:{}): the source's form is read, and differs from {eqfile}'s: \

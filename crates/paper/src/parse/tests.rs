@@ -142,3 +142,65 @@ fn nesting_and_size_are_limited_before_recursing() {
     let ok = format!("{}a{}", "(".repeat(100), ")".repeat(100));
     assert!(parse(&ok).is_ok());
 }
+
+/// Each hint the reader gives, applied as it says, makes the text read.
+#[test]
+fn every_hint_applied_reads() {
+    for (bad, fixed, says) in [
+        (r"x = b \over c", r"x = {b \over c}", "in braces"),
+        (r"x \lsim b", r"x \le b", r"\le"),
+        (r"x \neq b", r"x < b", "relations"),
+        (
+            r"f = \begin{cases} 1 & b > 0 \\ 2 & b < 0 \end{cases}",
+            r"f = 1 \quad \text{for } b > 0, \qquad f = 2 \quad \text{for } b < 0",
+            r"\text{for }",
+        ),
+        (r"x = \exp y", r"x = \cos y", r"\cos"),
+    ] {
+        let e = parse(bad).unwrap_err();
+        assert!(e.message.contains(says), "{bad}: {}", e.message);
+        parse(fixed).unwrap_or_else(|e| panic!("{fixed}: {e:?}"));
+    }
+}
+
+/// The forms of the issue, each beside the form the paper's transcription uses.
+#[test]
+fn the_authors_forms_read_as_the_transcription() {
+    let same =
+        |a: &str, b: &str| assert_eq!(parse(a).unwrap().0, parse(b).unwrap().0, "{a} vs {b}");
+    same(r"x = \frac12 + \frac ba", r"x = \frac{1}{2} + \frac{b}{a}");
+    same(r"x = {a \over b}", r"x = \frac{a}{b}");
+    same(
+        r"\dot\alpha = \mathbf a \cdot \mathbf a",
+        r"\dot{\alpha} = \mathbf{a} \cdot \mathbf{a}",
+    );
+    same(
+        r"{{\rm d} \Omega \over {\rm d}t} = 0",
+        r"\frac{d \Omega}{dt} = 0",
+    );
+    same(
+        r"\frac{\mathrm{d}}{\mathrm{d}t}\Omega = 0",
+        r"\frac{d \Omega}{dt} = 0",
+    );
+    same(r"d\Omega/dt = 0", r"\frac{d \Omega}{dt} = 0");
+    same(r"d^2\Omega/dt^2 = 0", r"\frac{d^2 \Omega}{dt^2} = 0");
+    same(r"x = |b|", r"x = \left| b \right|");
+    same(r"x &= a \\ &= b", r"x = a = b");
+    same(r"x &=& a \nonumber \\ && + b \label{e1}", r"x = a + b");
+    same(
+        r"\begin{aligned} x &= a \\ &= b \end{aligned}",
+        r"x = a = b",
+    );
+    same(r"\begin{split} x &= a \end{split} \tag{3}", r"x = a");
+    same(
+        r"x = \sin{\alpha} + \operatorname{sin}\alpha + \mathrm{sin}\alpha",
+        r"x = \sin\alpha + \sin\alpha + \sin\alpha",
+    );
+    same(r"x = a \quad \text{for } b = 0", r"x = a");
+    same(r"x = a \quad \text{(the steady motion)}", r"x = a");
+    same("ω = α − β", r"\omega = \alpha - \beta");
+    same(
+        r"x = \vec{\vec I} \cdot \vec\omega",
+        r"x = \mathbf{I} \cdot \vec{\omega}",
+    );
+}

@@ -18,6 +18,10 @@ pub struct Macro {
 /// The most expansions in one equation before the reader calls the macros recursive.
 pub const MAX_EXPANSIONS: usize = 10_000;
 
+/// The longest an equation's text may grow by expansion (the equation reader takes at most
+/// [`crate::parse::MAX_CHARS`] characters).
+pub const MAX_EXPANDED_BYTES: usize = 16 * crate::parse::MAX_CHARS;
+
 /// A control word (`\name`, letters) starting at byte `i` of `s`: the name and the byte after.
 fn control_word(s: &str, i: usize) -> Option<(&str, usize)> {
     let rest = s.get(i..)?.strip_prefix('\\')?;
@@ -151,7 +155,7 @@ pub fn expand(latex: &str, macros: &BTreeMap<String, Macro>) -> Result<String, S
             continue;
         };
         count += 1;
-        if count > MAX_EXPANSIONS || s.len() > 1 << 20 {
+        if count > MAX_EXPANSIONS || s.len() > MAX_EXPANDED_BYTES {
             return Err(format!(
                 "\\{name} (defined at line {}) keeps expanding: it calls itself; write what it \
                  stands for in the equation instead",
