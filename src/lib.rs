@@ -97,6 +97,12 @@ pub fn main() -> ExitCode {
         Command::Peer(c) => c.run(),
     };
     cli::stdout::flush();
+    // Work cut short by the budget is said as that, with the stage and the budget that does,
+    // whatever the command made of it (a study's own advice would be about its scene).
+    let result = match physics::budget::overrun() {
+        Some(o) => Err(anyhow::Error::from(o)),
+        None => result,
+    };
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(message) => {

@@ -45,11 +45,29 @@ impl PaperDir {
 fn load_paper(dir: Option<&Path>) -> anyhow::Result<&'static Paper> {
     match dir {
         None => Ok(built_in_paper()),
-        Some(d) => match Paper::from_dir(d) {
+        Some(d) => match refuse_unreadable(d).and_then(|()| Ok(Paper::from_dir(d)?)) {
             Ok(p) => Ok(Box::leak(Box::new(p))),
             Err(e) => Err(anyhow::anyhow!("--paper {}: {e}", d.display())),
         },
     }
+}
+
+/// The paper's files in `dir` that are there, looked at through the files crate's reading door
+/// before the paper's reader opens them: a FIFO, a device (a link to `/dev/zero`), a directory
+/// or a file over the reader's limit is refused at once instead of blocking or reading forever.
+fn refuse_unreadable(dir: &Path) -> anyhow::Result<()> {
+    for name in [
+        "equations.yaml",
+        "symbols.yaml",
+        "claims.yaml",
+        "corrections.yaml",
+    ] {
+        let path = dir.join(name);
+        if std::fs::symlink_metadata(&path).is_ok() {
+            files::input::read_bytes(&path, paper::MAX_FILE_BYTES as u64)?;
+        }
+    }
+    Ok(())
 }
 
 pub(crate) fn bench_for(accuracy: Option<Accuracy>, paper: &'static Paper) -> Bench<'static> {

@@ -291,21 +291,23 @@ fn run_jobs(
         jobs.par_iter()
             .map(|job| {
                 let (subject, section, check, derivation, _) = job.clone();
-                let finding =
-                    match (missing_input(bench, &subject), &subject) {
+                let stage = format!("the check of {}", subject.name());
+                let checked = physics::budget::in_stage(&stage, || {
+                    let finding = match (missing_input(bench, &subject), &subject) {
                         (Some(why), _) => Err(why),
                         (None, Subject::Claim { id }) => Ok(
                             equations::claims::with_printed_headline(bench, id, check(bench)),
                         ),
                         (None, _) => Ok(check(bench)),
                     };
-                let checked = Checked {
-                    subject,
-                    section,
-                    finding: finding.and_then(|f| evaluated(f, bench)),
-                    derivation: derivation.map(|d| evaluated(d(bench), bench)),
-                    cause: None,
-                };
+                    Checked {
+                        subject,
+                        section,
+                        finding: finding.and_then(|f| evaluated(f, bench)),
+                        derivation: derivation.map(|d| evaluated(d(bench), bench)),
+                        cause: None,
+                    }
+                });
                 progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
                 checked
             })
@@ -318,7 +320,18 @@ fn run_jobs(
 /// could not be evaluated (a symbol without a value, an operation on values of the wrong kinds,
 /// a square root of a negative number), so the check reports that instead of failing the paper,
 /// and the finding can be neither a failure nor a root cause.
+///
+/// A reference that is not a number was not located (a bisection whose predicate did not change
+/// over its bracket, an integration cut short by the budget): that too is reported as a check
+/// that could not run, never as a failure of the paper.
 pub fn evaluated(f: Finding, bench: &Bench) -> Result<Finding, String> {
+    if !f.reference.is_finite() {
+        return Err(format!(
+            "the reference could not be located (an integration stopped early, or a bisection's \
+             bracket held no edge): {}",
+            f.at
+        ));
+    }
     if f.claimed.is_finite() {
         Ok(f)
     } else {
