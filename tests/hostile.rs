@@ -327,10 +327,10 @@ fn max_steps_out_of_range_names_its_range_and_the_range_works() {
     refused(
         &dir,
         &["simulate", "big.yaml"],
-        &["max_steps", "from 1 to 5e7"],
+        &["max_steps", "between 1 and 5e7"],
     );
     std::fs::write(dir.join("zero.yaml"), with("0")).ok();
-    refused(&dir, &["simulate", "zero.yaml"], &["from 1 to 5e7"]);
+    refused(&dir, &["simulate", "zero.yaml"], &["between 1 and 5e7"]);
     // The range's end is within the range; a memory budget may still lower it for this scene,
     // and then the number that message gives is applied and works.
     std::fs::write(dir.join("at.yaml"), with("5e7")).ok();

@@ -67,14 +67,14 @@ pub struct ArtifactArgs {
     /// Mains frequency (Hz, 10 to 1000).
     #[arg(long, value_name = "HZ", default_value_t = 50.0, value_parser = crate::cli::ranges::mains_hz)]
     mains: f64,
-    /// Clip above this fraction of the signal's range (0 to 1).
-    #[arg(long, value_name = "FRACTION", value_parser = crate::cli::ranges::fraction)]
+    /// Clip above this fraction of the signal's range (above 0, at most 1).
+    #[arg(long, value_name = "FRACTION")]
     clip: Option<f64>,
     /// Isolated glitches per second (0 to 1000).
-    #[arg(long, value_name = "RATE", value_parser = crate::cli::ranges::glitch_rate)]
+    #[arg(long, value_name = "RATE")]
     glitches: Option<f64>,
-    /// Fraction of samples dropped (0 to 1).
-    #[arg(long, value_name = "FRACTION", value_parser = crate::cli::ranges::fraction)]
+    /// Fraction of samples dropped (0 to below 0.5).
+    #[arg(long, value_name = "FRACTION")]
     dropped: Option<f64>,
     /// Noise seed of the scope or microphone, and of the artifacts.
     #[arg(long, default_value_t = 1)]

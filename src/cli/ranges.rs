@@ -17,7 +17,7 @@ fn within(s: &str, lo: f64, hi: f64, what: &str) -> Result<f64, String> {
     }
 }
 
-/// A fraction of the signal's span, 0 to 1 (`--drift`, `--hum`, `--clip`, `--dropped`).
+/// A fraction of the signal's span, 0 to 1 (`--drift`, `--hum`).
 pub(crate) fn fraction(s: &str) -> Result<f64, String> {
     within(s, 0.0, 1.0, "a fraction of the signal's span")
 }
@@ -26,11 +26,6 @@ pub(crate) fn fraction(s: &str) -> Result<f64, String> {
 /// at 400.
 pub(crate) fn mains_hz(s: &str) -> Result<f64, String> {
     within(s, 10.0, 1000.0, "a mains frequency in Hz")
-}
-
-/// Isolated glitches per second, 0 to 1000.
-pub(crate) fn glitch_rate(s: &str) -> Result<f64, String> {
-    within(s, 0.0, 1000.0, "a number of glitches per second")
 }
 
 #[cfg(test)]
@@ -46,6 +41,6 @@ mod tests {
         assert!(fraction("NaN").is_err() && fraction("inf").is_err() && fraction("-0.1").is_err());
         assert_eq!(mains_hz("60"), Ok(60.0));
         assert!(mains_hz("1e9").unwrap_err().contains("10 to 1000"));
-        assert!(glitch_rate("abc").unwrap_err().contains("not a number"));
+        assert!(mains_hz("abc").unwrap_err().contains("not a number"));
     }
 }

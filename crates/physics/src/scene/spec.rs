@@ -141,7 +141,8 @@ fn whole_steps<'de, D: serde::Deserializer<'de>>(d: D) -> Result<u32, D::Error> 
         Ok(x as u32)
     } else {
         Err(D::Error::custom(format!(
-            "expected a whole number from 1 to {limit:e}, found {x}: give max_steps in that range"
+            "max_steps must lie between 1 and {limit:e} (a whole number), found {x}: give \
+             max_steps in that range"
         )))
     }
 }
