@@ -85,6 +85,11 @@ pub fn main() -> ExitCode {
             return ExitCode::FAILURE;
         }
     }
+    // Commands whose studies or checks speak of their own scenes when cut short.
+    let budget_said = matches!(
+        cli.command,
+        Command::Report(_) | Command::Figures(_) | Command::Check(_)
+    );
     let result = match cli.command {
         Command::Simulate(a) => a.run(),
         Command::Report(a) => a.run(),
@@ -97,6 +102,14 @@ pub fn main() -> ExitCode {
         Command::Peer(c) => c.run(),
     };
     cli::stdout::flush();
+    // Work cut short by the budget is said as that, with the stage and the budget that does:
+    // always when the command ended as if it were not, and in place of a study's or a check's
+    // own error (whose advice would be about its scene); a simulation says where its run ended.
+    let result = match (physics::budget::overrun(), &result) {
+        (Some(o), Err(_)) if budget_said => Err(anyhow::Error::from(o)),
+        (Some(o), Ok(())) => Err(anyhow::Error::from(o)),
+        _ => result,
+    };
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(message) => {

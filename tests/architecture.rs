@@ -503,6 +503,71 @@ fn the_function_rule_would_catch_a_long_function() {
     assert_eq!(long_functions(&over, 150), vec![("over".to_string(), 151)]);
 }
 
+/// What writes, renames or removes a file directly: outside the `files` crate, every file the
+/// tool writes goes through its doors (`output_file::write_output` for a path the user named,
+/// `output::SetWriter` and `output::write_set_file` for a set), which never replace a non-regular
+/// file, an input or a name the user did not give, and never remove what they did not create.
+const WRITES: &[&str] = &[
+    "fs::write(",
+    "File::create(",
+    "OpenOptions",
+    "fs::rename(",
+    "remove_file(",
+    "remove_dir(",
+    "remove_dir_all(",
+    "fs::copy(",
+    "set_permissions(",
+    "hard_link(",
+    "write_atomically(",
+];
+
+/// The lines of `files` (before their unit tests) that write around the door.
+fn writing_lines(files: &[std::path::PathBuf]) -> Vec<String> {
+    let mut offenders = Vec::new();
+    for f in files {
+        let text = std::fs::read_to_string(f).unwrap();
+        for (n, line) in code_lines(&text) {
+            if let Some(w) = WRITES.iter().find(|w| line.contains(*w)) {
+                offenders.push(format!("{}:{n}: {} ({w})", f.display(), line.trim()));
+            }
+        }
+    }
+    offenders
+}
+
+#[test]
+fn every_file_is_written_through_the_door() {
+    let files_crate = Path::new(env!("CARGO_MANIFEST_DIR")).join("crates/files");
+    let mut files = Vec::new();
+    for d in source_dirs()
+        .iter()
+        .filter(|d| !d.starts_with(&files_crate))
+    {
+        rust_files(d, &mut files);
+    }
+    assert_none(
+        "write through files::output_file::write_output or files::output (SetWriter, write_set_file)",
+        &writing_lines(&files),
+    );
+}
+
+#[test]
+fn the_door_rule_would_catch_a_direct_write() {
+    let dir = std::env::temp_dir().join(format!("rolling-disk-door-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let planted = "fn f(p: &Path) {\n    std::fs::rename(&a, p).ok();\n}\n#[cfg(test)]\nfn t() { std::fs::write(p, \"x\"); }\n";
+    std::fs::write(dir.join("planted.rs"), planted).unwrap();
+    std::fs::write(
+        dir.join("door.rs"),
+        "fn f() { files::output_file::write_output(p, b); }\n",
+    )
+    .unwrap();
+    let found = writing_lines(&[dir.join("planted.rs"), dir.join("door.rs")]);
+    std::fs::remove_dir_all(&dir).unwrap();
+    assert_eq!(found.len(), 1, "{found:?}");
+    assert!(found[0].contains("planted.rs:2"), "{found:?}");
+}
+
 /// Fails with `what` and the offending lines when there are any.
 fn assert_none(what: &str, offenders: &[String]) {
     assert!(offenders.is_empty(), "{what}:\n{}", offenders.join("\n"));

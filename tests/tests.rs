@@ -23,6 +23,8 @@ mod experiment_sound_bound;
 mod experiment_turn_count;
 mod extremes;
 mod figures;
+mod hostile;
+mod hostile_budgets;
 mod invariance;
 mod lab_frame;
 mod lab_frame_invariants;

@@ -54,6 +54,7 @@ fn check(only: Option<&str>, json: bool, input: &PaperInput) -> anyhow::Result<(
     };
     let checked = run_checks(&bench, &selection, threads, &progress)?;
     bar.finish_and_clear();
+    crate::cli::within_budget()?;
     let elapsed = started.elapsed().as_secs_f64();
     if json {
         use ::report::json;

@@ -23,7 +23,8 @@ pub enum Command {
         #[arg(long, value_name = "FILE", conflicts_with = "csv")]
         wav: Option<PathBuf>,
         /// The sound's sample rate (S/s), 1000 to 384000.
-        #[arg(long, value_name = "R", default_value_t = 48000)]
+        #[arg(long, value_name = "R", default_value_t = 48000,
+              value_parser = clap::value_parser!(u32).range(1000..=384_000))]
         rate: u32,
         /// The sound's coding: 16-bit WAV, 24-bit WAV, 32-bit float WAV, or 16-bit FLAC.
         #[arg(long, value_parser = super::choice::parser::<experiment::SoundFormat>(), default_value = "wav")]
@@ -57,22 +58,22 @@ pub struct ArtifactArgs {
     /// 15 %, 2 glitches/s, 1 % dropped samples (of the signal's span).
     #[arg(long)]
     realistic: bool,
-    /// Baseline drift, rms, as a fraction of the signal's span.
-    #[arg(long, value_name = "FRACTION")]
+    /// Baseline drift, rms, as a fraction of the signal's span (0 to 1).
+    #[arg(long, value_name = "FRACTION", value_parser = crate::cli::ranges::fraction)]
     drift: Option<f64>,
-    /// Mains hum amplitude as a fraction of the signal's span.
-    #[arg(long, value_name = "FRACTION")]
+    /// Mains hum amplitude as a fraction of the signal's span (0 to 1).
+    #[arg(long, value_name = "FRACTION", value_parser = crate::cli::ranges::fraction)]
     hum: Option<f64>,
-    /// Mains frequency (Hz).
-    #[arg(long, value_name = "HZ", default_value_t = 50.0)]
+    /// Mains frequency (Hz, 10 to 1000).
+    #[arg(long, value_name = "HZ", default_value_t = 50.0, value_parser = crate::cli::ranges::mains_hz)]
     mains: f64,
-    /// Clip above this fraction of the signal's range.
+    /// Clip above this fraction of the signal's range (above 0, at most 1).
     #[arg(long, value_name = "FRACTION")]
     clip: Option<f64>,
-    /// Isolated glitches per second.
+    /// Isolated glitches per second (0 to 1000).
     #[arg(long, value_name = "RATE")]
     glitches: Option<f64>,
-    /// Fraction of samples dropped.
+    /// Fraction of samples dropped (0 to below 0.5).
     #[arg(long, value_name = "FRACTION")]
     dropped: Option<f64>,
     /// Noise seed of the scope or microphone, and of the artifacts.
@@ -148,6 +149,12 @@ fn experiment_simulate(
     args: &ArtifactArgs,
 ) -> anyhow::Result<()> {
     let scene = Scene::load(name)?;
+    // The output is checked before anything is computed (a scene given as its own output too).
+    for (option, path) in [("--csv", csv), ("--wav", wav.map(|w| w.0))] {
+        if let Some(path) = path {
+            stdout::check_output(path).map_err(|e| anyhow::anyhow!("{option} {e}"))?;
+        }
+    }
     eprintln!("simulating the recording of {}...", scene.name);
     let bar = stage_spinner();
     let note = |stage: &str| bar.set_message(stage.to_string());

@@ -1,6 +1,6 @@
 //! `rolling-disk figures`: the figures alone, by the paper's names.
 
-use files::atomic::write_atomically;
+use files::output::{write_set_file, SetWriter};
 use std::path::{Path, PathBuf};
 
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -56,30 +56,35 @@ fn figures(only: Option<&str>, out: &Path, format: FigureFormat) -> anyhow::Resu
             ));
         }
     }
-    std::fs::create_dir_all(out)
-        .map_err(|e| anyhow::anyhow!("cannot create {}: {e}", out.display()))?;
+    // The folder is a set: checked before any computing, replaced whole at the end.
+    let set = SetWriter::begin(out)?;
     // Only the studies the wanted figures are drawn from, each once.
     let config = RunConfig::figures(::checks::equations::Bench::default(), &wanted)?;
     let results = compute(&config, &|s: &str| eprintln!("figures: {s}"))?;
+    crate::cli::within_budget()?;
     let all = ::report::figures::some(&wanted, &results)?;
+    let mut written = Vec::new();
     for f in &all {
         let path = match format {
             FigureFormat::Svg => {
-                let path = out.join(format!("{}.svg", f.name));
+                let path = set.dir().join(format!("{}.svg", f.name));
                 let svg = f.drawing.to_svg(760, 480)?;
-                write_atomically(&path, svg.as_bytes())
-                    .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))?;
+                write_set_file(&path, svg.as_bytes()).map_err(|e| {
+                    anyhow::anyhow!("cannot write {}: {e}", set.final_path(&path).display())
+                })?;
                 path
             }
             FigureFormat::Png => {
-                let path = out.join(format!("{}.png", f.name));
-                let tmp = out.join(format!(".{}.{}.png", f.name, std::process::id()));
-                f.drawing.to_png(&tmp)?;
-                std::fs::rename(&tmp, &path)
-                    .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))?;
+                let path = set.dir().join(format!("{}.png", f.name));
+                f.drawing.to_png(&path)?;
                 path
             }
         };
+        written.push(path);
+    }
+    let shown: Vec<PathBuf> = written.iter().map(|p| set.final_path(p)).collect();
+    set.commit(&written)?;
+    for path in shown {
         println!("wrote {}", path.display());
     }
     Ok(())

@@ -11,8 +11,19 @@ pub mod mutants;
 pub mod paper_input;
 pub mod peer;
 pub mod precision;
+pub(crate) mod ranges;
 pub mod report;
 pub mod scenes;
 pub mod simulate;
 pub mod sound_figures;
 pub mod stdout;
+
+/// An error when an integration of this process ran past the wall-time budget: a command calls
+/// it before it prints or writes a result computed from integrations, so that nothing cut short
+/// is ever reported as a result.
+pub(crate) fn within_budget() -> anyhow::Result<()> {
+    match physics::budget::overrun() {
+        Some(o) => Err(o.into()),
+        None => Ok(()),
+    }
+}

@@ -1,6 +1,5 @@
 //! `rolling-disk peer export` and `peer compare`: an independent program as a reference.
 
-use files::atomic::write_atomically;
 use physics::scene::Scene;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -52,10 +51,15 @@ fn print_text(text: &str) -> anyhow::Result<()> {
 
 fn peer_export(name: &str, out: Option<&Path>) -> anyhow::Result<()> {
     let scene = Scene::load(name)?;
+    if let Some(path) = out {
+        crate::cli::stdout::check_output(path).map_err(|e| anyhow::anyhow!("--out {e}"))?;
+    }
     let text = ::studies::peer::response::response(&scene)?;
     match out {
-        Some(path) => write_atomically(path, text.as_bytes())
-            .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?,
+        Some(path) => {
+            crate::cli::stdout::write_to(path, text.as_bytes())
+                .map_err(|e| anyhow::anyhow!("--out {e}"))?;
+        }
         None => print_text(&text)?,
     }
     Ok(())

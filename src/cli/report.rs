@@ -39,6 +39,7 @@ fn report(format: ReportFormat, out: &Path, input: &PaperInput) -> anyhow::Resul
     let bench = input.bench()?;
     let status = |s: &str| eprintln!("report: {s}");
     let (report, figures) = build(&bench, &status)?;
+    crate::cli::within_budget()?;
     let formats = match format {
         ReportFormat::Html => vec![render::Format::Html],
         ReportFormat::Latex => vec![render::Format::Latex],

@@ -60,6 +60,9 @@ pub(crate) fn stage_spinner() -> ProgressBar {
 
 fn simulate(name: &str, csv: Option<PathBuf>, compare: Option<&str>) -> anyhow::Result<()> {
     let scene = Scene::load(name)?;
+    if let Some(path) = &csv {
+        stdout::check_output(path).map_err(|e| anyhow::anyhow!("--csv {e}"))?;
+    }
     if let Some(other) = compare {
         let other = match other {
             "lab-frame" => ::studies::compare::lab_frame_for(scene.model)?,

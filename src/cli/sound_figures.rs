@@ -33,7 +33,7 @@ pub fn write(a: &SoundAnalysis, trace: &Trace, dir: &Path) -> anyhow::Result<Vec
     for (name, fig) in figures {
         let svg = fig.drawing.to_svg(900, 600)?;
         let path = dir.join(name);
-        files::atomic::write_atomically(&path, svg.as_bytes())?;
+        files::output::write_set_file(&path, svg.as_bytes())?;
         out.push(path);
     }
     Ok(out)

@@ -33,6 +33,15 @@ fn exit_on(e: std::io::Error) -> ! {
     std::process::exit(1);
 }
 
+/// Checks, before anything is computed, that the output file `path` of an option can be
+/// written (`-`, standard output, always can): the same refusals as [`write_to`], at once.
+pub(crate) fn check_output(path: &std::path::Path) -> anyhow::Result<()> {
+    if path.as_os_str() != "-" {
+        files::output_file::output_target(path)?;
+    }
+    Ok(())
+}
+
 /// Writes `bytes` to the output file `path` of an option such as `--csv` or `--wav`: `-` is
 /// standard output, any other path goes through [`files::output_file::write_output`].
 /// Returns whether standard output was used, so that the caller says what it did on standard

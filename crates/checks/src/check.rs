@@ -292,25 +292,29 @@ fn run_jobs(
         jobs.par_iter()
             .map(|job| {
                 let (subject, section, check, derivation, _) = job.clone();
-                let finding =
-                    match (missing_input(bench, &subject), &subject) {
+                let stage = format!("the check of {}", subject.name());
+                let checked = physics::budget::in_stage(&stage, || {
+                    let finding = match (missing_input(bench, &subject), &subject) {
                         (Some(why), _) => Err(why),
                         (None, Subject::Claim { id }) => Ok(
                             equations::claims::with_printed_headline(bench, id, check(bench)),
                         ),
                         (None, _) => Ok(check(bench)),
                     };
-                let finding = finding.and_then(|f| evaluated(f, bench));
-                let dimensions = crate::dimensions::of(bench, &subject, finding.as_ref().ok());
-                let finding = finding.map(|f| crate::dimensions::slip(&subject, f, &dimensions));
-                let checked = Checked {
-                    subject,
-                    section,
-                    finding,
-                    derivation: derivation.map(|d| evaluated(d(bench), bench)),
-                    cause: None,
-                    dimensions,
-                };
+                    let finding = finding.and_then(|f| evaluated(f, bench));
+                    let dimensions =
+                        crate::dimensions::of(bench, &subject, finding.as_ref().ok());
+                    let finding =
+                        finding.map(|f| crate::dimensions::slip(&subject, f, &dimensions));
+                    Checked {
+                        subject,
+                        section,
+                        finding,
+                        derivation: derivation.map(|d| evaluated(d(bench), bench)),
+                        cause: None,
+                        dimensions,
+                    }
+                });
                 progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
                 checked
             })
@@ -325,7 +329,18 @@ fn run_jobs(
 /// and the finding can be neither a failure nor a root cause.
 /// The same holds for a finding whose error is not a number: a comparison that gives no number
 /// is not evidence against the paper.
+///
+/// A reference that is not a number was not located (a bisection whose predicate did not change
+/// over its bracket, an integration cut short by the budget): that too is reported as a check
+/// that could not run, never as a failure of the paper.
 pub fn evaluated(f: Finding, bench: &Bench) -> Result<Finding, String> {
+    if !f.reference.is_finite() {
+        return Err(format!(
+            "the reference could not be located (an integration stopped early, or a bisection's \
+             bracket held no edge): {}",
+            f.at
+        ));
+    }
     if !f.claimed.is_finite() {
         Err(format!(
             "could not evaluate the claim ({}): {}",

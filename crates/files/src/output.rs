@@ -29,8 +29,8 @@ pub enum SetError {
     /// The target has no name of its own (`.`, `..`, `/`).
     #[error("--out {0}: name a directory of its own (for example --out report), not . or .. or /, since the whole set is replaced")]
     NoName(String),
-    /// The target exists and is not a directory.
-    #[error("--out {0}: exists and is not a directory; give the path of a directory")]
+    /// The target exists and is not a directory (nor a symbolic link to one).
+    #[error("--out {0}: exists and is not a directory (nor a link to one); give the path of a directory")]
     NotDirectory(String),
     /// The directory beside the target cannot be written.
     #[error("--out {path}: cannot write beside it in {parent} ({source}); give a directory you can write to")]
@@ -132,8 +132,17 @@ impl SetWriter {
     /// Checks the target, cleans the temporaries of dead runs, and creates the temporary
     /// directory to write into: all before any computing, so that a target that cannot be
     /// written is reported at once.
+    ///
+    /// A symbolic link to a directory is followed: the set goes to the directory it names, and
+    /// the link is kept.
     pub fn begin(target: &Path) -> Result<SetWriter, SetError> {
         let shown = target.display().to_string();
+        if std::fs::symlink_metadata(target).is_ok_and(|m| m.file_type().is_symlink()) {
+            return match std::fs::canonicalize(target) {
+                Ok(real) if real.is_dir() => Self::begin(&real),
+                _ => Err(SetError::NotDirectory(shown)),
+            };
+        }
         let name = target
             .file_name()
             .map(|n| n.to_string_lossy().into_owned())

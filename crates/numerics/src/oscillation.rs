@@ -54,13 +54,16 @@ pub fn cubic_root(t: &[f64], x: &[f64], level: f64) -> f64 {
 
 /// Bisection on a predicate that is false at `lo` and true at `hi` (or the reverse): returns the
 /// final bracket, narrowed until its width is below `rel_width` times its upper end.
+///
+/// A predicate that answers the same at both ends (an integration cut short by the wall-time
+/// budget, a user's equation with no edge in the bracket) has no edge to locate: the bracket
+/// returned is then `(NaN, NaN)`, so that every number computed from it is not a number and the
+/// caller reports a reference that could not be located, never a value and never a panic.
 pub fn bisect(lo: f64, hi: f64, rel_width: f64, holds: impl Fn(f64) -> bool) -> (f64, f64) {
     let at_lo = holds(lo);
-    assert_ne!(
-        at_lo,
-        holds(hi),
-        "bisect needs a bracket: the predicate must differ at its ends"
-    );
+    if at_lo == holds(hi) {
+        return (f64::NAN, f64::NAN);
+    }
     let narrow = |lo: f64, hi: f64| (hi - lo).abs() <= rel_width * hi.abs().max(lo.abs());
     try_bisect(lo, hi, narrow, |x| Some(holds(x) != at_lo)).unwrap_or((lo, hi))
 }
@@ -108,6 +111,14 @@ pub fn try_bisect(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_predicate_without_an_edge_gives_a_bracket_of_nans() {
+        let (lo, hi) = bisect(0.0, 1.0, 1e-10, |_| true);
+        assert!(lo.is_nan() && hi.is_nan());
+        let (lo, hi) = bisect(0.0, 1.0, 1e-10, |x| x > 0.25);
+        assert!((0.5 * (lo + hi) - 0.25).abs() < 1e-9, "{lo} {hi}");
+    }
 
     #[test]
     fn a_cubic_crossing_is_found_exactly() {

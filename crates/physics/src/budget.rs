@@ -55,9 +55,52 @@ pub enum BudgetError {
 /// Default wall-time budget of one integration, in seconds.
 pub const DEFAULT_WALL_SECONDS: f64 = 600.0;
 
-/// The wall-time budget of each integration, in milliseconds (0 is never stored: see
+/// The wall-time budget of each integration, in nanoseconds (0 is never stored: see
 /// [`set_wall_seconds`]).
-static WALL_BUDGET_MILLIS: AtomicU64 = AtomicU64::new((DEFAULT_WALL_SECONDS * 1000.0) as u64);
+static WALL_BUDGET_NANOS: AtomicU64 = AtomicU64::new((DEFAULT_WALL_SECONDS * 1e9) as u64);
+
+/// The first integration of this process that ran past its budget: the budget, and the stage
+/// it ran in ([`in_stage`]), if one was named.
+static OVERRUN: std::sync::Mutex<Option<Overrun>> = std::sync::Mutex::new(None);
+
+thread_local! {
+    /// The stage the integrations of this thread run in, for [`Overrun`].
+    static STAGE: std::cell::RefCell<Option<String>> = const { std::cell::RefCell::new(None) };
+}
+
+/// An integration that ran past the wall-time budget: whatever it was computing is cut short,
+/// so a command must not report it as a result.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{} ran past the wall-time budget of {seconds} s (--max-seconds), so what it computed is cut short: give a larger budget, such as the default --max-seconds {DEFAULT_WALL_SECONDS}", stage.as_deref().unwrap_or("an integration"))]
+pub struct Overrun {
+    /// The budget, in seconds.
+    pub seconds: f64,
+    /// The stage, such as "the check of eq 65", where known.
+    pub stage: Option<String>,
+}
+
+/// Runs `f` with its integrations (on this thread) attributed to `stage`.
+pub fn in_stage<T>(stage: &str, f: impl FnOnce() -> T) -> T {
+    let before = STAGE.with(|s| s.replace(Some(stage.to_string())));
+    let out = f();
+    STAGE.with(|s| *s.borrow_mut() = before);
+    out
+}
+
+/// The first integration of this process that ran past its budget, if any did.
+pub fn overrun() -> Option<Overrun> {
+    OVERRUN.lock().ok().and_then(|o| o.clone())
+}
+
+/// Records that an integration with `seconds` of budget ran past it.
+fn record_overrun(seconds: f64) {
+    if let Ok(mut o) = OVERRUN.lock() {
+        if o.is_none() {
+            let stage = STAGE.with(|s| s.borrow().clone());
+            *o = Some(Overrun { seconds, stage });
+        }
+    }
+}
 
 /// Sets the wall-time budget of every integration started from now on. Returns an error
 /// sentence when `seconds` is not a positive finite number of at most a day.
@@ -65,14 +108,14 @@ pub fn set_wall_seconds(seconds: f64) -> Result<(), BudgetError> {
     if !(seconds.is_finite() && seconds > 0.0 && seconds <= 86_400.0) {
         return Err(BudgetError::WallSeconds(seconds));
     }
-    let millis = (seconds * 1000.0).ceil().max(1.0) as u64;
-    WALL_BUDGET_MILLIS.store(millis, Ordering::Relaxed);
+    let nanos = (seconds * 1e9).ceil().max(1.0) as u64;
+    WALL_BUDGET_NANOS.store(nanos, Ordering::Relaxed);
     Ok(())
 }
 
 /// The wall-time budget of one integration, in seconds.
 pub fn wall_seconds() -> f64 {
-    WALL_BUDGET_MILLIS.load(Ordering::Relaxed) as f64 / 1000.0
+    WALL_BUDGET_NANOS.load(Ordering::Relaxed) as f64 / 1e9
 }
 
 /// A deadline for one integration, started now with the current budget.
@@ -92,9 +135,14 @@ impl Deadline {
         }
     }
 
-    /// True once the budget is spent.
+    /// True once the budget is spent; the first time in the process, the overrun is recorded
+    /// ([`overrun`]).
     pub fn passed(&self) -> bool {
-        Instant::now() >= self.end
+        let passed = Instant::now() >= self.end;
+        if passed {
+            record_overrun(self.seconds);
+        }
+        passed
     }
 
     /// The budget, in seconds.
@@ -144,7 +192,9 @@ impl<'a> Work<'a> {
 
     /// Starts `stage`: an error once the budget is spent.
     pub fn stage(&self, stage: &str) -> Result<(), OverBudget> {
-        if self.deadline.passed() {
+        // Said by the error returned, which names the work and the stage: not an overrun of an
+        // integration.
+        if Instant::now() >= self.deadline.end {
             return Err(OverBudget {
                 what: self.what.clone(),
                 stage: stage.into(),

@@ -84,9 +84,10 @@ pub fn compute(
                     progress(&format!("{name}: {} of {} done", step.done, step.total));
                 }
             };
-            let out = s
-                .run(&config.bench, &observe)
-                .map_err(|e| format!("the {name} study failed: {e}"))?;
+            let out = physics::budget::in_stage(&format!("the {name} study"), || {
+                s.run(&config.bench, &observe)
+            })
+            .map_err(|e| format!("the {name} study failed: {e}"))?;
             let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             progress(&format!(
                 "computed {name} ({n}/{total}) in {:.2} s",

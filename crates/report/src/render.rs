@@ -5,7 +5,7 @@ use super::Report;
 use crate::error::ReportError;
 use crate::figures::Figure;
 use crate::parts::PartView;
-use files::atomic::write_atomically;
+use files::output::write_set_file;
 use std::path::{Path, PathBuf};
 use tera::{Context, Tera};
 
@@ -156,7 +156,7 @@ pub fn write(
     let mut written = Vec::new();
     let put = |name: &str, text: String, written: &mut Vec<PathBuf>| -> Result<(), ReportError> {
         let path = dir.join(name);
-        write_atomically(&path, text.as_bytes()).map_err(|e| ReportError::io("write", &path, e))?;
+        write_set_file(&path, text.as_bytes()).map_err(|e| ReportError::io("write", &path, e))?;
         written.push(path);
         Ok(())
     };
@@ -174,10 +174,9 @@ pub fn write(
                 std::fs::create_dir_all(&paper_dir)
                     .map_err(|e| ReportError::io("create", &paper_dir, e))?;
                 let png = |dir: &Path, name: &str, draw: &dyn Fn(&Path) -> Result<(), crate::figures::FigureError>| {
+                    // Written whole through files::output::write_set_file.
                     let path = dir.join(format!("{name}.png"));
-                    let tmp = dir.join(format!(".{name}.{}.png", std::process::id()));
-                    draw(&tmp)?;
-                    std::fs::rename(&tmp, &path).map_err(|e| ReportError::io("write", &path, e))?;
+                    draw(&path)?;
                     Ok::<_, ReportError>(path)
                 };
                 let pngs: Vec<Vec<PathBuf>> = figures

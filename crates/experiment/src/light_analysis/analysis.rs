@@ -17,7 +17,7 @@ pub use crate::light_analysis::settings::AnalysisSettings;
 use crate::light_analysis::window::fitting_window;
 pub use crate::light_analysis::window::Window;
 use crate::trace::{Trace, Truth};
-use files::atomic::write_atomically;
+use files::output::write_set_file;
 use physics::budget::Work;
 use serde::Serialize;
 use std::fmt;
@@ -542,7 +542,7 @@ pub fn write_analysis(a: &Analysis, dir: &Path) -> Result<Vec<PathBuf>, Experime
     let mut out = Vec::new();
     for (name, text) in files {
         let p = dir.join(name);
-        write_atomically(&p, text.as_bytes()).map_err(|e| io(&p, e))?;
+        write_set_file(&p, text.as_bytes()).map_err(|e| io(&p, e))?;
         out.push(p);
     }
     Ok(out)

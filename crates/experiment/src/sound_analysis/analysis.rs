@@ -499,7 +499,7 @@ pub fn write_sound_analysis(
     }
     for (name, text) in texts {
         let p = dir.join(name);
-        files::atomic::write_atomically(&p, text.as_bytes()).map_err(|e| io(&p, e))?;
+        files::output::write_set_file(&p, text.as_bytes()).map_err(|e| io(&p, e))?;
         out.push(p);
     }
     Ok(out)

@@ -165,10 +165,14 @@ impl RollingSolid {
     }
 
     /// The tilt where the centre is above the contact ($x = 0$), the solid balancing on its
-    /// rim; `None` for the thin disk (at $\pi/2$). Between it and $\pi/2$ gravity tips the
-    /// solid back toward upright.
+    /// rim; `None` when that is only upright ($\pi/2$): the thin disk, and a solid whose rim is
+    /// rounded whole (fillet half the thickness), whose $x$ is positive below $\pi/2$. Between
+    /// it and $\pi/2$ gravity tips the solid back toward upright.
     pub fn balance_tilt(&self) -> Option<f64> {
         self.solid?;
+        if self.terms(FRAC_PI_2).0 > 0.0 {
+            return None;
+        }
         let (lo, hi) = bisect(0.0, FRAC_PI_2, 0.0, |alpha| self.terms(alpha).0 <= 0.0);
         Some(0.5 * (lo + hi))
     }

@@ -130,12 +130,29 @@ impl Scene {
         }
     }
 
-    /// Reads a scene from a file path, or a built-in scene by name.
+    /// Reads a scene from a file path, or a built-in scene by name (`NAME` or `builtin:NAME`);
+    /// a file whose name is that of a built-in scene is refused, naming both ways to say which.
     pub fn load(name_or_path: &str) -> Result<Scene, SceneError> {
+        if let Some(src) = name_or_path
+            .strip_prefix("builtin:")
+            .and_then(builtin::source)
+        {
+            return Scene::parse(src, name_or_path);
+        }
         if let Some(src) = builtin::source(name_or_path) {
-            if !Path::new(name_or_path).exists() {
+            if std::fs::symlink_metadata(name_or_path).is_err() {
                 return Scene::parse(src, &format!("builtin:{name_or_path}"));
             }
+            // A file here shadows the built-in scene of the same name: say so rather than pick.
+            return Err(SceneError {
+                file: name_or_path.to_string(),
+                line: None,
+                column: None,
+                message: format!(
+                    "is both a built-in scene and a file in this directory: write \
+                     ./{name_or_path} for the file or builtin:{name_or_path} for the built-in scene"
+                ),
+            });
         }
         let path = Path::new(name_or_path);
         let src = input::read_text(path, input::MAX_SCENE_BYTES).map_err(|e| {

@@ -113,7 +113,7 @@ pub(super) struct SolverSpec {
     pub(super) atol: f64,
     #[serde(default = "default_step")]
     pub(super) step: f64,
-    #[serde(default = "default_max_steps", deserialize_with = "whole_u32")]
+    #[serde(default = "default_max_steps", deserialize_with = "whole_steps")]
     pub(super) max_steps: u32,
     #[serde(default)]
     pub(super) project: Option<Projection>,
@@ -131,15 +131,19 @@ pub(super) fn default_atol() -> f64 {
 pub(super) fn default_step() -> f64 {
     Settings::default().step
 }
-/// A whole number of at least 0 written as an integer or in floating-point form (`5e7`, as
-/// docs/limits.md writes the limits).
-fn whole_u32<'de, D: serde::Deserializer<'de>>(d: D) -> Result<u32, D::Error> {
-    use serde::de::{Error, Unexpected};
+/// `max_steps`: a whole number from 1 to [`crate::budget::MAX_STEPS_LIMIT`], written as an
+/// integer or in floating-point form; outside that range the message gives the range.
+fn whole_steps<'de, D: serde::Deserializer<'de>>(d: D) -> Result<u32, D::Error> {
+    use serde::de::Error;
     let x = f64::deserialize(d)?;
-    if x.fract() == 0.0 && (0.0..=f64::from(u32::MAX)).contains(&x) {
+    let limit = crate::budget::MAX_STEPS_LIMIT as f64;
+    if x.fract() == 0.0 && (1.0..=limit).contains(&x) {
         Ok(x as u32)
     } else {
-        Err(D::Error::invalid_value(Unexpected::Float(x), &"u32"))
+        Err(D::Error::custom(format!(
+            "max_steps must lie between 1 and {limit:e} (a whole number), found {x}: give \
+             max_steps in that range"
+        )))
     }
 }
 
