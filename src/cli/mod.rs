@@ -11,6 +11,7 @@ pub mod paper_input;
 pub mod peer;
 pub mod precision;
 pub mod report;
+pub(crate) mod row_stream;
 pub mod scenes;
 pub mod simulate;
 pub mod sound_figures;

@@ -18,10 +18,12 @@
 //!   reason (a Zeno cascade of bounces, chattering).
 //!
 //! Sampling at a fixed interval is aligned on the global grid $t_0 + n\,\Delta t$ across
-//! segments; each sample is re-integrated from the last accepted step before it in its own
-//! segment's flow.
+//! segments ([`Problem::sample_origin`]); each segment's run samples its own flow (DOP853 on
+//! its dense output).
 
-use crate::solve::{solve, Ending, Event, Problem, Settings, SettingsError, State, Stats};
+use crate::solve::{
+    held_samples, solve, Ending, Event, Problem, Settings, SettingsError, State, Stats,
+};
 use std::fmt;
 
 /// What happens at a located guard crossing.
@@ -112,7 +114,13 @@ where
     pub sample: Option<f64>,
     /// Most switches before the run halts.
     pub max_switches: usize,
+    /// Takes every point as it is made, so that none is held: the solution then holds only
+    /// the first point and the last.
+    pub on_point: Option<PointSink<'a, H::Mode, N>>,
 }
+
+/// Takes each point of a hybrid run with its mode ([`HybridProblem::on_point`]).
+pub type PointSink<'a, M, const N: usize> = &'a mut dyn FnMut(f64, &State<N>, &M);
 
 fn no_stops<'a, const N: usize>() -> Vec<Event<'a, N>> {
     Vec::new()
@@ -130,8 +138,29 @@ impl<'a, H: Hybrid<N>, const N: usize> HybridProblem<'a, H, N> {
             stops: &no_stops::<'a, N>,
             sample: None,
             max_switches: 10_000,
+            on_point: None,
         }
     }
+}
+
+/// Writes a point: to the sink (the solution then keeps only its first point and this one) or
+/// to the solution.
+fn emit<M: Clone, const N: usize>(
+    out: &mut HybridSolution<M, N>,
+    sink: &mut Option<PointSink<'_, M, N>>,
+    t: f64,
+    y: State<N>,
+    mode: &M,
+) {
+    if let Some(sink) = sink.as_mut() {
+        sink(t, &y, mode);
+        out.t.truncate(1);
+        out.y.truncate(1);
+        out.mode.truncate(1);
+    }
+    out.t.push(t);
+    out.y.push(y);
+    out.mode.push(mode.clone());
 }
 
 fn add(stats: &mut Stats, s: &Stats) {
@@ -156,6 +185,9 @@ pub fn run_hybrid<H: Hybrid<N>, const N: usize>(
         if !(dt.is_finite() && dt > 0.0) {
             return Err(SettingsError::Sample(dt));
         }
+        if p.on_point.is_none() {
+            held_samples(span, dt)?;
+        }
     }
     let mut out = HybridSolution {
         t: vec![p.t0],
@@ -166,7 +198,12 @@ pub fn run_hybrid<H: Hybrid<N>, const N: usize>(
         ending: Ending::TimeReached,
     };
     let (mut t, mut y, mut mode) = (p.t0, p.y0, p.mode);
-    let mut next_sample: u64 = 1;
+    // The last sample written (sampled runs).
+    let mut last_sample = p.t0;
+    let mut sink = p.on_point;
+    if let Some(sink) = sink.as_mut() {
+        sink(p.t0, &p.y0, &mode);
+    }
     loop {
         let guards = p.system.guards(&mode);
         let n_guards = guards.len();
@@ -174,52 +211,36 @@ pub fn run_hybrid<H: Hybrid<N>, const N: usize>(
         let mut problem = Problem::new(&flow, t, y, p.t_end);
         problem.events = guards;
         problem.events.extend((p.stops)());
+        problem.sample = p.sample;
+        problem.sample_origin = Some(p.t0);
+        // A sampled segment's samples lie on the run's grid; the grid time the run starts on
+        // is already the first point.
+        let mut take = |ts: f64, ys: &State<N>| {
+            if ts > last_sample {
+                last_sample = ts;
+                emit(&mut out, &mut sink, ts, *ys, &mode);
+            }
+        };
+        if p.sample.is_some() {
+            problem.on_sample = Some(&mut take);
+        }
         let names: Vec<String> = problem.events.iter().map(|e| e.name.clone()).collect();
         let sol = solve(problem, settings)?;
         add(&mut out.stats, &sol.stats);
         let (t_end, y_end) = sol.last();
-        match p.sample {
-            None => {
-                for (ti, yi) in sol.t.iter().zip(&sol.y).skip(1) {
-                    out.t.push(*ti);
-                    out.y.push(*yi);
-                    out.mode.push(mode.clone());
-                }
-            }
-            Some(dt) => {
-                let mut j = 0;
-                loop {
-                    let ts = p.t0 + dt * next_sample as f64;
-                    if ts >= t_end {
-                        break;
-                    }
-                    while j + 1 < sol.t.len() && sol.t[j + 1] <= ts {
-                        j += 1;
-                    }
-                    let ys = if ts > sol.t[j] {
-                        let s = solve(Problem::new(&flow, sol.t[j], sol.y[j], ts), settings)?;
-                        out.stats.extra_evaluations += s.stats.total_evaluations();
-                        s.last().1
-                    } else {
-                        sol.y[j]
-                    };
-                    out.t.push(ts);
-                    out.y.push(ys);
-                    out.mode.push(mode.clone());
-                    next_sample += 1;
-                }
+        if p.sample.is_none() {
+            for (ti, yi) in sol.t.iter().zip(&sol.y).skip(1) {
+                emit(&mut out, &mut sink, *ti, *yi, &mode);
             }
         }
         // Sampled runs keep the end of every segment too (a switch, a stop, the end time).
-        let push_end = |out: &mut HybridSolution<H::Mode, N>, m: &H::Mode| {
-            out.t.push(t_end);
-            out.y.push(y_end);
-            out.mode.push(m.clone());
-        };
+        let push_end = |out: &mut HybridSolution<H::Mode, N>,
+                        sink: &mut Option<PointSink<'_, H::Mode, N>>,
+                        m: &H::Mode| { emit(out, sink, t_end, y_end, m) };
         match sol.ending {
             Ending::Event { index, t: te, .. } if index < n_guards => {
                 if p.sample.is_some() {
-                    push_end(&mut out, &mode);
+                    push_end(&mut out, &mut sink, &mode);
                 }
                 if out.switches.len() >= p.max_switches {
                     out.ending = Ending::Halted {
@@ -254,9 +275,7 @@ pub fn run_hybrid<H: Hybrid<N>, const N: usize>(
                             what,
                         });
                         if y_next != y_end {
-                            out.t.push(te);
-                            out.y.push(y_next);
-                            out.mode.push(next.clone());
+                            emit(&mut out, &mut sink, te, y_next, &next);
                         }
                         if te >= p.t_end {
                             out.ending = Ending::TimeReached;
@@ -268,7 +287,7 @@ pub fn run_hybrid<H: Hybrid<N>, const N: usize>(
             }
             ending => {
                 if p.sample.is_some() {
-                    push_end(&mut out, &mode);
+                    push_end(&mut out, &mut sink, &mode);
                 }
                 out.ending = ending;
                 return Ok(out);
