@@ -270,12 +270,9 @@ fn events_and_samples_use_the_dense_output_and_keep_the_steps() {
         Engine::Own,
     )
     .unwrap();
-    let sampled = solve_with(
-        Problem::new(&Oscillator, 0.0, State::<2>::new(1.0, 0.0), 10.0).sampled(0.001),
-        &s,
-        Engine::Own,
-    )
-    .unwrap();
+    let mut p = Problem::new(&Oscillator, 0.0, State::<2>::new(1.0, 0.0), 10.0).sampled(0.001);
+    p.dense_samples = true;
+    let sampled = solve_with(p, &s, Engine::Own).unwrap();
     // The sampled run takes the same steps; its samples come from the dense output, three
     // more evaluations for each step that holds one, none per sample.
     assert_eq!(sampled.stats.evaluations, plain.stats.evaluations);

@@ -117,6 +117,9 @@ where
     /// Takes every point as it is made, so that none is held: the solution then holds only
     /// the first point and the last.
     pub on_point: Option<PointSink<'a, H::Mode, N>>,
+    /// Take DOP853's samples from each segment's dense output instead of re-integrating each
+    /// from the step before it (see [`Problem::dense_samples`]).
+    pub dense_samples: bool,
 }
 
 /// Takes each point of a hybrid run with its mode ([`HybridProblem::on_point`]).
@@ -139,6 +142,7 @@ impl<'a, H: Hybrid<N>, const N: usize> HybridProblem<'a, H, N> {
             sample: None,
             max_switches: 10_000,
             on_point: None,
+            dense_samples: false,
         }
     }
 }
@@ -200,6 +204,7 @@ pub fn run_hybrid<H: Hybrid<N>, const N: usize>(
     let (mut t, mut y, mut mode) = (p.t0, p.y0, p.mode);
     // The last sample written (sampled runs).
     let mut last_sample = p.t0;
+    let mut next_sample: u64 = 1;
     let mut sink = p.on_point;
     if let Some(sink) = sink.as_mut() {
         sink(p.t0, &p.y0, &mode);
@@ -211,8 +216,12 @@ pub fn run_hybrid<H: Hybrid<N>, const N: usize>(
         let mut problem = Problem::new(&flow, t, y, p.t_end);
         problem.events = guards;
         problem.events.extend((p.stops)());
-        problem.sample = p.sample;
-        problem.sample_origin = Some(p.t0);
+        let dense = p.sample.is_some() && p.dense_samples;
+        if dense {
+            problem.sample = p.sample;
+            problem.sample_origin = Some(p.t0);
+            problem.dense_samples = true;
+        }
         // A sampled segment's samples lie on the run's grid; the grid time the run starts on
         // is already the first point.
         let mut take = |ts: f64, ys: &State<N>| {
@@ -221,17 +230,42 @@ pub fn run_hybrid<H: Hybrid<N>, const N: usize>(
                 emit(&mut out, &mut sink, ts, *ys, &mode);
             }
         };
-        if p.sample.is_some() {
+        if dense {
             problem.on_sample = Some(&mut take);
         }
         let names: Vec<String> = problem.events.iter().map(|e| e.name.clone()).collect();
         let sol = solve(problem, settings)?;
         add(&mut out.stats, &sol.stats);
         let (t_end, y_end) = sol.last();
-        if p.sample.is_none() {
-            for (ti, yi) in sol.t.iter().zip(&sol.y).skip(1) {
-                emit(&mut out, &mut sink, *ti, *yi, &mode);
+        match p.sample {
+            None => {
+                for (ti, yi) in sol.t.iter().zip(&sol.y).skip(1) {
+                    emit(&mut out, &mut sink, *ti, *yi, &mode);
+                }
             }
+            // Each sample re-integrated from the last accepted step before it.
+            Some(dt) if !dense => {
+                let mut j = 0;
+                loop {
+                    let ts = p.t0 + dt * next_sample as f64;
+                    if ts >= t_end {
+                        break;
+                    }
+                    while j + 1 < sol.t.len() && sol.t[j + 1] <= ts {
+                        j += 1;
+                    }
+                    let ys = if ts > sol.t[j] {
+                        let s = solve(Problem::new(&flow, sol.t[j], sol.y[j], ts), settings)?;
+                        out.stats.extra_evaluations += s.stats.total_evaluations();
+                        s.last().1
+                    } else {
+                        sol.y[j]
+                    };
+                    emit(&mut out, &mut sink, ts, ys, &mode);
+                    next_sample += 1;
+                }
+            }
+            Some(_) => {}
         }
         // Sampled runs keep the end of every segment too (a switch, a stop, the end time).
         let push_end = |out: &mut HybridSolution<H::Mode, N>,
@@ -436,6 +470,7 @@ mod tests {
             3.0,
         );
         p.sample = Some(0.01);
+        p.dense_samples = false;
         let sol = run_hybrid(p, &settings()).unwrap();
         assert_eq!(sol.switches.len(), 1);
         let t_stop = v0 / (mu * G);

@@ -23,7 +23,7 @@ pub fn run(scene: &Scene, progress: Option<&dyn Fn(f64)>) -> Result<Run, Setting
     }
     let mut rows = Vec::new();
     let mut hold = |row: &[f64]| rows.push(row.to_vec());
-    let mut r = run_streamed(scene, progress, &mut hold)?;
+    let mut r = record_run(scene, progress, &mut hold, false)?;
     r.rows = rows;
     Ok(r)
 }
@@ -40,16 +40,36 @@ pub fn run_streamed(
     progress: Option<&dyn Fn(f64)>,
     sink: RowSink<'_>,
 ) -> Result<Run, SettingsError> {
+    record_run(scene, progress, sink, true)
+}
+
+/// Runs a scene, handing each row to `sink`; DOP853's samples from its dense output when
+/// `dense`, otherwise each re-integrated from the step before it (a run held in memory keeps
+/// those, so that the checks over a scene's samples are not moved by the interpolant).
+fn record_run(
+    scene: &Scene,
+    progress: Option<&dyn Fn(f64)>,
+    sink: RowSink<'_>,
+    dense: bool,
+) -> Result<Run, SettingsError> {
     if scene.model == ModelKind::Sliding {
-        return sliding::run_streamed(scene, sink);
+        return sliding::run_streamed(scene, sink, dense);
     }
-    dispatch(scene, Integrate { progress, sink })
+    dispatch(
+        scene,
+        Integrate {
+            progress,
+            sink,
+            dense,
+        },
+    )
 }
 
 /// Integrates and records whatever model the scene builds.
 struct Integrate<'p, 's> {
     progress: Option<&'p dyn Fn(f64)>,
     sink: RowSink<'s>,
+    dense: bool,
 }
 
 impl Visit for Integrate<'_, '_> {
@@ -62,6 +82,7 @@ impl Visit for Integrate<'_, '_> {
         let mut p = problem(model, scene, y0, scene.stop.time);
         p.progress = self.progress;
         p.sample = scene.sample;
+        p.dense_samples = self.dense;
         if scene.sample.is_some() {
             p.on_sample = Some(&mut take);
         }

@@ -14,7 +14,7 @@ use std::f64::consts::{FRAC_PI_2, PI};
 
 /// Runs a sliding scene, handing each recorded row to `sink` as it is made (see
 /// [`super::run_streamed`]): the scene's stop events hold in every mode.
-pub fn run_streamed(scene: &Scene, sink: RowSink<'_>) -> Result<Run, SettingsError> {
+pub fn run_streamed(scene: &Scene, sink: RowSink<'_>, dense: bool) -> Result<Run, SettingsError> {
     let model = sliding_model(scene);
     let columns = super::columns(scene);
     // The run starts from the start state as contact takes it (see `Sliding::run`).
@@ -36,7 +36,7 @@ pub fn run_streamed(scene: &Scene, sink: RowSink<'_>) -> Result<Run, SettingsErr
         recorded += 1;
         energy_change = energy_change.max(((model.energy(y) - e0) / e0).abs());
     };
-    let sol = run_model(&model, scene, scene.sample, Some(&mut take))?;
+    let sol = run_model(&model, scene, scene.sample, Some(&mut take), dense)?;
     let last = sol.y.len() - 1;
     let flow = Flow {
         model: &model,
@@ -67,7 +67,7 @@ pub fn integrate(
     scene: &Scene,
     sample: Option<f64>,
 ) -> Result<SlidingRun, SettingsError> {
-    run_model(model, scene, sample, None)
+    run_model(model, scene, sample, None, false)
 }
 
 /// [`integrate`], handing every point to `on_point` instead of holding it.
@@ -76,6 +76,7 @@ fn run_model(
     scene: &Scene,
     sample: Option<f64>,
     mut on_point: Option<PointSink<'_, Mode, 14>>,
+    dense: bool,
 ) -> Result<SlidingRun, SettingsError> {
     let alpha = |y: &State<14>| tilt(y);
     let below = scene.stop.alpha_below;
@@ -120,6 +121,7 @@ fn run_model(
         sample,
         &stops,
         on_point,
+        dense,
     )
 }
 

@@ -150,7 +150,6 @@ impl<'a, D: Dynamics<N>, const N: usize> Dop853<'a, D, N> {
     }
 
     /// Starts at `(t0, y0)` trying `h_max` as the first step (1 evaluation).
-    #[cfg(test)]
     pub(super) fn with_first_step(
         f: &'a D,
         rtol: f64,

@@ -26,12 +26,14 @@ struct Sampler<'s, const N: usize> {
     y: Vec<State<N>>,
     /// Takes the samples as they are made (then `t` and `y` stay empty).
     sink: Option<Sink<'s, N>>,
+    /// Samples from the dense output; otherwise each is re-integrated from its step's start.
+    dense: bool,
 }
 
 impl<'s, const N: usize> Sampler<'s, N> {
     /// A sampler on the grid `origin + n dt` whose first sample is the first grid time at or
     /// after `t0`.
-    fn new(origin: f64, dt: f64, t0: f64, sink: Option<Sink<'s, N>>) -> Self {
+    fn new(origin: f64, dt: f64, t0: f64, sink: Option<Sink<'s, N>>, dense: bool) -> Self {
         let mut s = Self {
             origin,
             dt,
@@ -39,6 +41,7 @@ impl<'s, const N: usize> Sampler<'s, N> {
             t: Vec::new(),
             y: Vec::new(),
             sink,
+            dense,
         };
         while s.time(s.next) < t0 {
             s.next += 1;
@@ -62,17 +65,15 @@ impl<'s, const N: usize> Sampler<'s, N> {
         t <= t_b && t < self.guard(t_stop)
     }
 
-    /// Writes the samples up to `t_b` and strictly before the guard of `t_stop` from the step's
-    /// dense output (a polynomial of degree 7: its error is of the order of the step's own, see
-    /// [`Dense`]).
-    fn fill(&mut self, dense: &Dense<N>, t_b: f64, t_stop: f64) {
+    /// Writes the samples up to `t_b` and strictly before the guard of `t_stop` from `state_at`.
+    fn fill(&mut self, t_b: f64, t_stop: f64, mut state_at: impl FnMut(f64) -> State<N>) {
         let guard = self.guard(t_stop);
         loop {
             let t = self.time(self.next);
             if t > t_b || t >= guard {
                 return;
             }
-            let y = dense.at(t);
+            let y = state_at(t);
             match self.sink.as_mut() {
                 Some(sink) => sink(t, &y),
                 None => {
@@ -83,6 +84,30 @@ impl<'s, const N: usize> Sampler<'s, N> {
             self.next += 1;
         }
     }
+}
+
+/// The state at `t_a + tau` re-integrated from `(t_a, y_a)` with the same tolerances, first
+/// trying the whole interval in one step; its evaluations are added to `extra`.
+fn advance<D: Dynamics<N>, const N: usize>(
+    f: &D,
+    settings: &Settings,
+    t_a: f64,
+    y_a: State<N>,
+    tau: f64,
+    extra: &mut u64,
+) -> State<N> {
+    if tau <= 0.0 {
+        return y_a;
+    }
+    let t_b = t_a + tau;
+    let mut s = Dop853::with_first_step(f, settings.rtol, settings.atol, t_a, y_a, tau);
+    while s.t < t_b {
+        if s.step(t_b) != Outcome::Accepted {
+            break;
+        }
+    }
+    *extra += s.stats.evaluations;
+    s.y
 }
 
 /// The earliest event that crossed in the step of `dense` from `t_a` to `t_b`, located by
@@ -117,7 +142,7 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
     let mut sink = problem.on_sample;
     let mut sampler = problem
         .sample
-        .map(|dt| Sampler::new(origin, dt, t0, sink.take()));
+        .map(|dt| Sampler::new(origin, dt, t0, sink.take(), problem.dense_samples));
     let (mut ts, mut ys) = (vec![t0], vec![y0]);
     // The last point reached where the state is finite (and no event has fired before).
     let mut last = (t0, y0);
@@ -134,7 +159,7 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
                 steps: settings.max_steps,
             };
         }
-        let t_a = s.t;
+        let (t_a, y_a) = (s.t, s.y);
         match s.step(t_end) {
             Outcome::Collapse => break Ending::StepCollapse { t: s.t },
             Outcome::Stiff => break Ending::Stiff { t: s.t },
@@ -149,7 +174,15 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
             let d = s.dense();
             let (index, t_e, y_e) = locate(&problem.events, &d, t_a, t_b, y_b);
             if let Some(sm) = sampler.as_mut() {
-                sm.fill(&d, t_e, t_e);
+                let mut extra = 0;
+                if sm.dense {
+                    sm.fill(t_e, t_e, |t| d.at(t));
+                } else {
+                    sm.fill(t_e, t_e, |t| {
+                        advance(problem.dynamics, settings, t_a, y_a, t - t_a, &mut extra)
+                    });
+                }
+                s.stats.extra_evaluations += extra;
             }
             last = (t_e, y_e);
             break Ending::Event {
@@ -160,8 +193,16 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
         }
         if let Some(sm) = sampler.as_mut() {
             if sm.due(t_b, t_end) {
-                let d = s.dense();
-                sm.fill(&d, t_b, t_end);
+                let mut extra = 0;
+                if sm.dense {
+                    let d = s.dense();
+                    sm.fill(t_b, t_end, |t| d.at(t));
+                } else {
+                    sm.fill(t_b, t_end, |t| {
+                        advance(problem.dynamics, settings, t_a, y_a, t - t_a, &mut extra)
+                    });
+                }
+                s.stats.extra_evaluations += extra;
             }
         }
         // The projection comes after the step's events and samples, which use its dense

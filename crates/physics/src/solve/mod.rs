@@ -96,6 +96,11 @@ pub struct Problem<'a, D, const N: usize> {
     /// [`Solution`] then holds only the last point (the end time or the event), which is not
     /// passed to the sink.
     pub on_sample: Option<Sink<'a, N>>,
+    /// Take DOP853's samples from its dense output (a polynomial evaluation each) instead of
+    /// re-integrating each from the step before it. The interpolant's error is up to a few
+    /// tens of tolerances (`dense_error`): a check that fits residuals far below the
+    /// trajectory's scale over the samples (eq 44's) keeps the re-integrated samples.
+    pub dense_samples: bool,
     /// Called with the current time now and then, for progress bars.
     pub progress: Option<&'a dyn Fn(f64)>,
     /// Applied to the state after every accepted step ([`projection`]): moves it back onto an
@@ -116,6 +121,7 @@ impl<'a, D: Dynamics<N>, const N: usize> Problem<'a, D, N> {
             sample: None,
             sample_origin: None,
             on_sample: None,
+            dense_samples: false,
             progress: None,
             project: None,
         }
@@ -217,7 +223,9 @@ pub fn solve_with<D: Dynamics<N>, const N: usize>(
         (Method::Dop853, Engine::Own) => driver::run(problem, settings, deadline),
         // Only the own engine's step loop can project, and only its dense output samples at
         // the price of a polynomial.
-        (Method::Dop853, _) if problem.project.is_some() || problem.sample.is_some() => {
+        (Method::Dop853, _)
+            if problem.project.is_some() || (problem.sample.is_some() && problem.dense_samples) =>
+        {
             driver::run(problem, settings, deadline)
         }
         _ => upstream::run(problem, settings, deadline),
