@@ -318,3 +318,105 @@ fn simulate_compares_a_scene_with_the_lab_frame_model() {
     let (ok, _, err) = cli(&["simulate", "spin-down", "--compare", "lab-frame"]);
     assert!(!ok && err.contains("no dissipation"), "{err}");
 }
+
+/// A scene file in `dir`: nutating-coin with its stop time, sampling and solver replaced.
+fn nutating_scene(
+    dir: &std::path::Path,
+    name: &str,
+    time: f64,
+    sample: f64,
+    solver: &str,
+) -> String {
+    let src = std::fs::read_to_string("paper/scenes/nutating-coin.yaml").unwrap();
+    let text: String = src
+        .lines()
+        .map(|l| {
+            if l.starts_with("stop:") {
+                format!("stop: {{ time: {time} }}\n")
+            } else if l.starts_with("sample:") {
+                format!("sample: {sample:e}\n")
+            } else if l.starts_with("solver:") {
+                format!("{solver}\n")
+            } else {
+                format!("{l}\n")
+            }
+        })
+        .collect();
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path.to_str().unwrap().to_string()
+}
+
+#[test]
+fn simulate_streams_more_rows_than_a_run_held_in_memory_may_hold() {
+    let dir = temp_dir("cli", "stream");
+    let solver = "solver: { method: dop853, rtol: 1.0e-10, atol: 1.0e-12 }";
+    // 0.3 s every 0.25 us: 1,200,000 samples and the end, beyond the 1,000,000 rows a run held
+    // in memory may record.
+    let scene = nutating_scene(&dir, "fine.yaml", 0.3, 2.5e-7, solver);
+    let csv = dir.join("fine.csv");
+    let (ok, out, err) = cli(&["simulate", &scene, "--csv", csv.to_str().unwrap()]);
+    assert!(ok, "{err}");
+    assert!(out.contains("1200001 rows written"), "{out}");
+    let text = std::fs::read_to_string(&csv).unwrap();
+    assert_eq!(text.lines().count(), 1_200_002, "the header and every row");
+    let last: Vec<f64> = text
+        .lines()
+        .last()
+        .unwrap()
+        .split(',')
+        .map(|c| c.parse().unwrap())
+        .collect();
+    assert_eq!(last[0], 0.3);
+    // The same rows to standard output, byte for byte.
+    let piped = Command::new(env!("CARGO_BIN_EXE_rolling-disk"))
+        .args(["simulate", &scene, "--csv", "-"])
+        .output()
+        .unwrap();
+    assert!(piped.status.success());
+    assert!(
+        piped.stdout == text.as_bytes(),
+        "stdout differs from the file"
+    );
+    assert_eq!(
+        std::fs::read_dir(&dir).unwrap().count(),
+        2,
+        "no temporary file left"
+    );
+}
+
+#[test]
+fn a_failed_streamed_run_leaves_the_old_csv_and_no_temporary_file() {
+    let dir = temp_dir("cli", "stream-fail");
+    // rk4 with a step of half a second cannot resolve the coin's nutation: no number of the
+    // run means anything, so none may be written.
+    let scene = nutating_scene(
+        &dir,
+        "coarse.yaml",
+        1.0,
+        1e-4,
+        "solver: { method: rk4, step: 0.5 }",
+    );
+    let csv = dir.join("old.csv");
+    std::fs::write(&csv, "old\n").unwrap();
+    let (ok, _, err) = cli(&["simulate", &scene, "--csv", csv.to_str().unwrap()]);
+    assert!(!ok);
+    assert!(err.contains("rk4 went unstable"), "{err}");
+    assert_eq!(std::fs::read_to_string(&csv).unwrap(), "old\n");
+    assert_eq!(
+        std::fs::read_dir(&dir).unwrap().count(),
+        2,
+        "no temporary file left"
+    );
+    // To standard output: nothing at all.
+    let piped = Command::new(env!("CARGO_BIN_EXE_rolling-disk"))
+        .args(["simulate", &scene, "--csv", "-"])
+        .output()
+        .unwrap();
+    assert!(!piped.status.success());
+    assert!(
+        piped.stdout.is_empty(),
+        "{} bytes on stdout",
+        piped.stdout.len()
+    );
+}

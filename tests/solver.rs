@@ -261,7 +261,7 @@ fn own_dop853_takes_the_same_steps_as_the_published_algorithm_in_ode_solvers() {
 }
 
 #[test]
-fn events_use_the_dense_output_and_samples_keep_the_steps() {
+fn events_and_samples_use_the_dense_output_and_keep_the_steps() {
     // The crate's own DOP853 (not the default engine): events on its dense output.
     let s = Settings::dop853(1e-12, 1e-14);
     let plain = solve_with(
@@ -270,16 +270,15 @@ fn events_use_the_dense_output_and_samples_keep_the_steps() {
         Engine::Own,
     )
     .unwrap();
-    let sampled = solve_with(
-        Problem::new(&Oscillator, 0.0, State::<2>::new(1.0, 0.0), 10.0).sampled(0.001),
-        &s,
-        Engine::Own,
-    )
-    .unwrap();
-    // The sampled run takes the same steps; its samples are re-integrated (extra evaluations).
+    let mut p = Problem::new(&Oscillator, 0.0, State::<2>::new(1.0, 0.0), 10.0).sampled(0.001);
+    p.dense_samples = true;
+    let sampled = solve_with(p, &s, Engine::Own).unwrap();
+    // The sampled run takes the same steps; its samples come from the dense output, three
+    // more evaluations for each step that holds one, none per sample.
     assert_eq!(sampled.stats.evaluations, plain.stats.evaluations);
     assert_eq!(sampled.stats.accepted, plain.stats.accepted);
     assert!(sampled.stats.extra_evaluations > 0);
+    assert!(sampled.stats.extra_evaluations <= 3 * sampled.stats.accepted);
     assert_eq!(sampled.t.len(), 10_001);
     let worst = sampled
         .t

@@ -13,6 +13,7 @@ pub mod peer;
 pub mod precision;
 pub(crate) mod ranges;
 pub mod report;
+pub(crate) mod row_stream;
 pub mod scenes;
 pub mod simulate;
 pub mod sound_figures;

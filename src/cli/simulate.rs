@@ -1,8 +1,8 @@
 //! `rolling-disk simulate`: one run of a scene with its progress bar and summary.
 
-use crate::cli::stdout;
+use crate::cli::row_stream::RowStream;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
-use physics::run::{run, Run};
+use physics::run::{columns, run_streamed, Run};
 use physics::scene::Scene;
 use physics::solve::Ending;
 use std::path::PathBuf;
@@ -95,37 +95,51 @@ fn simulate(name: &str, csv: Option<PathBuf>, compare: Option<&str>) -> anyhow::
         bar.set_position((1000.0 * t / t_end) as u64);
         bar.set_message(format!("{t:.3} of {t_end} s"));
     };
-    let result = run(&scene, Some(&report)).map_err(|e| anyhow::anyhow!("{}: {e}", scene.source));
+    // The rows go to the CSV as the run makes them; none is held.
+    let rows = scene.sample.map(|dt| (t_end / dt).floor() as u64 + 2);
+    let mut stream = match &csv {
+        Some(path) => Some(RowStream::open(path, &columns(&scene), rows)?),
+        None => None,
+    };
+    let mut last_time = 0.0;
+    let mut sink = |row: &[f64]| {
+        last_time = row[0];
+        if let Some(s) = stream.as_mut() {
+            s.write(row);
+        }
+    };
+    let result = run_streamed(&scene, Some(&report), &mut sink)
+        .map_err(|e| anyhow::anyhow!("{}: {e}", scene.source));
     bar.finish_and_clear();
     let result = result?;
     if matches!(
         result.ending,
         Ending::Unstable { .. } | Ending::NonFinite { .. }
     ) {
-        // No number of such a run means anything: say why, print none.
+        // No number of such a run means anything: say why, print none (and write no file).
         return Err(anyhow::anyhow!("{}: {}", scene.source, result.ending));
     }
     if let Some(lost) = &result.contact_lost {
         eprintln!("warning: {}: {lost}", scene.source);
     }
     let to_stdout = csv.as_ref().is_some_and(|p| p.as_os_str() == "-");
-    if to_stdout {
-        eprint!("{}", summary(&scene, &result));
-    } else {
-        print!("{}", summary(&scene, &result));
-    }
-    if let Some(path) = csv {
-        let to_stdout = stdout::write_to(&path, result.to_csv().as_bytes())?;
+    let summary = summary(&scene, &result, last_time);
+    if let (Some(path), Some(stream)) = (csv, stream) {
+        stream.finish()?;
         let said = format!(
             "trajectory: {} rows written to {}",
-            result.rows.len(),
+            result.recorded,
             path.display()
         );
         if to_stdout {
+            eprint!("{summary}");
             eprintln!("{said}");
         } else {
+            print!("{summary}");
             println!("{said}");
         }
+    } else {
+        print!("{summary}");
     }
     if result.ending.is_complete() {
         Ok(())
@@ -134,11 +148,10 @@ fn simulate(name: &str, csv: Option<PathBuf>, compare: Option<&str>) -> anyhow::
     }
 }
 
-/// The summary of a run, one line per item.
-pub(crate) fn summary(scene: &Scene, r: &Run) -> String {
+/// The summary of a run that ended at `t_end`, one line per item.
+pub(crate) fn summary(scene: &Scene, r: &Run, t_end: f64) -> String {
     use std::fmt::Write as _;
     let mut s = String::new();
-    let (t_end, _) = (r.rows.last().map_or(0.0, |row| row[0]), ());
     let m = &r.last;
     let _ = writeln!(s, "scene       {} ({})", scene.name, scene.source);
     let _ = writeln!(s, "model       {}, {} states integrated", r.model, r.states);

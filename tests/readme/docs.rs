@@ -144,7 +144,7 @@ fn the_limits_written_are_the_tools() {
     );
     let err = refusal(
         "rows",
-        &nutating.replace("sample: 0.0005", "sample: 1.0e-9"),
+        &nutating.replace("sample: 0.0005", "sample: 1.0e-10"),
     );
     assert_eq!(
         number_after(&err, "more than the limit of ").map(|n| n.replace(',', "")),

@@ -15,10 +15,23 @@ use std::time::{Duration, Instant};
 /// `ode_solvers` hands back): 512 MiB.
 pub const TRAJECTORY_BYTES: u64 = 512 << 20;
 
-/// Most rows one run may record (samples, or accepted steps without `sample`). A million rows
-/// of a scene's columns is about 150 MB in memory and as CSV; the built-in scenes record at most
-/// about 120,000 rows (`spin-down` sampled every 0.5 ms over 60 s).
+/// Most rows one run held in memory may record (samples, or accepted steps without `sample`):
+/// the runs of `check`, `report` and the studies. A million rows of a scene's columns is about
+/// 150 MB in memory; the built-in scenes record at most about 120,000 rows (`spin-down` sampled
+/// every 0.5 ms over 60 s). A run that streams its rows (`simulate`) holds none and is bounded
+/// by [`ROWS_PER_SECOND`] and the disk instead.
 pub const MAX_ROWS: u64 = 1_000_000;
+
+/// More rows than one second of wall time can make: a streamed run that samples more than this
+/// many rows for each second of its wall-time budget cannot finish within it, and is refused
+/// before integrating. A recorded row costs a polynomial evaluation per state and the recorded
+/// quantities, 0.3 to 1 us (`cargo bench --bench sampling`), so this is a bound no run reaches.
+pub const ROWS_PER_SECOND: u64 = 10_000_000;
+
+/// The most rows a streamed run may sample within the current wall-time budget.
+pub fn streamed_rows() -> u64 {
+    (wall_seconds() * ROWS_PER_SECOND as f64) as u64
+}
 
 /// The largest `max_steps` a scene may ask for, whatever its number of states.
 pub const MAX_STEPS_LIMIT: u64 = 50_000_000;

@@ -18,10 +18,12 @@
 //!   reason (a Zeno cascade of bounces, chattering).
 //!
 //! Sampling at a fixed interval is aligned on the global grid $t_0 + n\,\Delta t$ across
-//! segments; each sample is re-integrated from the last accepted step before it in its own
-//! segment's flow.
+//! segments ([`Problem::sample_origin`]); each segment's run samples its own flow (DOP853 on
+//! its dense output).
 
-use crate::solve::{solve, Ending, Event, Problem, Settings, SettingsError, State, Stats};
+use crate::solve::{
+    held_samples, solve, Ending, Event, Problem, Settings, SettingsError, State, Stats,
+};
 use std::fmt;
 
 /// What happens at a located guard crossing.
@@ -112,7 +114,16 @@ where
     pub sample: Option<f64>,
     /// Most switches before the run halts.
     pub max_switches: usize,
+    /// Takes every point as it is made, so that none is held: the solution then holds only
+    /// the first point and the last.
+    pub on_point: Option<PointSink<'a, H::Mode, N>>,
+    /// Take DOP853's samples from each segment's dense output instead of re-integrating each
+    /// from the step before it (see [`Problem::dense_samples`]).
+    pub dense_samples: bool,
 }
+
+/// Takes each point of a hybrid run with its mode ([`HybridProblem::on_point`]).
+pub type PointSink<'a, M, const N: usize> = &'a mut dyn FnMut(f64, &State<N>, &M);
 
 fn no_stops<'a, const N: usize>() -> Vec<Event<'a, N>> {
     Vec::new()
@@ -130,8 +141,30 @@ impl<'a, H: Hybrid<N>, const N: usize> HybridProblem<'a, H, N> {
             stops: &no_stops::<'a, N>,
             sample: None,
             max_switches: 10_000,
+            on_point: None,
+            dense_samples: false,
         }
     }
+}
+
+/// Writes a point: to the sink (the solution then keeps only its first point and this one) or
+/// to the solution.
+fn emit<M: Clone, const N: usize>(
+    out: &mut HybridSolution<M, N>,
+    sink: &mut Option<PointSink<'_, M, N>>,
+    t: f64,
+    y: State<N>,
+    mode: &M,
+) {
+    if let Some(sink) = sink.as_mut() {
+        sink(t, &y, mode);
+        out.t.truncate(1);
+        out.y.truncate(1);
+        out.mode.truncate(1);
+    }
+    out.t.push(t);
+    out.y.push(y);
+    out.mode.push(mode.clone());
 }
 
 fn add(stats: &mut Stats, s: &Stats) {
@@ -156,6 +189,9 @@ pub fn run_hybrid<H: Hybrid<N>, const N: usize>(
         if !(dt.is_finite() && dt > 0.0) {
             return Err(SettingsError::Sample(dt));
         }
+        if p.on_point.is_none() {
+            held_samples(span, dt)?;
+        }
     }
     let mut out = HybridSolution {
         t: vec![p.t0],
@@ -166,7 +202,13 @@ pub fn run_hybrid<H: Hybrid<N>, const N: usize>(
         ending: Ending::TimeReached,
     };
     let (mut t, mut y, mut mode) = (p.t0, p.y0, p.mode);
+    // The last sample written (sampled runs).
+    let mut last_sample = p.t0;
     let mut next_sample: u64 = 1;
+    let mut sink = p.on_point;
+    if let Some(sink) = sink.as_mut() {
+        sink(p.t0, &p.y0, &mode);
+    }
     loop {
         let guards = p.system.guards(&mode);
         let n_guards = guards.len();
@@ -174,6 +216,23 @@ pub fn run_hybrid<H: Hybrid<N>, const N: usize>(
         let mut problem = Problem::new(&flow, t, y, p.t_end);
         problem.events = guards;
         problem.events.extend((p.stops)());
+        let dense = p.sample.is_some() && p.dense_samples;
+        if dense {
+            problem.sample = p.sample;
+            problem.sample_origin = Some(p.t0);
+            problem.dense_samples = true;
+        }
+        // A sampled segment's samples lie on the run's grid; the grid time the run starts on
+        // is already the first point.
+        let mut take = |ts: f64, ys: &State<N>| {
+            if ts > last_sample {
+                last_sample = ts;
+                emit(&mut out, &mut sink, ts, *ys, &mode);
+            }
+        };
+        if dense {
+            problem.on_sample = Some(&mut take);
+        }
         let names: Vec<String> = problem.events.iter().map(|e| e.name.clone()).collect();
         let sol = solve(problem, settings)?;
         add(&mut out.stats, &sol.stats);
@@ -181,12 +240,11 @@ pub fn run_hybrid<H: Hybrid<N>, const N: usize>(
         match p.sample {
             None => {
                 for (ti, yi) in sol.t.iter().zip(&sol.y).skip(1) {
-                    out.t.push(*ti);
-                    out.y.push(*yi);
-                    out.mode.push(mode.clone());
+                    emit(&mut out, &mut sink, *ti, *yi, &mode);
                 }
             }
-            Some(dt) => {
+            // Each sample re-integrated from the last accepted step before it.
+            Some(dt) if !dense => {
                 let mut j = 0;
                 loop {
                     let ts = p.t0 + dt * next_sample as f64;
@@ -203,23 +261,20 @@ pub fn run_hybrid<H: Hybrid<N>, const N: usize>(
                     } else {
                         sol.y[j]
                     };
-                    out.t.push(ts);
-                    out.y.push(ys);
-                    out.mode.push(mode.clone());
+                    emit(&mut out, &mut sink, ts, ys, &mode);
                     next_sample += 1;
                 }
             }
+            Some(_) => {}
         }
         // Sampled runs keep the end of every segment too (a switch, a stop, the end time).
-        let push_end = |out: &mut HybridSolution<H::Mode, N>, m: &H::Mode| {
-            out.t.push(t_end);
-            out.y.push(y_end);
-            out.mode.push(m.clone());
-        };
+        let push_end = |out: &mut HybridSolution<H::Mode, N>,
+                        sink: &mut Option<PointSink<'_, H::Mode, N>>,
+                        m: &H::Mode| { emit(out, sink, t_end, y_end, m) };
         match sol.ending {
             Ending::Event { index, t: te, .. } if index < n_guards => {
                 if p.sample.is_some() {
-                    push_end(&mut out, &mode);
+                    push_end(&mut out, &mut sink, &mode);
                 }
                 if out.switches.len() >= p.max_switches {
                     out.ending = Ending::Halted {
@@ -254,9 +309,7 @@ pub fn run_hybrid<H: Hybrid<N>, const N: usize>(
                             what,
                         });
                         if y_next != y_end {
-                            out.t.push(te);
-                            out.y.push(y_next);
-                            out.mode.push(next.clone());
+                            emit(&mut out, &mut sink, te, y_next, &next);
                         }
                         if te >= p.t_end {
                             out.ending = Ending::TimeReached;
@@ -268,7 +321,7 @@ pub fn run_hybrid<H: Hybrid<N>, const N: usize>(
             }
             ending => {
                 if p.sample.is_some() {
-                    push_end(&mut out, &mode);
+                    push_end(&mut out, &mut sink, &mode);
                 }
                 out.ending = ending;
                 return Ok(out);
@@ -417,6 +470,7 @@ mod tests {
             3.0,
         );
         p.sample = Some(0.01);
+        p.dense_samples = false;
         let sol = run_hybrid(p, &settings()).unwrap();
         assert_eq!(sol.switches.len(), 1);
         let t_stop = v0 / (mu * G);

@@ -5,119 +5,230 @@ mod table;
 
 pub use table::{ContactLost, Run};
 
+use crate::solve::Solution;
+
 use crate::budget;
 use crate::dispatch::{dispatch, problem, Visit};
 use crate::model::{Model, Quantity};
 use crate::scene::Scene;
-use crate::solve::{solve, Ending, SettingsError, Solution, State};
+use crate::solve::{held_samples, solve, Ending, SettingsError, State};
 
-/// Runs a scene. `progress` receives the simulated time now and then. A run records at most
-/// [`budget::MAX_ROWS`] rows: a scene that samples more finely is refused before integrating (by
-/// [`solve`]), and an unsampled run that takes more steps is refused after it.
+/// Runs a scene and holds its rows in [`Run::rows`]. `progress` receives the simulated time
+/// now and then. A held run records at most [`budget::MAX_ROWS`] rows: a scene that samples
+/// more finely is refused before integrating (by [`solve`]), and an unsampled run that takes
+/// more steps is refused after it; [`run_streamed`] holds none and has no such limit.
 pub fn run(scene: &Scene, progress: Option<&dyn Fn(f64)>) -> Result<Run, SettingsError> {
-    if scene.model.has_coulomb_friction() {
-        return sliding::run(scene);
+    if let Some(dt) = scene.sample {
+        held_samples(scene.stop.time, dt)?;
     }
-    dispatch(scene, Integrate { progress })
+    let mut rows = Vec::new();
+    let mut hold = |row: &[f64]| rows.push(row.to_vec());
+    let mut r = record_run(scene, progress, &mut hold, false)?;
+    r.rows = rows;
+    Ok(r)
+}
+
+/// Takes each recorded row (the time, then the scene's quantities) as it is made.
+pub type RowSink<'a> = &'a mut dyn FnMut(&[f64]);
+
+/// Runs a scene and hands each recorded row to `sink` as it is made, holding none: the
+/// returned [`Run`] has no [`Run::rows`], and [`Run::recorded`] counts them. A sampled run costs
+/// one polynomial evaluation per sample and state (DOP853's dense output) and whatever the
+/// recorded quantities cost.
+pub fn run_streamed(
+    scene: &Scene,
+    progress: Option<&dyn Fn(f64)>,
+    sink: RowSink<'_>,
+) -> Result<Run, SettingsError> {
+    record_run(scene, progress, sink, true)
+}
+
+/// Runs a scene, handing each row to `sink`; DOP853's samples from its dense output when
+/// `dense`, otherwise each re-integrated from the step before it (a run held in memory keeps
+/// those, so that the checks over a scene's samples are not moved by the interpolant).
+fn record_run(
+    scene: &Scene,
+    progress: Option<&dyn Fn(f64)>,
+    sink: RowSink<'_>,
+    dense: bool,
+) -> Result<Run, SettingsError> {
+    if scene.model.has_coulomb_friction() {
+        return sliding::run_streamed(scene, sink, dense);
+    }
+    dispatch(
+        scene,
+        Integrate {
+            progress,
+            sink,
+            dense,
+        },
+    )
 }
 
 /// Integrates and records whatever model the scene builds.
-struct Integrate<'p> {
+struct Integrate<'p, 's> {
     progress: Option<&'p dyn Fn(f64)>,
+    sink: RowSink<'s>,
+    dense: bool,
 }
 
-impl Visit for Integrate<'_> {
+impl Visit for Integrate<'_, '_> {
     type Out = Result<Run, SettingsError>;
 
     fn visit<M: Model<N>, const N: usize>(self, model: &M, scene: &Scene) -> Self::Out {
         let y0 = model.state(&scene.start);
+        let mut recorder = Recorder::new(model, scene, &y0, self.sink);
+        let mut take = |t: f64, y: &State<N>| recorder.take(t, y);
         let mut p = problem(model, scene, y0, scene.stop.time);
         p.progress = self.progress;
         p.sample = scene.sample;
+        p.dense_samples = self.dense;
+        if scene.sample.is_some() {
+            p.on_sample = Some(&mut take);
+        }
         let sol = solve(p, &scene.settings)?;
         let rows = sol.t.len() as u64;
-        if rows > budget::MAX_ROWS {
+        if scene.sample.is_none() && rows > budget::MAX_ROWS {
             return Err(SettingsError::Rows {
                 rows,
                 limit: budget::MAX_ROWS,
                 suggest: scene.stop.time / (budget::MAX_ROWS as f64 / 10.0),
             });
         }
-        Ok(record(model, scene, &y0, &sol))
+        // The last point of a run stopped by an event (lift_off: F_z = 0) is the located zero,
+        // whose sign is the root finder's: not a loss of contact within the run.
+        let (n, stopped) = (sol.t.len(), matches!(sol.ending, Ending::Event { .. }));
+        for (i, (t, y)) in sol.t.iter().zip(&sol.y).enumerate() {
+            recorder.checks_contact = !(stopped && i + 1 == n);
+            recorder.take(*t, y);
+        }
+        Ok(recorder.finish(&sol))
     }
 }
 
-fn record<M: Model<N>, const N: usize>(
-    model: &M,
-    scene: &Scene,
-    y0: &State<N>,
-    sol: &Solution<N>,
-) -> Run {
+/// Turns the states of a run into its rows, one at a time, keeping the energy's largest change
+/// and the first loss of contact.
+struct Recorder<'m, 's, M> {
+    model: &'m M,
+    scene: &'m Scene,
+    columns: Vec<String>,
+    e0: f64,
+    energy_change: f64,
+    contact_lost: Option<ContactLost>,
+    /// Whether the next row may count as a loss of contact.
+    checks_contact: bool,
+    recorded: u64,
+    row: Vec<f64>,
+    force: Vec<f64>,
+    sink: RowSink<'s>,
+}
+
+impl<'m, 's, M> Recorder<'m, 's, M> {
+    fn new<const N: usize>(model: &'m M, scene: &'m Scene, y0: &State<N>, sink: RowSink<'s>) -> Self
+    where
+        M: Model<N>,
+    {
+        let columns = columns(scene);
+        Self {
+            model,
+            scene,
+            row: Vec::with_capacity(columns.len()),
+            columns,
+            e0: model.energy(y0),
+            energy_change: 0.0,
+            contact_lost: None,
+            checks_contact: true,
+            recorded: 0,
+            force: Vec::with_capacity(1),
+            sink,
+        }
+    }
+
+    fn take<const N: usize>(&mut self, t: f64, y: &State<N>)
+    where
+        M: Model<N>,
+    {
+        let model = self.model;
+        if self.contact_lost.is_none() && self.checks_contact {
+            self.force.clear();
+            if model.record(y, Quantity::NormalForce, &mut self.force)
+                && self.force.first().is_some_and(|&n| n < 0.0)
+            {
+                self.contact_lost = Some(ContactLost {
+                    t,
+                    normal_force: self.force[0],
+                });
+            }
+        }
+        self.row.clear();
+        self.row.push(t);
+        for &q in &self.scene.record {
+            let ok = model.record(y, q, &mut self.row);
+            debug_assert!(ok, "validated scenes only record what their model provides");
+        }
+        (self.sink)(&self.row);
+        self.recorded += 1;
+        self.energy_change = self
+            .energy_change
+            .max(((model.energy(y) - self.e0) / self.e0).abs());
+    }
+
+    fn finish<const N: usize>(self, sol: &Solution<N>) -> Run
+    where
+        M: Model<N>,
+    {
+        let (_, y_end) = sol.last();
+        Run {
+            scene: self.scene.name.clone(),
+            model: self.scene.model,
+            states: N,
+            columns: self.columns,
+            rows: Vec::new(),
+            recorded: self.recorded,
+            stats: sol.stats,
+            ending: sol.ending.clone(),
+            last: self.model.motion(&y_end),
+            energy: (self.e0, self.model.energy(&y_end)),
+            energy_change: self.energy_change,
+            contact_events: Vec::new(),
+            contact_lost: self.contact_lost,
+        }
+    }
+}
+
+/// The columns a scene records, with units: the time, then each recorded quantity's.
+pub fn columns(scene: &Scene) -> Vec<String> {
     let mut columns = vec!["t_s".to_string()];
     for q in &scene.record {
         columns.extend(q.columns().iter().map(|c| c.to_string()));
     }
-    let mut rows = Vec::with_capacity(sol.t.len());
-    let e0 = model.energy(y0);
-    let mut energy_change: f64 = 0.0;
-    let mut contact_lost = None;
-    let mut force = Vec::with_capacity(1);
-    // A run stopped by an event (lift_off: F_z = 0) ends on the located zero, whose sign is
-    // the root finder's: that last row is not a loss of contact within the run.
-    let checked = match sol.ending {
-        Ending::Event { .. } => sol.t.len().saturating_sub(1),
-        _ => sol.t.len(),
-    };
-    for (i, (t, y)) in sol.t.iter().zip(&sol.y).enumerate() {
-        force.clear();
-        if contact_lost.is_none()
-            && i < checked
-            && model.record(y, Quantity::NormalForce, &mut force)
-            && force.first().is_some_and(|&n| n < 0.0)
-        {
-            contact_lost = Some(ContactLost {
-                t: *t,
-                normal_force: force[0],
-            });
+    columns
+}
+
+/// Appends one CSV row to `out`: each number with 17 significant digits (so that it reads back
+/// exactly), separated by commas, ended by a newline.
+pub fn csv_row(row: &[f64], out: &mut Vec<u8>) {
+    use std::io::Write as _;
+    for (i, v) in row.iter().enumerate() {
+        if i > 0 {
+            out.push(b',');
         }
-        let mut row = Vec::with_capacity(columns.len());
-        row.push(*t);
-        for &q in &scene.record {
-            let ok = model.record(y, q, &mut row);
-            debug_assert!(ok, "validated scenes only record what their model provides");
-        }
-        rows.push(row);
-        energy_change = energy_change.max(((model.energy(y) - e0) / e0).abs());
+        // Writing to a Vec cannot fail.
+        let _ = write!(out, "{v:.16e}");
     }
-    let (_, y_end) = sol.last();
-    Run {
-        scene: scene.name.clone(),
-        model: scene.model,
-        states: N,
-        columns,
-        rows,
-        stats: sol.stats,
-        ending: sol.ending.clone(),
-        last: model.motion(&y_end),
-        energy: (e0, model.energy(&y_end)),
-        energy_change,
-        contact_events: Vec::new(),
-        contact_lost,
-    }
+    out.push(b'\n');
 }
 
 impl Run {
-    /// The run as CSV: a header of column names with units, then one row per recorded time.
-    /// Numbers are printed with 17 significant digits so that they read back exactly.
+    /// The run as CSV: a header of column names with units, then one row per recorded time
+    /// ([`csv_row`]).
     pub fn to_csv(&self) -> String {
-        let mut s = self.columns.join(",");
-        s.push('\n');
+        let mut s = self.columns.join(",").into_bytes();
+        s.push(b'\n');
         for row in &self.rows {
-            let cells: Vec<String> = row.iter().map(|v| format!("{v:.16e}")).collect();
-            s.push_str(&cells.join(","));
-            s.push('\n');
+            csv_row(row, &mut s);
         }
-        s
+        String::from_utf8(s).unwrap_or_default()
     }
 
     /// The values of one column.

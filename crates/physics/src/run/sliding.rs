@@ -2,7 +2,9 @@
 //! driver and record the scene's quantities in the mode of each recorded point.
 
 use super::table::Run;
+use super::RowSink;
 use crate::dispatch::sliding_model;
+use crate::events::PointSink;
 use crate::model::sliding::contact_events::contact_events;
 use crate::model::sliding::{Flow, Mode, Sliding, SlidingRun};
 use crate::model::Model;
@@ -10,11 +12,51 @@ use crate::scene::Scene;
 use crate::solve::{Event, SettingsError, State};
 use std::f64::consts::{FRAC_PI_2, PI};
 
-/// Runs a sliding scene: the scene's stop events hold in every mode.
-pub fn run(scene: &Scene) -> Result<Run, SettingsError> {
+/// Runs a sliding scene, handing each recorded row to `sink` as it is made (see
+/// [`super::run_streamed`]): the scene's stop events hold in every mode.
+pub fn run_streamed(scene: &Scene, sink: RowSink<'_>, dense: bool) -> Result<Run, SettingsError> {
     let model = sliding_model(scene);
-    let sol = integrate(&model, scene, scene.sample)?;
-    Ok(record(&model, scene, &sol))
+    let columns = super::columns(scene);
+    // The run starts from the start state as contact takes it (see `Sliding::run`).
+    let e0 = model.energy(&model.enter_contact(&model.start_state(&scene.start)).1);
+    let mut energy_change: f64 = 0.0;
+    let mut recorded: u64 = 0;
+    let mut row = Vec::with_capacity(columns.len());
+    let mut take = |t: f64, y: &State<14>, mode: &Mode| {
+        let flow = Flow {
+            model: &model,
+            mode: *mode,
+        };
+        row.clear();
+        row.push(t);
+        for &q in &scene.record {
+            flow.record(y, q, &mut row);
+        }
+        sink(&row);
+        recorded += 1;
+        energy_change = energy_change.max(((model.energy(y) - e0) / e0).abs());
+    };
+    let sol = run_model(&model, scene, scene.sample, Some(&mut take), dense)?;
+    let last = sol.y.len() - 1;
+    let flow = Flow {
+        model: &model,
+        mode: sol.mode.get(last).copied().unwrap_or(Mode::Stick),
+    };
+    Ok(Run {
+        scene: scene.name.clone(),
+        model: scene.model,
+        states: 14,
+        columns,
+        rows: Vec::new(),
+        recorded,
+        stats: sol.stats,
+        ending: sol.ending.clone(),
+        last: flow.motion(&sol.y[last]),
+        energy: (e0, model.energy(&sol.y[last])),
+        energy_change,
+        contact_events: contact_events(&sol),
+        contact_lost: None,
+    })
 }
 
 /// Integrates `model` (built by [`model`]) from the scene's start to its stop, sampled every
@@ -24,6 +66,17 @@ pub fn integrate(
     model: &Sliding,
     scene: &Scene,
     sample: Option<f64>,
+) -> Result<SlidingRun, SettingsError> {
+    run_model(model, scene, sample, None, false)
+}
+
+/// [`integrate`], handing every point to `on_point` instead of holding it.
+fn run_model(
+    model: &Sliding,
+    scene: &Scene,
+    sample: Option<f64>,
+    mut on_point: Option<PointSink<'_, Mode, 14>>,
+    dense: bool,
 ) -> Result<SlidingRun, SettingsError> {
     let alpha = |y: &State<14>| tilt(y);
     let below = scene.stop.alpha_below;
@@ -57,7 +110,19 @@ pub fn integrate(
         v
     };
     let y0 = model.start_state(&scene.start);
-    model.run(&y0, scene.stop.time, &scene.settings, sample, &stops)
+    let on_point: Option<PointSink<'_, Mode, 14>> = match on_point.as_mut() {
+        Some(p) => Some(&mut **p),
+        None => None,
+    };
+    model.run_into(
+        &y0,
+        scene.stop.time,
+        &scene.settings,
+        sample,
+        &stops,
+        on_point,
+        dense,
+    )
 }
 
 /// The paper's $\alpha$ straight from the quaternion (the stop events are evaluated at every
@@ -70,43 +135,4 @@ fn tilt(y: &State<14>) -> f64 {
     let ny = 2.0 * (i * j + w * k) / q2;
     let nz = 2.0 * (i * k - w * j) / q2;
     nx.hypot(ny).atan2(-nz)
-}
-
-fn record(model: &Sliding, scene: &Scene, sol: &SlidingRun) -> Run {
-    let mut columns = vec!["t_s".to_string()];
-    for q in &scene.record {
-        columns.extend(q.columns().iter().map(|c| c.to_string()));
-    }
-    let mut rows = Vec::with_capacity(sol.t.len());
-    let e0 = model.energy(&sol.y[0]);
-    let mut energy_change: f64 = 0.0;
-    for ((t, y), mode) in sol.t.iter().zip(&sol.y).zip(&sol.mode) {
-        let flow = Flow { model, mode: *mode };
-        let mut row = Vec::with_capacity(columns.len());
-        row.push(*t);
-        for &q in &scene.record {
-            flow.record(y, q, &mut row);
-        }
-        rows.push(row);
-        energy_change = energy_change.max(((model.energy(y) - e0) / e0).abs());
-    }
-    let last = sol.y.len() - 1;
-    let flow = Flow {
-        model,
-        mode: sol.mode.get(last).copied().unwrap_or(Mode::Stick),
-    };
-    Run {
-        scene: scene.name.clone(),
-        model: scene.model,
-        states: 14,
-        columns,
-        rows,
-        stats: sol.stats,
-        ending: sol.ending.clone(),
-        last: flow.motion(&sol.y[last]),
-        energy: (e0, model.energy(&sol.y[last])),
-        energy_change,
-        contact_events: contact_events(sol),
-        contact_lost: None,
-    }
 }

@@ -18,8 +18,12 @@ pub struct Run {
     pub states: usize,
     /// Column names, with units; the first is the time.
     pub columns: Vec<String>,
-    /// One row per recorded time: the time then the recorded quantities.
+    /// One row per recorded time: the time then the recorded quantities (empty for a run whose
+    /// rows were streamed, see [`crate::run::run_streamed`]).
     pub rows: Vec<Vec<f64>>,
+    /// How many rows the run recorded.
+    #[serde(skip)]
+    pub recorded: u64,
     /// The solver's work.
     pub stats: Stats,
     /// Why the run ended.

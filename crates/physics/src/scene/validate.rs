@@ -82,14 +82,18 @@ impl Validator<'_> {
         let time = s.stop.time.unwrap_or(0.0);
         if let Some(dt) = s.sample {
             let rows = (time / dt).floor() + 2.0;
-            if rows > budget::MAX_ROWS as f64 {
+            let limit = budget::streamed_rows();
+            if rows > limit as f64 {
                 return Err(self.err(
                     &["sample"],
                     format!(
                         "sample: {dt:e} s over stop.time = {time} s records {rows:.3e} rows, more \
-                         than the limit of {}: raise sample to {:.3e} s or more",
-                        budget::MAX_ROWS,
-                        budget::round_up_3(time / (budget::MAX_ROWS as f64 - 2.0))
+                         than the limit of {limit} that the wall-time budget of {} s allows (at \
+                         most {} rows a second): raise sample to {:.3e} s or more, or the budget \
+                         with --max-seconds",
+                        budget::wall_seconds(),
+                        budget::ROWS_PER_SECOND,
+                        budget::round_up_3(time / (limit as f64 - 2.0))
                     ),
                 ));
             }

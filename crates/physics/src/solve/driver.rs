@@ -1,57 +1,86 @@
 //! Drives the crate's own DOP853 ([`super::dop853`]) over a [`Problem`]: the step loop, the
 //! step limit, the wall-time budget, progress, stop events and sampling.
 //!
-//! Events use the dense output of the step they fall in, so locating one costs three
-//! evaluations and no re-integration. Samples are re-integrated from the start of their step:
-//! the interpolant is a little less accurate than the steps, and checks that fit small residuals
-//! over sampled trajectories (eq 44's) see the difference. An event crossing is seen
-//! on the step ends, as with `ode_solvers`, and located by bisection on the step's interpolant
-//! to [`EVENT_TIME_TOLERANCE`].
+//! Events and samples use the dense output of the step they fall in (DOP853's interpolant of
+//! order 7, [`Dense`]): a step that holds a sample or an event costs three more evaluations,
+//! and each sample after that one polynomial evaluation per component, however finely the run
+//! samples. An event crossing is seen on the step ends, as with `ode_solvers`, and located by
+//! bisection on the step's interpolant to [`EVENT_TIME_TOLERANCE`].
 //!
 //! With a projection ([`Problem::project`]) every accepted step's end is moved onto the
 //! invariant before the next step starts from it (one more evaluation per step, counted).
 
 use super::dop853::{Dense, Dop853, Outcome};
-use super::{Dynamics, Ending, Event, Problem, Settings, Solution, State, EVENT_TIME_TOLERANCE};
+use super::{
+    Dynamics, Ending, Event, Problem, Settings, Sink, Solution, State, EVENT_TIME_TOLERANCE,
+};
 use crate::budget::Deadline;
 
-/// Where the samples stand: the next sample index and the rows written so far.
-struct Sampler<const N: usize> {
-    t0: f64,
+/// Where the samples stand on the grid $t_g + n\,\Delta t$: the next sample index and the rows
+/// written so far.
+struct Sampler<'s, const N: usize> {
+    origin: f64,
     dt: f64,
     next: u64,
     t: Vec<f64>,
     y: Vec<State<N>>,
+    /// Takes the samples as they are made (then `t` and `y` stay empty).
+    sink: Option<Sink<'s, N>>,
+    /// Samples from the dense output; otherwise each is re-integrated from its step's start.
+    dense: bool,
 }
 
-impl<const N: usize> Sampler<N> {
-    fn time(&self, n: u64) -> f64 {
-        self.t0 + self.dt * n as f64
+impl<'s, const N: usize> Sampler<'s, N> {
+    /// A sampler on the grid `origin + n dt` whose first sample is the first grid time at or
+    /// after `t0`.
+    fn new(origin: f64, dt: f64, t0: f64, sink: Option<Sink<'s, N>>, dense: bool) -> Self {
+        let mut s = Self {
+            origin,
+            dt,
+            next: ((t0 - origin) / dt).floor().max(0.0) as u64,
+            t: Vec::new(),
+            y: Vec::new(),
+            sink,
+            dense,
+        };
+        while s.time(s.next) < t0 {
+            s.next += 1;
+        }
+        s
     }
 
-    /// Writes the samples strictly before `t_stop` (by a margin of 1e-12 relative) that lie in
-    /// the step from `(t_a, y_a)` to `t_b`, each re-integrated from the step's start (the
-    /// interpolant of order 7 is less accurate than the steps themselves, and a check that
-    /// fits a small residual over the samples would see it).
-    #[allow(clippy::too_many_arguments)]
-    fn fill<D: Dynamics<N>>(
-        &mut self,
-        f: &D,
-        settings: &Settings,
-        t_a: f64,
-        y_a: State<N>,
-        t_b: f64,
-        t_stop: f64,
-        extra: &mut u64,
-    ) {
-        let guard = t_stop - 1e-12 * self.dt.max(t_stop.abs());
+    fn time(&self, n: u64) -> f64 {
+        self.origin + self.dt * n as f64
+    }
+
+    /// The time before which samples are written in a run that ends at `t_stop`: `t_stop` less
+    /// a margin of 1e-12 relative (the end itself is always written as the last row).
+    fn guard(&self, t_stop: f64) -> f64 {
+        t_stop - 1e-12 * self.dt.max(t_stop.abs())
+    }
+
+    /// True when a sample falls in a step ending at `t_b` of a run that ends at `t_stop`.
+    fn due(&self, t_b: f64, t_stop: f64) -> bool {
+        let t = self.time(self.next);
+        t <= t_b && t < self.guard(t_stop)
+    }
+
+    /// Writes the samples up to `t_b` and strictly before the guard of `t_stop` from `state_at`.
+    fn fill(&mut self, t_b: f64, t_stop: f64, mut state_at: impl FnMut(f64) -> State<N>) {
+        let guard = self.guard(t_stop);
         loop {
             let t = self.time(self.next);
             if t > t_b || t >= guard {
                 return;
             }
-            self.t.push(t);
-            self.y.push(advance(f, settings, t_a, y_a, t - t_a, extra));
+            let y = state_at(t);
+            match self.sink.as_mut() {
+                Some(sink) => sink(t, &y),
+                None => {
+                    self.t.push(t);
+                    self.y.push(y);
+                }
+            }
             self.next += 1;
         }
     }
@@ -109,13 +138,11 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
         y0,
         t_end - t0,
     );
-    let mut sampler = problem.sample.map(|dt| Sampler {
-        t0,
-        dt,
-        next: 0,
-        t: Vec::new(),
-        y: Vec::new(),
-    });
+    let origin = problem.sample_origin.unwrap_or(t0);
+    let mut sink = problem.on_sample;
+    let mut sampler = problem
+        .sample
+        .map(|dt| Sampler::new(origin, dt, t0, sink.take(), problem.dense_samples));
     let (mut ts, mut ys) = (vec![t0], vec![y0]);
     // The last point reached where the state is finite (and no event has fired before).
     let mut last = (t0, y0);
@@ -148,7 +175,13 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
             let (index, t_e, y_e) = locate(&problem.events, &d, t_a, t_b, y_b);
             if let Some(sm) = sampler.as_mut() {
                 let mut extra = 0;
-                sm.fill(problem.dynamics, settings, t_a, y_a, t_e, t_e, &mut extra);
+                if sm.dense {
+                    sm.fill(t_e, t_e, |t| d.at(t));
+                } else {
+                    sm.fill(t_e, t_e, |t| {
+                        advance(problem.dynamics, settings, t_a, y_a, t - t_a, &mut extra)
+                    });
+                }
                 s.stats.extra_evaluations += extra;
             }
             last = (t_e, y_e);
@@ -159,9 +192,18 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
             };
         }
         if let Some(sm) = sampler.as_mut() {
-            let mut extra = 0;
-            sm.fill(problem.dynamics, settings, t_a, y_a, t_b, t_end, &mut extra);
-            s.stats.extra_evaluations += extra;
+            if sm.due(t_b, t_end) {
+                let mut extra = 0;
+                if sm.dense {
+                    let d = s.dense();
+                    sm.fill(t_b, t_end, |t| d.at(t));
+                } else {
+                    sm.fill(t_b, t_end, |t| {
+                        advance(problem.dynamics, settings, t_a, y_a, t - t_a, &mut extra)
+                    });
+                }
+                s.stats.extra_evaluations += extra;
+            }
         }
         // The projection comes after the step's events and samples, which use its dense
         // output and its start; the next step starts from the projected state.

@@ -10,14 +10,17 @@
 //!   and spends 80 ns per evaluation against 87-144 ns for the crate's own.
 //! - The crate's own DOP853 ([`dop853`], driven by [`driver`]: Hairer's error control and
 //!   controller with its order-7 dense output, events located on it at 3 evaluations) is
-//!   reachable through [`solve_with`] and [`Engine::Own`]. It is not the default yet: it moves
-//!   the last digits of several findings (round-off of a different summation order) and those
-//!   have not been reviewed.
+//!   reachable through [`solve_with`] and [`Engine::Own`], and integrates every sampled or
+//!   projected DOP853 problem: its dense output makes a sample a polynomial evaluation. It is
+//!   not the default for the other problems: it moves the last digits of several findings
+//!   (round-off of a different summation order) and those have not been reviewed.
 //!
 //! Every system here is autonomous ([`Dynamics`] has no time argument: `ode_solvers`' DOP853
 //! tableau has $c_{12} = c_{13} = 0$ where Hairer's has 1); a problem that depends on time
 //! carries it as a state ([`WithTime`] does that for you).
 
+#[cfg(test)]
+mod dense_error;
 mod dop853;
 mod driver;
 mod outcome;
@@ -62,6 +65,9 @@ impl<'a, const N: usize> Event<'a, N> {
     }
 }
 
+/// Takes each sample of a sampled run as it is made ([`Problem::on_sample`]).
+pub type Sink<'a, const N: usize> = &'a mut dyn FnMut(f64, &State<N>);
+
 /// Moves a state back onto an invariant ([`Problem::project`]).
 pub type Projector<'a, const N: usize> = Box<dyn Fn(&mut State<N>) + 'a>;
 
@@ -83,6 +89,18 @@ pub struct Problem<'a, D, const N: usize> {
     pub events: Vec<Event<'a, N>>,
     /// Sample the solution every `sample` seconds instead of at the steps.
     pub sample: Option<f64>,
+    /// The origin $t_g$ of the sample grid $t_g + n\,\Delta t$ (`None`: the start time), so
+    /// that the runs of a hybrid system's segments sample one grid.
+    pub sample_origin: Option<f64>,
+    /// Takes the samples of a sampled run as they are made, so that none is held: the
+    /// [`Solution`] then holds only the last point (the end time or the event), which is not
+    /// passed to the sink.
+    pub on_sample: Option<Sink<'a, N>>,
+    /// Take DOP853's samples from its dense output (a polynomial evaluation each) instead of
+    /// re-integrating each from the step before it. The interpolant's error is up to a few
+    /// tens of tolerances (`dense_error`): a check that fits residuals far below the
+    /// trajectory's scale over the samples (eq 44's) keeps the re-integrated samples.
+    pub dense_samples: bool,
     /// Called with the current time now and then, for progress bars.
     pub progress: Option<&'a dyn Fn(f64)>,
     /// Applied to the state after every accepted step ([`projection`]): moves it back onto an
@@ -101,6 +119,9 @@ impl<'a, D: Dynamics<N>, const N: usize> Problem<'a, D, N> {
             t_end,
             events: Vec::new(),
             sample: None,
+            sample_origin: None,
+            on_sample: None,
+            dense_samples: false,
             progress: None,
             project: None,
         }
@@ -158,15 +179,8 @@ pub fn solve_with<D: Dynamics<N>, const N: usize>(
         if !(dt.is_finite() && dt > 0.0) {
             return Err(SettingsError::Sample(dt));
         }
-        let rows = (span / dt).floor() + 2.0;
-        if rows > budget::MAX_ROWS as f64 {
-            return Err(SettingsError::Samples {
-                sample: dt,
-                span,
-                rows,
-                limit: budget::MAX_ROWS,
-                least: budget::round_up_3(span / (budget::MAX_ROWS as f64 - 2.0)),
-            });
+        if problem.on_sample.is_none() {
+            held_samples(span, dt)?;
         }
     }
     if !problem.y0.iter().all(|v| v.is_finite()) {
@@ -207,12 +221,31 @@ pub fn solve_with<D: Dynamics<N>, const N: usize>(
     }
     Ok(match (settings.method, engine) {
         (Method::Dop853, Engine::Own) => driver::run(problem, settings, deadline),
-        // Only the own engine's step loop can project.
-        (Method::Dop853, _) if problem.project.is_some() => {
+        // Only the own engine's step loop can project, and only its dense output samples at
+        // the price of a polynomial.
+        (Method::Dop853, _)
+            if problem.project.is_some() || (problem.sample.is_some() && problem.dense_samples) =>
+        {
             driver::run(problem, settings, deadline)
         }
         _ => upstream::run(problem, settings, deadline),
     })
+}
+
+/// Refuses a sampled run whose samples, held in memory, would be more than
+/// [`budget::MAX_ROWS`] (a run that streams its samples to a sink holds none).
+pub fn held_samples(span: f64, dt: f64) -> Result<(), SettingsError> {
+    let rows = (span / dt).floor() + 2.0;
+    if rows > budget::MAX_ROWS as f64 {
+        return Err(SettingsError::Samples {
+            sample: dt,
+            span,
+            rows,
+            limit: budget::MAX_ROWS,
+            least: budget::round_up_3(span / (budget::MAX_ROWS as f64 - 2.0)),
+        });
+    }
+    Ok(())
 }
 
 /// Makes a time-dependent system $\dot y = f(t, y)$ autonomous by carrying $t$ as the last of

@@ -113,7 +113,7 @@ pub enum SettingsError {
         suggest: f64,
     },
     /// Sampling would record more rows than allowed.
-    #[error("sampling every {sample} s over {span} s records {rows:.0} rows, more than the limit of {limit}: raise sample to at least {least:.3e} s")]
+    #[error("sampling every {sample} s over {span} s records {rows:.0} rows, more than the limit of {limit} a run held in memory may record: raise sample to at least {least:.3e} s (rolling-disk simulate --csv FILE streams any number of rows)")]
     Samples {
         /// The sampling interval.
         sample: f64,

@@ -6,7 +6,7 @@
 //! the start of the step that crossed it, and samples are re-integrated from the step before.
 
 use super::dop853::{StepControl, CONTROL};
-use super::{Dynamics, Ending, Event, Method, Problem, Settings, Solution, State, Stats};
+use super::{Dynamics, Ending, Event, Method, Problem, Settings, Sink, Solution, State, Stats};
 use crate::budget::Deadline;
 use ode_solvers::dop_shared::IntegrationError;
 use ode_solvers::{Dop853, Dopri5, OutputType, Rk4, System};
@@ -307,10 +307,11 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
                 settings,
                 &ts,
                 &ys,
-                t0,
+                problem.sample_origin.unwrap_or(t0),
                 dt,
                 &deadline,
                 &mut stats,
+                problem.on_sample,
             );
             if !complete && ending.is_complete() {
                 ending = Ending::WallTime {
@@ -347,19 +348,21 @@ fn locate<D: Dynamics<N>, const N: usize>(
     })
 }
 
-/// Samples a solution every `dt` seconds from `t0`, each sample re-integrated from the last
-/// accepted step before it. The final point (end time or event) is kept as the last sample.
+/// Samples a solution on the grid `origin + n dt` from its first step on, each sample
+/// re-integrated from the last accepted step before it. The final point (end time or event) is kept as the last sample.
 /// The flag is false when the wall-time budget ran out first (the samples then stop there).
+/// With a sink the samples go there and only the final point is returned.
 #[allow(clippy::too_many_arguments)]
 fn resample<const N: usize, D: Dynamics<N>>(
     dynamics: &D,
     settings: &Settings,
     ts: &[f64],
     ys: &[State<N>],
-    t0: f64,
+    origin: f64,
     dt: f64,
     deadline: &Deadline,
     stats: &mut Stats,
+    mut sink: Option<Sink<'_, N>>,
 ) -> (Vec<f64>, Vec<State<N>>, bool) {
     let Some((&t_last, &y_last)) = ts.last().zip(ys.last()) else {
         return (Vec::new(), Vec::new(), true);
@@ -367,9 +370,13 @@ fn resample<const N: usize, D: Dynamics<N>>(
     let mut out_t = Vec::new();
     let mut out_y = Vec::new();
     let mut j = 0;
-    let mut n: u64 = 0;
+    let t0 = ts[0];
+    let mut n = ((t0 - origin) / dt).floor().max(0.0) as u64;
+    while origin + dt * (n as f64) < t0 {
+        n += 1;
+    }
     loop {
-        let t = t0 + dt * n as f64;
+        let t = origin + dt * n as f64;
         if t >= t_last - 1e-12 * dt.max(t_last.abs()) {
             break;
         }
@@ -381,8 +388,14 @@ fn resample<const N: usize, D: Dynamics<N>>(
         while j + 1 < ts.len() && ts[j + 1] <= t {
             j += 1;
         }
-        out_t.push(t);
-        out_y.push(advance(dynamics, settings, ts[j], ys[j], t - ts[j], stats));
+        let y = advance(dynamics, settings, ts[j], ys[j], t - ts[j], stats);
+        match sink.as_mut() {
+            Some(sink) => sink(t, &y),
+            None => {
+                out_t.push(t);
+                out_y.push(y);
+            }
+        }
         n += 1;
     }
     out_t.push(t_last);

@@ -17,7 +17,7 @@
 //! starts with the guard positive).
 
 use super::{horizontal, Mode, Sliding, DISSIPATED};
-use crate::events::{run_hybrid, Hybrid, HybridProblem, HybridSolution, Jump};
+use crate::events::{run_hybrid, Hybrid, HybridProblem, HybridSolution, Jump, PointSink};
 use crate::solve::{Event, Settings, SettingsError, State};
 use nalgebra::Vector3;
 
@@ -154,11 +154,30 @@ impl Sliding {
         sample: Option<f64>,
         stops: &'a dyn Fn() -> Vec<Event<'a, 14>>,
     ) -> Result<SlidingRun, SettingsError> {
+        self.run_into(y0, t_end, settings, sample, stops, None, false)
+    }
+
+    /// [`Sliding::run`] handing every point to `on_point` as it is made instead of holding it
+    /// (the run then holds its first point and its last, see [`HybridProblem::on_point`]),
+    /// its samples from the dense output when `dense` ([`HybridProblem::dense_samples`]).
+    #[allow(clippy::too_many_arguments)]
+    pub fn run_into<'a>(
+        &'a self,
+        y0: &State<14>,
+        t_end: f64,
+        settings: &Settings,
+        sample: Option<f64>,
+        stops: &'a dyn Fn() -> Vec<Event<'a, 14>>,
+        on_point: Option<PointSink<'a, Mode, 14>>,
+        dense: bool,
+    ) -> Result<SlidingRun, SettingsError> {
         let (mode, y) = self.enter_contact(y0);
         let mut p = HybridProblem::new(self, mode, 0.0, y, t_end);
         p.sample = sample;
         p.stops = stops;
         p.max_switches = self.max_switches;
+        p.dense_samples = dense;
+        p.on_point = on_point;
         run_hybrid(p, settings)
     }
 }
