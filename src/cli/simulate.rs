@@ -1,6 +1,7 @@
 //! `rolling-disk simulate`: one run of a scene with its progress bar and summary.
 
 use crate::cli::row_stream::RowStream;
+use crate::cli::stdout;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use physics::run::{columns, run_streamed, Run};
 use physics::scene::Scene;

@@ -302,8 +302,7 @@ fn run_jobs(
                         (None, _) => Ok(check(bench)),
                     };
                     let finding = finding.and_then(|f| evaluated(f, bench));
-                    let dimensions =
-                        crate::dimensions::of(bench, &subject, finding.as_ref().ok());
+                    let dimensions = crate::dimensions::of(bench, &subject, finding.as_ref().ok());
                     let finding =
                         finding.map(|f| crate::dimensions::slip(&subject, f, &dimensions));
                     Checked {

@@ -5,12 +5,14 @@
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-/// Creates a new file beside `name` in `dir`, at the first free name `.NAME.PID-N.tmp`.
-fn new_temporary(dir: &Path, name: &str) -> std::io::Result<(PathBuf, std::fs::File)> {
+/// Creates a new file beside `name` in `dir`, at the first free name `.NAME.PID-N.tmp`, open
+/// for reading and writing.
+pub(crate) fn new_temporary(dir: &Path, name: &str) -> std::io::Result<(PathBuf, std::fs::File)> {
     let pid = std::process::id();
     for n in 0u32.. {
         let tmp = dir.join(format!(".{name}.{pid}-{n}.tmp"));
         match std::fs::OpenOptions::new()
+            .read(true)
             .write(true)
             .create_new(true)
             .open(&tmp)

@@ -6,4 +6,5 @@ pub mod input;
 pub mod inputs;
 pub mod output;
 pub mod output_file;
+pub mod streamed;
 pub mod temporary;
