@@ -174,12 +174,12 @@ fn add(stats: &mut Stats, s: &Stats) {
     stats.extra_evaluations += s.extra_evaluations;
 }
 
-/// Runs a hybrid system: flows, located guard crossings and jumps until the end time, a stop
-/// event, a solver failure, a halt of the model or `max_switches` switches.
-pub fn run_hybrid<H: Hybrid<N>, const N: usize>(
-    p: HybridProblem<'_, H, N>,
+/// Refuses a run that cannot start: settings out of range, an empty or infinite span, a
+/// sample step that is not a positive number, or more samples than a held run may keep.
+fn check_run<H: Hybrid<N>, const N: usize>(
+    p: &HybridProblem<'_, H, N>,
     settings: &Settings,
-) -> Result<HybridSolution<H::Mode, N>, SettingsError> {
+) -> Result<(), SettingsError> {
     settings.validate()?;
     let span = p.t_end - p.t0;
     if !(span.is_finite() && span > 0.0) {
@@ -193,6 +193,16 @@ pub fn run_hybrid<H: Hybrid<N>, const N: usize>(
             held_samples(span, dt)?;
         }
     }
+    Ok(())
+}
+
+/// Runs a hybrid system: flows, located guard crossings and jumps until the end time, a stop
+/// event, a solver failure, a halt of the model or `max_switches` switches.
+pub fn run_hybrid<H: Hybrid<N>, const N: usize>(
+    p: HybridProblem<'_, H, N>,
+    settings: &Settings,
+) -> Result<HybridSolution<H::Mode, N>, SettingsError> {
+    check_run(&p, settings)?;
     let mut out = HybridSolution {
         t: vec![p.t0],
         y: vec![p.y0],

@@ -21,9 +21,9 @@ use physics::model::lab_frame::Snapshot;
 use physics::model::sliding::contact_events::contact_events;
 use physics::model::sliding::{Flow, Mode};
 use physics::model::Model;
-use physics::run::sliding::integrate;
+use physics::run::sliding::integrate_into;
 use physics::scene::Scene;
-use physics::solve::Ending;
+use physics::solve::{Ending, State};
 use std::f64::consts::{PI, TAU};
 
 /// Integrates a sliding scene (validated by [`crate::synthetic::simulate::simulate_motion`])
@@ -40,7 +40,29 @@ pub fn sliding_motion(
     let scene_err = |message: String| ExperimentError::in_scene(&scene.name, message);
     let m = sliding_model(scene);
     let dt = 1.0 / rate;
-    let run = integrate(&m, scene, Some(dt)).map_err(|e| scene_err(e.to_string()))?;
+    // The record's grid points, taken as the run makes them: two numbers a sample are kept,
+    // not the run's whole state, so the row limit of a held run does not apply. The record
+    // starts a whole number of samples before the stop, which is known only at the end, so
+    // every grid point from the start of the run is kept.
+    let mut alpha_all = Vec::new();
+    let mut heading_all = Vec::new();
+    let mut unwrap = Unwrap::default();
+    let mut take = |t: f64, y: &State<14>, _: &Mode| {
+        let k = t / dt;
+        let j = k.round();
+        // Switches and the stop are off the grid: only grid points are samples.
+        if (k - j).abs() > 1e-6 || (j as usize) < alpha_all.len() {
+            return;
+        }
+        let s = Snapshot::of(scene.disk.a, y);
+        let n = -s.e1;
+        alpha_all.resize(j as usize, f64::NAN);
+        heading_all.resize(j as usize, f64::NAN);
+        alpha_all.push(n.x.hypot(n.y).atan2(n.z));
+        heading_all.push(unwrap.next(n.x.atan2(-n.y)));
+    };
+    let run =
+        integrate_into(&m, scene, Some(dt), &mut take).map_err(|e| scene_err(e.to_string()))?;
     let Ending::Event { t: t_stop, .. } = run.ending else {
         return Err(scene_err(format!(
             "the spin-down did not end ({}); raise stop.time or alpha_below",
@@ -56,26 +78,13 @@ pub fn sliding_motion(
     }
     let first = first.ceil() as usize;
     let t_start = first as f64 * dt;
-
-    let mut alpha = vec![f64::NAN; samples];
-    let mut heading = vec![f64::NAN; samples];
-    let mut unwrap = Unwrap::default();
-    for (t, y) in run.t.iter().zip(&run.y) {
-        let k = t / dt;
-        let j = k.round();
-        // Switches and the stop are off the grid: only grid points are samples.
-        if (k - j).abs() > 1e-6 || (j as usize) < first {
-            continue;
-        }
-        let j = j as usize - first;
-        if j >= samples || !alpha[j].is_nan() {
-            continue;
-        }
-        let s = Snapshot::of(scene.disk.a, y);
-        let n = -s.e1;
-        alpha[j] = n.x.hypot(n.y).atan2(n.z);
-        heading[j] = unwrap.next(n.x.atan2(-n.y));
-    }
+    let window = |v: &[f64]| -> Vec<f64> {
+        (0..samples)
+            .map(|j| v.get(first + j).copied().unwrap_or(f64::NAN))
+            .collect()
+    };
+    let alpha = window(&alpha_all);
+    let heading = window(&heading_all);
 
     let last = run.y.len() - 1;
     let flow = Flow {

@@ -70,6 +70,17 @@ pub fn integrate(
     run_model(model, scene, sample, None, false)
 }
 
+/// [`integrate`], handing every point to `on_point` instead of holding it: the run returned
+/// keeps its switches and its last point only, so a record of any length fits in memory.
+pub fn integrate_into(
+    model: &Sliding,
+    scene: &Scene,
+    sample: Option<f64>,
+    on_point: PointSink<'_, Mode, 14>,
+) -> Result<SlidingRun, SettingsError> {
+    run_model(model, scene, sample, Some(on_point), false)
+}
+
 /// [`integrate`], handing every point to `on_point` instead of holding it.
 fn run_model(
     model: &Sliding,
