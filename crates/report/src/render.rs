@@ -4,8 +4,11 @@
 use super::Report;
 use crate::error::ReportError;
 use crate::figures::Figure;
+use crate::json::{Outcome, VerdictKind};
 use crate::parts::PartView;
+use crate::FailureView;
 use files::atomic::write_atomically;
+use serde::Serialize;
 use std::path::{Path, PathBuf};
 use tera::{Context, Tera};
 
@@ -34,6 +37,14 @@ fn templates() -> Result<Tera, ReportError> {
         (
             "partials/study_table.html",
             include_str!("../../../templates/partials/study_table.html.tera"),
+        ),
+        (
+            "partials/failing_claims.html",
+            include_str!("../../../templates/partials/failing_claims.html.tera"),
+        ),
+        (
+            "partials/failing_claims.tex",
+            include_str!("../../../templates/partials/failing_claims.tex.tera"),
         ),
         (
             "partials/study_section.html",
@@ -109,10 +120,49 @@ pub fn part(part: &PartView, format: &str) -> Result<String, ReportError> {
     render_part(&templates()?, part, format)
 }
 
+/// The summary's failing prose claims, one table per verdict: the claims that fail, and the
+/// unit misprints (numbers right in the unit the text means, wrong in the unit printed), which
+/// are not failures of the number and are listed apart.
+#[derive(Serialize)]
+struct ProseFailures<'a> {
+    /// Verdict `fails`.
+    fails: Vec<&'a FailureView>,
+    /// Verdict `unit misprint`.
+    unit_misprints: Vec<&'a FailureView>,
+}
+
+impl<'a> ProseFailures<'a> {
+    /// The summary's failing claims of `report`, sorted by the verdict of each claim's record.
+    fn of(report: &'a Report) -> Self {
+        let misprint = |f: &FailureView| {
+            report.document.claims.iter().any(|c| {
+                f.anchor == format!("claim-{}", c.id)
+                    && matches!(
+                        c.outcome,
+                        Outcome::Checked {
+                            verdict: VerdictKind::UnitMisprint,
+                            ..
+                        }
+                    )
+            })
+        };
+        let (unit_misprints, fails) = report
+            .summary
+            .failing_claims
+            .iter()
+            .partition(|f| misprint(f));
+        Self {
+            fails,
+            unit_misprints,
+        }
+    }
+}
+
 fn render(report: &Report, template: &str) -> Result<String, ReportError> {
     let t = templates()?;
     let ctx = Context::from_serialize(report).map_err(|e| ReportError::Input(e.to_string()))?;
     let mut ctx = ctx;
+    ctx.insert("prose_failures", &ProseFailures::of(report));
     let svgs: Vec<&str> = report.figures.iter().map(|f| f.svg.as_str()).collect();
     ctx.insert("svgs", &svgs);
     let paper_svgs: Vec<&str> = report
