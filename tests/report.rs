@@ -11,6 +11,7 @@ use std::sync::OnceLock;
 
 mod layout;
 mod reading;
+mod tables;
 
 type Built = (String, String, Vec<String>, String);
 
@@ -376,6 +377,7 @@ fn log_defects(log: &str) -> Vec<String> {
             || line.contains("undefined")
             || line.contains("Rerun to get")
             || line.contains("may have changed")
+            || line.contains("destination with the same identifier")
             || line.starts_with('!')
         {
             bad.push(line.to_string());
@@ -391,8 +393,9 @@ fn the_log_parser_finds_what_it_must() {
                Underfull \\hbox (badness 10000) in paragraph at lines 43--43\n\
                LaTeX Warning: Reference `eq-3' on page 2 undefined on input line 7.\n\
                LaTeX Warning: Label(s) may have changed. Rerun to get cross-references right.\n\
+               pdfTeX warning (ext4): destination with the same identifier (name{table.1}) has\n\
                (./report.aux) fine line";
-    assert_eq!(log_defects(log).len(), 4, "{:?}", log_defects(log));
+    assert_eq!(log_defects(log).len(), 5, "{:?}", log_defects(log));
 }
 
 #[test]

@@ -52,7 +52,14 @@ const SECTIONS: [(u32, &str); 10] = [
 fn failure_view(c: &Checked) -> Option<FailureView> {
     let f = c.finding.as_ref().ok()?;
     let (claimed, reference) = values(f);
-    matches!(f.verdict, Verdict::Fails | Verdict::UnitMisprint).then(|| FailureView {
+    matches!(
+        f.verdict,
+        Verdict::Fails
+            | Verdict::UnitMisprint
+            | Verdict::DependsOn { .. }
+            | Verdict::DimensionalSlip
+    )
+    .then(|| FailureView {
         name: c.subject.name(),
         at: crate::number::prose(&f.at),
         anchor: match &c.subject {

@@ -4,8 +4,11 @@
 use super::Report;
 use crate::error::ReportError;
 use crate::figures::Figure;
+use crate::json::{Outcome, VerdictKind};
 use crate::parts::PartView;
+use crate::FailureView;
 use files::output::write_set_file;
+use serde::Serialize;
 use std::path::{Path, PathBuf};
 use tera::{Context, Tera};
 
@@ -34,6 +37,14 @@ fn templates() -> Result<Tera, ReportError> {
         (
             "partials/study_table.html",
             include_str!("../../../templates/partials/study_table.html.tera"),
+        ),
+        (
+            "partials/failing_claims.html",
+            include_str!("../../../templates/partials/failing_claims.html.tera"),
+        ),
+        (
+            "partials/failing_claims.tex",
+            include_str!("../../../templates/partials/failing_claims.tex.tera"),
         ),
         (
             "partials/study_section.html",
@@ -109,10 +120,70 @@ pub fn part(part: &PartView, format: &str) -> Result<String, ReportError> {
     render_part(&templates()?, part, format)
 }
 
+/// The summary's prose claims that do not hold, one table per verdict: the claims that fail;
+/// the unit misprints (numbers right in the unit the text means, wrong in the unit printed);
+/// the dimensional slips (a printed quantity right up to a dropped factor with a dimension);
+/// and the claims whose verdict depends on a choice the paper leaves open. Only the first are
+/// failures of the number, so the others are listed apart.
+#[derive(Serialize)]
+struct ProseFailures<'a> {
+    /// Verdict `fails`.
+    fails: Vec<&'a FailureView>,
+    /// Verdict `unit misprint`.
+    unit_misprints: Vec<&'a FailureView>,
+    /// Verdict `dimensional slip`.
+    dimensional_slips: Vec<&'a FailureView>,
+    /// Verdict `depends on <choice>`.
+    depends: Vec<&'a FailureView>,
+}
+
+impl<'a> ProseFailures<'a> {
+    /// The summary's failing claims of `report`, sorted by the verdict of each claim's record.
+    fn of(report: &'a Report) -> Self {
+        let verdict = |f: &FailureView| {
+            report
+                .document
+                .claims
+                .iter()
+                .find_map(|c| match &c.outcome {
+                    Outcome::Checked { verdict, .. } if f.anchor == format!("claim-{}", c.id) => {
+                        Some(*verdict)
+                    }
+                    _ => None,
+                })
+        };
+        let with = |kind: VerdictKind| -> Vec<&'a FailureView> {
+            report
+                .summary
+                .failing_claims
+                .iter()
+                .filter(|f| verdict(f).as_ref() == Some(&kind))
+                .collect()
+        };
+        let apart = [
+            VerdictKind::UnitMisprint,
+            VerdictKind::DimensionalSlip,
+            VerdictKind::Depends,
+        ];
+        Self {
+            fails: report
+                .summary
+                .failing_claims
+                .iter()
+                .filter(|f| !verdict(f).is_some_and(|v| apart.contains(&v)))
+                .collect(),
+            unit_misprints: with(VerdictKind::UnitMisprint),
+            dimensional_slips: with(VerdictKind::DimensionalSlip),
+            depends: with(VerdictKind::Depends),
+        }
+    }
+}
+
 fn render(report: &Report, template: &str) -> Result<String, ReportError> {
     let t = templates()?;
     let ctx = Context::from_serialize(report).map_err(|e| ReportError::Input(e.to_string()))?;
     let mut ctx = ctx;
+    ctx.insert("prose_failures", &ProseFailures::of(report));
     let svgs: Vec<&str> = report.figures.iter().map(|f| f.svg.as_str()).collect();
     ctx.insert("svgs", &svgs);
     let paper_svgs: Vec<&str> = report
