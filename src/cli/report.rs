@@ -58,12 +58,15 @@ fn report(format: ReportFormat, out: &Path, input: &PaperInput) -> anyhow::Resul
     let t = &report.summary.equations;
     println!(
         "{} equations checked: {}; {} claims fail (and {} more as the equation they restate, \
-         counted there), {} unit misprints",
+         counted there), {} unit misprints, {} dimensional slips, {} depend on a choice the \
+         paper leaves open",
         t.total(),
         t.sentence(),
         report.summary.claims.fails,
         report.summary.claims.restated,
-        report.summary.claims.unit_misprints
+        report.summary.claims.unit_misprints,
+        report.summary.claims.dimensional_slips,
+        report.summary.claims.depends
     );
     for p in written
         .iter()
