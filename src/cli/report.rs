@@ -58,8 +58,8 @@ fn report(format: ReportFormat, out: &Path, input: &PaperInput) -> anyhow::Resul
     let t = &report.summary.equations;
     println!(
         "{} equations checked: {}; {} claims fail (and {} more as the equation they restate, \
-         counted there), {} unit misprints, {} dimensional slips, {} depend on a choice the \
-         paper leaves open",
+         counted there), {} unit misprints, dimensional slips: {}, depending on a choice the \
+         paper leaves open: {}",
         t.total(),
         t.sentence(),
         report.summary.claims.fails,
