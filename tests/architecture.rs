@@ -43,9 +43,8 @@ fn forbidden_arrows(graph: &[(String, Vec<String>)]) -> Vec<String> {
     out
 }
 
-/// The workspace's crates and, for each, the workspace crates it depends on (from
-/// `cargo metadata`, which reads the manifests only).
-fn workspace_graph() -> Vec<(String, Vec<String>)> {
+/// The workspace's manifests as `cargo metadata` reads them (without dependencies' own).
+pub(crate) fn cargo_metadata() -> serde_json::Value {
     let out = std::process::Command::new(env!("CARGO"))
         .args([
             "metadata",
@@ -63,6 +62,13 @@ fn workspace_graph() -> Vec<(String, Vec<String>)> {
         String::from_utf8_lossy(&out.stderr)
     );
     let doc: serde_json::Value = serde_json::from_slice(&out.stdout).expect("metadata is JSON");
+    doc
+}
+
+/// The workspace's crates and, for each, the workspace crates it depends on (from
+/// `cargo metadata`, which reads the manifests only).
+fn workspace_graph() -> Vec<(String, Vec<String>)> {
+    let doc = cargo_metadata();
     let packages = doc["packages"].as_array().expect("packages");
     let names: Vec<String> = packages
         .iter()

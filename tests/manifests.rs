@@ -3,7 +3,7 @@
 //! install). Names are read from `cargo metadata` (the manifests only); a use is a path
 //! (`name::`), a `use name`, a macro (`name!`) or a derive naming the crate.
 
-use super::architecture::rust_files;
+use super::architecture::{cargo_metadata, rust_files};
 use std::path::{Path, PathBuf};
 
 /// A dependency as its crate's code names it, and its kind: `None` for a normal dependency,
@@ -15,23 +15,7 @@ type Manifest = (PathBuf, Vec<Dependency>);
 
 /// Every package of the workspace.
 fn manifests() -> Vec<Manifest> {
-    let out = std::process::Command::new(env!("CARGO"))
-        .args([
-            "metadata",
-            "--format-version",
-            "1",
-            "--no-deps",
-            "--offline",
-        ])
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("cargo metadata runs");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let doc: serde_json::Value = serde_json::from_slice(&out.stdout).expect("metadata is JSON");
+    let doc = cargo_metadata();
     doc["packages"]
         .as_array()
         .expect("packages")
