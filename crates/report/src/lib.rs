@@ -19,6 +19,7 @@ pub mod results;
 pub mod study;
 pub mod study_table;
 pub mod tex;
+pub mod text_cells;
 
 use checks::check::Tally;
 use serde::Serialize;

@@ -15,6 +15,38 @@ use checks::equations::Bench;
 use serde::Serialize;
 use std::collections::BTreeMap;
 
+/// The [`Templates`] of the part whose templates are in `templates/parts/NAME/`: its section in
+/// each format and its text paragraphs, each `PARAGRAPH.txt.tera`.
+macro_rules! part_templates {
+    ($name:literal, [$($paragraph:literal),* $(,)?]) => {
+        $crate::parts::Templates {
+            html: include_str!(concat!(
+                env!("CARGO_MANIFEST_DIR"),
+                "/../../templates/parts/",
+                $name,
+                "/section.html.tera"
+            )),
+            tex: include_str!(concat!(
+                env!("CARGO_MANIFEST_DIR"),
+                "/../../templates/parts/",
+                $name,
+                "/section.tex.tera"
+            )),
+            text: &[$((
+                $paragraph,
+                include_str!(concat!(
+                    env!("CARGO_MANIFEST_DIR"),
+                    "/../../templates/parts/",
+                    $name,
+                    "/",
+                    $paragraph,
+                    ".txt.tera"
+                )),
+            )),*],
+        }
+    };
+}
+
 pub mod coverage;
 pub mod experiment;
 pub mod friction;

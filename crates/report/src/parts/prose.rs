@@ -1,6 +1,7 @@
 //! A part's paragraphs: text templates (`templates/parts/NAME/PARAGRAPH.txt.tera`) that write
-//! the prose around the numbers the part computes and formats. A paragraph is rendered once,
-//! as text, and each format then escapes it like any other text of the section.
+//! the prose around the numbers the part computes, and the columns of its listings (with the
+//! filters of [`crate::text_cells`]). A paragraph is rendered once, as text, and each format
+//! then escapes it like any other text of the section.
 
 use super::Templates;
 use crate::error::ReportError;
@@ -21,9 +22,13 @@ pub fn paragraph(
         .ok_or_else(|| format!("the report has no paragraph template {name:?}"))?;
     let context = tera::Context::from_serialize(values)
         .map_err(|e| ReportError::Template(format!("the paragraph {name:?}: {e}")))?;
-    let text = tera::Tera::one_off(source, &context, false).map_err(|e| {
+    let failed = |e: tera::Error| {
         let cause = std::error::Error::source(&e).map_or(String::new(), |s| format!(": {s}"));
         ReportError::Template(format!("cannot render the paragraph {name:?}: {e}{cause}"))
-    })?;
+    };
+    let mut tera = tera::Tera::default();
+    crate::text_cells::register(&mut tera);
+    tera.add_raw_template(name, source).map_err(failed)?;
+    let text = tera.render(name, &context).map_err(failed)?;
     Ok(text.strip_suffix('\n').unwrap_or(&text).to_string())
 }

@@ -12,14 +12,7 @@ use checks::equations::Bench;
 /// The coverage of the stated uncertainties.
 pub struct Coverage;
 
-const TEMPLATES: Templates = Templates {
-    html: include_str!("../../../../../templates/parts/coverage/section.html.tera"),
-    tex: include_str!("../../../../../templates/parts/coverage/section.tex.tera"),
-    text: &[(
-        "summary",
-        include_str!("../../../../../templates/parts/coverage/summary.txt.tera"),
-    )],
-};
+const TEMPLATES: Templates = part_templates!("coverage", ["summary"]);
 
 impl Part for Coverage {
     fn name(&self) -> &'static str {

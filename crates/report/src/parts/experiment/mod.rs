@@ -14,20 +14,7 @@ use checks::equations::Bench;
 /// The experiment, simulated.
 pub struct Experiment;
 
-const TEMPLATES: Templates = Templates {
-    html: include_str!("../../../../../templates/parts/experiment/section.html.tera"),
-    tex: include_str!("../../../../../templates/parts/experiment/section.tex.tera"),
-    text: &[
-        (
-            "summary",
-            include_str!("../../../../../templates/parts/experiment/summary.txt.tera"),
-        ),
-        (
-            "sound",
-            include_str!("../../../../../templates/parts/experiment/sound.txt.tera"),
-        ),
-    ],
-};
+const TEMPLATES: Templates = part_templates!("experiment", ["summary", "sound"]);
 
 impl Part for Experiment {
     fn name(&self) -> &'static str {

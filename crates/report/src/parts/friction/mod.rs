@@ -1,8 +1,8 @@
 //! The part "Friction and contact": the sections that argue from slipping and from losing
-//! contact, run on the sliding model ([`section`] in tables and a paragraph, [`text`] in full).
+//! contact, run on the sliding model ([`section`] in tables and a paragraph, [`listing`] in full).
 
+pub mod listing;
 pub mod section;
-pub mod text;
 
 use super::{Draft, Part, Templates};
 use crate::error::ReportError;
@@ -13,14 +13,7 @@ use checks::equations::Bench;
 /// Friction and contact.
 pub struct Friction;
 
-const TEMPLATES: Templates = Templates {
-    html: include_str!("../../../../../templates/parts/friction/section.html.tera"),
-    tex: include_str!("../../../../../templates/parts/friction/section.tex.tera"),
-    text: &[(
-        "summary",
-        include_str!("../../../../../templates/parts/friction/summary.txt.tera"),
-    )],
-};
+const TEMPLATES: Templates = part_templates!("friction", ["summary", "listing"]);
 
 impl Part for Friction {
     fn name(&self) -> &'static str {

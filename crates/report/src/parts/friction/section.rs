@@ -1,5 +1,5 @@
 //! The "Friction and contact" section as the paper would print it: a paragraph of what was run
-//! and found, and the studies' numbers in tables (the full program text is [`super::text`]).
+//! and found, and the studies' numbers in tables (the full output is [`super::listing`]).
 
 use crate::error::ReportError;
 use crate::number::{measured, places as fixed, prose, scientific};
@@ -212,7 +212,7 @@ pub fn section(
         title: "Friction and contact".into(),
         summary: summary(s, paper, &tables, figures)?,
         tables,
-        output: prose(&super::text::text(s, paper)),
+        output: prose(&super::listing::listing(s, paper)?),
         output_title: "The studies' full output: every run, the fall study run by run, the notes"
             .into(),
     })
@@ -271,7 +271,7 @@ pub fn summary(
 
 /// The fall study's numbers: how fast the disk falls, and how often to the claimed tilt.
 fn fall(f: &studies::sliding::fall::Fall, paper: &paper::Paper) -> Option<serde_json::Value> {
-    let (claimed, within) = super::text::fall_claim(paper)?;
+    let (claimed, within) = super::listing::fall_claim(paper)?;
     let (lo, hi) = (claimed * (1.0 - within), claimed * (1.0 + within));
     let slowest = f
         .cases

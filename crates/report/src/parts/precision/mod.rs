@@ -12,14 +12,7 @@ use checks::equations::Bench;
 /// Speed against accuracy.
 pub struct Precision;
 
-const TEMPLATES: Templates = Templates {
-    html: include_str!("../../../../../templates/parts/precision/section.html.tera"),
-    tex: include_str!("../../../../../templates/parts/precision/section.tex.tera"),
-    text: &[(
-        "summary",
-        include_str!("../../../../../templates/parts/precision/summary.txt.tera"),
-    )],
-};
+const TEMPLATES: Templates = part_templates!("precision", ["summary"]);
 
 impl Part for Precision {
     fn name(&self) -> &'static str {

@@ -14,14 +14,7 @@ use checks::equations::Bench;
 /// The real toy.
 pub struct Toy;
 
-const TEMPLATES: Templates = Templates {
-    html: include_str!("../../../../../templates/parts/toy/section.html.tera"),
-    tex: include_str!("../../../../../templates/parts/toy/section.tex.tera"),
-    text: &[(
-        "summary",
-        include_str!("../../../../../templates/parts/toy/summary.txt.tera"),
-    )],
-};
+const TEMPLATES: Templates = part_templates!("toy", ["summary"]);
 
 impl Part for Toy {
     fn name(&self) -> &'static str {
