@@ -50,12 +50,21 @@ fn number(value: &Value, filter: &str) -> Result<Option<f64>> {
         .ok_or_else(|| Error::msg(format!("the {filter} filter needs a number, not {value}")))
 }
 
-/// `fixed(p=N)`: a number with `N` decimals; null (not computed) as `-`.
+/// `fixed(p=N)`: a number with `N` decimals; null (not computed) as `-`; `sign=true` writes
+/// the sign of a positive number too (`+0.052`).
 fn fixed(value: &Value, args: &HashMap<String, Value>) -> Result<Value> {
     let p = whole(args, "p", 0)?;
-    Ok(Value::String(
-        number(value, "fixed")?.map_or("-".into(), |x| format!("{x:.p$}")),
-    ))
+    let sign = args.get("sign").and_then(Value::as_bool).unwrap_or(false);
+    Ok(Value::String(number(value, "fixed")?.map_or(
+        "-".into(),
+        |x| {
+            if sign {
+                format!("{x:+.p$}")
+            } else {
+                format!("{x:.p$}")
+            }
+        },
+    )))
 }
 
 /// `sci(p=N)`: a number in Rust's scientific notation with `N` decimals (`1.20e-6`); null as `-`.

@@ -279,8 +279,9 @@ fn cite(tables: &[StudyTable], i: usize) -> String {
         .map_or(String::new(), |t| format!(" (Table {})", t.number))
 }
 
-/// The runs that end a slip, split at the peer's relock ([`studies::peer::relock`]).
-fn relocked(t: &Toy) -> String {
+/// The runs that end a slip, split at the peer's relock ([`studies::peer::relock`]): their
+/// names, and how closely they agree before and after the split and over the whole run.
+fn relocked(t: &Toy) -> serde_json::Value {
     let slip_ends: Vec<(&str, studies::peer::relock::RelockSplit)> = t
         .peer
         .iter()
@@ -290,27 +291,15 @@ fn relocked(t: &Toy) -> String {
     let largest = |f: fn(&studies::peer::relock::RelockSplit) -> f64| {
         scientific(slip_ends.iter().map(|(_, r)| f(r)).fold(0.0, f64::max), 1)
     };
-    format!(
-        "In the runs that end a slip ({}), the peer with ε = 1e-7 m/s relocks only at a print \
-         step, up to 1 ms after this tool. Split there, they agree to {} rad before this tool's \
-         slip ends and to {} rad after the peer's relock, this tool restarted from the peer's \
-         printed state, against at least {} rad over the whole run: the interval between the \
-         two relocks is what they differ by.",
-        slip_ends
-            .iter()
-            .map(|(n, _)| *n)
-            .collect::<Vec<_>>()
-            .join(", "),
-        largest(|r| r.before),
-        largest(|r| r.after),
-        scientific(
-            slip_ends
-                .iter()
-                .map(|(_, r)| r.whole)
-                .fold(f64::INFINITY, f64::min),
+    serde_json::json!({
+        "names": slip_ends.iter().map(|(n, _)| *n).collect::<Vec<_>>(),
+        "before": largest(|r| r.before),
+        "after": largest(|r| r.after),
+        "whole": scientific(
+            slip_ends.iter().map(|(_, r)| r.whole).fold(f64::INFINITY, f64::min),
             1
         ),
-    )
+    })
 }
 
 /// What was compared and found, and for each of the paper's numbers whether its conclusion
@@ -335,9 +324,8 @@ fn summary(t: &Toy, tables: &[StudyTable], figures: &[usize]) -> Result<String, 
     let change = |f: &dyn Fn(&studies::thickness::SteadyPair) -> f64| {
         th.steady
             .iter()
-            .map(|r| format!("{:+.1} % at {} rad", 100.0 * f(r), r.alpha0))
+            .map(|r| serde_json::json!({ "change": f(r), "alpha0": r.alpha0 }))
             .collect::<Vec<_>>()
-            .join(", ")
     };
     let [thin, toy] = [&th.spin_down[0], &th.spin_down[1]];
     let values = serde_json::json!({
@@ -347,42 +335,19 @@ fn summary(t: &Toy, tables: &[StudyTable], figures: &[usize]) -> Result<String, 
         "t2": tables
             .get(2..4)
             .map_or(String::new(), |t| format!(" ({})", crate::study_table::cite(t))),
-        "smooth": ({
-            let closest = t
-                .peer
-                .iter()
-                .map(|c| c.closest_to_upright)
-                .fold(f64::INFINITY, f64::min);
-            if closest < 0.02 {
-                format!(
-                    "acts in some run (it comes within {} rad of upright)",
-                    places(closest, 4)
-                )
-            } else {
-                format!(
-                    "acts in none (the closest any run comes is {} rad)",
-                    places(closest, 3)
-                )
-            }
-        }),
-        "stops": ({
-            let early: Vec<&str> = t
-                .peer
-                .iter()
-                .filter(|c| c.regularized.peer_end < c.regularized.tool_end - 2e-3)
-                .map(|c| c.name.as_str())
-                .collect();
-            if early.is_empty() {
-                "end no record before this tool's run ends".to_string()
-            } else {
-                format!(
-                    "end the records of {} before this tool's run",
-                    early.join(", ")
-                )
-            }
-        }),
+        "closest": t
+            .peer
+            .iter()
+            .map(|c| c.closest_to_upright)
+            .fold(f64::INFINITY, f64::min),
+        "early": t
+            .peer
+            .iter()
+            .filter(|c| c.regularized.peer_end < c.regularized.tool_end - 2e-3)
+            .map(|c| c.name.as_str())
+            .collect::<Vec<_>>(),
         "ns": t.peer.iter().filter(|c| c.sharp.is_some()).count(),
-        "relocked": relocked(t),
+        "relock": relocked(t),
         "restarted": t
             .peer
             .iter()
@@ -412,27 +377,17 @@ fn summary(t: &Toy, tables: &[StudyTable], figures: &[usize]) -> Result<String, 
         "falls": th
             .falls
             .iter()
-            .map(|f| match f.fell_to_deg {
-                (thin, Some(to)) => format!(
-                    "from {:.0}° to {:.1}° (thin: {})",
-                    f.alpha0_deg,
-                    to,
-                    thin.map_or("no fall".into(), |x| format!("{x:.1}°"))
-                ),
-                (_, None) => format!(
-                    "from {:.0}°: {}",
-                    f.alpha0_deg,
-                    if f.precession.1.is_none() {
-                        "the toy has no steady motion at that b (eq 30 for the toy)"
-                    } else {
-                        "no fall within the run"
-                    }
-                ),
+            .map(|f| {
+                serde_json::json!({
+                    "alpha0_deg": f.alpha0_deg,
+                    "to": f.fell_to_deg.1,
+                    "thin": f.fell_to_deg.0,
+                    "steady": f.precession.1.is_some(),
+                })
             })
-            .collect::<Vec<_>>()
-            .join("; "),
+            .collect::<Vec<_>>(),
         "ni": places(thin.least_normal.0, 2),
-        "eq30": super::steady_table::sentence(&t.steady, &cite(tables, 5)),
+        "eq30": super::steady_table::edges(&t.steady, &cite(tables, 5)),
         "at": at,
         "sharp": sharp,
         "figures": figures,

@@ -1,6 +1,6 @@
 //! Eq 30 for the toy in the report: the toy's condition on $b$ beside the thin disk's, with the
-//! sliding model's checks of it ([`studies::toy_steady`]), and the sentence that says what of
-//! eqs 29-30 survives for the toy.
+//! sliding model's checks of it ([`studies::toy_steady`]), and what of eqs 29-30 survives for
+//! the toy, as the part's summary template reads it.
 
 use crate::number::{places, scientific};
 use crate::study_table::StudyTable;
@@ -51,35 +51,20 @@ pub fn table(t: &ToySteady) -> StudyTable {
     s
 }
 
-/// What of eqs 29-30 survives for the toy, with the table's citation `cite`.
-pub fn sentence(t: &ToySteady, cite: &str) -> String {
+/// What of eqs 29-30 survives for the toy, as its summary's template reads it: the edges at the
+/// first tilt, the tilts between which the toy has no steady motion with its centre at rest,
+/// whether the sliding model found exactly the closed form's steady motions, and the table's
+/// citation `cite`.
+pub fn edges(t: &ToySteady, cite: &str) -> serde_json::Value {
     let (lo, hi) = t.no_spin_in_place_deg;
     let first = &t.rows[0];
-    let held = t
-        .rows
-        .iter()
-        .all(|r| r.roots_allowed == 1 && r.roots_forbidden == 0);
-    format!(
-        "Eq 30's condition on b{cite} {verdict} for the toy: its range of b is narrower \
-         (b* = {toy:+.3} a at {at}° against {thin:+.3} a thin), the edge rises through b = 0 at \
-         {lo}°, so between {lo}° and {hi}° (where its centre comes above its contact) the toy has \
-         no steady motion with its centre at rest, which the thin disk has at every tilt; beyond \
-         {hi}° its steady motions have b below the edge, not above. {checked}",
-        verdict = if held {
-            "does not survive as printed"
-        } else {
-            "could not be checked"
-        },
-        toy = first.toy_edge,
-        at = places(first.alpha0_deg, 0),
-        thin = first.thin_edge,
-        lo = places(lo, 1),
-        hi = places(hi, 1),
-        checked = if held {
-            "The sliding model finds exactly one steady precession on the allowed side at every \
-             tilt and none on the other."
-        } else {
-            "The sliding model's scan disagrees with the closed form at some tilt (see the table)."
-        }
-    )
+    serde_json::json!({
+        "cite": cite,
+        "held": t.rows.iter().all(|r| r.roots_allowed == 1 && r.roots_forbidden == 0),
+        "toy": first.toy_edge,
+        "at": first.alpha0_deg,
+        "thin": first.thin_edge,
+        "lo": lo,
+        "hi": hi,
+    })
 }
