@@ -175,7 +175,7 @@ pub fn from_results(
         .filter_map(failure_view)
         .collect();
     let (corrections, downstream, correction_records) =
-        corrections_view(bench, checked, results.get(&study::Corrections));
+        corrections_view(bench, checked, results.get(&study::Corrections))?;
     let (eqs, cls): (Vec<&Checked>, Vec<&Checked>) = checked
         .iter()
         .partition(|c| matches!(c.subject, Subject::Equation { .. }));
@@ -345,19 +345,22 @@ fn corrections_view(
     bench: &Bench,
     checked: &[Checked],
     study: Option<&crate::study::CorrectionsStudy>,
-) -> (
-    Vec<super::CorrectionView>,
-    String,
-    Vec<json::CorrectionRecord>,
-) {
+) -> Result<
+    (
+        Vec<super::CorrectionView>,
+        String,
+        Vec<json::CorrectionRecord>,
+    ),
+    ReportError,
+> {
     let Some(study) = study else {
-        return (Vec::new(), String::new(), Vec::new());
+        return Ok((Vec::new(), String::new(), Vec::new()));
     };
     if let Some(e) = &study.error {
         let note = format!(
             "The corrections of paper/corrections.yaml could not be checked on this paper: {e}"
         );
-        return (Vec::new(), note, Vec::new());
+        return Ok((Vec::new(), note, Vec::new()));
     }
     let verified =
         checks::corrections::assemble(bench.paper, &study.corrections, checked, &study.corrected);
@@ -390,20 +393,22 @@ fn corrections_view(
             }),
         })
         .collect();
-    let downstream = study.downstream.as_ref().map_or(String::new(), |d| {
-        format!(
-            "The paper's fit of sec. 11 (beta = {}, C^(-1/4) = {} s) means a dissipation strength \
-             epsilon = {} with the printed eq 79 and {} with the corrected one (ratio {:.4}; disk of \
-             the built-in spin-down: a = {} m, k = {}, g = {} m/s^2)",
-            d.beta,
-            d.c_inv_root,
-            fmt_num(d.epsilon_printed),
-            fmt_num(d.epsilon_corrected),
-            d.epsilon_corrected / d.epsilon_printed,
-            d.a,
-            d.k,
-            d.g
-        )
-    });
-    (views, downstream, records)
+    let downstream = match &study.downstream {
+        None => Ok(String::new()),
+        Some(d) => crate::parts::prose::text(
+            "the corrections' downstream sentence",
+            include_str!("../../../templates/partials/downstream.txt.tera"),
+            &serde_json::json!({
+                "beta": d.beta,
+                "c_inv_root": d.c_inv_root,
+                "epsilon_printed": fmt_num(d.epsilon_printed),
+                "epsilon_corrected": fmt_num(d.epsilon_corrected),
+                "ratio": d.epsilon_corrected / d.epsilon_printed,
+                "a": d.a,
+                "k": d.k,
+                "g": d.g,
+            }),
+        ),
+    };
+    Ok((views, downstream?, records))
 }

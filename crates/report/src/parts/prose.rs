@@ -20,11 +20,17 @@ pub fn paragraph(
         .find(|(n, _)| *n == name)
         .map(|(_, s)| *s)
         .ok_or_else(|| format!("the report has no paragraph template {name:?}"))?;
+    text(&format!("the paragraph {name:?}"), source, values)
+}
+
+/// The text of the template `source` (named `name` in messages) rendered from `values`, without
+/// its final newline.
+pub fn text(name: &str, source: &str, values: &impl Serialize) -> Result<String, ReportError> {
     let context = tera::Context::from_serialize(values)
-        .map_err(|e| ReportError::Template(format!("the paragraph {name:?}: {e}")))?;
+        .map_err(|e| ReportError::Template(format!("{name}: {e}")))?;
     let failed = |e: tera::Error| {
         let cause = std::error::Error::source(&e).map_or(String::new(), |s| format!(": {s}"));
-        ReportError::Template(format!("cannot render the paragraph {name:?}: {e}{cause}"))
+        ReportError::Template(format!("cannot render {name}: {e}{cause}"))
     };
     let mut tera = tera::Tera::default();
     crate::text_cells::register(&mut tera);
