@@ -92,23 +92,45 @@ impl From<StudySection> for Written {
     }
 }
 
-/// A topic of the report.
-pub trait Part: Sync {
+/// What a part is: its name, its title, the studies it reads and its templates.
+pub struct About {
     /// Its name: its anchor in the HTML and its folders (`parts/NAME`, `templates/parts/NAME`).
-    fn name(&self) -> &'static str;
+    pub name: &'static str,
     /// Its title in the HTML's contents; `None` for a part that is a subsection of the one
     /// before it.
-    fn contents(&self) -> Option<&'static str>;
+    pub contents: Option<&'static str>,
     /// The studies it reads.
-    fn studies(&self) -> &'static [&'static dyn Run];
+    pub studies: &'static [&'static dyn Run],
     /// Its templates.
-    fn templates(&self) -> &'static Templates;
+    pub templates: Templates,
+}
+
+/// A topic of the report.
+pub trait Part: Sync {
+    /// What it is.
+    fn about(&self) -> &'static About;
     /// Its draft from `results`, or `None` when what it shows was not computed.
     fn draft<'r>(
         &self,
         bench: &'r Bench,
         results: &'r Results,
     ) -> Result<Option<Draft<'r>>, ReportError>;
+    /// Its name ([`About::name`]).
+    fn name(&self) -> &'static str {
+        self.about().name
+    }
+    /// Its title in the contents ([`About::contents`]).
+    fn contents(&self) -> Option<&'static str> {
+        self.about().contents
+    }
+    /// The studies it reads ([`About::studies`]).
+    fn studies(&self) -> &'static [&'static dyn Run] {
+        self.about().studies
+    }
+    /// Its templates ([`About::templates`]).
+    fn templates(&self) -> &'static Templates {
+        &self.about().templates
+    }
 }
 
 /// Every part, in the report's order.

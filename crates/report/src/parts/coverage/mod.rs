@@ -3,35 +3,27 @@
 
 pub mod section;
 
-use super::{Draft, Part, Templates};
+use super::{About, Draft, Part};
 use crate::error::ReportError;
 use crate::results::Results;
-use crate::study::Run;
 use checks::equations::Bench;
 
 /// The coverage of the stated uncertainties.
 pub struct Coverage;
 
-const TEMPLATES: Templates = part_templates!("coverage", ["summary"]);
+const ABOUT: About = About {
+    name: "coverage",
+    contents: Some("Coverage of the stated uncertainties"),
+    studies: &[],
+    templates: part_templates!("coverage", ["summary"]),
+};
 
 impl Part for Coverage {
-    fn name(&self) -> &'static str {
-        "coverage"
-    }
-
-    fn contents(&self) -> Option<&'static str> {
-        Some("Coverage of the stated uncertainties")
+    fn about(&self) -> &'static About {
+        &ABOUT
     }
 
     /// None: it reads the stored studies (`snapshots/coverage.json`), too slow for a report.
-    fn studies(&self) -> &'static [&'static dyn Run] {
-        &[]
-    }
-
-    fn templates(&self) -> &'static Templates {
-        &TEMPLATES
-    }
-
     fn draft<'r>(&self, _: &'r Bench, _: &'r Results) -> Result<Option<Draft<'r>>, ReportError> {
         let stored = studies::coverage_record::stored().map_err(|e| e.to_string())?;
         Ok(Some(Draft {

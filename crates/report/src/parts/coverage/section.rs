@@ -117,7 +117,7 @@ pub fn section(
         "figure": figure,
         "made": made,
     });
-    let summary = paragraph(&super::TEMPLATES, "summary", &values)?;
+    let summary = paragraph(&super::ABOUT.templates, "summary", &values)?;
     Ok(StudySection {
         title: "Coverage of the stated uncertainties".into(),
         summary,

@@ -5,32 +5,25 @@
 pub mod section;
 pub mod sound;
 
-use super::{Draft, Part, Templates, Written};
+use super::{About, Draft, Part, Written};
 use crate::error::ReportError;
 use crate::results::Results;
-use crate::study::{self, Run};
+use crate::study;
 use checks::equations::Bench;
 
 /// The experiment, simulated.
 pub struct Experiment;
 
-const TEMPLATES: Templates = part_templates!("experiment", ["summary", "sound"]);
+const ABOUT: About = About {
+    name: "experiment",
+    contents: Some("The experiment, simulated"),
+    studies: &[&study::Experiment, &study::Sound],
+    templates: part_templates!("experiment", ["summary", "sound"]),
+};
 
 impl Part for Experiment {
-    fn name(&self) -> &'static str {
-        "experiment"
-    }
-
-    fn contents(&self) -> Option<&'static str> {
-        Some("The experiment, simulated")
-    }
-
-    fn studies(&self) -> &'static [&'static dyn Run] {
-        &[&study::Experiment, &study::Sound]
-    }
-
-    fn templates(&self) -> &'static Templates {
-        &TEMPLATES
+    fn about(&self) -> &'static About {
+        &ABOUT
     }
 
     fn draft<'r>(

@@ -83,7 +83,7 @@ pub fn summary(e: &Synthetic, tables: &[StudyTable]) -> Result<String, ReportErr
             "analysis": measured(1e3 * (law.t0 - a.eq84.t0), ms),
         })),
     });
-    paragraph(&super::TEMPLATES, "summary", &values)
+    paragraph(&super::ABOUT.templates, "summary", &values)
 }
 
 /// The section, its tables numbered already.

@@ -32,5 +32,5 @@ pub fn paragraph_of(
         "spectrogram": spectrogram,
         "residuals": residuals,
     });
-    paragraph(&super::TEMPLATES, "sound", &values)
+    paragraph(&super::ABOUT.templates, "sound", &values)
 }

@@ -206,7 +206,7 @@ pub fn listing(s: &Studies, paper: &paper::Paper) -> Result<String, ReportError>
             .map(|r| r.mechanism.as_str())
             .collect(),
     };
-    Ok(paragraph(&super::TEMPLATES, "listing", &listing)? + "\n")
+    Ok(paragraph(&super::ABOUT.templates, "listing", &listing)? + "\n")
 }
 
 #[cfg(test)]

@@ -4,32 +4,25 @@
 pub mod listing;
 pub mod section;
 
-use super::{Draft, Part, Templates};
+use super::{About, Draft, Part};
 use crate::error::ReportError;
 use crate::results::Results;
-use crate::study::{self, Run};
+use crate::study;
 use checks::equations::Bench;
 
 /// Friction and contact.
 pub struct Friction;
 
-const TEMPLATES: Templates = part_templates!("friction", ["summary", "listing"]);
+const ABOUT: About = About {
+    name: "friction",
+    contents: Some("Friction and contact"),
+    studies: &[&study::Friction],
+    templates: part_templates!("friction", ["summary", "listing"]),
+};
 
 impl Part for Friction {
-    fn name(&self) -> &'static str {
-        "friction"
-    }
-
-    fn contents(&self) -> Option<&'static str> {
-        Some("Friction and contact")
-    }
-
-    fn studies(&self) -> &'static [&'static dyn Run] {
-        &[&study::Friction]
-    }
-
-    fn templates(&self) -> &'static Templates {
-        &TEMPLATES
+    fn about(&self) -> &'static About {
+        &ABOUT
     }
 
     fn draft<'r>(

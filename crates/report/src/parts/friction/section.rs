@@ -266,7 +266,7 @@ pub fn summary(
         "fall": fall(&s.fall, paper),
         "slip_stick": figures,
     });
-    paragraph(&super::TEMPLATES, "summary", &values)
+    paragraph(&super::ABOUT.templates, "summary", &values)
 }
 
 /// The fall study's numbers: how fast the disk falls, and how often to the claimed tilt.

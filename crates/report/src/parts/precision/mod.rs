@@ -3,32 +3,25 @@
 
 pub mod section;
 
-use super::{Draft, Part, Templates};
+use super::{About, Draft, Part};
 use crate::error::ReportError;
 use crate::results::Results;
-use crate::study::{self, Run};
+use crate::study;
 use checks::equations::Bench;
 
 /// Speed against accuracy.
 pub struct Precision;
 
-const TEMPLATES: Templates = part_templates!("precision", ["summary"]);
+const ABOUT: About = About {
+    name: "precision",
+    contents: Some("Speed against accuracy"),
+    studies: &[&study::Precision],
+    templates: part_templates!("precision", ["summary"]),
+};
 
 impl Part for Precision {
-    fn name(&self) -> &'static str {
-        "precision"
-    }
-
-    fn contents(&self) -> Option<&'static str> {
-        Some("Speed against accuracy")
-    }
-
-    fn studies(&self) -> &'static [&'static dyn Run] {
-        &[&study::Precision]
-    }
-
-    fn templates(&self) -> &'static Templates {
-        &TEMPLATES
+    fn about(&self) -> &'static About {
+        &ABOUT
     }
 
     fn draft<'r>(

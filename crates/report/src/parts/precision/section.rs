@@ -134,7 +134,7 @@ pub fn section(
         "figure": figure,
         "tables": cite(&tables),
     });
-    let summary = paragraph(&super::TEMPLATES, "summary", &values)?;
+    let summary = paragraph(&super::ABOUT.templates, "summary", &values)?;
     Ok(StudySection {
         title: "Speed against accuracy".into(),
         summary,

@@ -5,33 +5,25 @@
 pub mod section;
 pub mod steady_table;
 
-use super::{Draft, Part, Templates};
+use super::{About, Draft, Part};
 use crate::error::ReportError;
 use crate::results::Results;
-use crate::study::{self, Run};
+use crate::study;
 use checks::equations::Bench;
 
 /// The real toy.
 pub struct Toy;
 
-const TEMPLATES: Templates = part_templates!("toy", ["summary"]);
+const ABOUT: About = About {
+    name: "toy",
+    contents: None, // a subsection of friction and contact
+    studies: &[&study::Toy, &study::Friction],
+    templates: part_templates!("toy", ["summary"]),
+};
 
 impl Part for Toy {
-    fn name(&self) -> &'static str {
-        "toy"
-    }
-
-    /// None: it is a subsection of friction and contact.
-    fn contents(&self) -> Option<&'static str> {
-        None
-    }
-
-    fn studies(&self) -> &'static [&'static dyn Run] {
-        &[&study::Toy, &study::Friction]
-    }
-
-    fn templates(&self) -> &'static Templates {
-        &TEMPLATES
+    fn about(&self) -> &'static About {
+        &ABOUT
     }
 
     /// `None` without the friction studies too, whose subsection it is.

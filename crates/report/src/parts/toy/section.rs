@@ -392,7 +392,7 @@ fn summary(t: &Toy, tables: &[StudyTable], figures: &[usize]) -> Result<String, 
         "sharp": sharp,
         "figures": figures,
     });
-    paragraph(&super::TEMPLATES, "summary", &values)
+    paragraph(&super::ABOUT.templates, "summary", &values)
 }
 
 /// `text` in ASCII, for the LaTeX appendix's listing: the Greek letters and sub- and
