@@ -117,6 +117,18 @@ fn plain(value: &Value, _: &HashMap<String, Value>) -> Result<Value> {
     ))
 }
 
+/// `measured(sigma=S)`: a measured value with its uncertainty `S`, as [`crate::number::measured`]
+/// writes it (`2.003 ± 0.012`).
+fn measured(value: &Value, args: &HashMap<String, Value>) -> Result<Value> {
+    let sigma = args
+        .get("sigma")
+        .and_then(Value::as_f64)
+        .ok_or_else(|| Error::msg("the measured filter needs sigma=NUMBER"))?;
+    Ok(Value::String(
+        number(value, "measured")?.map_or("-".into(), |x| crate::number::measured(x, sigma)),
+    ))
+}
+
 /// `yes`: a yes-or-no answer as `yes` or `no`; null (not asked) as `-`.
 fn yes(value: &Value, _: &HashMap<String, Value>) -> Result<Value> {
     match value {
@@ -145,6 +157,7 @@ pub fn register(tera: &mut Tera) {
     tera.register_filter("pad", pad);
     tera.register_filter("plain", plain);
     tera.register_filter("yes", yes);
+    tera.register_filter("measured", measured);
     tera.register_filter("wrap", wrap_filter);
 }
 

@@ -92,6 +92,9 @@ impl From<StudySection> for Written {
     }
 }
 
+/// A part's draft, `None` when what it shows was not computed.
+pub type Drafted<'r> = Result<Option<Draft<'r>>, ReportError>;
+
 /// What a part is: its name, its title, the studies it reads and its templates.
 pub struct About {
     /// Its name: its anchor in the HTML and its folders (`parts/NAME`, `templates/parts/NAME`).
@@ -110,11 +113,7 @@ pub trait Part: Sync {
     /// What it is.
     fn about(&self) -> &'static About;
     /// Its draft from `results`, or `None` when what it shows was not computed.
-    fn draft<'r>(
-        &self,
-        bench: &'r Bench,
-        results: &'r Results,
-    ) -> Result<Option<Draft<'r>>, ReportError>;
+    fn draft<'r>(&self, bench: &'r Bench, results: &'r Results) -> Drafted<'r>;
     /// Its name ([`About::name`]).
     fn name(&self) -> &'static str {
         self.about().name

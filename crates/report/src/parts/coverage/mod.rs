@@ -3,8 +3,7 @@
 
 pub mod section;
 
-use super::{About, Draft, Part};
-use crate::error::ReportError;
+use super::{About, Draft, Drafted, Part};
 use crate::results::Results;
 use checks::equations::Bench;
 
@@ -24,7 +23,7 @@ impl Part for Coverage {
     }
 
     /// None: it reads the stored studies (`snapshots/coverage.json`), too slow for a report.
-    fn draft<'r>(&self, _: &'r Bench, _: &'r Results) -> Result<Option<Draft<'r>>, ReportError> {
+    fn draft<'r>(&self, _: &'r Bench, _: &'r Results) -> Drafted<'r> {
         let stored = studies::coverage_record::stored().map_err(|e| e.to_string())?;
         Ok(Some(Draft {
             tables: section::tables(&stored),

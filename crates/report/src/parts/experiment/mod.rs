@@ -5,8 +5,7 @@
 pub mod section;
 pub mod sound;
 
-use super::{About, Draft, Part, Written};
-use crate::error::ReportError;
+use super::{About, Draft, Drafted, Part, Written};
 use crate::results::Results;
 use crate::study;
 use checks::equations::Bench;
@@ -26,11 +25,7 @@ impl Part for Experiment {
         &ABOUT
     }
 
-    fn draft<'r>(
-        &self,
-        bench: &'r Bench,
-        results: &'r Results,
-    ) -> Result<Option<Draft<'r>>, ReportError> {
+    fn draft<'r>(&self, bench: &'r Bench, results: &'r Results) -> Drafted<'r> {
         let synthetic = results.required(&study::Experiment, "the report")?;
         let sound = results.get(&study::Sound);
         let fit = bench.paper.fit;

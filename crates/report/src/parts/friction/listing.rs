@@ -27,13 +27,6 @@ struct SpiralRun<'s> {
     note: Option<usize>,
 }
 
-/// A rising run and how long its contact slid (`None` on a table without friction).
-#[derive(Serialize)]
-struct RisingRun<'s> {
-    run: &'s studies::sliding::rising::RisingCase,
-    slid: Option<f64>,
-}
-
 /// A fall run and how its tilt fallen to stands against the claim's reading.
 #[derive(Serialize)]
 struct FallRun<'s> {
@@ -70,20 +63,12 @@ struct FallReading<'s> {
     highest_across: f64,
 }
 
-/// A mechanism's spin-down and its fitted beta as a measured value.
-#[derive(Serialize)]
-struct MechanismRun<'s> {
-    run: &'s experiment::mechanisms::MechanismSpinDown,
-    fitted: Option<String>,
-}
-
 /// What the listing's template reads.
 #[derive(Serialize)]
 struct Listing<'s> {
     s: &'s Studies,
     spiral: Vec<SpiralRun<'s>>,
     spiral_duration: f64,
-    rising: Vec<RisingRun<'s>>,
     rising_duration: f64,
     fall_claim: &'static str,
     fall: Option<FallReading<'s>>,
@@ -91,7 +76,6 @@ struct Listing<'s> {
     fall_left: f64,
     fall_nudge: f64,
     fall_across: &'static [f64],
-    mechanisms: Vec<MechanismRun<'s>>,
     gives_two: Vec<&'s str>,
 }
 
@@ -167,29 +151,10 @@ pub fn listing(s: &Studies, paper: &paper::Paper) -> Result<String, ReportError>
             }),
         })
         .collect();
-    let rising = s
-        .rising
-        .cases
-        .iter()
-        .map(|c| RisingRun {
-            run: c,
-            slid: (c.mu != 0.0).then_some(c.slip_time.max(0.0)),
-        })
-        .collect();
-    let mechanisms = s
-        .mechanisms
-        .spin_downs
-        .iter()
-        .map(|r| MechanismRun {
-            run: r,
-            fitted: r.beta.map(|(b, e)| crate::number::measured(b, e)),
-        })
-        .collect();
     let listing = Listing {
         s,
         spiral,
         spiral_duration: studies::sliding::spiral::DURATION,
-        rising,
         rising_duration: studies::sliding::rising::DURATION,
         fall_claim: FALL_CLAIM,
         fall: fall_claim(paper).map(|reading| fall_reading(&s.fall, reading)),
@@ -197,7 +162,6 @@ pub fn listing(s: &Studies, paper: &paper::Paper) -> Result<String, ReportError>
         fall_left: LEFT,
         fall_nudge: NUDGE,
         fall_across: &ACROSS,
-        mechanisms,
         gives_two: s
             .mechanisms
             .spin_downs

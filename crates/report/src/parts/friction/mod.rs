@@ -4,8 +4,7 @@
 pub mod listing;
 pub mod section;
 
-use super::{About, Draft, Part};
-use crate::error::ReportError;
+use super::{About, Draft, Drafted, Part};
 use crate::results::Results;
 use crate::study;
 use checks::equations::Bench;
@@ -25,11 +24,7 @@ impl Part for Friction {
         &ABOUT
     }
 
-    fn draft<'r>(
-        &self,
-        bench: &'r Bench,
-        results: &'r Results,
-    ) -> Result<Option<Draft<'r>>, ReportError> {
+    fn draft<'r>(&self, bench: &'r Bench, results: &'r Results) -> Drafted<'r> {
         let Some(friction) = results.get(&study::Friction) else {
             return Ok(None);
         };

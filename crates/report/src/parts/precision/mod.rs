@@ -3,8 +3,7 @@
 
 pub mod section;
 
-use super::{About, Draft, Part};
-use crate::error::ReportError;
+use super::{About, Draft, Drafted, Part};
 use crate::results::Results;
 use crate::study;
 use checks::equations::Bench;
@@ -24,11 +23,7 @@ impl Part for Precision {
         &ABOUT
     }
 
-    fn draft<'r>(
-        &self,
-        _: &'r Bench,
-        results: &'r Results,
-    ) -> Result<Option<Draft<'r>>, ReportError> {
+    fn draft<'r>(&self, _: &'r Bench, results: &'r Results) -> Drafted<'r> {
         let precision = results.required(&study::Precision, "the report")?;
         Ok(Some(Draft {
             tables: section::tables(precision),

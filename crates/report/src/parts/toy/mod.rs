@@ -5,8 +5,7 @@
 pub mod section;
 pub mod steady_table;
 
-use super::{About, Draft, Part};
-use crate::error::ReportError;
+use super::{About, Draft, Drafted, Part};
 use crate::results::Results;
 use crate::study;
 use checks::equations::Bench;
@@ -27,11 +26,7 @@ impl Part for Toy {
     }
 
     /// `None` without the friction studies too, whose subsection it is.
-    fn draft<'r>(
-        &self,
-        _: &'r Bench,
-        results: &'r Results,
-    ) -> Result<Option<Draft<'r>>, ReportError> {
+    fn draft<'r>(&self, _: &'r Bench, results: &'r Results) -> Drafted<'r> {
         let (Some(toy), Some(_)) = (results.get(&study::Toy), results.get(&study::Friction)) else {
             return Ok(None);
         };
