@@ -68,21 +68,27 @@ fn no_verdict_holds_on_a_premise_that_fails() {
             }
         }
     }
-    // Coincidence-eq54 fails on its own (0.168 rad is not within 5 % of 0.2) and names its
-    // failing premise too.
-    assert_eq!(verdict("coincidence-eq54"), Some(Verdict::Fails));
-    assert!(walked >= 9, "only {walked} premises walked");
+    assert!(walked >= 8, "only {walked} premises walked");
     assert!(wrong.is_empty(), "{wrong:#?}");
-    // The examples that motivated the rule.
+    // The examples that motivated the rule: eqs 80-81 rest on a premise that fails under every
+    // placement of eq 75's torque; eqs 57-58 and the coincidence rest on b ~ alpha0 a, which
+    // holds or fails with the point where it is evaluated, and so depend on that choice.
+    for n in ["eq 80", "eq 81"] {
+        assert_eq!(verdict(n), Some(Verdict::PremiseFails), "{n}");
+    }
     for n in [
         "eq 57",
         "eq 58",
-        "eq 80",
-        "eq 81",
         "coincidence-eq58",
         "summary-nutation-10-15-deg",
     ] {
-        assert_eq!(verdict(n), Some(Verdict::PremiseFails), "{n}");
+        assert_eq!(
+            verdict(n),
+            Some(Verdict::DependsOn {
+                choice: "the point of evaluation"
+            }),
+            "{n}"
+        );
     }
 }
 
@@ -104,8 +110,16 @@ fn a_selection_runs_the_premises_its_subjects_rest_on() {
         let checked = run_checks(&bench, &selection, 2, &|_, _| {}).expect("the checks run");
         assert_eq!(checked.len(), 1, "only {shown} is shown");
         let f = checked[0].finding.as_ref().expect("it runs");
-        assert_eq!(f.verdict, Verdict::PremiseFails, "{shown}");
+        assert!(
+            matches!(f.verdict, Verdict::PremiseFails | Verdict::DependsOn { .. }),
+            "{shown}: {}",
+            f.verdict
+        );
         assert!(!f.premises_failing.is_empty(), "{shown}");
+        assert!(
+            f.robustness.len() >= 2,
+            "{shown} inherits its premise's readings"
+        );
     }
 }
 

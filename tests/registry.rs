@@ -144,3 +144,74 @@ fn a_reversed_inequality_fails_and_says_why() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// Every outcome of `check --json` that does not establish what it checks (any verdict but
+/// holds, holds approximately and definition) carries the verdicts under at least two readings
+/// of the choices it rests on and says whether it is robust: robust exactly when no reading's
+/// verdict is of another kind than the verdict as read (the first entry), and a verdict that
+/// depends on a choice names the choice of a reading that changes it. The set is the output's,
+/// not a list.
+#[test]
+fn every_verdict_but_a_pass_says_how_it_fares_under_the_papers_open_choices() {
+    let (ok, out, err) = crate::common::cli_in(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")),
+        &["check", "--json"],
+    );
+    assert!(ok, "check --json: {err}");
+    let doc: serde_json::Value = serde_json::from_str(&out).expect("JSON");
+    let kind = |v: &str| match v {
+        "holds" | "holds_approximately" | "definition" | "estimate" => "passes",
+        "premise_fails" => "premise",
+        _ => "fails",
+    };
+    let mut seen = 0;
+    let mut depends = 0;
+    for c in doc["checks"].as_array().expect("checks") {
+        let outcome = &c["outcome"];
+        let Some(verdict) = outcome["verdict"].as_str() else {
+            continue;
+        };
+        if matches!(verdict, "holds" | "holds_approximately" | "definition") {
+            continue;
+        }
+        let name = &c["name"];
+        let readings = outcome["robustness"]
+            .as_array()
+            .unwrap_or_else(|| panic!("{name} ({verdict}) has no robustness"));
+        assert!(readings.len() >= 2, "{name}: {readings:?}");
+        let robust = outcome["robust"]
+            .as_bool()
+            .unwrap_or_else(|| panic!("{name} does not say whether it is robust"));
+        let as_read = readings[0]["verdict"].as_str().expect("a verdict");
+        let changed: Vec<&serde_json::Value> = readings
+            .iter()
+            .filter(|a| kind(a["verdict"].as_str().unwrap_or("")) != kind(as_read))
+            .collect();
+        assert_eq!(robust, changed.is_empty(), "{name}: {readings:?}");
+        assert_eq!(robust, verdict != "depends", "{name}");
+        if verdict == "depends" {
+            depends += 1;
+            assert_eq!(
+                outcome["depends_on"], changed[0]["choice"],
+                "{name} names the choice that changes it"
+            );
+        } else {
+            assert_eq!(kind(verdict), kind(as_read), "{name}");
+        }
+        for a in readings {
+            assert!(
+                a["choice"].as_str().is_some_and(|s| !s.is_empty())
+                    && a["alternative"].as_str().is_some_and(|s| !s.is_empty())
+                    && a["reference"].as_f64().is_some_and(f64::is_finite),
+                "{name}: {a}"
+            );
+        }
+        seen += 1;
+    }
+    assert!(seen > 0, "no outcome other than a pass");
+    let counted: u64 = ["equations", "claims"]
+        .iter()
+        .map(|g| doc["summary"][g]["depends"].as_u64().expect("a count"))
+        .sum();
+    assert_eq!(counted, depends, "the summary counts the depends apart");
+}

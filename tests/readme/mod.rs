@@ -56,6 +56,7 @@ fn the_readmes_verdict_counts_are_the_checks() {
             " hold only under a premise",
         ),
         (eqs, "equations", "fails", " fail**"),
+        (eqs, "equations", "depends", " depend on a choice"),
         (claims, "claims", "holds", " hold,"),
         (
             claims,
@@ -127,6 +128,11 @@ fn the_readmes_verdict_counts_are_the_checks() {
         equations_in_parentheses_after(eqs, " hold only under a premise"),
         equations_with("premise_fails"),
         "README's equations under a failing premise against check --json's"
+    );
+    assert_eq!(
+        equations_in_parentheses_after(eqs, " depend on a choice"),
+        equations_with("depends"),
+        "README's equations that depend on a choice against check --json's"
     );
 }
 

@@ -37,8 +37,14 @@ fn the_readmes_toy_numbers_are_the_toy_studys() {
     let (thin, toy) = fall.fell_to_deg;
     let toy = format!("{:.1}", toy.expect("the toy falls"));
     let thin = format!("{:.1}", thin.expect("the thin disk falls"));
-    assert_eq!(number_after(text, "the toy falls to "), Some(toy.as_str()));
-    assert_eq!(number_after(text, "the thin disk to "), Some(thin.as_str()));
+    assert_eq!(
+        number_after(text, "the first dip of the nutation reaches "),
+        Some(toy.as_str())
+    );
+    assert_eq!(
+        number_after(text, "° for the toy and "),
+        Some(thin.as_str())
+    );
     let (lo, hi) = studies::toy_steady::compute()
         .expect("the toy's steady motions")
         .no_spin_in_place_deg;

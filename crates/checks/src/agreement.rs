@@ -61,10 +61,77 @@ pub(crate) fn attach_premises(bench: &Bench, checked: &mut [Checked]) {
             if failing.is_empty() || f.premises_failing == failing {
                 continue;
             }
-            if f.verdict.passes() {
+            if f.verdict.passes() && f.verdict != Verdict::PremiseFails {
+                f.verdict_alone = Some(f.verdict);
                 f.verdict = Verdict::PremiseFails;
             }
             f.premises_failing = failing;
+            changed = true;
+        }
+        if !changed {
+            break;
+        }
+    }
+}
+
+/// A verdict that rests on a failing premise inherits that premise's alternatives: under each
+/// reading of each failing premise (one premise's choice at a time, the others as read), it
+/// holds as its own check found when that premise then passes and no other failing premise
+/// fails under every reading, and rests on a failing premise otherwise. A premise that fails
+/// under every reading leaves it robust; one whose verdict depends on a choice makes it depend
+/// on the same choice. Run after every other verdict has its alternatives, and repeated to a
+/// fixed point, so a premise's premise counts.
+pub(crate) fn attach_inherited(checked: &mut [Checked]) {
+    use crate::finding::Verdict;
+    use crate::robustness::{Alternative, Outcome};
+    let fails = |v: Verdict| Outcome::of(v) != Outcome::Passes;
+    for _ in 0..checked.len() {
+        let premises: Vec<(String, Vec<Alternative>, bool)> = checked
+            .iter()
+            .filter_map(|c| {
+                let f = c.finding.as_ref().ok()?;
+                let always = if f.robustness.is_empty() {
+                    fails(f.verdict)
+                } else {
+                    f.robustness.iter().all(|a| fails(a.verdict))
+                };
+                Some((premise_name(&c.subject), f.robustness.clone(), always))
+            })
+            .collect();
+        let mut changed = false;
+        for c in checked.iter_mut() {
+            let Ok(f) = c.finding.as_mut() else { continue };
+            let Some(alone) = f.verdict_alone else {
+                continue;
+            };
+            let mut alternatives = Vec::new();
+            for p in &f.premises_failing {
+                let Some((_, readings, _)) = premises.iter().find(|(n, ..)| n == p) else {
+                    continue;
+                };
+                let others_fail = premises
+                    .iter()
+                    .any(|(n, _, always)| n != p && *always && f.premises_failing.contains(n));
+                for a in readings {
+                    let verdict = if fails(a.verdict) || others_fail {
+                        Verdict::PremiseFails
+                    } else {
+                        alone
+                    };
+                    alternatives.push(Alternative::new(
+                        a.choice,
+                        format!("premise {p}: {}", a.alternative),
+                        f.reference,
+                        verdict,
+                    ));
+                }
+            }
+            if alternatives == f.robustness {
+                continue;
+            }
+            f.robustness.clear();
+            f.verdict = Verdict::PremiseFails;
+            *f = f.clone().with_robustness(alternatives);
             changed = true;
         }
         if !changed {

@@ -12,8 +12,8 @@ pub use crate::checked::{Checked, Subject};
 use crate::equations;
 use crate::finding::Finding;
 use crate::harness::Bench;
+pub use crate::tally::Tally;
 use rayon::prelude::*;
-use serde::Serialize;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// Why a selection of checks could not be run.
@@ -251,6 +251,8 @@ pub fn run_checks(
     attach_causes(bench, &mut all);
     crate::agreement::attach_premises(bench, &mut all);
     crate::agreement::attach_restated(bench, &mut all);
+    crate::readings::attach(bench, &mut all);
+    crate::agreement::attach_inherited(&mut all);
     Ok(all
         .into_iter()
         .zip(&jobs)
@@ -445,105 +447,4 @@ pub fn equation_causes(checked: &[Checked]) -> std::collections::BTreeMap<u32, C
             _ => None,
         })
         .collect()
-}
-
-/// Counts of verdicts.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, schemars::JsonSchema)]
-#[schemars(rename = "Counts")]
-pub struct Tally {
-    /// Hold.
-    pub holds: usize,
-    /// Hold approximately, at the order they claim.
-    pub holds_approximately: usize,
-    /// Definitions consistent with the rest.
-    pub definitions: usize,
-    /// Order-of-magnitude estimates whose scaling holds and whose constant is within the
-    /// estimate's reading.
-    pub estimates: usize,
-    /// Would hold, but only under a premise that fails.
-    pub premise_fails: usize,
-    /// Fail.
-    pub fails: usize,
-    /// Claims that fail as the numbered equation they restate fails: one fact, counted at the
-    /// equation (their outcome's `restates` names it).
-    pub restated: usize,
-    /// Numbers wrong in the unit printed beside them and right in the unit the text means.
-    pub unit_misprints: usize,
-    /// Verdicts that change under a reasonable alternative to a choice the paper leaves open.
-    pub depends: usize,
-    /// Printed relations right up to a dropped factor with a dimension.
-    pub dimensional_slips: usize,
-    /// Could not run.
-    pub not_run: usize,
-}
-
-impl Tally {
-    /// How many were counted.
-    pub fn total(&self) -> usize {
-        self.holds
-            + self.holds_approximately
-            + self.definitions
-            + self.estimates
-            + self.premise_fails
-            + self.fails
-            + self.restated
-            + self.unit_misprints
-            + self.depends
-            + self.dimensional_slips
-            + self.not_run
-    }
-
-    /// The counts in words, every verdict named; restatements, unit misprints and those that
-    /// could not run only when there are some.
-    pub fn sentence(&self) -> String {
-        let mut s = format!(
-            "{} hold, {} hold approximately, {} definitions, {} estimates (scaling confirmed), {} \
-             hold only under a premise that fails, {} fail",
-            self.holds,
-            self.holds_approximately,
-            self.definitions,
-            self.estimates,
-            self.premise_fails,
-            self.fails,
-        );
-        for (n, what) in [
-            (
-                self.restated,
-                "fail as the equation they restate (counted there)",
-            ),
-            (self.unit_misprints, "unit misprints"),
-            (self.depends, "depend on a choice the paper leaves open"),
-            (self.dimensional_slips, "dimensional slips"),
-            (self.not_run, "could not run"),
-        ] {
-            if n > 0 {
-                s.push_str(&format!(", {n} {what}"));
-            }
-        }
-        s
-    }
-
-    /// Counts the outcomes.
-    pub fn of<'a>(checked: impl IntoIterator<Item = &'a Checked>) -> Self {
-        use crate::finding::Verdict;
-        let mut t = Tally::default();
-        for c in checked {
-            match &c.finding {
-                Err(_) => t.not_run += 1,
-                Ok(f) => match f.verdict {
-                    Verdict::Holds => t.holds += 1,
-                    Verdict::HoldsApproximately { .. } => t.holds_approximately += 1,
-                    Verdict::Definition => t.definitions += 1,
-                    Verdict::Estimate { .. } => t.estimates += 1,
-                    Verdict::PremiseFails => t.premise_fails += 1,
-                    Verdict::Fails => t.fails += 1,
-                    Verdict::Restates { .. } => t.restated += 1,
-                    Verdict::UnitMisprint => t.unit_misprints += 1,
-                    Verdict::DependsOn { .. } => t.depends += 1,
-                    Verdict::DimensionalSlip => t.dimensional_slips += 1,
-                },
-            }
-        }
-        t
-    }
 }

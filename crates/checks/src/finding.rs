@@ -314,6 +314,10 @@ pub struct Finding {
     /// this finding was made under first ([`crate::robustness`]); empty where the check tries
     /// none.
     pub robustness: Vec<crate::robustness::Alternative>,
+    /// The verdict the check gave on its own, before the premises it rests on were read: set
+    /// when a failing premise made it [`Verdict::PremiseFails`].
+    #[serde(skip)]
+    pub verdict_alone: Option<Verdict>,
 }
 
 /// One comparison in the paper's terms: a named quantity, the value the paper prints (or
@@ -416,6 +420,7 @@ impl Finding {
             headline: None,
             premises_failing: Vec::new(),
             robustness: Vec::new(),
+            verdict_alone: None,
         }
     }
 
@@ -470,6 +475,7 @@ impl Finding {
             headline: None,
             premises_failing: Vec::new(),
             robustness: Vec::new(),
+            verdict_alone: None,
         }
     }
 

@@ -2,7 +2,7 @@
 //! does not use it (the registry [`equations`], run by [`check`]; the [`harness`] they share),
 //! the verdicts ([`finding`]), root causes against inherited failures ([`cause`]), verdicts that
 //! agree with their premises (`agreement`), the verdicts under the choices the paper leaves
-//! open ([`robustness`]), the mutation suite ([`mutation`]), the corrected forms ([`corrections`]) and the selection of what to check ([`select`]).
+//! open ([`robustness`], under a looser reading of every rule: `readings`), the mutation suite ([`mutation`]), the corrected forms ([`corrections`]) and the selection of what to check ([`select`]).
 
 mod agreement;
 pub mod cause;
@@ -14,5 +14,7 @@ pub mod equations;
 pub mod finding;
 pub mod harness;
 pub mod mutation;
+mod readings;
 pub mod robustness;
 pub mod select;
+mod tally;

@@ -38,20 +38,49 @@ impl Alternative {
     }
 }
 
-impl Finding {
-    /// Attaches the verdicts under the alternatives (the reading this finding was made under
-    /// first, then the others). When an alternative's verdict passes where this finding's does
-    /// not, or the reverse, the verdict becomes [`Verdict::DependsOn`] that alternative's
-    /// choice; the verdict the finding was made under stays in the first entry.
-    pub fn with_robustness(mut self, alternatives: Vec<Alternative>) -> Self {
-        let differs = alternatives
-            .iter()
-            .find(|a| a.verdict.passes() != self.verdict.passes())
-            .map(|a| a.choice);
-        if let Some(choice) = differs {
-            self.verdict = Verdict::DependsOn { choice };
+/// The three kinds of outcome a verdict can have, for telling whether an alternative changes
+/// it: it establishes what it checks (holds, holds approximately, a definition, an estimate),
+/// it would but rests on a premise that fails, or it fails (as printed, as a restatement, as a
+/// unit misprint or a dimensional slip).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Outcome {
+    /// Establishes what it checks.
+    Passes,
+    /// Would pass, but rests on a premise that fails.
+    PremiseFails,
+    /// Fails.
+    Fails,
+}
+
+impl Outcome {
+    /// The kind of `v`; a verdict that depends on a choice counts as failing (it does not
+    /// establish what it checks).
+    pub fn of(v: Verdict) -> Self {
+        match v {
+            Verdict::PremiseFails => Outcome::PremiseFails,
+            v if v.passes() => Outcome::Passes,
+            _ => Outcome::Fails,
         }
-        self.robustness = alternatives;
+    }
+}
+
+impl Finding {
+    /// Adds the verdicts under `alternatives` to those already tried (the reading this finding
+    /// was made under first, when there were none). When an alternative's verdict is of another
+    /// kind ([`Outcome`]) than the verdict as read, the verdict becomes [`Verdict::DependsOn`]
+    /// the first such alternative's choice; the verdict as read stays in the first entry.
+    pub fn with_robustness(mut self, alternatives: Vec<Alternative>) -> Self {
+        let read = self.as_read();
+        self.robustness.extend(alternatives);
+        let differs = self
+            .robustness
+            .iter()
+            .find(|a| Outcome::of(a.verdict) != Outcome::of(read))
+            .map(|a| a.choice);
+        self.verdict = match differs {
+            Some(choice) => Verdict::DependsOn { choice },
+            None => read,
+        };
         self
     }
 
@@ -118,5 +147,32 @@ mod tests {
         assert_eq!(f.verdict, Verdict::Fails);
         assert_eq!(f.robust(), Some(true));
         assert_eq!(failing().robust(), None);
+    }
+
+    #[test]
+    fn a_verdict_on_a_failing_premise_that_holds_under_an_alternative_depends_on_it() {
+        let mut f = failing();
+        f.verdict = Verdict::PremiseFails;
+        let f = f.with_robustness(vec![
+            Alternative::new("the point of evaluation", "a", 1.0, Verdict::PremiseFails),
+            Alternative::new("the point of evaluation", "b", 1.0, Verdict::Holds),
+        ]);
+        assert_eq!(
+            f.verdict,
+            Verdict::DependsOn {
+                choice: "the point of evaluation"
+            }
+        );
+        assert_eq!(f.as_read(), Verdict::PremiseFails);
+        // Added readings keep the first as the verdict as read.
+        let f = f.with_robustness(vec![Alternative::new(
+            "a tolerance",
+            "c",
+            1.0,
+            Verdict::PremiseFails,
+        )]);
+        assert_eq!(f.as_read(), Verdict::PremiseFails);
+        assert_eq!(f.robustness.len(), 3);
+        assert_eq!(f.robust(), Some(false));
     }
 }

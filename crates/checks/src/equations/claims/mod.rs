@@ -70,9 +70,9 @@ use motion::{
     negative_b_friction_angle, no_steady_motion_beyond_vertical, slip_when_b_large,
 };
 use oscillation::{
-    b_of_order_a_alpha, bracket_negative_angle, coincidence_eq54, coincidence_eq58,
-    negative_b_always_stable, positive_b_unstable_large_tilt, ratio_hoop_one,
-    ratio_uniform_disk_077, rattling_needs_more_friction, summary_nutation_10_15_deg,
+    b_of_order_a_alpha, bracket_negative_angle, coincidence_eq58, negative_b_always_stable,
+    positive_b_unstable_large_tilt, ratio_hoop_one, ratio_uniform_disk_077,
+    rattling_needs_more_friction, summary_nutation_10_15_deg,
 };
 use rising::rising_needs_slip;
 use spin_down::{
@@ -170,10 +170,6 @@ pub const CLAIMS: &[Claim] = &[
     Claim {
         id: "coincidence-eq58",
         check: coincidence_eq58,
-    },
-    Claim {
-        id: "coincidence-eq54",
-        check: coincidence_eq54,
     },
     Claim {
         id: "summary-nutation-10-15-deg",

@@ -106,6 +106,7 @@ pub fn eq73(b: &Bench) -> Finding {
     let mut headline = None;
     let mut errors = vec![0.0f64; SMALL_ALPHAS.len()];
     let mut worst_form = vec![0usize; SMALL_ALPHAS.len()];
+    let mut worst_k = vec![0.0f64; SMALL_ALPHAS.len()];
     for &k in &[0.25, 0.5] {
         let d = toy_sized(k);
         for (i, &alpha) in SMALL_ALPHAS.iter().enumerate() {
@@ -136,6 +137,7 @@ pub fn eq73(b: &Bench) -> Finding {
                 if e > errors[i] || e.is_nan() {
                     errors[i] = if e.is_nan() { f64::INFINITY } else { e };
                     worst_form[i] = form + 1;
+                    worst_k[i] = k;
                 }
             }
             if k == 0.25 && i == SMALL_ALPHAS.len() - 1 {
@@ -171,7 +173,14 @@ pub fn eq73(b: &Bench) -> Finding {
         &errors,
         b.paper.equation(73).entry.claimed_order.unwrap_or(2.0),
     );
-    naming_the_worst_side(f, &worst_form, headline)
+    let mut f = naming_the_worst_side(f, &worst_form, headline);
+    f.at = format!(
+        "{}; each error is the larger of k = 1/4 and k = 1/2 at its alpha, at the smallest alpha \
+         that of k = {} (2 + k in units of m a g |alpha_dot|)",
+        f.at,
+        worst_k.last().copied().unwrap_or(f64::NAN)
+    );
+    f
 }
 
 /// `f` with the printed form (side of the chain) that is worst at the smallest tilt named in
