@@ -21,11 +21,19 @@ macro_rules! println {
 
 pub mod cli;
 
+/// The program's version and the commit it is built from (`build.rs`).
+pub const VERSION: &str = concat!(
+    env!("CARGO_PKG_VERSION"),
+    " (commit ",
+    env!("ROLLING_DISK_COMMIT"),
+    ")"
+);
+
 /// The command line.
 #[derive(Parser)]
 #[command(
     name = "rolling-disk",
-    version,
+    version = VERSION,
     about = "Reproduces and checks McDonald & McDonald (2001), The Rolling Motion of a Disk on a Horizontal Plane"
 )]
 pub struct Cli {
@@ -35,6 +43,10 @@ pub struct Cli {
     /// in seconds (default 600): work that takes longer ends and says so instead of running on.
     #[arg(long, global = true, value_name = "SECONDS")]
     max_seconds: Option<f64>,
+    /// Prints only what a command is for (its results, its data), not what it wrote where nor
+    /// its progress; errors are still said.
+    #[arg(long, short, global = true)]
+    quiet: bool,
 }
 
 /// The commands.
@@ -65,6 +77,10 @@ pub enum Command {
     /// by scripts/peer_run.sh): write its input for a scene, compare its output with this tool.
     #[command(subcommand)]
     Peer(cli::peer::Command),
+    /// Prints the completion script of a shell (bash, zsh, fish, elvish, powershell).
+    Completions(cli::completions::Args),
+    /// Prints the manual page (roff), of the program or of one command.
+    Manual(cli::manual::Args),
 }
 
 /// Parses `args` (the program's name first) as the command line.
@@ -79,6 +95,7 @@ where
 /// Runs the command line of this process.
 pub fn main() -> ExitCode {
     let cli = Cli::parse();
+    cli::stdout::set_quiet(cli.quiet);
     if let Some(seconds) = cli.max_seconds {
         if let Err(message) = physics::budget::set_wall_seconds(seconds) {
             eprintln!("error: {message}");
@@ -100,6 +117,8 @@ pub fn main() -> ExitCode {
         Command::Precision(a) => a.run(),
         Command::Experiment(c) => c.run(),
         Command::Peer(c) => c.run(),
+        Command::Completions(a) => a.run(),
+        Command::Manual(a) => a.run(),
     };
     cli::stdout::flush();
     // Work cut short by the budget is said as that, with the stage and the budget that does:

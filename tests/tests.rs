@@ -8,6 +8,7 @@ mod author_forms;
 mod cli;
 mod commands;
 mod common;
+mod conventions;
 mod corrections;
 mod coverage_record;
 mod experiment;

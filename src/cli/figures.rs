@@ -21,13 +21,33 @@ pub struct Args {
     /// File format.
     #[arg(long, value_enum, default_value = "svg")]
     pub format: FigureFormat,
+    /// Lists the figures' names, one a line, and draws nothing.
+    #[arg(long, conflicts_with = "only")]
+    pub list: bool,
 }
 
 impl Args {
     /// Runs the command.
     pub fn run(self) -> anyhow::Result<()> {
+        if self.list {
+            for name in ::report::figures::names() {
+                println!("{name}");
+            }
+            return Ok(());
+        }
         figures(self.only.as_deref(), &self.out, self.format)
     }
+}
+
+/// The name of `names` nearest to `name` in edit distance, when it is near enough to be what
+/// was meant (at most a third of its letters, and at least two, differ).
+pub(crate) fn nearest<'n>(name: &str, names: &[&'n str]) -> Option<&'n str> {
+    names
+        .iter()
+        .map(|n| (strsim::levenshtein(&name.to_lowercase(), &n.to_lowercase()), *n))
+        .min()
+        .filter(|(d, _)| *d <= (name.len() / 3).max(2))
+        .map(|(_, n)| n)
 }
 
 fn figures(only: Option<&str>, out: &Path, format: FigureFormat) -> anyhow::Result<()> {
@@ -51,7 +71,8 @@ fn figures(only: Option<&str>, out: &Path, format: FigureFormat) -> anyhow::Resu
     for w in &wanted {
         if !names.contains(w) {
             return Err(anyhow::anyhow!(
-                "--only: no figure is called {w}; the figures are: {}",
+                "--only: no figure is called {w}{}; the figures are: {} (`figures --list`)",
+                nearest(w, &names).map_or(String::new(), |n| format!(" (did you mean {n}?)")),
                 names.join(", ")
             ));
         }
@@ -60,7 +81,9 @@ fn figures(only: Option<&str>, out: &Path, format: FigureFormat) -> anyhow::Resu
     let set = SetWriter::begin(out)?;
     // Only the studies the wanted figures are drawn from, each once.
     let config = RunConfig::figures(::checks::equations::Bench::default(), &wanted)?;
-    let results = compute(&config, &|s: &str| eprintln!("figures: {s}"))?;
+    let results = compute(&config, &|s: &str| {
+        crate::cli::stdout::progress(&format!("figures: {s}"))
+    })?;
     crate::cli::within_budget()?;
     let all = ::report::figures::some(&wanted, &results)?;
     let mut written = Vec::new();
@@ -85,7 +108,7 @@ fn figures(only: Option<&str>, out: &Path, format: FigureFormat) -> anyhow::Resu
     let shown: Vec<PathBuf> = written.iter().map(|p| set.final_path(p)).collect();
     set.commit(&written)?;
     for path in shown {
-        println!("wrote {}", path.display());
+        crate::cli::stdout::note(format_args!("wrote {}", path.display()));
     }
     Ok(())
 }

@@ -5,8 +5,10 @@
 
 pub mod check;
 pub(crate) mod choice;
+pub mod completions;
 pub mod experiment;
 pub mod figures;
+pub mod manual;
 pub mod mutants;
 pub mod paper_input;
 pub mod peer;

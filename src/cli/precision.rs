@@ -56,9 +56,9 @@ fn precision(name: &str, json: bool, quick: bool, target: Option<f64>) -> anyhow
     } else {
         precision::StudyOptions::default()
     };
-    eprintln!("measuring {}, progress below...", scene.name);
+    crate::cli::stdout::progress(&format!("measuring {}, progress below...", scene.name));
     let progress = |done: usize, total: usize, what: &str| {
-        eprintln!("  [{done:>2}/{total}] {what}");
+        crate::cli::stdout::progress(&format!("  [{done:>2}/{total}] {what}"));
     };
     let study = precision::study_with_progress(&scene, &opts, &progress)
         .map_err(|e| anyhow::anyhow!("{}: {e}", scene.source))?;

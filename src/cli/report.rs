@@ -37,7 +37,7 @@ fn report(format: ReportFormat, out: &Path, input: &PaperInput) -> anyhow::Resul
     // Check --out and make room beside it before computing anything.
     let set = SetWriter::begin(out)?;
     let bench = input.bench()?;
-    let status = |s: &str| eprintln!("report: {s}");
+    let status = |s: &str| crate::cli::stdout::progress(&format!("report: {s}"));
     let (report, figures) = build(&bench, &status)?;
     crate::cli::within_budget()?;
     let formats = match format {
@@ -72,17 +72,17 @@ fn report(format: ReportFormat, out: &Path, input: &PaperInput) -> anyhow::Resul
         .iter()
         .filter(|p| p.extension().is_some_and(|e| e != "png"))
     {
-        println!("wrote {}", p.display());
+        crate::cli::stdout::note(format_args!("wrote {}", p.display()));
     }
     let pngs = written
         .iter()
         .filter(|p| p.extension().is_some_and(|e| e == "png"))
         .count();
     if pngs > 0 {
-        println!(
+        crate::cli::stdout::note(format_args!(
             "wrote {pngs} figures under {}",
             out.join("figures").display()
-        );
+        ));
     }
     Ok(())
 }

@@ -4,6 +4,37 @@
 //! here, so that every line of every command is covered by this one place.
 
 use std::io::Write;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+/// Whether `--quiet` was given: the notes of [`note`] are then not printed.
+static QUIET: AtomicBool = AtomicBool::new(false);
+
+/// Sets `--quiet` for the whole process.
+pub(crate) fn set_quiet(quiet: bool) {
+    QUIET.store(quiet, Ordering::Relaxed);
+}
+
+/// Whether `--quiet` was given.
+pub(crate) fn quiet() -> bool {
+    QUIET.load(Ordering::Relaxed)
+}
+
+/// Writes a line of progress on standard error, only where a person watches it (standard error
+/// is a terminal) and `--quiet` was not given: a log or a pipe gets the results alone.
+pub(crate) fn progress(line: &str) {
+    use std::io::IsTerminal;
+    if !quiet() && std::io::stderr().is_terminal() {
+        eprintln!("{line}");
+    }
+}
+
+/// Writes a note about what the command did (a file it wrote) as a line on standard output,
+/// unless `--quiet` was given.
+pub(crate) fn note(args: std::fmt::Arguments<'_>) {
+    if !quiet() {
+        write(format_args!("{args}\n"));
+    }
+}
 
 /// The exit status of a program whose reader closed the pipe: 128 + SIGPIPE (13).
 pub(crate) const CLOSED_PIPE_STATUS: i32 = 141;

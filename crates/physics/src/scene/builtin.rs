@@ -57,6 +57,17 @@ pub const BUILTIN: &[(&str, &str)] = &[
     ),
 ];
 
+/// The built-in scene whose name is nearest to `name` in edit distance, when it is near enough to
+/// be what was meant (at most a third of its letters, and at least two, differ).
+pub fn nearest(name: &str) -> Option<&'static str> {
+    BUILTIN
+        .iter()
+        .map(|(n, _)| (strsim::levenshtein(name, n), *n))
+        .min()
+        .filter(|(d, _)| *d <= (name.len() / 3).max(2))
+        .map(|(_, n)| n)
+}
+
 /// The source of the built-in scene `name`.
 pub fn source(name: &str) -> Option<&'static str> {
     BUILTIN.iter().find(|(n, _)| *n == name).map(|(_, s)| *s)

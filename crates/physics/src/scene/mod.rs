@@ -157,13 +157,17 @@ impl Scene {
         let path = Path::new(name_or_path);
         let src = input::read_text(path, input::MAX_SCENE_BYTES).map_err(|e| {
             let (line, hint) = match &e {
-                input::InputError::NotText { line, .. } => (Some(*line), ""),
+                input::InputError::NotText { line, .. } => (Some(*line), String::new()),
                 input::InputError::Open { .. } => (
                     None,
-                    "; give a path to a YAML file or the name of a built-in scene \
-                     (`rolling-disk scenes` lists them)",
+                    format!(
+                        "; {}give a path to a YAML file or the name of a built-in scene \
+                         (`rolling-disk scenes` lists them)",
+                        builtin::nearest(name_or_path)
+                            .map_or(String::new(), |n| format!("did you mean {n}? ")),
+                    ),
                 ),
-                _ => (None, ""),
+                _ => (None, String::new()),
             };
             SceneError {
                 file: name_or_path.to_string(),
