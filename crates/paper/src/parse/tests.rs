@@ -171,6 +171,16 @@ fn every_hint_applied_reads() {
             r"x = \left| \mathbf{v} \right|^2",
         ),
         (r"x = a^23", "with braces", r"x = a^{23}"),
+        (
+            r"x = \frac{d}{dt} \dot\Omega",
+            r"\frac{d^2 X}{dt^2}",
+            r"x = \frac{d^2 \Omega}{dt^2}",
+        ),
+        (
+            r"x = \frac{d}{dt} (a \Omega)",
+            r"\frac{d X}{dt}",
+            r"x = a \frac{d \Omega}{dt}",
+        ),
         (r"x = d\Omega^2/dt", "(dX/dt)^2", r"x = (d\Omega/dt)^2"),
         (
             r"\begin{array}{l} x = a \\ y = b \end{array}",
