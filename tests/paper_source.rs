@@ -111,7 +111,7 @@ fn a_label_missing_or_an_equation_without_an_entry_is_named_with_its_line() {
 }
 
 #[test]
-fn a_fifo_or_a_symlink_to_one_is_refused_at_once() {
+fn a_fifo_a_device_or_a_symlink_to_either_is_refused_at_once() {
     let dir = scratch("fifo");
     let fifo = dir.join("paper.tex");
     let made = Command::new("mkfifo").arg(&fifo).status();
@@ -120,9 +120,13 @@ fn a_fifo_or_a_symlink_to_one_is_refused_at_once() {
         return;
     }
     let link = dir.join("link.tex");
+    let device_link = dir.join("device.tex");
     #[cfg(unix)]
-    std::os::unix::fs::symlink(&fifo, &link).unwrap();
-    for path in [&fifo, &link, &PathBuf::from("/dev/zero")] {
+    {
+        std::os::unix::fs::symlink(&fifo, &link).unwrap();
+        std::os::unix::fs::symlink("/dev/zero", &device_link).unwrap();
+    }
+    for path in [&fifo, &link, &PathBuf::from("/dev/zero"), &device_link] {
         let start = Instant::now();
         let mut child = Command::new(env!("CARGO_BIN_EXE_rolling-disk"))
             .args(["check", "--only", "1", "--paper"])
@@ -147,4 +151,139 @@ fn a_fifo_or_a_symlink_to_one_is_refused_at_once() {
             path.display()
         );
     }
+}
+
+/// The command as a user runs it: `check --paper <source> --json` prints the built-in
+/// `check --json`: the same checks, value for value, and the rest of the document the same but
+/// for the paper it names and the command line.
+#[test]
+fn check_json_on_the_source_is_the_built_in_one() {
+    let Some(src) = source() else { return };
+    let run = |paper: Option<&PathBuf>| {
+        let mut c = Command::new(env!("CARGO_BIN_EXE_rolling-disk"));
+        c.args(["check", "--json"]);
+        if let Some(p) = paper {
+            c.arg("--paper").arg(p);
+        }
+        let out = c.output().unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let mut doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        let checks = doc["checks"].take();
+        (checks, doc)
+    };
+    let (from_source, source_doc) = run(Some(&src));
+    let (built_in, built_in_doc) = run(None);
+    assert_eq!(
+        from_source.as_array().map(Vec::len),
+        Some(built_in.as_array().unwrap().len())
+    );
+    assert_eq!(from_source, built_in);
+    // The rest of the document differs only where it names the paper read and the command.
+    let differing: Vec<&String> = source_doc
+        .as_object()
+        .unwrap()
+        .iter()
+        .filter(|(k, v)| built_in_doc.get(k.as_str()) != Some(v))
+        .map(|(k, _)| k)
+        .collect();
+    assert_eq!(differing, ["paper", "settings"]);
+    let mut settings = source_doc["settings"].clone();
+    settings["command"] = built_in_doc["settings"]["command"].clone();
+    assert_eq!(settings, built_in_doc["settings"]);
+    assert_eq!(source_doc["paper"]["title"], built_in_doc["paper"]["title"]);
+}
+
+/// A symbol with no value in its check (eq 76 written with $\Omega^{\gamma}$; $\gamma$ is a
+/// symbol of sec. 7, which eq 76's check does not bind) is an error naming the symbol, with its
+/// equation and column, in the text and in `--json`: never a verdict, never NaN.
+#[test]
+fn a_symbol_without_a_value_is_named_never_a_verdict() {
+    let Some(file) = edited(
+        "gamma",
+        r"\dot\alpha = - {2 \epsilon \over 5} \Omega^\beta",
+        r"\dot\alpha = - {2 \epsilon \over 5} \Omega^{\gamma}",
+    ) else {
+        return;
+    };
+    for json in [false, true] {
+        let mut c = Command::new(env!("CARGO_BIN_EXE_rolling-disk"));
+        c.args(["check", "--only", "76", "--paper"]).arg(&file);
+        if json {
+            c.arg("--json");
+        }
+        let out = c.output().unwrap();
+        let (stdout, stderr) = (
+            String::from_utf8_lossy(&out.stdout),
+            String::from_utf8_lossy(&out.stderr),
+        );
+        assert_eq!(out.status.code(), Some(1), "{stdout}{stderr}");
+        let all = format!("{stdout}{stderr}");
+        assert!(
+            all.contains("with no value in this check: gamma at column")
+                && all.contains("of eq 76's latex (quantity gamma"),
+            "{all}"
+        );
+        assert!(!all.to_lowercase().contains("nan"), "{all}");
+        if json {
+            let doc: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+            let eq76 = doc["checks"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .find(|c| c["name"] == "eq 76")
+                .unwrap_or_else(|| panic!("{stdout}"));
+            let text = eq76.to_string();
+            assert!(eq76["cause"].is_null(), "{text}");
+            assert!(
+                !text.contains("\"fails\"") && !text.contains("\"holds"),
+                "{text}"
+            );
+            assert!(text.contains("gamma at column"), "{text}");
+        }
+    }
+}
+
+/// Eq 54 with a symbol its readers do not bind (the claims of sec. 7 draw the band of unstable
+/// $b$ from its right side): every check runs to its end, no panic, and the claims that draw on
+/// eq 54 could not evaluate it, naming the symbol; none fails.
+#[test]
+fn eq_54_that_cannot_be_evaluated_is_named_by_the_claims_drawn_from_it() {
+    let Some(file) = edited(
+        "eq54",
+        r" 3 k \cos^2\alpha_0 + \sin^2\alpha_0",
+        r" 3 k \cos^2\alpha_0 + \sin^2\alpha_0 + \gamma \alpha_0",
+    ) else {
+        return;
+    };
+    let p = Paper::from_path(&file).unwrap_or_else(|e| panic!("{e}"));
+    let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
+    let checked = run_checks(
+        &Bench::with_paper(&p),
+        &Selection::default(),
+        threads,
+        &|_, _| {},
+    )
+    .unwrap();
+    let doc = serde_json::to_value(&checked).unwrap();
+    let mut named = 0;
+    for c in doc.as_array().unwrap() {
+        let text = c.to_string();
+        if text.contains("\"fails\"") {
+            assert!(
+                c["finding"]["Ok"]["claimed"]
+                    .as_f64()
+                    .is_some_and(f64::is_finite),
+                "a failure with a claim that is not a number: {text}"
+            );
+        }
+        if text.contains("gamma at column") && text.contains("eq 54's latex") {
+            named += 1;
+        }
+    }
+    // Eq 54's own check, and the two claims drawn from its right side.
+    assert!(named >= 3, "{named}");
 }

@@ -296,14 +296,18 @@ fn run_jobs(
                 let (subject, section, check, derivation, _) = job.clone();
                 let stage = format!("the check of {}", subject.name());
                 let checked = physics::budget::in_stage(&stage, || {
-                    let finding = match (missing_input(bench, &subject), &subject) {
-                        (Some(why), _) => Err(why),
-                        (None, Subject::Claim { id }) => Ok(
-                            equations::claims::with_printed_headline(bench, id, check(bench)),
-                        ),
-                        (None, _) => Ok(check(bench)),
-                    };
-                    let finding = finding.and_then(|f| evaluated(f, bench));
+                    let (finding, unvalued) = paper::unvalued::recording(|| {
+                        match (missing_input(bench, &subject), &subject) {
+                            (Some(why), _) => Err(why),
+                            (None, Subject::Claim { id }) => Ok(
+                                equations::claims::with_printed_headline(bench, id, check(bench)),
+                            ),
+                            (None, _) => Ok(check(bench)),
+                        }
+                    });
+                    let finding = finding
+                        .and_then(|f| evaluated(f, bench))
+                        .map_err(|why| naming_unvalued(why, &unvalued));
                     let dimensions = crate::dimensions::of(bench, &subject, finding.as_ref().ok());
                     let finding =
                         finding.map(|f| crate::dimensions::slip(&subject, f, &dimensions));
@@ -311,7 +315,10 @@ fn run_jobs(
                         subject,
                         section,
                         finding,
-                        derivation: derivation.map(|d| evaluated(d(bench), bench)),
+                        derivation: derivation.map(|d| {
+                            let (f, unvalued) = paper::unvalued::recording(|| d(bench));
+                            evaluated(f, bench).map_err(|why| naming_unvalued(why, &unvalued))
+                        }),
                         cause: None,
                         dimensions,
                     }
@@ -322,6 +329,19 @@ fn run_jobs(
             .collect()
     });
     Ok(all)
+}
+
+/// Why a check could not run, with the symbols it found without a value (each named with its
+/// equation and column, [`paper::unvalued`]): the cause, where the claim is not a number.
+fn naming_unvalued(why: String, unvalued: &[String]) -> String {
+    if unvalued.is_empty() {
+        return why;
+    }
+    format!(
+        "{why}; with no value in this check: {} (write the equation with the symbols its check \
+         binds)",
+        unvalued.join("; ")
+    )
 }
 
 /// A finding whose claimed value is not a number (NaN or infinite) gives no verdict: the claim

@@ -21,6 +21,7 @@ pub mod parse;
 pub mod printed;
 pub mod tex;
 mod tex_paper;
+pub mod unvalued;
 
 pub use catalogue::{ClaimEntry, EquationEntry, EstimateReading, Location, Rule, SymbolInfo};
 pub use correction::Correction;
@@ -237,13 +238,15 @@ impl Equation {
                 .get(s)
                 .ok_or_else(|| EvalError::Unbound(format!("{s} (not in any symbol table)")))?;
             b.get(&info.quantity).ok_or_else(|| {
-                EvalError::Unbound(format!(
+                let named = format!(
                     "{s} at column {} of eq {}'s latex (quantity {}, {})",
                     self.columns.get(s).copied().unwrap_or(0),
                     self.entry.number,
                     info.quantity,
                     info.means
-                ))
+                );
+                unvalued::note(named.clone());
+                EvalError::Unbound(named)
             })
         };
         eval::eval(e, &lookup)

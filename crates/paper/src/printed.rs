@@ -66,10 +66,15 @@ impl Paper {
             .into_iter()
             .next()
             .ok_or_else(|| EvalError::Unbound(format!("eq {n} prints no relation")))?;
-        match (eq.scalar(rel.rhs, bind), eq.scalar(rel.lhs, bind)) {
-            (Err(EvalError::Unbound(_)), Ok(left)) => Ok(left),
-            (right, _) => right,
-        }
+        // A side with a symbol the caller does not bind is a probe: what it found without a
+        // value is kept only when neither side gives the value.
+        crate::unvalued::probing(
+            || match (eq.scalar(rel.rhs, bind), eq.scalar(rel.lhs, bind)) {
+                (Err(EvalError::Unbound(_)), Ok(left)) => Ok(left),
+                (right, _) => right,
+            },
+            Result::is_err,
+        )
     }
 
     /// Eq 54's right side, $(k+1)\varpi^2/\Omega_0^2$, at tilt $\alpha_0$ as a quadratic in

@@ -15,7 +15,9 @@ pub fn term_scale(eq: &paper::Equation, e: &paper::Expr, bind: &paper::Bindings<
     match e {
         Expr::Bin(Op::Add | Op::Sub, a, b) => term_scale(eq, a, bind) + term_scale(eq, b, bind),
         Expr::Neg(a) => term_scale(eq, a, bind),
-        _ => match eq.eval(e, bind) {
+        // A term with a symbol this check does not bind only adds nothing to the scale: a probe,
+        // whose symbols without a value are not the check's (paper::unvalued).
+        _ => match paper::unvalued::probing(|| eq.eval(e, bind), |_| false) {
             Ok(Value::Scalar(x)) => x.abs(),
             Ok(Value::Vector(v)) => v.norm(),
             Ok(Value::Tensor(m)) => m.norm(),

@@ -29,6 +29,10 @@ pub(super) enum Tok {
     Amp,
     /// `\\`: the end of a row of an `eqnarray` or `align`.
     RowEnd,
+    /// `\begin{cases}`: the cases that follow are read as relations of their own.
+    CasesBegin,
+    /// `\end{cases}`.
+    CasesEnd,
     /// The words of `\text{...}` (or `\mbox`, `\textrm`) as written.
     Text(String),
     /// A number and its text as printed (`10`, `1.8`).
@@ -238,13 +242,22 @@ pub(super) fn lex(s: &str) -> Result<Vec<(Tok, usize)>, ParseError> {
                 if RAW.contains(&name.as_str()) {
                     let (text, next) = raw_group(&chars, i, col)?;
                     i = next;
+                    if (name == "begin" || name == "end") && text.trim() == "cases" {
+                        let t = if name == "begin" {
+                            Tok::CasesBegin
+                        } else {
+                            Tok::CasesEnd
+                        };
+                        out.push((t, col));
+                        continue;
+                    }
                     if (name == "begin" || name == "end") && !ALIGNING.contains(&text.trim()) {
                         return Err(ParseError {
                             column: col,
                             message: format!(
                                 "the environment {} is not read inside an equation: write each \
-                                 case as a relation of its own, with its condition after it as \
-                                 \\text{{for }} b > 0",
+                                 of its rows as a relation of its own (rows separated by \\\\, \
+                                 or by commas)",
                                 text.trim()
                             ),
                         });

@@ -52,6 +52,7 @@ pub const MAX_DEPTH: usize = 256;
 /// One symbol occurrence: the symbol and its column, for messages about unknown symbols.
 pub type Occurrence = (Symbol, usize);
 
+mod cases;
 mod lex;
 mod normalize;
 mod symbols;
@@ -73,7 +74,7 @@ pub fn parse(latex: &str) -> Result<(Vec<Chain>, Vec<Occurrence>), ParseError> {
             ),
         });
     }
-    let normalized = normalize::normalize(lex(latex)?);
+    let normalized = normalize::normalize(lex(latex)?)?;
     let mut seen = Vec::new();
     for condition in normalized.conditions {
         let (_, symbols) = parse_tokens(condition, chars + 1)?;

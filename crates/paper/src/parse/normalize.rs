@@ -9,6 +9,7 @@
 //! - Arguments without braces: `\frac12` is `\frac{1}{2}`, `\frac ba` is `\frac{b}{a}`,
 //!   `\sqrt2` is `\sqrt{2}` (TeX takes one token, one digit of a number, per argument).
 //! - Plain TeX's quotient: a group `{a \over b}` is `{\frac{a}{b}}`.
+//! - `cases`: one relation per case, its condition kept apart ([`super::cases`]).
 //! - Rows and alignment points (`&`, `&=&`, `\\`): a row whose first cell is empty continues
 //!   the row before it (`& = & ...` continues a chain, `& & + ...` a side); any other row starts
 //!   a new chain. A comma before a relation (`b, = c`) continues the chain too.
@@ -18,6 +19,7 @@
 //!   upright symbol like `\mathrm{constant}`.
 
 use super::lex::Tok;
+use super::ParseError;
 
 /// Tokens after the rewrites, and the conditions split off them.
 pub(super) struct Normalized {
@@ -39,18 +41,21 @@ const CONDITION_WORDS: &[&str] = &[
 /// Functions whose name may be written upright (`\mathrm{sin}`).
 const FUNCTIONS: &[&str] = &["sin", "cos", "tan", "cot", "sqrt"];
 
-/// Applies every rewrite of the module's documentation.
-pub(super) fn normalize(toks: Vec<(Tok, usize)>) -> Normalized {
+/// Applies every rewrite of the module's documentation; a `cases` environment that cannot be
+/// written out as relations ([`super::cases`]) is the error.
+pub(super) fn normalize(toks: Vec<(Tok, usize)>) -> Result<Normalized, ParseError> {
+    let toks = super::cases::cases(toks)?;
     let toks = font_switches(toks);
     let toks = upright_words(toks);
     let toks = bare_arguments(toks);
     let toks = overs(toks);
     let toks = rows(toks);
     let toks = commas_before_relations(toks);
-    texts(toks)
+    Ok(texts(toks))
 }
 
-fn is_relation(t: &Tok) -> bool {
+/// True for a token that relates two sides.
+pub(super) fn is_relation(t: &Tok) -> bool {
     match t {
         Tok::Equals | Tok::Less | Tok::Greater => true,
         Tok::Cmd(c) => matches!(
@@ -385,9 +390,9 @@ mod tests {
 
     #[test]
     fn a_condition_is_split_off_the_claim() {
-        let n = normalize(lex(r"a = b, \quad \text{for } b > 0").unwrap());
+        let n = normalize(lex(r"a = b, \quad \text{for } b > 0").unwrap()).unwrap();
         assert_eq!(n.conditions.len(), 1);
-        let n2 = normalize(lex(r"a = b,").unwrap());
+        let n2 = normalize(lex(r"a = b,").unwrap()).unwrap();
         assert_eq!(
             n.toks.iter().map(|t| &t.0).collect::<Vec<_>>(),
             n2.toks.iter().map(|t| &t.0).collect::<Vec<_>>()

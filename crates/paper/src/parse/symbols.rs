@@ -31,7 +31,7 @@ impl Parser {
         }
         self.pos = save.0;
         self.seen.truncate(save.1);
-        if let Some(order) = self.derivative_operator() {
+        if let Some(order) = self.derivative_operator()? {
             let at = self.column();
             let mut sym = self.symbol_base()?;
             if sym.derivative != 0 {
@@ -125,8 +125,9 @@ impl Parser {
     }
 
     /// `{d}{dt}` or `{d^2}{dt^2}` after `\frac`, followed by a symbol: the order, the tokens
-    /// eaten; `None` with nothing eaten otherwise.
-    fn derivative_operator(&mut self) -> Option<u8> {
+    /// eaten; followed by anything else (a group, `\dot X`, another fraction), an error saying
+    /// how to write it, never the quotient $d/(dt)$; `None` with nothing eaten otherwise.
+    fn derivative_operator(&mut self) -> R<Option<u8>> {
         let start = self.pos;
         let ok = (|| {
             if !(self.eat(&Tok::LBrace) && self.eat(&Tok::Letter('d'))) {
@@ -143,12 +144,22 @@ impl Parser {
             if self.order()? != order || !self.eat(&Tok::RBrace) {
                 return None;
             }
-            self.starts_plain_symbol_or_accent().then_some(order)
+            Some((order, self.starts_plain_symbol_or_accent()))
         })();
-        if ok.is_none() {
-            self.pos = start;
+        match ok {
+            Some((order, true)) => Ok(Some(order)),
+            Some((_, false)) => Err(ParseError {
+                column: self.column(),
+                message: "\\frac{d}{dt} is read before one symbol, as \\frac{d}{dt} X: write the \
+                          derivative of what follows as a symbol's, \\frac{d X}{dt} or \
+                          \\frac{d^2 X}{dt^2} (\\frac{d}{dt} \\dot X is \\frac{d^2 X}{dt^2})"
+                    .into(),
+            }),
+            None => {
+                self.pos = start;
+                Ok(None)
+            }
         }
-        ok
     }
 
     fn starts_plain_symbol_or_accent(&self) -> bool {

@@ -143,24 +143,116 @@ fn nesting_and_size_are_limited_before_recursing() {
     assert!(parse(&ok).is_ok());
 }
 
-/// Each hint the reader gives, applied as it says, makes the text read.
+/// Each hint the reader gives, applied as it says, makes the text read: `(refused, a phrase of
+/// its hint, the text with the hint's edit applied)`.
 #[test]
 fn every_hint_applied_reads() {
-    for (bad, fixed, says) in [
-        (r"x = b \over c", r"x = {b \over c}", "in braces"),
-        (r"x \lsim b", r"x \le b", r"\le"),
-        (r"x \neq b", r"x < b", "relations"),
+    for (bad, says, fixed) in [
+        (r"x = b \over c", "in braces", r"x = {b \over c}"),
+        (r"x = b \over c", r"\frac{numerator}", r"x = \frac{b}{c}"),
+        (r"x = b \div c", r"\frac{numerator}", r"x = \frac{b}{c}"),
+        (r"x \lsim b", r"\le", r"x \le b"),
+        (r"x \neq b", r"\approx", r"x \approx b"),
+        (r"x = k \ast m", "juxtaposition", r"x = k m"),
+        (r"x = k * m", r"\cdot", r"x = k \cdot m"),
         (
-            r"f = \begin{cases} 1 & b > 0 \\ 2 & b < 0 \end{cases}",
-            r"f = 1 \quad \text{for } b > 0, \qquad f = 2 \quad \text{for } b < 0",
-            r"\text{for }",
+            r"x = a \quad \text for b > 0",
+            "in braces",
+            r"x = a \quad \text{for b > 0}",
         ),
-        (r"x = \exp y", r"x = \cos y", r"\cos"),
+        (
+            r"x = \mathbf{v}^2",
+            r"\mathbf{v} \cdot \mathbf{v}",
+            r"x = \mathbf{v} \cdot \mathbf{v}",
+        ),
+        (
+            r"x = \mathbf{v}^2",
+            r"\left| \mathbf{v} \right|^2",
+            r"x = \left| \mathbf{v} \right|^2",
+        ),
+        (r"x = a^23", "with braces", r"x = a^{23}"),
+        (
+            r"x = \frac{d}{dt} \dot\Omega",
+            r"\frac{d^2 X}{dt^2}",
+            r"x = \frac{d^2 \Omega}{dt^2}",
+        ),
+        (
+            r"x = \frac{d}{dt} (a \Omega)",
+            r"\frac{d X}{dt}",
+            r"x = a \frac{d \Omega}{dt}",
+        ),
+        (r"x = d\Omega^2/dt", "(dX/dt)^2", r"x = (d\Omega/dt)^2"),
+        (
+            r"\begin{array}{l} x = a \\ y = b \end{array}",
+            "a relation of its own",
+            r"x = a \\ y = b",
+        ),
+        (
+            r"f = \begin{cases} 1 & \begin{cases} 2 & b > 0 \end{cases} \end{cases}",
+            r"\text{for } b > 0",
+            r"f = 1, \qquad f = 2 \quad \text{for } b > 0",
+        ),
+        (
+            r"f = \begin{cases} 1 & b > 0",
+            r"add \end{cases}",
+            r"f = \begin{cases} 1 & b > 0 \end{cases}",
+        ),
+        (r"f = 1 & b > 0 \end{cases}", "remove it", r"f = 1 & b > 0"),
+        (
+            r"\begin{cases} 1 & b > 0 \end{cases}",
+            "the quantity and the relation",
+            r"f = \begin{cases} 1 & b > 0 \end{cases}",
+        ),
+        (
+            r"f = \begin{cases} 1 & b \\ 2 & b < 0 \end{cases}",
+            r"\text{for } b > 0",
+            r"f = \begin{cases} 1 & \text{for } b > 0 \\ 2 & b < 0 \end{cases}",
+        ),
+        (
+            r"f = \begin{cases} & b > 0 \end{cases}",
+            "1 & b > 0",
+            r"f = \begin{cases} 1 & b > 0 \end{cases}",
+        ),
     ] {
-        let e = parse(bad).unwrap_err();
+        let e = parse(bad).expect_err(bad);
         assert!(e.message.contains(says), "{bad}: {}", e.message);
-        parse(fixed).unwrap_or_else(|e| panic!("{fixed}: {e:?}"));
+        assert!(
+            e.column >= 1 && e.column <= bad.chars().count() + 1,
+            "{bad}: {e:?}"
+        );
+        parse(fixed).unwrap_or_else(|e| panic!("{bad}, fixed as the hint says, {fixed}: {e:?}"));
     }
+}
+
+/// A `cases` environment reads as one relation per case, its condition kept apart.
+#[test]
+fn cases_read_as_one_relation_per_case() {
+    let same = |a: &str, b: &str| {
+        let (x, y) = (parse(a).unwrap(), parse(b).unwrap());
+        assert_eq!(x.0, y.0, "{a} vs {b}");
+        let names = |o: &[super::Occurrence]| {
+            let mut v: Vec<String> = o.iter().map(|(s, _)| s.to_string()).collect();
+            v.sort();
+            v
+        };
+        assert_eq!(names(&x.1), names(&y.1), "{a} vs {b}: the symbols read");
+    };
+    same(
+        r"f = \begin{cases} 1 & b > 0 \\ 2 & b < 0 \end{cases}",
+        r"f = 1 \quad \text{for } b > 0, \qquad f = 2 \quad \text{for } b < 0",
+    );
+    same(
+        r"f &= \begin{cases} \frac{1}{2}, & \text{if } b > 0, \\ 2 k, & \text{otherwise}. \end{cases}",
+        r"f = \frac{1}{2} \quad \text{if } b > 0, \qquad f = 2 k",
+    );
+    same(
+        r"x = a \\ f = \begin{cases} 1 & b \ge 0 \end{cases} \label{e9}",
+        r"x = a, \qquad f = 1 \quad \text{for } b \ge 0",
+    );
+    // A message about a case points into the case as written.
+    let bad = r"f = \begin{cases} 1 & b > 0 \\ 2 + & b < 0 \end{cases}";
+    let e = parse(bad).unwrap_err();
+    assert!(e.column > bad.find(r"2 +").unwrap(), "{e:?}");
 }
 
 /// The forms of the issue, each beside the form the paper's transcription uses.

@@ -295,10 +295,14 @@ fn varpi2<const N: usize>(j: &SMatrix<f64, N, N>) -> f64 {
 }
 
 /// $(k+1)\varpi^2/\Omega_0^2$ from the linearized eqs 23-25 at the steady motion $(\alpha_0, b = \beta a)$:
-/// the quantity the right side of eq 54 claims, measured independently of it.
+/// the quantity the right side of eq 54 claims, measured independently of it; NaN where there is
+/// no such steady motion (a $b/a$ that is not a number, drawn from a printed form that cannot be
+/// evaluated).
 fn q_linearized(k: f64, alpha0: f64, beta: f64) -> f64 {
     let disk = unit_disk(k);
-    let m = steady_motion(&disk, alpha0, beta).expect("a steady motion");
+    let Ok(m) = steady_motion(&disk, alpha0, beta) else {
+        return f64::NAN;
+    };
     let j = rolling_jacobian(&disk, &m);
     (k + 1.0) * varpi2(&j) / (m.precession * m.precession)
 }
@@ -314,10 +318,13 @@ fn q_eq54(b: &Bench, k: f64, alpha0: f64, beta: f64) -> f64 {
     b.paper.right_side(54, &bind).unwrap_or(f64::NAN)
 }
 
-/// The largest real part of the eigenvalues of eqs 23-25 linearized at a steady motion.
+/// The largest real part of the eigenvalues of eqs 23-25 linearized at a steady motion; NaN
+/// where there is no such steady motion.
 fn max_growth(k: f64, alpha0: f64, beta: f64) -> f64 {
     let disk = unit_disk(k);
-    let m = steady_motion(&disk, alpha0, beta).expect("a steady motion");
+    let Ok(m) = steady_motion(&disk, alpha0, beta) else {
+        return f64::NAN;
+    };
     eigenvalues(&rolling_jacobian(&disk, &m))
         .iter()
         .map(|z| z.re)
@@ -325,10 +332,13 @@ fn max_growth(k: f64, alpha0: f64, beta: f64) -> f64 {
 }
 
 /// The required friction coefficient $|F_{horizontal}|/F_z$ of a steady motion, from the exact
-/// contact force of eq 20 (the model's [`rolling::contact_force`]).
+/// contact force of eq 20 (the model's [`rolling::contact_force`]); NaN where there is no such
+/// steady motion.
 fn mu_required(k: f64, alpha0: f64, beta: f64) -> f64 {
     let disk = unit_disk(k);
-    let m = steady_motion(&disk, alpha0, beta).expect("a steady motion");
+    let Ok(m) = steady_motion(&disk, alpha0, beta) else {
+        return f64::NAN;
+    };
     let r = rolling::rates(&disk, &m, [0.0; 3]);
     let [fz, fr, f2] = rolling::contact_force(&disk, &m, &r);
     fr.hypot(f2) / fz

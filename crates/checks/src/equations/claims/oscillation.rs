@@ -26,7 +26,10 @@ pub(super) fn bracket_root_linearized(k: f64) -> f64 {
 /// stated 5 %. It is below 60 deg for every $k$ (it tends to 60 only as $k \to \infty$). FAILS.
 pub(super) fn bracket_negative_angle(b: &Bench) -> Finding {
     let root = bracket_root_linearized(0.25);
-    let printed = b.paper.eq54_bracket_zero(0.25).unwrap_or(f64::NAN);
+    let printed = match b.paper.eq54_bracket_zero(0.25) {
+        Ok(zero) => format!("{:.4} deg", zero.to_degrees()),
+        Err(e) => format!("not evaluated ({e})"),
+    };
     let others: Vec<String> = [0.1, 0.5, 0.9]
         .iter()
         .map(|&k| format!("k={k}: {:.2} deg", bracket_root_linearized(k).to_degrees()))
@@ -38,9 +41,9 @@ pub(super) fn bracket_negative_angle(b: &Bench) -> Finding {
         "tilt where eq 54's b-coefficient turns negative, k = 1/4 (deg)",
         root.to_degrees(),
         format!(
-            "linearization {:.4} deg, eq 54's printed bracket {:.4} deg; {}",
+            "linearization {:.4} deg, eq 54's printed bracket {}; {}",
             root.to_degrees(),
-            printed.to_degrees(),
+            printed,
             others.join(", ")
         ),
     )
@@ -67,7 +70,8 @@ pub(super) fn positive_b_unstable_large_tilt(b: &Bench) -> Finding {
     let (beta_at_onset, _) = golden_min(1e-6, 40.0, 1e-9, |beta| q_linearized(k, onset, beta));
     // Band at 80 degrees from eq 54's printed quadratic (qc + qb beta + qa beta^2 < 0).
     let al80 = 80f64.to_radians();
-    let [qc, qb, qa] = b.paper.eq54_quadratic(k, al80).unwrap_or([f64::NAN; 3]);
+    let band = b.paper.eq54_quadratic(k, al80);
+    let [qc, qb, qa] = band.as_ref().map_or([f64::NAN; 3], |q| *q);
     let disc = (qb * qb - 4.0 * qa * qc).sqrt();
     let (b1, b2) = ((-qb - disc) / (2.0 * qa), (-qb + disc) / (2.0 * qa));
     let inside = max_growth(k, al80, 0.5 * (b1 + b2));
@@ -95,7 +99,12 @@ pub(super) fn positive_b_unstable_large_tilt(b: &Bench) -> Finding {
             above
         ),
     );
-    if !eigen_ok {
+    if let Err(e) = band {
+        // The band is eq 54's printed claim: where it cannot be evaluated, neither can the
+        // claim (never a failure of the paper).
+        f.claimed = f64::NAN;
+        f.at = format!("eq 54's right side, from which the band is drawn: {e}");
+    } else if !eigen_ok {
         f.verdict = crate::finding::Verdict::Fails;
         f.at = format!("{}; EIGENVALUES DISAGREE", f.at);
     }

@@ -308,6 +308,11 @@ fn power_gradient(f: &Vector3<f64>, r_p: &Vector3<f64>) -> Vector3<f64> {
 /// $\boldsymbol\rho = \dot{\mathbf L}_{cm} - a\hat{\mathbf 3}\times\mathbf F$; eq 22's residual
 /// (its left side minus its right) must equal $\boldsymbol\rho/ma$, so that eq 22 holds exactly
 /// when eq 21 does. Claimed: eq 22's left side.
+///
+/// The sides are read in either order, and the relation up to its sign: `b = a` and `-a = -b`
+/// are the same equation as `a = b`, so the side that holds $d\mathbf L_{cm}/dt$ is taken as the
+/// claimed one ([`eq22_oriented`]) and the residual is signed so that its coefficient of
+/// $d\mathbf L_{cm}/dt$ is positive, as printed.
 pub(super) fn eq22(b: &Bench) -> Finding {
     let mut w = Worst::default();
     for body in bodies() {
@@ -320,22 +325,17 @@ pub(super) fn eq22(b: &Bench) -> Finding {
             let l_dot: V<f64> = l.map(|x| x.eps);
             let force = (acc + V::z() * G) * MASS;
             let residual21 = l_dot - (three * A).cross(&force);
-            let bind = Bindings::new()
-                .scalar("m", MASS)
-                .scalar("a", A)
-                .scalar("g", G)
-                .vector("L_cm_rate", l_dot)
-                .vector("a_cm", acc)
-                .vector("e3", three)
-                .vector("z_hat", Vector3::z());
-            let eq = b.paper.equation(22);
-            let rel = eq.relations()[0];
-            let side = |e| {
-                eq.eval(e, &bind)
-                    .and_then(|v| v.vector())
-                    .unwrap_or(V::repeat(f64::NAN))
+            let bind = |l: V<f64>| {
+                Bindings::new()
+                    .scalar("m", MASS)
+                    .scalar("a", A)
+                    .scalar("g", G)
+                    .vector("L_cm_rate", l)
+                    .vector("a_cm", acc)
+                    .vector("e3", three)
+                    .vector("z_hat", Vector3::z())
             };
-            let (lhs, rhs) = (side(rel.lhs), side(rel.rhs));
+            let (lhs, rhs) = eq22_oriented(b, l_dot, &bind);
             let sc = G + lhs.norm();
             for i in 0..3 {
                 w.add(
@@ -361,4 +361,43 @@ pub(super) fn eq22(b: &Bench) -> Finding {
         Tolerance::roundoff(),
     )
     .in_unit("m/s^2")
+}
+
+/// Eq 22's two sides at `bind(l_dot)`, `l_dot` the rate $d\mathbf L_{cm}/dt$, the side that holds $d\mathbf L_{cm}/dt$ first (the
+/// left side where both or neither do), each multiplied by the sign that makes the coefficient
+/// of $d\mathbf L_{cm}/dt$ in first minus second positive (+1 where it is zero). Either order of
+/// the printed sides, and both sides negated, give the same two vectors to the bit; a side that
+/// cannot be evaluated is NaN.
+fn eq22_oriented(
+    b: &Bench,
+    l_dot: V<f64>,
+    bind: &dyn Fn(V<f64>) -> Bindings<f64>,
+) -> (V<f64>, V<f64>) {
+    let eq = b.paper.equation(22);
+    let Some(rel) = eq.relations().into_iter().next() else {
+        return (V::repeat(f64::NAN), V::repeat(f64::NAN));
+    };
+    let at = |l: V<f64>| {
+        let bound = bind(l);
+        let side = |e| {
+            eq.eval(e, &bound)
+                .and_then(|v| v.vector())
+                .unwrap_or(V::repeat(f64::NAN))
+        };
+        (side(rel.lhs), side(rel.rhs))
+    };
+    let (lhs, rhs) = at(l_dot);
+    // The change of each side when dL_cm/dt changes by one unit along x.
+    let (lhs_x, rhs_x) = at(l_dot + V::x());
+    let (dl, dr) = ((lhs_x - lhs).x, (rhs_x - rhs).x);
+    let (claimed, other, slope) = if dl == 0.0 && dr != 0.0 {
+        (rhs, lhs, dr - dl)
+    } else {
+        (lhs, rhs, dl - dr)
+    };
+    if slope < 0.0 {
+        (-claimed, -other)
+    } else {
+        (claimed, other)
+    }
 }

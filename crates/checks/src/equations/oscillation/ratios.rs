@@ -20,12 +20,13 @@ pub(super) fn eq54(b: &Bench) -> Finding {
         let reference = varpi2(d, &state(m)) * (k + 1.0) / om2;
         let bind = steady_bindings(d, m).scalar("b", rho * d.a);
         let claimed = printed_varpi2(b, 54, &bind) * (k + 1.0) / om2;
-        // Relative to the size of the printed terms (each in absolute value).
+        // Relative to the size of the printed terms (each in absolute value) of the side this
+        // check binds every symbol of (the other holds the unknown varpi, whatever the order
+        // written).
         let eq = b.paper.equation(54);
-        let terms = eq
-            .relations()
-            .first()
-            .map_or(0.0, |rel| term_scale(eq, rel.rhs, &bind));
+        let terms = eq.relations().first().map_or(0.0, |rel| {
+            term_scale(eq, rel.rhs, &bind).max(term_scale(eq, rel.lhs, &bind))
+        });
         let sc = terms + d.g_over_a() / om2 + (m.spin * m.spin) / om2;
         w.add(claimed, reference, sc, || at(k, alpha0, rho));
     });
