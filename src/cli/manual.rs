@@ -16,8 +16,8 @@ impl Args {
     /// Runs the command: the page on standard output.
     pub fn run(self) -> anyhow::Result<()> {
         let program = crate::Cli::command();
-        let page = match &self.command {
-            None => program,
+        let (page, title) = match &self.command {
+            None => (program, "rolling-disk".to_string()),
             Some(name) => {
                 let found = program
                     .get_subcommands()
@@ -31,11 +31,11 @@ impl Args {
                         names.join(", ")
                     );
                 };
-                found.name(format!("rolling-disk-{name}"))
+                (found, format!("rolling-disk-{name}"))
             }
         };
         let mut roff = Vec::new();
-        clap_mangen::Man::new(page).render(&mut roff)?;
+        clap_mangen::Man::new(page).title(title).render(&mut roff)?;
         print!("{}", String::from_utf8_lossy(&roff));
         Ok(())
     }
