@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Work-precision comparison of rolling-disk against SciPy and another Rust engine, in one run.
 
-The Rust side (`cargo bench --bench scipy_reference`) prints, as JSON, the benchmark scene's
+The Rust side (`cargo bench --bench benches -- --scipy-reference`) prints, as JSON, the benchmark scene's
 high-precision reference (with its validation) and the timings of the tool's own DOP853, of
 two other Rust ODE crates on the same right-hand side (ode_solvers' DOP853, the tool's default
 engine, and the DOP853 of `ivp`, a Rust port of solve_ivp) and of DOPRI5 over a tolerance
@@ -62,7 +62,7 @@ def machine():
 
 
 def rust_side(quick):
-    cmd = ["cargo", "bench", "--quiet", "--bench", "scipy_reference", "--"]
+    cmd = ["cargo", "bench", "--quiet", "--bench", "benches", "--", "--scipy-reference"]
     if quick:
         cmd.append("--quick")
     print("running:", " ".join(cmd), file=sys.stderr)

@@ -264,17 +264,23 @@ fn own_dop853_takes_the_same_steps_as_the_published_algorithm_in_ode_solvers() {
 fn events_and_samples_use_the_dense_output_and_keep_the_steps() {
     // The crate's own DOP853 (not the default engine): events on its dense output.
     let s = Settings::dop853(1e-12, 1e-14);
+    // A run that samples on its dense output integrates at the tolerances divided by
+    // K = 2 rtol^(-1/9) (physics' `driver::dense_tolerances`), so that its samples are as
+    // accurate as the tolerance asks; the plain run here integrates at those.
+    let k = 2.0 * s.rtol.powf(-1.0 / 9.0);
+    let tight = Settings::dop853(s.rtol / k, s.atol / k);
     let plain = solve_with(
         Problem::new(&Oscillator, 0.0, State::<2>::new(1.0, 0.0), 10.0),
-        &s,
+        &tight,
         Engine::Own,
     )
     .unwrap();
     let mut p = Problem::new(&Oscillator, 0.0, State::<2>::new(1.0, 0.0), 10.0).sampled(0.001);
     p.dense_samples = true;
     let sampled = solve_with(p, &s, Engine::Own).unwrap();
-    // The sampled run takes the same steps; its samples come from the dense output, three
-    // more evaluations for each step that holds one, none per sample.
+    // The sampled run takes the same steps as the plain run at those tolerances; its samples
+    // come from the dense output, three more evaluations for each step that holds one, none
+    // per sample.
     assert_eq!(sampled.stats.evaluations, plain.stats.evaluations);
     assert_eq!(sampled.stats.accepted, plain.stats.accepted);
     assert!(sampled.stats.extra_evaluations > 0);

@@ -25,7 +25,7 @@ pub const MAX_ROWS: u64 = 1_000_000;
 /// More rows than one second of wall time can make: a streamed run that samples more than this
 /// many rows for each second of its wall-time budget cannot finish within it, and is refused
 /// before integrating. A recorded row costs a polynomial evaluation per state and the recorded
-/// quantities, 0.3 to 1 us (`cargo bench --bench sampling`), so this is a bound no run reaches.
+/// quantities, 0.3 to 1 us (`cargo bench --bench benches -- sampling`), so this is a bound no run reaches.
 pub const ROWS_PER_SECOND: u64 = 10_000_000;
 
 /// The most rows a streamed run may sample within the current wall-time budget.

@@ -23,7 +23,7 @@ pub fn run(scene: &Scene, progress: Option<&dyn Fn(f64)>) -> Result<Run, Setting
     }
     let mut rows = Vec::new();
     let mut hold = |row: &[f64]| rows.push(row.to_vec());
-    let mut r = record_run(scene, progress, &mut hold, false)?;
+    let mut r = record_run(scene, progress, &mut hold, true)?;
     r.rows = rows;
     Ok(r)
 }
@@ -44,16 +44,19 @@ pub fn run_streamed(
 }
 
 /// Runs a scene, handing each row to `sink`; DOP853's samples from its dense output when
-/// `dense`, otherwise each re-integrated from the step before it (a run held in memory keeps
-/// those, so that the checks over a scene's samples are not moved by the interpolant).
+/// `dense` (see [`crate::solve::Problem::dense_samples`]), otherwise each re-integrated from the
+/// step before it.
 fn record_run(
     scene: &Scene,
     progress: Option<&dyn Fn(f64)>,
     sink: RowSink<'_>,
     dense: bool,
 ) -> Result<Run, SettingsError> {
+    // The sliding model's samples are re-integrated (see `HybridProblem::dense_samples`): at
+    // the tightened tolerances of dense samples a stiff regularized friction can exceed the
+    // step limit where the tolerance asked does not.
     if scene.model.has_coulomb_friction() {
-        return sliding::run_streamed(scene, sink, dense);
+        return sliding::run_streamed(scene, sink, false);
     }
     dispatch(
         scene,
@@ -144,33 +147,40 @@ impl<'m, 's, M> Recorder<'m, 's, M> {
         }
     }
 
+    /// Records one row. Each quantity is computed once: the energy (for the row and for the
+    /// largest change) and the normal force (for the row and for the loss of contact, looked
+    /// for until the first) are shared, so a row costs what its quantities cost.
     fn take<const N: usize>(&mut self, t: f64, y: &State<N>)
     where
         M: Model<N>,
     {
         let model = self.model;
+        let mut normal_force = None;
         if self.contact_lost.is_none() && self.checks_contact {
             self.force.clear();
-            if model.record(y, Quantity::NormalForce, &mut self.force)
-                && self.force.first().is_some_and(|&n| n < 0.0)
-            {
-                self.contact_lost = Some(ContactLost {
-                    t,
-                    normal_force: self.force[0],
-                });
+            if model.record(y, Quantity::NormalForce, &mut self.force) {
+                normal_force = self.force.first().copied();
+            }
+            if let Some(f) = normal_force.filter(|&f| f < 0.0) {
+                self.contact_lost = Some(ContactLost { t, normal_force: f });
             }
         }
+        let energy = model.energy(y);
         self.row.clear();
         self.row.push(t);
         for &q in &self.scene.record {
-            let ok = model.record(y, q, &mut self.row);
-            debug_assert!(ok, "validated scenes only record what their model provides");
+            match (q, normal_force) {
+                (Quantity::Energy, _) => self.row.push(energy),
+                (Quantity::NormalForce, Some(f)) => self.row.push(f),
+                _ => {
+                    let ok = model.record(y, q, &mut self.row);
+                    debug_assert!(ok, "validated scenes only record what their model provides");
+                }
+            }
         }
         (self.sink)(&self.row);
         self.recorded += 1;
-        self.energy_change = self
-            .energy_change
-            .max(((model.energy(y) - self.e0) / self.e0).abs());
+        self.energy_change = self.energy_change.max(((energy - self.e0) / self.e0).abs());
     }
 
     fn finish<const N: usize>(self, sol: &Solution<N>) -> Run

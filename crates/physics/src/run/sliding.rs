@@ -7,7 +7,7 @@ use crate::dispatch::sliding_model;
 use crate::events::PointSink;
 use crate::model::sliding::contact_events::contact_events;
 use crate::model::sliding::{Flow, Mode, Sliding, SlidingRun};
-use crate::model::Model;
+use crate::model::{Model, Quantity};
 use crate::scene::Scene;
 use crate::solve::{Event, SettingsError, State};
 use std::f64::consts::{FRAC_PI_2, PI};
@@ -27,14 +27,20 @@ pub fn run_streamed(scene: &Scene, sink: RowSink<'_>, dense: bool) -> Result<Run
             model: &model,
             mode: *mode,
         };
+        // The energy once, for the row and for the largest change.
+        let energy = model.energy(y);
         row.clear();
         row.push(t);
         for &q in &scene.record {
-            flow.record(y, q, &mut row);
+            if q == Quantity::Energy {
+                row.push(energy);
+            } else {
+                flow.record(y, q, &mut row);
+            }
         }
         sink(&row);
         recorded += 1;
-        energy_change = energy_change.max(((model.energy(y) - e0) / e0).abs());
+        energy_change = energy_change.max(((energy - e0) / e0).abs());
     };
     let sol = run_model(&model, scene, scene.sample, Some(&mut take), dense)?;
     let last = sol.y.len() - 1;
@@ -68,6 +74,17 @@ pub fn integrate(
     sample: Option<f64>,
 ) -> Result<SlidingRun, SettingsError> {
     run_model(model, scene, sample, None, false)
+}
+
+/// [`integrate`] with its samples from the dense output when `dense`, otherwise each
+/// re-integrated from the step before it (on the steps of the unsampled run).
+pub fn integrate_sampled(
+    model: &Sliding,
+    scene: &Scene,
+    sample: Option<f64>,
+    dense: bool,
+) -> Result<SlidingRun, SettingsError> {
+    run_model(model, scene, sample, None, dense)
 }
 
 /// [`integrate`], handing every point to `on_point` instead of holding it: the run returned

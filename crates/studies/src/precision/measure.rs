@@ -1,9 +1,11 @@
 //! One integration of a scene, measured: the solver's work, the median wall time of repeated
 //! runs, the final state and (optionally) the state at fixed sample times.
 
+use physics::dispatch::sliding_model;
 use physics::dispatch::{dispatch, problem, Visit};
 use physics::model::Model;
-use physics::scene::Scene;
+use physics::run::sliding::{integrate, integrate_sampled};
+use physics::scene::{ModelKind, Scene};
 use physics::solve::{solve_with, Ending, Engine, Settings, SettingsError, Stats};
 use serde::Serialize;
 use std::time::Instant;
@@ -85,6 +87,9 @@ pub fn trace_with(
     timing: &Timing,
     engine: Engine,
 ) -> Result<Trace, SettingsError> {
+    if scene.model == ModelKind::Sliding {
+        return trace_sliding(scene, settings, sample, timing);
+    }
     dispatch(
         scene,
         TraceJob {
@@ -130,11 +135,11 @@ impl Visit for TraceJob<'_> {
         let (t_final, y_end) = sol.last();
         let (mut sample_t, mut samples) = (Vec::new(), Vec::new());
         if let Some(dt) = self.sample {
-            let s = solve_with(
-                problem(model, scene, y0, t_end).sampled(dt),
-                self.settings,
-                self.engine,
-            )?;
+            // Re-integrated samples, so that they lie on the timed run's steps: dense samples
+            // integrate at tightened tolerances (`Problem::dense_samples`), another run.
+            let mut p = problem(model, scene, y0, t_end).sampled(dt);
+            p.dense_samples = false;
+            let s = solve_with(p, self.settings, self.engine)?;
             debug_assert_eq!(s.stats.evaluations, sol.stats.evaluations);
             sample_t = s.t;
             samples = s.y.iter().map(|y| y.iter().copied().collect()).collect();
@@ -153,6 +158,65 @@ impl Visit for TraceJob<'_> {
             energy_change: (model.energy(&y_end) - e0) / e0.abs(),
         })
     }
+}
+
+/// [`trace`] of a sliding scene: the whole run through the hybrid driver, its switches between
+/// rolling, slipping and flight located as events, as `simulate` runs it (the engine is the
+/// hybrid driver's).
+fn trace_sliding(
+    scene: &Scene,
+    settings: &Settings,
+    sample: Option<f64>,
+    timing: &Timing,
+) -> Result<Trace, SettingsError> {
+    let mut scene = scene.clone();
+    scene.settings = *settings;
+    let model = sliding_model(&scene);
+    let started = Instant::now();
+    let mut walls = Vec::new();
+    let mut first = None;
+    loop {
+        let t = Instant::now();
+        let sol = integrate(&model, &scene, None)?;
+        walls.push(t.elapsed().as_secs_f64());
+        first.get_or_insert(sol);
+        let n = walls.len();
+        let spent = started.elapsed().as_secs_f64();
+        if n >= timing.max_runs.max(1) || (n >= timing.min_runs && spent >= timing.budget_seconds) {
+            break;
+        }
+    }
+    let sol = first.expect("at least one run");
+    let last = sol.y.len() - 1;
+    let (t_final, y_end) = (sol.t[last], sol.y[last]);
+    let (mut sample_t, mut samples) = (Vec::new(), Vec::new());
+    if let Some(dt) = sample {
+        // Re-integrated samples, on the timed run's steps (see `TraceJob`).
+        let s = integrate_sampled(&model, &scene, Some(dt), false)?;
+        // A jump repeats its time: the state after it stands for that time.
+        for (t, y) in s.t.iter().zip(&s.y) {
+            if sample_t.last() == Some(t) {
+                samples.pop();
+                sample_t.pop();
+            }
+            sample_t.push(*t);
+            samples.push(y.iter().copied().collect());
+        }
+    }
+    let start = model.enter_contact(&model.start_state(&scene.start)).1;
+    let e0 = model.energy(&start);
+    Ok(Trace {
+        settings: *settings,
+        stats: sol.stats,
+        ending: sol.ending,
+        t_final,
+        y_final: y_end.iter().copied().collect(),
+        sample_t,
+        samples,
+        wall_seconds: median(&mut walls),
+        runs: walls.len(),
+        energy_change: (model.energy(&y_end) - e0) / e0.abs(),
+    })
 }
 
 /// The median of `xs` (sorted in place); NaN when empty.

@@ -2,7 +2,7 @@
 //! the model choice; and of a 10 s sound recording at 8 kHz (80,000 samples): the spectral
 //! track and its fits; and of a phone's minute at 48 kHz (2,880,000 samples).
 
-use criterion::{criterion_group, criterion_main, Criterion};
+use criterion::Criterion;
 use experiment::plausibility::Plausibility;
 use experiment::{
     analyze, analyze_sound, law_sound, law_trace, AnalysisSettings, Artifacts, Law, LightModel,
@@ -63,5 +63,7 @@ fn analysis(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, analysis);
-criterion_main!(benches);
+/// Every benchmark of this module.
+pub fn all(c: &mut Criterion) {
+    analysis(c);
+}

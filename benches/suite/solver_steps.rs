@@ -11,10 +11,10 @@
 //! overhead per evaluation is the integration's time per evaluation minus it:
 //!
 //! ```text
-//! cargo bench --bench solver_steps
+//! cargo bench --bench benches -- solver_steps
 //! ```
 
-use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use criterion::{BenchmarkId, Criterion, Throughput};
 use physics::model::rolling::Rolling;
 use physics::model::{Extras, Model};
 use physics::scene::Scene;
@@ -121,5 +121,7 @@ fn solver_steps(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, solver_steps);
-criterion_main!(benches);
+/// Every benchmark of this module.
+pub fn all(c: &mut Criterion) {
+    solver_steps(c);
+}

@@ -1,7 +1,7 @@
 //! Criterion benchmarks of the solver on the benchmark scene (10 s of a uniform disk rolling
 //! near a steady motion), per method and tolerance.
 
-use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+use criterion::{BenchmarkId, Criterion};
 use physics::model::rolling::Rolling;
 use physics::model::{Extras, Model};
 use physics::scene::Scene;
@@ -48,5 +48,7 @@ fn solver(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, solver);
-criterion_main!(benches);
+/// Every benchmark of this module.
+pub fn all(c: &mut Criterion) {
+    solver(c);
+}

@@ -1,7 +1,7 @@
 //! Criterion benchmarks of every built-in scene, run end to end through
 //! [`physics::run::run`] (model, integration with the scene's own settings, recording).
 
-use criterion::{criterion_group, criterion_main, Criterion};
+use criterion::Criterion;
 use physics::run::run;
 use physics::scene::builtin::BUILTIN;
 use physics::scene::Scene;
@@ -19,5 +19,7 @@ fn scenes(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, scenes);
-criterion_main!(benches);
+/// Every benchmark of this module.
+pub fn all(c: &mut Criterion) {
+    scenes(c);
+}

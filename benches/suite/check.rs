@@ -3,7 +3,7 @@
 
 use checks::check::{run_checks, Selection};
 use checks::equations::Bench;
-use criterion::{criterion_group, criterion_main, Criterion};
+use criterion::Criterion;
 use std::time::Duration;
 
 fn whole_check(c: &mut Criterion) {
@@ -34,5 +34,8 @@ fn each_claim(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, whole_check, each_claim);
-criterion_main!(benches);
+/// Every benchmark of this module.
+pub fn all(c: &mut Criterion) {
+    whole_check(c);
+    each_claim(c);
+}

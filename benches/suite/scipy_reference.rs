@@ -3,8 +3,8 @@
 //! stdout. Not a criterion benchmark (`harness = false`).
 //!
 //! ```text
-//! cargo bench --bench scipy_reference              # reference, sweep, presets, overhead
-//! cargo bench --bench scipy_reference -- --drift   # also the long energy-drift runs
+//! cargo bench --bench benches -- --scipy-reference            # reference, sweep, presets, overhead
+//! cargo bench --bench benches -- --scipy-reference --drift    # also the long energy-drift runs
 //! ```
 //! Options: `--scene NAME` (default `benchmark`), `--drift` (1e4 precession periods at DOP853
 //! rtol 1e-13, and 1e5 periods), `--study` (also the whole work-precision study, RK4
@@ -22,7 +22,7 @@ use studies::precision::{
     study::measure_point_with, Accuracy, Reference, ReferenceOptions, StudyOptions, Timing,
 };
 
-fn main() {
+pub fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let flag = |f: &str| args.iter().any(|a| a == f);
     let scene_name = args

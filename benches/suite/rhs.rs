@@ -1,7 +1,7 @@
 //! Criterion benchmarks of each right-hand side (the cost $c_f$ of one evaluation).
 //! That none allocates is tested in `tests/precision.rs`, not here.
 
-use criterion::{criterion_group, criterion_main, Criterion};
+use criterion::Criterion;
 use physics::disk::Disk;
 use physics::model::adiabatic::Adiabatic;
 use physics::model::dissipation::PowerLaw;
@@ -68,5 +68,7 @@ fn right_hand_sides(c: &mut Criterion) {
     );
 }
 
-criterion_group!(benches, right_hand_sides);
-criterion_main!(benches);
+/// Every benchmark of this module.
+pub fn all(c: &mut Criterion) {
+    right_hand_sides(c);
+}
