@@ -1,7 +1,7 @@
 //! This tool's run read at any time inside it: between two of its points, in the mode of the
 //! segment they belong to, the cubic Hermite interpolant
-//! $$ y(t_j + sh) = (2s^3 - 3s^2 + 1)\,y_j + (s^3 - 2s^2 + s)\,h f_j + (-2s^3 + 3s^2)\,y_{j+1}
-//!    + (s^3 - s^2)\,h f_{j+1},\qquad f = \dot y \text{ of the mode's flow}, $$
+//! $$ y(t_j + sh) = (2s^3 - 3s^2 + 1)\,y_j + (s^3 - 2s^2 + s)\,h f_j +
+//!    (-2s^3 + 3s^2)\,y_{j+1} + (s^3 - s^2)\,h f_{j+1},\qquad f = \dot y \text{ of the mode's flow}, $$
 //! whose error is $h^4 \max|y^{(4)}|/384$, and the orientation's quaternion set back to unit
 //! length. The peer's rows whose state is later than their label are read this way.
 

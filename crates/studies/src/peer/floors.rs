@@ -57,7 +57,9 @@ pub fn floors(scene: &Scene) -> Result<Vec<String>, PeerError> {
         ));
     }
     let margin = (1e3 * atol).max(5e-3);
-    let (mut creep, mut held): (Option<(f64, f64, f64)>, Option<(f64, f64)>) = (None, None);
+    // (from, to, largest creep speed) and (from, to) of the stick stretches warned about.
+    let mut creep: Option<(f64, f64, f64)> = None;
+    let mut held: Option<(f64, f64)> = None;
     for ((t, y), mode) in run.t.iter().zip(&run.y).zip(&run.mode) {
         if !matches!(mode, Mode::Stick) {
             continue;
