@@ -9,6 +9,8 @@
 #   PEER_KEEP_ROWS=N (optional) stores result.txt subsampled to about N evenly spaced rows plus the
 #   last row and the two rows around every change of mode, with runs of spaces squeezed (the
 #   columns stay whitespace-separated, as `rolling-disk peer compare` reads them).
+#   PEER_SQUEEZE=1 (optional, without PEER_KEEP_ROWS) stores every row of result.txt as written, with
+#   runs of spaces squeezed (the numbers and their digits untouched): a raw record, smaller.
 #   PEER_SLIP_REGULARIZATION=EPS (optional) sets the peer's slip regularization speed (m/s, its
 #   constant slip_regularization, 1e-3 in its source) in the temporary copy before building: an
 #   experiment on the peer's modelling choice, recorded in provenance.txt.
@@ -69,6 +71,9 @@ if [ -n "${PEER_KEEP_ROWS:-}" ] && [ "$rows" -gt "$PEER_KEEP_ROWS" ]; then
       }
     }' "$run/result.txt" > "$out/result.txt"
   subsampled="result.txt: every ${every}th of $rows rows, the last, and the rows around each mode change; spaces squeezed"
+elif [ -n "${PEER_SQUEEZE:-}" ]; then
+  awk 'NR == 1 { print; next } { s = $0; gsub(/ +/, " ", s); sub(/^ /, "", s); print s }' "$run/result.txt" > "$out/result.txt"
+  subsampled="result.txt: all $rows rows as written, spaces squeezed"
 else
   cp "$run/result.txt" "$out/"
   subsampled="result.txt: all $rows rows as written"

@@ -177,8 +177,9 @@ fn a_long_spin_down_with_resistance_agrees_on_the_peers_clock() {
     assert!(sharp.centre.value < 1e-5, "{sharp}");
     let creeping = compared("thick-long-spin-down", "");
     assert!(creeping.tilt.value > 0.1, "{creeping}");
-    // This tool rolls throughout; the peer slides one print step at its start.
-    assert_eq!(sharp.switch_counts, (1, 0));
+    // This tool rolls throughout; the peer slides only in its start-up (its rows at t = 0),
+    // whose mode is its assumption, not a switch.
+    assert_eq!(sharp.switch_counts, (0, 0));
 }
 
 /// The stored runs the report compares (built into the tool) are every folder here.

@@ -15,6 +15,7 @@ pub enum Command {
     Simulate {
         /// A dissipative scene (file or built-in name), e.g. spin-down.
         #[arg(default_value = "spin-down")]
+        #[arg(value_parser = crate::cli::utf8::scene())]
         scene: String,
         /// Write the scope's light signal to this CSV.
         #[arg(long, value_name = "FILE", required_unless_present = "wav")]

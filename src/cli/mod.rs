@@ -20,6 +20,7 @@ pub mod scenes;
 pub mod simulate;
 pub mod sound_figures;
 pub mod stdout;
+pub(crate) mod utf8;
 
 /// An error when an integration of this process ran past the wall-time budget: a command calls
 /// it before it prints or writes a result computed from integrations, so that nothing cut short

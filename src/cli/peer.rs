@@ -10,6 +10,7 @@ pub enum Command {
     /// Writes the peer's response file for a sliding scene with a thickness.
     Export {
         /// A scene file, or the name of a built-in scene.
+        #[arg(value_parser = crate::cli::utf8::scene())]
         scene: String,
         /// Write to this file instead of standard output.
         #[arg(long, value_name = "FILE")]
@@ -18,6 +19,7 @@ pub enum Command {
     /// Reads the peer's result.txt, runs the scene here, prints the largest differences.
     Compare {
         /// The scene the peer ran (as exported).
+        #[arg(value_parser = crate::cli::utf8::scene())]
         scene: String,
         /// The peer's result.txt.
         result: PathBuf,
@@ -55,6 +57,9 @@ fn peer_export(name: &str, out: Option<&Path>) -> anyhow::Result<()> {
         crate::cli::stdout::check_output(path).map_err(|e| anyhow::anyhow!("--out {e}"))?;
     }
     let text = ::studies::peer::response::response(&scene)?;
+    for w in ::studies::peer::floors::floors(&scene)? {
+        eprintln!("warning: {}: {w}", scene.source);
+    }
     match out {
         Some(path) => {
             crate::cli::stdout::write_to(path, text.as_bytes())

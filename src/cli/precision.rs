@@ -9,6 +9,7 @@ use studies::precision::Accuracy;
 pub struct Args {
     /// A scene file or built-in scene name.
     #[arg(default_value = "benchmark")]
+    #[arg(value_parser = crate::cli::utf8::scene())]
     pub scene: String,
     /// Print the study as JSON.
     #[arg(long)]

@@ -12,6 +12,7 @@ use std::path::PathBuf;
 #[derive(clap::Args)]
 pub struct Args {
     /// A scene file, or the name of a built-in scene (see `rolling-disk scenes`).
+    #[arg(value_parser = crate::cli::utf8::scene())]
     pub scene: String,
     /// Also write the recorded trajectory as CSV to this file.
     #[arg(long, value_name = "FILE")]

@@ -20,10 +20,11 @@
 //!   $5\times10^{-3}\max(F_z/m, 1)$ (m/s², i.e. $\mu_s$ raised by about 0.005), and starts the slip
 //!   with a seed velocity of $5\varepsilon = 5$ mm/s against the friction;
 //! - it starts every run sliding; a relock it finds at its first print step is not carried out
-//!   and the run restarts sliding with the seed ($\max(10^4\,{\rm atol}, 5\varepsilon)$) from the
-//!   state one print step on, its clock set back to 0, so that its later rows are labelled one
-//!   print step early (read from its records: two rows at $t = 0$, the second with $\psi$
-//!   advanced by $\dot\psi$ times the print step); [`result::retimed`] moves them back;
+//!   and the run restarts sliding from the start with the seed
+//!   ($\max(10^4\,{\rm atol}, 5\varepsilon)$), printing the start again; where the seed is below
+//!   its relock threshold it relocks with its clock set back, and on every switch to rolling it
+//!   keeps the state of the end of its integration step on the clock of the located relock:
+//!   [`clock::on_its_clock`] reads the time of each row's state back from its angles;
 //! - its resistance moments take the sign of the rotation they oppose, like this tool's, and
 //!   neither program has a phase in which that rotation stays stopped: where it passes through
 //!   zero and the moment could hold it, both stall;
@@ -34,8 +35,13 @@
 //! - it stops when the kinetic plus potential energy above lying flat falls below $3\times10^{-4}$ J,
 //!   within $2\times10^{-4}$ rad of flat, or where the normal force vanishes (it has no flight).
 
+pub mod along;
+pub mod clock;
 pub mod compare;
+pub mod floors;
 pub mod mapping;
+pub mod pairing;
+mod printed;
 pub mod relock;
 pub mod response;
 pub mod result;

@@ -6,8 +6,9 @@
 //! interval between the slip's end in this tool and the peer's relock, not from either
 //! program's motion before or after it.
 
+use super::clock::on_its_clock;
 use super::compare::{compare, peer_snapshot};
-use super::result::{retimed, switches, PeerRow};
+use super::result::{switches, PeerRow};
 use super::PeerError;
 use physics::dispatch::sliding_model;
 use physics::scene::Scene;
@@ -28,13 +29,13 @@ pub struct RelockSplit {
 }
 
 /// The split of `rows` (a peer record of `scene`), or `None` when the peer never relocks.
-pub fn split(scene: &Scene, rows: &[PeerRow]) -> Result<Option<RelockSplit>, PeerError> {
+pub fn split(scene: &Scene, raw: &[PeerRow]) -> Result<Option<RelockSplit>, PeerError> {
     let dt = scene.sample.unwrap_or(1e-3);
-    let rows = retimed(rows, dt);
+    let rows = on_its_clock(raw).0;
     let Some(&(relock, _)) = switches(&rows).iter().find(|(_, rolling)| *rolling) else {
         return Ok(None);
     };
-    let whole = compare(scene, &rows)?;
+    let whole = compare(scene, raw)?;
     let slip_end = whole
         .switches
         .first()

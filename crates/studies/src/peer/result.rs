@@ -20,6 +20,10 @@ pub struct PeerRow {
     pub rolling: bool,
     /// The contact point's slip speed (m/s).
     pub slip_speed: f64,
+    /// The normal force over the weight, $F_z/mg$ (its `FN/WGT`).
+    pub normal: f64,
+    /// The friction force's size over the weight, $|\mathbf F_t|/mg$ (its `FT/WGT`).
+    pub tangential: f64,
 }
 
 /// The rows of a `result.txt` text; `file` names it in errors.
@@ -78,6 +82,8 @@ pub fn parse(text: &str, file: &str) -> Result<Vec<PeerRow>, PeerError> {
             },
             rolling,
             slip_speed: x[28],
+            normal: x[25],
+            tangential: x[26],
         });
     }
     if rows.is_empty() {
@@ -88,26 +94,6 @@ pub fn parse(text: &str, file: &str) -> Result<Vec<PeerRow>, PeerError> {
         ));
     }
     Ok(rows)
-}
-
-/// The rows on the clock of the run they record. After a relock found at its first print step,
-/// which it does not carry out, the peer restarts sliding from the state one print step `dt`
-/// on with its clock set back to 0: its record then holds two rows at $t = 0$, the second
-/// already one print step on (its $\psi$ advanced by $\dot\psi\,dt$), and every later row is
-/// labelled one print step early. Those rows are moved to their times; a record without that
-/// restart is returned as it is.
-pub fn retimed(rows: &[PeerRow], dt: f64) -> Vec<PeerRow> {
-    let restarted = matches!(rows, [first, second, ..] if first.t == 0.0 && second.t == 0.0 && first.state != second.state);
-    rows.iter()
-        .enumerate()
-        .map(|(i, r)| {
-            let mut r = r.clone();
-            if restarted && i > 0 {
-                r.t += dt;
-            }
-            r
-        })
-        .collect()
 }
 
 /// The times at which the mode changes: the first row in the new mode.
@@ -144,33 +130,5 @@ mod tests {
         let e = parse(&broken, "r.txt").unwrap_err().to_string();
         assert!(e.contains("r.txt:2"), "{e}");
         assert!(parse("x\n", "r.txt").is_err());
-    }
-
-    #[test]
-    fn a_restart_at_the_first_print_step_is_moved_one_step_on() {
-        let head = "TNOW\n";
-        let row = |t: f64, psi: f64| {
-            let mut s = format!("{t:18.7}{psi:18.7}");
-            for _ in 2..NUMBERS {
-                s.push_str(&format!("{:18.7}", 0.5));
-            }
-            format!("{s}      rolling\n")
-        };
-        let text = format!(
-            "{head}{}{}{}",
-            row(0.0, 0.0),
-            row(0.0, 0.01),
-            row(0.001, 0.02)
-        );
-        let rows = parse(&text, "r.txt").unwrap();
-        let t: Vec<f64> = retimed(&rows, 1e-3).iter().map(|r| r.t).collect();
-        assert_eq!(t, vec![0.0, 1e-3, 2e-3]);
-        // Without the restart's second row at t = 0, the rows keep their times.
-        let plain = parse(
-            &format!("{head}{}{}", row(0.0, 0.0), row(0.001, 0.01)),
-            "r.txt",
-        )
-        .unwrap();
-        assert_eq!(retimed(&plain, 1e-3), plain);
     }
 }

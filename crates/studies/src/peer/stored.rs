@@ -4,9 +4,10 @@
 //! the same scene run with $\varepsilon = 10^{-7}$ m/s (`eps-1e-7/`). Their provenance (the
 //! peer's commit, compiler and response file) is in each folder's `provenance.txt`.
 
+use super::clock::on_its_clock;
 use super::compare::{compare, Largest, PeerComparison};
 use super::relock::{split, RelockSplit};
-use super::result::{parse, retimed};
+use super::result::parse;
 use super::PeerError;
 use physics::scene::Scene;
 use serde::Serialize;
@@ -239,7 +240,7 @@ pub struct StoredComparison {
     /// What explains what remains above the printed digits.
     pub explained_by: String,
     /// True when the peer restarted its clock after a relock at its first print step
-    /// ([`super::result::retimed`]), in the run with $\varepsilon = 10^{-7}$ m/s if stored.
+    /// ([`super::clock::on_its_clock`]), in the run with $\varepsilon = 10^{-7}$ m/s if stored.
     pub restarted: bool,
     /// The peer's least $|\theta|$, the tilt from upright (rad): its near-vertical smoothing
     /// acts below 0.02 rad.
@@ -278,7 +279,10 @@ pub fn compare_stored() -> Result<Vec<StoredComparison>, PeerError> {
                         .sharp
                         .map_or((s.result, "result.txt"), |t| (t, "eps-1e-7/result.txt"));
                     let r = rows(text, what)?;
-                    retimed(&r, scene.sample.unwrap_or(1e-3)) != r
+                    on_its_clock(&r)
+                        .1
+                        .iter()
+                        .any(|b| !b.relock && b.offset != 0.0)
                 },
                 relock: match s.sharp {
                     Some(t) => split(&scene, &rows(t, "eps-1e-7/result.txt")?)?,
