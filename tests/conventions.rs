@@ -21,7 +21,10 @@ fn the_version_names_the_commit_it_is_built_from() {
     assert!(out.status.success());
     let version = text(&out.stdout);
     assert!(
-        version.starts_with(&format!("rolling-disk {} (commit ", env!("CARGO_PKG_VERSION"))),
+        version.starts_with(&format!(
+            "rolling-disk {} (commit ",
+            env!("CARGO_PKG_VERSION")
+        )),
         "{version}"
     );
     let commit = version
@@ -99,7 +102,12 @@ fn quiet_keeps_the_data_and_drops_the_notes() {
     assert!(loud.status.success(), "{}", text(&loud.stderr));
     assert!(text(&loud.stdout).contains("wrote "));
     let quiet = run(&[
-        "--quiet", "figures", "--only", "stability", "--out", out_arg,
+        "--quiet",
+        "figures",
+        "--only",
+        "stability",
+        "--out",
+        out_arg,
     ]);
     assert!(quiet.status.success(), "{}", text(&quiet.stderr));
     assert_eq!(text(&quiet.stdout), "", "--quiet still noted what it wrote");
@@ -117,14 +125,23 @@ fn figures_are_listed_and_a_mistyped_name_gets_the_nearest() {
     let out = run(&["figures", "--list"]);
     assert!(out.status.success());
     let names: Vec<String> = text(&out.stdout).lines().map(String::from).collect();
-    assert!(names.len() > 10 && names.contains(&"fig1".to_string()), "{names:?}");
+    assert!(
+        names.len() > 10 && names.contains(&"fig1".to_string()),
+        "{names:?}"
+    );
     let wrong = run(&["figures", "--only", "stabilty", "--out", "/nonexistent/x"]);
     assert!(!wrong.status.success());
     let message = text(&wrong.stderr);
     assert!(message.contains("did you mean stability?"), "{message}");
     // Applying the advice works.
     let dir = std::env::temp_dir().join(format!("rd-nearest-{}", std::process::id()));
-    let right = run(&["figures", "--only", "stability", "--out", dir.to_str().unwrap()]);
+    let right = run(&[
+        "figures",
+        "--only",
+        "stability",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
     assert!(right.status.success(), "{}", text(&right.stderr));
     let _ = std::fs::remove_dir_all(&dir);
 }
@@ -142,7 +159,10 @@ fn a_mistyped_scene_gets_the_nearest_built_in_one() {
         .unwrap()
         .to_string();
     let scenes = text(&run(&["scenes"]).stdout);
-    assert!(scenes.contains(&suggested), "{suggested} is not a built-in scene");
+    assert!(
+        scenes.contains(&suggested),
+        "{suggested} is not a built-in scene"
+    );
     // A name far from every scene gets no guess.
     let far = text(&run(&["simulate", "zzzzzzzzzzzz"]).stderr);
     assert!(!far.contains("did you mean"), "{far}");

@@ -44,7 +44,12 @@ impl Args {
 pub(crate) fn nearest<'n>(name: &str, names: &[&'n str]) -> Option<&'n str> {
     names
         .iter()
-        .map(|n| (strsim::levenshtein(&name.to_lowercase(), &n.to_lowercase()), *n))
+        .map(|n| {
+            (
+                strsim::levenshtein(&name.to_lowercase(), &n.to_lowercase()),
+                *n,
+            )
+        })
         .min()
         .filter(|(d, _)| *d <= (name.len() / 3).max(2))
         .map(|(_, n)| n)

@@ -194,7 +194,7 @@ pub(super) fn hint(name: &str) -> Option<&'static str> {
         }
         "ast" | "*" | "\u{d7}" | "\u{b7}" => "write a product as juxtaposition (k m) or with \\cdot",
         "exp" | "ln" | "log" => {
-            "the reader knows \\sin, \\cos, \\tan, \\cot, \\sqrt and powers x^{n}, as the paper uses"
+            "the reader has no exponential or logarithm (the paper uses none), so this equation cannot be checked as written; it knows \\sin, \\cos, \\tan, \\cot, \\sqrt and powers x^{n}"
         }
         "tanh" | "sinh" | "cosh" | "arctan" | "arcsin" | "arccos" => {
             "the reader knows \\sin, \\cos, \\tan, \\cot and \\sqrt"

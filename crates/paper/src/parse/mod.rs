@@ -190,6 +190,15 @@ impl Parser {
                 w.chars().take(40).collect::<String>(),
                 lex::hint("text").unwrap_or_default()
             ),
+            Some(t @ (Tok::Equals | Tok::Less | Tok::Greater)) => format!(
+                "{} (a relation needs a quantity on its left: where words stand between two \
+                 relations, write the quantity again after them, as in x = a \\text{{ and }} x = b)",
+                match t {
+                    Tok::Equals => "=",
+                    Tok::Less => "<",
+                    _ => ">",
+                }
+            ),
             Some(Tok::Amp) => {
                 "& (an alignment point belongs between the sides of a relation, as in a &= b)"
                     .into()

@@ -172,6 +172,11 @@ fn every_hint_applied_reads() {
         ),
         (r"x = a^23", "with braces", r"x = a^{23}"),
         (
+            r"x = a \text{ and } = b",
+            "write the quantity again",
+            r"x = a \text{ and } x = b",
+        ),
+        (
             r"x = \frac{d}{dt} \dot\Omega",
             r"\frac{d^2 X}{dt^2}",
             r"x = \frac{d^2 \Omega}{dt^2}",
