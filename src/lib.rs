@@ -21,13 +21,8 @@ macro_rules! println {
 
 pub mod cli;
 
-/// The program's version and the commit it is built from (`build.rs`).
-pub const VERSION: &str = concat!(
-    env!("CARGO_PKG_VERSION"),
-    " (commit ",
-    env!("ROLLING_DISK_COMMIT"),
-    ")"
-);
+/// The program's version and the commit it is built from ([`report::TOOL_VERSION`]).
+pub const VERSION: &str = report::TOOL_VERSION;
 
 /// The command line.
 #[derive(Parser)]

@@ -47,6 +47,24 @@ fn the_version_names_the_commit_it_is_built_from() {
 }
 
 #[test]
+fn every_output_names_the_version_and_commit_that_made_it() {
+    let version = text(&run(&["--version"]).stdout);
+    let version = version
+        .trim()
+        .strip_prefix("rolling-disk ")
+        .unwrap()
+        .to_string();
+    let out = run(&["check", "--only", "22", "--json"]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(
+        json["tool"]["version"],
+        version.as_str(),
+        "check --json's provenance"
+    );
+}
+
+#[test]
 fn completions_name_every_command() {
     let commands = [
         "simulate",

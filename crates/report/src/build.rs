@@ -219,7 +219,7 @@ pub fn from_results(
 
     let report = Report {
         paper: super::document::PAPER.into(),
-        version: env!("CARGO_PKG_VERSION").into(),
+        version: crate::TOOL_VERSION.into(),
         settings,
         summary: Summary {
             equations: Tally::of(eqs.iter().copied()),

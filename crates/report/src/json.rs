@@ -107,16 +107,16 @@ pub struct CorrectionRecord {
 pub struct Tool {
     /// `rolling-disk`.
     pub name: String,
-    /// Its version.
+    /// Its version and the commit it is built from (`0.1.0 (commit 1a2b3c4d5e6f)`).
     pub version: String,
 }
 
 impl Tool {
-    /// This tool: the `rolling-disk` binary at the workspace's version.
+    /// This tool: the `rolling-disk` binary at the workspace's version and its commit.
     pub fn this() -> Self {
         Tool {
             name: "rolling-disk".into(),
-            version: env!("CARGO_PKG_VERSION").into(),
+            version: crate::TOOL_VERSION.into(),
         }
     }
 }

@@ -21,6 +21,15 @@ pub mod study_table;
 pub mod tex;
 pub mod text_cells;
 
+/// The tool's version and the commit it is built from (`build.rs`), as `--version` and every
+/// output's provenance name it.
+pub const TOOL_VERSION: &str = concat!(
+    env!("CARGO_PKG_VERSION"),
+    " (commit ",
+    env!("ROLLING_DISK_COMMIT"),
+    ")"
+);
+
 use checks::check::Tally;
 use serde::Serialize;
 
