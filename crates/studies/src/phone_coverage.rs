@@ -81,6 +81,17 @@ impl PhoneCoverage {
     }
 }
 
+/// The study as stored in `snapshots/phone_coverage.json`, with the command that made it.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct StoredPhoneCoverage {
+    /// The command that ran and stored it.
+    pub command: String,
+    /// The first recording's seed.
+    pub seed0: u64,
+    /// The study.
+    pub study: PhoneCoverage,
+}
+
 /// Analyses the recording of seed `seed`.
 pub fn phone_outcome(seed: u64) -> Result<PhoneOutcome, ExperimentError> {
     let room = PhoneRoom::draw(seed);
@@ -161,7 +172,73 @@ mod tests {
         .unwrap();
         for o in &c.outcomes {
             println!("{o:?}");
+            // With ROLLING_DISK_WAV_DIR, each refused recording is written there to be looked at.
+            if let (Some(_), Ok(dir)) = (&o.refused, std::env::var("ROLLING_DISK_WAV_DIR")) {
+                let room = PhoneRoom::draw(o.seed);
+                println!("  {room:?}");
+                let wav = room.record().unwrap().wav().unwrap();
+                std::fs::write(format!("{dir}/phone-{}.wav", o.seed), wav).unwrap();
+            }
         }
         println!("{}", c.summary());
+    }
+
+    /// The rooms and pitch tracks of the seeds in `ROLLING_DISK_SEEDS` (comma-separated).
+    #[test]
+    #[ignore = "prints the tracks of chosen recordings"]
+    fn print_tracks() {
+        let seeds = std::env::var("ROLLING_DISK_SEEDS").unwrap_or_default();
+        for seed in seeds.split(',').filter_map(|s| s.parse::<u64>().ok()) {
+            let room = PhoneRoom::draw(seed);
+            let f0 = room.law.precession(room.sound) / std::f64::consts::TAU;
+            println!(
+                "seed {seed}: {} S/s, sound {:.2} s from {f0:.1} Hz, lead {:.2}, high-pass {:.0} Hz, hum {:?} at {}, agc {:.2}, clip {:.2}, bumps {:?}, reverb {:?}, harmonics {:?}",
+                room.sample_rate, room.sound, room.lead, room.high_pass, room.hum.lines, room.hum.mains, room.agc, room.clip, room.bumps, room.reverb, room.harmonics
+            );
+            let rec = room.record().unwrap();
+            let r = parse_recording(rec.wav().unwrap(), "x.wav", Channels::Mix).unwrap();
+            match experiment::sound_analysis::track::frequency_track(
+                &r.trace,
+                &TrackSettings::default(),
+            ) {
+                Ok(t) => {
+                    println!(
+                        "  frames {} silent {} stray {} smeared {} hum {:?}",
+                        t.frames, t.silent, t.stray, t.smeared, t.hum
+                    );
+                    for p in &t.points {
+                        let tau = room.t0() - 0.5 * (p.a + p.b);
+                        println!(
+                            "  {:.3}-{:.3} f {:.2} Hz (true {:.2}) snr {:.0}",
+                            p.a,
+                            p.b,
+                            p.omega / std::f64::consts::TAU,
+                            room.law.precession(tau) / std::f64::consts::TAU,
+                            p.snr
+                        );
+                    }
+                }
+                Err(e) => println!("  {e}"),
+            }
+        }
+    }
+
+    /// Writes a phone's 60 s stereo recording at 48 kHz (seed 2's room, with its sound made
+    /// 58 s long) to `ROLLING_DISK_WAV`, for timing `experiment analyze` on it.
+    #[test]
+    #[ignore = "writes a file for timing the analysis"]
+    fn write_a_minute_of_stereo() {
+        let Ok(path) = std::env::var("ROLLING_DISK_WAV") else {
+            return;
+        };
+        let mut room = PhoneRoom::draw(2);
+        room.sample_rate = 48_000;
+        room.lead = 1.0;
+        room.sound = 58.0;
+        room.tail = 1.0;
+        room.law.c = (std::f64::consts::TAU * 8.0).powf(room.law.beta + 2.0) * room.sound;
+        let rec = room.record().unwrap();
+        std::fs::write(&path, rec.wav().unwrap()).unwrap();
+        println!("{path}: {:?}, t0 = {} s", room.law, room.t0());
     }
 }

@@ -3,13 +3,13 @@
 //! (16-bit, 24-bit or float, any rate) by `experiment simulate`.
 //!
 //! Reading goes through [`read_bounded`](crate::formats::input::read_bounded) like every
-//! file; the header's sample count is checked against [`MAX_SAMPLES`] before any sample is
+//! file; the header's sample count is checked against [`MAX_SOUND_SAMPLES`] before any sample is
 //! decoded. [`read_wav`] averages the channels;
 //! [`read_recording`](crate::formats::recording::read_recording) can choose one.
 
 use crate::error::ExperimentError;
 use crate::formats::channel::{mix, Channels};
-use crate::formats::input::{read_bounded, MAX_BYTES, MAX_SAMPLES};
+use crate::formats::input::{read_bounded, MAX_BYTES, MAX_SOUND_SAMPLES};
 use crate::trace::Trace;
 use hound::{SampleFormat, WavReader, WavSpec, WavWriter};
 use std::io::Cursor;
@@ -52,11 +52,11 @@ pub(crate) fn decode_wav(
         return Err(wav("a sample rate of 0".into()));
     }
     let frames = reader.duration() as usize;
-    if frames > MAX_SAMPLES {
+    if frames > MAX_SOUND_SAMPLES {
         return Err(ExperimentError::TooManySamples {
             file: file.into(),
             line: 0,
-            limit: MAX_SAMPLES,
+            limit: MAX_SOUND_SAMPLES,
         });
     }
     let mut v = Vec::with_capacity(frames * ch);

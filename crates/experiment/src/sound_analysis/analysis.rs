@@ -18,7 +18,7 @@ use crate::fit::band::Row;
 use crate::fit::eq84_85::{start84, FixedBeta};
 use crate::fit::law_choice::{compare, Comparison};
 use crate::fit::least_squares::{solve, FitError, Problem, Scale};
-use crate::fit::plausibility::{Evidence, Plausibility, Verdict};
+use crate::fit::plausibility::{Evidence, Plausibility, Points, Verdict, SOUND_MIN_FRAMES};
 use crate::sound_analysis::phase_blocks::{BlockSettings, Samples};
 use crate::sound_analysis::phase_fit::{fit_phase, PhaseFit};
 use crate::sound_analysis::track::{frequency_track, FrequencyTrack, TrackSettings};
@@ -210,18 +210,21 @@ pub fn analyze_sound_within(
         n: y.len(),
         model: s.model.clone(),
     };
-    let verdict = checks.judge(&Evidence {
-        t: &mid,
-        omega: &y,
-        anomalous: track.stray,
-        y: &y,
-        residual: &s.residual,
-        crossover_residual_ss: None,
-        beta: fit.beta,
-        t0: fit.t0,
-        t_first: a[0],
-        t_last: bmax,
-    });
+    let verdict = checks.judge_points(
+        &Evidence {
+            t: &mid,
+            omega: &y,
+            anomalous: track.stray,
+            y: &y,
+            residual: &s.residual,
+            crossover_residual_ss: None,
+            beta: fit.beta,
+            t0: fit.t0,
+            t_first: a[0],
+            t_last: bmax,
+        },
+        Points::Frames(SOUND_MIN_FRAMES),
+    );
     if !verdict.refusals.is_empty() {
         return Err(refuse(verdict.refusals.join("; ")));
     }
@@ -416,22 +419,41 @@ impl fmt::Display for SoundAnalysis {
     }
 }
 
+/// The part of two fits' difference `d` that the less precise fit's own noise does not explain:
+/// where the phase's fit is the efficient one, the pitch track's estimate is it plus noise of
+/// variance $\sigma_{pitch}^2 - \sigma_{phase}^2$, so
+/// $$u = \sqrt{\max\left(0,\; d^2 - (\sigma_{pitch}^2 - \sigma_{phase}^2)\right)}$$
+/// is what a nuisance (a filter's phase, reverberation, a bump) moved one fit from the other.
+pub fn disagreement(d: f64, sigma_pitch: f64, sigma_phase: f64) -> f64 {
+    let own = (sigma_pitch.powi(2) - sigma_phase.powi(2)).max(0.0);
+    (d * d - own).max(0.0).sqrt()
+}
+
 impl SoundAnalysis {
-    /// The result: eq 79 fitted to the phase when it was, else to the pitch track.
+    /// The result: eq 79 fitted to the phase when it was, else to the pitch track. The phase's
+    /// uncertainty is its fit's, the law's drift and the two fits' [`disagreement`] beyond the
+    /// pitch track's own noise, in quadrature.
     pub fn law(&self) -> SoundLaw {
+        let x = &self.fit;
         match &self.phase {
             Some(p) if self.phase_implausible().is_none() => SoundLaw {
                 beta: p.beta,
-                beta_sigma: p.beta_total(),
+                beta_sigma: p.beta_total().hypot(disagreement(
+                    p.beta - x.beta,
+                    x.beta_sigma,
+                    p.beta_sigma,
+                )),
                 t0: p.t0,
-                t0_sigma: p.t0_total(),
+                t0_sigma: p
+                    .t0_total()
+                    .hypot(disagreement(p.t0 - x.t0, x.t0_sigma, p.t0_sigma)),
                 from_phase: true,
             },
             _ => SoundLaw {
-                beta: self.fit.beta,
-                beta_sigma: self.fit.beta_sigma,
-                t0: self.fit.t0,
-                t0_sigma: self.fit.t0_sigma,
+                beta: x.beta,
+                beta_sigma: x.beta_sigma,
+                t0: x.t0,
+                t0_sigma: x.t0_sigma,
                 from_phase: false,
             },
         }
