@@ -419,34 +419,16 @@ impl fmt::Display for SoundAnalysis {
     }
 }
 
-/// The part of two fits' difference `d` that the less precise fit's own noise does not explain:
-/// where the phase's fit is the efficient one, the pitch track's estimate is it plus noise of
-/// variance $\sigma_{pitch}^2 - \sigma_{phase}^2$, so
-/// $$u = \sqrt{\max\left(0,\; d^2 - (\sigma_{pitch}^2 - \sigma_{phase}^2)\right)}$$
-/// is what a nuisance (a filter's phase, reverberation, a bump) moved one fit from the other.
-pub fn disagreement(d: f64, sigma_pitch: f64, sigma_phase: f64) -> f64 {
-    let own = (sigma_pitch.powi(2) - sigma_phase.powi(2)).max(0.0);
-    (d * d - own).max(0.0).sqrt()
-}
-
 impl SoundAnalysis {
-    /// The result: eq 79 fitted to the phase when it was, else to the pitch track. The phase's
-    /// uncertainty is its fit's, the law's drift and the two fits' [`disagreement`] beyond the
-    /// pitch track's own noise, in quadrature.
+    /// The result: eq 79 fitted to the phase when it was, else to the pitch track.
     pub fn law(&self) -> SoundLaw {
         let x = &self.fit;
         match &self.phase {
             Some(p) if self.phase_implausible().is_none() => SoundLaw {
                 beta: p.beta,
-                beta_sigma: p.beta_total().hypot(disagreement(
-                    p.beta - x.beta,
-                    x.beta_sigma,
-                    p.beta_sigma,
-                )),
+                beta_sigma: p.beta_total(),
                 t0: p.t0,
-                t0_sigma: p
-                    .t0_total()
-                    .hypot(disagreement(p.t0 - x.t0, x.t0_sigma, p.t0_sigma)),
+                t0_sigma: p.t0_total(),
                 from_phase: true,
             },
             _ => SoundLaw {
