@@ -20,6 +20,7 @@ mod experiment_formats;
 mod experiment_hum;
 mod experiment_inputs;
 mod experiment_models;
+mod experiment_phone;
 mod experiment_sound_bound;
 mod experiment_turn_count;
 mod extremes;

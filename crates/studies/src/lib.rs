@@ -13,6 +13,7 @@
 //!   sec. 11 simulated and analysed).
 //! - the Monte Carlo studies of the experiment's analysis, over many simulated records:
 //!   [`coverage`] (do the light's stated intervals hold?), [`sound_coverage`] (the sound's),
+//!   [`phone_coverage`] (the sound's on phones' recordings of real rooms, the realistic set),
 //!   [`coverage_record`] (both as stored for the report), [`law_choice_study`] (how often the
 //!   law choice takes one mechanism for two; stored as the calibration the choice states).
 
@@ -25,6 +26,7 @@ pub mod frequency;
 pub mod lab_frame;
 pub mod law_choice_study;
 pub mod peer;
+pub mod phone_coverage;
 pub mod precision;
 pub mod runs;
 pub mod sliding;

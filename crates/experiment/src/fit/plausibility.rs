@@ -117,24 +117,57 @@ pub struct Evidence<'a> {
     pub t_last: f64,
 }
 
+/// What the fitted points are: the light's cycles (one pulse per turn) or the sound's frames
+/// of its pitch track. The checks are the same; their sentences name what was counted.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Points {
+    /// The light signal's cycles, peak to peak.
+    Cycles,
+    /// The sound's pitch-track frames, with the fewest a fit of eq 79 is judged on.
+    Frames(usize),
+}
+
+/// The fewest pitch-track frames a sound's fit is judged on: twice eq 79's three parameters
+/// and two more, so that the rise, Kendall's $\tau$ and $R^2$ are measured on more points than
+/// the law has parameters; a spin of 1-5 s of sound holds 8-20 frames of the track.
+pub const SOUND_MIN_FRAMES: usize = 8;
+
 impl Plausibility {
-    /// Runs the checks.
+    /// Runs the checks on the light's cycles.
     pub fn judge(&self, e: &Evidence) -> Verdict {
+        self.judge_points(e, Points::Cycles)
+    }
+
+    /// Runs the checks on `points`.
+    pub fn judge_points(&self, e: &Evidence, points: Points) -> Verdict {
         let n = e.t.len();
         let mut refusals = Vec::new();
-        if n < self.min_cycles {
-            refusals.push(format!(
+        match points {
+            Points::Cycles if n < self.min_cycles => refusals.push(format!(
                 "{n} cycles in the fitting window, fewer than the {} a power law needs",
                 self.min_cycles
-            ));
+            )),
+            Points::Frames(min) if n < min => refusals.push(format!(
+                "{n} frames of the pitch track hold the disk's line, fewer than the {min} a fit \
+                 of eq 79 is judged on: record the spin from earlier, or closer to the disk"
+            )),
+            _ => {}
         }
         let all = n + e.anomalous;
         if all > 0 && e.anomalous as f64 > self.max_anomalous * all as f64 {
-            refusals.push(format!(
-                "{} of {all} cycles are anomalous (a missed or stray peak): the signal does not \
-                 show one pulse per turn",
-                e.anomalous
-            ));
+            refusals.push(match points {
+                Points::Cycles => format!(
+                    "{} of {all} cycles are anomalous (a missed or stray peak): the signal does \
+                     not show one pulse per turn",
+                    e.anomalous
+                ),
+                Points::Frames(_) => format!(
+                    "{} of {all} frames of the pitch track lie off the disk's line (stray): the \
+                     line is not followed steadily; record closer to the disk, away from other \
+                     sounds",
+                    e.anomalous
+                ),
+            });
         }
         let tau = kendall(e.t, e.omega);
         let rise = match (e.omega.first(), e.omega.last()) {
@@ -179,11 +212,16 @@ impl Plausibility {
         let gap = (e.t0 - e.t_last) / span;
         if !(gap.is_finite() && gap < self.max_gap) {
             refusals.push(format!(
-                "the fitted end t0 = {:.4} s lies {:.4} s after the last fitted peak, {gap:.2} of \
-                 the window's span (at most {} for a rate that runs away as a spin-down's does)",
+                "the fitted end t0 = {:.4} s lies {:.4} s after the last fitted {last}, \
+                 {gap:.2} of the window's span (at most {} for a rate that runs away as a \
+                 spin-down's does)",
                 e.t0,
                 e.t0 - e.t_last,
-                self.max_gap
+                self.max_gap,
+                last = match points {
+                    Points::Cycles => "peak",
+                    Points::Frames(_) => "frame",
+                },
             ));
         }
         let (lo, hi) = self.beta_range;

@@ -18,6 +18,11 @@ pub const MAX_BYTES: u64 = 256 * 1024 * 1024;
 /// of 50,000 samples (10 s at 5 kS/s), or 41 s of audio at 48 kHz.
 pub const MAX_SAMPLES: usize = 2_000_000;
 
+/// The most samples (per channel) a sound recording may hold: 6,000,000, 125 s at 48 kHz or
+/// 62.5 s at 96 kHz (a spin-down's whole sound with its lead-in); decoded as two channels of
+/// 64-bit samples they take 96 MB.
+pub const MAX_SOUND_SAMPLES: usize = 6_000_000;
+
 /// Reads a regular file of at most `limit` bytes.
 pub fn read_bounded(path: &Path, limit: u64) -> Result<Vec<u8>, ExperimentError> {
     let file = path.display().to_string();

@@ -10,12 +10,12 @@
 //!
 //! The container is recognised by its first bytes, not by the file's name. Every file goes
 //! through [`read_bounded`] (size limit, regular files only); the decoded length is checked
-//! against [`MAX_SAMPLES`] per channel while decoding, so memory stays bounded. The channels are
+//! against [`MAX_SOUND_SAMPLES`] per channel while decoding, so memory stays bounded. The channels are
 //! averaged, or one is chosen ([`Channels`]).
 
 use crate::error::ExperimentError;
 use crate::formats::channel::{mix, refuse, Channels, Recording};
-use crate::formats::input::{read_bounded, MAX_BYTES, MAX_SAMPLES};
+use crate::formats::input::{read_bounded, MAX_BYTES, MAX_SOUND_SAMPLES};
 use std::path::Path;
 use symphonia::core::audio::SampleBuffer;
 use symphonia::core::codecs::{DecoderOptions, CODEC_TYPE_NULL};
@@ -160,11 +160,14 @@ fn decode_compressed(
         .map_or("unknown coding", |d| d.long_name);
     let format = format!("{container}, {codec}");
     let n_ch = params.channels.map_or(0, |c| c.count());
-    if params.n_frames.is_some_and(|n| n > MAX_SAMPLES as u64) {
+    if params
+        .n_frames
+        .is_some_and(|n| n > MAX_SOUND_SAMPLES as u64)
+    {
         return Err(ExperimentError::TooManySamples {
             file: file.into(),
             line: 0,
-            limit: MAX_SAMPLES,
+            limit: MAX_SOUND_SAMPLES,
         });
     }
     let mut decoder = symphonia::default::get_codecs()
@@ -194,11 +197,11 @@ fn decode_compressed(
         let mut sb = SampleBuffer::<f32>::new(buf.capacity() as u64, spec);
         sb.copy_interleaved_ref(buf);
         out.extend(sb.samples().iter().map(|&x| f64::from(x)));
-        if out.len() > MAX_SAMPLES * channels.max(1) {
+        if out.len() > MAX_SOUND_SAMPLES * channels.max(1) {
             return Err(ExperimentError::TooManySamples {
                 file: file.into(),
                 line: 0,
-                limit: MAX_SAMPLES,
+                limit: MAX_SOUND_SAMPLES,
             });
         }
     }

@@ -3,13 +3,13 @@
 //! (16-bit, 24-bit or float, any rate) by `experiment simulate`.
 //!
 //! Reading goes through [`read_bounded`](crate::formats::input::read_bounded) like every
-//! file; the header's sample count is checked against [`MAX_SAMPLES`] before any sample is
+//! file; the header's sample count is checked against [`MAX_SOUND_SAMPLES`] before any sample is
 //! decoded. [`read_wav`] averages the channels;
 //! [`read_recording`](crate::formats::recording::read_recording) can choose one.
 
 use crate::error::ExperimentError;
 use crate::formats::channel::{mix, Channels};
-use crate::formats::input::{read_bounded, MAX_BYTES, MAX_SAMPLES};
+use crate::formats::input::{read_bounded, MAX_BYTES, MAX_SOUND_SAMPLES};
 use crate::trace::Trace;
 use hound::{SampleFormat, WavReader, WavSpec, WavWriter};
 use std::io::Cursor;
@@ -52,11 +52,11 @@ pub(crate) fn decode_wav(
         return Err(wav("a sample rate of 0".into()));
     }
     let frames = reader.duration() as usize;
-    if frames > MAX_SAMPLES {
+    if frames > MAX_SOUND_SAMPLES {
         return Err(ExperimentError::TooManySamples {
             file: file.into(),
             line: 0,
-            limit: MAX_SAMPLES,
+            limit: MAX_SOUND_SAMPLES,
         });
     }
     let mut v = Vec::with_capacity(frames * ch);
@@ -103,21 +103,32 @@ pub fn wav_bytes(v: &[f64], sample_rate: u32) -> Result<Vec<u8>, hound::Error> {
 
 /// Encodes a uniformly sampled signal (full scale 1, clipped there) as mono WAV bytes.
 pub fn encode_wav(v: &[f64], sample_rate: u32, coding: WavCoding) -> Result<Vec<u8>, hound::Error> {
+    encode_wav_channels(&[v], sample_rate, coding)
+}
+
+/// Encodes channels of equal length (full scale 1, clipped there) as one WAV's bytes, the
+/// channels interleaved in the order given.
+pub fn encode_wav_channels(
+    channels: &[&[f64]],
+    sample_rate: u32,
+    coding: WavCoding,
+) -> Result<Vec<u8>, hound::Error> {
     let (bits, sample_format) = match coding {
         WavCoding::Int16 => (16, SampleFormat::Int),
         WavCoding::Int24 => (24, SampleFormat::Int),
         WavCoding::Float32 => (32, SampleFormat::Float),
     };
+    let n = channels.iter().map(|c| c.len()).min().unwrap_or(0);
     let spec = WavSpec {
-        channels: 1,
+        channels: channels.len() as u16,
         sample_rate,
         bits_per_sample: bits,
         sample_format,
     };
-    let mut out = Cursor::new(Vec::with_capacity(4 * v.len() + 64));
+    let mut out = Cursor::new(Vec::with_capacity(4 * n * channels.len() + 64));
     {
         let mut w = WavWriter::new(&mut out, spec)?;
-        for &x in v {
+        for x in (0..n).flat_map(|j| channels.iter().map(move |c| c[j])) {
             let x = x.clamp(-1.0, 1.0);
             match coding {
                 WavCoding::Int16 => w.write_sample((x * 32767.0).round() as i16)?,

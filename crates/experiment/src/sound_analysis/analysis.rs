@@ -18,7 +18,7 @@ use crate::fit::band::Row;
 use crate::fit::eq84_85::{start84, FixedBeta};
 use crate::fit::law_choice::{compare, Comparison};
 use crate::fit::least_squares::{solve, FitError, Problem, Scale};
-use crate::fit::plausibility::{Evidence, Plausibility, Verdict};
+use crate::fit::plausibility::{Evidence, Plausibility, Points, Verdict, SOUND_MIN_FRAMES};
 use crate::sound_analysis::phase_blocks::{BlockSettings, Samples};
 use crate::sound_analysis::phase_fit::{fit_phase, PhaseFit};
 use crate::sound_analysis::track::{frequency_track, FrequencyTrack, TrackSettings};
@@ -210,18 +210,21 @@ pub fn analyze_sound_within(
         n: y.len(),
         model: s.model.clone(),
     };
-    let verdict = checks.judge(&Evidence {
-        t: &mid,
-        omega: &y,
-        anomalous: track.stray,
-        y: &y,
-        residual: &s.residual,
-        crossover_residual_ss: None,
-        beta: fit.beta,
-        t0: fit.t0,
-        t_first: a[0],
-        t_last: bmax,
-    });
+    let verdict = checks.judge_points(
+        &Evidence {
+            t: &mid,
+            omega: &y,
+            anomalous: track.stray,
+            y: &y,
+            residual: &s.residual,
+            crossover_residual_ss: None,
+            beta: fit.beta,
+            t0: fit.t0,
+            t_first: a[0],
+            t_last: bmax,
+        },
+        Points::Frames(SOUND_MIN_FRAMES),
+    );
     if !verdict.refusals.is_empty() {
         return Err(refuse(verdict.refusals.join("; ")));
     }
@@ -419,6 +422,7 @@ impl fmt::Display for SoundAnalysis {
 impl SoundAnalysis {
     /// The result: eq 79 fitted to the phase when it was, else to the pitch track.
     pub fn law(&self) -> SoundLaw {
+        let x = &self.fit;
         match &self.phase {
             Some(p) if self.phase_implausible().is_none() => SoundLaw {
                 beta: p.beta,
@@ -428,10 +432,10 @@ impl SoundAnalysis {
                 from_phase: true,
             },
             _ => SoundLaw {
-                beta: self.fit.beta,
-                beta_sigma: self.fit.beta_sigma,
-                t0: self.fit.t0,
-                t0_sigma: self.fit.t0_sigma,
+                beta: x.beta,
+                beta_sigma: x.beta_sigma,
+                t0: x.t0,
+                t0_sigma: x.t0_sigma,
                 from_phase: false,
             },
         }

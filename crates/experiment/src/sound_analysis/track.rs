@@ -17,7 +17,10 @@
 //! $$T = \min\left(T_{max}, \sqrt{\kappa/|\dot f|}\right),$$
 //! long early where the pitch moves slowly, short near $t_0$, and at most half the time left
 //! to the singularity that $\dot f \propto f^q$ (fitted to the last three frames) predicts, so
-//! that no frame runs past the disk's end; and the search narrows to
+//! that no frame runs past the disk's end; a line too low for `cycles` periods in that frame
+//! (below 12 Hz at the defaults, or where a noisy $q$ predicts the end too near) is followed in
+//! frames of `cycles` periods, up to `search` seconds, where its motion allows them; and the
+//! search narrows to
 //! $\pm 20\,\%$ about the predicted pitch. The track ends where $T$ would hold fewer than
 //! `cycles` periods (the line smears near $t_0$) after four frames in a row held the line;
 //! that end counts as one smeared frame.
@@ -132,13 +135,16 @@ pub fn frequency_track(
     }
     let fs = 1.0 / dt;
     let span = trace.v.len() as f64 * dt;
-    if span < 8.0 * s.search {
+    if span < 4.0 * s.search {
         return Err(ExperimentError::TooFewPeaks {
             file,
             what: "seconds of sound".into(),
             found: span as usize,
-            needed: (8.0 * s.search).ceil() as usize,
-            hint: format!("record at least {:.1} s of sound", 8.0 * s.search),
+            needed: (4.0 * s.search).ceil() as usize,
+            hint: format!(
+                "record at least {:.1} s: start the recording before the disk is spun",
+                4.0 * s.search
+            ),
         });
     }
     let mut v = trace.v.clone();
@@ -243,12 +249,21 @@ fn march(v: &[f64], t0: f64, fs: f64, s: &TrackSettings) -> (Vec<Frame>, usize) 
                 let mut t = s.max_frame;
                 let mut f_mid = motion.f;
                 let limit = s.max_frame.min(0.5 * motion.remaining());
+                let mut allowed = t;
                 for _ in 0..3 {
                     f_mid = motion.pitch(motion.end + 0.5 * t);
                     let fdot = motion.slope(f_mid);
-                    t = (s.kappa / fdot.max(f64::MIN_POSITIVE)).sqrt().min(limit);
+                    allowed = (s.kappa / fdot.max(f64::MIN_POSITIVE)).sqrt();
+                    t = allowed.min(limit);
                 }
                 let n = frames.len();
+                // A line too low for `cycles` periods in the longest frame, or whose end three
+                // frames predict too near, but slow enough for a frame that holds them, is
+                // followed in that frame: only its motion ends the track.
+                let need = s.cycles / f_mid;
+                if t * f_mid < s.cycles && need <= allowed && need <= s.search {
+                    t = need;
+                }
                 if t * f_mid >= s.cycles {
                     (t, 0.8 * f_mid, 1.2 * f_mid)
                 } else if n >= 4 && one_line(&frames[n - 4..]) {
