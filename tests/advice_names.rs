@@ -101,7 +101,11 @@ fn collect(dir: &Path, into: &mut String) {
     for p in paths {
         if p.is_dir() {
             collect(&p, into);
-        } else if p.extension().is_some_and(|e| e == "rs") {
+        } else if p.extension().is_some_and(|e| e == "rs")
+            // A build script's literals are the options of the programs it runs (git), never
+            // shown to a user.
+            && p.file_name().is_some_and(|n| n != "build.rs")
+        {
             string_literals(&std::fs::read_to_string(&p).unwrap_or_default(), into);
         }
     }

@@ -107,6 +107,16 @@ fn without_quotes(v: &mut Value) {
                 let (x, y) = (c.as_f64().unwrap_or(0.0), r.as_f64().unwrap_or(0.0));
                 map.insert("claimed".into(), x.min(y).into());
                 map.insert("reference".into(), x.max(y).into());
+                // A reading inherited from a premise keeps the finding's own reference: one of
+                // the two sides, whichever the order written calls the reference.
+                if let Some(Value::Array(readings)) = map.get_mut("robustness") {
+                    for reading in readings.iter_mut() {
+                        let side = reading.get("reference").and_then(Value::as_f64);
+                        if side.is_some_and(|z| z == x || z == y) {
+                            reading["reference"] = "one of the two sides".into();
+                        }
+                    }
+                }
             }
             map.values_mut().for_each(without_quotes);
         }

@@ -86,7 +86,8 @@ fn completions_name_every_command() {
         for c in commands {
             assert!(script.contains(c), "{shell}'s completions lack {c}");
         }
-        assert!(script.contains("--paper"), "{shell}: no option --paper");
+        // fish names a long option as `-l paper`, the others as `--paper`.
+        assert!(script.contains("paper"), "{shell}: no option --paper");
     }
     let out = run(&["completions", "tcsh"]);
     assert!(!out.status.success());
@@ -116,14 +117,14 @@ fn quiet_keeps_the_data_and_drops_the_notes() {
     std::fs::create_dir_all(&dir).unwrap();
     let out_dir = dir.join("figs");
     let out_arg = out_dir.to_str().unwrap();
-    let loud = run(&["figures", "--only", "stability", "--out", out_arg]);
+    let loud = run(&["figures", "--only", "stability-map", "--out", out_arg]);
     assert!(loud.status.success(), "{}", text(&loud.stderr));
     assert!(text(&loud.stdout).contains("wrote "));
     let quiet = run(&[
         "--quiet",
         "figures",
         "--only",
-        "stability",
+        "stability-map",
         "--out",
         out_arg,
     ]);
@@ -131,10 +132,10 @@ fn quiet_keeps_the_data_and_drops_the_notes() {
     assert_eq!(text(&quiet.stdout), "", "--quiet still noted what it wrote");
     // Progress is for a person at a terminal: a pipe (as here) gets none.
     assert_eq!(text(&quiet.stderr), "");
-    assert!(out_dir.join("stability.svg").exists());
+    assert!(out_dir.join("stability-map.svg").exists());
     // The data a command is for is kept.
     let listed = run(&["-q", "figures", "--list"]);
-    assert!(text(&listed.stdout).lines().any(|l| l == "stability"));
+    assert!(text(&listed.stdout).lines().any(|l| l == "stability-map"));
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -147,16 +148,22 @@ fn figures_are_listed_and_a_mistyped_name_gets_the_nearest() {
         names.len() > 10 && names.contains(&"fig1".to_string()),
         "{names:?}"
     );
-    let wrong = run(&["figures", "--only", "stabilty", "--out", "/nonexistent/x"]);
+    let wrong = run(&[
+        "figures",
+        "--only",
+        "stabilty-map",
+        "--out",
+        "/nonexistent/x",
+    ]);
     assert!(!wrong.status.success());
     let message = text(&wrong.stderr);
-    assert!(message.contains("did you mean stability?"), "{message}");
+    assert!(message.contains("did you mean stability-map?"), "{message}");
     // Applying the advice works.
     let dir = std::env::temp_dir().join(format!("rd-nearest-{}", std::process::id()));
     let right = run(&[
         "figures",
         "--only",
-        "stability",
+        "stability-map",
         "--out",
         dir.to_str().unwrap(),
     ]);

@@ -18,7 +18,7 @@ use std::f64::consts::FRAC_PI_2;
 
 pub(crate) const RTOL: f64 = 1e-12;
 pub(crate) const AGREE: f64 = 1e-8;
-const DT: f64 = 0.01;
+pub(crate) const DT: f64 = 0.01;
 pub(crate) const T_END: f64 = 10.0;
 const HEADING: f64 = 0.7;
 const CENTRE: [f64; 2] = [0.1, -0.2];
