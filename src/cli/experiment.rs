@@ -156,7 +156,7 @@ fn experiment_simulate(
             stdout::check_output(path).map_err(|e| anyhow::anyhow!("{option} {e}"))?;
         }
     }
-    eprintln!("simulating the recording of {}...", scene.name);
+    stdout::progress(&format!("simulating the recording of {}...", scene.name));
     let bar = stage_spinner();
     let note = |stage: &str| bar.set_message(stage.to_string());
     let work =
@@ -235,8 +235,11 @@ fn experiment_analyze(
     if let Some(set) = set {
         let shown: Vec<PathBuf> = files.iter().map(|p| set.final_path(p)).collect();
         set.commit(&files)?;
-        for p in shown {
-            eprintln!("wrote {}", p.display());
+        // On standard error: standard output carries the analysis.
+        if !stdout::quiet() {
+            for p in shown {
+                eprintln!("wrote {}", p.display());
+            }
         }
     }
     println!("{text}");
