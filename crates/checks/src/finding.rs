@@ -313,7 +313,7 @@ pub struct Finding {
     /// The verdicts under the alternatives to the choices the paper leaves open, the reading
     /// this finding was made under first ([`crate::robustness`]); empty where the check tries
     /// none.
-    pub robustness: Vec<crate::robustness::Alternative>,
+    pub robustness: Vec<Alternative>,
     /// The verdict the check gave on its own, before the premises it rests on were read: set
     /// when a failing premise made it [`Verdict::PremiseFails`].
     #[serde(skip)]
@@ -504,5 +504,35 @@ impl Finding {
     pub fn shown_by(mut self, what: impl Into<String>) -> Self {
         self.shown_by = Some(what.into());
         self
+    }
+}
+
+/// One reasonable reading of a choice the paper leaves open, and the verdict under it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Alternative {
+    /// The choice the paper leaves open, in words ("the point of evaluation").
+    pub choice: &'static str,
+    /// This reading of it, in words, with its parameters.
+    pub alternative: String,
+    /// The reference's value under it, in the finding's unit.
+    pub reference: f64,
+    /// The verdict under it.
+    pub verdict: Verdict,
+}
+
+impl Alternative {
+    /// An alternative reading of `choice`.
+    pub fn new(
+        choice: &'static str,
+        alternative: impl Into<String>,
+        reference: f64,
+        verdict: Verdict,
+    ) -> Self {
+        Self {
+            choice,
+            alternative: alternative.into(),
+            reference,
+            verdict,
+        }
     }
 }

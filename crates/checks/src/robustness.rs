@@ -5,38 +5,8 @@
 //! that is not becomes [`Verdict::DependsOn`] the choice, with each alternative's value and
 //! verdict beside it.
 
+pub use crate::finding::Alternative;
 use crate::finding::{Finding, Verdict};
-use serde::Serialize;
-
-/// One reasonable reading of a choice the paper leaves open, and the verdict under it.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Alternative {
-    /// The choice the paper leaves open, in words ("the point of evaluation").
-    pub choice: &'static str,
-    /// This reading of it, in words, with its parameters.
-    pub alternative: String,
-    /// The reference's value under it, in the finding's unit.
-    pub reference: f64,
-    /// The verdict under it.
-    pub verdict: Verdict,
-}
-
-impl Alternative {
-    /// An alternative reading of `choice`.
-    pub fn new(
-        choice: &'static str,
-        alternative: impl Into<String>,
-        reference: f64,
-        verdict: Verdict,
-    ) -> Self {
-        Self {
-            choice,
-            alternative: alternative.into(),
-            reference,
-            verdict,
-        }
-    }
-}
 
 /// The three kinds of outcome a verdict can have, for telling whether an alternative changes
 /// it: it establishes what it checks (holds, holds approximately, a definition, an estimate),

@@ -31,7 +31,10 @@ fn identity(_meta: &std::fs::Metadata) -> Option<Identity> {
 pub fn record(path: &Path, meta: &std::fs::Metadata) {
     if let Some(id) = identity(meta) {
         if let Ok(mut read) = READ.lock() {
-            if !read.iter().any(|(i, _)| *i == id) {
+            // Kept under every path it was read by: an entry of a file removed since may hold
+            // the same identity (the system gives a freed inode to a new file), and must not
+            // hide this one.
+            if !read.iter().any(|(i, p)| *i == id && p == path) {
                 read.push((id, path.to_path_buf()));
             }
         }
@@ -72,6 +75,28 @@ mod tests {
         assert_eq!(input_named(&dir.join("./my.yaml")), Some(scene.clone()));
         assert_eq!(input_named(&other), None);
         assert_eq!(input_named(&dir.join("absent.yaml")), None);
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    /// An entry left by a file since removed holds the identity the system may give to a new
+    /// file; the new file, read under its own name, is still known as an input.
+    #[cfg(unix)]
+    #[test]
+    fn a_removed_input_does_not_hide_a_new_one_with_its_identity() {
+        let dir = std::env::temp_dir().join(format!("rolling-disk-reused-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).ok();
+        let file = dir.join("new.yaml");
+        std::fs::write(&file, "name: x\n").ok();
+        // The removed file's entry: the same identity, under a name that no longer exists.
+        let gone = dir.join("gone.yaml");
+        std::fs::hard_link(&file, &gone).ok();
+        let meta = std::fs::metadata(&file).unwrap();
+        record(&gone, &meta);
+        std::fs::remove_file(&gone).ok();
+        assert_eq!(input_named(&file), None);
+        record(&file, &meta);
+        assert_eq!(input_named(&file), Some(file.clone()));
         let _ = std::fs::remove_dir_all(&dir);
     }
 }

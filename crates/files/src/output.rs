@@ -4,10 +4,7 @@
 use crate::atomic::write_atomically;
 use std::path::{Path, PathBuf};
 
-/// The file that marks a directory as a complete report set written by this tool, listing the
-/// set's files with their sizes. It is written last, inside the temporary directory, before
-/// the swap.
-pub const MANIFEST: &str = ".rolling-disk-set";
+pub use crate::temporary::MANIFEST;
 
 /// Why a set of files could not be written.
 #[derive(Debug, thiserror::Error)]

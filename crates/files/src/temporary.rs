@@ -6,11 +6,15 @@
 //! number, so that a name already taken, by anything, is never touched); a previous set moved
 //! aside during a swap is `.NAME.rolling-disk-old-PID-N`. A directory is this tool's own when it
 //! has such a name, is a directory (not a symbolic link), and holds the [`MARKER`] naming that
-//! same PID or a set's manifest ([`crate::output::MANIFEST`]); it is left over when no process of
+//! same PID or a set's manifest ([`MANIFEST`]); it is left over when no process of
 //! that PID is alive. Anything else, such as a user's `.NAME.tmp-12345/`, is never removed.
 
-use crate::output::MANIFEST;
 use std::path::{Path, PathBuf};
+
+/// The file that marks a directory as a complete report set written by this tool, listing the
+/// set's files with their sizes. It is written last, inside the temporary directory, before
+/// the swap.
+pub const MANIFEST: &str = ".rolling-disk-set";
 
 /// The file inside a temporary directory that marks it as this tool's, naming the process.
 pub const MARKER: &str = ".rolling-disk-temporary";

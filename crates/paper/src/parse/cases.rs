@@ -12,8 +12,8 @@
 //! its `\end{cases}` (or an `\end{cases}` without its `\begin`), one that follows no relation on
 //! its row, and a condition that states no relation and is not words in `\text{...}`.
 
+use super::lex::is_relation;
 use super::lex::Tok;
-use super::normalize::is_relation;
 use super::ParseError;
 
 /// Tokens with their columns.

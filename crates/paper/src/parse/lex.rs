@@ -373,3 +373,15 @@ pub(crate) const GREEK: &[&str] = &[
     "Psi",
     "Omega",
 ];
+
+/// True for a token that relates two sides.
+pub(super) fn is_relation(t: &Tok) -> bool {
+    match t {
+        Tok::Equals | Tok::Less | Tok::Greater => true,
+        Tok::Cmd(c) => matches!(
+            c.as_str(),
+            "approx" | "equiv" | "leq" | "le" | "geq" | "ge" | "propto"
+        ),
+        _ => false,
+    }
+}

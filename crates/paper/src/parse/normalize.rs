@@ -18,7 +18,7 @@
 //!   ignored, and separates two relations it stands between; `\text{constant}`, one word, is an
 //!   upright symbol like `\mathrm{constant}`.
 
-use super::lex::Tok;
+use super::lex::{is_relation, Tok};
 use super::ParseError;
 
 /// Tokens after the rewrites, and the conditions split off them.
@@ -52,18 +52,6 @@ pub(super) fn normalize(toks: Vec<(Tok, usize)>) -> Result<Normalized, ParseErro
     let toks = rows(toks);
     let toks = commas_before_relations(toks);
     Ok(texts(toks))
-}
-
-/// True for a token that relates two sides.
-pub(super) fn is_relation(t: &Tok) -> bool {
-    match t {
-        Tok::Equals | Tok::Less | Tok::Greater => true,
-        Tok::Cmd(c) => matches!(
-            c.as_str(),
-            "approx" | "equiv" | "leq" | "le" | "geq" | "ge" | "propto"
-        ),
-        _ => false,
-    }
 }
 
 /// `{\bf x}` -> `\mathbf{x}`, `{\rm x}` -> `\mathrm{x}`, `{\it x}` -> `{x}`.
