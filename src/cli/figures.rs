@@ -39,22 +39,6 @@ impl Args {
     }
 }
 
-/// The name of `names` nearest to `name` in edit distance, when it is near enough to be what
-/// was meant (at most a third of its letters, and at least two, differ).
-pub(crate) fn nearest<'n>(name: &str, names: &[&'n str]) -> Option<&'n str> {
-    names
-        .iter()
-        .map(|n| {
-            (
-                strsim::levenshtein(&name.to_lowercase(), &n.to_lowercase()),
-                *n,
-            )
-        })
-        .min()
-        .filter(|(d, _)| *d <= (name.len() / 3).max(2))
-        .map(|(_, n)| n)
-}
-
 fn figures(only: Option<&str>, out: &Path, format: FigureFormat) -> anyhow::Result<()> {
     use ::report::pipeline::{compute, RunConfig};
     let names: Vec<&str> = ::report::figures::names();
@@ -77,7 +61,8 @@ fn figures(only: Option<&str>, out: &Path, format: FigureFormat) -> anyhow::Resu
         if !names.contains(w) {
             return Err(anyhow::anyhow!(
                 "--only: no figure is called {w}{}; the figures are: {} (`figures --list`)",
-                nearest(w, &names).map_or(String::new(), |n| format!(" (did you mean {n}?)")),
+                physics::nearest::nearest(w, names.iter().copied())
+                    .map_or(String::new(), |n| format!(" (did you mean {n}?)")),
                 names.join(", ")
             ));
         }

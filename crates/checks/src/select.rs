@@ -193,17 +193,10 @@ pub fn parse_only(text: &str, paper: &Paper) -> Result<Selection, SelectError> {
     })
 }
 
-/// ", did you mean X?" for the claim id nearest to `id` in edit distance (strsim), when it is
-/// within a third of the id's length.
+/// ", did you mean X?" for the claim id nearest to `id` ([`physics::nearest`]).
 fn hint(id: &str, known: &[String]) -> String {
-    let best = known
-        .iter()
-        .map(|k| (strsim::levenshtein(id, k), k))
-        .min_by_key(|(d, _)| *d);
-    match best {
-        Some((d, k)) if d <= (id.len() / 3).max(2) => format!(" (did you mean {k}?)"),
-        _ => String::new(),
-    }
+    physics::nearest::nearest(id, known.iter().map(String::as_str))
+        .map_or(String::new(), |k| format!(" (did you mean {k}?)"))
 }
 
 /// A built-in scene as a YAML template: a header that says how to use it and what else each

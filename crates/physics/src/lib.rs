@@ -10,6 +10,7 @@ pub mod disk;
 pub mod dispatch;
 pub mod events;
 pub mod model;
+pub mod nearest;
 pub mod run;
 pub mod scene;
 pub mod solve;

@@ -57,15 +57,9 @@ pub const BUILTIN: &[(&str, &str)] = &[
     ),
 ];
 
-/// The built-in scene whose name is nearest to `name` in edit distance, when it is near enough to
-/// be what was meant (at most a third of its letters, and at least two, differ).
+/// The built-in scene whose name is nearest to `name` ([`crate::nearest`]).
 pub fn nearest(name: &str) -> Option<&'static str> {
-    BUILTIN
-        .iter()
-        .map(|(n, _)| (strsim::levenshtein(name, n), *n))
-        .min()
-        .filter(|(d, _)| *d <= (name.len() / 3).max(2))
-        .map(|(_, n)| n)
+    crate::nearest::nearest(name, BUILTIN.iter().map(|(n, _)| *n))
 }
 
 /// The source of the built-in scene `name`.
