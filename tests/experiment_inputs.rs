@@ -388,8 +388,8 @@ fn figures_of_the_fit_the_residuals_the_sound_and_the_coverage() {
     let disk = Disk::uniform(0.0375);
     let trace = law_trace(&paper_law(), &disk, &LightModel::default()).unwrap();
     let a = analyze(&trace, &AnalysisSettings::default()).unwrap();
-    let band = fig::omega_band(&a);
-    let res = fig::residuals(&a);
+    let band = fig::omega_band(&a).unwrap();
+    let res = fig::residuals(&a).unwrap();
     assert_eq!((band.name, res.name), ("omega_band", "residuals"));
     assert!(band.caption.contains(&format!("{:.4}", a.eq84.beta)));
     let c = coverage::coverage(10, 77, false).unwrap();
@@ -406,11 +406,18 @@ fn figures_of_the_fit_the_residuals_the_sound_and_the_coverage() {
         &plausibility::Plausibility::default(),
     )
     .unwrap();
-    let tr = fig::sound_track(&s);
+    let tr = fig::sound_track(&s).unwrap();
     assert!(tr.caption.contains("frame"), "{}", tr.caption);
     // The same inputs give the same bytes, and every figure renders.
     let svg = band.drawing.to_svg(640, 480).unwrap();
-    assert_eq!(fig::omega_band(&a).drawing.to_svg(640, 480).unwrap(), svg);
+    assert_eq!(
+        fig::omega_band(&a)
+            .unwrap()
+            .drawing
+            .to_svg(640, 480)
+            .unwrap(),
+        svg
+    );
     for f in [&res, &cov, &tr] {
         assert!(
             f.drawing.to_svg(640, 480).unwrap().contains("<svg"),

@@ -208,12 +208,8 @@ pub fn from_results(
         &settings,
         &figure_views,
         super::document::Records {
-            precision: crate::parts::precision::section::records(
-                results.required(&study::Precision, "the report")?,
-            ),
             corrections: correction_records,
-            friction: results.get(&study::Friction).map(|f| f.studies.clone()),
-            toy: results.get(&study::Toy).cloned(),
+            parts: crate::parts::record::PartRecords::of(results)?,
         },
     );
 

@@ -1,6 +1,5 @@
 //! The report's JSON document (`report.json`): every equation and claim with its outcome, the
-//! figures, the speed/accuracy records, the corrections and the sliding studies, with numbers
-//! as numbers.
+//! figures, the corrections and each part's record, with numbers as numbers.
 
 use super::json::{self, outcome_for, Document};
 use super::{FigureView, RunSettings};
@@ -14,14 +13,10 @@ pub const PAPER: &str =
 
 /// The records of the studies the document carries as they are.
 pub struct Records {
-    /// The speed/accuracy study's records.
-    pub precision: Vec<json::PrecisionRecord>,
     /// The corrected forms' records.
     pub corrections: Vec<json::CorrectionRecord>,
-    /// The sliding studies, when computed.
-    pub friction: Option<studies::sliding::Studies>,
-    /// The toy's studies, when computed.
-    pub toy: Option<studies::toy::Toy>,
+    /// The parts' records.
+    pub parts: crate::parts::record::PartRecords,
 }
 
 /// The checked equation `n`, if it was checked.
@@ -118,9 +113,7 @@ pub fn document(
                 file: f.file.clone(),
             })
             .collect(),
-        precision: records.precision,
         corrections: records.corrections,
-        friction: records.friction,
-        toy: records.toy,
+        parts: records.parts,
     }
 }

@@ -15,7 +15,7 @@ use schemars::JsonSchema;
 use serde::Serialize;
 
 /// The version of the document's schema.
-pub const SCHEMA_VERSION: u32 = 1;
+pub const SCHEMA_VERSION: u32 = 2;
 
 /// The document's identifier, also the schema's `$id`.
 pub const SCHEMA_ID: &str = "https://rolling-disk.invalid/schemas/report.schema.json";
@@ -71,15 +71,11 @@ pub struct Document {
     pub claims: Vec<ClaimRecord>,
     /// The figures, with the file of each in the LaTeX report.
     pub figures: Vec<FigureRecord>,
-    /// The speed/accuracy study on the benchmark scene.
-    pub precision: Vec<PrecisionRecord>,
     /// The corrected forms of paper/corrections.yaml, each checked by its equation's check.
     pub corrections: Vec<CorrectionRecord>,
-    /// The friction studies on the sliding model (absent when not computed).
-    pub friction: Option<studies::sliding::Studies>,
-    /// The real toy: the peer program's stored runs compared, and the toy's thickness against
-    /// the thin disk (absent when not computed).
-    pub toy: Option<studies::toy::Toy>,
+    /// Each report part's record (the speed/accuracy study, friction, the real toy, the
+    /// experiment, the coverage of its uncertainties), keyed by part.
+    pub parts: crate::parts::record::PartRecords,
 }
 
 /// A corrected equation and the verdicts of its printed and corrected forms.
@@ -554,19 +550,6 @@ pub struct FigureRecord {
     pub title: String,
     /// Its PNG, relative to the report.
     pub file: String,
-}
-
-/// One run of the speed/accuracy study.
-#[derive(Debug, Clone, PartialEq, Serialize, JsonSchema)]
-pub struct PrecisionRecord {
-    /// Method and tolerance.
-    pub label: String,
-    /// Right-hand-side evaluations.
-    pub evaluations: u64,
-    /// Relative error at the final time.
-    pub final_error: f64,
-    /// Largest relative error over the run.
-    pub trajectory_error: f64,
 }
 
 /// The outcome recorded for a subject: its check's, or why it has none.

@@ -8,6 +8,7 @@ pub mod error;
 pub mod figures;
 mod finding_view;
 pub mod fonts;
+pub mod inline_math;
 pub mod json;
 pub mod mathml;
 pub mod mutation;

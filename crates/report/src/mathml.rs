@@ -41,12 +41,22 @@ pub fn arity(tag: &str) -> Option<usize> {
 /// The MathML of a displayed equation, with the LaTeX kept as an annotation. An equation the
 /// converter cannot parse comes back as its LaTeX source in a `<code>` element, never an error.
 pub fn display_math(latex: &str) -> String {
+    math(latex, DisplayMode::Block)
+}
+
+/// The MathML of a formula within a sentence, as [`display_math`] writes a displayed one.
+pub fn inline_math(latex: &str) -> String {
+    math(latex, DisplayMode::Inline)
+}
+
+/// The MathML of `latex` set in `display_mode`, or its source in a `<code>` element.
+fn math(latex: &str, display_mode: DisplayMode) -> String {
     let storage = Storage::new();
     let parser = Parser::new(latex, &storage);
     // The annotation is added here, escaped: pulldown-latex copies it verbatim, so a `<` in
     // the source would make the XML malformed.
     let config = RenderConfig {
-        display_mode: DisplayMode::Block,
+        display_mode,
         annotation: None,
         xml: true,
         ..RenderConfig::default()

@@ -83,6 +83,7 @@ fn templates() -> Result<Tera, ReportError> {
     }
     t.register_filter("tex", super::tex::filter);
     t.register_filter("num", super::number::filter);
+    super::inline_math::register(&mut t);
     t.autoescape_on(vec![".html"]);
     Ok(t)
 }

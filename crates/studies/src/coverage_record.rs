@@ -16,7 +16,7 @@ use experiment::error::ExperimentError;
 use serde::{Deserialize, Serialize};
 
 /// One stored coverage study.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 pub struct StoredCoverage {
     /// Which recordings: "clean" (the scope's noise and quantisation) or "artifact-laden".
     pub recordings: String,

@@ -1,6 +1,7 @@
 //! The coverage of the experiment's stated intervals (issue 15): for one Monte Carlo study, and
 //! for the stored studies the report draws ([`studies::coverage_record`]).
 
+use super::FigureError;
 use crate::figures::chart::{Axis, Legend, Plot, Series, Style};
 use crate::figures::{Drawing, Figure};
 use studies::coverage::Coverage;
@@ -56,7 +57,7 @@ pub fn coverage(c: &Coverage) -> Figure {
 /// The stored studies (clean and artifact-laden light recordings, phone sounds): the fraction of
 /// recordings whose truth lies inside $\pm z$ stated standard uncertainties against $z$, beta and t0 of each,
 /// with the normal curve the intervals claim. Drawn from `snapshots/coverage.json`, not run.
-pub fn studies(stored: &[StoredCoverage]) -> Figure {
+pub fn studies(stored: &[StoredCoverage]) -> Result<Figure, FigureError> {
     let zs: Vec<f64> = (1..=30).map(|k| 0.1 * k as f64).collect();
     let claimed: Vec<(f64, f64)> = zs.iter().map(|&z| (z, normal_inside(z))).collect();
     let mut plot = Plot::new(
@@ -94,17 +95,17 @@ pub fn studies(stored: &[StoredCoverage]) -> Figure {
         .mark(Axis::X, 1.96, "95 %")
         .legend_at(Legend::LowerRight);
     let lines: Vec<String> = stored.iter().map(|s| s.line()).collect();
-    Figure {
+    Ok(Figure {
         name: "coverage",
         title: "Monte Carlo coverage of the experiment's stated uncertainties".into(),
-        caption: format!(
-            "Recordings that follow eq 79 exactly (beta = 2, Omega = 100 rad/s seven seconds \
-             before t0), each with its own noise seed, analysed as a user's recording would be; \
-             a refused recording counts as outside. Stored, not run by the report: {}",
-            lines.join("; ")
-        ),
+        caption: super::captions::caption(
+            "coverage",
+            &serde_json::json!({
+                "studies": format!("{}", lines.join("; ")),
+            }),
+        )?,
         drawing: Drawing::Plot(plot),
-    }
+    })
 }
 
 #[cfg(test)]
@@ -116,7 +117,7 @@ mod tests {
     #[test]
     fn every_stored_study_is_drawn() {
         let stored = studies::coverage_record::stored().expect("snapshots/coverage.json");
-        let Drawing::Plot(plot) = studies(&stored).drawing else {
+        let Drawing::Plot(plot) = studies(&stored).unwrap().drawing else {
             panic!("the coverage figure is a plot");
         };
         let labels: Vec<&str> = plot.chart.series.iter().map(|s| s.label.as_str()).collect();

@@ -42,22 +42,12 @@ pub fn figure(runs: &[DriftCurve]) -> Result<Figure, FigureError> {
     Ok(Figure {
         name: "energy-drift",
         title: "Energy drift of each method".into(),
-        caption: format!(
-            "The relative change of the total energy (eq 26) along 10 s of the benchmark scene \
-             (a uniform disk rolling from a steady motion with b = a/2, disturbed along its \
-             oscillation mode), for classical RK4 at a fixed step and the adaptive Dormand-Prince \
-             methods at several relative tolerances (absolute tolerance 1e-2 of it). The model \
-             conserves energy exactly, so the drift is the integration error alone. Each curve is \
-             the largest drift in each of 300 time bins (an upper envelope; exact zeros cannot \
-             be drawn on a log axis). {}. The drift of the loose tolerances accumulates over \
-             the run; DOP853 at 1e-12 stays at the level of floating-point round-off, as RK4 \
-             does at 1 ms on this slow motion (Omega about 11 rad/s) at eight times the work. \
-             The dotted curve is DOP853 at 1e-8 with every step projected back onto the start's \
-             energy (a scene's solver: {{ project: energy }}): the energy then stays at round-off \
-             by construction, for one more evaluation per step; the projection removes the \
-             energy error, not the error along the energy surface (the phase).",
-            summary.join("; ")
-        ),
+        caption: super::captions::caption(
+            "energy-drift",
+            &serde_json::json!({
+                "methods": format!("{}", summary.join("; ")),
+            }),
+        )?,
         drawing: Drawing::Plot(plot),
     })
 }

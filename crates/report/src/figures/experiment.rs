@@ -14,8 +14,8 @@ use studies::synthetic::Synthetic;
 pub use crate::figures::coverage::coverage;
 
 const SYNTHETIC: &str = "Synthetic data (the paper's are not published): the built-in spin-down \
-    scene, a uniform disk (a = 37.5 mm) rolling without slipping (eqs 23-25) that loses energy at \
-    eq 75's rate with beta = 2 and epsilon = 1.2e-6 (applied as a torque against the angular \
+    scene, a uniform disk ($a$ = 37.5 mm) rolling without slipping (eqs 23-25) that loses energy at \
+    eq 75's rate with $\\beta = 2$ and $\\epsilon$ = 1.2e-6 s (applied as a torque against the angular \
     velocity), seen by a phototransistor through the default light model and recorded at 5 kS/s \
     for 10 s with 5 mV noise and 8-bit quantisation.";
 
@@ -23,14 +23,14 @@ const SYNTHETIC: &str = "Synthetic data (the paper's are not published): the bui
 /// analysed once (no integration here).
 pub fn figures(e: &Synthetic) -> Result<Vec<Figure>, FigureError> {
     Ok(vec![
-        tek04(e),
+        tek04(e)?,
         tek_zoom(e, "tek01", 0.25)?,
         tek_zoom(e, "tek02", 0.06)?,
         omega(e)?,
         inverse_omega(e, "tek726", 0.0)?,
         inverse_omega(e, "tek728", 0.02)?,
         odot(e)?,
-        residuals(&e.analysis),
+        residuals(&e.analysis)?,
     ])
 }
 
@@ -57,7 +57,7 @@ fn true_t0(e: &Synthetic) -> f64 {
     e.trace.truth.as_ref().map_or(e.analysis.eq84.t0, |t| t.t0)
 }
 
-fn tek04(e: &Synthetic) -> Figure {
+fn tek04(e: &Synthetic) -> Result<Figure, FigureError> {
     let pts: Vec<(f64, f64)> = e
         .trace
         .t
@@ -77,22 +77,20 @@ fn tek04(e: &Synthetic) -> Figure {
     .legend_at(Legend::UpperLeft);
     // No fixed y range: the automatic one grows at the top just enough for the legend, at
     // every size the figure is drawn (the paper's 3 in included).
-    Figure {
+    Ok(Figure {
         name: "tek04",
         title: "The light signal over 10 s (the paper's tek04)".into(),
-        caption: format!(
-            "{SYNTHETIC} One pulse per turn of the point of contact: the reflected beam sweeps \
-             past the detector once per cycle of Omega. The pulses crowd together and shrink as \
-             alpha falls and Omega rises, and the signal goes flat when the spin-down ends at \
-             t = {t_end:.3} s (the model stops at lift-off or when alpha falls below 1e-4 rad; \
-             the scope is set so that this falls where the paper's record put t0, 7.26-7.28 s). Each of the 900 \
-             columns shows the minimum and maximum of its {} samples, so no pulse is lost to the \
-             thinning. The analysis finds {} peaks.",
-            e.trace.len().div_ceil(900),
-            e.analysis.peaks.len()
-        ),
+        caption: super::captions::caption(
+            "tek04",
+            &serde_json::json!({
+                "SYNTHETIC": format!("{}", SYNTHETIC),
+                "t_end": format!("{:.3}", t_end),
+                "samples_per_column": format!("{}", e.trace.len().div_ceil(900)),
+                "peaks": format!("{}", e.analysis.peaks.len()),
+            }),
+        )?,
         drawing: Drawing::Plot(plot),
-    }
+    })
 }
 
 fn tek_zoom(e: &Synthetic, name: &'static str, span: f64) -> Result<Figure, FigureError> {
@@ -143,16 +141,18 @@ fn tek_zoom(e: &Synthetic, name: &'static str, span: f64) -> Result<Figure, Figu
     Ok(Figure {
         name,
         title: format!("The last {span} s of the light signal (the paper's {paper})"),
-        caption: format!(
-            "{SYNTHETIC} The last {span} s before the spin-down ends at {t_end:.4} s \
-             (record time), every sample drawn; triangles mark the {n_peaks} peak times t_i of \
-             the analysis (mean of the rising and falling half-height crossings, as in the paper, \
-             corrected for the chirp within a pulse). The pulses shorten and fade as alpha \
-             approaches zero: the beam's circle on the detector shrinks with alpha. The fit of \
-             eq 84 puts t0 at {fit_t0:.4} s, {:.1} ms before the model's singular time {}.",
-            1e3 * (true_t0(e) - fit_t0),
-            format_args!("{:.4} s", true_t0(e)),
-        ),
+        caption: super::captions::caption(
+            "tek-zoom",
+            &serde_json::json!({
+                "SYNTHETIC": format!("{}", SYNTHETIC),
+                "span": span.to_string(),
+                "t_end": format!("{:.4}", t_end),
+                "n_peaks": n_peaks.to_string(),
+                "fit_t0": format!("{:.4}", fit_t0),
+                "fit_before_ms": format!("{:.1}", 1e3 * (true_t0(e) - fit_t0)),
+                "model_t0": format!("{}", format_args!("{:.4} s", true_t0(e))),
+            }),
+        )?,
         drawing: Drawing::Plot(plot),
     })
 }
@@ -213,24 +213,21 @@ fn omega(e: &Synthetic) -> Result<Figure, FigureError> {
     Ok(Figure {
         name: "Omega",
         title: "Omega against t (the paper's Omega)".into(),
-        caption: format!(
-            "{SYNTHETIC} The mean angular rate of each cycle, Omega_i = 2 pi/(t_(i+1) - t_i), \
-             placed at the cycle's middle, in rad/s (the paper labels its axis Hz but computes \
-             2 pi/period, an angular frequency). {} cycles; the last {} peaks are left out of the \
-             fits, where the law breaks as the spin-down ends. The fastest fitted cycle is \
-             {:.0} rad/s (the paper's last analysable cycle: 680). The dashed curve is eq 79 with \
-             the parameters fitted to eq 84: beta = {}, t0 = ({}) s (total uncertainties: the \
-             fit's and the law's drift over the window).{}",
-            a.cycles.len(),
-            a.settings.drop_last,
-            a.window.omega_last,
-            measured(f.beta, a.stated_sigmas().0),
-            measured(f.t0, a.stated_sigmas().1),
-            a.early_end.as_ref().map_or(String::new(), |e| format!(
+        caption: super::captions::caption(
+            "Omega",
+            &serde_json::json!({
+                "SYNTHETIC": format!("{}", SYNTHETIC),
+                "cycles": format!("{}", a.cycles.len()),
+                "drop_last": format!("{}", a.settings.drop_last),
+                "omega_last": format!("{:.0}", a.window.omega_last),
+                "beta": format!("{}", measured(f.beta, a.stated_sigmas().0)),
+                "t0": format!("{}", measured(f.t0, a.stated_sigmas().1)),
+                "message": format!("{}", a.early_end.as_ref().map_or(String::new(), |e| format!(
                 " Impossible end: {}.",
                 e.message
-            ))
-        ),
+            ))),
+            }),
+        )?,
         drawing: Drawing::Plot(plot),
     })
 }
@@ -309,19 +306,21 @@ fn inverse_omega(e: &Synthetic, name: &'static str, shift: f64) -> Result<Figure
     Ok(Figure {
         name,
         title: format!("1/Omega against t0 - t for t0 = {t0:.3} s (the paper's {paper})"),
-        caption: format!(
-            "{SYNTHETIC} The fitted cycles' 1/Omega_i against the time left, t0 - t, for {which}. \
-             The dashed lines are eq 84 for beta = 0 to 4, with slopes 1/(beta + 2), drawn \
-             through the data's median point as the paper drew them: they are not fits. Over the \
-             last ten cycles the data's slope is {slope:.3}, an apparent beta of {apparent:.2} \
-             (the model's beta is 2). {}",
-            if shift == 0.0 {
+        caption: super::captions::caption(
+            "inverse-omega",
+            &serde_json::json!({
+                "SYNTHETIC": format!("{}", SYNTHETIC),
+                "which": which.to_string(),
+                "slope": format!("{:.3}", slope),
+                "apparent": format!("{:.2}", apparent),
+                "preferring": format!("{}", if shift == 0.0 {
                 "With the right t0 the points follow the beta = 2 line down to the last cycles."
             } else {
                 "A t0 too late bends the last cycles towards a flatter slope, a smaller apparent \
                  beta: the paper's argument for preferring 7.26 s."
-            }
-        ),
+            }),
+            }),
+        )?,
         drawing: Drawing::Plot(plot),
     })
 }
@@ -386,24 +385,20 @@ fn odot(e: &Synthetic) -> Result<Figure, FigureError> {
     Ok(Figure {
         name: "Odot",
         title: "dOmega/dt against Omega (the paper's Odot)".into(),
-        caption: format!(
-            "{SYNTHETIC} dOmega_i/dt = 2(Omega_(i+1) - Omega_i)/(t_(i+2) - t_i) against the mean \
-             rate of the two cycles, log-log, for the {} pairs of fitted cycles{}. Eq 85 needs no \
-             t0: the dashed lines have slopes beta + 3 for beta = 0 to 4 and pass through the \
-             data's centre (the fitted curve at the middle of the range of Omega); they are not \
-             fits. The points follow the beta = 2 line; the fit of eq \
-             85 gives a slope of {}, beta = {}. The scatter grows at low Omega, \
-             where the differences of differences of peak times are smallest against the timing \
-             noise.",
-            rows.len(),
-            if dropped > 0 {
+        caption: super::captions::caption(
+            "Odot",
+            &serde_json::json!({
+                "SYNTHETIC": format!("{}", SYNTHETIC),
+                "rows": format!("{}", rows.len()),
+                "before_window": format!("{}", if dropped > 0 {
                 format!(" ({dropped} with a negative difference, from timing noise, cannot be drawn on a log axis)")
             } else {
                 String::new()
-            },
-            measured(f.slope, f.slope_sigma),
-            to_place_of(f.beta, f.slope_sigma)
-        ),
+            }),
+                "slope": format!("{}", measured(f.slope, f.slope_sigma)),
+                "beta": format!("{}", to_place_of(f.beta, f.slope_sigma)),
+            }),
+        )?,
         drawing: Drawing::Plot(plot),
     })
 }
@@ -420,7 +415,7 @@ fn law_and_gradient(p: [f64; 3], t: f64) -> (f64, [f64; 3]) {
 /// The rate per cycle with eq 79 fitted and its 95 % band, $\pm 1.96\sqrt{g^{\mathsf T}\Sigma g}$
 /// with $g = \partial\Omega/\partial(\beta, t_0, \ln C)$ and $\Sigma$ the fit's stated covariance.
 /// A pure function of the analysis.
-pub fn omega_band(a: &experiment::Analysis) -> Figure {
+pub fn omega_band(a: &experiment::Analysis) -> Result<Figure, FigureError> {
     let f = &a.eq84;
     let p = [f.beta, f.t0, f.ln_c];
     let pts: Vec<(f64, f64)> = a
@@ -455,27 +450,25 @@ pub fn omega_band(a: &experiment::Analysis) -> Figure {
         .with(Series::new("95 % band", lo, Style::Dotted))
         .with(Series::new("", hi, Style::Dotted))
         .legend_at(Legend::UpperLeft);
-    Figure {
+    Ok(Figure {
         name: "omega_band",
         title: "The frequency track with the fitted law and its band".into(),
-        caption: format!(
-            "{}: the rate of each fitted cycle and eq 79 with the parameters of eq 84's fit, \
-             beta = {}, t0 = ({}) s (total uncertainties: the fit's and \
-             the law's drift over the window); the dotted lines are the 95 % band of the curve \
-             from the fit's covariance (scaled by the whitened residuals' own covariance: \
-             reduced chi2 {:.2} and their correlation), without the law's drift.",
-            a.source,
-            measured(f.beta, a.stated_sigmas().0),
-            measured(f.t0, a.stated_sigmas().1),
-            f.reduced_chi2
-        ),
+        caption: super::captions::caption(
+            "omega_band",
+            &serde_json::json!({
+                "source": format!("{}", a.source),
+                "beta": format!("{}", measured(f.beta, a.stated_sigmas().0)),
+                "t0": format!("{}", measured(f.t0, a.stated_sigmas().1)),
+                "reduced_chi2": format!("{:.2}", f.reduced_chi2),
+            }),
+        )?,
         drawing: Drawing::Plot(plot),
-    }
+    })
 }
 
 /// The whitened residuals of eq 84's fit against time: unit scatter, no structure, when the law
 /// and the noise model hold.
-pub fn residuals(a: &experiment::Analysis) -> Figure {
+pub fn residuals(a: &experiment::Analysis) -> Result<Figure, FigureError> {
     let pts: Vec<(f64, f64)> = a.eq84.points.iter().map(|p| (p.x, p.normalized)).collect();
     let lag = lag_one(&a.eq84.points);
     let plot = Plot::new(
@@ -486,27 +479,27 @@ pub fn residuals(a: &experiment::Analysis) -> Figure {
     .with(Series::new("cycles", pts, Style::Points))
     .mark(Axis::Y, 0.0, "")
     .legend_at(Legend::Hidden);
-    Figure {
+    Ok(Figure {
         name: "residuals",
         title: "Residuals of eq 84's fit".into(),
-        caption: format!(
-            "{}: each fitted cycle's residual in 1/Omega, whitened by the peak-time covariance \
-             (unit variance when the noise model holds). Reduced chi2 {:.2}; R^2 {:.6}; \
-             neighbouring residuals' correlation {:.2}{}",
-            a.source,
-            a.eq84.reduced_chi2,
-            a.verdict.r2,
-            lag,
-            if a.eq84.reduced_chi2 > 3.0 && lag > 0.5 {
+        caption: super::captions::caption(
+            "residuals",
+            &serde_json::json!({
+                "source": format!("{}", a.source),
+                "reduced_chi2": format!("{:.2}", a.eq84.reduced_chi2),
+                "r_squared": format!("{:.6}", a.verdict.r2),
+                "lag": format!("{:.2}", lag),
+                "verdict": format!("{}", if a.eq84.reduced_chi2 > 3.0 && lag > 0.5 {
                 ": a slow wave far above the noise, so eq 79 itself misses the recorded motion \
                  (the fit's stated errors are widened by it, but a law that does not hold can \
                  still place t0 wrongly)."
             } else {
                 "."
-            }
-        ),
+            }),
+            }),
+        )?,
         drawing: Drawing::Plot(plot),
-    }
+    })
 }
 
 /// The correlation of neighbouring whitened residuals (lag one): near 0 for noise, near 1 for a
@@ -528,7 +521,7 @@ fn lag_one(points: &[experiment::fit::FitPoint]) -> f64 {
 }
 
 /// A sound recording's frequency track with eq 79's fitted frame means.
-pub fn sound_track(s: &experiment::SoundAnalysis) -> Figure {
+pub fn sound_track(s: &experiment::SoundAnalysis) -> Result<Figure, FigureError> {
     let mid = |p: &experiment::track::TrackPoint| 0.5 * (p.a + p.b);
     let pts: Vec<(f64, f64)> = s.track.points.iter().map(|p| (mid(p), p.omega)).collect();
     let fit: Vec<(f64, f64)> = s
@@ -550,16 +543,17 @@ pub fn sound_track(s: &experiment::SoundAnalysis) -> Figure {
             Style::Line,
         ))
         .legend_at(Legend::UpperLeft);
-    Figure {
+    Ok(Figure {
         name: "sound_track",
         title: "Frequency track of a sound recording".into(),
-        caption: format!(
-            "{}: the fundamental of each frame of {:.1} to {:.1} ms (the contact point's rate \
-             Omega/2 pi, chosen by the harmonic sum) and eq 79's frame means fitted to it.",
-            s.source,
-            1e3 * s.track.frame_span.0,
-            1e3 * s.track.frame_span.1
-        ),
+        caption: super::captions::caption(
+            "sound_track",
+            &serde_json::json!({
+                "source": format!("{}", s.source),
+                "frame_from_ms": format!("{:.1}", 1e3 * s.track.frame_span.0),
+                "frame_to_ms": format!("{:.1}", 1e3 * s.track.frame_span.1),
+            }),
+        )?,
         drawing: Drawing::Plot(plot),
-    }
+    })
 }

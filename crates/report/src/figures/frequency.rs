@@ -107,32 +107,22 @@ pub fn figure(m: &Measured, paper: &Paper) -> Result<Figure, FigureError> {
     Ok(Figure {
         name: "frequency",
         title: "Measured against predicted oscillation frequency".into(),
-        caption: format!(
-            "The angular frequency varpi of small oscillations of alpha about steady motion, over \
-             the precession rate Omega0, across the tilt alpha0, for the toy's uniform disk. \
-             Markers are measured: each is an integration (DOP853, rtol 1e-11) started from the \
-             steady motion of eqs 28-29 with alpha raised by 1e-6 of itself, the frequency taken \
-             from the mean spacing of alpha's upward crossings over eight periods. Lines are the \
-             paper's predictions: eq 55 for rolling with b = 0, eq 54 for rolling with b = a/2, \
-             eq 71 without friction (omega1 = 0); all three tend to eq 56's \
-             {limit:.3} (grey line) as alpha0 -> 0. The largest relative differences between the \
-             markers and their curves are {:.1e} (rolling, b = 0, at {:.0} deg), {:.1e} \
-             (b = a/2, at {:.0} deg) and {:.1e} (no friction, at {:.0} deg). They are first order in the \
-             nudge (a nudge of 1e-4 makes them 100 times larger): a nudged disk oscillates about \
-             a neighbouring steady motion, and near an instability (b = a/2 at 70 deg) the \
-             frequency changes fast from one steady motion to the next. {}Rolling and frictionless differ most near \
-             the vertical, where eq 71's frequency vanishes.",
-            worst[0].0,
-            worst[0].1,
-            worst[1].0,
-            worst[1].1,
-            worst[2].0,
-            worst[2].1,
-            unstable_from.map_or(String::new(), |d| format!(
+        caption: super::captions::caption(
+            "frequency",
+            &serde_json::json!({
+                "limit": format!("{:.3}", limit),
+                "rolling_worst": format!("{:.1e}", worst[0].0),
+                "rolling_at": format!("{:.0}", worst[0].1),
+                "offset_worst": format!("{:.1e}", worst[1].0),
+                "offset_at": format!("{:.0}", worst[1].1),
+                "free_worst": format!("{:.1e}", worst[2].0),
+                "free_at": format!("{:.0}", worst[2].1),
+                "near_vertical": format!("{}", unstable_from.map_or(String::new(), |d| format!(
                 "The steady motion with b = a/2 is unstable above {d:.1} deg (see the \
                  stability map), so it has no frequency there. "
-            ))
-        ),
+            ))),
+            }),
+        )?,
         drawing: Drawing::Plot(plot),
     })
 }

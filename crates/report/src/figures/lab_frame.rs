@@ -65,22 +65,19 @@ pub fn figure(runs: &[Compared]) -> Result<Figure, FigureError> {
     Ok(Figure {
         name: "lab-frame-difference",
         title: "The paper's equations of motion against a lab-frame model".into(),
-        caption: format!(
-            "The absolute difference, over time, between the paper's reduced equations of motion \
-             (eqs 23-25, four states) and an independent rigid-body model in lab coordinates \
-             (Newton-Euler with the contact force solved from the rolling constraint, quaternion \
-             attitude, thirteen states), both integrated by DOP853 at rtol 1e-12, atol 1e-14 from \
-             the same start and compared every 2 ms (coin) or 10 ms (wheel); each curve is the \
-             largest difference in each of 120 time bins, differences below 1e-17 drawn at 1e-17. \
-             The legend on the right holds for both panels. Left: the nutating coin (a quarter at alpha0 = 0.3 rad, b = 0, alpha \
-             raised by 1 mrad), 1 s; the largest differences are {:.1e} rad in alpha, {:.1e} rad/s \
-             in alpha_dot, {:.1e} rad/s in Omega and {:.1e} rad/s in omega1. Right: the wheel \
-             rolling upright at 20 rad/s, tipped by 1 mrad, 5 s: {:.1e} rad, {:.1e}, {:.1e} and \
-             {:.1e} rad/s. The differences stay at the level of the two integrations' own errors, \
-             growing slowly with time as phase errors accumulate: the two models describe the \
-             same motion.",
-            wc[0], wc[1], wc[2], wc[3], ww[0], ww[1], ww[2], ww[3]
-        ),
+        caption: super::captions::caption(
+            "lab-frame-difference",
+            &serde_json::json!({
+                "coin_alpha": format!("{:.1e}", wc[0]),
+                "coin_alpha_dot": format!("{:.1e}", wc[1]),
+                "coin_precession": format!("{:.1e}", wc[2]),
+                "coin_spin": format!("{:.1e}", wc[3]),
+                "wheel_alpha": format!("{:.1e}", ww[0]),
+                "wheel_alpha_dot": format!("{:.1e}", ww[1]),
+                "wheel_precession": format!("{:.1e}", ww[2]),
+                "wheel_spin": format!("{:.1e}", ww[3]),
+            }),
+        )?,
         drawing: Drawing::Panels(Panels {
             title: "Reduced model (eqs 23-25) against the lab-frame model".into(),
             plots: vec![coin, wheel],

@@ -2,7 +2,8 @@
 //! studies' results ([`Results`], computed once by [`crate::pipeline`]) that returns a
 //! [`Figure`] as data. No figure integrates anything: tests/architecture.rs forbids this module
 //! to reach the solver, the scene runner, the simulations or the checks. The report renders the
-//! figures as inline SVG (HTML) or PNG (LaTeX).
+//! figures as inline SVG (HTML) or PNG (LaTeX). Each caption is a text template,
+//! `templates/figures/NAME.txt.tera` ([`captions`]), rendered from the figure's numbers.
 //!
 //! | name | what | file |
 //! |---|---|---|
@@ -32,6 +33,7 @@
 //! Everything is deterministic: the same build gives the same bytes.
 
 pub mod canvas;
+pub mod captions;
 pub mod chart;
 pub mod coverage;
 mod drawing;
@@ -127,7 +129,7 @@ pub const FAMILIES: &[Family] = &[
         needs: &[],
         build: |_| {
             let stored = ::studies::coverage_record::stored().map_err(|e| e.to_string())?;
-            Ok(vec![coverage::studies(&stored)])
+            Ok(vec![coverage::studies(&stored)?])
         },
     },
     Family {
@@ -172,7 +174,7 @@ pub const FAMILIES: &[Family] = &[
     Family {
         names: &["work-precision"],
         needs: &[&study::Precision],
-        build: |r| Ok(vec![precision::figure(need(r, &study::Precision)?)]),
+        build: |r| Ok(vec![precision::figure(need(r, &study::Precision)?)?]),
     },
     Family {
         names: &["slip-stick", "slip-stick-path", "mechanisms"],
@@ -242,25 +244,17 @@ pub fn geometry_figure(steady: &study::steady_motion::SteadyDisk) -> Result<Figu
     Ok(Figure {
         name: "fig1",
         title: "The disk, its triad and its lengths".into(),
-        caption: format!(
-            "Figure 1 of the paper, drawn from the model's definitions. A uniform disk of radius \
-             a = {:.1} mm (blue rim) rolls in the steady motion at alpha0 = {:.2} rad with \
-             b = {:.2} a: eq 29 gives Omega0 = {:.2} rad/s and eq 28 omega10 = b Omega0 / a = \
-             {:.2} rad/s, and b = r - a cos(alpha) places the contact point on a circle of radius \
-             r = {:.2} a (dashed) about the vertical axis of the motion (grey), the centre of mass \
-             on a circle of radius b (dotted) at height a sin(alpha). The unit vectors are drawn at \
-             the centre of mass: 3 points from the centre to the contact point, alpha below the \
-             horizontal r; 1 (the symmetry axis) makes the same angle alpha with the downward \
-             vertical; 2 = 3 x 1 is horizontal and lies in the disk's plane, along the contact \
-             point's velocity; r = 2 x z is horizontal and points away from the axis (eqs 1-9). \
-             The tests check that every drawn arrow is the triad's vector.",
-            g.a * 1e3,
-            g.alpha,
-            g.b / g.a,
-            g.precession,
-            g.spin,
-            g.r / g.a
-        ),
+        caption: captions::caption(
+            "fig1",
+            &serde_json::json!({
+                "a_mm": format!("{:.1}", g.a * 1e3),
+                "alpha": format!("{:.2}", g.alpha),
+                "b_over_a": format!("{:.2}", g.b / g.a),
+                "precession": format!("{:.2}", g.precession),
+                "spin": format!("{:.2}", g.spin),
+                "r_over_a": format!("{:.2}", g.r / g.a),
+            }),
+        )?,
         drawing: Drawing::Geometry(g),
     })
 }

@@ -131,22 +131,13 @@ pub fn figure(runs: &[PathRun]) -> Result<Figure, FigureError> {
     Ok(Figure {
         name: "path",
         title: "The path of the centre of mass".into(),
-        caption: format!(
-            "The centre of mass in the plane of the table, relative to where it starts, for three \
-             built-in scenes integrated by the rolling model (eqs 23-25 with the heading and the \
-             centre's position as extra states), each panel in its own unit, the same scale on \
-             both axes; the dot marks the start. {}. Rolling without slipping allows no radial slippage, so the inward \
-             spiral of section 6, which needs the contact to slip, cannot appear in these models: \
-             the disk rolling in a circle retraces its circle of radius b = 0.1 m, and the coin \
-             started at b = 0 keeps its centre within micrometres, the nudge showing as a small \
-             rosette (the nutation beating with the precession). In the spin-down the centre \
-             circles the axis ever faster on a small circle whose radius grows as alpha falls: \
-             with no slip to pull it in, dissipation alone moves the motion away from b = 0, the \
-             opposite of the spiral the paper describes. The spin-down panel draws one loop of the \
-             path at each of four times ({}; the whole path, hundreds of loops, fills a disc).",
-            notes.join("; "),
-            loops
-        ),
+        caption: super::captions::caption(
+            "path",
+            &serde_json::json!({
+                "scenes": format!("{}", notes.join("; ")),
+                "loops": loops.to_string(),
+            }),
+        )?,
         drawing: Drawing::Panels(Panels {
             title: "Path of the centre of mass (rolling without slipping)".into(),
             plots,

@@ -2,13 +2,14 @@
 //! largest relative error over the benchmark run against the right-hand-side evaluations it
 //! cost, with the reference's own uncertainty as a floor.
 
+use super::FigureError;
 use crate::figures::chart::Chart;
 use crate::figures::{Drawing, Figure, Series, Style};
 use studies::precision::{reference, Study};
 
 /// The figure, from a finished study (computed once by the report's pipeline; no integration
 /// here).
-pub fn figure(study: &Study) -> Figure {
+pub fn figure(study: &Study) -> Result<Figure, FigureError> {
     let mut series = Vec::new();
     for s in &study.series {
         let pts: Vec<(f64, f64)> = s
@@ -34,15 +35,15 @@ pub fn figure(study: &Study) -> Figure {
         y_log: true,
         series,
     };
-    Figure {
+    Ok(Figure {
         name: "work-precision",
         title: "Speed against accuracy".into(),
-        caption: format!(
-            "Error of each method against the reference ({}), versus the number of right-hand-side \
-             evaluations, on the benchmark scene. RK4 runs at fixed steps; DOPRI5 and DOP853 over \
-             tolerances from 1e-3 to 1e-13. Below the dashed line the reference cannot resolve the error.",
-            reference::label(&study.reference.trace.settings)
-        ),
+        caption: super::captions::caption(
+            "work-precision",
+            &serde_json::json!({
+                "settings": format!("{}", reference::label(&study.reference.trace.settings)),
+            }),
+        )?,
         drawing: Drawing::Chart(chart),
-    }
+    })
 }

@@ -91,24 +91,19 @@ pub fn slip_stick(r: &SlipStick) -> Result<Figure, FigureError> {
     Ok(Figure {
         name: "slip-stick",
         title: "A slipping disk comes to roll (sliding model)".into(),
-        caption: format!(
-            "The built-in slip-stick scene: the toy disk (a = 37.5 mm, k = 1/4) in the steady roll \
-             alpha0 = 0.4 rad, b = 20 mm, given a slip of 0.3 m/s forward and 0.2 m/s sideways on \
-             a table with mu = {mu}, integrated for {t_end:.0} s by the lab-frame model with \
-             Coulomb stick and slip and a unilateral contact (switches located as events, no \
-             smoothing of the law); the panels show the first {shown:.2} s. Left: the contact \
-             point's slip speed, on a log axis (sticking points, from t = {stick}, have none to \
-             draw): it swings with the disk's nutation, then falls to zero in a finite time, \
-             as Coulomb's law makes it. Middle: the normal force over the weight, which swings \
-             with the nutation between {fz_lo:.3} and {fz_hi:.3} over the whole run: the \
-             contact is never lost. Right: the energy E, the work W the contact has taken \
-             (friction while slipping) and their sum, constant to {balance:.1e} relative over \
-             the run: the energy balance closes at the solver's tolerance, and E is constant \
-             once the disk rolls. {events} switches of the contact in the run.",
-            mu = r.mu,
-            stick = stick_from.map_or("nowhere".into(), |t| format!("{t:.3} s")),
-            events = run.contact_events.len(),
-        ),
+        caption: super::captions::caption(
+            "slip-stick",
+            &serde_json::json!({
+                "mu": format!("{}", r.mu),
+                "t_end": format!("{:.0}", t_end),
+                "shown": format!("{:.2}", shown),
+                "stick": format!("{}", stick_from.map_or("nowhere".into(), |t| format!("{t:.3} s"))),
+                "fz_lo": format!("{:.3}", fz_lo),
+                "fz_hi": format!("{:.3}", fz_hi),
+                "balance": format!("{:.1e}", balance),
+                "events": format!("{}", run.contact_events.len()),
+            }),
+        )?,
         drawing: Drawing::Panels(Panels {
             title: format!("Slip-stick scene, μ = {}", r.mu),
             plots: vec![speed, force, energy],
@@ -158,15 +153,12 @@ pub fn paths(r: &SlipStick) -> Result<Figure, FigureError> {
     Ok(Figure {
         name: "slip-stick-path",
         title: "Where the slipping disk goes".into(),
-        caption: format!(
-            "The same run as the slip-stick figure, seen from above: the centre of mass (dashed) \
-             and the lowest point of the rim (solid while it slides, until t = {t_stick:.3} s; \
-             dotted for the first second it rolls), in mm. While it slides the disk is carried off along the \
-             slip it was given and its contact point draws an open arc; once it rolls, the \
-             contact point runs round a circle about the new centre of the motion, and the \
-             centre of mass round a smaller one inside it. The rolling circle's radius is \
-             reported in the friction section's spiral table for other starts."
-        ),
+        caption: super::captions::caption(
+            "slip-stick-path",
+            &serde_json::json!({
+                "t_stick": format!("{:.3}", t_stick),
+            }),
+        )?,
         drawing: Drawing::Plot(plot),
     })
 }
@@ -235,22 +227,14 @@ pub fn mechanisms(r: &SlipStick) -> Result<Figure, FigureError> {
     Ok(Figure {
         name: "mechanisms",
         title: "Which mechanism gives beta = 2?".into(),
-        caption: format!(
-            "The power each dissipation mechanism takes from the toy disk rolling steadily with \
-             b = 0, against Omega (log-log: the slope is the beta of eq 75), and the power the \
-             paper's record needs (eq 79 with beta = {}, through eq 26's energy). The friction \
-             mechanisms (rolling friction by hysteresis, beta 1; viscous rolling friction, 2; \
-             rolling resistance with a lever, -1; pivoting friction, -3) are calibrated to supply that need at Omega = {:.0} rad/s, where the \
-             10 s record starts; the two air mechanisms use air's viscosity and have no free \
-             coefficient (the film by lubrication, beta 4; the boundary layer, beta 2.5, up to a \
-             factor of order one). Lubrication holds \
-             right of the mark, where the gap under the disk is thinner than the viscous layer. \
-             Each calibrated mechanism, run alone through a spin-down and fitted by the \
-             experiment's eq 84 over its last 10 s, gives: {}.",
-            s.data_beta,
-            s.omega_cal,
-            fits.join("; ")
-        ),
+        caption: super::captions::caption(
+            "mechanisms",
+            &serde_json::json!({
+                "data_beta": format!("{}", s.data_beta),
+                "omega_cal": format!("{:.0}", s.omega_cal),
+                "fits": format!("{}", fits.join("; ")),
+            }),
+        )?,
         drawing: Drawing::Plot(plot),
     })
 }

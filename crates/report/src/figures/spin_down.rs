@@ -94,28 +94,23 @@ pub fn figure(sd: &SpinDown) -> Result<Figure, FigureError> {
     Ok(Figure {
         name: "spin-down-alpha",
         title: "The spin-down's tilt against eq 78".into(),
-        caption: format!(
-            "The tilt alpha of the full dissipative spin-down (built-in scene spin-down: a uniform \
-             disk, a = 37.5 mm, rolling without slipping from steady b = 0 motion at 0.15 rad, \
-             losing energy at eq 75's rate with beta = {beta} and epsilon = {:.1e}) against the \
-             time left to the singular time t0 = {t0:.4} s (the run stops at {t_stop:.4} s: {}; \
-             t0 adds the {tau_rem:.1e} s the law still needs to reach alpha = 0). The dashed line \
-             is eq 78 as printed, whose factor 2/5 comes from eq 76's use of P = (5/2) m a g \
-             alpha_dot; the solid line is the same law with the factor 2/3 that the energy \
-             balance dE/dt = P gives for E = (3/2) m g a alpha. Both have the slope \
-             2/(beta+2) = {:.2}; the model follows the 2/3 line (model/law = {r23:.3} at \
-             t0 - t = {:.2e} s) and lies above the paper's by a factor {r25:.3}: the paper's factor is \
-             40 % too small, so for a given alpha its law puts the end 5/3 times too far away. In \
-             the last {:.0} ms (alpha below about {:.4} rad) the model leaves both lines and falls \
-             faster: the adiabatic premises (alpha_dot^2 and alpha_ddot negligible, Omega^2 = \
-             g/(a k alpha)) fail as the end approaches.",
-            sd.epsilon,
-            r.ending,
-            2.0 / (beta + 2.0),
-            mid.0,
-            1e3 * depart.0,
-            depart.1
-        ),
+        caption: super::captions::caption(
+            "spin-down-alpha",
+            &serde_json::json!({
+                "beta": beta.to_string(),
+                "epsilon": format!("{:.1e}", sd.epsilon),
+                "t0": format!("{:.4}", t0),
+                "t_stop": format!("{:.4}", t_stop),
+                "ending": format!("{}", r.ending),
+                "tau_rem": format!("{:.1e}", tau_rem),
+                "slope": format!("{:.2}", 2.0 / (beta + 2.0)),
+                "r23": format!("{:.3}", r23),
+                "mid": format!("{:.2e}", mid.0),
+                "r25": format!("{:.3}", r25),
+                "depart": format!("{:.0}", 1e3 * depart.0),
+                "depart_alpha": format!("{:.4}", depart.1),
+            }),
+        )?,
         drawing: Drawing::Plot(plot),
     })
 }

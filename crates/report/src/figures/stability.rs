@@ -160,24 +160,14 @@ pub fn figure(paper: &Paper) -> Result<Figure, FigureError> {
     Ok(Figure {
         name: "stability-map",
         title: "Where steady rolling is unstable".into(),
-        caption: format!(
-            "Cells where eq 54 gives a negative varpi^2 for a uniform disk (k = 1/4): the steady \
-             motion at tilt alpha0 with the centre of mass on a circle of radius b is unstable \
-             there. The paper says the bracket of eq 54 (its coefficient of b/a) is negative above \
-             {zero:.1} deg, 'about 60 degrees', so that \
-             positive b is unstable at large tilt (grey dashed lines at {zero:.1} and 60 deg). \
-             A negative bracket is necessary but not sufficient: eq 54 is a quadratic in b/a \
-             with a positive constant and a positive b^2 term, negative only between its roots, \
-             which are real only above {:.1} deg (triangle, b = {:.2} a). Between {zero:.1} and \
-             {:.1} deg every b is stable; above, only a band of b is unstable, and small b (the \
-             spinning coin) and large b (a wide circle) stay stable. Below the blue dashed line \
-             (eq 30) there is no steady motion; negative b is always stable, as the paper says. \
-             The test of this figure checks the cells against the sign of varpi^2 from the exact \
-             Jacobian of eqs 23-25.",
-            a_on.to_degrees(),
-            rho_on,
-            a_on.to_degrees()
-        ),
+        caption: super::captions::caption(
+            "stability-map",
+            &serde_json::json!({
+                "zero": format!("{:.1}", zero),
+                "a_on": format!("{:.1}", a_on.to_degrees()),
+                "rho_on": format!("{:.2}", rho_on),
+            }),
+        )?,
         drawing: Drawing::Plot(plot),
     })
 }

@@ -63,15 +63,13 @@ pub fn tilt(t: &Toy) -> Result<Figure, FigureError> {
     Ok(Figure {
         name: "peer-tilt",
         title: "The toy's tilt: this tool against M. Batista's program".into(),
-        caption: format!(
-            "The tilt over time of the same scene run by this tool's sliding model (dots) and by \
-             the peer program (its stored result.txt, every print time both reach; the samples \
-             are too sparse to follow the nutation, so they are not joined), with its slip \
-             regularization as in its source (squares) and set to 1e-7 m/s (crosses). Left: {}. \
-             Right: {}. Where a slip ends, the regularized peer creeps instead of rolling and \
-             drifts away; with the regularization far below its source's the two agree closely.",
-            words[0], words[1]
-        ),
+        caption: super::captions::caption(
+            "peer-tilt",
+            &serde_json::json!({
+                "left": format!("{}", words[0]),
+                "right": format!("{}", words[1]),
+            }),
+        )?,
         drawing: Drawing::Panels(Panels {
             title: "Tilt of the toy over time".into(),
             plots,
@@ -136,25 +134,17 @@ pub fn difference(t: &Toy) -> Result<Figure, FigureError> {
     Ok(Figure {
         name: "peer-difference",
         title: "How far this tool and M. Batista's program differ in tilt".into(),
-        caption: format!(
-            "The absolute tilt difference between this tool and the peer program at each print \
-             time both reach, for the {} stored scenes run by the peer with its slip \
-             regularization as in its source (left) and set to 1e-7 m/s (right); one colour per \
-             scene in both panels, differences below {FLOOR:.0e} rad drawn there (equal printed \
-             digits), the line at 5e-8 rad the finest difference the peer's 7 printed decimals \
-             show. The largest difference is {} rad on the left and {} rad on the right: the \
-             runs that end a slip and roll drift apart where the regularized peer creeps; with \
-             1e-7 m/s the runs that start rolling come within {} rad (the print step \
-             the peer slides at its start), those that end a slip later differ more (the peer \
-             relocks only at a print step). \
-             Not drawn: {} (no second run stored; their differences are in the table of the \
-             peer runs).",
-            both.len(),
-            crate::number::scientific(top, 2),
-            crate::number::scientific(sharpest(&both, false), 2),
-            crate::number::scientific(sharpest(&both, true), 2),
-            others.join(", ")
-        ),
+        caption: super::captions::caption(
+            "peer-difference",
+            &serde_json::json!({
+                "scenes": format!("{}", both.len()),
+                "FLOOR": format!("{:.0e}", FLOOR),
+                "source_max": format!("{}", crate::number::scientific(top, 2)),
+                "regularized_max": format!("{}", crate::number::scientific(sharpest(&both, false), 2)),
+                "fine_max": format!("{}", crate::number::scientific(sharpest(&both, true), 2)),
+                "undrawn": format!("{}", others.join(", ")),
+            }),
+        )?,
         drawing: Drawing::Panels(Panels {
             title: "Tilt difference, this tool against the peer".into(),
             plots: vec![left, right],

@@ -4,7 +4,8 @@
 //! templates in `templates/parts/NAME/` (its section in HTML and in LaTeX, and the paragraphs it
 //! writes as text). Every part is a row of [`PARTS`], in the report's order; the HTML and LaTeX
 //! templates loop over the parts drawn, and their tables are numbered through the report in that
-//! order. Adding a topic is one folder here, one in `templates/parts/`, and its row.
+//! order; each writes its record in `report.json` ([`record`]). Adding a topic is one folder
+//! here, one in `templates/parts/`, and its row.
 
 use crate::error::ReportError;
 use crate::results::Results;
@@ -52,6 +53,7 @@ pub mod experiment;
 pub mod friction;
 pub mod precision;
 pub mod prose;
+pub mod record;
 pub mod toy;
 
 /// A part's templates, compiled into the binary: its section in each format, and the
@@ -114,6 +116,11 @@ pub trait Part: Sync {
     fn about(&self) -> &'static About;
     /// Its draft from `results`, or `None` when what it shows was not computed.
     fn draft<'r>(&self, bench: &'r Bench, results: &'r Results) -> Drafted<'r>;
+    /// Its record in `report.json` from `results` (made with [`record::record_of`]), `None`
+    /// when what it records was not computed.
+    fn record(&self, results: &Results) -> Result<Option<record::Record>, ReportError>;
+    /// The JSON schema of its record.
+    fn record_schema(&self, generator: &mut schemars::SchemaGenerator) -> schemars::Schema;
     /// Its name ([`About::name`]).
     fn name(&self) -> &'static str {
         self.about().name

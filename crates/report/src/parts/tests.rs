@@ -1,6 +1,7 @@
 //! The table of parts is complete: every part's folder, here and in `templates/parts/`, is a
 //! registered part, every file of its templates' folder is one of its registered templates, and
-//! every registered part renders its section in HTML and in LaTeX.
+//! every registered part renders its section in HTML and in LaTeX and has its record in the
+//! published schema.
 
 use super::*;
 use std::path::Path;
@@ -113,6 +114,29 @@ fn every_registered_part_renders_in_both_formats() {
             html.contains(&format!("id=\"{}\"", p.name())),
             "{} has no anchor of its name",
             p.name()
+        );
+    }
+}
+
+/// The published schema of `report.json` has every registered part's record under `parts`, and
+/// nothing else there.
+#[test]
+fn the_schema_has_every_part_record() {
+    let schema: serde_json::Value =
+        serde_json::from_str(&crate::json::schema().expect("the schema")).expect("JSON");
+    let parts = &schema["$defs"]["PartRecords"]["properties"];
+    let mut names: Vec<String> = parts
+        .as_object()
+        .expect("PartRecords has properties")
+        .keys()
+        .cloned()
+        .collect();
+    names.sort();
+    assert_eq!(names, registered());
+    for (name, record) in parts.as_object().unwrap() {
+        assert!(
+            record.get("$ref").is_some() || record.get("type").is_some(),
+            "part {name}'s record has no schema: {record}"
         );
     }
 }

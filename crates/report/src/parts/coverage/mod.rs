@@ -4,8 +4,10 @@
 pub mod section;
 
 use super::{About, Draft, Drafted, Part};
+use crate::error::ReportError;
 use crate::results::Results;
 use checks::equations::Bench;
+use schemars::{Schema, SchemaGenerator};
 
 /// The coverage of the stated uncertainties.
 pub struct Coverage;
@@ -31,5 +33,15 @@ impl Part for Coverage {
                 Ok(section::section(&stored, tables, figures.number("coverage"))?.into())
             }),
         }))
+    }
+
+    /// The stored coverage studies as they are.
+    fn record(&self, _: &Results) -> Result<Option<super::record::Record>, ReportError> {
+        let stored = studies::coverage_record::stored().map_err(|e| e.to_string())?;
+        super::record::record_of(Some(&stored))
+    }
+
+    fn record_schema(&self, generator: &mut SchemaGenerator) -> Schema {
+        generator.subschema_for::<Vec<studies::coverage_record::StoredCoverage>>()
     }
 }

@@ -2,13 +2,16 @@
 //! signal ([`section`]), the phone's sound of the same spin-down ([`sound`]), and the paper's
 //! own numbers recomputed from its fitted constants.
 
+pub mod record;
 pub mod section;
 pub mod sound;
 
 use super::{About, Draft, Drafted, Part, Written};
+use crate::error::ReportError;
 use crate::results::Results;
 use crate::study;
 use checks::equations::Bench;
+use schemars::{Schema, SchemaGenerator};
 
 /// The experiment, simulated.
 pub struct Experiment;
@@ -50,5 +53,17 @@ impl Part for Experiment {
                 Ok(written)
             }),
         }))
+    }
+
+    /// The fits on the light signal and on the sound, beside the truth.
+    fn record(&self, results: &Results) -> Result<Option<super::record::Record>, ReportError> {
+        let record = results
+            .get(&study::Experiment)
+            .map(|e| record::record(e, results.get(&study::Sound)));
+        super::record::record_of(record.as_ref())
+    }
+
+    fn record_schema(&self, generator: &mut SchemaGenerator) -> Schema {
+        generator.subschema_for::<record::ExperimentRecord>()
     }
 }

@@ -5,9 +5,11 @@ pub mod listing;
 pub mod section;
 
 use super::{About, Draft, Drafted, Part};
+use crate::error::ReportError;
 use crate::results::Results;
 use crate::study;
 use checks::equations::Bench;
+use schemars::{Schema, SchemaGenerator};
 
 /// Friction and contact.
 pub struct Friction;
@@ -36,5 +38,14 @@ impl Part for Friction {
                 Ok(section::section(studies, bench.paper, tables, &slip_stick)?.into())
             }),
         }))
+    }
+
+    /// The friction studies as they are.
+    fn record(&self, results: &Results) -> Result<Option<super::record::Record>, ReportError> {
+        super::record::record_of(results.get(&study::Friction).map(|f| &f.studies))
+    }
+
+    fn record_schema(&self, generator: &mut SchemaGenerator) -> Schema {
+        generator.subschema_for::<studies::sliding::Studies>()
     }
 }

@@ -4,9 +4,11 @@
 pub mod section;
 
 use super::{About, Draft, Drafted, Part};
+use crate::error::ReportError;
 use crate::results::Results;
 use crate::study;
 use checks::equations::Bench;
+use schemars::{Schema, SchemaGenerator};
 
 /// Speed against accuracy.
 pub struct Precision;
@@ -31,5 +33,15 @@ impl Part for Precision {
                 Ok(section::section(precision, tables, figures.number("work-precision"))?.into())
             }),
         }))
+    }
+
+    /// One record per run of the speed/accuracy study.
+    fn record(&self, results: &Results) -> Result<Option<super::record::Record>, ReportError> {
+        let records = results.get(&study::Precision).map(section::records);
+        super::record::record_of(records.as_ref())
+    }
+
+    fn record_schema(&self, generator: &mut SchemaGenerator) -> Schema {
+        generator.subschema_for::<Vec<section::PrecisionRecord>>()
     }
 }

@@ -3,11 +3,12 @@
 //! accuracy, and every run's numbers for the disclosure and the appendix (and `report.json`).
 
 use crate::error::ReportError;
-use crate::json::PrecisionRecord;
 use crate::number::{error, places, scientific};
 use crate::parts::prose::paragraph;
 use crate::study_table::{cite, StudySection, StudyTable};
 use physics::solve::Method;
+use schemars::JsonSchema;
+use serde::Serialize;
 use studies::precision::{reference, Series, Study};
 
 /// The accuracy the table prices: the largest relative error over the run.
@@ -81,6 +82,19 @@ fn output(study: &Study) -> String {
         ));
     }
     lines.join("\n")
+}
+
+/// One run of the speed/accuracy study.
+#[derive(Debug, Clone, PartialEq, Serialize, JsonSchema)]
+pub struct PrecisionRecord {
+    /// Method and tolerance.
+    pub label: String,
+    /// Right-hand-side evaluations.
+    pub evaluations: u64,
+    /// Relative error at the final time.
+    pub final_error: f64,
+    /// Largest relative error over the run.
+    pub trajectory_error: f64,
 }
 
 /// Every run's numbers, for `report.json`.

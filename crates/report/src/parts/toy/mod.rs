@@ -6,9 +6,11 @@ pub mod section;
 pub mod steady_table;
 
 use super::{About, Draft, Drafted, Part};
+use crate::error::ReportError;
 use crate::results::Results;
 use crate::study;
 use checks::equations::Bench;
+use schemars::{Schema, SchemaGenerator};
 
 /// The real toy.
 pub struct Toy;
@@ -37,5 +39,14 @@ impl Part for Toy {
                 Ok(section::section(toy, tables, &agreement)?.into())
             }),
         }))
+    }
+
+    /// The peer program's stored runs compared, and the toy's thickness against the thin disk.
+    fn record(&self, results: &Results) -> Result<Option<super::record::Record>, ReportError> {
+        super::record::record_of(results.get(&study::Toy))
+    }
+
+    fn record_schema(&self, generator: &mut SchemaGenerator) -> Schema {
+        generator.subschema_for::<studies::toy::Toy>()
     }
 }
