@@ -26,6 +26,7 @@ mod experiment_turn_count;
 mod extremes;
 mod figures;
 mod hostile;
+mod hostile_advice;
 mod hostile_budgets;
 mod hostile_round2;
 mod invariance;
