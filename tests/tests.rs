@@ -44,6 +44,7 @@ mod paper_limits;
 mod paper_source;
 mod parallel;
 mod peer;
+mod peer_builtin;
 mod peer_raw;
 mod precision;
 mod premises;

@@ -37,6 +37,7 @@
 //!   within $2\times10^{-4}$ rad of flat, or where the normal force vanishes (it has no flight).
 
 pub mod along;
+pub mod builtin;
 pub mod clock;
 pub mod compare;
 pub mod floors;
