@@ -85,3 +85,84 @@ proptest! {
         check_65_within(10f64.powf(log_seconds))?;
     }
 }
+
+/// `simulate` of `scene` (a built-in's text) with `solver: { max_steps, rtol }` and a wall-time
+/// budget: it runs, or it is refused naming the stage (the scene's value with its range, the
+/// integration's step limit or the wall-time budget); a step limit too small names the
+/// `max_steps` that reaches the end, and that value, applied, runs. Never a panic.
+fn simulate_within(
+    scene: &str,
+    max_steps: u64,
+    rtol: f64,
+    seconds: f64,
+) -> Result<(), TestCaseError> {
+    let dir = temp_dir("hostile-budgets", "fuzz");
+    let src = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("paper/scenes/{scene}.yaml")),
+    )
+    .unwrap_or_default();
+    let with = |steps: u64| {
+        src.replace(
+            "solver: { method: dop853, rtol: 1.0e-10,",
+            &format!("solver: {{ method: dop853, max_steps: {steps}, rtol: {rtol:e},"),
+        )
+    };
+    prop_assert!(with(1) != src, "{scene}: no solver line to edit");
+    std::fs::write(dir.join("s.yaml"), with(max_steps)).ok();
+    let budget = format!("{seconds:e}");
+    let args = ["simulate", "s.yaml", "--max-seconds", &budget];
+    let (ok, _, err, _) = cli_timed(&dir, &args);
+    prop_assert!(!err.contains("panicked"), "{err}");
+    if ok {
+        return Ok(());
+    }
+    let stage = ["s.yaml:", "gave up after", "wall-time budget"];
+    prop_assert!(stage.iter().any(|s| err.contains(s)), "{err}");
+    if let Some(n) = err
+        .split("max_steps: ")
+        .nth(1)
+        .and_then(|r| r.split(' ').next())
+        .and_then(|n| n.parse::<u64>().ok())
+        .filter(|_| err.contains("gave up after"))
+    {
+        std::fs::write(dir.join("s.yaml"), with(n)).ok();
+        let (ok, _, again, _) = cli_timed(&dir, &["simulate", "s.yaml", "--max-seconds", "600"]);
+        prop_assert!(ok, "max_steps {n} from {err}: {again}");
+    }
+    Ok(())
+}
+
+#[test]
+fn a_step_limit_too_small_names_one_that_reaches_the_end_and_it_does() {
+    let dir = temp_dir("hostile-budgets", "steps");
+    let src = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("paper/scenes/slip-stick.yaml"),
+    )
+    .unwrap_or_default();
+    std::fs::write(
+        dir.join("s.yaml"),
+        src.replace("solver: {", "solver: { max_steps: 400,"),
+    )
+    .ok();
+    let (ok, _, err, _) = cli_timed(&dir, &["simulate", "s.yaml"]);
+    assert!(!ok && err.contains("gave up after 400 steps"), "{err}");
+    assert!(err.contains("set solver: { max_steps: "), "{err}");
+    simulate_within("slip-stick", 400, 1e-10, 600.0).expect("the advice works");
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 8, failure_persistence: None, rng_seed: proptest::test_runner::RngSeed::Fixed(20_261_128), ..ProptestConfig::default() })]
+    /// Step limits from 1 to 5e7, tolerances from 1e-12 to 1e-3 and budgets from a microsecond
+    /// to a second, on a rolling scene and a sliding one (the hybrid driver).
+    #[test]
+    fn no_budget_makes_simulate_panic_and_every_limit_named_works(
+        log_steps in 0.0f64..7.7,
+        log_rtol in -12.0f64..-3.0,
+        log_seconds in -6.0f64..0.0,
+        sliding in proptest::bool::ANY,
+    ) {
+        let scene = if sliding { "slip-stick" } else { "spinning-coin" };
+        let steps = 10f64.powf(log_steps).round().max(1.0) as u64;
+        simulate_within(scene, steps, 10f64.powf(log_rtol), 10f64.powf(log_seconds))?;
+    }
+}

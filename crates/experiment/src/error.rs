@@ -52,6 +52,20 @@ pub enum ExperimentError {
         /// The cell as written.
         cell: String,
     },
+    /// A number written with a decimal comma.
+    #[error("{file}:{line}:{col}: the {column} cell \"{cell}\" has a decimal comma: write the file with a decimal point (replace each decimal ',' with '.'; a spreadsheet writes it when its language is English)")]
+    DecimalComma {
+        /// The file.
+        file: String,
+        /// The 1-based line.
+        line: usize,
+        /// Which column ("time" or "signal").
+        column: String,
+        /// The 1-based column.
+        col: usize,
+        /// The cell as written.
+        cell: String,
+    },
     /// NaN or infinity.
     #[error(
         "{file}:{line}:{col}: the {column} is {value} (NaN or infinite): remove or repair this row"

@@ -18,6 +18,7 @@ pub mod mutate;
 pub mod notation;
 pub mod orient;
 pub mod parse;
+mod premises;
 pub mod printed;
 pub mod tex;
 mod tex_paper;

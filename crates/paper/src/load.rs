@@ -126,6 +126,7 @@ impl Paper {
                 message: "the entries must be the paper's 85 numbered equations, numbers 1 to 85 in order".into(),
             });
         }
+        crate::premises::check(&entries, equations, &file("equations.yaml"))?;
         if let Some(e) = entries.iter().find(|e| {
             e.estimate
                 .as_ref()

@@ -90,6 +90,7 @@ impl Paper {
                 path: eqfile.clone(),
                 message: super::yaml_message(&e),
             })?;
+        crate::premises::check(&entries, yaml, &eqfile)?;
         let mut numbered = found.iter().filter(|t| t.number.is_some());
         if let Some(extra) =
             numbered.find(|t| !entries.iter().any(|e| Some(&e.label) == t.label.as_ref()))

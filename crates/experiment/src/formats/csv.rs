@@ -71,17 +71,26 @@ fn lines_any(text: &str) -> impl Iterator<Item = &str> {
     })
 }
 
-/// The cells of a line, split at commas, else tabs, else semicolons, else runs of spaces;
-/// empty cells at the end (trailing separators) dropped.
+/// The cells of a line, split at semicolons, else commas, else tabs, else runs of spaces (a
+/// line with semicolons is split at them: its commas are decimal commas); each cell's
+/// surrounding double quotes dropped (`"time_s"`); empty cells at the end (trailing separators)
+/// dropped.
 fn cells(s: &str) -> Vec<&str> {
-    let mut c: Vec<&str> = if s.contains(',') {
-        s.split(',').map(str::trim).collect()
+    fn unquote(c: &str) -> &str {
+        let c = c.trim();
+        c.strip_prefix('"')
+            .and_then(|x| x.strip_suffix('"'))
+            .unwrap_or(c)
+            .trim()
+    }
+    let mut c: Vec<&str> = if s.contains(';') {
+        s.split(';').map(unquote).collect()
+    } else if s.contains(',') {
+        s.split(',').map(unquote).collect()
     } else if s.contains('\t') {
-        s.split('\t').map(str::trim).collect()
-    } else if s.contains(';') {
-        s.split(';').map(str::trim).collect()
+        s.split('\t').map(unquote).collect()
     } else {
-        s.split_whitespace().collect()
+        s.split_whitespace().map(unquote).collect()
     };
     while c.last().is_some_and(|x| x.is_empty()) {
         c.pop();
@@ -127,8 +136,8 @@ fn signal_factor(unit: &str) -> f64 {
 
 /// Parses and validates CSV text; `file` names it in errors.
 ///
-/// Accepted: a UTF-8 byte-order mark; LF, CRLF or CR line ends; cells separated by commas,
-/// tabs, semicolons or spaces; trailing separators; `#` comment lines; a header whose cells
+/// Accepted: a UTF-8 byte-order mark; LF, CRLF or CR line ends; cells separated by semicolons,
+/// commas, tabs or spaces, each in double quotes or not; a decimal comma refused naming it; trailing separators; `#` comment lines; a header whose cells
 /// name units (time in s, ms, us or ns, converted to s; signal in V, mV or uV, converted to V,
 /// or any other unit, kept); columns after the second ignored. At most [`MAX_SAMPLES`] rows.
 pub fn parse_trace(text: &str, file: &str) -> Result<Trace, ExperimentError> {
@@ -182,16 +191,28 @@ pub fn parse_trace(text: &str, file: &str) -> Result<Trace, ExperimentError> {
             });
         }
         let num = |k: usize, name: &str| -> Result<f64, ExperimentError> {
-            let x = cells[k]
-                .parse::<f64>()
-                .map_err(|_| ExperimentError::NotANumber {
-                    file: file.into(),
-                    line,
-                    column: name.into(),
-                    col: k + 1,
-                    // Quoted cut to a few dozen characters, control characters escaped: one line.
-                    cell: physics::scene::message::cut(cells[k]),
-                })?;
+            let x = cells[k].parse::<f64>().map_err(|_| {
+                // Quoted cut to a few dozen characters, control characters escaped: one line.
+                let cell = physics::scene::message::cut(cells[k]);
+                let (file, column, col) = (file.into(), name.into(), k + 1);
+                if cells[k].replace(',', ".").parse::<f64>().is_ok() {
+                    ExperimentError::DecimalComma {
+                        file,
+                        line,
+                        column,
+                        col,
+                        cell,
+                    }
+                } else {
+                    ExperimentError::NotANumber {
+                        file,
+                        line,
+                        column,
+                        col,
+                        cell,
+                    }
+                }
+            })?;
             if x.is_finite() {
                 Ok(x)
             } else {

@@ -173,6 +173,7 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
             break Ending::TooManySteps {
                 t: s.t,
                 steps: settings.max_steps,
+                needs: Ending::pace(max_steps, t0, s.t, t_end),
             };
         }
         let (t_a, y_a) = (s.t, s.y);

@@ -31,6 +31,8 @@ pub enum Ending {
         t: f64,
         /// The limit.
         steps: u32,
+        /// The steps that would reach the end at the pace so far ([`Ending::pace`]).
+        needs: Option<u64>,
     },
     /// The solver's stiffness test fired at time `t`.
     Stiff {
@@ -70,6 +72,22 @@ pub enum Ending {
 }
 
 impl Ending {
+    /// The steps that reach `t_end` from `t0` at the pace of `steps` steps up to `t`, with a
+    /// tenth more (for [`Ending::TooManySteps`]); `None` where no time passed or fewer than 100
+    /// steps were taken (the first steps, still growing from the solver's first guess, tell
+    /// nothing of its pace).
+    pub fn pace(steps: u64, t0: f64, t: f64, t_end: f64) -> Option<u64> {
+        let done = t - t0;
+        (steps >= 100 && done > 0.0 && t_end > t0).then(|| {
+            let n = (steps as f64 * (t_end - t0) / done * 1.1).ceil();
+            if n >= u64::MAX as f64 {
+                u64::MAX
+            } else {
+                n as u64
+            }
+        })
+    }
+
     /// True when the run went as far as it was asked to (end time or a stop event).
     pub fn is_complete(&self) -> bool {
         matches!(self, Ending::TimeReached | Ending::Event { .. })
@@ -86,7 +104,28 @@ impl fmt::Display for Ending {
                 "the step size collapsed at t = {t:.12} s (the motion runs into a singularity: \
                  stop earlier, e.g. with stop: {{ alpha_below: ... }})"
             ),
-            Ending::TooManySteps { t, steps } => write!(
+            Ending::TooManySteps {
+                t,
+                steps,
+                needs: Some(n),
+            } if *n <= crate::budget::MAX_STEPS_LIMIT => write!(
+                f,
+                "gave up after {steps} steps at t = {t:.9} s; at its pace so far about {n} steps \
+                 reach the end: set solver: {{ max_steps: {n} }} (or loosen solver.rtol or lower \
+                 stop.time)"
+            ),
+            Ending::TooManySteps {
+                t,
+                steps,
+                needs: Some(n),
+            } => write!(
+                f,
+                "gave up after {steps} steps at t = {t:.9} s; at its pace so far about {n:.2e} \
+                 steps reach the end, more than the {:.0e} solver.max_steps allows: loosen \
+                 solver.rtol or lower stop.time",
+                crate::budget::MAX_STEPS_LIMIT as f64
+            ),
+            Ending::TooManySteps { t, steps, .. } => write!(
                 f,
                 "gave up after {steps} steps at t = {t:.9} s (raise solver.max_steps, loosen \
                  solver.rtol or lower stop.time)"

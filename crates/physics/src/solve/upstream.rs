@@ -253,6 +253,7 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
                 IntegrationError::MaxNumStepReached { x, n_step } => Ending::TooManySteps {
                     t: x,
                     steps: n_step,
+                    needs: Ending::pace(u64::from(n_step), t0, x, problem.t_end),
                 },
                 IntegrationError::StiffnessDetected { x } => Ending::Stiff { t: x },
             };

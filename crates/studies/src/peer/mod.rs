@@ -25,9 +25,10 @@
 //!   its relock threshold it relocks with its clock set back, and on every switch to rolling it
 //!   keeps the state of the end of its integration step on the clock of the located relock:
 //!   [`clock::on_its_clock`] reads the time of each row's state back from its angles;
-//! - its resistance moments take the sign of the rotation they oppose, like this tool's, and
-//!   neither program has a phase in which that rotation stays stopped: where it passes through
-//!   zero and the moment could hold it, both stall;
+//! - its resistance moments take the sign of the rotation they oppose and it has no phase in
+//!   which that rotation stays stopped: where the rotation passes through zero and the moment
+//!   could hold it, it stalls, where this tool holds it (Coulomb stick of the moment,
+//!   `physics::model::sliding` `stall.rs`);
 //! - it locates switches on a quadratic through three print points, so a switch time is known
 //!   to a fraction of the print step;
 //! - within $|\theta| < 0.02$ rad of upright it smooths the contact point's axial offset (a cubic
@@ -36,6 +37,7 @@
 //!   within $2\times10^{-4}$ rad of flat, or where the normal force vanishes (it has no flight).
 
 pub mod along;
+pub mod builtin;
 pub mod clock;
 pub mod compare;
 pub mod floors;

@@ -46,20 +46,13 @@ impl Dynamics<14> for Flow<'_> {
     fn rhs(&self, y: &State<14>, dy: &mut State<14>) {
         let s = self.snapshot(y);
         let d = &self.model.disk;
-        let f = self.model.contact_force(&self.mode, &s).force;
-        let i = self.model.inertia();
+        let cf = self.model.contact_force(&self.mode, &s);
+        let f = cf.force;
         let drag = self.model.drag_torque(&s);
-        let resist = match self.mode {
-            Mode::Flight => Vector3::zeros(),
-            _ => f.z * self.model.resistance_arm(&s),
-        };
-        let torque_body = s
-            .rotation
-            .inverse_transform_vector(&(s.rho.cross(&f) + drag + resist));
-        let w = s.omega_body;
-        let w_dot = (torque_body - w.cross(&i.component_mul(&w))).component_div(&i);
+        let resist = f.z * cf.arm;
+        let w_dot = self.model.body_angular_acceleration(&s, &f, &cf.arm);
         let q = Quaternion::new(y[0], y[1], y[2], y[3]);
-        let q_dot = q * Quaternion::from_imag(0.5 * w)
+        let q_dot = q * Quaternion::from_imag(0.5 * s.omega_body)
             - q * (self.model.stabilisation * (q.norm_squared() - 1.0));
         let acc = f / d.m - d.g * Vector3::z() + self.drift_correction(&s);
         dy[0] = q_dot.w;

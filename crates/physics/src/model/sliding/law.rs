@@ -31,6 +31,9 @@ pub struct ContactForce {
     /// The denominator $m\,\hat{\mathbf z}\cdot A(\hat{\mathbf z} - \mu\hat{\mathbf s})$ of the slip law
     /// (1 when not slipping); zero or below is Painlevé's paradox.
     pub consistency: f64,
+    /// The resistance arm it was solved with: the moment is `force.z * arm`
+    /// ([`Sliding::held_arm`]).
+    pub arm: Vector3<f64>,
 }
 
 impl Sliding {
@@ -50,24 +53,41 @@ impl Sliding {
         }
     }
 
-    /// The force in `mode` for the geometry `s`.
+    /// The force in `mode` for the geometry `s`, with the resistance held where its rotation
+    /// stops (`stall.rs`).
     pub fn contact_force(&self, mode: &Mode, s: &Snapshot) -> ContactForce {
+        let arm = self.held_arm(mode, s);
+        self.contact_force_with(mode, s, &arm)
+    }
+
+    /// The force in `mode` for the geometry `s` with the resistance arm `arm`.
+    pub(crate) fn contact_force_with(
+        &self,
+        mode: &Mode,
+        s: &Snapshot,
+        arm: &Vector3<f64>,
+    ) -> ContactForce {
         match mode {
             Mode::Flight => ContactForce {
                 force: Vector3::zeros(),
                 consistency: 1.0,
+                arm: Vector3::zeros(),
             },
             Mode::Stick => {
-                let cp = self.contact_problem(s);
+                let cp = self.contact_problem_with(s, arm);
                 ContactForce {
                     force: cp.solve(s, &cp.b),
                     consistency: 1.0,
+                    arm: *arm,
                 }
             }
             Mode::Slip { anchor, held } => {
-                let cp = self.contact_problem(s);
+                let cp = self.contact_problem_with(s, arm);
                 let dir = self.slip_direction(s, anchor, *held);
-                self.slip_force(&cp, s, &dir)
+                ContactForce {
+                    arm: *arm,
+                    ..self.slip_force(&cp, s, &dir)
+                }
             }
         }
     }
@@ -86,11 +106,13 @@ impl Sliding {
             return ContactForce {
                 force: Vector3::zeros(),
                 consistency,
+                arm: Vector3::zeros(),
             };
         }
         ContactForce {
             force: unit * (cp.b.z / denom),
             consistency,
+            arm: Vector3::zeros(),
         }
     }
 

@@ -49,6 +49,7 @@ pub mod contact_events;
 mod flow;
 mod impact;
 mod law;
+mod stall;
 mod switching;
 #[cfg(test)]
 mod tests;
@@ -190,8 +191,13 @@ impl Sliding {
     /// The contact condition at `s`, with the drag torque's angular acceleration
     /// $I^{-1}\mathbf N$ added to the free one (so that sticking, slipping and the guards all see it).
     pub(crate) fn contact_problem(&self, s: &Snapshot) -> ContactProblem {
+        self.contact_problem_with(s, &self.resistance_arm(s))
+    }
+
+    /// The contact condition at `s` with the resistance arm `arm` ([`Sliding::held_arm`]).
+    pub(crate) fn contact_problem_with(&self, s: &Snapshot, arm: &Vector3<f64>) -> ContactProblem {
         let mut cp = ContactProblem::of(&self.disk, s);
-        if let Some(full) = self.full_contact_matrix(s) {
+        if let Some(full) = self.full_contact_matrix(s, arm) {
             let i = self.inertia();
             let spin = s.omega.dot(&s.e1);
             let w_dot_free = -(i.x - i.y) / i.y * spin * s.omega.cross(&s.e1);

@@ -206,7 +206,12 @@ impl Sliding {
 
     /// The matrix $A$ of the contact condition in the lab (module documentation), for a thick
     /// disk or one with resistance; `None` for the thin disk, whose $A$ is diagonal in the triad.
-    pub(crate) fn full_contact_matrix(&self, s: &Snapshot) -> Option<Matrix3<f64>> {
+    /// `arm` is the resistance arm the moment has ([`Sliding::held_arm`]).
+    pub(crate) fn full_contact_matrix(
+        &self,
+        s: &Snapshot,
+        arm: &Vector3<f64>,
+    ) -> Option<Matrix3<f64>> {
         if self.toy.solid.is_none() && self.toy.resistance.is_none() {
             return None;
         }
@@ -216,8 +221,7 @@ impl Sliding {
             let col = x / self.disk.m - s.rho.cross(&self.inverse_inertia(s, &s.rho.cross(&x)));
             a.set_column(j, &col);
         }
-        let arm = self.resistance_arm(s);
-        let lever = self.inverse_inertia(s, &arm).cross(&s.rho);
+        let lever = self.inverse_inertia(s, arm).cross(&s.rho);
         for i in 0..3 {
             a[(i, 2)] += lever[i];
         }
