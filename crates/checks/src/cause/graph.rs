@@ -64,6 +64,7 @@ impl Status {
             Verdict::DependsOn { .. } => Status::Depends,
             Verdict::Fails
             | Verdict::Restates { .. }
+            | Verdict::PartOf { .. }
             | Verdict::UnitMisprint
             | Verdict::DimensionalSlip => Status::Fails,
         }
