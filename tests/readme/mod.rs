@@ -234,8 +234,7 @@ fn the_readmes_table_of_failures_is_the_checks() {
         if let (
             Some(id),
             Some(
-                "fails" | "restates" | "part_of" | "unit_misprint" | "depends"
-                | "dimensional_slip",
+                "fails" | "restates" | "part_of" | "unit_misprint" | "depends" | "dimensional_slip",
             ),
         ) = (c["claim"].as_str(), verdict(c))
         {
