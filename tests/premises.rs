@@ -23,6 +23,7 @@ fn failing(v: &Verdict) -> bool {
         Verdict::Fails
             | Verdict::PremiseFails
             | Verdict::Restates { .. }
+            | Verdict::PartOf { .. }
             | Verdict::DependsOn { .. }
             | Verdict::DimensionalSlip
     )

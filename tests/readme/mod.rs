@@ -77,6 +77,12 @@ fn the_readmes_verdict_counts_are_the_checks() {
             "restated",
             " fails as the equation it restates",
         ),
+        (
+            claims,
+            "claims",
+            "parts",
+            " fails as a part of another claim's statement",
+        ),
         (claims, "claims", "unit_misprints", " are unit misprints"),
         (
             claims,
@@ -227,7 +233,9 @@ fn the_readmes_table_of_failures_is_the_checks() {
     for c in checks() {
         if let (
             Some(id),
-            Some("fails" | "restates" | "unit_misprint" | "depends" | "dimensional_slip"),
+            Some(
+                "fails" | "restates" | "part_of" | "unit_misprint" | "depends" | "dimensional_slip",
+            ),
         ) = (c["claim"].as_str(), verdict(c))
         {
             assert!(

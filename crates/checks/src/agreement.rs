@@ -1,6 +1,7 @@
 //! Verdicts that agree with each other: a finding that rests on a failing premise says so
 //! ([`attach_premises`]), and a claim that restates a failing equation is counted once, at the
-//! equation ([`attach_restated`]).
+//! equation ([`attach_restated`]), and a claim that is a part of another's statement is counted
+//! once, at that claim ([`attach_parts`]).
 
 use crate::checked::{Checked, Subject};
 use crate::harness::Bench;
@@ -42,6 +43,7 @@ pub(crate) fn attach_premises(bench: &Bench, checked: &mut [Checked]) {
                         Verdict::Fails
                             | Verdict::PremiseFails
                             | Verdict::Restates { .. }
+                            | Verdict::PartOf { .. }
                             | Verdict::UnitMisprint
                             | Verdict::DependsOn { .. }
                             | Verdict::DimensionalSlip
@@ -173,6 +175,45 @@ pub(crate) fn attach_restated(bench: &Bench, checked: &mut [Checked]) {
         if let Ok(f) = checked[i].finding.as_mut() {
             if f.verdict == Verdict::Fails {
                 f.verdict = Verdict::Restates { equation };
+            }
+        }
+    }
+}
+
+/// A failing claim that is a part of another claim's statement (`part_of:` in claims.yaml)
+/// whose finding fails too becomes [`Verdict::PartOf`]: one statement, counted once, at that
+/// claim. A part that fails where the claim it belongs to passes keeps its verdict, so the
+/// disagreement shows; so does a part whose claim was not run.
+pub(crate) fn attach_parts(bench: &Bench, checked: &mut [Checked]) {
+    use crate::finding::Verdict;
+    let failing: Vec<&'static str> = checked
+        .iter()
+        .filter_map(|c| match c.subject {
+            Subject::Claim { id } if c.finding.as_ref().is_ok_and(|f| !f.verdict.passes()) => {
+                Some(id)
+            }
+            _ => None,
+        })
+        .collect();
+    for c in checked.iter_mut() {
+        let Subject::Claim { id } = c.subject else {
+            continue;
+        };
+        let Some(whole) = bench
+            .paper
+            .claims
+            .iter()
+            .find(|e| e.id == id)
+            .and_then(|e| e.part_of.as_deref())
+        else {
+            continue;
+        };
+        let Some(&claim) = failing.iter().find(|f| **f == whole) else {
+            continue;
+        };
+        if let Ok(f) = c.finding.as_mut() {
+            if f.verdict == Verdict::Fails {
+                f.verdict = Verdict::PartOf { claim };
             }
         }
     }

@@ -251,6 +251,7 @@ pub fn run_checks(
     attach_causes(bench, &mut all);
     crate::agreement::attach_premises(bench, &mut all);
     crate::agreement::attach_restated(bench, &mut all);
+    crate::agreement::attach_parts(bench, &mut all);
     crate::readings::attach(bench, &mut all);
     crate::agreement::attach_inherited(&mut all);
     Ok(all

@@ -78,6 +78,13 @@ pub enum Verdict {
         /// The printed number of the equation it restates.
         equation: u32,
     },
+    /// A claim that fails and is a part of another claim's statement that fails too
+    /// (`part_of:` in claims.yaml: the paper's "hence" drawn from the same number): one
+    /// statement, counted once, at that claim. The finding keeps the part's own numbers.
+    PartOf {
+        /// The id of the claim it is a part of.
+        claim: &'static str,
+    },
     /// A number that is wrong in the unit printed beside it and right in the unit the text
     /// means ("Hz" for rad/s, "g-cm^-1-s" for g/(cm s)): a unit misprint, reported as one and
     /// never silently read in the unit meant. The finding's `at` gives both readings.
@@ -98,12 +105,15 @@ pub enum Verdict {
 
 impl Verdict {
     /// True for every verdict but [`Verdict::Fails`], [`Verdict::Restates`] (a failing fact
-    /// counted at its equation) and [`Verdict::UnitMisprint`].
+    /// counted at its equation), [`Verdict::PartOf`] (one counted at the claim of its
+    /// statement), [`Verdict::UnitMisprint`], [`Verdict::DependsOn`] and
+    /// [`Verdict::DimensionalSlip`].
     pub fn passes(&self) -> bool {
         !matches!(
             self,
             Verdict::Fails
                 | Verdict::Restates { .. }
+                | Verdict::PartOf { .. }
                 | Verdict::UnitMisprint
                 | Verdict::DependsOn { .. }
                 | Verdict::DimensionalSlip
@@ -129,6 +139,12 @@ impl fmt::Display for Verdict {
             Verdict::UnitMisprint => write!(f, "unit misprint (right in the unit meant)"),
             Verdict::DependsOn { choice } => write!(f, "depends on {choice}"),
             Verdict::DimensionalSlip => write!(f, "dimensional slip"),
+            Verdict::PartOf { claim } => {
+                write!(
+                    f,
+                    "FAILS as a part of {claim} (one statement, counted there)"
+                )
+            }
             Verdict::Restates { equation } => {
                 write!(
                     f,

@@ -9,6 +9,13 @@
 //! premises, [`crate::equations::derivations`]) when it has one that its printed form passes:
 //! eq 77 is wrong physically, but a mutant of it no longer follows from eq 76. Otherwise it has
 //! no score: a check that already fails would "kill" every mutant without telling anything.
+//!
+//! Each mutant is classed by what it changes ([`change`]): a mutant of an estimate that its
+//! check still reads as the estimate is "within the reading" only when it moves a constant;
+//! one that moves an exponent (which the reading fixes exactly) or a sign is a survivor, its
+//! class named.
+
+mod change;
 
 use crate::check::evaluated;
 use crate::equations::{derivations, equations};
@@ -31,8 +38,9 @@ pub struct Score {
     /// What was changed in each survivor.
     pub survivors: Vec<String>,
     /// Mutants of an equation read as an order-of-magnitude estimate that its check still
-    /// reads as one: a constant moved within the estimate's factor, which the reading accepts
-    /// by design (neither killed nor survivors).
+    /// reads as one and that move only a constant: a constant moved within the estimate's
+    /// factor, which the reading accepts by design (neither killed nor survivors). A mutant
+    /// that moves an exponent or a sign and still reads as the estimate is a survivor.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub within_reading: Vec<String>,
     /// Mutants whose check could not evaluate them (a claimed value that is not a number: a
@@ -95,22 +103,29 @@ pub fn mutation_scores(
         };
         // The mutants of one equation are independent: checked in parallel on rayon's pool,
         // collected in their order, so the score does not depend on the thread count.
-        let verdicts: Vec<(Result<Verdict, String>, _)> = ms
+        let verdicts: Vec<(Result<Verdict, String>, _, _)> = ms
             .into_par_iter()
             .map(|m| {
+                let class = change::change(&bench.paper.equation(n).chains, &m.chains);
                 let paper = bench.paper.with_chains(n, m.chains);
                 let b = Bench {
                     paper: &paper,
                     ..*bench
                 };
                 let verdict = evaluated(check(&b), &b).map(|f| f.verdict);
-                (verdict, m.change)
+                (verdict, m.change, class)
             })
             .collect();
-        for (verdict, change) in verdicts {
+        for (verdict, change, class) in verdicts {
             match verdict {
                 Ok(Verdict::Fails) => score.killed += 1,
-                Ok(Verdict::Estimate { .. }) => score.within_reading.push(change),
+                Ok(Verdict::Estimate { .. }) if class == change::Change::Constant => {
+                    score.within_reading.push(change)
+                }
+                Ok(Verdict::Estimate { .. }) => score.survivors.push(format!(
+                    "{change} (changes {class}, which the estimate's reading fixes: still read \
+                     as the estimate)"
+                )),
                 Ok(_) => score.survivors.push(change),
                 Err(why) => score.unevaluated.push(format!("{change} ({why})")),
             }

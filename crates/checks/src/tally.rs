@@ -23,6 +23,9 @@ pub struct Tally {
     /// Claims that fail as the numbered equation they restate fails: one fact, counted at the
     /// equation (their outcome's `restates` names it).
     pub restated: usize,
+    /// Claims that fail as a part of another claim's statement that fails: one statement,
+    /// counted at that claim (their outcome's `part_of` names it).
+    pub parts: usize,
     /// Numbers wrong in the unit printed beside them and right in the unit the text means.
     pub unit_misprints: usize,
     /// Verdicts that change under a reasonable alternative to a choice the paper leaves open.
@@ -43,6 +46,7 @@ impl Tally {
             + self.premise_fails
             + self.fails
             + self.restated
+            + self.parts
             + self.unit_misprints
             + self.depends
             + self.dimensional_slips
@@ -81,6 +85,11 @@ impl Tally {
                 "fails as the equation it restates (counted there)",
                 "fail as the equation they restate (counted there)",
             ),
+            (
+                self.parts,
+                "fails as a part of another claim's statement (counted there)",
+                "fail as a part of another claim's statement (counted there)",
+            ),
             (self.unit_misprints, "unit misprint", "unit misprints"),
             (
                 self.depends,
@@ -116,6 +125,7 @@ impl Tally {
                     Verdict::PremiseFails => t.premise_fails += 1,
                     Verdict::Fails => t.fails += 1,
                     Verdict::Restates { .. } => t.restated += 1,
+                    Verdict::PartOf { .. } => t.parts += 1,
                     Verdict::UnitMisprint => t.unit_misprints += 1,
                     Verdict::DependsOn { .. } => t.depends += 1,
                     Verdict::DimensionalSlip => t.dimensional_slips += 1,

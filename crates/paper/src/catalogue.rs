@@ -106,6 +106,11 @@ pub struct ClaimEntry {
     /// counted once, at the equation, and the claim links to it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub restates: Option<u32>,
+    /// The claim whose statement this one is a part of (the paper's "hence" drawn from the
+    /// same number): one statement is one claim, so where both fail it is counted once, at
+    /// that claim, and this one links to it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub part_of: Option<String>,
 }
 
 /// The reading of a loosely worded number: exactly one of `digits`, `within`, `factor`,

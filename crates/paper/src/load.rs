@@ -175,6 +175,20 @@ impl Paper {
                     ),
                 });
             }
+            if let Some(whole) = c
+                .part_of
+                .as_ref()
+                .filter(|w| **w == c.id || !claim_entries.iter().any(|e| e.id == **w))
+            {
+                return Err(PaperError::Structure {
+                    file: file("claims.yaml"),
+                    message: format!(
+                        "claim `{}`, key `part_of`: `{whole}` is not the id of another claim of \
+                         this file; write the id of the claim whose statement it is a part of",
+                        c.id
+                    ),
+                });
+            }
             if let Some(n) = c.restates.filter(|n| !(1..=85).contains(n)) {
                 return Err(PaperError::Structure {
                     file: file("claims.yaml"),

@@ -126,22 +126,14 @@ fn premises_figure(bench: &Bench, checked: &[Checked]) -> Figure {
         .map(|n| (n, bench.paper.equation(n).entry.premises.clone()))
         .collect();
     let status = |n: u32| match equation_checked(checked, n).map(|c| &c.finding) {
-        Some(Ok(f)) => match f.verdict {
-            Verdict::Holds => Status::Holds,
-            Verdict::HoldsApproximately { .. } => Status::Approx,
-            Verdict::Definition => Status::Definition,
-            Verdict::Estimate { .. } => Status::Estimate,
-            Verdict::PremiseFails => Status::PremiseFails,
-            Verdict::DependsOn { .. } | Verdict::DimensionalSlip => Status::Fails,
-            Verdict::Fails | Verdict::Restates { .. } | Verdict::UnitMisprint => Status::Fails,
-        },
+        Some(Ok(f)) => Status::of(f.verdict),
         _ => Status::Unchecked,
     };
     let causes = checks::check::equation_causes(checked);
     Figure {
         name: "premises",
         title: "Which equation follows from which, and where the errors start".into(),
-        caption: "One node per numbered equation, an arrow from each premise to the equation that cites it (paper/equations.yaml), each row one step further from the paper's starting points. Colours are the verdicts (green holds, blue holds at its order, grey definition, red fails, yellow not checked); a thick outline marks a root cause, and red arrows carry an error into an equation that follows correctly from a failing premise. In the HTML each node links to its finding.".into(),
+        caption: "One node per numbered equation, an arrow from each premise to the equation that cites it (paper/equations.yaml), each row one step further from the paper's starting points. Colours are the verdicts (green holds, blue holds at its order, grey definition, purple estimate, orange holds only under a premise that fails, red fails, teal depends on a choice the paper leaves open, yellow not checked); a thick outline marks a root cause, and red arrows carry an error into an equation that follows correctly from a failing premise. In the HTML each node links to its finding.".into(),
         drawing: Drawing::Premises(PremisesGraph::new(&premises, &status, &causes)),
     }
 }

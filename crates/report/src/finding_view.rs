@@ -42,6 +42,7 @@ pub(crate) fn view(f: &Finding) -> FindingView {
         Verdict::PremiseFails | Verdict::DependsOn { .. } => "premise",
         Verdict::Fails
         | Verdict::Restates { .. }
+        | Verdict::PartOf { .. }
         | Verdict::UnitMisprint
         | Verdict::DimensionalSlip => "fails",
     };

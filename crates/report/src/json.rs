@@ -299,6 +299,9 @@ pub enum VerdictKind {
     /// A claim that fails as the numbered equation it restates fails (`restates` names it):
     /// counted once, at the equation.
     Restates,
+    /// A claim that fails as a part of another claim's statement that fails (`part_of` names
+    /// it): counted once, at that claim.
+    PartOf,
     /// Wrong in the unit printed, right in the unit the text means (`at` gives both).
     UnitMisprint,
     /// Changes under an alternative the paper leaves open (`depends_on`, `robustness`).
@@ -331,6 +334,7 @@ impl VerdictKind {
             Verdict::PremiseFails => VerdictKind::PremiseFails,
             Verdict::Fails => VerdictKind::Fails,
             Verdict::Restates { .. } => VerdictKind::Restates,
+            Verdict::PartOf { .. } => VerdictKind::PartOf,
             Verdict::UnitMisprint => VerdictKind::UnitMisprint,
             Verdict::DependsOn { .. } => VerdictKind::Depends,
             Verdict::DimensionalSlip => VerdictKind::DimensionalSlip,
@@ -392,6 +396,9 @@ pub enum Outcome {
         /// For a claim that restates a failing equation: that equation's printed number.
         #[serde(default, skip_serializing_if = "Option::is_none")]
         restates: Option<u32>,
+        /// For a claim that is a part of another claim's failing statement: that claim's id.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        part_of: Option<String>,
         /// For an order-of-magnitude estimate: its constant against the reference's.
         #[serde(default, skip_serializing_if = "Option::is_none")]
         estimate: Option<EstimateOutcome>,
@@ -446,6 +453,10 @@ impl Outcome {
             premises_failing: f.premises_failing.clone(),
             restates: match f.verdict {
                 Verdict::Restates { equation } => Some(equation),
+                _ => None,
+            },
+            part_of: match f.verdict {
+                Verdict::PartOf { claim } => Some(claim.to_string()),
                 _ => None,
             },
             estimate: match f.verdict {

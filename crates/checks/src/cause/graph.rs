@@ -10,6 +10,7 @@
 //! a dependency for what these thirty lines do.
 
 use super::{premises_first, Cause};
+use crate::finding::Verdict;
 use serde::Serialize;
 use std::collections::BTreeMap;
 
@@ -29,6 +30,9 @@ pub enum Status {
     PremiseFails,
     /// Fails.
     Fails,
+    /// Its verdict changes under a reasonable alternative to a choice the paper leaves open:
+    /// neither a failure nor a pass.
+    Depends,
     /// Not checkable, or could not run.
     Unchecked,
 }
@@ -43,7 +47,26 @@ impl Status {
             Status::Estimate => "estimate",
             Status::PremiseFails => "premise fails",
             Status::Fails => "fails",
+            Status::Depends => "depends on a choice the paper leaves open",
             Status::Unchecked => "not checked",
+        }
+    }
+
+    /// The colour class of a verdict: a verdict that depends on a choice is drawn apart from
+    /// the failures, as the closing line counts it apart.
+    pub fn of(verdict: Verdict) -> Status {
+        match verdict {
+            Verdict::Holds => Status::Holds,
+            Verdict::HoldsApproximately { .. } => Status::Approx,
+            Verdict::Definition => Status::Definition,
+            Verdict::Estimate { .. } => Status::Estimate,
+            Verdict::PremiseFails => Status::PremiseFails,
+            Verdict::DependsOn { .. } => Status::Depends,
+            Verdict::Fails
+            | Verdict::Restates { .. }
+            | Verdict::PartOf { .. }
+            | Verdict::UnitMisprint
+            | Verdict::DimensionalSlip => Status::Fails,
         }
     }
 }
@@ -202,5 +225,16 @@ mod tests {
         assert!(y(1) < y(2) && y(2) < y(3));
         assert!(g.edges.contains(&(2, 3, true)) && g.edges.contains(&(1, 3, false)));
         assert!(g.nodes.iter().any(|m| m.number == 2 && m.root));
+    }
+
+    #[test]
+    fn a_verdict_that_depends_on_a_choice_is_not_drawn_as_a_failure() {
+        let depends = Status::of(Verdict::DependsOn {
+            choice: "the point of evaluation",
+        });
+        assert_eq!(depends, Status::Depends);
+        assert_ne!(depends, Status::of(Verdict::Fails));
+        assert_eq!(Status::of(Verdict::Fails), Status::Fails);
+        assert_eq!(Status::of(Verdict::PremiseFails), Status::PremiseFails);
     }
 }

@@ -17,6 +17,7 @@
 pub mod air_film;
 pub mod claims;
 pub mod derivations;
+mod disk_runs;
 pub mod dissipation;
 pub mod frictionless;
 pub mod kinematics;

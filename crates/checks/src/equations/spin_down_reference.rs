@@ -287,7 +287,7 @@ const EVERY: usize = 10;
 pub(crate) fn time_remaining_on_model(b: &Bench, n: u32, relation: usize, what: &str) -> Finding {
     let eq = b.paper.equation(n);
     let rel = eq.relations().get(relation).copied();
-    let mut errors = vec![0.0f64; MODEL_ALPHAS.len()];
+    let mut runs = crate::equations::disk_runs::DiskRuns::default();
     let mut seen = String::new();
     let mut headline = None;
     for &k in &[0.25, 0.5] {
@@ -331,23 +331,23 @@ pub(crate) fn time_remaining_on_model(b: &Bench, n: u32, relation: usize, what: 
                         "the printed relation puts the time remaining at {x:.4} times the model's at k = {k}, beta = {beta}, alpha0 = {alpha0}"
                     );
                 }
-                let e = (x - 1.0).abs();
-                errors[i] = errors[i].max(if e.is_nan() { f64::INFINITY } else { e });
+                runs.add(k, Some(beta), MODEL_ALPHAS.len(), i, (x - 1.0).abs());
             }
         }
     }
+    let claimed_order = b.paper.equation(76).entry.claimed_order.unwrap_or(2.0);
     let mut f = Finding::from_order(
         format!(
             "{what}: the time remaining to t_0 that it implies along the full dissipative rolling model, \
              as a multiple of the true one (relative error against alpha0)"
         ),
         &MODEL_ALPHAS,
-        &errors,
-        b.paper.equation(76).entry.claimed_order.unwrap_or(2.0),
+        &runs.all(MODEL_ALPHAS.len()),
+        claimed_order,
     );
     f.at = format!("{}; {seen}", f.at);
     f.headline = headline;
-    f
+    f.with_robustness(runs.alternatives(&MODEL_ALPHAS, claimed_order))
 }
 
 #[cfg(test)]

@@ -17,6 +17,7 @@ fn colours(status: Status) -> (RGBColor, RGBColor) {
         Status::Estimate => (RGBColor(0xf3, 0xe8, 0xfb), RGBColor(0x5b, 0x2a, 0x86)),
         Status::PremiseFails => (RGBColor(0xfc, 0xec, 0xdc), RGBColor(0x8a, 0x4b, 0x08)),
         Status::Fails => (RGBColor(0xfd, 0xe4, 0xe1), RGBColor(0x9b, 0x1c, 0x0c)),
+        Status::Depends => (RGBColor(0xdc, 0xf4, 0xf1), RGBColor(0x0b, 0x5f, 0x57)),
         Status::Unchecked => (RGBColor(0xff, 0xf4, 0xd6), RGBColor(0x7a, 0x52, 0x00)),
     }
 }
@@ -175,5 +176,34 @@ mod tests {
             2,
             "one inherited arrow: line and head"
         );
+    }
+
+    #[test]
+    fn a_node_that_depends_on_a_choice_has_its_own_colour() {
+        let (fill, stroke) = colours(Status::Depends);
+        assert!(
+            [
+                Status::Fails,
+                Status::PremiseFails,
+                Status::Holds,
+                Status::Unchecked
+            ]
+            .iter()
+            .all(|&s| colours(s) != (fill, stroke)),
+            "depends is drawn apart from every other verdict"
+        );
+        let g = PremisesGraph {
+            nodes: vec![GraphNode {
+                number: 57,
+                x: 0.5,
+                y: 0.5,
+                status: Status::Depends,
+                root: false,
+                note: "eq 57: depends on a choice the paper leaves open".into(),
+            }],
+            edges: vec![],
+        };
+        let svg = linked_svg(&g, 300, 200);
+        assert!(svg.contains("#dcf4f1") && !svg.contains("#fde4e1"));
     }
 }

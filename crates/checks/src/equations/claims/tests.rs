@@ -289,3 +289,70 @@ fn about_has_one_reading() {
     }
     assert_eq!(read, COMPUTED.len() + 4, "every 'about' and 'roughly' read");
 }
+
+/// "About 60 degrees" and the "hence" drawn from it are one statement: the onset of the
+/// instability is counted once, at the bracket's claim, when both fail; where the bracket's
+/// claim passes (its printed number edited to 52), the part keeps its own failure.
+#[test]
+fn one_statement_is_counted_once() {
+    use crate::check::{run_checks, Selection};
+    use crate::checked::Subject;
+    use crate::tally::Tally;
+    let run = |claims: &str| {
+        let paper = paper_with_claims(claims).expect("the claims parse");
+        let selection = Selection {
+            numbers: Some(Vec::new()),
+            claims: Some(vec![
+                "bracket-negative-angle".into(),
+                "positive-b-unstable-large-tilt".into(),
+            ]),
+        };
+        let checked = run_checks(&Bench::with_paper(&paper), &selection, 1, &|_, _| {})
+            .expect("the two claims run");
+        let part = checked
+            .iter()
+            .find(|c| matches!(c.subject, Subject::Claim { id } if id == "positive-b-unstable-large-tilt"))
+            .and_then(|c| c.finding.as_ref().ok())
+            .map(|f| f.verdict);
+        (part, Tally::of(&checked))
+    };
+    let text = paper::Texts::BUILT_IN.claims;
+    let (part, tally) = run(text);
+    assert_eq!(
+        part,
+        Some(Verdict::PartOf {
+            claim: "bracket-negative-angle"
+        })
+    );
+    assert_eq!((tally.fails, tally.parts), (1, 1), "{tally:?}");
+    let at = text.find("id: bracket-negative-angle").unwrap();
+    let block = &text[at..];
+    let edited = text.replacen(
+        block,
+        &block.replacen("claimed_value: 60", "claimed_value: 52", 1),
+        1,
+    );
+    let (part, tally) = run(&edited);
+    assert_eq!(
+        part,
+        Some(Verdict::Fails),
+        "the bracket's claim passes at 52"
+    );
+    assert_eq!((tally.fails, tally.parts), (1, 0), "{tally:?}");
+}
+
+#[test]
+fn a_part_of_an_unknown_claim_is_refused_naming_the_key() {
+    let text = paper::Texts::BUILT_IN.claims.replace(
+        "part_of: bracket-negative-angle",
+        "part_of: bracket-negative-angles",
+    );
+    let Err(e) = paper_with_claims(&text) else {
+        panic!("a part of no claim must be refused")
+    };
+    let msg = e.to_string();
+    assert!(
+        msg.contains("positive-b-unstable-large-tilt") && msg.contains("`part_of`"),
+        "{msg}"
+    );
+}

@@ -3,6 +3,7 @@
 use super::{
     energy, last_side, steady_precession, Bench, Dual64, Finding, Headline, Motion, SMALL_ALPHAS,
 };
+use crate::equations::disk_runs::DiskRuns;
 use crate::harness::disk_constants;
 use physics::disk::toy_sized;
 
@@ -12,6 +13,7 @@ use physics::disk::toy_sized;
 pub(super) fn eq72_at(b: &Bench, c0: f64) -> Finding {
     let mut headline = None;
     let mut errors = vec![0.0f64; SMALL_ALPHAS.len()];
+    let mut runs = DiskRuns::default();
     let mut worst_form = vec![0usize; SMALL_ALPHAS.len()];
     for &k in &[0.25, 0.5] {
         let d = toy_sized(k);
@@ -41,6 +43,7 @@ pub(super) fn eq72_at(b: &Bench, c0: f64) -> Finding {
                     .map_or(f64::INFINITY, |c| {
                         ((b.claim(c) - reference) / reference).abs()
                     });
+                runs.add(k, None, SMALL_ALPHAS.len(), i, e);
                 if e > errors[i] || e.is_nan() {
                     errors[i] = if e.is_nan() { f64::INFINITY } else { e };
                     worst_form[i] = form + 1;
@@ -72,7 +75,8 @@ pub(super) fn eq72_at(b: &Bench, c0: f64) -> Finding {
         &errors,
         b.paper.equation(72).entry.claimed_order.unwrap_or(2.0),
     );
-    naming_the_worst_side(f, &worst_form, headline)
+    let alternatives = runs.alternatives(&SMALL_ALPHAS, f.claimed);
+    naming_the_worst_side(f, &worst_form, headline).with_robustness(alternatives)
 }
 
 /// Eq 72, $U = \frac12 m\dot h^2 + \frac12 I_{33}\omega^2 + mgh \approx \frac12 m a^2\dot\alpha^2 + \frac32 m a g\alpha$.
@@ -86,8 +90,20 @@ pub(super) fn eq72_at(b: &Bench, c0: f64) -> Finding {
 /// error tends to $k/(k+4)$, 5.9 % for $k = 1/4$ and 11 % for $k = 1/2$, instead of falling as
 /// $\alpha^2$. With $\dot\alpha = 0$ (the adiabatic limit) the claim holds at order 2 (see the
 /// tests).
+///
+/// The tilt rate is a choice the paper leaves open: the verdict is also given at
+/// $\dot\alpha^2 = 0.01\,g\alpha/a$, a slow fall (eq 73's check uses
+/// $\dot\alpha = -0.1\sqrt{g\alpha/a}$); the missing $\frac12 k m a^2\dot\alpha^2$ is then
+/// smaller, but still of the order of the kept terms, so its relative error still does not fall
+/// with $\alpha$.
 pub fn eq72(b: &Bench) -> Finding {
-    eq72_at(b, 1.0)
+    let slow = eq72_at(b, 0.01);
+    eq72_at(b, 1.0).with_robustness(vec![crate::robustness::Alternative::new(
+        "the point of evaluation",
+        "alpha_dot^2 = 0.01 g alpha / a, a slow fall, in place of g alpha / a (k = 0.25, 0.5)",
+        slow.reference,
+        slow.as_read(),
+    )])
 }
 
 /// Eq 73, $P = dU/dt \approx m a^2\dot\alpha\ddot\alpha + \frac32 m a g\dot\alpha \approx \frac52 m a g\dot\alpha$,
@@ -107,6 +123,7 @@ pub fn eq73(b: &Bench) -> Finding {
     let mut errors = vec![0.0f64; SMALL_ALPHAS.len()];
     let mut worst_form = vec![0usize; SMALL_ALPHAS.len()];
     let mut worst_k = vec![0.0f64; SMALL_ALPHAS.len()];
+    let mut runs = DiskRuns::default();
     for &k in &[0.25, 0.5] {
         let d = toy_sized(k);
         for (i, &alpha) in SMALL_ALPHAS.iter().enumerate() {
@@ -134,6 +151,7 @@ pub fn eq73(b: &Bench) -> Finding {
                 let e = eq
                     .scalar(side, &bind)
                     .map_or(f64::INFINITY, |c| (b.claim(c) - reference).abs() / unit);
+                runs.add(k, None, SMALL_ALPHAS.len(), i, e);
                 if e > errors[i] || e.is_nan() {
                     errors[i] = if e.is_nan() { f64::INFINITY } else { e };
                     worst_form[i] = form + 1;
@@ -180,7 +198,8 @@ pub fn eq73(b: &Bench) -> Finding {
         f.at,
         worst_k.last().copied().unwrap_or(f64::NAN)
     );
-    f
+    let alternatives = runs.alternatives(&SMALL_ALPHAS, f.claimed);
+    f.with_robustness(alternatives)
 }
 
 /// `f` with the printed form (side of the chain) that is worst at the smallest tilt named in
