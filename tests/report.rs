@@ -67,9 +67,13 @@ fn html_holds_every_equation_claim_and_figure_as_mathml_and_svg() {
     }
     let corrections = Paper::built_in_shared().corrections.len();
     assert_eq!(
-        html.matches("<math").count(),
+        html.matches("<math display=\"block\"").count(),
         85 + corrections,
-        "one MathML block per equation and one per corrected form"
+        "one displayed MathML block per equation and one per corrected form"
+    );
+    assert!(
+        html.matches("<math display=\"inline\"").count() > 0,
+        "the captions' formulas are inline MathML"
     );
     assert!(html.matches("<svg").count() >= figures.len());
 }
