@@ -6,6 +6,8 @@
 //! as the same relations, node for node; `tests/author_forms.rs` requires the checks' outcomes on
 //! them to be those of the printed text.
 
+use crate::tex::macros::group;
+
 /// One family of rewrites: its name and the rewrite.
 pub struct Form {
     /// A short name for messages.
@@ -73,27 +75,6 @@ pub const FORMS: &[Form] = &[
         rewrite: frac_digits,
     },
 ];
-
-/// The braced group opening at byte `i`: its content and the byte after its `}`.
-fn group(s: &str, i: usize) -> Option<(&str, usize)> {
-    if !s.get(i..)?.starts_with('{') {
-        return None;
-    }
-    let mut depth = 0usize;
-    for (k, c) in s[i..].char_indices() {
-        match c {
-            '{' => depth += 1,
-            '}' => {
-                depth -= 1;
-                if depth == 0 {
-                    return Some((&s[i + 1..i + k], i + k + 1));
-                }
-            }
-            _ => {}
-        }
-    }
-    None
-}
 
 /// Every `\cmd{A}` (with `args` braced arguments) rewritten by `f`, innermost first.
 fn each_command(s: &str, cmd: &str, args: usize, f: &dyn Fn(&[String]) -> String) -> String {

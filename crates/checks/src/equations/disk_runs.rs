@@ -119,6 +119,24 @@ impl DiskRuns {
     }
 }
 
+/// The worse of `parts` by [`crate::harness::worst_order`], with the alternatives of `runs`
+/// (at `small`, against `claimed_order`) when the part that decides is the one whose comparison
+/// is `judged`: the alternatives are that part's choices, not the others'.
+pub(crate) fn worse_part(
+    parts: Vec<(String, Finding)>,
+    judged: &str,
+    runs: &DiskRuns,
+    small: &[f64],
+    claimed_order: f64,
+) -> Finding {
+    let f = crate::harness::worst_order(parts);
+    if f.compared == judged {
+        f.with_robustness(runs.alternatives(small, claimed_order))
+    } else {
+        f
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -107,21 +107,22 @@ impl Parser {
             Expr::Sym(s) => s,
             _ => return None,
         };
-        if !(self.eat(&Tok::RBrace)
-            && self.eat(&Tok::LBrace)
-            && self.eat(&Tok::Letter('d'))
-            && self.eat(&Tok::Letter('t')))
-        {
-            return None;
-        }
-        if self.order()? != order || !self.eat(&Tok::RBrace) {
-            return None;
-        }
+        self.over_dt(order)?;
         sym.derivative = order;
         if let Some(last) = self.seen.last_mut() {
             last.0 = sym.clone();
         }
         Some(Expr::Sym(sym))
+    }
+
+    /// The end of a derivative's numerator and its denominator, `}{dt}` or `}{dt^2}`, of the
+    /// numerator's `order`; `None` when what follows is not that.
+    fn over_dt(&mut self, order: u8) -> Option<()> {
+        let denominator = self.eat(&Tok::RBrace)
+            && self.eat(&Tok::LBrace)
+            && self.eat(&Tok::Letter('d'))
+            && self.eat(&Tok::Letter('t'));
+        (denominator && self.order()? == order && self.eat(&Tok::RBrace)).then_some(())
     }
 
     /// `{d}{dt}` or `{d^2}{dt^2}` after `\frac`, followed by a symbol: the order, the tokens
@@ -134,16 +135,7 @@ impl Parser {
                 return None;
             }
             let order = self.order()?;
-            if !(self.eat(&Tok::RBrace)
-                && self.eat(&Tok::LBrace)
-                && self.eat(&Tok::Letter('d'))
-                && self.eat(&Tok::Letter('t')))
-            {
-                return None;
-            }
-            if self.order()? != order || !self.eat(&Tok::RBrace) {
-                return None;
-            }
+            self.over_dt(order)?;
             Some((order, self.starts_plain_symbol_or_accent()))
         })();
         match ok {

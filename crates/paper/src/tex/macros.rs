@@ -32,8 +32,9 @@ fn control_word(s: &str, i: usize) -> Option<(&str, usize)> {
     (len > 0).then(|| (&rest[..len], i + 1 + len))
 }
 
-/// The braced group opening at byte `i` (which must be `{`): its content and the byte after.
-fn group(s: &str, i: usize) -> Option<(&str, usize)> {
+/// The braced group opening at byte `i` (which must be `{`): its content and the byte after
+/// its `}`; an escaped brace (`\{`) inside it is text.
+pub(crate) fn group(s: &str, i: usize) -> Option<(&str, usize)> {
     if !s.get(i..)?.starts_with('{') {
         return None;
     }

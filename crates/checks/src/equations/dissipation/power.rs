@@ -6,7 +6,7 @@ use super::{
     Headline, Method, Model, Motion, PowerLaw, Problem, Rolling, State, Tolerance, Worst, BETAS,
     SMALL_ALPHAS,
 };
-use crate::equations::disk_runs::DiskRuns;
+use crate::equations::disk_runs::{worse_part, DiskRuns};
 use physics::disk::toy_sized;
 
 /// Eqs 74-75 against the dissipative rolling model: at states sampled along its integrations,
@@ -213,17 +213,13 @@ pub fn eq76(b: &Bench) -> Finding {
         &errors2,
         claimed_order,
     );
+    // The disk and the dissipation law are choices of the first relation's runs.
     let judged = first.compared.clone();
-    let f = crate::harness::worst_order(vec![
+    let parts = vec![
         ("first relation".into(), first),
         ("second relation".into(), second),
-    ]);
-    // The disk and the dissipation law are choices of the first relation's runs.
-    if f.compared == judged {
-        f.with_robustness(runs.alternatives(&alphas, claimed_order))
-    } else {
-        f
-    }
+    ];
+    worse_part(parts, &judged, &runs, &alphas, claimed_order)
 }
 
 /// Eq 77, $\alpha^{(\beta+2)/2} = \frac{\epsilon(\beta+2)}{5}(g/ak)^{\beta/2}(t_0 - t)$.
@@ -308,15 +304,11 @@ pub fn eq79(b: &Bench) -> Finding {
     );
     physical.at = format!("{}; {seen}", physical.at);
     physical.headline = headline;
+    // The first relation carries its own alternatives; these are the C's.
     let judged = physical.compared.clone();
-    let f = crate::harness::worst_order(vec![
+    let parts = vec![
         ("first relation".into(), first),
         ("C of the second relation".into(), physical),
-    ]);
-    // The first relation carries its own alternatives; these are the C's.
-    if f.compared == judged {
-        f.with_robustness(runs.alternatives(&alphas, claimed_order))
-    } else {
-        f
-    }
+    ];
+    worse_part(parts, &judged, &runs, &alphas, claimed_order)
 }

@@ -229,7 +229,8 @@ impl Sliding {
     }
 }
 
-fn sign(x: f64) -> f64 {
+/// The sign of `x`: 1, -1, or 0 at zero (where `f64::signum` says 1).
+pub(super) fn sign(x: f64) -> f64 {
     if x > 0.0 {
         1.0
     } else if x < 0.0 {

@@ -191,34 +191,47 @@ fn spin_down(t: &Thickness) -> StudyTable {
         scientific(toy.c, 3),
         ratio(|l| l.c),
     ]);
-    s.row(vec![
-        "eq 85's exponent β + 3".into(),
+    // A quantity of both disks' laws, scaled, with the toy's over the thin disk's when asked.
+    let mut law_row =
+        |what: &str, paper: String, of: fn(&SpinDownLaw) -> f64, scale: f64, with_ratio: bool| {
+            s.row(vec![
+                what.into(),
+                paper,
+                places(of(thin) * scale, 3),
+                places(of(toy) * scale, 3),
+                if with_ratio { ratio(of) } else { "–".into() },
+            ]);
+        };
+    law_row(
+        "eq 85's exponent β + 3",
         places(beta + 3.0, 0),
-        places(thin.exponent, 3),
-        places(toy.exponent, 3),
+        |l| l.exponent,
+        1.0,
+        false,
+    );
+    let eq80 = format!("{} (eq 80, fitted C)", places(t.eq80_thin.1 * 1e3, 3));
+    law_row(
+        "tilt of lost contact (mrad)",
+        eq80,
+        |l| l.loss_tilt,
+        1e3,
+        true,
+    );
+    law_row(
+        "t₀ − t there (ms)",
         "–".into(),
-    ]);
-    s.row(vec![
-        "tilt of lost contact (mrad)".into(),
-        format!("{} (eq 80, fitted C)", places(t.eq80_thin.1 * 1e3, 3)),
-        places(thin.loss_tilt * 1e3, 3),
-        places(toy.loss_tilt * 1e3, 3),
-        ratio(|l| l.loss_tilt),
-    ]);
-    s.row(vec![
-        "t₀ − t there (ms)".into(),
-        "–".into(),
-        places(thin.loss_before_t0 * 1e3, 3),
-        places(toy.loss_before_t0 * 1e3, 3),
-        ratio(|l| l.loss_before_t0),
-    ]);
-    s.row(vec![
-        "least F_z / m g in the run".into(),
+        |l| l.loss_before_t0,
+        1e3,
+        true,
+    );
+    let least = |l: &SpinDownLaw| l.least_normal.0;
+    law_row(
+        "least F_z / m g in the run",
         "0 (eq 80)".into(),
-        places(thin.least_normal.0, 3),
-        places(toy.least_normal.0, 3),
-        "–".into(),
-    ]);
+        least,
+        1.0,
+        false,
+    );
     s
 }
 
