@@ -4,6 +4,7 @@
 use physics::dispatch::sliding_model;
 use physics::dispatch::{dispatch, problem, Visit};
 use physics::model::Model;
+use physics::run::run_streamed;
 use physics::run::sliding::{integrate, integrate_sampled};
 use physics::scene::{ModelKind, Scene};
 use physics::solve::{solve_with, Ending, Engine, Settings, SettingsError, Stats};
@@ -62,6 +63,11 @@ pub struct Trace {
     pub samples: Vec<Vec<f64>>,
     /// Median wall time of one integration (s), sampling excluded.
     pub wall_seconds: f64,
+    /// Median wall time (s) of the run a user pays for: the scene run as `simulate` runs it
+    /// with these settings, sampled at the scene's own rate and its quantities recorded (rows
+    /// discarded, not written); None for a DOP853 engine other than the tool's own, which
+    /// `simulate` does not use.
+    pub sampled_wall_seconds: Option<f64>,
     /// How many timed runs the median is of.
     pub runs: usize,
     /// Relative change of the model's energy from start to end, $(E_{end} - E_0)/|E_0|$.
@@ -154,10 +160,41 @@ impl Visit for TraceJob<'_> {
             sample_t,
             samples,
             wall_seconds: median(&mut walls),
+            sampled_wall_seconds: match self.engine {
+                Engine::Own => Some(recorded_wall(scene, self.settings, self.timing)?),
+                Engine::OdeSolvers => None,
+            },
             runs: walls.len(),
             energy_change: (model.energy(&y_end) - e0) / e0.abs(),
         })
     }
+}
+
+/// The median wall time (s) of `scene` run as `simulate` runs it (its samples and recorded
+/// quantities, rows discarded as they are made), with `settings`, timed by `timing`.
+fn recorded_wall(
+    scene: &Scene,
+    settings: &Settings,
+    timing: &Timing,
+) -> Result<f64, SettingsError> {
+    let mut scene = scene.clone();
+    scene.settings = *settings;
+    let started = Instant::now();
+    let mut walls = Vec::new();
+    loop {
+        let mut rows = 0u64;
+        let mut sink = |row: &[f64]| rows += std::hint::black_box(row).len() as u64;
+        let t = Instant::now();
+        run_streamed(&scene, None, &mut sink)?;
+        walls.push(t.elapsed().as_secs_f64());
+        let n = walls.len();
+        if n >= timing.max_runs.max(1)
+            || (n >= timing.min_runs && started.elapsed().as_secs_f64() >= timing.budget_seconds)
+        {
+            break;
+        }
+    }
+    Ok(median(&mut walls))
 }
 
 /// [`trace`] of a sliding scene: the whole run through the hybrid driver, its switches between
@@ -214,6 +251,7 @@ fn trace_sliding(
         sample_t,
         samples,
         wall_seconds: median(&mut walls),
+        sampled_wall_seconds: Some(recorded_wall(&scene, settings, timing)?),
         runs: walls.len(),
         energy_change: (model.energy(&y_end) - e0) / e0.abs(),
     })

@@ -78,6 +78,9 @@ pub struct Point {
     pub rejected: u64,
     /// Median wall time of one integration (s).
     pub wall_seconds: f64,
+    /// Median wall time (s) of the same run sampled at the scene's rate with its quantities
+    /// recorded, as `simulate` runs it: what a user pays (None for the `ode_solvers` engine).
+    pub sampled_wall_seconds: Option<f64>,
     /// Error at the final time.
     pub final_error: f64,
     /// Largest error over the sample times.
@@ -230,6 +233,7 @@ pub fn measure_point_with(
         accepted: t.stats.accepted,
         rejected: t.stats.rejected,
         wall_seconds: t.wall_seconds,
+        sampled_wall_seconds: t.sampled_wall_seconds,
         final_error,
         trajectory_error,
         energy_change: t.energy_change,
