@@ -63,11 +63,6 @@ pub struct Trace {
     pub samples: Vec<Vec<f64>>,
     /// Median wall time of one integration (s), sampling excluded.
     pub wall_seconds: f64,
-    /// Median wall time (s) of the run a user pays for: the scene run as `simulate` runs it
-    /// with these settings, sampled at the scene's own rate and its quantities recorded (rows
-    /// discarded, not written); None for a DOP853 engine other than the tool's own, which
-    /// `simulate` does not use.
-    pub sampled_wall_seconds: Option<f64>,
     /// How many timed runs the median is of.
     pub runs: usize,
     /// Relative change of the model's energy from start to end, $(E_{end} - E_0)/|E_0|$.
@@ -160,10 +155,6 @@ impl Visit for TraceJob<'_> {
             sample_t,
             samples,
             wall_seconds: median(&mut walls),
-            sampled_wall_seconds: match self.engine {
-                Engine::Own => Some(recorded_wall(scene, self.settings, self.timing)?),
-                Engine::OdeSolvers => None,
-            },
             runs: walls.len(),
             energy_change: (model.energy(&y_end) - e0) / e0.abs(),
         })
@@ -171,8 +162,9 @@ impl Visit for TraceJob<'_> {
 }
 
 /// The median wall time (s) of `scene` run as `simulate` runs it (its samples and recorded
-/// quantities, rows discarded as they are made), with `settings`, timed by `timing`.
-fn recorded_wall(
+/// quantities, rows discarded as they are made), with `settings`, timed by `timing`: what a
+/// user pays for the run, sampling included.
+pub fn recorded_wall(
     scene: &Scene,
     settings: &Settings,
     timing: &Timing,
@@ -251,7 +243,6 @@ fn trace_sliding(
         sample_t,
         samples,
         wall_seconds: median(&mut walls),
-        sampled_wall_seconds: Some(recorded_wall(&scene, settings, timing)?),
         runs: walls.len(),
         energy_change: (model.energy(&y_end) - e0) / e0.abs(),
     })
