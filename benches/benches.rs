@@ -36,6 +36,7 @@ fn main() {
     suite::sampling::all(&mut c);
     suite::sliding::all(&mut c);
     suite::check::all(&mut c);
+    suite::report::all(&mut c);
     suite::experiment::all(&mut c);
     c.final_summary();
 }

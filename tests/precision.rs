@@ -144,9 +144,17 @@ fn benchmark_study_is_validated_and_shows_the_orders() {
     }
     // Below the reference's uncertainty nothing can be shown to be reached.
     assert!(cheapest(&s, 1e-16, Cost::WallTime).is_none());
+    // Every run is also timed as simulate runs it, sampled at the scene's rate.
+    for p in s.series.iter().flat_map(|s| &s.points) {
+        let w = p
+            .sampled_wall_seconds
+            .expect("the own engine's runs are timed sampled");
+        assert!(w.is_finite() && w > 0.0, "{}: {w}", p.label);
+    }
     // The study is plain data.
     let json = serde_json::to_string(&s).expect("serializes");
     assert!(json.contains("\"observed_order\""));
+    assert!(json.contains("\"sampled_wall_seconds\""));
 }
 
 /// What each preset reaches on the benchmark scene, against the reference: measured

@@ -2,6 +2,7 @@
 
 pub mod check;
 pub mod experiment;
+pub mod report;
 pub mod rhs;
 pub mod sampling;
 pub mod scenes;

@@ -75,14 +75,23 @@ fn precision(name: &str, json: bool, quick: bool, target: Option<f64>) -> anyhow
         r.uncertainty
     );
     println!(
-        "{:<22} {:>11} {:>11} {:>12} {:>12}  ending",
-        "method", "evaluations", "wall (s)", "final error", "trajectory"
+        "{:<22} {:>11} {:>11} {:>11} {:>12} {:>12}  ending",
+        "method", "evaluations", "wall (s)", "sampled (s)", "final error", "trajectory"
     );
     for s in &study.series {
         for p in &s.points {
+            let sampled = p
+                .sampled_wall_seconds
+                .map_or_else(|| "-".to_string(), |w| format!("{w:.3e}"));
             println!(
-                "{:<22} {:>11} {:>11.3e} {:>12.2e} {:>12.2e}  {}",
-                p.label, p.evaluations, p.wall_seconds, p.final_error, p.trajectory_error, p.ending
+                "{:<22} {:>11} {:>11.3e} {:>11} {:>12.2e} {:>12.2e}  {}",
+                p.label,
+                p.evaluations,
+                p.wall_seconds,
+                sampled,
+                p.final_error,
+                p.trajectory_error,
+                p.ending
             );
         }
         match s.observed_order {

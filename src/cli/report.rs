@@ -21,6 +21,11 @@ pub struct Args {
     /// The directory to write to.
     #[arg(long, value_name = "DIR", default_value = "report")]
     pub out: PathBuf,
+    /// Prints where the time goes, on standard error: the wall and CPU seconds of each study
+    /// (computed one after another, so that each one's CPU time is its own) and of each stage
+    /// after them. The report's files are the same to the byte.
+    #[arg(long, short)]
+    pub verbose: bool,
     #[command(flatten)]
     pub(crate) input: PaperInput,
 }
@@ -28,17 +33,27 @@ pub struct Args {
 impl Args {
     /// Runs the command.
     pub fn run(self) -> anyhow::Result<()> {
-        report(self.format, &self.out, &self.input)
+        report(self.format, &self.out, &self.input, self.verbose)
     }
 }
 
-fn report(format: ReportFormat, out: &Path, input: &PaperInput) -> anyhow::Result<()> {
-    use ::report::{build::build, render};
+fn report(
+    format: ReportFormat,
+    out: &Path,
+    input: &PaperInput,
+    verbose: bool,
+) -> anyhow::Result<()> {
+    use ::report::{build, render, timing::Timings};
     // Check --out and make room beside it before computing anything.
     let set = SetWriter::begin(out)?;
     let bench = input.bench()?;
     let status = |s: &str| crate::cli::stdout::progress(&format!("report: {s}"));
-    let (report, figures) = build(&bench, &status)?;
+    let timings = Timings::new();
+    let (report, figures) = if verbose {
+        build::build_timed(&bench, &status, &timings)?
+    } else {
+        build::build(&bench, &status)?
+    };
     crate::cli::within_budget()?;
     let formats = match format {
         ReportFormat::Html => vec![render::Format::Html],
@@ -51,7 +66,15 @@ fn report(format: ReportFormat, out: &Path, input: &PaperInput) -> anyhow::Resul
         ],
     };
     status("writing");
-    let written = render::write(&report, &figures, set.dir(), &formats)?;
+    let written = timings.time("writing", || {
+        render::write(&report, &figures, set.dir(), &formats)
+    })?;
+    if verbose {
+        eprint!(
+            "where the time went (CPU: every thread of the process):\n{}",
+            timings.table()
+        );
+    }
     let shown: Vec<PathBuf> = written.iter().map(|p| set.final_path(p)).collect();
     set.commit(&written)?;
     let written = shown;

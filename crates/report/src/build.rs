@@ -15,9 +15,10 @@ use crate::figures::{self, Drawing, Figure};
 use crate::finding_view::{
     claim_views, finding_of, headline_text, printed_and_true, relative_error, values,
 };
-use crate::pipeline::{compute, RunConfig};
+use crate::pipeline::{compute, compute_timed, RunConfig};
 use crate::results::Results;
 use crate::study;
+use crate::timing::Timings;
 use checks::check::{Checked, Subject, Tally};
 use checks::equations::{Bench, UNCHECKABLE_EQUATIONS};
 use checks::finding::Verdict;
@@ -148,12 +149,33 @@ pub fn build(
     from_results(bench, &results, progress)
 }
 
+/// [`build`] with the studies one after another, each study's and each later stage's wall and
+/// CPU time recorded in `timings` (`report -v`); the same report, to the byte.
+pub fn build_timed(
+    bench: &Bench,
+    progress: &(dyn Fn(&str) + Sync),
+    timings: &Timings,
+) -> Result<(Report, Vec<Figure>), ReportError> {
+    let results = compute_timed(&RunConfig::report(*bench), progress, timings)?;
+    assemble(bench, &results, progress, timings)
+}
+
 /// Builds the report from results computed before (a full [`RunConfig::report`]); computes
 /// nothing.
 pub fn from_results(
     bench: &Bench,
     results: &Results,
     progress: &(dyn Fn(&str) + Sync),
+) -> Result<(Report, Vec<Figure>), ReportError> {
+    assemble(bench, results, progress, &Timings::new())
+}
+
+/// [`from_results`], each stage timed in `timings`.
+fn assemble(
+    bench: &Bench,
+    results: &Results,
+    progress: &(dyn Fn(&str) + Sync),
+    timings: &Timings,
 ) -> Result<(Report, Vec<Figure>), ReportError> {
     let checked: &[Checked] = results.required(&study::Checks, "the report")?;
     let (stored, mutation) = super::mutation::scores_for(bench.paper);
@@ -173,10 +195,15 @@ pub fn from_results(
         .partition(|c| matches!(c.subject, Subject::Equation { .. }));
 
     progress("drawing the figures");
-    let mut figures = figures::all(results)?;
-    figures.push(premises_figure(bench, checked));
-    let figure_views = figure_views(&figures)?;
-    let parts = crate::parts::parts(bench, results, &figure_views)?;
+    let (figures, figure_views) = timings.time("figures", || {
+        let mut figures = figures::all(results)?;
+        figures.push(premises_figure(bench, checked));
+        let views = figure_views(&figures)?;
+        Ok::<_, ReportError>((figures, views))
+    })?;
+    let parts = timings.time("parts", || {
+        crate::parts::parts(bench, results, &figure_views)
+    })?;
 
     let scenes = BUILTIN
         .iter()
@@ -193,17 +220,20 @@ pub fn from_results(
         rtol: bench.rtol,
         command: "rolling-disk report".into(),
     };
-    let document = super::document::document(
-        bench,
-        checked,
-        stored.as_ref(),
-        &settings,
-        &figure_views,
-        super::document::Records {
-            corrections: correction_records,
-            parts: crate::parts::record::PartRecords::of(results)?,
-        },
-    );
+    let part_records = crate::parts::record::PartRecords::of(results)?;
+    let document = timings.time("document", || {
+        super::document::document(
+            bench,
+            checked,
+            stored.as_ref(),
+            &settings,
+            &figure_views,
+            super::document::Records {
+                corrections: correction_records,
+                parts: part_records,
+            },
+        )
+    });
 
     let report = Report {
         paper: super::document::PAPER.into(),

@@ -21,6 +21,7 @@ pub mod study;
 pub mod study_table;
 pub mod tex;
 pub mod text_cells;
+pub mod timing;
 
 /// The tool's version and the commit it is built from (`build.rs`), as `--version` and every
 /// output's provenance name it.

@@ -10,6 +10,7 @@
 use crate::error::ReportError;
 use crate::results::Results;
 use crate::study::{self, Run, Step};
+use crate::timing::Timings;
 use checks::equations::Bench;
 use std::time::Instant;
 
@@ -59,48 +60,84 @@ pub fn compute(
     progress: &(dyn Fn(&str) + Sync),
 ) -> Result<Results, ReportError> {
     use rayon::prelude::*;
-    let mut wanted: Vec<&'static dyn Run> = Vec::new();
-    for s in &config.studies {
-        if !wanted.iter().any(|t| t.name() == s.name()) {
-            wanted.push(*s);
-        }
-    }
-    // The longest first, so that the short ones fill the other threads around it.
-    wanted.sort_by_key(|s| s.name() != study::Checks.name());
+    let wanted = wanted(config);
     let total = wanted.len();
     let done = std::sync::atomic::AtomicUsize::new(0);
     let outputs: Vec<(&'static str, study::Output)> = wanted
         .par_iter()
         .map(|s| {
             let start = Instant::now();
-            let name = s.name();
-            // A line at each quarter of the steps a study counts.
-            let observe = |step: Step| {
-                let quarter = |done: usize| done * 4 / step.total.max(1);
-                if step.done > 0
-                    && step.done < step.total
-                    && quarter(step.done) > quarter(step.done - 1)
-                {
-                    progress(&format!("{name}: {} of {} done", step.done, step.total));
-                }
-            };
-            let out = physics::budget::in_stage(&format!("the {name} study"), || {
-                s.run(&config.bench, &observe)
-            })
-            .map_err(|e| format!("the {name} study failed: {e}"))?;
+            let out = run_one(*s, config, progress)?;
             let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             progress(&format!(
-                "computed {name} ({n}/{total}) in {:.2} s",
+                "computed {} ({n}/{total}) in {:.2} s",
+                s.name(),
                 start.elapsed().as_secs_f64()
             ));
-            Ok((name, out))
+            Ok((s.name(), out))
         })
         .collect::<Result<_, ReportError>>()?;
+    Ok(results(config, outputs))
+}
+
+/// Computes every study of `config` once, one after another (each still on as many threads as
+/// it uses alone), and records each one's wall and CPU time in `timings`: the process's CPU
+/// time over a study is then that study's own. The results are those of [`compute`].
+pub fn compute_timed(
+    config: &RunConfig,
+    progress: &(dyn Fn(&str) + Sync),
+    timings: &Timings,
+) -> Result<Results, ReportError> {
+    let wanted = wanted(config);
+    let total = wanted.len();
+    let mut outputs = Vec::with_capacity(total);
+    for (n, s) in wanted.iter().enumerate() {
+        let out = timings.time(s.name(), || run_one(*s, config, progress))?;
+        progress(&format!("computed {} ({}/{total})", s.name(), n + 1));
+        outputs.push((s.name(), out));
+    }
+    Ok(results(config, outputs))
+}
+
+/// The studies of `config`, each once, the longest (the checks) first, so that the short ones
+/// fill the other threads around it.
+fn wanted(config: &RunConfig) -> Vec<&'static dyn Run> {
+    let mut wanted: Vec<&'static dyn Run> = Vec::new();
+    for s in &config.studies {
+        if !wanted.iter().any(|t| t.name() == s.name()) {
+            wanted.push(*s);
+        }
+    }
+    wanted.sort_by_key(|s| s.name() != study::Checks.name());
+    wanted
+}
+
+/// Runs one study, with a progress line at each quarter of the steps it counts.
+fn run_one(
+    s: &'static dyn Run,
+    config: &RunConfig,
+    progress: &(dyn Fn(&str) + Sync),
+) -> Result<study::Output, ReportError> {
+    let name = s.name();
+    let observe = |step: Step| {
+        let quarter = |done: usize| done * 4 / step.total.max(1);
+        if step.done > 0 && step.done < step.total && quarter(step.done) > quarter(step.done - 1) {
+            progress(&format!("{name}: {} of {} done", step.done, step.total));
+        }
+    };
+    physics::budget::in_stage(&format!("the {name} study"), || {
+        s.run(&config.bench, &observe)
+    })
+    .map_err(|e| format!("the {name} study failed: {e}").into())
+}
+
+/// The studies' outputs as the pipeline's results.
+fn results(config: &RunConfig, outputs: Vec<(&'static str, study::Output)>) -> Results {
     let mut r = Results::of(Some(config.bench.paper.clone()));
     for (name, out) in outputs {
         r.insert(name, out);
     }
-    Ok(r)
+    r
 }
 
 #[cfg(test)]

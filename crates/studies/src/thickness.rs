@@ -450,13 +450,13 @@ fn contact_loss(
 
 /// The study: steady motions and oscillations at [`STEADY_TILTS`], and both spin-downs.
 pub fn compute() -> Result<Thickness, StudyError> {
+    use rayon::prelude::*;
     let thin_disk = physics::disk::toy_disk();
-    let mut steady = Vec::new();
-    for alpha0 in STEADY_TILTS {
+    let pair = |alpha0: f64| -> Result<SteadyPair, StudyError> {
         let eq29 = steady_motion(&thin_disk, alpha0, 0.0)?.precession;
         let thin = steady_precession(Shape::Thin, alpha0, 0.0, eq29)?;
         let toy = steady_precession(Shape::Toy, alpha0, 0.0, eq29)?;
-        steady.push(SteadyPair {
+        Ok(SteadyPair {
             alpha0,
             eq29,
             thin,
@@ -464,9 +464,25 @@ pub fn compute() -> Result<Thickness, StudyError> {
             toy_spin: Shape::Toy.spin_ratio(alpha0, 0.0) * toy,
             thin_period: period(Shape::Thin, alpha0, thin)?,
             toy_period: period(Shape::Toy, alpha0, toy)?,
-        });
-    }
-    let spin_down = vec![spin_down(Shape::Thin)?, spin_down(Shape::Toy)?];
+        })
+    };
+    // Every run is independent and deterministic: side by side, in order.
+    let ((steady, falls), (thin, toy)) = rayon::join(
+        || {
+            rayon::join(
+                || {
+                    STEADY_TILTS
+                        .par_iter()
+                        .map(|a| pair(*a))
+                        .collect::<Result<Vec<_>, StudyError>>()
+                },
+                falls,
+            )
+        },
+        || rayon::join(|| spin_down(Shape::Thin), || spin_down(Shape::Toy)),
+    );
+    let steady = steady?;
+    let spin_down = vec![thin?, toy?];
     let (epsilon, beta) = DRAG;
     let (a, k, g) = (thin_disk.a, thin_disk.k, thin_disk.g);
     let eq79_c = 5.0 * g / (epsilon * (beta + 2.0) * a * k);
@@ -475,7 +491,7 @@ pub fn compute() -> Result<Thickness, StudyError> {
     Ok(Thickness {
         steady,
         spin_down,
-        falls: falls()?,
+        falls: falls?,
         eq79_c,
         eq80_thin: (omega_max, g / (a * k * omega_max * omega_max)),
     })

@@ -19,11 +19,15 @@ pub struct Toy {
     pub steady: ToySteady,
 }
 
-/// Both studies.
+/// The three studies, side by side on rayon's threads (each is deterministic on its own, so the
+/// result does not depend on the threads).
 pub fn compute() -> Result<Toy, StudyError> {
+    let (peer, (thickness, steady)) = rayon::join(compare_stored, || {
+        rayon::join(crate::thickness::compute, crate::toy_steady::compute)
+    });
     Ok(Toy {
-        peer: compare_stored().map_err(|e| StudyError::Unusable(e.to_string()))?,
-        thickness: crate::thickness::compute()?,
-        steady: crate::toy_steady::compute()?,
+        peer: peer.map_err(|e| StudyError::Unusable(e.to_string()))?,
+        thickness: thickness?,
+        steady: steady?,
     })
 }

@@ -221,9 +221,10 @@ fn crossing(f: impl Fn(f64) -> f64, (lo, hi): (f64, f64)) -> f64 {
 
 /// The study.
 pub fn compute() -> Result<ToySteady, StudyError> {
+    use rayon::prelude::*;
     let toy = Shape::Toy.rolling();
     let rows = TILTS_DEG
-        .iter()
+        .par_iter()
         .map(|&d| row(d))
         .collect::<Result<Vec<_>, _>>()?;
     let edge_at_zero = crossing(|d| toy.edge(d.to_radians()).b, (45.0, 89.0));

@@ -252,8 +252,9 @@ pub struct StoredComparison {
 
 /// Every stored run compared with this tool's run of its scene.
 pub fn compare_stored() -> Result<Vec<StoredComparison>, PeerError> {
+    use rayon::prelude::*;
     STORED
-        .iter()
+        .par_iter()
         .map(|s| {
             let file = format!("tests/reference/peer/{}/scene.yaml", s.name);
             let scene = Scene::parse(s.scene, &file)

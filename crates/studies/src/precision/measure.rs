@@ -4,6 +4,7 @@
 use physics::dispatch::sliding_model;
 use physics::dispatch::{dispatch, problem, Visit};
 use physics::model::Model;
+use physics::run::run_streamed;
 use physics::run::sliding::{integrate, integrate_sampled};
 use physics::scene::{ModelKind, Scene};
 use physics::solve::{solve_with, Ending, Engine, Settings, SettingsError, Stats};
@@ -158,6 +159,34 @@ impl Visit for TraceJob<'_> {
             energy_change: (model.energy(&y_end) - e0) / e0.abs(),
         })
     }
+}
+
+/// The median wall time (s) of `scene` run as `simulate` runs it (its samples and recorded
+/// quantities, rows discarded as they are made), with `settings`, timed by `timing`: what a
+/// user pays for the run, sampling included.
+pub fn recorded_wall(
+    scene: &Scene,
+    settings: &Settings,
+    timing: &Timing,
+) -> Result<f64, SettingsError> {
+    let mut scene = scene.clone();
+    scene.settings = *settings;
+    let started = Instant::now();
+    let mut walls = Vec::new();
+    loop {
+        let mut rows = 0u64;
+        let mut sink = |row: &[f64]| rows += std::hint::black_box(row).len() as u64;
+        let t = Instant::now();
+        run_streamed(&scene, None, &mut sink)?;
+        walls.push(t.elapsed().as_secs_f64());
+        let n = walls.len();
+        if n >= timing.max_runs.max(1)
+            || (n >= timing.min_runs && started.elapsed().as_secs_f64() >= timing.budget_seconds)
+        {
+            break;
+        }
+    }
+    Ok(median(&mut walls))
 }
 
 /// [`trace`] of a sliding scene: the whole run through the hybrid driver, its switches between

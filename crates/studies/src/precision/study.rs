@@ -14,7 +14,7 @@
 //! has not begun) and 100 times the reference's uncertainty (below it the reference and the
 //! round-off floor take over). Nominal orders: RK4 4, DOPRI5 5, DOP853 8.
 
-use super::measure::{trace_with, Timing};
+use super::measure::{recorded_wall, trace_with, Timing};
 use super::reference::{label, Reference, ReferenceOptions};
 use crate::error::StudyError;
 use numerics::fit::log_log_slope;
@@ -78,6 +78,9 @@ pub struct Point {
     pub rejected: u64,
     /// Median wall time of one integration (s).
     pub wall_seconds: f64,
+    /// Median wall time (s) of the same run sampled at the scene's rate with its quantities
+    /// recorded, as `simulate` runs it: what a user pays (None for the `ode_solvers` engine).
+    pub sampled_wall_seconds: Option<f64>,
     /// Error at the final time.
     pub final_error: f64,
     /// Largest error over the sample times.
@@ -230,6 +233,10 @@ pub fn measure_point_with(
         accepted: t.stats.accepted,
         rejected: t.stats.rejected,
         wall_seconds: t.wall_seconds,
+        sampled_wall_seconds: match engine {
+            Engine::Own => Some(recorded_wall(scene, settings, timing)?),
+            Engine::OdeSolvers => None,
+        },
         final_error,
         trajectory_error,
         energy_change: t.energy_change,
