@@ -40,7 +40,8 @@ pub(crate) fn decode_wav(
         message,
     };
     let mut reader = WavReader::new(Cursor::new(bytes)).map_err(|e| match e {
-        hound::Error::IoError(io) if io.kind() == std::io::ErrorKind::UnexpectedEof => refuse(
+        // Bytes in memory fail to read only where they end.
+        hound::Error::IoError(_) => refuse(
             file,
             "WAV",
             format!("truncated: its {} bytes end inside the header", bytes.len()),
@@ -71,7 +72,8 @@ pub(crate) fn decode_wav(
     // A data chunk cut short: the header declares more samples than the file holds.
     let truncated = |e: hound::Error, got: usize| {
         match e {
-        hound::Error::IoError(io) if io.kind() == std::io::ErrorKind::UnexpectedEof => refuse(
+        // Bytes in memory fail to read only where they end.
+        hound::Error::IoError(_) => refuse(
             file,
             "WAV",
             format!(
