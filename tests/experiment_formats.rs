@@ -199,3 +199,46 @@ fn caf_and_opus_are_named_by_their_bytes() {
         );
     }
 }
+
+/// A file whose content is no format read is refused naming its first bytes and the formats
+/// read (never "save the CSV as UTF-8"); a WAV cut short says it is truncated; a text in
+/// another encoding names the line of its first byte that is not UTF-8.
+#[test]
+fn unknown_content_names_its_bytes_and_a_cut_wav_says_truncated() {
+    let dir = crate::common::temp_dir("formats", "content");
+    let junk: Vec<u8> = (0..4000u32).map(|j| (j * 7919 % 251) as u8).collect();
+    std::fs::write(dir.join("capture.bin"), &junk).unwrap();
+    let (ok, _, err) = tool(&dir, &["experiment", "analyze", "capture.bin"]);
+    assert!(!ok, "{err}");
+    assert!(
+        err.contains("the first bytes are 00 8a 19 a3") && err.contains("WAV, FLAC"),
+        "{err}"
+    );
+    assert!(!err.contains("UTF-8"), "{err}");
+    let v: Vec<f64> = (0..48_000).map(|j| 0.3 * (j as f64 * 0.05).sin()).collect();
+    let wav = experiment::wav_bytes(&v, 48_000).unwrap();
+    std::fs::write(dir.join("cut.wav"), &wav[..20_000]).unwrap();
+    let (ok, _, err) = tool(&dir, &["experiment", "analyze", "cut.wav"]);
+    assert!(!ok, "{err}");
+    assert!(
+        err.contains("truncated: it ends after 9978 of the 48000 samples"),
+        "{err}"
+    );
+    std::fs::write(dir.join("head.wav"), &wav[..30]).unwrap();
+    let (ok, _, err) = tool(&dir, &["experiment", "analyze", "head.wav"]);
+    assert!(
+        !ok && err.contains("truncated: its 30 bytes end inside the header"),
+        "{err}"
+    );
+    std::fs::write(
+        dir.join("latin.csv"),
+        b"time_s,signal_V\n0,1\n# \xb5s\n0.1,2\n",
+    )
+    .unwrap();
+    let (ok, _, err) = tool(&dir, &["experiment", "analyze", "latin.csv"]);
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(
+        !ok && err.contains("line 3: byte") && err.contains("UTF-8"),
+        "{err}"
+    );
+}

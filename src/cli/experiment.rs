@@ -49,6 +49,14 @@ pub enum Command {
         /// For a sound recording: the channel analysed, from 1, or `mix` for their mean.
         #[arg(long, value_name = "N|mix", default_value = "mix")]
         channel: String,
+        /// For a scope CSV: the time column, by its header's name or its number from 1 (the
+        /// first column unless given; a Tektronix or Rigol file's own time otherwise).
+        #[arg(long, value_name = "NAME|N")]
+        time: Option<String>,
+        /// For a scope CSV: the photodiode's column, by its header's name (e.g. CH2) or its
+        /// number from 1; needed when the file holds more than one signal column.
+        #[arg(long, value_name = "NAME|N")]
+        signal: Option<String>,
     },
 }
 
@@ -138,7 +146,19 @@ impl Command {
                 out,
                 json,
                 channel,
-            } => experiment_analyze(&csv, out.as_deref(), json, &channel),
+                time,
+                signal,
+            } => {
+                let columns = experiment::scope_layout::ColumnChoice {
+                    time: time
+                        .as_deref()
+                        .map(experiment::scope_layout::ColumnRef::parse),
+                    signal: signal
+                        .as_deref()
+                        .map(experiment::scope_layout::ColumnRef::parse),
+                };
+                experiment_analyze(&csv, out.as_deref(), json, &channel, &columns)
+            }
         }
     }
 }
@@ -175,9 +195,11 @@ fn experiment_simulate(
         light.scope.seed = args.seed;
         let trace = experiment::simulate_trace(&scene, &light)?;
         work.stage("adding the bench's artifacts")?;
-        let trace = trace.with_artifacts(&args.artifacts(light.gain))?;
+        let artifacts = args.artifacts(light.gain);
+        let trace = trace.with_artifacts(&artifacts)?;
         work.stage("writing the CSV")?;
-        let bytes = trace.to_csv().into_bytes();
+        let notes = experiment::synthetic::scope::header_notes(&light.scope, &artifacts);
+        let bytes = trace.to_csv_noting(&notes).into_bytes();
         Ok((path, bytes, trace))
     } else {
         Err(anyhow::anyhow!("give --csv FILE or --wav FILE"))
@@ -205,6 +227,7 @@ fn experiment_analyze(
     out: Option<&Path>,
     json: bool,
     channel: &str,
+    columns: &experiment::scope_layout::ColumnChoice,
 ) -> anyhow::Result<()> {
     // A recording by its first bytes whatever its name; by its extension where the bytes cannot
     // be read or are damaged (the sound reader then says why).
@@ -216,6 +239,13 @@ fn experiment_analyze(
             .iter()
             .any(|x| e.eq_ignore_ascii_case(x))
         });
+    if is_sound && (columns.time.is_some() || columns.signal.is_some()) {
+        anyhow::bail!(
+            "{}: --time and --signal choose a scope CSV's columns, and this file is a sound \
+             recording: leave them out (choose a sound's channel with --channel N or mix)",
+            csv.display()
+        );
+    }
     let channels = match channel {
         "mix" => experiment::Channels::Mix,
         n => experiment::Channels::One(n.parse().map_err(|_| {
@@ -229,7 +259,13 @@ fn experiment_analyze(
     let bar = stage_spinner();
     let note = |stage: &str| bar.set_message(format!("{}: {stage}", csv.display()));
     let work = Work::start(format!("the analysis of {}", csv.display())).with_progress(&note);
-    let analysed = analyse(csv, is_sound, channels, json, set.as_ref(), &work);
+    let analysed = analyse(
+        csv,
+        (is_sound, channels, columns),
+        json,
+        set.as_ref(),
+        &work,
+    );
     bar.finish_and_clear();
     let (text, files) = analysed?;
     if let Some(set) = set {
@@ -250,8 +286,11 @@ fn experiment_analyze(
 /// written into the output set.
 fn analyse(
     csv: &Path,
-    is_sound: bool,
-    channels: experiment::Channels,
+    (is_sound, channels, columns): (
+        bool,
+        experiment::Channels,
+        &experiment::scope_layout::ColumnChoice,
+    ),
     json: bool,
     set: Option<&SetWriter>,
     work: &Work<'_>,
@@ -277,9 +316,17 @@ fn analyse(
         };
         (text, files)
     } else {
-        let trace = experiment::read_trace(csv)?;
+        let (trace, column) = experiment::read_trace_columns(csv, columns)?;
         let analysis =
-            experiment::analyze_within(&trace, &experiment::AnalysisSettings::default(), work)?;
+            experiment::analyze_within(&trace, &experiment::AnalysisSettings::default(), work)
+                .map_err(|e| match e {
+                    // Which column was flat: the photodiode may be on another channel.
+                    experiment::ExperimentError::FlatSignal { .. } => anyhow::anyhow!(
+                        "{e}; the column analysed is the {column}: if the photodiode is on \
+                         another column, choose it with --signal NAME or --signal NUMBER"
+                    ),
+                    e => e.into(),
+                })?;
         let text = if json {
             analysis.to_json()
         } else {

@@ -126,6 +126,17 @@ pub enum ExperimentError {
         /// The unit as written.
         unit: String,
     },
+    /// The columns of a scope CSV cannot be chosen: several channels and none named, or a
+    /// `--time`/`--signal` the file does not hold.
+    #[error("{file}:{line}: {message}")]
+    Columns {
+        /// The file.
+        file: String,
+        /// The 1-based line of the header (or the first row).
+        line: usize,
+        /// What was found and what to give.
+        message: String,
+    },
     /// A WAV file that cannot be decoded.
     #[error("{file}: not a readable WAV file ({message}): save the recording as PCM or float WAV (8-32 bit, mono or stereo)")]
     Wav {

@@ -41,13 +41,13 @@ pub mod trace;
 
 // The modules whose paths callers outside this crate name, at the root as before the rooms.
 pub use fit::{motion_law, plausibility};
-pub use formats::{recording, wav};
+pub use formats::{recording, scope_layout, wav};
 pub use sound_analysis::{spectrogram, track, turn_count};
 pub use synthetic::{law, mechanisms, simulate, sound};
 
 pub use error::ExperimentError;
 pub use formats::channel::{Channels, Recording, RecordingInfo};
-pub use formats::csv::{parse_trace, read_trace};
+pub use formats::csv::{parse_trace, parse_trace_columns, read_trace, read_trace_columns};
 pub use formats::recording::read_recording;
 pub use formats::sound_file::{encode_sound, SoundFormat};
 pub use formats::wav::{encode_wav, read_wav, wav_bytes, WavCoding};

@@ -7,7 +7,10 @@
 //! (`# truth.beta: 2`), and reading it back restores it.
 
 use crate::error::ExperimentError;
-use crate::formats::input::{read_bounded, MAX_BYTES, MAX_SAMPLES};
+use crate::formats::input::{
+    first_bytes, is_binary, read_bounded, FORMATS_READ, MAX_BYTES, MAX_SAMPLES,
+};
+use crate::formats::scope_layout::{layout, line_cells, ColumnChoice, TimeSource};
 use crate::trace::{Trace, Truth};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -16,9 +19,18 @@ impl Trace {
     /// The trace as CSV: comments (source, truth), the header `time_s,signal_V`, the samples.
     /// Numbers are written in their shortest exact form, so they read back bit for bit.
     pub fn to_csv(&self) -> String {
+        self.to_csv_noting(&[])
+    }
+
+    /// The trace as CSV, as [`Trace::to_csv`], with `notes` as comment lines after the source
+    /// (how it was made: the scope, the artifacts and their seeds).
+    pub fn to_csv_noting(&self, notes: &[String]) -> String {
         let mut s = String::with_capacity(self.t.len() * 32 + 256);
         let _ = writeln!(s, "# rolling-disk scope trace");
         let _ = writeln!(s, "# source: {}", self.source);
+        for n in notes {
+            let _ = writeln!(s, "# {n}");
+        }
         if let Some(tr) = &self.truth {
             let _ = writeln!(s, "# truth.beta: {}", tr.beta);
             let _ = writeln!(s, "# truth.t0: {}", tr.t0);
@@ -39,17 +51,45 @@ impl Trace {
 
 /// Reads and validates a scope CSV file (at most [`MAX_BYTES`] bytes, [`MAX_SAMPLES`] rows).
 pub fn read_trace(path: impl AsRef<Path>) -> Result<Trace, ExperimentError> {
+    read_trace_columns(path, &ColumnChoice::default()).map(|(t, _)| t)
+}
+
+/// Reads and validates a scope CSV file with the columns `choice` names; returns the trace and
+/// the layout and column read, in words. A binary file (not a recording this tool knows) is
+/// refused naming its first bytes and the formats read; a text in another encoding than UTF-8
+/// names the line of its first invalid byte.
+pub fn read_trace_columns(
+    path: impl AsRef<Path>,
+    choice: &ColumnChoice,
+) -> Result<(Trace, String), ExperimentError> {
     let path = path.as_ref();
     let file = path.display().to_string();
     let bytes = read_bounded(path, MAX_BYTES)?;
-    let text = String::from_utf8(bytes).map_err(|e| ExperimentError::Io {
-        file: file.clone(),
-        message: format!(
-            "not UTF-8 text (byte {} is invalid): save the CSV as UTF-8 or ASCII text",
-            e.utf8_error().valid_up_to() + 1
-        ),
+    if is_binary(&bytes) {
+        return Err(ExperimentError::Io {
+            file,
+            message: format!(
+                "its content is neither text nor a recording this tool reads: the first bytes are \
+                 {}; the formats read are {FORMATS_READ}: export the recording in one of them",
+                first_bytes(&bytes)
+            ),
+        });
+    }
+    let text = String::from_utf8(bytes).map_err(|e| {
+        let at = e.utf8_error().valid_up_to();
+        let bytes = e.as_bytes();
+        let line = 1 + bytes[..at].iter().filter(|&&b| b == b'\n').count();
+        ExperimentError::Io {
+            file: file.clone(),
+            message: format!(
+                "line {line}: byte {} (0x{:02x}) is not UTF-8: the text is in another encoding; \
+                 save the CSV as UTF-8 or ASCII text",
+                at + 1,
+                bytes[at]
+            ),
+        }
     })?;
-    parse_trace(&text, &file)
+    parse_trace_columns(&text, &file, choice)
 }
 
 /// The lines of `text` whatever their ends: LF, CRLF or CR alone.
@@ -75,7 +115,7 @@ fn lines_any(text: &str) -> impl Iterator<Item = &str> {
 /// line with semicolons is split at them: its commas are decimal commas); each cell's
 /// surrounding double quotes dropped (`"time_s"`); empty cells at the end (trailing separators)
 /// dropped.
-fn cells(s: &str) -> Vec<&str> {
+pub(crate) fn cells(s: &str) -> Vec<&str> {
     fn unquote(c: &str) -> &str {
         let c = c.trim();
         c.strip_prefix('"')
@@ -100,7 +140,7 @@ fn cells(s: &str) -> Vec<&str> {
 
 /// The unit written in a header cell: in parentheses or brackets (`Time (ms)`, `CH1 [V]`), or
 /// after the last `_` or `/` (`time_s`, `t/ms`); `None` when the cell names none.
-fn header_unit(cell: &str) -> Option<&str> {
+pub(crate) fn header_unit(cell: &str) -> Option<&str> {
     let c = cell.trim();
     for (open, close) in [('(', ')'), ('[', ']')] {
         if let (Some(a), Some(b)) = (c.rfind(open), c.rfind(close)) {
@@ -113,7 +153,7 @@ fn header_unit(cell: &str) -> Option<&str> {
 }
 
 /// The factor to seconds of a time unit.
-fn time_factor(unit: &str) -> Option<f64> {
+pub(crate) fn time_factor(unit: &str) -> Option<f64> {
     match unit {
         "s" | "sec" | "S" | "seconds" | "second" => Some(1.0),
         "ms" => Some(1e-3),
@@ -125,7 +165,7 @@ fn time_factor(unit: &str) -> Option<f64> {
 
 /// The factor to volts of a signal unit; other units (counts, a.u.) are kept as they are: the
 /// timing does not depend on the signal's scale.
-fn signal_factor(unit: &str) -> f64 {
+pub(crate) fn signal_factor(unit: &str) -> f64 {
     match unit {
         "mV" => 1e-3,
         "uV" | "µV" | "μV" => 1e-6,
@@ -134,19 +174,54 @@ fn signal_factor(unit: &str) -> f64 {
     }
 }
 
-/// Parses and validates CSV text; `file` names it in errors.
+/// Parses and validates CSV text; `file` names it in errors. The file's layout decides the
+/// columns ([`parse_trace_columns`] with no choice).
+pub fn parse_trace(text: &str, file: &str) -> Result<Trace, ExperimentError> {
+    parse_trace_columns(text, file, &ColumnChoice::default()).map(|(t, _)| t)
+}
+
+/// The content lines read to recognise a layout (a Tektronix file's settings fill its first 16).
+const HEAD_LINES: usize = 24;
+
+/// Parses and validates CSV text with the columns `choice` names; returns the trace and, in
+/// words, the layout and the column read. `file` names the text in errors.
 ///
 /// Accepted: a UTF-8 byte-order mark; LF, CRLF or CR line ends; cells separated by semicolons,
-/// commas, tabs or spaces, each in double quotes or not; a decimal comma refused naming it; trailing separators; `#` comment lines; a header whose cells
-/// name units (time in s, ms, us or ns, converted to s; signal in V, mV or uV, converted to V,
-/// or any other unit, kept); columns after the second ignored. At most [`MAX_SAMPLES`] rows.
-pub fn parse_trace(text: &str, file: &str) -> Result<Trace, ExperimentError> {
+/// commas, tabs or spaces, each in double quotes or not (a decimal comma refused, naming it);
+/// trailing separators; `#` comment lines; the instrument layouts
+/// of [`scope_layout`](crate::formats::scope_layout) (Tektronix, Rigol, PicoScope, Keysight);
+/// a header whose cells (or the units row under it) name units (time in s, ms, us or ns,
+/// converted to s; signal in V, mV or uV, converted to V, or any other unit, kept). At most
+/// [`MAX_SAMPLES`] rows.
+pub fn parse_trace_columns(
+    text: &str,
+    file: &str,
+    choice: &ColumnChoice,
+) -> Result<(Trace, String), ExperimentError> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let head: Vec<_> = lines_any(text)
+        .enumerate()
+        .filter_map(|(i, raw)| {
+            let s = raw.trim();
+            (!s.is_empty() && !s.starts_with('#')).then_some((i + 1, s))
+        })
+        .take(HEAD_LINES)
+        .map(|(n, s)| line_cells(n, s))
+        .collect();
+    if head.is_empty() {
+        return Err(ExperimentError::Empty { file: file.into() });
+    }
+    let layout = layout(&head, file, choice)?;
+    let header_line = (layout.data_from > 0).then(|| head[layout.data_from - 1].0);
     let mut t = Vec::new();
     let mut v = Vec::new();
-    let mut header_line = None;
-    let (mut kt, mut kv) = (1.0, 1.0);
     let mut truth = TruthFields::default();
+    let mut seen = 0usize;
+    let (sk, kv) = layout.signal;
+    let tk = match layout.time {
+        TimeSource::Cell(k, _) | TimeSource::Sequence(k, _, _) => k,
+    };
+    let needed = sk.max(tk) + 1;
     for (i, raw) in lines_any(text).enumerate() {
         let line = i + 1;
         let s = raw.trim();
@@ -157,31 +232,17 @@ pub fn parse_trace(text: &str, file: &str) -> Result<Trace, ExperimentError> {
             truth.read(c.trim());
             continue;
         }
-        let cells = cells(s);
-        let missing = || ExperimentError::MissingColumn {
-            file: file.into(),
-            line,
-            found: cells.iter().filter(|c| !c.is_empty()).count(),
-        };
-        let numeric = cells.first().is_some_and(|c| c.parse::<f64>().is_ok());
-        if header_line.is_none() && t.is_empty() && !numeric {
-            if cells.len() < 2 || cells[1].is_empty() {
-                return Err(missing());
-            }
-            if let Some(u) = header_unit(cells[0]) {
-                kt = time_factor(u).ok_or_else(|| ExperimentError::UnknownUnit {
-                    file: file.into(),
-                    line,
-                    column: 1,
-                    unit: physics::scene::message::cut(u),
-                })?;
-            }
-            kv = header_unit(cells[1]).map_or(1.0, signal_factor);
-            header_line = Some(line);
+        seen += 1;
+        if seen <= layout.data_from {
             continue;
         }
-        if cells.len() < 2 || cells[1].is_empty() {
-            return Err(missing());
+        let cells = cells(s);
+        if cells.len() < needed || cells[tk].is_empty() || cells[sk].is_empty() {
+            return Err(ExperimentError::MissingColumn {
+                file: file.into(),
+                line,
+                found: cells.iter().filter(|c| !c.is_empty()).count(),
+            });
         }
         if t.len() >= MAX_SAMPLES {
             return Err(ExperimentError::TooManySamples {
@@ -225,8 +286,11 @@ pub fn parse_trace(text: &str, file: &str) -> Result<Trace, ExperimentError> {
                 })
             }
         };
-        let ti = num(0, "time")? * kt;
-        let vi = num(1, "signal")? * kv;
+        let ti = match layout.time {
+            TimeSource::Cell(k, kt) => num(k, "time")? * kt,
+            TimeSource::Sequence(k, start, inc) => start + num(k, "sample index")? * inc,
+        };
+        let vi = num(sk, "signal")? * kv;
         if let Some(&prev) = t.last() {
             if ti <= prev {
                 return Err(ExperimentError::NotIncreasing {
@@ -249,12 +313,13 @@ pub fn parse_trace(text: &str, file: &str) -> Result<Trace, ExperimentError> {
             None => ExperimentError::Empty { file: file.into() },
         });
     }
-    Ok(Trace {
+    let trace = Trace {
         source: file.into(),
         t,
         v,
         truth: truth.finish(),
-    })
+    };
+    Ok((trace, layout.described))
 }
 
 /// The truth as read from `# truth.KEY: VALUE` comments.

@@ -62,3 +62,36 @@ pub fn read_bounded(path: &Path, limit: u64) -> Result<Vec<u8>, ExperimentError>
     }
     Ok(bytes)
 }
+
+/// The formats a recording is read in, in words, for messages.
+pub const FORMATS_READ: &str = "a scope CSV (text), or sound as WAV, FLAC, Ogg Vorbis, MP3, \
+                                M4A/AAC or raw AAC (ADTS)";
+
+/// The first bytes of a file in words: up to 8 in hexadecimal, and as text where printable
+/// (`52 49 46 46 ... ("RIFF....")`).
+pub fn first_bytes(bytes: &[u8]) -> String {
+    let head = &bytes[..bytes.len().min(8)];
+    let hex: Vec<String> = head.iter().map(|b| format!("{b:02x}")).collect();
+    let text: String = head
+        .iter()
+        .map(|&b| {
+            if b.is_ascii_graphic() || b == b' ' {
+                b as char
+            } else {
+                '.'
+            }
+        })
+        .collect();
+    format!("{} (\"{text}\")", hex.join(" "))
+}
+
+/// Whether bytes are binary rather than text in some encoding: a NUL byte, or more than one
+/// in ten of the first 512 bytes a control character other than tab, CR or LF.
+pub fn is_binary(bytes: &[u8]) -> bool {
+    let head = &bytes[..bytes.len().min(512)];
+    let control = head
+        .iter()
+        .filter(|&&b| b < 0x20 && !matches!(b, b'\t' | b'\r' | b'\n'))
+        .count();
+    head.contains(&0) || control * 10 > head.len()
+}

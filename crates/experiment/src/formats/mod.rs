@@ -8,5 +8,6 @@ pub mod csv;
 pub mod input;
 pub mod mp4_edit;
 pub mod recording;
+pub mod scope_layout;
 pub mod sound_file;
 pub mod wav;

@@ -108,8 +108,14 @@ pub fn parse_recording(
         return Err(refuse(
             file,
             "sound",
-            "the first bytes are not those of a WAV, FLAC, Ogg, MP3 or M4A file".into(),
-            "export the recording as WAV, FLAC, MP3, Ogg Vorbis or M4A",
+            format!(
+                "its content is not a format this tool reads: the first bytes are {}",
+                crate::formats::input::first_bytes(&bytes)
+            ),
+            &format!(
+                "the formats read are {}: export the recording in one of them",
+                crate::formats::input::FORMATS_READ
+            ),
         ));
     };
     let (interleaved, rate, n_ch, format) = if ext == "wav" {

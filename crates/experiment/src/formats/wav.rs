@@ -8,7 +8,7 @@
 //! [`read_recording`](crate::formats::recording::read_recording) can choose one.
 
 use crate::error::ExperimentError;
-use crate::formats::channel::{mix, Channels};
+use crate::formats::channel::{mix, refuse, Channels};
 use crate::formats::input::{read_bounded, MAX_BYTES, MAX_SOUND_SAMPLES};
 use crate::trace::Trace;
 use hound::{SampleFormat, WavReader, WavSpec, WavWriter};
@@ -39,7 +39,16 @@ pub(crate) fn decode_wav(
         file: file.into(),
         message,
     };
-    let mut reader = WavReader::new(Cursor::new(bytes)).map_err(|e| wav(e.to_string()))?;
+    let mut reader = WavReader::new(Cursor::new(bytes)).map_err(|e| match e {
+        // Bytes in memory fail to read only where they end.
+        hound::Error::IoError(_) => refuse(
+            file,
+            "WAV",
+            format!("truncated: its {} bytes end inside the header", bytes.len()),
+            "copy or export the whole file again",
+        ),
+        e => wav(e.to_string()),
+    })?;
     let spec = reader.spec();
     let ch = usize::from(spec.channels);
     if ch == 0 || ch > crate::formats::channel::MAX_CHANNELS {
@@ -60,10 +69,26 @@ pub(crate) fn decode_wav(
         });
     }
     let mut v = Vec::with_capacity(frames * ch);
+    // A data chunk cut short: the header declares more samples than the file holds.
+    let truncated = |e: hound::Error, got: usize| {
+        match e {
+        // Bytes in memory fail to read only where they end.
+        hound::Error::IoError(_) => refuse(
+            file,
+            "WAV",
+            format!(
+                "truncated: it ends after {} of the {frames} samples per channel its header declares",
+                got / ch
+            ),
+            "copy or export the whole file again",
+        ),
+        e => wav(e.to_string()),
+    }
+    };
     let format = match (spec.sample_format, spec.bits_per_sample) {
         (SampleFormat::Float, 32) => {
             for s in reader.samples::<f32>() {
-                let x = s.map_err(|e| wav(e.to_string()))?;
+                let x = s.map_err(|e| truncated(e, v.len()))?;
                 if !x.is_finite() {
                     return Err(wav("a sample is NaN or infinite".into()));
                 }
@@ -74,7 +99,8 @@ pub(crate) fn decode_wav(
         (SampleFormat::Int, b @ 8..=32) => {
             let full = (1u64 << (b - 1)) as f64;
             for s in reader.samples::<i32>() {
-                v.push(f64::from(s.map_err(|e| wav(e.to_string()))?) / full);
+                let x = s.map_err(|e| truncated(e, v.len()))?;
+                v.push(f64::from(x) / full);
             }
             format!("WAV, {b}-bit integer PCM")
         }

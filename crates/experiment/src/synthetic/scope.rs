@@ -3,6 +3,7 @@
 //! bytes on every machine) and quantisation.
 
 use crate::error::ExperimentError;
+use crate::synthetic::artifacts::Artifacts;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use rand_distr::{Distribution, StandardNormal};
@@ -118,4 +119,37 @@ impl Scope {
             *v = x;
         }
     }
+}
+
+/// What a simulated CSV records of how it was made, one `# KEY: VALUE` comment line each
+/// (without the `#`): the scope (rate, samples, noise, ADC, its seed) and the bench's artifacts
+/// with their seed, so that the file alone says how to make it again.
+pub fn header_notes(scope: &Scope, a: &Artifacts) -> Vec<String> {
+    let adc = if scope.bits == 0 {
+        "none".to_string()
+    } else {
+        format!(
+            "{} bits over {}..{} V",
+            scope.bits, scope.range.0, scope.range.1
+        )
+    };
+    vec![
+        format!(
+            "scope: {} S/s, {} samples, noise {} V rms, ADC {adc}, seed {}",
+            scope.sample_rate, scope.samples, scope.noise, scope.seed
+        ),
+        format!(
+            "artifacts: drift {} V rms, hum {} V at {} Hz (wander {} Hz), clip above {} of the \
+             range, glitches {}/s of {} V, dropped {}, seed {}",
+            a.drift,
+            a.hum,
+            a.mains,
+            a.mains_wander,
+            a.clip,
+            a.glitches_per_s,
+            a.glitch,
+            a.dropped,
+            a.seed
+        ),
+    ]
 }
