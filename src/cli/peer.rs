@@ -1,6 +1,5 @@
 //! `rolling-disk peer export` and `peer compare`: an independent program as a reference.
 
-use physics::scene::Scene;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
@@ -52,7 +51,7 @@ fn print_text(text: &str) -> anyhow::Result<()> {
 }
 
 fn peer_export(name: &str, out: Option<&Path>) -> anyhow::Result<()> {
-    let scene = Scene::load(name)?;
+    let scene = crate::cli::stdin::scene(name)?;
     if let Some(path) = out {
         crate::cli::stdout::check_output(path).map_err(|e| anyhow::anyhow!("--out {e}"))?;
     }
@@ -71,7 +70,7 @@ fn peer_export(name: &str, out: Option<&Path>) -> anyhow::Result<()> {
 }
 
 fn peer_compare(name: &str, result: &Path, json: bool) -> anyhow::Result<()> {
-    let scene = Scene::load(name)?;
+    let scene = crate::cli::stdin::scene(name)?;
     let c = ::studies::peer::compare_file(&scene, result)?;
     if json {
         print_text(&format!("{}\n", serde_json::to_string_pretty(&c)?))
