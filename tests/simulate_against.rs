@@ -3,7 +3,7 @@
 //! |recorded| is no change and one moved by more is, named by row and column; an edited scene
 //! is said changed with status 3.
 
-use crate::common::{cli_status, temp_dir};
+use crate::common::{cli_piped, cli_status, temp_dir};
 use std::path::Path;
 
 /// A short nutating coin (0.05 s) in `dir/coin.yaml`, and its recorded run in `dir/coin.csv`.
@@ -40,6 +40,12 @@ fn a_run_matches_its_recording_and_a_moved_cell_is_named() {
         out.contains("every cell within atol 1e-12 + rtol 1e-10"),
         "{out}"
     );
+
+    // The recording on standard input.
+    let csv = std::fs::read(dir.join("coin.csv")).unwrap();
+    let (code, out, err) = cli_piped(&dir, &["simulate", "coin.yaml", "--against", "-"], &csv);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(out.contains("against stdin: "), "{out}");
 
     // Row 7, column alpha_rad (index 1): atol 1e-12 + rtol 1e-10 x |alpha| allowed.
     let alpha: f64 = std::fs::read_to_string(dir.join("coin.csv"))
