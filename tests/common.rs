@@ -85,3 +85,36 @@ pub fn experiment_docs_say(written: &[String]) {
         assert!(doc.contains(w), "docs/experiment.md should say: {w}");
     }
 }
+
+/// Runs the binary in `dir` with `input` on its standard input (none: an empty one):
+/// (exit status, stdout, stderr).
+pub fn cli_piped(dir: &Path, args: &[&str], input: &[u8]) -> (i32, String, String) {
+    use std::io::Write;
+    use std::process::Stdio;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_rolling-disk"))
+        .args(args)
+        .current_dir(dir)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the binary runs");
+    let mut stdin = child.stdin.take().expect("a standard input");
+    let input = input.to_vec();
+    // Written from a thread: a command that does not read it must not block the test.
+    let writer = std::thread::spawn(move || {
+        let _ = stdin.write_all(&input);
+    });
+    let out = child.wait_with_output().expect("the binary ends");
+    let _ = writer.join();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// Runs the binary in `dir` with an empty standard input: (exit status, stdout, stderr).
+pub fn cli_status(dir: &Path, args: &[&str]) -> (i32, String, String) {
+    cli_piped(dir, args, b"")
+}

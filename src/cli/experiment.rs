@@ -4,7 +4,6 @@ use crate::cli::simulate::stage_spinner;
 use crate::cli::stdout;
 use files::output::SetWriter;
 use physics::budget::Work;
-use physics::scene::Scene;
 use std::path::{Path, PathBuf};
 
 /// The commands of `rolling-disk experiment`.
@@ -37,7 +36,8 @@ pub enum Command {
     /// eq 79); fits beta, t0 and C with uncertainties, compares laws, and refuses with a reason
     /// (non-zero exit) what is not a spin-down.
     Analyze {
-        /// The recording: a CSV (time and signal columns) or a .wav file.
+        /// The recording: a CSV (time and signal columns) or a sound file (WAV, FLAC, MP3, Ogg,
+        /// M4A); `-` reads either from standard input, told apart by its first bytes.
         #[arg(value_name = "FILE")]
         csv: PathBuf,
         /// Also write analysis.json, peaks.csv, omega.csv and omega_dot.csv here (CSV input).
@@ -169,7 +169,7 @@ fn experiment_simulate(
     wav: Option<(&Path, u32, experiment::SoundFormat)>,
     args: &ArtifactArgs,
 ) -> anyhow::Result<()> {
-    let scene = Scene::load(name)?;
+    let scene = crate::cli::stdin::scene(name)?;
     // The output is checked before anything is computed (a scene given as its own output too).
     for (option, path) in [("--csv", csv), ("--wav", wav.map(|w| w.0))] {
         if let Some(path) = path {
@@ -222,6 +222,24 @@ fn experiment_simulate(
     Ok(())
 }
 
+/// A recording to analyse: a file, or the bytes of standard input (`-`).
+enum Recording<'a> {
+    /// A file, read by the experiment's readers.
+    File(&'a Path),
+    /// Standard input, read whole.
+    Stdin(Vec<u8>),
+}
+
+/// Whether `bytes` begin as a sound file does (RIFF/RF64 WAV, FLAC, Ogg, CAF, MP3 with its ID3
+/// tag or a frame's sync bits, raw AAC, M4A/MP4): a scope CSV is text and begins with none of
+/// them.
+fn sound_bytes(bytes: &[u8]) -> bool {
+    let magic: [&[u8]; 7] = [b"RIFF", b"RF64", b"RIFX", b"fLaC", b"OggS", b"ID3", b"caff"];
+    magic.iter().any(|m| bytes.starts_with(m))
+        || bytes.first() == Some(&0xFF)
+        || bytes.get(4..8) == Some(b"ftyp".as_slice())
+}
+
 fn experiment_analyze(
     csv: &Path,
     out: Option<&Path>,
@@ -229,23 +247,6 @@ fn experiment_analyze(
     channel: &str,
     columns: &experiment::scope_layout::ColumnChoice,
 ) -> anyhow::Result<()> {
-    // A recording by its first bytes whatever its name; by its extension where the bytes cannot
-    // be read or are damaged (the sound reader then says why).
-    let is_sound = experiment::recording::is_recording(csv)
-        || csv.extension().is_some_and(|e| {
-            [
-                "wav", "wave", "flac", "mp3", "ogg", "oga", "m4a", "mp4", "aac",
-            ]
-            .iter()
-            .any(|x| e.eq_ignore_ascii_case(x))
-        });
-    if is_sound && (columns.time.is_some() || columns.signal.is_some()) {
-        anyhow::bail!(
-            "{}: --time and --signal choose a scope CSV's columns, and this file is a sound \
-             recording: leave them out (choose a sound's channel with --channel N or mix)",
-            csv.display()
-        );
-    }
     let channels = match channel {
         "mix" => experiment::Channels::Mix,
         n => experiment::Channels::One(n.parse().map_err(|_| {
@@ -255,12 +256,37 @@ fn experiment_analyze(
         })?),
     };
     // The output set is checked before any work, and written whole or not at all.
-    let set = out.map(SetWriter::begin).transpose()?;
+    let set = out.map(stdout::begin_set).transpose()?;
+    // A recording by its first bytes whatever its name; by its extension where the bytes cannot
+    // be read or are damaged (the sound reader then says why).
+    let (recording, is_sound, shown) = if crate::cli::stdin::is_stdin(csv) {
+        let bytes =
+            crate::cli::stdin::read("the recording", experiment::formats::input::MAX_BYTES)?;
+        let is_sound = sound_bytes(&bytes);
+        let shown = crate::cli::stdin::NAME.to_string();
+        (Recording::Stdin(bytes), is_sound, shown)
+    } else {
+        let is_sound = experiment::recording::is_recording(csv)
+            || csv.extension().is_some_and(|e| {
+                [
+                    "wav", "wave", "flac", "mp3", "ogg", "oga", "m4a", "mp4", "aac",
+                ]
+                .iter()
+                .any(|x| e.eq_ignore_ascii_case(x))
+            });
+        (Recording::File(csv), is_sound, csv.display().to_string())
+    };
+    if is_sound && (columns.time.is_some() || columns.signal.is_some()) {
+        anyhow::bail!(
+            "{shown}: --time and --signal choose a scope CSV's columns, and this is a sound \
+             recording: leave them out (choose a sound's channel with --channel N or mix)"
+        );
+    }
     let bar = stage_spinner();
-    let note = |stage: &str| bar.set_message(format!("{}: {stage}", csv.display()));
-    let work = Work::start(format!("the analysis of {}", csv.display())).with_progress(&note);
+    let note = |stage: &str| bar.set_message(format!("{shown}: {stage}"));
+    let work = Work::start(format!("the analysis of {shown}")).with_progress(&note);
     let analysed = analyse(
-        csv,
+        recording,
         (is_sound, channels, columns),
         json,
         set.as_ref(),
@@ -282,10 +308,10 @@ fn experiment_analyze(
     Ok(())
 }
 
-/// Reads and analyses the recording `csv` within `work`: the text to print and the files
-/// written into the output set.
+/// Reads and analyses the recording within `work`: the text to print and the files written
+/// into the output set.
 fn analyse(
-    csv: &Path,
+    recording: Recording<'_>,
     (is_sound, channels, columns): (
         bool,
         experiment::Channels,
@@ -297,7 +323,12 @@ fn analyse(
 ) -> anyhow::Result<(String, Vec<PathBuf>)> {
     work.stage("reading")?;
     Ok(if is_sound {
-        let rec = experiment::read_recording(csv, channels)?;
+        let rec = match recording {
+            Recording::File(path) => experiment::read_recording(path, channels)?,
+            Recording::Stdin(bytes) => {
+                experiment::recording::parse_recording(bytes, crate::cli::stdin::NAME, channels)?
+            }
+        };
         let mut a = experiment::analyze_sound_within(
             &rec.trace,
             &experiment::TrackSettings::default(),
@@ -316,7 +347,21 @@ fn analyse(
         };
         (text, files)
     } else {
-        let (trace, column) = experiment::read_trace_columns(csv, columns)?;
+        let (trace, column) = match recording {
+            Recording::File(path) => experiment::read_trace_columns(path, columns)?,
+            Recording::Stdin(bytes) => {
+                let name = crate::cli::stdin::NAME;
+                let text = String::from_utf8(bytes).map_err(|e| {
+                    anyhow::anyhow!(
+                        "{name}: not UTF-8 text (byte {} is invalid) and not a sound file by its \
+                         first bytes: pipe a scope CSV saved as UTF-8, or a WAV, FLAC, MP3, Ogg \
+                         or M4A file",
+                        e.utf8_error().valid_up_to() + 1
+                    )
+                })?;
+                experiment::parse_trace_columns(&text, name, columns)?
+            }
+        };
         let analysis =
             experiment::analyze_within(&trace, &experiment::AnalysisSettings::default(), work)
                 .map_err(|e| match e {

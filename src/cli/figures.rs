@@ -1,6 +1,6 @@
 //! `rolling-disk figures`: the figures alone, by the paper's names.
 
-use files::output::{write_set_file, SetWriter};
+use files::output::write_set_file;
 use std::path::{Path, PathBuf};
 
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -68,7 +68,7 @@ fn figures(only: Option<&str>, out: &Path, format: FigureFormat) -> anyhow::Resu
         }
     }
     // The folder is a set: checked before any computing, replaced whole at the end.
-    let set = SetWriter::begin(out)?;
+    let set = crate::cli::stdout::begin_set(out)?;
     // Only the studies the wanted figures are drawn from, each once.
     let config = RunConfig::figures(::checks::equations::Bench::default(), &wanted)?;
     let results = compute(&config, &|s: &str| {

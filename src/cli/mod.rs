@@ -6,6 +6,7 @@
 pub mod check;
 pub(crate) mod choice;
 pub mod completions;
+pub mod exit;
 pub mod experiment;
 pub mod figures;
 pub mod manual;
@@ -19,8 +20,11 @@ pub(crate) mod row_stream;
 pub mod scenes;
 pub mod simulate;
 pub mod sound_figures;
+pub(crate) mod stdin;
 pub mod stdout;
+pub(crate) mod trace_against;
 pub(crate) mod utf8;
+pub(crate) mod verdict_snapshot;
 
 /// An error when an integration of this process ran past the wall-time budget: a command calls
 /// it before it prints or writes a result computed from integrations, so that nothing cut short

@@ -1,6 +1,5 @@
 //! `rolling-disk peer export` and `peer compare`: an independent program as a reference.
 
-use physics::scene::Scene;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
@@ -52,10 +51,11 @@ fn print_text(text: &str) -> anyhow::Result<()> {
     }
 }
 
-/// The scene `name` as the peer runs it: a built-in scene mapped to the peer's gravity and a
-/// nominal thickness (`studies::peer::builtin`), with a note for each change.
+/// The scene `name` (or standard input's, `-`) as the peer runs it: a built-in scene mapped to
+/// the peer's gravity and a nominal thickness (`studies::peer::builtin`), with a note for each
+/// change.
 fn peer_scene(name: &str) -> anyhow::Result<(Scene, Vec<String>)> {
-    let scene = Scene::load(name)?;
+    let scene = crate::cli::stdin::scene(name)?;
     let (mapped, notes) = ::studies::peer::builtin::for_peer(&scene)?;
     let source = scene.source;
     Ok((

@@ -51,7 +51,7 @@ fn precision(name: &str, json: bool, quick: bool, target: Option<f64>) -> anyhow
             ));
         }
     }
-    let scene = Scene::load(name)?;
+    let scene = crate::cli::stdin::scene(name)?;
     let opts = if quick {
         precision::StudyOptions::quick()
     } else {

@@ -1,7 +1,6 @@
 //! `rolling-disk report`: the reproduction report, written as one set of files.
 
 use crate::cli::paper_input::PaperInput;
-use files::output::SetWriter;
 use std::path::{Path, PathBuf};
 
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -45,7 +44,7 @@ fn report(
 ) -> anyhow::Result<()> {
     use ::report::{build, render, timing::Timings};
     // Check --out and make room beside it before computing anything.
-    let set = SetWriter::begin(out)?;
+    let set = crate::cli::stdout::begin_set(out)?;
     let bench = input.bench()?;
     let status = |s: &str| crate::cli::stdout::progress(&format!("report: {s}"));
     let timings = Timings::new();

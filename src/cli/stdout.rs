@@ -88,3 +88,15 @@ pub(crate) fn write_to(path: &std::path::Path, bytes: &[u8]) -> anyhow::Result<b
     files::output_file::write_output(path, bytes)?;
     Ok(false)
 }
+
+/// Begins the set of files of `--out DIR` ([`files::output::SetWriter`]); `-` is refused, as a
+/// directory of files has no place on standard output.
+pub(crate) fn begin_set(path: &std::path::Path) -> anyhow::Result<files::output::SetWriter> {
+    if path.as_os_str() == "-" {
+        return Err(anyhow::anyhow!(
+            "--out -: this writes a set of files (a directory), which standard output cannot \
+             hold; name a directory (for example --out results)"
+        ));
+    }
+    Ok(files::output::SetWriter::begin(path)?)
+}

@@ -94,6 +94,18 @@ fn kind_of(meta: &std::fs::Metadata) -> &'static str {
 
 /// Reads at most `limit` bytes of the regular file at `path`, refusing anything else at once.
 pub fn read_bytes(path: &Path, limit: u64) -> Result<Vec<u8>, InputError> {
+    read_bounded(path, limit, true)
+}
+
+/// Reads a text file as [`read_text`] does, for a command that replaces that very file on
+/// purpose (a snapshot that `check --against FILE --bless` rewrites): it is not recorded as an
+/// input ([`crate::inputs`]), so the output door lets the command write it.
+pub fn read_text_to_replace(path: &Path, limit: u64) -> Result<String, InputError> {
+    text_of(path, read_bounded(path, limit, false)?)
+}
+
+/// [`read_bytes`], recording the file as an input when `record` is true.
+fn read_bounded(path: &Path, limit: u64, record: bool) -> Result<Vec<u8>, InputError> {
     let name = path.display().to_string();
     let open_err = |source| InputError::Open {
         path: name.clone(),
@@ -119,7 +131,9 @@ pub fn read_bytes(path: &Path, limit: u64) -> Result<Vec<u8>, InputError> {
             kind: kind_of(&opened),
         });
     }
-    crate::inputs::record(path, &opened);
+    if record {
+        crate::inputs::record(path, &opened);
+    }
     let mut bytes = Vec::new();
     file.take(limit.saturating_add(1))
         .read_to_end(&mut bytes)
@@ -133,7 +147,11 @@ pub fn read_bytes(path: &Path, limit: u64) -> Result<Vec<u8>, InputError> {
 /// Reads a text file of at most `limit` bytes (see [`read_bytes`]) and normalises it with
 /// [`normalize`].
 pub fn read_text(path: &Path, limit: u64) -> Result<String, InputError> {
-    let bytes = read_bytes(path, limit)?;
+    text_of(path, read_bytes(path, limit)?)
+}
+
+/// The bytes read from `path` as normalised text.
+fn text_of(path: &Path, bytes: Vec<u8>) -> Result<String, InputError> {
     let text = String::from_utf8(bytes).map_err(|e| {
         let upto = &e.as_bytes()[..e.utf8_error().valid_up_to()];
         InputError::NotText {
@@ -198,5 +216,23 @@ mod tests {
             Err(InputError::NotText { line: 2, .. })
         ));
         std::fs::remove_file(&path).ok();
+    }
+
+    #[test]
+    fn a_file_read_to_be_replaced_is_not_an_input_and_one_read_is() {
+        let dir = std::env::temp_dir().join(format!("rolling-disk-replace-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).ok();
+        let kept = dir.join("snapshot.json");
+        std::fs::write(&kept, "{}\r\n").ok();
+        assert_eq!(
+            read_text_to_replace(&kept, 10).ok(),
+            Some("{}\n".to_string())
+        );
+        assert_eq!(crate::inputs::input_named(&kept), None);
+        assert!(crate::output_file::write_output(&kept, b"[]\n").is_ok());
+        assert!(read_text(&kept, 10).is_ok());
+        assert_eq!(crate::inputs::input_named(&kept), Some(kept.clone()));
+        assert!(crate::output_file::write_output(&kept, b"{}\n").is_err());
+        std::fs::remove_dir_all(&dir).ok();
     }
 }
