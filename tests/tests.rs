@@ -5,6 +5,7 @@ mod advice;
 mod advice_names;
 mod architecture;
 mod author_forms;
+mod claims_yaml;
 mod cli;
 mod commands;
 mod common;

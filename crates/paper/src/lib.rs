@@ -19,6 +19,7 @@ pub mod notation;
 pub mod orient;
 pub mod parse;
 pub mod printed;
+pub mod quantity;
 pub mod tex;
 mod tex_paper;
 pub mod unvalued;
@@ -28,6 +29,7 @@ pub use correction::Correction;
 pub use eval::{EvalError, Value};
 pub use expr::{Chain, Expr, Rel, Symbol};
 pub use printed::Fit;
+pub use quantity::{ClaimQuantity, NamedQuantity, ParameterValue};
 
 use nalgebra::{RealField, Vector3};
 use std::collections::BTreeMap;
