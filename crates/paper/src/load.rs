@@ -115,25 +115,12 @@ impl Paper {
             serde_yaml::from_str(symbols).map_err(|e| yaml("symbols.yaml", e))?;
         let mut claim_entries: Vec<ClaimEntry> =
             serde_yaml::from_str(claims).map_err(|e| yaml("claims.yaml", e))?;
-        for c in &mut claim_entries {
-            match &mut c.quantity {
-                crate::ClaimQuantity::Named(n) => {
-                    n.place = crate::quantity::place_in(claims, &c.id, &file("claims.yaml"));
-                }
-                crate::ClaimQuantity::Words(_) if c.how.trim().is_empty() => {
-                    return Err(PaperError::Structure {
-                        file: file("claims.yaml"),
-                        message: format!(
-                            "claim `{}`, key `how`: say how its quantity is computed \
-                             independently, or name a quantity of the catalogue \
-                             (`rolling-disk quantities`) as `quantity: {{ name: ..., ... }}`",
-                            c.id
-                        ),
-                    })
-                }
-                crate::ClaimQuantity::Words(_) => {}
-            }
-        }
+        crate::quantity::place_all(&mut claim_entries, claims, &file("claims.yaml")).map_err(
+            |message| PaperError::Structure {
+                file: file("claims.yaml"),
+                message,
+            },
+        )?;
         if entries.len() != 85
             || entries
                 .iter()

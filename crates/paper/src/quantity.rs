@@ -91,6 +91,31 @@ impl Place {
     }
 }
 
+/// Gives every claim of `claims` (read from `text`, the file `file`) that names a quantity of the
+/// catalogue its place in the file; a claim whose quantity is words must say `how` it is
+/// computed: why not, otherwise.
+pub(crate) fn place_all(
+    claims: &mut [crate::ClaimEntry],
+    text: &str,
+    file: &str,
+) -> Result<(), String> {
+    for c in claims {
+        match &mut c.quantity {
+            ClaimQuantity::Named(n) => n.place = place_in(text, &c.id, file),
+            ClaimQuantity::Words(_) if c.how.trim().is_empty() => {
+                return Err(format!(
+                    "claim `{}`, key `how`: say how its quantity is computed independently, or \
+                     name a quantity of the catalogue (`rolling-disk quantities`) as \
+                     `quantity: {{ name: ..., ... }}`",
+                    c.id
+                ))
+            }
+            ClaimQuantity::Words(_) => {}
+        }
+    }
+    Ok(())
+}
+
 /// Finds where the `quantity` of claim `id` stands in `text` (claims.yaml): the line of the
 /// claim's `quantity` key after its `id`, and of each key of the map, written inline
 /// (`quantity: { name: x, k: 0.25 }`, every key on that line) or as a block (one key a line,
