@@ -61,6 +61,9 @@ pub enum Command {
     Mutants(cli::mutants::Args),
     /// Checks the paper's equations and prose claims, each against an independent reference.
     Check(cli::check::Args),
+    /// Lists the quantities a claim of claims.yaml can name to be checked with no Rust: each with
+    /// its parameters, unit, method and tolerance.
+    Quantities(cli::quantities::Args),
     /// Measures speed against accuracy for a scene (default: the benchmark scene): error
     /// against a validated reference, right-hand-side evaluations and wall time, per method.
     Precision(cli::precision::Args),
@@ -109,6 +112,7 @@ pub fn main() -> ExitCode {
         Command::Scenes(a) => a.run(),
         Command::Mutants(a) => a.run(),
         Command::Check(a) => a.run(),
+        Command::Quantities(a) => a.run(),
         Command::Precision(a) => a.run(),
         Command::Experiment(c) => c.run(),
         Command::Peer(c) => c.run(),

@@ -175,7 +175,7 @@ fn a_claim_missing_its_rule_or_its_entry_cannot_run_and_says_what_to_add() {
     let outcome = |id: &str| {
         checked
             .iter()
-            .find(|c| matches!(c.subject, Subject::Claim { id: i } if i == id))
+            .find(|c| matches!(&c.subject, Subject::Claim { id: i } if i == id))
             .map(|c| c.finding.clone())
             .unwrap()
     };

@@ -6,6 +6,7 @@ mod advice_names;
 mod architecture;
 mod author_forms;
 mod check_snapshot;
+mod claims_yaml;
 mod cli;
 mod commands;
 mod common;

@@ -14,6 +14,7 @@ pub mod mutants;
 pub mod paper_input;
 pub mod peer;
 pub mod precision;
+pub mod quantities;
 pub(crate) mod ranges;
 pub mod report;
 pub(crate) mod row_stream;

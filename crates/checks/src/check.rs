@@ -38,6 +38,10 @@ pub enum CheckError {
     /// A claim id that no check has.
     #[error("--only: {0} is neither an equation number nor the id of a checked claim")]
     UnknownClaim(String),
+    /// A claim names a quantity of the catalogue wrongly (an unknown name or parameter, a value
+    /// out of range): the sentence names the file, the line, the key and the fix.
+    #[error("{0}")]
+    Quantity(String),
     /// The thread pool could not start.
     #[error("could not start {threads} threads for the checks: {reason}")]
     Threads {
@@ -99,13 +103,17 @@ impl Selection {
 
 /// One check to run: what, its section, the check, its derivation check if any, and whether
 /// its result is shown (a premise run only to classify a selected equation is not).
-type Job = (
-    Subject,
-    u32,
-    fn(&Bench) -> Finding,
-    Option<fn(&Bench) -> Finding>,
-    bool,
-);
+type Job = (Subject, u32, Run, Option<fn(&Bench) -> Finding>, bool);
+
+/// How a check runs: a check written in Rust, or the claim's quantity of the catalogue computed
+/// and judged against its printed value ([`equations::claims::catalogued`]).
+#[derive(Debug, Clone, Copy)]
+enum Run {
+    /// A registered check.
+    Registered(fn(&Bench) -> Finding),
+    /// A claim naming a quantity of the catalogue ([`crate::quantities`]).
+    Catalogued,
+}
 
 /// The selected equations and, transitively, their premises (a failing equation can only be
 /// told a root cause or an inherited error knowing its premises' verdicts).
@@ -203,7 +211,7 @@ fn jobs(bench: &Bench, selection: &Selection) -> Result<Vec<Job>, CheckError> {
                     label: e.label,
                 },
                 section,
-                e.check,
+                Run::Registered(e.check),
                 derivations
                     .iter()
                     .find(|d| d.number == e.number)
@@ -213,25 +221,37 @@ fn jobs(bench: &Bench, selection: &Selection) -> Result<Vec<Job>, CheckError> {
         }
     }
     let premises = premise_claims(bench, selection, needed.as_deref());
-    let all_claims = equations::claims();
+    crate::quantities::validate(bench.paper).map_err(CheckError::Quantity)?;
+    // The registered checks, in their order, then the claims naming a quantity of the
+    // catalogue, in claims.yaml's order.
+    let all_claims: Vec<(String, Run)> = equations::claims()
+        .into_iter()
+        .map(|c| (c.id.to_string(), Run::Registered(c.check)))
+        .chain(
+            claim_sections
+                .iter()
+                .filter(|c| c.quantity.named().is_some())
+                .map(|c| (c.id.clone(), Run::Catalogued)),
+        )
+        .collect();
     if let Some(ids) = &selection.claims {
         for id in ids {
-            if !all_claims.iter().any(|c| c.id == id) {
+            if !all_claims.iter().any(|(c, _)| c == id) {
                 return Err(CheckError::UnknownClaim(id.clone()));
             }
         }
     }
-    for c in all_claims {
+    for (id, run) in all_claims {
         let wanted = selection
             .claims
             .as_ref()
-            .is_none_or(|ids| ids.iter().any(|i| i == c.id));
-        if wanted || premises.iter().any(|p| p == c.id) {
+            .is_none_or(|ids| ids.contains(&id));
+        if wanted || premises.contains(&id) {
             let section = claim_sections
                 .iter()
-                .find(|e| e.id == c.id)
+                .find(|e| e.id == id)
                 .map_or(0, |e| e.section);
-            out.push((Subject::Claim { id: c.id }, section, c.check, None, wanted));
+            out.push((Subject::Claim { id }, section, run, None, wanted));
         }
     }
     Ok(out)
@@ -298,12 +318,20 @@ fn run_jobs(
                 let stage = format!("the check of {}", subject.name());
                 let checked = physics::budget::in_stage(&stage, || {
                     let (finding, unvalued) = paper::unvalued::recording(|| {
-                        match (missing_input(bench, &subject), &subject) {
-                            (Some(why), _) => Err(why),
-                            (None, Subject::Claim { id }) => Ok(
+                        match (missing_input(bench, &subject), &subject, check) {
+                            (Some(why), _, _) => Err(why),
+                            (None, Subject::Claim { id }, Run::Catalogued) => {
+                                Ok(equations::claims::catalogued(bench, id))
+                            }
+                            (None, Subject::Claim { id }, Run::Registered(check)) => Ok(
                                 equations::claims::with_printed_headline(bench, id, check(bench)),
                             ),
-                            (None, _) => Ok(check(bench)),
+                            (None, _, Run::Registered(check)) => Ok(check(bench)),
+                            (None, Subject::Equation { .. }, Run::Catalogued) => {
+                                unreachable!(
+                                    "jobs() gives a quantity of the catalogue to claims only"
+                                )
+                            }
                         }
                     });
                     let finding = finding

@@ -19,7 +19,7 @@ pub enum Subject {
     /// A prose claim.
     Claim {
         /// Its id in paper/claims.yaml.
-        id: &'static str,
+        id: String,
     },
 }
 
@@ -28,7 +28,7 @@ impl Subject {
     pub fn name(&self) -> String {
         match self {
             Subject::Equation { number, .. } => format!("eq {number}"),
-            Subject::Claim { id } => id.to_string(),
+            Subject::Claim { id } => id.clone(),
         }
     }
 }

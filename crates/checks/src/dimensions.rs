@@ -222,7 +222,7 @@ mod tests {
         let s = of(
             &b,
             &Subject::Claim {
-                id: "angular-momentum-near-vertical",
+                id: "angular-momentum-near-vertical".into(),
             },
             None,
         );
@@ -230,7 +230,7 @@ mod tests {
         let s = of(
             &b,
             &Subject::Claim {
-                id: "air-viscosity",
+                id: "air-viscosity".into(),
             },
             None,
         );

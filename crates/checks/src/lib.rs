@@ -14,6 +14,7 @@ pub mod equations;
 pub mod finding;
 pub mod harness;
 pub mod mutation;
+pub mod quantities;
 mod readings;
 pub mod robustness;
 pub mod select;

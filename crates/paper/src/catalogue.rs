@@ -86,9 +86,13 @@ pub struct ClaimEntry {
     pub implied: bool,
     /// Its unit as printed.
     pub unit: String,
-    /// What must be computed.
-    pub quantity: String,
-    /// How it is computed independently.
+    /// What must be computed: in words (a check written in Rust computes it), or a quantity of
+    /// the checks' catalogue named with its parameters (`{ name: ..., k: 0.25 }`), checked with
+    /// no Rust written for the claim ([`crate::quantity`]).
+    pub quantity: crate::quantity::ClaimQuantity,
+    /// How it is computed independently; may be left out where `quantity` names a quantity of
+    /// the catalogue, whose method is then shown.
+    #[serde(default, skip_serializing_if = "String::is_empty")]
     pub how: String,
     /// How a loosely worded number ("about", "roughly", "a few") is judged, stated so a reader
     /// can disagree with it; absent where the check's own rule applies.

@@ -20,6 +20,7 @@ pub mod orient;
 pub mod parse;
 mod premises;
 pub mod printed;
+pub mod quantity;
 pub mod tex;
 mod tex_paper;
 pub mod unvalued;
@@ -29,6 +30,7 @@ pub use correction::Correction;
 pub use eval::{EvalError, Value};
 pub use expr::{Chain, Expr, Rel, Symbol};
 pub use printed::Fit;
+pub use quantity::{ClaimQuantity, NamedQuantity, ParameterValue};
 
 use nalgebra::{RealField, Vector3};
 use std::collections::BTreeMap;

@@ -113,8 +113,14 @@ impl Paper {
             serde_yaml::from_str(equations).map_err(|e| yaml("equations.yaml", e))?;
         let table: BTreeMap<String, SymbolInfo> =
             serde_yaml::from_str(symbols).map_err(|e| yaml("symbols.yaml", e))?;
-        let claim_entries: Vec<ClaimEntry> =
+        let mut claim_entries: Vec<ClaimEntry> =
             serde_yaml::from_str(claims).map_err(|e| yaml("claims.yaml", e))?;
+        crate::quantity::place_all(&mut claim_entries, claims, &file("claims.yaml")).map_err(
+            |message| PaperError::Structure {
+                file: file("claims.yaml"),
+                message,
+            },
+        )?;
         if entries.len() != 85
             || entries
                 .iter()

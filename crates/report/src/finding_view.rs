@@ -173,7 +173,7 @@ pub(crate) fn claim_views(
     for c in &bench.paper.claims {
         let found = checked
             .iter()
-            .find(|k| matches!(k.subject, Subject::Claim { id } if id == c.id));
+            .find(|k| matches!(&k.subject, Subject::Claim { id } if *id == c.id));
         let why = UNCHECKABLE_CLAIMS
             .iter()
             .find(|(id, _)| *id == c.id)
@@ -195,7 +195,7 @@ pub(crate) fn claim_views(
                 Some(v) => format!("{} {}", fmt_num(v), c.unit),
                 None => "(qualitative)".into(),
             },
-            how: crate::number::prose(&c.how),
+            how: crate::number::prose(&how_of(c)),
             rule: c
                 .rule
                 .as_ref()
@@ -220,4 +220,15 @@ pub(crate) fn claim_views(
     }
 
     (claims, unchecked_claims)
+}
+
+/// How a claim is computed: its `how`, or, where it names a quantity of the catalogue and says
+/// nothing more, the quantity's method.
+fn how_of(c: &paper::ClaimEntry) -> String {
+    match checks::quantities::of_claim(c) {
+        Ok((q, values)) if c.how.trim().is_empty() => {
+            format!("{} ({}): {}", q.name, values.describe(), q.how)
+        }
+        _ => c.how.clone(),
+    }
 }

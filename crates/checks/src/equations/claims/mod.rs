@@ -47,6 +47,7 @@ use physics::model::{Extras, Model, Motion, Quantity};
 use physics::solve::{solve, Dynamics, Event, Problem, State};
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_3, PI};
 
+mod catalogued;
 mod frictionless;
 mod integrals;
 mod judge;
@@ -58,6 +59,7 @@ mod spin_down;
 #[cfg(test)]
 mod tests;
 
+pub use catalogued::catalogued;
 use frictionless::{
     angular_momentum_near_vertical, frictionless_constants, frictionless_threshold_uniform,
     limits_eq55_eq71, rolling_threshold_uniform, thresholds_ratio,
