@@ -69,10 +69,8 @@ fn reported(dir: &Path) -> serde_json::Value {
         command: String::new(),
     };
     let records = report::document::Records {
-        precision: Vec::new(),
         corrections: Vec::new(),
-        friction: None,
-        toy: None,
+        parts: Default::default(),
     };
     let doc = report::document::document(&bench, &checked, None, &settings, &[], records);
     let claim = doc.claims.iter().find(|c| c.id == ID).expect("listed");

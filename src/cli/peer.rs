@@ -1,5 +1,6 @@
 //! `rolling-disk peer export` and `peer compare`: an independent program as a reference.
 
+use physics::scene::Scene;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 

@@ -37,6 +37,7 @@ fn verdict_words(v: &Verdict) -> String {
         Verdict::UnitMisprint => "unit misprint".into(),
         Verdict::DependsOn { choice } => format!("depends on {choice}"),
         Verdict::DimensionalSlip => "dimensional slip".into(),
+        Verdict::PartOf { claim } => format!("fails, as a part of {claim}"),
     }
 }
 

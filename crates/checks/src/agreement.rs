@@ -186,24 +186,30 @@ pub(crate) fn attach_restated(bench: &Bench, checked: &mut [Checked]) {
 /// disagreement shows; so does a part whose claim was not run.
 pub(crate) fn attach_parts(bench: &Bench, checked: &mut [Checked]) {
     use crate::finding::Verdict;
+    // The claim a part is counted at is named by its check's id in the table of checks (a
+    // verdict holds no owned text); a claim checked from the catalogue alone has none there, so
+    // a part of one keeps its own verdict.
     let failing: Vec<&'static str> = checked
         .iter()
-        .filter_map(|c| match c.subject {
+        .filter_map(|c| match &c.subject {
             Subject::Claim { id } if c.finding.as_ref().is_ok_and(|f| !f.verdict.passes()) => {
-                Some(id)
+                crate::equations::claims::CLAIMS
+                    .iter()
+                    .find(|k| k.id == id.as_str())
+                    .map(|k| k.id)
             }
             _ => None,
         })
         .collect();
     for c in checked.iter_mut() {
-        let Subject::Claim { id } = c.subject else {
+        let Subject::Claim { id } = &c.subject else {
             continue;
         };
         let Some(whole) = bench
             .paper
             .claims
             .iter()
-            .find(|e| e.id == id)
+            .find(|e| e.id == *id)
             .and_then(|e| e.part_of.as_deref())
         else {
             continue;

@@ -147,80 +147,7 @@ impl Paper {
                 ),
             });
         }
-        let mut ids = std::collections::BTreeSet::new();
-        for c in &claim_entries {
-            if !ids.insert(c.id.as_str()) {
-                return Err(PaperError::Structure {
-                    file: file("claims.yaml"),
-                    message: format!(
-                        "claim `{}` is given twice: keep one (a fact stated in several places \
-                         lists the others under `also_at`)",
-                        c.id
-                    ),
-                });
-            }
-            if let Some(problem) = c.rule.as_ref().and_then(|r| r.problem()) {
-                return Err(PaperError::Structure {
-                    file: file("claims.yaml"),
-                    message: format!("claim `{}`, key `rule`: {problem}", c.id),
-                });
-            }
-        }
-        for c in &claim_entries {
-            if let Some(bad) = c
-                .rests_on
-                .iter()
-                .find(|p| !premise_exists(p, &claim_entries))
-            {
-                return Err(PaperError::Structure {
-                    file: file("claims.yaml"),
-                    message: format!(
-                        "claim `{}`, key `rests_on`: `{bad}` is neither a claim id of this file \
-                         nor `eq N` with N from 1 to 85",
-                        c.id
-                    ),
-                });
-            }
-            if let Some(whole) = c
-                .part_of
-                .as_ref()
-                .filter(|w| **w == c.id || !claim_entries.iter().any(|e| e.id == **w))
-            {
-                return Err(PaperError::Structure {
-                    file: file("claims.yaml"),
-                    message: format!(
-                        "claim `{}`, key `part_of`: `{whole}` is not the id of another claim of \
-                         this file; write the id of the claim whose statement it is a part of",
-                        c.id
-                    ),
-                });
-            }
-            if let Some(n) = c.restates.filter(|n| !(1..=85).contains(n)) {
-                return Err(PaperError::Structure {
-                    file: file("claims.yaml"),
-                    message: format!(
-                        "claim `{}`, key `restates`: {n} is not an equation number; write the \
-                         printed number of the equation it states again, from 1 to 85",
-                        c.id
-                    ),
-                });
-            }
-        }
-        for e in &entries {
-            if let Some(bad) = e
-                .rests_on
-                .iter()
-                .find(|p| !premise_exists(p, &claim_entries))
-            {
-                return Err(PaperError::Structure {
-                    file: file("equations.yaml"),
-                    message: format!(
-                        "eq {}, key `rests_on`: `{bad}` is not a claim id of claims.yaml",
-                        e.number
-                    ),
-                });
-            }
-        }
+        check_references(&entries, &claim_entries, &file)?;
         let fit = printed::read_fit(&claim_entries, &file("claims.yaml"))?;
         let global = resolve_table(&table, &file("symbols.yaml"), 0)?;
         let eqfile = file("equations.yaml");
@@ -244,4 +171,89 @@ impl Paper {
             notes: Vec::new(),
         })
     }
+}
+
+/// The claims' ids unique and their rules sound, and every reference between the entries
+/// (`rests_on`, `part_of`, `restates`) to something the files hold; `file` names a file in
+/// messages.
+fn check_references(
+    entries: &[EquationEntry],
+    claim_entries: &[ClaimEntry],
+    file: &dyn Fn(&str) -> String,
+) -> Result<(), PaperError> {
+    let mut ids = std::collections::BTreeSet::new();
+    for c in claim_entries {
+        if !ids.insert(c.id.as_str()) {
+            return Err(PaperError::Structure {
+                file: file("claims.yaml"),
+                message: format!(
+                    "claim `{}` is given twice: keep one (a fact stated in several places \
+                     lists the others under `also_at`)",
+                    c.id
+                ),
+            });
+        }
+        if let Some(problem) = c.rule.as_ref().and_then(|r| r.problem()) {
+            return Err(PaperError::Structure {
+                file: file("claims.yaml"),
+                message: format!("claim `{}`, key `rule`: {problem}", c.id),
+            });
+        }
+    }
+    for c in claim_entries {
+        if let Some(bad) = c
+            .rests_on
+            .iter()
+            .find(|p| !premise_exists(p, claim_entries))
+        {
+            return Err(PaperError::Structure {
+                file: file("claims.yaml"),
+                message: format!(
+                    "claim `{}`, key `rests_on`: `{bad}` is neither a claim id of this file \
+                     nor `eq N` with N from 1 to 85",
+                    c.id
+                ),
+            });
+        }
+        if let Some(whole) = c
+            .part_of
+            .as_ref()
+            .filter(|w| **w == c.id || !claim_entries.iter().any(|e| e.id == **w))
+        {
+            return Err(PaperError::Structure {
+                file: file("claims.yaml"),
+                message: format!(
+                    "claim `{}`, key `part_of`: `{whole}` is not the id of another claim of \
+                     this file; write the id of the claim whose statement it is a part of",
+                    c.id
+                ),
+            });
+        }
+        if let Some(n) = c.restates.filter(|n| !(1..=85).contains(n)) {
+            return Err(PaperError::Structure {
+                file: file("claims.yaml"),
+                message: format!(
+                    "claim `{}`, key `restates`: {n} is not an equation number; write the \
+                     printed number of the equation it states again, from 1 to 85",
+                    c.id
+                ),
+            });
+        }
+    }
+    for e in entries {
+        if let Some(bad) = e
+            .rests_on
+            .iter()
+            .find(|p| !premise_exists(p, claim_entries))
+        {
+            return Err(PaperError::Structure {
+                file: file("equations.yaml"),
+                message: format!(
+                    "eq {}, key `rests_on`: `{bad}` is not a claim id of claims.yaml",
+                    e.number
+                ),
+            });
+        }
+    }
+    Ok(())
 }

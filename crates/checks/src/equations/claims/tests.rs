@@ -311,7 +311,7 @@ fn one_statement_is_counted_once() {
             .expect("the two claims run");
         let part = checked
             .iter()
-            .find(|c| matches!(c.subject, Subject::Claim { id } if id == "positive-b-unstable-large-tilt"))
+            .find(|c| matches!(&c.subject, Subject::Claim { id } if id == "positive-b-unstable-large-tilt"))
             .and_then(|c| c.finding.as_ref().ok())
             .map(|f| f.verdict);
         (part, Tally::of(&checked))

@@ -24,6 +24,7 @@
 //! $\dot{\mathbf n}_h$ the horizontal part of $\boldsymbol\omega\times\hat{\mathbf n}$. The
 //! boring component is held first, then the rolling one with it.
 
+use super::toy::sign;
 use super::{Mode, Sliding};
 use crate::model::lab_frame::Snapshot;
 use nalgebra::Vector3;
