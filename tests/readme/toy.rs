@@ -34,16 +34,54 @@ fn the_readmes_toy_numbers_are_the_toy_studys() {
         .iter()
         .find(|f| f.alpha0_deg == 75.0)
         .expect("the fall from 75 degrees");
-    let (thin, toy) = fall.fell_to_deg;
-    let toy = format!("{:.1}", toy.expect("the toy falls"));
-    let thin = format!("{:.1}", thin.expect("the thin disk falls"));
-    assert_eq!(
-        number_after(text, "the first dip of the nutation reaches "),
-        Some(toy.as_str())
+    // What each tilt does over the run, not its first dip: least, greatest and mean.
+    let (thin, toy) = (
+        fall.swing.0,
+        fall.swing.1.expect("the toy's steady motion at 75 deg"),
     );
+    assert!(!thin.settles && !toy.settles, "{thin:?} {toy:?}");
+    for (who, w) in [("the toy's tilt swings", toy), ("the thin disk's", thin)] {
+        let [lo, hi, mean] = [w.min_deg, w.max_deg, w.mean_deg].map(|x| format!("{x:.1}"));
+        assert_eq!(
+            number_after(text, &format!("{who} between ")),
+            Some(lo.as_str()),
+            "{who}"
+        );
+        assert_eq!(
+            number_after(text, &format!("{who} between {lo}° and ")),
+            Some(hi.as_str()),
+            "{who}"
+        );
+        assert_eq!(
+            number_after(
+                text,
+                &format!("{who} between {lo}° and {hi}° with a mean of ")
+            ),
+            Some(mean.as_str()),
+            "{who}"
+        );
+    }
+    // Followed with slip on the smoothest table, the thin disk settles below.
+    let slid = studies::sliding::fall::fall(
+        &physics::disk::toy_disk(),
+        &physics::solve::Settings::dop853(1e-10, 1e-12),
+    )
+    .expect("the fall study");
+    let mu = studies::sliding::fall::MUS[0];
+    let run = slid
+        .cases
+        .iter()
+        .find(|c| c.alpha0_deg == 75.0 && c.mu == Some(mu))
+        .expect("the 75 deg run on the smoothest table");
+    assert!(run.slipped && run.swing.settles, "{run:?}");
     assert_eq!(
-        number_after(text, "° for the toy and "),
-        Some(thin.as_str())
+        number_after(text, "Followed with slip (μ = "),
+        Some(format!("{mu}").as_str())
+    );
+    let late = format!("{:.1}", run.swing.late_mean_deg.expect("a settled run"));
+    assert_eq!(
+        number_after(text, "the thin disk does settle, with a mean of "),
+        Some(late.as_str())
     );
     let (lo, hi) = studies::toy_steady::compute()
         .expect("the toy's steady motions")
@@ -53,5 +91,8 @@ fn the_readmes_toy_numbers_are_the_toy_studys() {
         number_after(text, "but the toy cannot between "),
         Some(lo.as_str())
     );
-    assert_eq!(number_after(text, "° and "), Some(hi.as_str()));
+    assert_eq!(
+        number_after(text, &format!("but the toy cannot between {lo}° and ")),
+        Some(hi.as_str())
+    );
 }

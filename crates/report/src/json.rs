@@ -15,7 +15,7 @@ use schemars::JsonSchema;
 use serde::Serialize;
 
 /// The version of the document's schema.
-pub const SCHEMA_VERSION: u32 = 2;
+pub const SCHEMA_VERSION: u32 = 3;
 
 /// The document's identifier, also the schema's `$id`.
 pub const SCHEMA_ID: &str = "https://rolling-disk.invalid/schemas/report.schema.json";

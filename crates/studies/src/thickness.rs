@@ -30,6 +30,7 @@
 //! For the thin disk this is eq 80's $\Omega_{\max}$ through eq 31 (the paper drops the
 //! $\dot\alpha^2$ term); the simulated run's least $F_z/mg$ says whether the run got there.
 
+use crate::sliding::swing::Swing;
 use crate::StudyError;
 use physics::dispatch::sliding_model;
 use physics::model::sliding::{Mode, Solid};
@@ -239,25 +240,30 @@ pub struct FallPair {
     /// [`RollingSolid::steady`]), rad/s; `None` where the toy has no steady motion at that $b$
     /// (eq 30 for the solid).
     pub precession: (f64, Option<f64>),
-    /// The tilt each falls to (deg), thin and toy; `None`: it did not fall [`FALL_LEFT`]° within
-    /// [`FALL_TIME`] s.
+    /// The first dip of each (deg), thin and toy: the first minimum of the tilt; `None`: it did
+    /// not fall [`FALL_LEFT`]° within [`FALL_TIME`] s. One extreme of the motion.
     pub fell_to_deg: (Option<f64>, Option<f64>),
+    /// What each tilt does over the run, thin and toy: least, greatest, mean, and whether it
+    /// settles into a lower steady rolling (`sliding::swing`); `None` where the toy has no
+    /// steady motion at that $b$.
+    pub swing: (Swing, Option<Swing>),
 }
 
 /// How long each fall runs (s), as the fall study.
 pub const FALL_TIME: f64 = 3.0;
 /// How far below $\alpha_0$ the tilt must go to have fallen (deg), as the fall study.
-pub const FALL_LEFT: f64 = 5.0;
+pub const FALL_LEFT: f64 = crate::sliding::swing::FALLEN;
 
-/// The tilt (deg) `shape` falls to from its steady motion at (`alpha0`, `b`, `precession`)
-/// with the tilt lowered by 1 mrad, rolling: the first minimum of $\alpha$ (to the 1 ms
-/// sampling) once it is [`FALL_LEFT`]° below $\alpha_0$, as `sliding::fall` defines it.
+/// The fall of `shape` from its steady motion at (`alpha0`, `b`, `precession`) with the tilt
+/// lowered by 1 mrad, rolling: its first dip (deg), the first minimum of $\alpha$ (to the 1 ms
+/// sampling) once it is [`FALL_LEFT`]° below $\alpha_0$, as `sliding::fall` defines it, and
+/// what the tilt does over the whole run.
 pub fn fall_to(
     shape: Shape,
     alpha0: f64,
     b: f64,
     precession: f64,
-) -> Result<Option<f64>, StudyError> {
+) -> Result<(Option<f64>, Swing), StudyError> {
     let spin = shape.spin_ratio(alpha0, b) * precession;
     let r = samples(&scene(
         shape,
@@ -269,16 +275,19 @@ pub fn fall_to(
         1e-3,
         "",
     )?)?;
+    let column = |i: usize| r.iter().map(|x| x[i]).collect::<Vec<f64>>();
+    let swing = Swing::of(&column(0), &column(1), &column(2), alpha0);
     let Some(left) = r
         .iter()
         .position(|x| x[1] < alpha0 - FALL_LEFT.to_radians())
     else {
-        return Ok(None);
+        return Ok((None, swing));
     };
-    Ok(r[left..]
+    let dip = r[left..]
         .windows(2)
         .find(|w| w[0][2] < 0.0 && w[1][2] >= 0.0)
-        .map(|w| w[0][1].min(w[1][1]).to_degrees()))
+        .map(|w| w[0][1].min(w[1][1]).to_degrees());
+    Ok((dip, swing))
 }
 
 /// The falls at each tilt of `sliding::fall::TILTS_DEG` from the middle of the thin disk's
@@ -298,17 +307,20 @@ fn falls() -> Result<Vec<FallPair>, StudyError> {
             .steady(alpha0, b)
             .ok()
             .map(|m| m.precession);
+        let (thin_dip, thin_swing) = fall_to(Shape::Thin, alpha0, b, thin)?;
+        let (toy_dip, toy_swing) = match toy {
+            Some(om) => {
+                let (dip, swing) = fall_to(Shape::Toy, alpha0, b, om)?;
+                (dip, Some(swing))
+            }
+            None => (None, None),
+        };
         out.push(FallPair {
             alpha0_deg: deg,
             b_over_a: band.start,
             precession: (thin, toy),
-            fell_to_deg: (
-                fall_to(Shape::Thin, alpha0, b, thin)?,
-                match toy {
-                    Some(om) => fall_to(Shape::Toy, alpha0, b, om)?,
-                    None => None,
-                },
-            ),
+            fell_to_deg: (thin_dip, toy_dip),
+            swing: (thin_swing, toy_swing),
         });
     }
     Ok(out)

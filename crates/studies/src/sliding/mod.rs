@@ -22,6 +22,7 @@ pub mod negative_b;
 pub mod rising;
 pub mod slip_onset;
 pub mod spiral;
+pub mod swing;
 
 use experiment::mechanisms;
 pub use physics::disk::toy_disk;

@@ -108,7 +108,48 @@ pub(super) fn positive_b_unstable_large_tilt(b: &Bench) -> Finding {
         f.verdict = crate::finding::Verdict::Fails;
         f.at = format!("{}; EIGENVALUES DISAGREE", f.at);
     }
+    f.at = format!("{}; {}", f.at, fall_over_the_run(b));
     f
+}
+
+/// What the fall from the unstable band does over the run (`studies::sliding::fall`, the thin
+/// disk rolling and on the smoothest table of `MUS`), for the card: least, greatest and mean
+/// tilt and whether it settles into a lower steady rolling (`studies::sliding::swing`). The
+/// verdict is the onset's; this says so and shows the motion beside it.
+fn fall_over_the_run(b: &Bench) -> String {
+    use studies::sliding::fall::{band, fall_from, MUS, TILTS_DEG};
+    let d = studies::sliding::toy_disk();
+    let settings = b.settings();
+    let mu = MUS[0];
+    let mut parts = Vec::new();
+    for a in TILTS_DEG {
+        let alpha0 = a.to_radians();
+        let Some(start) = band(&d, alpha0).map(|x| x.start) else {
+            continue;
+        };
+        let run = |mu| fall_from(&d, alpha0, start, mu, &settings).ok().flatten();
+        let (Some(rolling), Some(slid)) = (run(None), run(Some(mu))) else {
+            parts.push(format!("from {a:.0} deg: a run could not be made"));
+            continue;
+        };
+        let w = rolling.swing;
+        let end = |s: &studies::sliding::swing::Swing| match s.late_mean_deg {
+            Some(m) if s.settles => format!("settles, late mean {m:.1}"),
+            _ => format!("does not settle, mean {:.1}", s.mean_deg),
+        };
+        parts.push(format!(
+            "from {a:.0} deg rolling: min {:.1}, max {:.1}, {}; on mu {mu}: {}",
+            w.min_deg,
+            w.max_deg,
+            end(&w),
+            end(&slid.swing)
+        ));
+    }
+    format!(
+        "verdict on the onset; the fall over {} s at b mid-band (not judged here): {}",
+        studies::sliding::fall::DURATION,
+        parts.join("; ")
+    )
 }
 
 /// `negative-b-always-stable`: on a grid of $k$, $\alpha_0$ and $b$ between eq 30's bound and 0,

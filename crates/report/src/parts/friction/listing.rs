@@ -8,6 +8,7 @@ use crate::error::ReportError;
 use crate::parts::prose::paragraph;
 use serde::Serialize;
 use studies::sliding::fall::{Fall, FallCase, ACROSS, DURATION, LEFT, NUDGE};
+use studies::sliding::swing::Swing;
 use studies::sliding::Studies;
 
 /// The claim the fall study answers (paper/claims.yaml).
@@ -27,16 +28,31 @@ struct SpiralRun<'s> {
     note: Option<usize>,
 }
 
-/// A fall run and how its tilt fallen to stands against the claim's reading.
+/// A fall run judged on what its motion does over the run: whether it settles into a lower
+/// steady rolling, and where (its late mean) against the claim's reading.
 #[derive(Serialize)]
 struct FallRun<'s> {
     run: &'s FallCase,
-    /// Whether the tilt fallen to is within the reading (`None`: it did not fall).
-    holds: Option<bool>,
-    /// "above" or "below" the reading, or "inside" it (`None`: it did not fall).
+    /// Whether the run settles with its late mean within the reading.
+    holds: bool,
+    /// "above", "below" or "inside" the reading, by the late mean of a run that settles;
+    /// `None`: it does not settle, so there is no lower rolling to place.
     side: Option<&'static str>,
     /// How far outside the reading (deg).
     by: f64,
+}
+
+/// Whether a run whose tilt does `swing` bears out "falls into a rolling motion at about the claimed tilt", read as
+/// `lo` to `hi` deg: it settles into a lower steady rolling and its late mean is within the
+/// reading. The first dip alone never does: it is one extreme of a swing.
+pub(crate) fn bears_out(swing: &Swing, lo: f64, hi: f64) -> bool {
+    swing.settles && swing.late_mean_deg.is_some_and(|x| (lo..=hi).contains(&x))
+}
+
+/// Whether run `c` settles into a lower steady rolling at `hi` deg or below (the LaTeX's
+/// "$\lesssim$").
+pub(crate) fn settles_at_most(c: &FallCase, hi: f64) -> bool {
+    c.swing.settles && c.swing.late_mean_deg.is_some_and(|x| x <= hi)
 }
 
 /// An unstable band and what the rolling disk falls to across it.
@@ -56,8 +72,12 @@ struct FallReading<'s> {
     hi: f64,
     bands: Vec<FallBand<'s>>,
     runs: Vec<FallRun<'s>>,
+    /// Runs that settle with their late mean within the reading.
     held: usize,
+    /// Runs that settle with their late mean at or below the reading's top.
     below: usize,
+    /// Runs that settle into a lower steady rolling at all.
+    settled: usize,
     slowest: f64,
     lowest_across: f64,
     highest_across: f64,
@@ -86,8 +106,8 @@ fn fall_reading(f: &Fall, (claimed, within): (f64, f64)) -> FallReading<'_> {
         .cases
         .iter()
         .map(|c| {
-            let x = c.fell_to_deg;
-            let (side, by) = match x {
+            let settled = c.swing.late_mean_deg.filter(|_| c.swing.settles);
+            let (side, by) = match settled {
                 Some(x) if x > hi => (Some("above"), x - hi),
                 Some(x) if x < lo => (Some("below"), lo - x),
                 Some(_) => (Some("inside"), 0.0),
@@ -95,7 +115,7 @@ fn fall_reading(f: &Fall, (claimed, within): (f64, f64)) -> FallReading<'_> {
             };
             FallRun {
                 run: c,
-                holds: x.map(|x| (lo..=hi).contains(&x)),
+                holds: bears_out(&c.swing, lo, hi),
                 side,
                 by,
             }
@@ -120,12 +140,9 @@ fn fall_reading(f: &Fall, (claimed, within): (f64, f64)) -> FallReading<'_> {
                     .collect(),
             })
             .collect(),
-        held: runs.iter().filter(|r| r.holds == Some(true)).count(),
-        below: f
-            .cases
-            .iter()
-            .filter(|c| c.fell_to_deg.is_some_and(|x| x <= hi))
-            .count(),
+        held: runs.iter().filter(|r| r.holds).count(),
+        below: f.cases.iter().filter(|c| settles_at_most(c, hi)).count(),
+        settled: f.cases.iter().filter(|c| c.swing.settles).count(),
         slowest: f
             .cases
             .iter()
@@ -179,5 +196,48 @@ mod tests {
     fn the_fall_claim_and_its_reading_are_found() {
         let paper = paper::Paper::built_in_shared();
         assert_eq!(super::fall_claim(paper), Some((60.0, 0.05)));
+    }
+
+    /// A claim planted at 43 deg, the toy's first dip from 75 deg: read off that one extreme it
+    /// would hold, judged on the motion over the run it fails (the toy nutates on, its mean
+    /// far above). A run that settles bears out a claim at its late mean, and only there.
+    #[test]
+    fn a_claim_planted_at_the_first_dip_fails_and_one_at_a_settled_tilt_holds() {
+        use studies::thickness::{fall_to, Shape};
+        let d = physics::disk::toy_disk();
+        let alpha0 = 75f64.to_radians();
+        let band = studies::sliding::fall::band(&d, alpha0).unwrap();
+        let b = band.start * d.a;
+        let om = Shape::Toy.rolling().steady(alpha0, b).unwrap().precession;
+        let (dip, swing) = fall_to(Shape::Toy, alpha0, b, om).unwrap();
+        let (lo, hi) = (43.0 * 0.95, 43.0 * 1.05);
+        assert!(dip.is_some_and(|x| (lo..=hi).contains(&x)), "{dip:?}");
+        assert!((lo..=hi).contains(&swing.min_deg), "{swing:?}");
+        assert!(swing.mean_deg > hi + 20.0 && !swing.settles, "{swing:?}");
+        assert!(!super::bears_out(&swing, lo, hi));
+
+        let settings = physics::solve::Settings::dop853(1e-10, 1e-12);
+        let f = studies::sliding::fall::fall(&d, &settings).unwrap();
+        let planted = super::fall_reading(&f, (43.0, 0.05));
+        assert_eq!(planted.held, 0);
+        let settled = f.cases.iter().find(|c| c.swing.settles).unwrap();
+        let at = settled.swing.late_mean_deg.unwrap();
+        let r = super::fall_reading(&f, (at, 0.05));
+        assert!(r.held >= 1);
+        for x in r.runs.iter().filter(|x| x.holds) {
+            let late = x.run.swing.late_mean_deg.unwrap();
+            assert!(
+                x.run.swing.settles && (late - at).abs() <= 0.05 * at,
+                "{late}"
+            );
+        }
+        let nutating = f.cases.iter().find(|c| c.mu.is_none()).unwrap();
+        let r = super::fall_reading(&f, (nutating.fell_to_deg.unwrap(), 0.05));
+        let x = r
+            .runs
+            .iter()
+            .find(|x| std::ptr::eq(x.run, nutating))
+            .unwrap();
+        assert!(!x.holds && x.side.is_none());
     }
 }

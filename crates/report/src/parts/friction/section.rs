@@ -269,7 +269,8 @@ pub fn summary(
     paragraph(&super::ABOUT.templates, "summary", &values)
 }
 
-/// The fall study's numbers: how fast the disk falls, and how often to the claimed tilt.
+/// The fall study's numbers: how fast the disk falls, how often it settles into a lower steady
+/// rolling, and how often there at the claimed tilt (judged on the motion over the run).
 fn fall(f: &studies::sliding::fall::Fall, paper: &paper::Paper) -> Option<serde_json::Value> {
     let (claimed, within) = super::listing::fall_claim(paper)?;
     let (lo, hi) = (claimed * (1.0 - within), claimed * (1.0 + within));
@@ -281,8 +282,15 @@ fn fall(f: &studies::sliding::fall::Fall, paper: &paper::Paper) -> Option<serde_
     let held = f
         .cases
         .iter()
-        .filter(|c| c.fell_to_deg.is_some_and(|x| (lo..=hi).contains(&x)))
+        .filter(|c| super::listing::bears_out(&c.swing, lo, hi))
         .count();
+    let settled: Vec<f64> = f
+        .cases
+        .iter()
+        .filter(|c| c.swing.settles)
+        .filter_map(|c| c.swing.late_mean_deg)
+        .collect();
+    let nutating = f.cases.iter().filter(|c| !c.swing.settles);
     Some(serde_json::json!({
         "slowest": format!("{slowest:.2}"),
         "claimed": format!("{claimed:.0}"),
@@ -290,5 +298,11 @@ fn fall(f: &studies::sliding::fall::Fall, paper: &paper::Paper) -> Option<serde_
         "hi": format!("{hi:.0}"),
         "held": held,
         "runs": f.cases.len(),
+        "settled": settled.len(),
+        "settled_lo": format!("{:.1}", settled.iter().copied().fold(f64::INFINITY, f64::min)),
+        "settled_hi": format!("{:.1}", settled.iter().copied().fold(f64::NEG_INFINITY, f64::max)),
+        "settled_slid": f.cases.iter().filter(|c| c.swing.settles).all(|c| c.slipped),
+        "nutating_mean_lo": format!("{:.1}", nutating.clone().map(|c| c.swing.mean_deg).fold(f64::INFINITY, f64::min)),
+        "nutating_mean_hi": format!("{:.1}", nutating.map(|c| c.swing.mean_deg).fold(f64::NEG_INFINITY, f64::max)),
     }))
 }

@@ -8,6 +8,7 @@ use crate::parts::prose::paragraph;
 use crate::study_table::{StudySection, StudyTable};
 use std::fmt::Write;
 use studies::peer::stored::{Differences, StoredComparison};
+use studies::sliding::swing::Swing;
 use studies::thickness::{
     SpinDownLaw, Thickness, DRAG, FALL_LEFT, FALL_TIME, FIT_TILTS, SPIN_DOWN_START, TOY,
 };
@@ -235,35 +236,47 @@ fn spin_down(t: &Thickness) -> StudyTable {
     s
 }
 
-/// Sec. 7's fall "to about 60°": thin and toy from the thin disk's unstable band.
+/// Sec. 7's fall "to about 60°": thin and toy from the thin disk's unstable band, each by what
+/// its tilt does over the run.
 fn fall(t: &Thickness) -> StudyTable {
     let mut s = StudyTable::new(
         format!(
             "The fall from unstable steady motion (sec. 7, \"to about 60°\"): the steady roll \
              at α₀ with b at the middle of the thin disk's unstable band (the fall study's \
-             starts), the tilt lowered by 1 mrad, rolling for {FALL_TIME} s; it falls to the first \
-             minimum of α once {FALL_LEFT}° below α₀. The toy's steady Ω₀ at that b is eq 29 \
-             for its thickness (the next table); a dash: the toy has no steady motion at that b, \
-             or no fall."
+             starts), the tilt lowered by 1 mrad, rolling for {FALL_TIME} s without \
+             dissipation. Each cell: the least and greatest tilt over the run, its mean, and \
+             whether it settles into a lower steady rolling (its swing decays to half and its \
+             late mean lies {FALL_LEFT}° or more below α₀). The toy's steady Ω₀ at that b is eq \
+             29 for its thickness (the next table); a dash: the toy has no steady motion at that b."
         ),
         &[
             "α₀ (°)",
             "b / a",
             "Ω₀ thin (rad/s)",
             "Ω₀ toy (rad/s)",
-            "falls to, thin (°)",
-            "falls to, toy (°)",
+            "thin: tilt (°), mean",
+            "toy: tilt (°), mean",
         ],
     );
-    let deg = |x: Option<f64>| x.map_or("–".into(), |v| places(v, 1));
+    let cell = |x: Option<&Swing>| {
+        x.map_or("–".into(), |w| {
+            format!(
+                "{}–{}, {}; {}",
+                places(w.min_deg, 1),
+                places(w.max_deg, 1),
+                places(w.mean_deg, 1),
+                if w.settles { "settles" } else { "nutates" }
+            )
+        })
+    };
     for f in &t.falls {
         s.row(vec![
             places(f.alpha0_deg, 0),
             places(f.b_over_a, 3),
             places(f.precession.0, 3),
             f.precession.1.map_or("–".into(), |v| places(v, 3)),
-            deg(f.fell_to_deg.0),
-            deg(f.fell_to_deg.1),
+            cell(Some(&f.swing.0)),
+            cell(f.swing.1.as_ref()),
         ]);
     }
     s
@@ -393,12 +406,20 @@ fn summary(t: &Toy, tables: &[StudyTable], figures: &[usize]) -> Result<String, 
             .map(|f| {
                 serde_json::json!({
                     "alpha0_deg": f.alpha0_deg,
-                    "to": f.fell_to_deg.1,
-                    "thin": f.fell_to_deg.0,
-                    "steady": f.precession.1.is_some(),
+                    "toy": f.swing.1,
+                    "thin": f.swing.0,
                 })
             })
             .collect::<Vec<_>>(),
+        "falls_settle": th
+            .falls
+            .iter()
+            .any(|f| f.swing.0.settles || f.swing.1.is_some_and(|w| w.settles)),
+        "toy_swings_lower": th.falls.iter().all(|f| {
+            f.swing
+                .1
+                .is_none_or(|w| w.mean_deg < f.swing.0.mean_deg && w.min_deg < f.swing.0.min_deg)
+        }),
         "ni": places(thin.least_normal.0, 2),
         "eq30": super::steady_table::edges(&t.steady, &cite(tables, 5)),
         "at": at,
