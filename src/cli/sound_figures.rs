@@ -1,13 +1,14 @@
 //! The figures `experiment analyze FILE --out DIR` draws for a sound recording: its spectrogram
-//! with the fitted pitch and harmonics, and the residuals of eq 79 on its phase (the report's own
-//! figure functions, [`report::figures::sound`]).
+//! with the law the analysis reports and its harmonics, and, when that law is eq 79 fitted to
+//! the phase, the phase's residuals (the report's own figure functions,
+//! [`report::figures::sound`]).
 
 use experiment::spectrogram::spectrogram;
 use experiment::{SoundAnalysis, Trace};
 use std::path::{Path, PathBuf};
 
-/// Writes `spectrogram.svg` and `phase-residuals.svg` of the analysis `a` of `trace` into `dir`,
-/// each atomically; returns the paths written.
+/// Writes `spectrogram.svg` (and `phase-residuals.svg` when the phase's fit is the result) of the
+/// analysis `a` of `trace` into `dir`, each atomically; returns the paths written.
 pub fn write(a: &SoundAnalysis, trace: &Trace, dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
     // Up to the fourth harmonic of the fastest fitted pitch, below the Nyquist frequency.
     let top = a.track.points.iter().map(|p| p.omega).fold(0.0, f64::max) / std::f64::consts::TAU;
@@ -19,16 +20,17 @@ pub fn write(a: &SoundAnalysis, trace: &Trace, dir: &Path) -> anyhow::Result<Vec
         Some(r) => format!("a recording ({r})"),
         None => "a recording".to_string(),
     };
-    let figures = [
-        (
-            "spectrogram.svg",
-            report::figures::sound::spectrogram(a, &sp, &about),
-        ),
-        (
+    let mut figures = vec![(
+        "spectrogram.svg",
+        report::figures::sound::spectrogram(a, &sp, &about)?,
+    )];
+    // The phase's residuals only when the phase's fit is the result: no empty frame.
+    if a.law().from_phase {
+        figures.push((
             "phase-residuals.svg",
             report::figures::sound::phase_residuals(a),
-        ),
-    ];
+        ));
+    }
     let mut out = Vec::new();
     for (name, fig) in figures {
         let svg = fig.drawing.to_svg(900, 600)?;

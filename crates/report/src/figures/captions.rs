@@ -38,6 +38,7 @@ caption_templates!(
     "residuals",
     "slip-stick",
     "slip-stick-path",
+    "sound-spectrogram",
     "sound_track",
     "spin-down-alpha",
     "stability-map",

@@ -122,7 +122,7 @@ pub const FAMILIES: &[Family] = &[
     Family {
         names: &["sound-spectrogram", "sound-residuals"],
         needs: &[&study::Sound],
-        build: |r| Ok(sound::figures(need(r, &study::Sound)?)),
+        build: |r| sound::figures(need(r, &study::Sound)?),
     },
     Family {
         names: &["coverage"],

@@ -2,7 +2,7 @@
 //! pitch and harmonics, and the residuals of eq 79's heading fitted to its phase.
 
 use crate::figures::chart::{Axis, Legend, Plot, Series, Style};
-use crate::figures::{Drawing, Figure};
+use crate::figures::{Drawing, Figure, FigureError};
 use crate::number::measured;
 use experiment::spectrogram::Spectrogram;
 use experiment::SoundAnalysis;
@@ -16,16 +16,21 @@ const PHONE: &str = "the built-in spin-down as a phone beside the disk records i
     harmonics, the level rising to the end, a rattle, clicks, room noise, 2 % of 50 Hz hum)";
 
 /// The sound's two figures.
-pub fn figures(s: &SoundStudy) -> Vec<Figure> {
-    vec![
-        spectrogram(&s.analysis, &s.spectrogram, PHONE),
+pub fn figures(s: &SoundStudy) -> Result<Vec<Figure>, FigureError> {
+    Ok(vec![
+        spectrogram(&s.analysis, &s.spectrogram, PHONE)?,
         phase_residuals(&s.analysis),
-    ]
+    ])
 }
 
 /// The spectrogram `sp` of the recording `about` describes, as loudness bands, with
-/// $h\Omega/2\pi$ of the analysis `a`'s phase fit over it.
-pub fn spectrogram(a: &SoundAnalysis, sp: &Spectrogram, about: &str) -> Figure {
+/// $h\Omega/2\pi$ of the law the analysis `a` reports over it (eq 79 fitted to the phase, or to
+/// the pitch track when the phase's fit is not the result).
+pub fn spectrogram(
+    a: &SoundAnalysis,
+    sp: &Spectrogram,
+    about: &str,
+) -> Result<Figure, FigureError> {
     let mut plot = Plot::new(
         "Spectrogram of the sound, with eq 79's pitch and harmonics",
         "time t (s)",
@@ -47,21 +52,42 @@ pub fn spectrogram(a: &SoundAnalysis, sp: &Spectrogram, about: &str) -> Figure {
     }
     let law = a.law();
     let f_top = sp.f.last().copied().unwrap_or(1000.0);
-    if let (Some(p), Some(first)) = (&a.phase, a.phase.as_ref().and_then(|p| p.points.first())) {
-        let end = p.points.last().map_or(first.b, |q| q.b);
+    // The law the analysis reports: eq 79 fitted to the phase, or to the pitch track when the
+    // phase's fit is not the result; drawn over the span that fit used.
+    let (fitted_on, ln_c, span) = match &a.phase {
+        Some(p) if law.from_phase => (
+            "the phase",
+            p.ln_c,
+            p.points
+                .first()
+                .zip(p.points.last())
+                .map(|(f, l)| (f.a, l.b)),
+        ),
+        _ => (
+            "the pitch track",
+            a.fit.ln_c,
+            a.track
+                .points
+                .first()
+                .zip(a.track.points.last())
+                .map(|(f, l)| (f.a, l.b)),
+        ),
+    };
+    if let Some((start, end)) = span {
         for h in 1..=4 {
             let pts: Vec<(f64, f64)> = (0..=200)
-                .map(|i| first.a + (end - first.a) * f64::from(i) / 200.0)
+                .map(|i| start + (end - start) * f64::from(i) / 200.0)
+                .filter(|t| *t < law.t0)
                 .map(|t| {
-                    let q = 1.0 / (p.beta + 2.0);
-                    let omega = (q * (p.ln_c - (p.t0 - t).ln())).exp();
+                    let q = 1.0 / (law.beta + 2.0);
+                    let omega = (q * (ln_c - (law.t0 - t).ln())).exp();
                     (t, f64::from(h) * omega / std::f64::consts::TAU)
                 })
                 .filter(|(_, f)| *f <= f_top)
                 .collect();
             let label = if h == 1 {
                 format!(
-                    "eq 79 on the phase: hΩ/2π, h = 1..4 (β = {})",
+                    "eq 79 on {fitted_on}: hΩ/2π, h = 1..4 (β = {})",
                     measured(law.beta, law.beta_sigma)
                 )
             } else {
@@ -71,19 +97,27 @@ pub fn spectrogram(a: &SoundAnalysis, sp: &Spectrogram, about: &str) -> Figure {
         }
     }
     let plot = plot.y_range(0.0, f_top).legend_at(Legend::UpperLeft);
-    Figure {
+    Ok(Figure {
         name: "sound-spectrogram",
         title: "Spectrogram of the disk's sound with the fitted pitch".into(),
-        caption: format!(
-            "{}: {about}. Cells of {:.2} s by {:.0} Hz, in three bands of loudness relative to \
-             the loudest cell; the lines are h Omega/2 pi (h = 1 to 4) of eq 79 fitted to the \
-             sound's phase.",
-            a.source,
-            sp.t.get(1).zip(sp.t.first()).map_or(0.0, |(b, a)| b - a),
-            sp.f.get(1).zip(sp.f.first()).map_or(0.0, |(b, a)| b - a),
-        ),
+        caption: super::captions::caption(
+            "sound-spectrogram",
+            &serde_json::json!({
+                "source": a.source,
+                "about": about,
+                "frame_s": format!(
+                    "{:.2}",
+                    sp.t.get(1).zip(sp.t.first()).map_or(0.0, |(b, a)| b - a)
+                ),
+                "band_hz": format!(
+                    "{:.0}",
+                    sp.f.get(1).zip(sp.f.first()).map_or(0.0, |(b, a)| b - a)
+                ),
+                "fitted_on": fitted_on,
+            }),
+        )?,
         drawing: Drawing::Plot(plot),
-    }
+    })
 }
 
 /// The residuals of eq 79's heading, block by block, in units of their own sigma.
