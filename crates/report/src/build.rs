@@ -11,7 +11,7 @@ use super::{
 };
 use crate::document::equation_checked;
 use crate::error::ReportError;
-use crate::figures::{self, Drawing, Figure};
+use crate::figures::{self, Drawing, Figure, FigureError};
 use crate::finding_view::{
     claim_views, finding_of, headline_text, printed_and_true, relative_error, values,
 };
@@ -121,7 +121,7 @@ fn causes_view(checked: &[Checked]) -> (Vec<RootCauseView>, Vec<FailureView>) {
 }
 
 /// The premises graph of the report: every equation, coloured by its verdict.
-fn premises_figure(bench: &Bench, checked: &[Checked]) -> Figure {
+fn premises_figure(bench: &Bench, checked: &[Checked]) -> Result<Figure, FigureError> {
     use checks::cause::graph::{PremisesGraph, Status};
     let premises = (1..=85u32)
         .map(|n| (n, bench.paper.equation(n).entry.premises.clone()))
@@ -131,12 +131,12 @@ fn premises_figure(bench: &Bench, checked: &[Checked]) -> Figure {
         _ => Status::Unchecked,
     };
     let causes = checks::check::equation_causes(checked);
-    Figure {
+    Ok(Figure {
         name: "premises",
         title: "Which equation follows from which, and where the errors start".into(),
-        caption: "One node per numbered equation, an arrow from each premise to the equation that cites it (paper/equations.yaml), each row one step further from the paper's starting points. Colours are the verdicts (green holds, blue holds at its order, grey definition, purple estimate, orange holds only under a premise that fails, red fails, teal depends on a choice the paper leaves open, yellow not checked); a thick outline marks a root cause, and red arrows carry an error into an equation that follows correctly from a failing premise. In the HTML each node links to its finding.".into(),
+        caption: crate::figures::captions::caption("premises", &serde_json::json!({}))?,
         drawing: Drawing::Premises(PremisesGraph::new(&premises, &status, &causes)),
-    }
+    })
 }
 
 /// Computes every study once ([`compute`]) and builds the report from the results, at the
@@ -197,7 +197,7 @@ fn assemble(
     progress("drawing the figures");
     let (figures, figure_views) = timings.time("figures", || {
         let mut figures = figures::all(results)?;
-        figures.push(premises_figure(bench, checked));
+        figures.push(premises_figure(bench, checked)?);
         let views = figure_views(&figures)?;
         Ok::<_, ReportError>((figures, views))
     })?;

@@ -35,6 +35,7 @@ caption_templates!(
     "path",
     "peer-difference",
     "peer-tilt",
+    "premises",
     "residuals",
     "slip-stick",
     "slip-stick-path",
