@@ -10,11 +10,15 @@
 //! sum $S(k) = \sum_h |X_w(hk)|$ over the harmonics below [`MAX_HARMONIC_HZ`] (at most four):
 //! at the true fundamental all harmonics add, at half of it only the even ones.
 //!
-//! **Hum masked.** A harmonic $hk$ that lies within the window's main lobe ($\pm 2/T$) of a
-//! mains line the analysis subtracted ([`Analyser::mask`]) is left out of the sum (the sum of
-//! the others scaled by the harmonics' count over theirs) and of the estimate: what is left of the hum there is not the disk's, and a fundamental whose every
-//! harmonic is on the hum is no fundamental of the disk. Where the disk's line crosses a hum
-//! line, that frame reads the disk from its other harmonics.
+//! **Hum masked where the line is searched for.** In a frame searched for the line (`masked`),
+//! a harmonic $hk$ that lies within the window's main lobe ($\pm 2/T$) of a mains line the
+//! analysis subtracted ([`Analyser::mask`]) is left out of the sum (the sum of the others
+//! scaled by the harmonics' count over theirs) and of the estimate: what is left of the hum
+//! there is not the disk's, and a fundamental whose every harmonic is on the hum is no
+//! fundamental of the disk. A frame that follows a line already held, searched within a narrow
+//! band about its predicted pitch, is not masked: its short frames' lobes ($2/T$ grows as $T$
+//! shrinks near $t_0$) would cover most of the band below a few hundred hertz, and leave the
+//! disk's line read from its weakest harmonics or not at all.
 //!
 //! **Where on the line.** Each harmonic's peak bin $p$ is refined two ways:
 //! - by **reassignment** (the estimate used): for a sinusoid of frequency $f_0$,
@@ -100,9 +104,16 @@ impl Analyser {
         p
     }
 
-    /// The fundamental of frame `x` searched between `lo` and `hi` Hz; `None` when no harmonic
-    /// stands `min_snr` times above the noise.
-    pub fn fundamental(&mut self, x: &[f64], lo: f64, hi: f64, min_snr: f64) -> Option<Estimate> {
+    /// The fundamental of frame `x` searched between `lo` and `hi` Hz, with the mains lines
+    /// masked when `masked` (see the module's documentation); `None` when no harmonic stands
+    /// `min_snr` times above the noise.
+    pub fn fundamental(
+        &mut self,
+        x: &[f64],
+        (lo, hi): (f64, f64),
+        min_snr: f64,
+        masked: bool,
+    ) -> Option<Estimate> {
         let n = x.len();
         if n < 16 {
             return None;
@@ -137,7 +148,7 @@ impl Analyser {
         let k_hi = ((hi / bin).ceil() as usize).min(top.saturating_sub(2));
         let mag = |k: usize| power[k].sqrt();
         let lobe = 2.0 * fs / n as f64;
-        let clear = |k: usize| !self.masked(k as f64 * bin, lobe);
+        let clear = |k: usize| !masked || !self.masked(k as f64 * bin, lobe);
         let k0 = (k_lo..=k_hi)
             .map(|k| {
                 let (s, terms, used) = (1..=4).filter(|h| h * k + 2 < power.len()).fold(
@@ -273,10 +284,10 @@ mod tests {
             })
             .collect();
         let mut an = Analyser::new(fs);
-        let open = an.fundamental(&x, 5.0, 200.0, 30.0).unwrap();
-        assert!((open.f - 20.0).abs() > 1.0, "unmasked: {} Hz", open.f);
         an.mask(&[50.0]);
-        let masked = an.fundamental(&x, 5.0, 200.0, 30.0).unwrap();
+        let open = an.fundamental(&x, (5.0, 200.0), 30.0, false).unwrap();
+        assert!((open.f - 20.0).abs() > 1.0, "unmasked: {} Hz", open.f);
+        let masked = an.fundamental(&x, (5.0, 200.0), 30.0, true).unwrap();
         assert!((masked.f - 20.0).abs() < 0.05, "masked: {} Hz", masked.f);
     }
 }

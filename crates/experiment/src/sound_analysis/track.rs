@@ -295,12 +295,13 @@ fn march(v: &[f64], t0: f64, fs: f64, s: &TrackSettings, hum: &[f64]) -> (Vec<Fr
             break;
         }
         let band = (lo.max(5.0).max(2.5 / len_s), hi.min(2000.0));
-        let est = an.fundamental(&v[pos..pos + len], band.0, band.1, s.min_snr);
+        let searched = lo == 0.0;
+        let est = an.fundamental(&v[pos..pos + len], band, s.min_snr, searched);
         frames.push(Frame {
             a: t0 + pos as f64 / fs,
             b: t0 + (pos + len) as f64 / fs,
             est,
-            searched: lo == 0.0,
+            searched,
         });
         pos += len;
     }
