@@ -94,7 +94,12 @@ pub struct StoredPhoneCoverage {
 
 /// Analyses the recording of seed `seed`.
 pub fn phone_outcome(seed: u64) -> Result<PhoneOutcome, ExperimentError> {
-    let room = PhoneRoom::draw(seed);
+    phone_outcome_of(&PhoneRoom::draw(seed))
+}
+
+/// Analyses the recording of `room` (its seed names the file).
+pub fn phone_outcome_of(room: &PhoneRoom) -> Result<PhoneOutcome, ExperimentError> {
+    let seed = room.seed;
     let rec = room.record()?;
     let mut o = PhoneOutcome {
         seed,
@@ -134,20 +139,30 @@ pub fn phone_coverage(runs: usize, seed0: u64) -> Result<PhoneCoverage, Experime
         .into_par_iter()
         .map(|k| phone_outcome(seed0 + k))
         .collect::<Result<Vec<_>, _>>()?;
+    Ok(tally(outcomes))
+}
+
+/// The counts of `outcomes`.
+pub fn tally(outcomes: Vec<PhoneOutcome>) -> PhoneCoverage {
     let analysed: Vec<&PhoneOutcome> = outcomes.iter().filter(|o| o.refused.is_none()).collect();
     let count = |f: &dyn Fn(&PhoneOutcome) -> bool| analysed.iter().filter(|o| f(o)).count();
     let within = |e: Option<f64>, s: Option<f64>| match (e, s) {
         (Some(e), Some(s)) => e.abs() <= 1.96 * s,
         _ => false,
     };
-    Ok(PhoneCoverage {
-        runs,
+    let (beta_within_005, beta_covered, t0_covered) = (
+        count(&|o| o.beta_error.is_some_and(|e| e.abs() <= 0.05)),
+        count(&|o| within(o.beta_error, o.beta_sigma)),
+        count(&|o| within(o.t0_error, o.t0_sigma)),
+    );
+    PhoneCoverage {
+        runs: outcomes.len(),
         analysed: analysed.len(),
-        beta_within_005: count(&|o| o.beta_error.is_some_and(|e| e.abs() <= 0.05)),
-        beta_covered: count(&|o| within(o.beta_error, o.beta_sigma)),
-        t0_covered: count(&|o| within(o.t0_error, o.t0_sigma)),
+        beta_within_005,
+        beta_covered,
+        t0_covered,
         outcomes,
-    })
+    }
 }
 
 #[cfg(test)]
@@ -155,7 +170,8 @@ mod tests {
     use super::*;
 
     /// The study on `ROLLING_DISK_RUNS` recordings (default 40) from `ROLLING_DISK_SEED0`
-    /// (default 1), printed with every refusal.
+    /// (default 1), printed with every refusal; with `ROLLING_DISK_WITHOUT` (see [`without`]),
+    /// the same rooms without the nuisances named.
     #[test]
     #[ignore = "slow: tens of recordings; prints the study"]
     fn print_the_study() {
@@ -170,6 +186,18 @@ mod tests {
             env("ROLLING_DISK_SEED0", 1),
         )
         .unwrap();
+        let c = match std::env::var("ROLLING_DISK_WITHOUT") {
+            Ok(w) => {
+                let outcomes: Vec<PhoneOutcome> = c
+                    .outcomes
+                    .iter()
+                    .map(|o| phone_outcome_of(&without(PhoneRoom::draw(o.seed), &w)).unwrap())
+                    .collect();
+                println!("without {w}");
+                tally(outcomes)
+            }
+            Err(_) => c,
+        };
         for o in &c.outcomes {
             println!("{o:?}");
             // With ROLLING_DISK_WAV_DIR, each refused recording is written there to be looked at.
@@ -181,6 +209,25 @@ mod tests {
             }
         }
         println!("{}", c.summary());
+    }
+
+    /// `room` without the nuisances named in `what` (comma-separated: high-pass, stereo,
+    /// reverb, hum, agc, bumps, clip, rattle), to change one factor at a time.
+    fn without(mut room: PhoneRoom, what: &str) -> PhoneRoom {
+        for w in what.split(',') {
+            match w {
+                "high-pass" => room.high_pass = 1.0,
+                "stereo" => room.stereo.0 = 0.0,
+                "reverb" => room.reverb.1 = 0.0,
+                "hum" => room.hum.lines.clear(),
+                "agc" => room.agc = 0.0,
+                "bumps" => room.bumps.retain(|b| b.0 < room.lead),
+                "clip" => room.clip = 1e3,
+                "rattle" => room.rattle = 0.0,
+                other => panic!("no nuisance {other}"),
+            }
+        }
+        room
     }
 
     /// The rooms and pitch tracks of the seeds in `ROLLING_DISK_SEEDS` (comma-separated).

@@ -162,7 +162,7 @@ pub fn analyze_sound_within(
     work: &Work<'_>,
 ) -> Result<SoundAnalysis, ExperimentError> {
     work.stage("following the pitch")?;
-    let track = frequency_track(trace, settings)?;
+    let track = track_of(trace, settings)?;
     work.stage("fitting eq 79")?;
     let file = trace.source.clone();
     let refuse = |reason: String| ExperimentError::Refused {
@@ -172,11 +172,12 @@ pub fn analyze_sound_within(
     let pts = &track.points;
     if pts.len() < 6 {
         return Err(refuse(format!(
-            "{} frames hold a tone ({} silent, {} stray, {} smeared): no rising line to follow",
+            "{} frames hold a tone ({} silent, {} stray, {} smeared, {} outside the line): no rising line to follow",
             pts.len(),
             track.silent,
             track.stray,
-            track.smeared
+            track.smeared,
+            track.outside
         )));
     }
     let a: Vec<f64> = pts.iter().map(|p| p.a).collect();
@@ -277,6 +278,26 @@ pub fn analyze_sound_within(
     })
 }
 
+/// The pitch track of `trace`: with `settings`, and where that holds fewer than
+/// [`SOUND_MIN_FRAMES`] frames of the line (a spin of a few seconds of sound holds only a few
+/// search frames of the default length), with search frames halved down to 0.125 s, the track
+/// of most frames kept (the first error when none could be made).
+fn track_of(trace: &Trace, settings: &TrackSettings) -> Result<FrequencyTrack, ExperimentError> {
+    let mut best = frequency_track(trace, settings);
+    let mut s = *settings;
+    let held =
+        |t: &Result<FrequencyTrack, ExperimentError>| t.as_ref().map_or(0, |t| t.points.len());
+    while held(&best) < SOUND_MIN_FRAMES && s.search > 0.125 + 1e-9 {
+        s.search = (0.5 * s.search).max(0.125);
+        s.max_frame = s.max_frame.min(s.search);
+        let shorter = frequency_track(trace, &s);
+        if held(&shorter) > held(&best) {
+            best = shorter;
+        }
+    }
+    best
+}
+
 /// Eq 79's heading fitted to the phase of `trace` from `first` (s), started from the track's fit
 /// `fit` (covariance `cov`); the phase, or why it is not used, and the turns counted.
 fn phase_of(
@@ -338,7 +359,7 @@ impl fmt::Display for SoundAnalysis {
         }
         writeln!(
             f,
-            "  {} frames of {:.1} to {:.1} ms at {:.0} S/s; {} on the line Omega/2pi ({} silent, {} stray, {} smeared left out)",
+            "  {} frames of {:.1} to {:.1} ms at {:.0} S/s; {} on the line Omega/2pi ({} silent, {} stray, {} smeared left out; {} before or after the line skipped)",
             t.frames,
             1e3 * t.frame_span.0,
             1e3 * t.frame_span.1,
@@ -346,7 +367,8 @@ impl fmt::Display for SoundAnalysis {
             t.points.len(),
             t.silent,
             t.stray,
-            t.smeared
+            t.smeared,
+            t.outside
         )?;
         if !t.hum.is_empty() {
             let lines: Vec<String> = t.hum.iter().map(|h| format!("{h:.2}")).collect();

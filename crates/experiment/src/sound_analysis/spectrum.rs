@@ -10,6 +10,16 @@
 //! sum $S(k) = \sum_h |X_w(hk)|$ over the harmonics below [`MAX_HARMONIC_HZ`] (at most four):
 //! at the true fundamental all harmonics add, at half of it only the even ones.
 //!
+//! **Hum masked where the line is searched for.** In a frame searched for the line (`masked`),
+//! a harmonic $hk$ that lies within the window's main lobe ($\pm 2/T$) of a mains line the
+//! analysis subtracted ([`Analyser::mask`]) is left out of the sum (the sum of the others
+//! scaled by the harmonics' count over theirs) and of the estimate: what is left of the hum
+//! there is not the disk's, and a fundamental whose every harmonic is on the hum is no
+//! fundamental of the disk. A frame that follows a line already held, searched within a narrow
+//! band about its predicted pitch, is not masked: its short frames' lobes ($2/T$ grows as $T$
+//! shrinks near $t_0$) would cover most of the band below a few hundred hertz, and leave the
+//! disk's line read from its weakest harmonics or not at all.
+//!
 //! **Where on the line.** Each harmonic's peak bin $p$ is refined two ways:
 //! - by **reassignment** (the estimate used): for a sinusoid of frequency $f_0$,
 //!   $X_{w'}(f) = 2\pi i\,(f - f_0)X_w(f)$, so
@@ -57,6 +67,8 @@ pub struct Estimate {
 /// A frame analyser for one sample rate; it keeps its FFT plans.
 pub struct Analyser {
     fs: f64,
+    /// Mains lines (Hz) whose residue is masked.
+    mask: Vec<f64>,
     planner: FftPlanner<f64>,
     plans: Vec<(usize, Arc<dyn Fft<f64>>)>,
 }
@@ -66,9 +78,21 @@ impl Analyser {
     pub fn new(fs: f64) -> Self {
         Self {
             fs,
+            mask: Vec::new(),
             planner: FftPlanner::new(),
             plans: Vec::new(),
         }
+    }
+
+    /// Masks the mains lines `lines` (Hz) in every frame analysed after (see the module's
+    /// documentation).
+    pub fn mask(&mut self, lines: &[f64]) {
+        self.mask = lines.to_vec();
+    }
+
+    /// Whether frequency `f` (Hz) lies within `width` (Hz) of a masked line.
+    fn masked(&self, f: f64, width: f64) -> bool {
+        self.mask.iter().any(|m| (f - m).abs() < width)
     }
 
     fn plan(&mut self, n: usize) -> Arc<dyn Fft<f64>> {
@@ -80,9 +104,16 @@ impl Analyser {
         p
     }
 
-    /// The fundamental of frame `x` searched between `lo` and `hi` Hz; `None` when no harmonic
-    /// stands `min_snr` times above the noise.
-    pub fn fundamental(&mut self, x: &[f64], lo: f64, hi: f64, min_snr: f64) -> Option<Estimate> {
+    /// The fundamental of frame `x` searched between `lo` and `hi` Hz, with the mains lines
+    /// masked when `masked` (see the module's documentation); `None` when no harmonic stands
+    /// `min_snr` times above the noise.
+    pub fn fundamental(
+        &mut self,
+        x: &[f64],
+        (lo, hi): (f64, f64),
+        min_snr: f64,
+        masked: bool,
+    ) -> Option<Estimate> {
         let n = x.len();
         if n < 16 {
             return None;
@@ -116,12 +147,25 @@ impl Analyser {
         let k_lo = ((lo / bin).floor() as usize).max(2);
         let k_hi = ((hi / bin).ceil() as usize).min(top.saturating_sub(2));
         let mag = |k: usize| power[k].sqrt();
+        let lobe = 2.0 * fs / n as f64;
+        let clear = |k: usize| !masked || !self.masked(k as f64 * bin, lobe);
         let k0 = (k_lo..=k_hi)
             .map(|k| {
-                let s: f64 = (1..=4)
-                    .filter(|h| h * k + 2 < power.len())
-                    .map(|h| mag(h * k))
-                    .sum();
+                let (s, terms, used) = (1..=4).filter(|h| h * k + 2 < power.len()).fold(
+                    (0.0, 0, 0),
+                    |(s, terms, used), h| {
+                        if clear(h * k) {
+                            (s + mag(h * k), terms + 1, used + 1)
+                        } else {
+                            (s, terms + 1, used)
+                        }
+                    },
+                );
+                let s = if used > 0 {
+                    s * terms as f64 / used as f64
+                } else {
+                    0.0
+                };
                 (k, s)
             })
             .max_by(|a, b| a.1.total_cmp(&b.1))?
@@ -132,6 +176,9 @@ impl Analyser {
             let c = h * k0;
             if c + 3 >= power.len() {
                 break;
+            }
+            if !clear(c) {
+                continue;
             }
             let p = (c.saturating_sub(2).max(1)..=c + 2)
                 .max_by(|a, b| power[*a].total_cmp(&power[*b]))?;
@@ -213,4 +260,34 @@ fn median(mut v: Vec<f64>) -> Option<f64> {
     }
     let m = v.len() / 2;
     Some(*v.select_nth_unstable_by(m, f64::total_cmp).1)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f64::consts::TAU;
+
+    /// A disk's line at 20 Hz (harmonics at 20, 40, 60 and 80 Hz) under the residue of a 50 Hz
+    /// mains line fifty times louder: unmasked, the residue's family wins the harmonic sum; with
+    /// the mains line masked, the disk's fundamental is found.
+    #[test]
+    fn a_masked_mains_line_is_not_taken_for_the_fundamental() {
+        let (fs, n) = (4000.0, 2000);
+        let x: Vec<f64> = (0..n)
+            .map(|j| {
+                let t = j as f64 / fs;
+                let disk: f64 = (1..=4)
+                    .map(|h| 0.02 * (TAU * 20.0 * f64::from(h) * t + 0.4 * f64::from(h)).sin())
+                    .sum();
+                let noise = ((j * 7919) % 1000) as f64 / 1000.0 - 0.5;
+                disk + (TAU * 50.0 * t + 0.3).sin() + 1e-3 * noise
+            })
+            .collect();
+        let mut an = Analyser::new(fs);
+        an.mask(&[50.0]);
+        let open = an.fundamental(&x, (5.0, 200.0), 30.0, false).unwrap();
+        assert!((open.f - 20.0).abs() > 1.0, "unmasked: {} Hz", open.f);
+        let masked = an.fundamental(&x, (5.0, 200.0), 30.0, true).unwrap();
+        assert!((masked.f - 20.0).abs() < 0.05, "masked: {} Hz", masked.f);
+    }
 }

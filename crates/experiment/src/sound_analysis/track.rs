@@ -34,8 +34,9 @@
 //! from the neighbouring points).
 //!
 //! **Left out.** Frames off the line the track follows (cut where a searched frame's
-//! fundamental jumps by more than [`STEP`] from the last one held; the longest run is the line),
-//! frames whose two estimators disagree by more than 5 of their sigmas plus a
+//! fundamental jumps by more than [`STEP`] from the last one held; the longest run is the line):
+//! before the line's first frame or after its last, as outside (skipped: the disk is not yet
+//! followed there, or no longer heard), and between them as stray; frames whose two estimators disagree by more than 5 of their sigmas plus a
 //! hundredth of the resolution $1/T$, and frames found by the wide search that lie more than
 //! 10 % off the median of their four neighbours, as stray; frames without a line, as silent; the last frame before a silence
 //! (the disk may settle inside it), as smeared.
@@ -108,6 +109,10 @@ pub struct FrequencyTrack {
     pub stray: usize,
     /// (see `silent`)
     pub smeared: usize,
+    /// Frames that hold a tone off the line before the line is first held or after it ends:
+    /// sound other than the disk's (a lead-in's bumps, the shudder after $t_0$) or the disk's
+    /// line where it cannot yet be followed; skipped, not counted as stray.
+    pub outside: usize,
     /// Mains lines subtracted (Hz).
     pub hum: Vec<f64>,
 }
@@ -149,7 +154,7 @@ pub fn frequency_track(
     }
     let mut v = trace.v.clone();
     let hum = remove_hum(&mut v, fs);
-    let (frames, smeared_end) = march(&v, trace.t[0], fs, s);
+    let (frames, smeared_end) = march(&v, trace.t[0], fs, s, &hum);
     let lens: Vec<f64> = frames.iter().map(|f| f.b - f.a).collect();
     let frame_span = (
         lens.iter().copied().fold(f64::INFINITY, f64::min),
@@ -157,11 +162,18 @@ pub fn frequency_track(
     );
     let silent = frames.iter().filter(|f| f.est.is_none()).count();
     let line = the_line(&frames);
+    let first = line.iter().position(|&l| l).unwrap_or(0);
+    let last = line.iter().rposition(|&l| l).unwrap_or(0);
     let (mut kept, mut stray, mut smeared) = (Vec::<(TrackPoint, bool)>::new(), 0, smeared_end);
+    let mut outside = 0;
     for (k, fr) in frames.iter().enumerate() {
         let Some(e) = fr.est else { continue };
         if !line[k] {
-            stray += 1;
+            if k < first || k > last {
+                outside += 1;
+            } else {
+                stray += 1;
+            }
             continue;
         }
         if k + 1 < frames.len() && frames[k + 1].est.is_none() {
@@ -208,6 +220,7 @@ pub fn frequency_track(
         silent,
         stray,
         smeared,
+        outside,
         hum,
     })
 }
@@ -237,8 +250,9 @@ fn the_line(frames: &[Frame]) -> Vec<bool> {
 /// Walks the record frame by frame (see the module's documentation); returns the frames and 1
 /// when the track ended because the line moved too fast for a frame (counted as one smeared
 /// frame), else 0.
-fn march(v: &[f64], t0: f64, fs: f64, s: &TrackSettings) -> (Vec<Frame>, usize) {
+fn march(v: &[f64], t0: f64, fs: f64, s: &TrackSettings, hum: &[f64]) -> (Vec<Frame>, usize) {
     let mut an = Analyser::new(fs);
+    an.mask(hum);
     let mut frames: Vec<Frame> = Vec::new();
     let mut pos = 0usize;
     let mut smeared = 0;
@@ -261,10 +275,11 @@ fn march(v: &[f64], t0: f64, fs: f64, s: &TrackSettings) -> (Vec<Frame>, usize) 
                 // frames predict too near, but slow enough for a frame that holds them, is
                 // followed in that frame: only its motion ends the track.
                 let need = s.cycles / f_mid;
-                if t * f_mid < s.cycles && need <= allowed && need <= s.search {
-                    t = need;
+                let mut holds = t * f_mid >= s.cycles;
+                if !holds && need <= allowed && need <= s.search {
+                    (t, holds) = (need, true);
                 }
-                if t * f_mid >= s.cycles {
+                if holds {
                     (t, 0.8 * f_mid, 1.2 * f_mid)
                 } else if n >= 4 && one_line(&frames[n - 4..]) {
                     smeared = 1;
@@ -280,12 +295,13 @@ fn march(v: &[f64], t0: f64, fs: f64, s: &TrackSettings) -> (Vec<Frame>, usize) 
             break;
         }
         let band = (lo.max(5.0).max(2.5 / len_s), hi.min(2000.0));
-        let est = an.fundamental(&v[pos..pos + len], band.0, band.1, s.min_snr);
+        let searched = lo == 0.0;
+        let est = an.fundamental(&v[pos..pos + len], band, s.min_snr, searched);
         frames.push(Frame {
             a: t0 + pos as f64 / fs,
             b: t0 + (pos + len) as f64 / fs,
             est,
-            searched: lo == 0.0,
+            searched,
         });
         pos += len;
     }
