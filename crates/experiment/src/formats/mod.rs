@@ -1,8 +1,10 @@
 //! Reading the recordings, and writing the synthetic ones as files people use: the one door
-//! through which a file is read ([`input`]), a scope's CSV ([`csv`]), sound as WAV ([`wav`]) and
+//! through which a file is read ([`input`]), a scope's CSV ([`csv`], the instruments' layouts in
+//! [`scope_layout`], the cells and units both read in [`cells`]), sound as WAV ([`wav`]) and
 //! as every other format ([`recording`], with the MP4 edit list in [`mp4_edit`]), one channel at
 //! its rate ([`channel`]), and a synthetic sound encoded ([`sound_file`]).
 
+pub mod cells;
 pub mod channel;
 pub mod csv;
 pub mod input;

@@ -22,7 +22,7 @@
 //! refusal lists the channels, so no channel is taken silently.
 
 use crate::error::ExperimentError;
-use crate::formats::csv::{cells, header_unit, signal_factor, time_factor};
+use crate::formats::cells::{cells, header_unit, signal_factor, time_factor};
 
 /// A column of a scope CSV as the user names it: by its header's name or by its 1-based number
 /// (a number that is itself a header's name, as Keysight names channels `1` and `2`, is that
