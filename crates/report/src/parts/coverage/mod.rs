@@ -16,7 +16,7 @@ const ABOUT: About = About {
     name: "coverage",
     contents: Some("Coverage of the stated uncertainties"),
     studies: &[],
-    templates: part_templates!("coverage", ["summary"]),
+    templates: part_templates!("coverage", ["summary", "table-coverage"]),
 };
 
 impl Part for Coverage {
@@ -28,7 +28,7 @@ impl Part for Coverage {
     fn draft<'r>(&self, _: &'r Bench, _: &'r Results) -> Drafted<'r> {
         let stored = studies::coverage_record::stored().map_err(|e| e.to_string())?;
         Ok(Some(Draft {
-            tables: section::tables(&stored),
+            tables: section::tables(&stored)?,
             finish: Box::new(move |tables, figures| {
                 Ok(section::section(&stored, tables, figures.number("coverage"))?.into())
             }),

@@ -5,7 +5,7 @@
 
 use crate::error::ReportError;
 use crate::number::{error, measured, prose};
-use crate::parts::prose::paragraph;
+use crate::parts::prose::{paragraph, table};
 use crate::study_table::{cite, StudySection, StudyTable};
 use studies::coverage::Coverage;
 use studies::coverage_record::StoredCoverage;
@@ -30,13 +30,11 @@ fn moments(pulls: &[f64]) -> (String, String) {
 }
 
 /// The table: for each stored study, β and t₀.
-pub fn tables(stored: &[StoredCoverage]) -> Vec<StudyTable> {
-    let mut t = StudyTable::new(
-        "Coverage of the experiment's stated standard uncertainties σ, for each kind of \
-         recordings (how many in brackets): the percentage of recordings whose truth lies inside ±1σ (68.3 % claimed) and ±1.96σ (95 % claimed) of \
-         the fitted value, and the pulls (fitted − true)/σ (mean 0 and standard deviation 1 \
-         claimed), each with its Monte Carlo uncertainty; the worst error of β (dimensionless) \
-         and of t₀ (ms).",
+pub fn tables(stored: &[StoredCoverage]) -> Result<Vec<StudyTable>, ReportError> {
+    let mut t = table(
+        &super::ABOUT.templates,
+        "table-coverage",
+        &serde_json::json!({}),
         &[
             "recordings",
             "fitted",
@@ -46,7 +44,7 @@ pub fn tables(stored: &[StoredCoverage]) -> Vec<StudyTable> {
             "pulls: sd",
             "worst error",
         ],
-    );
+    )?;
     for s in stored {
         let c = &s.coverage;
         let law = if s.sound {
@@ -79,7 +77,7 @@ pub fn tables(stored: &[StoredCoverage]) -> Vec<StudyTable> {
             ]);
         }
     }
-    vec![t]
+    Ok(vec![t])
 }
 
 /// The section, its tables numbered already; `figure` is the coverage figure's number. Its

@@ -20,7 +20,7 @@ const ABOUT: About = About {
     name: "experiment",
     contents: Some("The experiment, simulated"),
     studies: &[&study::Experiment, &study::Sound],
-    templates: part_templates!("experiment", ["summary", "sound"]),
+    templates: part_templates!("experiment", ["summary", "sound", "table-fits"]),
 };
 
 impl Part for Experiment {
@@ -36,7 +36,7 @@ impl Part for Experiment {
             experiment::numbers::numbers(fit.beta, fit.c_inv_root, physics::Disk::uniform(1.0).k)
                 .to_string();
         Ok(Some(Draft {
-            tables: vec![section::table(synthetic)],
+            tables: vec![section::table(synthetic)?],
             finish: Box::new(move |tables, figures| {
                 let mut s = section::section(synthetic, tables)?;
                 if let Some(sound) = sound {

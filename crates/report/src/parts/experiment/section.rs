@@ -18,17 +18,15 @@ pub fn text(e: &Synthetic) -> String {
 }
 
 /// The fits of β and t₀ against the model's truth.
-pub fn table(e: &Synthetic) -> StudyTable {
+pub fn table(e: &Synthetic) -> Result<StudyTable, ReportError> {
     let a = &e.analysis;
     let (beta_sigma, t0_sigma) = a.stated_sigmas();
-    let mut t = StudyTable::new(
-        format!(
-            "The fits of the simulated light signal ({} cycles) against the model that made it; \
-             uncertainties as the analysis states them (eq 84's: statistical and the law's).",
-            a.window.cycles.len()
-        ),
+    let mut t = crate::parts::prose::table(
+        &super::ABOUT.templates,
+        "table-fits",
+        &serde_json::json!({ "cycles": a.window.cycles.len() }),
         &["fitted by", "β", "t₀ (s)"],
-    );
+    )?;
     t.row(vec![
         "eq 84, on the light signal".into(),
         measured(a.eq84.beta, beta_sigma),
@@ -55,7 +53,7 @@ pub fn table(e: &Synthetic) -> StudyTable {
             to_place_of(truth.t0, t0_sigma),
         ]);
     }
-    t
+    Ok(t)
 }
 
 /// What the analysis found, in a paragraph citing `tables`

@@ -18,7 +18,19 @@ const ABOUT: About = About {
     name: "friction",
     contents: Some("Friction and contact"),
     studies: &[&study::Friction],
-    templates: part_templates!("friction", ["summary", "listing"]),
+    templates: part_templates!(
+        "friction",
+        [
+            "summary",
+            "listing",
+            "table-onset",
+            "table-negative",
+            "table-spiral",
+            "table-rising",
+            "table-contact",
+            "table-mechanisms",
+        ]
+    ),
 };
 
 impl Part for Friction {
@@ -32,7 +44,7 @@ impl Part for Friction {
         };
         let studies = &friction.studies;
         Ok(Some(Draft {
-            tables: section::tables(studies),
+            tables: section::tables(studies)?,
             finish: Box::new(move |tables, figures| {
                 let slip_stick = figures.numbers(&["slip-stick", "slip-stick-path"]);
                 Ok(section::section(studies, bench.paper, tables, &slip_stick)?.into())

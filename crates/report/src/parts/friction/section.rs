@@ -3,15 +3,18 @@
 
 use crate::error::ReportError;
 use crate::number::{measured, places as fixed, prose, scientific};
-use crate::parts::prose::paragraph;
+use crate::parts::prose::{paragraph, table};
 use crate::study_table::{StudySection, StudyTable};
 use studies::sliding::Studies;
 
 /// The section's tables.
-pub fn tables(s: &Studies) -> Vec<StudyTable> {
-    let mut onset = StudyTable::new(
-        "Eq 42 (b > 0): the largest b at which the disk still rolls, eq 42's μ a k sin α₀ \
-         against the sliding model (bisection on runs of 0.02 s).",
+pub fn tables(s: &Studies) -> Result<Vec<StudyTable>, ReportError> {
+    let templates = &super::ABOUT.templates;
+    let none = serde_json::json!({});
+    let mut onset = table(
+        templates,
+        "table-onset",
+        &none,
         &[
             "α₀ (rad)",
             "μ",
@@ -19,7 +22,7 @@ pub fn tables(s: &Studies) -> Vec<StudyTable> {
             "b, integrated (mm)",
             "relative error",
         ],
-    );
+    )?;
     for r in &s.slip_onset {
         onset.row(vec![
             fixed(r.alpha0, 2),
@@ -29,9 +32,10 @@ pub fn tables(s: &Studies) -> Vec<StudyTable> {
             fixed(r.relative_error, 3),
         ]);
     }
-    let mut negative = StudyTable::new(
-        "Eq 43 (b < 0): the part of eq 30's range b_edge < b < 0 a table holds (the largest \
-         b / b_edge that rolls), against the μ eq 43 requires.",
+    let mut negative = table(
+        templates,
+        "table-negative",
+        &none,
         &[
             "α₀ (rad)",
             "μ",
@@ -39,7 +43,7 @@ pub fn tables(s: &Studies) -> Vec<StudyTable> {
             "b / b_edge held, integrated",
             "held, exact",
         ],
-    );
+    )?;
     for r in &s.negative_b {
         negative.row(vec![
             fixed(r.alpha0, 2),
@@ -49,12 +53,10 @@ pub fn tables(s: &Studies) -> Vec<StudyTable> {
             fixed(r.beta_exact, 4),
         ]);
     }
-    let mut spiral = StudyTable::new(
-        format!(
-            "Sec. 6, radial slippage: steady rolls that eq 42 says must slip, run {} s; the \
-             radius of the centre's path over the last second.",
-            studies::sliding::spiral::DURATION
-        ),
+    let mut spiral = table(
+        templates,
+        "table-spiral",
+        &serde_json::json!({ "duration": studies::sliding::spiral::DURATION.to_string() }),
         &[
             "α₀ (rad)",
             "b₀ (mm)",
@@ -64,7 +66,7 @@ pub fn tables(s: &Studies) -> Vec<StudyTable> {
             "radius at end (mm)",
             "α at end (rad)",
         ],
-    );
+    )?;
     for r in &s.spiral {
         spiral.row(vec![
             fixed(r.alpha0, 2),
@@ -76,29 +78,29 @@ pub fn tables(s: &Studies) -> Vec<StudyTable> {
             fixed(r.alpha_end, 3),
         ]);
     }
-    vec![
+    Ok(vec![
         onset,
         negative,
         spiral,
-        rising(s),
-        contact(s),
-        mechanisms(s),
-    ]
+        rising(s)?,
+        contact(s)?,
+        mechanisms(s)?,
+    ])
 }
 
 /// Sec. 10: the rising of a disk launched nearly upright.
-fn rising(s: &Studies) -> StudyTable {
+fn rising(s: &Studies) -> Result<StudyTable, ReportError> {
     let ri = &s.rising;
-    let mut t = StudyTable::new(
-        format!(
-            "Sec. 10, rising: launched at {:.0}° turning about the vertical at {:.1} rad/s, \
-             centre at rest, contact sliding at {:.3} m/s; the lasting gain of tilt is the lowest \
-             tilt in the second half of {} s minus the launch tilt.",
-            ri.launch_tilt_deg,
-            ri.launch_rate,
-            ri.launch_slip,
-            studies::sliding::rising::DURATION
-        ),
+    let values = serde_json::json!({
+        "tilt": format!("{:.0}", ri.launch_tilt_deg),
+        "rate": format!("{:.1}", ri.launch_rate),
+        "slip": format!("{:.3}", ri.launch_slip),
+        "duration": studies::sliding::rising::DURATION.to_string(),
+    });
+    let mut t = table(
+        &super::ABOUT.templates,
+        "table-rising",
+        &values,
         &[
             "contact",
             "μ",
@@ -106,7 +108,7 @@ fn rising(s: &Studies) -> StudyTable {
             "highest tilt (°)",
             "slid (s)",
         ],
-    );
+    )?;
     for c in &ri.cases {
         t.row(vec![
             c.contact.to_string(),
@@ -120,15 +122,15 @@ fn rising(s: &Studies) -> StudyTable {
             },
         ]);
     }
-    t
+    Ok(t)
 }
 
 /// Eqs 80-81's premise: whether the spinning-down disk slips or lifts before its end.
-fn contact(s: &Studies) -> StudyTable {
-    let mut t = StudyTable::new(
-        "Eqs 80-81's premise: the built-in spin-down (steady b = 0 at 0.15 rad, eq 75 with β = 2) \
-         on Coulomb tables: when the contact first slips, and the least normal force F_z over the \
-         weight m g while it rolls.",
+fn contact(s: &Studies) -> Result<StudyTable, ReportError> {
+    let mut t = table(
+        &super::ABOUT.templates,
+        "table-contact",
+        &serde_json::json!({}),
         &[
             "μ",
             "first slip, t (s)",
@@ -137,7 +139,7 @@ fn contact(s: &Studies) -> StudyTable {
             "least F_z / m g",
             "the run ends",
         ],
-    );
+    )?;
     for c in &s.contact_loss {
         let at = |f: fn(&studies::sliding::contact_loss::Moment) -> String| {
             c.first_slip.as_ref().map_or("–".to_string(), f)
@@ -156,19 +158,16 @@ fn contact(s: &Studies) -> StudyTable {
             ends,
         ]);
     }
-    t
+    Ok(t)
 }
 
 /// Beyond the paper: each dissipation mechanism alone, fitted by the experiment's eq 84.
-fn mechanisms(s: &Studies) -> StudyTable {
+fn mechanisms(s: &Studies) -> Result<StudyTable, ReportError> {
     let m = &s.mechanisms;
-    let mut t = StudyTable::new(
-        format!(
-            "Dissipation mechanisms side by side (beyond the paper): each alone, calibrated to \
-             supply what the paper's record needs at Ω = {:.0} rad/s, spins the toy disk down; \
-             its last 10 s are fitted by eq 84.",
-            m.omega_cal
-        ),
+    let mut t = table(
+        &super::ABOUT.templates,
+        "table-mechanisms",
+        &serde_json::json!({ "omega": format!("{:.0}", m.omega_cal) }),
         &[
             "mechanism",
             "coefficient",
@@ -177,7 +176,7 @@ fn mechanisms(s: &Studies) -> StudyTable {
             "turns",
             "Ω (rad/s)",
         ],
-    );
+    )?;
     for r in &m.spin_downs {
         let unit = if r.unit == "1" {
             String::new()
@@ -197,7 +196,7 @@ fn mechanisms(s: &Studies) -> StudyTable {
             format!("{:.0}–{:.0}", r.omega_range.0, r.omega_range.1),
         ]);
     }
-    t
+    Ok(t)
 }
 
 /// The section, its tables ([`tables`]) numbered already; `figures` are the numbers of the
@@ -219,7 +218,7 @@ pub fn section(
 }
 
 /// " (Table N)", the number of the `i`th of `tables`.
-fn table(tables: &[StudyTable], i: usize) -> String {
+fn cite(tables: &[StudyTable], i: usize) -> String {
     tables
         .get(i)
         .map_or(String::new(), |t| format!(" (Table {})", t.number))
@@ -260,7 +259,7 @@ pub fn summary(
         "hi": format!("{hi:.0}"),
         "held_below": held_below,
         "below": below.len(),
-        "cite": (0..6).map(|i| table(tables, i)).collect::<Vec<_>>(),
+        "cite": (0..6).map(|i| cite(tables, i)).collect::<Vec<_>>(),
         "never": never,
         "two": two,
         "fall": fall(&s.fall, paper),

@@ -17,7 +17,7 @@ const ABOUT: About = About {
     name: "precision",
     contents: Some("Speed against accuracy"),
     studies: &[&study::Precision],
-    templates: part_templates!("precision", ["summary"]),
+    templates: part_templates!("precision", ["summary", "table-cost"]),
 };
 
 impl Part for Precision {
@@ -28,7 +28,7 @@ impl Part for Precision {
     fn draft<'r>(&self, _: &'r Bench, results: &'r Results) -> Drafted<'r> {
         let precision = results.required(&study::Precision, "the report")?;
         Ok(Some(Draft {
-            tables: section::tables(precision),
+            tables: section::tables(precision)?,
             finish: Box::new(move |tables, figures| {
                 Ok(section::section(precision, tables, figures.number("work-precision"))?.into())
             }),

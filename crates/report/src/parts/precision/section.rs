@@ -4,7 +4,7 @@
 
 use crate::error::ReportError;
 use crate::number::{error, places, scientific};
-use crate::parts::prose::paragraph;
+use crate::parts::prose::{paragraph, table};
 use crate::study_table::{cite, StudySection, StudyTable};
 use physics::solve::Method;
 use schemars::JsonSchema;
@@ -33,16 +33,15 @@ fn best(s: &Series) -> Option<(f64, u64)> {
 }
 
 /// The table: one row per method.
-pub fn tables(study: &Study) -> Vec<StudyTable> {
-    let mut t = StudyTable::new(
-        format!(
-            "What each method costs on the benchmark scene: its order (nominal, and observed in \
-             the step size), the right-hand-side evaluations of its cheapest run whose largest \
-             relative error over the run is within {}, and the least largest error any of its runs \
-             reaches. Errors against the reference, whose own is below {}.",
-            error(TARGET),
-            error(study.reference.uncertainty)
-        ),
+pub fn tables(study: &Study) -> Result<Vec<StudyTable>, ReportError> {
+    let values = serde_json::json!({
+        "target": error(TARGET),
+        "reference": error(study.reference.uncertainty),
+    });
+    let mut t = table(
+        &super::ABOUT.templates,
+        "table-cost",
+        &values,
         &[
             "method",
             "order, nominal",
@@ -51,7 +50,7 @@ pub fn tables(study: &Study) -> Vec<StudyTable> {
             "least error",
             "its evaluations",
         ],
-    );
+    )?;
     for s in &study.series {
         let best = best(s);
         t.row(vec![
@@ -63,7 +62,7 @@ pub fn tables(study: &Study) -> Vec<StudyTable> {
             best.map_or("–".into(), |b| b.1.to_string()),
         ]);
     }
-    vec![t]
+    Ok(vec![t])
 }
 
 /// Every run, one per line, for the disclosure and the appendix.

@@ -19,7 +19,18 @@ const ABOUT: About = About {
     name: "toy",
     contents: None, // a subsection of friction and contact
     studies: &[&study::Toy, &study::Friction],
-    templates: part_templates!("toy", ["summary"]),
+    templates: part_templates!(
+        "toy",
+        [
+            "summary",
+            "table-peer",
+            "table-why",
+            "table-steady",
+            "table-spin-down",
+            "table-fall",
+            "table-edge",
+        ]
+    ),
 };
 
 impl Part for Toy {
@@ -33,7 +44,7 @@ impl Part for Toy {
             return Ok(None);
         };
         Ok(Some(Draft {
-            tables: section::tables(toy),
+            tables: section::tables(toy)?,
             finish: Box::new(move |tables, figures| {
                 let agreement = figures.numbers(&["peer-tilt", "peer-difference"]);
                 Ok(section::section(toy, tables, &agreement)?.into())

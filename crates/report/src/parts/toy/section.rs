@@ -4,7 +4,7 @@
 
 use crate::error::ReportError;
 use crate::number::{error, places, scientific};
-use crate::parts::prose::paragraph;
+use crate::parts::prose::{paragraph, table};
 use crate::study_table::{StudySection, StudyTable};
 use std::fmt::Write;
 use studies::peer::stored::{Differences, StoredComparison};
@@ -31,21 +31,17 @@ fn switches(d: &Differences) -> String {
 }
 
 /// The section's tables: the peer runs, their explanations, the steady motions, the spin-down.
-pub fn tables(t: &Toy) -> Vec<StudyTable> {
+pub fn tables(t: &Toy) -> Result<Vec<StudyTable>, ReportError> {
     let scenes: Vec<String> = t
         .peer
         .iter()
         .map(|c| format!("{}, {}", c.name, c.words))
         .collect();
-    let mut peer = StudyTable::new(
-        format!(
-            "The peer program's stored runs (its slip regularization ε = 1e-3 m/s, as in its source) \
-         against this tool on the same scene: the largest differences over the print times both \
-         reach. Both integrate with DOP853 at rtol = atol = 1e-10; the peer prints 7 decimals, so \
-         5e-8 is the finest difference it can show. Switches: rolling/sliding changes in the \
-         peer / here, and the largest difference of their paired times. The scenes: {}.",
-            scenes.join("; ")
-        ),
+    let templates = &super::ABOUT.templates;
+    let mut peer = table(
+        templates,
+        "table-peer",
+        &serde_json::json!({ "scenes": scenes.join("; ") }),
         &[
             "scene",
             "compared to (s)",
@@ -55,21 +51,15 @@ pub fn tables(t: &Toy) -> Vec<StudyTable> {
             "Δ centre (m)",
             "switches",
         ],
-    );
+    )?;
     let meanings: Vec<String> = studies::peer::stored::EXPLANATIONS
         .iter()
         .map(|(phrase, means)| format!("{phrase}: {means}"))
         .collect();
-    let mut why = StudyTable::new(
-        format!(
-            "What each difference larger than the printed digits comes from: the tilt difference \
-             against the peer run with ε = 1e-3 m/s and with ε = 1e-7 m/s (where stored), and \
-             the peer's modelling choice that explains it, first with ε = 1e-3 m/s, then with \
-             1e-7 m/s. Where the peer relocks (ε = 1e-7 m/s), the run is split at its relock: \
-             the tilt difference before this tool's slip ends, and after the relock with this \
-             tool restarted from the peer's printed state there. The choices: {}.",
-            meanings.join("; ")
-        ),
+    let mut why = table(
+        templates,
+        "table-why",
+        &serde_json::json!({ "choices": meanings.join("; ") }),
         &[
             "scene",
             "Δα, ε = 1e-3 (rad)",
@@ -78,7 +68,7 @@ pub fn tables(t: &Toy) -> Vec<StudyTable> {
             "after the relock, restarted (rad)",
             "explained by",
         ],
-    );
+    )?;
     for c in &t.peer {
         let d = &c.regularized;
         peer.row(vec![
@@ -101,14 +91,14 @@ pub fn tables(t: &Toy) -> Vec<StudyTable> {
             explanation(c),
         ]);
     }
-    vec![
+    Ok(vec![
         peer,
         why,
-        steady(&t.thickness),
-        spin_down(&t.thickness),
-        fall(&t.thickness),
-        super::steady_table::table(&t.steady),
-    ]
+        steady(&t.thickness)?,
+        spin_down(&t.thickness)?,
+        fall(&t.thickness)?,
+        super::steady_table::table(&t.steady)?,
+    ])
 }
 
 /// What explains `c`'s differences, or that none needs explaining.
@@ -123,17 +113,16 @@ fn explanation(c: &StoredComparison) -> String {
 }
 
 /// Eqs 29 and 54-55: the steady motion spinning in place and its small oscillations.
-fn steady(t: &Thickness) -> StudyTable {
-    let mut s = StudyTable::new(
-        format!(
-            "The steady motion spinning in place (b = 0, eq 29) and its small oscillations: the \
-             thin uniform disk (k = 1/4) and the toy (a = {} mm, {} mm thick, fillet {} mm, same \
-             mass), both rolling. Ω₀ is the precession that keeps dα/dt = 0 (found by shooting; the \
-             thin disk's equals eq 29's to 1e-7), ϖ = 2π/period of the tilt about it.",
-            TOY.0 * 1e3,
-            TOY.1 * 1e3,
-            TOY.2 * 1e3
-        ),
+fn steady(t: &Thickness) -> Result<StudyTable, ReportError> {
+    let values = serde_json::json!({
+        "a_mm": (TOY.0 * 1e3).to_string(),
+        "thickness_mm": (TOY.1 * 1e3).to_string(),
+        "fillet_mm": (TOY.2 * 1e3).to_string(),
+    });
+    let mut s = table(
+        &super::ABOUT.templates,
+        "table-steady",
+        &values,
         &[
             "α₀ (rad)",
             "Ω₀ thin, eq 29 (rad/s)",
@@ -144,7 +133,7 @@ fn steady(t: &Thickness) -> StudyTable {
             "ϖ toy (rad/s)",
             "change",
         ],
-    );
+    )?;
     let tau = 2.0 * std::f64::consts::PI;
     for r in &t.steady {
         s.row(vec![
@@ -158,23 +147,23 @@ fn steady(t: &Thickness) -> StudyTable {
             format!("{:+.1} %", 100.0 * (r.thin_period / r.toy_period - 1.0)),
         ]);
     }
-    s
+    Ok(s)
 }
 
 /// Eqs 79-81: the spin-down law's constant and where contact would be lost.
-fn spin_down(t: &Thickness) -> StudyTable {
+fn spin_down(t: &Thickness) -> Result<StudyTable, ReportError> {
     let (epsilon, beta) = DRAG;
-    let mut s = StudyTable::new(
-        format!(
-            "Eqs 79-81 for the thin disk and the toy: each spins down rolling from steady b = 0 \
-             at {SPIN_DOWN_START} rad under eq 75's power (β = {beta}, ε = {} s^(β−1)) as a torque; \
-             eq 79's C and eq 85's exponent fitted for {} < α < {} rad; the tilt where the \
-             fitted law α = A (t₀ − t)^(2/(β+2)) would need F_z < 0, on each disk's own centre \
-             height; the least F_z / m g the run reaches.",
-            scientific(epsilon, 2),
-            FIT_TILTS.0,
-            FIT_TILTS.1
-        ),
+    let values = serde_json::json!({
+        "start": SPIN_DOWN_START.to_string(),
+        "beta": beta.to_string(),
+        "epsilon": scientific(epsilon, 2),
+        "fit_from": FIT_TILTS.0.to_string(),
+        "fit_to": FIT_TILTS.1.to_string(),
+    });
+    let mut s = table(
+        &super::ABOUT.templates,
+        "table-spin-down",
+        &values,
         &[
             "quantity",
             "eq 79-80 printed, thin",
@@ -182,7 +171,7 @@ fn spin_down(t: &Thickness) -> StudyTable {
             "toy",
             "toy / thin",
         ],
-    );
+    )?;
     let [thin, toy] = [&t.spin_down[0], &t.spin_down[1]];
     let ratio = |f: fn(&SpinDownLaw) -> f64| places(f(toy) / f(thin), 3);
     s.row(vec![
@@ -233,22 +222,20 @@ fn spin_down(t: &Thickness) -> StudyTable {
         1.0,
         false,
     );
-    s
+    Ok(s)
 }
 
 /// Sec. 7's fall "to about 60°": thin and toy from the thin disk's unstable band, each by what
 /// its tilt does over the run.
-fn fall(t: &Thickness) -> StudyTable {
-    let mut s = StudyTable::new(
-        format!(
-            "The fall from unstable steady motion (sec. 7, \"to about 60°\"): the steady roll \
-             at α₀ with b at the middle of the thin disk's unstable band (the fall study's \
-             starts), the tilt lowered by 1 mrad, rolling for {FALL_TIME} s without \
-             dissipation. Each cell: the least and greatest tilt over the run, its mean, and \
-             whether it settles into a lower steady rolling (its swing decays to half and its \
-             late mean lies {FALL_LEFT}° or more below α₀). The toy's steady Ω₀ at that b is eq \
-             29 for its thickness (the next table); a dash: the toy has no steady motion at that b."
-        ),
+fn fall(t: &Thickness) -> Result<StudyTable, ReportError> {
+    let values = serde_json::json!({
+        "time": FALL_TIME.to_string(),
+        "left": FALL_LEFT.to_string(),
+    });
+    let mut s = table(
+        &super::ABOUT.templates,
+        "table-fall",
+        &values,
         &[
             "α₀ (°)",
             "b / a",
@@ -257,7 +244,7 @@ fn fall(t: &Thickness) -> StudyTable {
             "thin: tilt (°), mean",
             "toy: tilt (°), mean",
         ],
-    );
+    )?;
     let cell = |x: Option<&Swing>| {
         x.map_or("–".into(), |w| {
             format!(
@@ -279,7 +266,7 @@ fn fall(t: &Thickness) -> StudyTable {
             cell(f.swing.1.as_ref()),
         ]);
     }
-    s
+    Ok(s)
 }
 
 /// The section, its tables ([`tables`]) numbered already; `figures` are the numbers of the

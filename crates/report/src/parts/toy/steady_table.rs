@@ -2,25 +2,19 @@
 //! sliding model's checks of it ([`studies::toy_steady`]), and what of eqs 29-30 survives for
 //! the toy, as the part's summary template reads it.
 
+use crate::error::ReportError;
 use crate::number::{places, scientific};
+use crate::parts::prose;
 use crate::study_table::StudyTable;
 use studies::toy_steady::{ToySteady, HOLD, OFFSET};
 
 /// The table: one row per tilt.
-pub fn table(t: &ToySteady) -> StudyTable {
-    let mut s = StudyTable::new(
-        format!(
-            "Eq 30 for the toy: the edge b* of the radii b of steady rolling, the thin disk's \
-             (eq 30, b > b*) beside the toy's (eq 29 solved for its thickness and rounded rim: \
-             b > b* while its contact is ahead of its centre, b < b* once its centre is beyond \
-             the contact), and eq 29's Ω₀ at b = 0 (a dash: the toy has none). Checked on the \
-             sliding model's rolling equations, which the closed form does not use: at b* ± \
-             {OFFSET} a, 80 precessions from 0.05 to 200 √(g/a) are started and the sign of the \
-             tilt's change after 1 ms read; a steady motion is a change of sign (found: allowed \
-             side / other side); the one found is refined by bisection against the closed form; \
-             and the closed form's start at b* ± {OFFSET} a keeps its tilt over {HOLD} s to the \
-             'held' value, against 'missed' with 0.1 % more precession."
-        ),
+pub fn table(t: &ToySteady) -> Result<StudyTable, ReportError> {
+    let values = serde_json::json!({ "offset": OFFSET.to_string(), "hold": HOLD.to_string() });
+    let mut s = prose::table(
+        &super::ABOUT.templates,
+        "table-edge",
+        &values,
         &[
             "α₀ (°)",
             "b*/a thin",
@@ -33,7 +27,7 @@ pub fn table(t: &ToySteady) -> StudyTable {
             "held (rad)",
             "missed (rad)",
         ],
-    );
+    )?;
     for r in &t.rows {
         s.row(vec![
             places(r.alpha0_deg, 0),
@@ -48,7 +42,7 @@ pub fn table(t: &ToySteady) -> StudyTable {
             scientific(r.missed, 1),
         ]);
     }
-    s
+    Ok(s)
 }
 
 /// What of eqs 29-30 survives for the toy, as its summary's template reads it: the edges at the
