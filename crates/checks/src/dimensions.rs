@@ -75,28 +75,15 @@ pub fn claim_unit(unit: &str) -> Option<Dimension> {
 /// A unit written in the disk's constants with each constant replaced by its SI unit, keeping
 /// the original's products and divisions (`g/(a k)` -> `(m/s^2)/((m) (1))`).
 fn in_si(original: &str) -> String {
-    let mut out = String::new();
-    let mut token = String::new();
-    let flush = |token: &mut String, out: &mut String| {
-        if !token.is_empty() {
-            let si = DISK
-                .iter()
-                .find(|(s, _)| s == token)
-                .map_or(token.clone(), |(_, si)| format!("({si})"));
-            out.push_str(&si);
-            token.clear();
-        }
-    };
-    for c in original.chars() {
-        if c.is_ascii_alphanumeric() || c == '_' {
-            token.push(c);
-        } else {
-            flush(&mut token, &mut out);
-            out.push(c);
-        }
-    }
-    flush(&mut token, &mut out);
-    out
+    physics::scene::message::rewrite_tokens(
+        original,
+        |c, _| c.is_ascii_alphanumeric() || c == '_',
+        |token| {
+            DISK.iter()
+                .find(|(s, _)| *s == token)
+                .map_or(token.to_string(), |(_, si)| format!("({si})"))
+        },
+    )
 }
 
 /// The dimensional analysis of `subject`, in words: `consistent`, or where and how it is not.

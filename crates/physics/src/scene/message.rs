@@ -64,24 +64,39 @@ fn cut_values(msg: &str) -> String {
 /// Every number in `msg` written with more than 17 characters (`1e308` prints as 309 digits)
 /// rewritten in exponent form, so that no message grows with the size of a number.
 pub fn compact_numbers(msg: &str) -> String {
-    let mut out = String::with_capacity(msg.len().min(1024));
+    rewrite_tokens(
+        msg,
+        |c, token| c.is_ascii_digit() || (c == '.' && !token.is_empty()),
+        |token| match token.parse::<f64>() {
+            Ok(x) if token.len() > 17 => format!("{x:e}"),
+            _ => token.to_string(),
+        },
+    )
+}
+
+/// `text` with each token (a longest run of characters that `extends` accepts, given the token
+/// so far) replaced by `rewrite` of it; every other character kept.
+pub fn rewrite_tokens(
+    text: &str,
+    extends: impl Fn(char, &str) -> bool,
+    rewrite: impl Fn(&str) -> String,
+) -> String {
+    let mut out = String::with_capacity(text.len().min(1024));
     let mut token = String::new();
-    let flush = |token: &mut String, out: &mut String| {
-        match token.parse::<f64>() {
-            Ok(x) if token.len() > 17 => out.push_str(&format!("{x:e}")),
-            _ => out.push_str(token),
-        }
-        token.clear();
-    };
-    for c in msg.chars() {
-        if c.is_ascii_digit() || (c == '.' && !token.is_empty()) {
+    for c in text.chars() {
+        if extends(c, &token) {
             token.push(c);
         } else {
-            flush(&mut token, &mut out);
+            if !token.is_empty() {
+                out.push_str(&rewrite(&token));
+                token.clear();
+            }
             out.push(c);
         }
     }
-    flush(&mut token, &mut out);
+    if !token.is_empty() {
+        out.push_str(&rewrite(&token));
+    }
     out
 }
 
