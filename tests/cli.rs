@@ -1,6 +1,6 @@
 //! The command line as a user meets it.
 
-use crate::common::temp_dir;
+use crate::common::{last_row, temp_dir};
 use std::process::Command;
 
 fn cli(args: &[&str]) -> (bool, String, String) {
@@ -360,13 +360,7 @@ fn simulate_streams_more_rows_than_a_run_held_in_memory_may_hold() {
     assert!(out.contains("1200001 rows written"), "{out}");
     let text = std::fs::read_to_string(&csv).unwrap();
     assert_eq!(text.lines().count(), 1_200_002, "the header and every row");
-    let last: Vec<f64> = text
-        .lines()
-        .last()
-        .unwrap()
-        .split(',')
-        .map(|c| c.parse().unwrap())
-        .collect();
+    let last = last_row(&text);
     assert_eq!(last[0], 0.3);
     // The same rows to standard output, byte for byte.
     let piped = Command::new(env!("CARGO_BIN_EXE_rolling-disk"))

@@ -118,3 +118,27 @@ pub fn cli_piped(dir: &Path, args: &[&str], input: &[u8]) -> (i32, String, Strin
 pub fn cli_status(dir: &Path, args: &[&str]) -> (i32, String, String) {
     cli_piped(dir, args, b"")
 }
+
+/// The numbers of the last line of a CSV text (its last row).
+pub fn last_row(csv: &str) -> Vec<f64> {
+    let line = csv.lines().last().expect("a CSV with a row");
+    line.split(',')
+        .map(|c| {
+            c.parse()
+                .unwrap_or_else(|e| panic!("cell {c:?} of {line:?}: {e}"))
+        })
+        .collect()
+}
+
+/// The output of `command`, run to its end; the test fails with its standard error unless it
+/// succeeds.
+pub fn succeeds(command: &mut Command) -> std::process::Output {
+    let out = command.output().expect("the command runs");
+    assert!(
+        out.status.success(),
+        "{:?}: {}",
+        command,
+        String::from_utf8_lossy(&out.stderr)
+    );
+    out
+}

@@ -378,24 +378,19 @@ fn compressed_recordings_give_the_wavs_fit() {
     let dir = std::env::temp_dir().join(format!("rolling-disk-compressed-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let full = dir.join("full.wav");
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_rolling-disk"))
-        .args([
-            "experiment",
-            "simulate",
-            "spin-down",
-            "--rate",
-            "44100",
-            "--seed",
-            "1",
-        ])
-        .arg("--wav")
-        .arg(&full)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    crate::common::succeeds(
+        std::process::Command::new(env!("CARGO_BIN_EXE_rolling-disk"))
+            .args([
+                "experiment",
+                "simulate",
+                "spin-down",
+                "--rate",
+                "44100",
+                "--seed",
+                "1",
+            ])
+            .arg("--wav")
+            .arg(&full),
     );
     let rec = experiment::read_recording(&full, Channels::Mix).unwrap();
     let cut = &rec.trace.v[132_300..];

@@ -316,21 +316,16 @@ fn a_wav_of_a_spinning_disk_is_analysed_end_to_end() {
 fn the_cli_simulates_and_analyses_a_wav_and_refuses_noise() {
     let bin = env!("CARGO_BIN_EXE_rolling-disk");
     let wav = temp("cli.wav");
-    let out = std::process::Command::new(bin)
-        .args([
-            "experiment",
-            "simulate",
-            "spin-down",
-            "--realistic",
-            "--wav",
-        ])
-        .arg(&wav)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    crate::common::succeeds(
+        std::process::Command::new(bin)
+            .args([
+                "experiment",
+                "simulate",
+                "spin-down",
+                "--realistic",
+                "--wav",
+            ])
+            .arg(&wav),
     );
     let dir = temp("cli_wav_out");
     let _ = std::fs::remove_dir_all(&dir);

@@ -2,7 +2,7 @@
 //! (`schemas/simulate.schema.json`, `schemas/scenes.schema.json`), and says what the text
 //! output says.
 
-use crate::common::{cli_status, temp_dir};
+use crate::common::{cli_status, last_row, temp_dir};
 use serde_json::Value;
 
 fn schema(name: &str) -> Value {
@@ -31,13 +31,7 @@ fn simulate_json_follows_its_schema_and_says_what_the_summary_says() {
     assert_eq!(doc["rows"].as_u64(), Some(csv.lines().count() as u64 - 1));
     let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
     assert_eq!(doc["columns"], serde_json::json!(header));
-    let last: Vec<f64> = csv
-        .lines()
-        .last()
-        .unwrap()
-        .split(',')
-        .map(|c| c.parse().unwrap())
-        .collect();
+    let last = last_row(&csv);
     assert_eq!(doc["stop"]["t"].as_f64(), Some(last[0]));
     assert_eq!(doc["stop"]["complete"], true);
     assert!(
