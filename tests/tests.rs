@@ -48,6 +48,7 @@ mod parallel;
 mod peer;
 mod peer_builtin;
 mod peer_raw;
+mod peer_relock;
 mod precision;
 mod premises;
 mod reader_fuzz;
