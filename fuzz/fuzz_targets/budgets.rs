@@ -1,7 +1,7 @@
 //! Fuzzes the budgets: an arbitrary wall-time budget (from bytes, any f64) and a built-in
 //! scene with an arbitrary end time must give a refusal of the budget, a run, or a run ended by
 //! the budget that says so, never a panic. The twin in the suite is
-//! `tests/hostile_budgets.rs` (`no_budget_makes_a_check_panic`).
+//! `tests/hostile/budgets.rs` (`no_budget_makes_a_check_panic`).
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;

@@ -9,10 +9,11 @@
 //!   at $t = 0$. Where that seed is below its relock threshold it relocks once more, this time
 //!   with its clock set back by up to a print step while it keeps the state: a row at $t = 0$
 //!   then carries the state one print step on, and every later row is labelled that much early;
-//! - **on a switch to rolling** it sets its clock back to the relock it located inside the
-//!   print step, but keeps the state its DOP853 returned at the end of the step in which the
-//!   relock fell (it copies the located state only on a switch to sliding), so its rolling rows
-//!   carry a state from later than their label.
+//! - **on a switch to rolling**, found at a print time $t_s$ whose slip speed is below its
+//!   threshold, it sets its clock back to the relock $t^* \le t_s$ it places at the least value
+//!   of the parabola through its last three printed slip speeds, but keeps the state its DOP853
+//!   returned at the end of the step that holds $t_s$ (it copies the located state only on a
+//!   switch to sliding), so its rolling rows carry a state from later than their label.
 //!
 //! Both are breaks of its clock at a row where its label repeats or its mode turns to rolling.
 //! At such a break the time that passed between the row before and the row after is read from

@@ -180,6 +180,72 @@ mod tests {
         assert!((e1 - e0).abs() < 1e-8 * e0.abs(), "{e0} -> {e1}");
     }
 
+    /// A thin disk rolling straight and upright at `spin` rad/s under rolling resistance of
+    /// lever arm `rolling`: the moment $F_z\ell_r$ brings the rolling to rest at about
+    /// $t = \dot\varphi_0\,\frac32 a^2/(g\ell_r)$ (the rolling disk's moment of inertia about
+    /// its contact line), and nothing drives it again.
+    fn upright_roll(rolling: f64, spin: f64) -> Scene {
+        let text = format!(
+            "name: rolling-stall\nmodel: sliding\n\
+             disk: {{ radius: 0.0375, mass: 0.4, k: 0.25, g: 9.8067 }}\n\
+             friction: {{ mu: 1.0 }}\nresistance: {{ rolling: {rolling} }}\n\
+             start: {{ explicit: {{ alpha: 1.5707963267948966, alpha_dot: 0.0, precession: 0.0, \
+             spin: {spin} }} }}\nstop: {{ time: 1.0 }}\nsample: 0.001\n\
+             solver: {{ rtol: 1e-10, atol: 1e-10 }}\n"
+        );
+        Scene::parse(&text, "rolling-stall.yaml").expect("the scene reads")
+    }
+
+    #[test]
+    fn a_rolling_stall_is_held_and_the_run_reaches_its_end() {
+        let (ell, spin) = (1e-3, 2.0);
+        let scene = upright_roll(ell, spin);
+        let m = sliding_model(&scene);
+        let run = integrate(&m, &scene, scene.sample).expect("runs");
+        assert!(run.ending.is_complete(), "{}", run.ending);
+        let rolling = |y: &crate::solve::State<14>| {
+            let s = m.snapshot(y);
+            s.omega.dot(&s.r)
+        };
+        let w0 = rolling(&run.y[0]);
+        assert!((w0.abs() - spin).abs() < 1e-9, "rolling at the start {w0}");
+        let t_held = run
+            .t
+            .iter()
+            .zip(&run.y)
+            .find(|(_, y)| rolling(y).abs() < m.stall_band())
+            .map_or(f64::NAN, |(t, _)| *t);
+        // Where the constant moment F_z l_r = m g l_r stops a rolling of (3/2) m a^2 w.
+        let (a, g) = (0.0375, 9.8067);
+        let expected = spin * 1.5 * a * a / (g * ell);
+        let last = run.y.last().expect("a last state");
+        println!(
+            "rolling stall: held from t = {t_held:.4} s (expected {expected:.4} s), {:?}, \
+             rolling at the end {:.3e} rad/s",
+            run.stats,
+            rolling(last)
+        );
+        assert!(
+            (t_held - expected).abs() < 2.0 * scene.sample.expect("a sample"),
+            "held from {t_held} s, expected {expected} s"
+        );
+        assert!(run.stats.accepted < 20_000, "{:?}", run.stats);
+        assert!(rolling(last).abs() < m.stall_band(), "{}", rolling(last));
+        // Held, not rocking: the disk stays upright.
+        let alpha = m.snapshot(last).motion().alpha;
+        assert!(
+            (alpha - std::f64::consts::FRAC_PI_2).abs() < 1e-9,
+            "{alpha}"
+        );
+        // E + W stays E(0): the held moment does no work, the rolling's energy is all in W.
+        let e0 = m.energy(&run.y[0]) + run.y[0][super::super::DISSIPATED];
+        let e1 = m.energy(last) + last[super::super::DISSIPATED];
+        assert!((e1 - e0).abs() < 1e-8 * e0.abs(), "{e0} -> {e1}");
+        let kinetic = e0 - m.energy(last);
+        let booked = last[super::super::DISSIPATED] - run.y[0][super::super::DISSIPATED];
+        assert!(booked > 0.0 && (booked - kinetic).abs() < 1e-8 * e0.abs());
+    }
+
     #[test]
     fn a_moment_too_weak_to_hold_is_the_signed_one_and_a_held_one_stops_the_rotation() {
         let with = |boring: f64| sliding_model(&upright_turn(boring));

@@ -3,7 +3,8 @@
 //! `peer export` warns where the peer's fixed floors shape its run, and only there. None may
 //! take over 2 s.
 
-use crate::common::{cli_timed, temp_dir};
+use super::sandbox::cli_timed;
+use crate::common::temp_dir;
 use std::ffi::OsString;
 use std::os::unix::ffi::OsStringExt;
 use std::process::Command;
@@ -14,7 +15,7 @@ const QUICK: Duration = Duration::from_secs(2);
 #[test]
 fn a_scene_argument_not_utf8_is_refused_naming_it_and_the_fix_works() {
     let dir = temp_dir("hostile2", "utf8");
-    let scene = include_str!("reference/peer-raw/fall/scene.yaml");
+    let scene = include_str!("../reference/peer-raw/fall/scene.yaml");
     let bad = OsString::from_vec(b"sc\xffene.yaml".to_vec());
     std::fs::write(dir.join(&bad), scene).unwrap();
     for (command, argument) in [

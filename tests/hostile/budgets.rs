@@ -4,7 +4,8 @@
 //! exactly the largest size the scene's message allows is run. A property test draws budgets
 //! over six decades, the twin of `fuzz/fuzz_targets/budgets.rs`.
 
-use crate::common::{cli_timed, temp_dir};
+use super::sandbox::cli_timed;
+use crate::common::temp_dir;
 use proptest::prelude::*;
 use std::path::Path;
 

@@ -5,12 +5,13 @@
 //! `figures` under a budget too small (one direction of advice, the budget, for every figure).
 //! Every run must end without a panic, and every refusal within 2 s.
 
-use crate::common::{cli_timed, temp_dir};
+use super::sandbox::cli_timed;
+use crate::common::temp_dir;
 use paper::Paper;
 use std::path::Path;
 use std::time::Duration;
 
-const EQUATIONS: &str = include_str!("../paper/equations.yaml");
+const EQUATIONS: &str = include_str!("../../paper/equations.yaml");
 
 /// Runs the binary in `dir`, asserting no panic: (success, stdout, stderr, time).
 fn run(dir: &Path, args: &[&str]) -> (bool, String, String, Duration) {
@@ -226,4 +227,31 @@ fn figures_under_a_budget_too_small_advise_only_a_larger_budget_and_it_works() {
         ],
     );
     assert!(ok && dir.join("f/slip-stick.svg").is_file(), "{err}");
+}
+
+/// A recording cut inside its samples, and one in a format this tool does not read (an AIFF
+/// header), are refused with what to do; done (the whole file, the recording as WAV), it is
+/// analysed. Neither refusal says "save the CSV as UTF-8" or "save as PCM".
+#[test]
+fn a_truncated_or_unread_recording_is_refused_with_advice_that_works() {
+    let dir = temp_dir("hostile-advice", "recordings");
+    let (ok, _, err, _) = run(&dir, &["experiment", "simulate", "--wav", "whole.wav"]);
+    assert!(ok, "{err}");
+    let whole = std::fs::read(dir.join("whole.wav")).expect("written");
+    std::fs::write(dir.join("cut.wav"), &whole[..3000]).expect("written");
+    std::fs::write(dir.join("take.aiff"), b"FORM\0\0\0\x10AIFFCOMMjunk").expect("written");
+    for (file, says) in [
+        ("cut.wav", "copy or export the whole file again"),
+        ("take.aiff", "export the recording in one of them"),
+    ] {
+        let (ok, _, err, took) = run(&dir, &["experiment", "analyze", file]);
+        assert!(!ok && took < Duration::from_secs(2), "{file}: {took:?}");
+        assert!(err.contains(file) && err.contains(says), "{file}: {err}");
+        for wrong in ["UTF-8", "PCM"] {
+            assert!(!err.contains(wrong), "{file}: {err}");
+        }
+    }
+    // Applied: the whole file, a WAV.
+    let (ok, out, err, _) = run(&dir, &["experiment", "analyze", "whole.wav"]);
+    assert!(ok && out.contains("beta"), "{err}");
 }
