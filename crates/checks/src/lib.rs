@@ -5,6 +5,7 @@
 //! open ([`robustness`], under a looser reading of every rule: `readings`), the mutation suite ([`mutation`]), the corrected forms ([`corrections`]) and the selection of what to check ([`select`]).
 
 mod agreement;
+mod card_parameters;
 pub mod cause;
 pub mod check;
 pub mod checked;

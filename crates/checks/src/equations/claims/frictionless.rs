@@ -253,8 +253,8 @@ pub(super) fn frictionless_constants_lab(b: &Bench) -> Finding {
         count,
         Tolerance::roundoff(),
         format!(
-            "largest relative drifts over 30 sqrt(a/g): {} (constant if at most {:.0e}); with \
-             rolling contact instead: {}",
+            "largest relative drifts over 30 sqrt(a/g) from two starts (k = 1/4, 1/2): {} \
+             (constant if at most {:.0e}); with rolling contact instead (k = 1/4): {}",
             list(&worst),
             tol.value,
             list(&rolling)

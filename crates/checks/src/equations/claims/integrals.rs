@@ -86,7 +86,8 @@ pub(super) fn rolling_extra_integrals(b: &Bench) -> Finding {
     });
     let found = ratios.iter().filter(|r| (0.0..1e-6).contains(*r)).count() as f64;
     let verdict_at = format!(
-        "{} returns to alpha = {level:.4} (swing {lo:.4} to {hi:.4}) over 60 sqrt(a/g); spread \
+        "k = 1/4, from the steady motion alpha0 = 0.5, b = 0.1 a with alpha raised by 0.4: \
+         {} returns to alpha = {level:.4} (swing {lo:.4} to {hi:.4}) over 60 sqrt(a/g); spread \
          there / swing along the motion: Omega {:.1e}, omega_1 {:.1e} (below 1e-6 counts as an \
          integral)",
         at_level.len(),

@@ -95,7 +95,7 @@ fn least_contact_force(b: &Bench, placement: Placement, what: &str) -> Finding {
             least = (
                 fz,
                 format!(
-                    "torque {what}; epsilon = {epsilon:e} s: smallest F_z = {fz:.4} m g at t = \
+                    "torque {what}; epsilon = {epsilon:e} s, beta = 2: smallest F_z = {fz:.4} m g at t = \
                      {t:.4} s, alpha = {alpha:.3e} rad (the run ends at alpha = {end:.1e} rad, \
                      t = {t_end:.3} s)"
                 ),

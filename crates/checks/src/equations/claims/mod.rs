@@ -48,6 +48,7 @@ use physics::solve::{solve, Dynamics, Event, Problem, State};
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_3, PI};
 
 mod catalogued;
+mod fall;
 mod frictionless;
 mod integrals;
 mod judge;

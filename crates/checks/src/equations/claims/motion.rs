@@ -318,7 +318,9 @@ pub(super) fn face_figure_rate_vanishes(b: &Bench) -> Finding {
         &total,
         0.5,
     );
-    worse(worse(face_order, total_order), values)
+    let mut f = worse(worse(face_order, total_order), values);
+    f.at = format!("{}; k = 1/4, b = 0", f.at);
+    f
 }
 
 // ------------------------------------------------------------------------------ sec. 6

@@ -227,7 +227,7 @@ fn air_viscosity_as_meant(b: &Bench) -> Finding {
     }
     Finding::from_worst(
         Method::Derivation,
-        "viscosity of air near room temperature (g/(cm s))",
+        "viscosity of air near room temperature, T = 15, 20 and 25 C (g/(cm s))",
         w,
         printed_tolerance(2),
     )
@@ -275,6 +275,17 @@ pub(super) fn omega_units_hz_vs_rad_per_s(b: &Bench) -> Finding {
         ))
 }
 
+/// The parameters of the sec. 11 numbers: eq 79 with the paper's fitted $\beta$ and $C$ (in
+/// $\mathrm{s}^{-(\beta+1)}$, from $\Omega = (C/(t_0 - t))^{1/(\beta+2)}$).
+fn fit_named(b: &Bench) -> String {
+    let beta = b.paper.fit.beta;
+    format!(
+        "eq 79 with the paper's fit: beta = {beta}, C = {:.4e} s^-{}",
+        c_fit(b),
+        beta + 1.0
+    )
+}
+
 /// `one-period-remaining-omega`: $\Omega$ with $t_0 - t = 2\pi/\Omega$ on eq 79 ($\beta = 2$,
 /// $C^{-1/4} = 0.0055$) by bisection: 558.2 rad/s, printed 560 (two digits).
 pub(super) fn one_period_remaining_omega(b: &Bench) -> Finding {
@@ -286,8 +297,9 @@ pub(super) fn one_period_remaining_omega(b: &Bench) -> Finding {
         "precession rate with one period remaining (rad/s; printed as Hz)",
         om,
         format!(
-            "bisection gives {om:.3}; closed form (C/2pi)^(1/3) = {:.3}",
-            (c_fit(b) / (2.0 * PI)).cbrt()
+            "bisection gives {om:.3}; closed form (C/2pi)^(1/3) = {:.3}; {}",
+            (c_fit(b) / (2.0 * PI)).cbrt(),
+            fit_named(b)
         ),
     )
 }
@@ -301,7 +313,7 @@ pub(super) fn one_period_remaining_time(b: &Bench) -> Finding {
         Method::Derivation,
         "the last remaining period (s)",
         period,
-        "2 pi over the bisected rate".into(),
+        format!("2 pi over the bisected rate; {}", fit_named(b)),
     )
 }
 
@@ -321,8 +333,9 @@ pub(super) fn t0_after_last_peak(b: &Bench) -> Finding {
         "time left before t0 at the last analysed peak, Omega = 680 rad/s (s)",
         remaining,
         format!(
-            "eq 79 reaches 680 rad/s {remaining:.5} s before t0 (closed form C / 680^4 = {:.5} s)",
-            c / 680f64.powi(4)
+            "eq 79 reaches 680 rad/s {remaining:.5} s before t0 (closed form C / 680^4 = {:.5} s); {}",
+            c / 680f64.powi(4),
+            fit_named(b)
         ),
     )
 }
@@ -339,8 +352,9 @@ pub(super) fn contact_loss_time(b: &Bench) -> Finding {
         "t0 - t at contact loss, beta = 2, k = 1/4 (s)",
         tau,
         format!(
-            "bisection {tau:.6e} s; C^(-1/3) = {:.6e} s",
-            c_fit(b).powf(-1.0 / 3.0)
+            "bisection {tau:.6e} s; C^(-1/3) = {:.6e} s; {}",
+            c_fit(b).powf(-1.0 / 3.0),
+            fit_named(b)
         ),
     )
 }
@@ -355,8 +369,9 @@ pub(super) fn contact_loss_omega(b: &Bench) -> Finding {
         "precession rate at contact loss (rad/s; printed as Hz)",
         om,
         format!(
-            "eq 79 at the bisected time: {om:.4}; C^(1/3) = {:.4}",
-            c_fit(b).cbrt()
+            "eq 79 at the bisected time: {om:.4}; C^(1/3) = {:.4}; k = 1/4, {}",
+            c_fit(b).cbrt(),
+            fit_named(b)
         ),
     )
 }

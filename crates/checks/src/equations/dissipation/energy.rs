@@ -76,7 +76,9 @@ pub(super) fn eq72_at(b: &Bench, c0: f64) -> Finding {
         b.paper.equation(72).entry.claimed_order.unwrap_or(2.0),
     );
     let alternatives = runs.alternatives(&SMALL_ALPHAS, f.claimed);
-    naming_the_worst_side(f, &worst_form, headline).with_robustness(alternatives)
+    let mut f = naming_the_worst_side(f, &worst_form, headline);
+    f.at = format!("{}; each error the worst over k = 1/4 and 1/2, b = 0", f.at);
+    f.with_robustness(alternatives)
 }
 
 /// Eq 72, $U = \frac12 m\dot h^2 + \frac12 I_{33}\omega^2 + mgh \approx \frac12 m a^2\dot\alpha^2 + \frac32 m a g\alpha$.

@@ -87,6 +87,11 @@ pub(super) fn ansatz(b: &Bench, n: u32, amplitude: fn(f64, f64) -> f64) -> Findi
         &errors,
         1.0,
     );
+    f.at = format!(
+        "{}; each amplitude's error the worst over k = 1/4, 1/2 and alpha0 = 0.3, 0.9, 1.3 \
+         (toy-sized disk, a = 37.5 mm)",
+        f.at
+    );
     if f.verdict.passes() {
         f.verdict = Verdict::Definition;
     }

@@ -296,6 +296,7 @@ fn fall(f: &studies::sliding::fall::Fall, paper: &paper::Paper) -> Option<serde_
         "lo": format!("{lo:.0}"),
         "hi": format!("{hi:.0}"),
         "held": held,
+        "below": f.cases.iter().filter(|c| super::listing::settles_at_most(c, hi)).count(),
         "runs": f.cases.len(),
         "settled": settled.len(),
         "settled_lo": format!("{:.1}", settled.iter().copied().fold(f64::INFINITY, f64::min)),
