@@ -44,23 +44,33 @@ fn paper_dir(tag: &str, extra: &str) -> PathBuf {
 
 /// `check --paper DIR --only ID --json`'s record of the claim.
 fn checked(dir: &Path) -> serde_json::Value {
+    checked_as(dir, ID)
+}
+
+/// `check --paper DIR --only id --json`'s record of claim `id`.
+fn checked_as(dir: &Path, id: &str) -> serde_json::Value {
     let (ok, out, err) =
-        crate::common::cli_in(dir, &["check", "--paper", ".", "--only", ID, "--json"]);
+        crate::common::cli_in(dir, &["check", "--paper", ".", "--only", id, "--json"]);
     assert!(ok, "check: {err}");
     let doc: serde_json::Value = serde_json::from_str(&out).expect("JSON");
     let checks = doc["checks"].as_array().expect("checks");
     assert_eq!(checks.len(), 1, "{checks:?}");
-    assert_eq!(checks[0]["claim"], ID);
+    assert_eq!(checks[0]["claim"], id);
     checks[0].clone()
 }
 
 /// The report's record of the claim, from the same paper.
 fn reported(dir: &Path) -> serde_json::Value {
+    reported_as(dir, ID)
+}
+
+/// The report's record of claim `id`, from the same paper.
+fn reported_as(dir: &Path, id: &str) -> serde_json::Value {
     let paper = paper::Paper::from_dir(dir).expect("the paper reads");
     let bench = Bench::with_paper(&paper);
     let selection = Selection {
         numbers: Some(Vec::new()),
-        claims: Some(vec![ID.to_string()]),
+        claims: Some(vec![id.to_string()]),
     };
     let checked = run_checks(&bench, &selection, 2, &|_, _| {}).expect("runs");
     let settings = report::RunSettings {
@@ -73,7 +83,7 @@ fn reported(dir: &Path) -> serde_json::Value {
         parts: Default::default(),
     };
     let doc = report::document::document(&bench, &checked, None, &settings, &[], records);
-    let claim = doc.claims.iter().find(|c| c.id == ID).expect("listed");
+    let claim = doc.claims.iter().find(|c| c.id == id).expect("listed");
     serde_json::to_value(&claim.outcome).unwrap()
 }
 
@@ -126,6 +136,71 @@ fn a_misspelled_quantity_is_refused_with_its_line_and_the_nearest_name() {
     );
     assert!(err.contains(&wanted), "{err}");
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Sec. 11's premise read for one drag and one start: the toy disk's least contact force
+/// (epsilon = 1.2e-6 s is 1.94087e-5 sqrt(a/g) for a = 37.5 mm), printed to two digits.
+const LEAST: &str = "
+- id: toy-least-force
+  section: 11
+  near_equation: 80
+  claim: \"From steady rolling at 0.15 rad, the toy disk's contact force falls no lower than 0.83 m g.\"
+  claimed_value: PRINTED
+  unit: m g
+  rule: { words: \"no lower than\", digits: 2 }
+  quantity: { name: least-contact-force, k: 0.25, alpha0: 0.15, epsilon: 1.94087e-5 }
+";
+
+/// Eq 56's small-tilt limit of the frequency ratio, claimed second order in alpha_0.
+const ORDER: &str = "
+- id: eq56-order
+  section: 7
+  near_equation: 56
+  claim: \"The frequency ratio tends to sqrt(3k/(k+1)) at order PRINTED in alpha_0.\"
+  claimed_value: PRINTED
+  unit: order
+  quantity: { name: approximation-order, equation: 56, exact: nutation-ratio, k: 0.25 }
+";
+
+/// The least F_z over a run, added from a temporary folder: holds at the right value, fails
+/// at a planted wrong one; check and report agree.
+#[test]
+fn a_least_contact_force_claim_holds_and_a_wrong_one_fails() {
+    for (printed, verdict) in [("0.83", "holds"), ("0.9", "fails")] {
+        let dir = paper_dir(
+            &format!("least-{printed}"),
+            &LEAST.replace("PRINTED", printed),
+        );
+        let c = checked_as(&dir, "toy-least-force");
+        let outcome = &c["outcome"];
+        assert_eq!(outcome["verdict"], verdict, "{outcome}");
+        assert_eq!(outcome["method"], "integration", "{outcome}");
+        // Read to the printed digits: the computed value is the headline's reference.
+        let reference = outcome["headline"]["reference"].as_f64().unwrap();
+        assert!((reference - 0.832).abs() < 1e-3, "{outcome}");
+        assert_eq!(reported_as(&dir, "toy-least-force"), *outcome);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
+
+/// The order of an approximation, added from a temporary folder: eq 56 is second order in
+/// alpha_0; a planted first order fails; check and report agree.
+#[test]
+fn an_approximation_order_claim_holds_and_a_wrong_one_fails() {
+    for (printed, verdict) in [("2", "holds_approximately"), ("1", "fails")] {
+        let dir = paper_dir(
+            &format!("order-{printed}"),
+            &ORDER.replace("PRINTED", printed),
+        );
+        let c = checked_as(&dir, "eq56-order");
+        let outcome = &c["outcome"];
+        assert_eq!(outcome["verdict"], verdict, "{outcome}");
+        assert_eq!(outcome["method"], "asymptotic", "{outcome}");
+        let order = outcome["reference"].as_f64().unwrap();
+        assert!((order - 2.0).abs() < 0.05, "{outcome}");
+        assert_eq!(reported_as(&dir, "eq56-order"), *outcome);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
 }
 
 /// `rolling-disk quantities` lists the catalogue, as text and as JSON, the same names.

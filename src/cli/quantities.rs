@@ -1,6 +1,7 @@
 //! `rolling-disk quantities`: the catalogue of quantities a claim of claims.yaml can name to be
 //! checked with no Rust ([`checks::quantities`]), as text or JSON.
 
+use checks::equations::Bench;
 use checks::quantities::{Kind, Quantity, Value, QUANTITIES};
 
 /// The arguments of `rolling-disk quantities`.
@@ -51,6 +52,8 @@ struct ParameterEntry {
     unit: Option<&'static str>,
     above: Option<f64>,
     below: Option<f64>,
+    /// Whether only whole numbers are values.
+    whole: bool,
     one_of: Option<&'static [&'static str]>,
     /// The value when a claim leaves it out; absent when a claim must give it.
     default: Option<String>,
@@ -64,16 +67,19 @@ impl Entry {
             unit: q.unit,
             method: q.method.to_string(),
             how: q.how,
-            tolerance: (q.tolerance)().rule,
+            tolerance: (q.tolerance)(&Bench::default()).rule,
             parameters: q
                 .parameters
                 .iter()
                 .map(|p| {
-                    let (unit, above, below, one_of) = match p.kind {
-                        Kind::Number { unit, above, below } => {
-                            (Some(unit), Some(above), Some(below), None)
-                        }
-                        Kind::Choice(words) => (None, None, None, Some(words)),
+                    let (unit, above, below, whole, one_of) = match p.kind {
+                        Kind::Number {
+                            unit,
+                            above,
+                            below,
+                            whole,
+                        } => (Some(unit), Some(above), Some(below), whole, None),
+                        Kind::Choice(words) => (None, None, None, false, Some(words)),
                     };
                     ParameterEntry {
                         name: p.name,
@@ -81,6 +87,7 @@ impl Entry {
                         unit,
                         above,
                         below,
+                        whole,
                         one_of,
                         default: p.default.as_ref().map(Value::to_string),
                     }
@@ -89,8 +96,9 @@ impl Entry {
         }
     }
 
-    /// The entry as JSON: a parameter's `unit`, `above` and `below` for a number, `one_of` for
-    /// a word, `default` where it has one.
+    /// The entry as JSON: a parameter's `unit`, `above` and `below` for a number (and `whole:
+    /// true` where only whole numbers are values), `one_of` for a word, `default` where it has
+    /// one.
     fn json(&self) -> serde_json::Value {
         let parameters: Vec<serde_json::Value> = self
             .parameters
@@ -105,6 +113,7 @@ impl Entry {
                         "one_of",
                         p.one_of.map(|w| serde_json::Value::from(w.to_vec())),
                     ),
+                    ("whole", p.whole.then_some(serde_json::Value::from(true))),
                     ("default", p.default.clone().map(serde_json::Value::from)),
                 ];
                 for (key, value) in fields {
@@ -135,7 +144,12 @@ impl Entry {
             let values = match (p.one_of, p.unit, p.above, p.below) {
                 (Some(words), _, _, _) => format!("one of {}", words.join(", ")),
                 (None, Some(unit), Some(above), Some(below)) => {
-                    format!("a number in ({above}, {below}) {unit}")
+                    let number = if p.whole {
+                        "a whole number"
+                    } else {
+                        "a number"
+                    };
+                    format!("{number} in ({above}, {below}) {unit}")
                 }
                 _ => String::new(),
             };

@@ -11,14 +11,20 @@
 //! All are for the dimensionless disk $a = g = m = 1$: rates in $\sqrt{g/a}$, forces in $mg$.
 //!
 //! One family a file: [`threshold`] (spinning about a vertical diameter), [`steady`] (steady
-//! motion and the friction it needs), [`oscillation`] (small oscillations about it).
+//! motion and the friction it needs), [`oscillation`] (small oscillations about it),
+//! [`contact`] (the least contact force over a run with eq 75's drag), [`order`] (the order of
+//! a printed approximation against one of the others).
 
+mod contact;
+mod order;
 mod oscillation;
 mod steady;
 mod threshold;
 mod validate;
 
 use crate::finding::{Method, Tolerance};
+use crate::harness::Bench;
+pub use contact::{least_contact_force, LeastContact};
 pub use validate::{of_claim, validate};
 
 /// A quantity of the catalogue.
@@ -34,12 +40,13 @@ pub struct Quantity {
     pub method: Method,
     /// How it is computed, in words.
     pub how: &'static str,
-    /// The tolerance its method allows when a claim gives no `rule`.
-    pub tolerance: fn() -> Tolerance,
+    /// The tolerance its method allows when a claim gives no `rule`, on the check's bench.
+    pub tolerance: fn(&Bench) -> Tolerance,
     /// Its parameters.
     pub parameters: &'static [Parameter],
-    /// Computes it at the given parameters (every one given and in its range, [`validate`]).
-    pub compute: fn(&Values) -> Computed,
+    /// Computes it at the given parameters (every one given and in its range, [`validate`]),
+    /// reading the paper and the solver's settings from the check's bench.
+    pub compute: fn(&Values, &Bench) -> Computed,
 }
 
 /// A parameter of a quantity.
@@ -58,7 +65,7 @@ pub struct Parameter {
 /// The values a parameter takes.
 #[derive(Debug, Clone, Copy)]
 pub enum Kind {
-    /// A number strictly between `above` and `below`, in `unit`.
+    /// A number strictly between `above` and `below`, in `unit` (a whole number where `whole`).
     Number {
         /// Its unit.
         unit: &'static str,
@@ -66,6 +73,8 @@ pub enum Kind {
         above: f64,
         /// Its upper end.
         below: f64,
+        /// Whether only whole numbers are values (an equation's number).
+        whole: bool,
     },
     /// One of these words.
     Choice(&'static [&'static str]),
@@ -136,6 +145,20 @@ pub struct Computed {
     pub value: f64,
     /// Where and how, for the finding.
     pub at: String,
+    /// For an order: the small parameter's values and the errors there, which
+    /// [`crate::finding::Finding::from_order`] fits and judges.
+    pub series: Option<(Vec<f64>, Vec<f64>)>,
+}
+
+impl Computed {
+    /// A value, and where and how it was found.
+    pub fn value(value: f64, at: String) -> Self {
+        Self {
+            value,
+            at,
+            series: None,
+        }
+    }
 }
 
 /// Every quantity of the catalogue.
@@ -145,6 +168,8 @@ pub const QUANTITIES: &[Quantity] = &[
     steady::FRICTION_NEEDED,
     oscillation::NUTATION_FREQUENCY,
     oscillation::NUTATION_RATIO,
+    contact::LEAST_CONTACT_FORCE,
+    order::APPROXIMATION_ORDER,
 ];
 
 /// The quantity named `name`, if the catalogue has it.
@@ -160,6 +185,7 @@ const K: Parameter = Parameter {
         unit: "1",
         above: 0.0,
         below: 10.0,
+        whole: false,
     },
     default: None,
 };
@@ -172,6 +198,7 @@ const ALPHA0: Parameter = Parameter {
         unit: "rad",
         above: 0.0,
         below: std::f64::consts::FRAC_PI_2,
+        whole: false,
     },
     default: None,
 };
@@ -185,6 +212,7 @@ const B_OVER_A: Parameter = Parameter {
         unit: "1",
         above: -1.0,
         below: 100.0,
+        whole: false,
     },
     default: Some(Value::Number(0.0)),
 };

@@ -5,6 +5,7 @@ use super::steady::{derived_tolerance, steady_state};
 use super::threshold::not_located;
 use super::{Computed, Quantity, Values, ALPHA0, B_OVER_A, K};
 use crate::finding::Method;
+use crate::harness::Bench;
 use physics::model::rolling;
 
 /// `nutation-frequency`.
@@ -51,22 +52,24 @@ fn varpi(v: &Values) -> Result<(f64, f64, String), String> {
 }
 
 /// [`NUTATION_FREQUENCY`].
-fn frequency(v: &Values) -> Computed {
+fn frequency(v: &Values, _: &Bench) -> Computed {
     match varpi(v) {
         Ok((w, _, at)) => Computed {
             value: w,
             at: format!("{at}; varpi from the exact Jacobian"),
+            series: None,
         },
         Err(why) => not_located(why),
     }
 }
 
 /// [`NUTATION_RATIO`].
-fn ratio(v: &Values) -> Computed {
+fn ratio(v: &Values, _: &Bench) -> Computed {
     match varpi(v) {
         Ok((w, om, at)) => Computed {
             value: w / om.abs(),
             at: format!("{at}; varpi = {w:.9} sqrt(g/a) from the exact Jacobian"),
+            series: None,
         },
         Err(why) => not_located(why),
     }
@@ -81,11 +84,14 @@ mod tests {
     #[test]
     fn the_ratio_tends_to_eq56s_limit() {
         let k = 0.25;
-        let r = ratio(&Values(vec![
-            ("k", Value::Number(k)),
-            ("alpha0", Value::Number(1e-3)),
-            ("b_over_a", Value::Number(0.0)),
-        ]))
+        let r = ratio(
+            &Values(vec![
+                ("k", Value::Number(k)),
+                ("alpha0", Value::Number(1e-3)),
+                ("b_over_a", Value::Number(0.0)),
+            ]),
+            &Bench::default(),
+        )
         .value;
         assert!((r - (3.0 * k / (k + 1.0)).sqrt()).abs() < 1e-3, "{r}");
     }

@@ -4,6 +4,7 @@
 use super::threshold::{bisection, not_located};
 use super::{Computed, Quantity, Values, ALPHA0, B_OVER_A, K};
 use crate::finding::{Method, Tolerance};
+use crate::harness::Bench;
 use numerics::oscillation::bisect;
 use physics::disk::Disk;
 use physics::model::rolling;
@@ -73,18 +74,19 @@ pub(super) fn steady_state(v: &Values) -> Result<(Disk, Motion, String), String>
 }
 
 /// [`STEADY_PRECESSION_RATE`] in $\sqrt{g/a}$.
-fn precession_rate(v: &Values) -> Computed {
+fn precession_rate(v: &Values, _: &Bench) -> Computed {
     match steady_state(v) {
         Ok((_, m, at)) => Computed {
             value: m.precession,
             at,
+            series: None,
         },
         Err(why) => not_located(why),
     }
 }
 
 /// [`FRICTION_NEEDED`]: $|F_h|/F_z$ from the rolling model's exact contact force.
-fn friction_needed(v: &Values) -> Computed {
+fn friction_needed(v: &Values, _: &Bench) -> Computed {
     match steady_state(v) {
         Ok((disk, m, at)) => {
             let r = rolling::rates(&disk, &m, [0.0; 3]);
@@ -92,6 +94,7 @@ fn friction_needed(v: &Values) -> Computed {
             Computed {
                 value: fr.hypot(f2) / fz,
                 at: format!("{at}; F_z = {fz:.9} m g"),
+                series: None,
             }
         }
         Err(why) => not_located(why),
@@ -101,7 +104,7 @@ fn friction_needed(v: &Values) -> Computed {
 /// The tolerance of a quantity computed in closed form from a steady rate located to relative
 /// width `WIDTH`: a force or a frequency goes with at most the square of the rate, so its
 /// relative error is at most about twice the rate's, with round-off.
-pub(super) fn derived_tolerance() -> Tolerance {
+pub(super) fn derived_tolerance(_: &Bench) -> Tolerance {
     Tolerance {
         value: 1e-10,
         rule: format!(
@@ -130,7 +133,7 @@ mod tests {
     #[test]
     fn the_steady_rate_is_eq29s() {
         for (k, alpha0, b) in [(0.25, 0.3, 0.0), (0.5, 1.0, 0.2), (0.25, 0.8, -0.05)] {
-            let om = precession_rate(&values(k, alpha0, b)).value;
+            let om = precession_rate(&values(k, alpha0, b), &Bench::default()).value;
             let eq29 = (1.0 / alpha0.tan() / (k * alpha0.cos() + (2.0 * k + 1.0) * b)).sqrt();
             assert!((om.abs() - eq29).abs() < 1e-10 * eq29, "{om} {eq29}");
             assert_eq!(om < 0.0, b < 0.0);
@@ -140,13 +143,13 @@ mod tests {
     /// With b = 0 the centre of mass is at rest: no horizontal force is needed.
     #[test]
     fn no_friction_is_needed_with_the_centre_of_mass_at_rest() {
-        assert!(friction_needed(&values(0.25, 0.3, 0.0)).value < 1e-12);
-        assert!(friction_needed(&values(0.25, 0.3, 0.1)).value > 0.01);
+        assert!(friction_needed(&values(0.25, 0.3, 0.0), &Bench::default()).value < 1e-12);
+        assert!(friction_needed(&values(0.25, 0.3, 0.1), &Bench::default()).value > 0.01);
     }
 
     #[test]
     fn beyond_eq30s_edge_there_is_no_steady_motion() {
-        let c = precession_rate(&values(0.25, 0.3, -0.9));
+        let c = precession_rate(&values(0.25, 0.3, -0.9), &Bench::default());
         assert!(c.value.is_nan());
         assert!(c.at.contains("no steady rolling motion"), "{}", c.at);
     }

@@ -170,3 +170,50 @@ fn a_claim_with_its_own_check_cannot_name_a_quantity() {
     );
     assert!(why.contains("has its own check, written in Rust"), "{why}");
 }
+
+const ORDER: &str = "\
+- id: eq56-order
+  section: 7
+  near_equation: 56
+  claim: \"The frequency ratio tends to sqrt(3k/(k+1)) at second order in alpha_0.\"
+  claimed_value: 2
+  unit: order
+  quantity: { name: approximation-order, equation: 56, exact: nutation-ratio, k: 0.25 }
+";
+
+/// An order is judged as the equations' orders are: eq 56 holds approximately at 2, a planted
+/// 1 fails, and an equation's number must be whole and the order take no `rule`.
+#[test]
+fn an_order_claim_is_judged_and_its_entry_read() {
+    let f = catalogued(&Bench::with_paper(&paper_with(ORDER)), "eq56-order");
+    assert!(
+        matches!(
+            f.verdict,
+            crate::finding::Verdict::HoldsApproximately { .. }
+        ),
+        "{f:#?}"
+    );
+    let wrong = paper_with(&ORDER.replace("claimed_value: 2", "claimed_value: 1"));
+    let f = catalogued(&Bench::with_paper(&wrong), "eq56-order");
+    assert_eq!(f.verdict, crate::finding::Verdict::Fails, "{f:#?}");
+    for (entry, wanted) in [
+        (
+            ORDER.replace("order, equation: 56", "order, equation: 56.5"),
+            "key `quantity.equation`: 56.5 is not a whole number",
+        ),
+        (
+            ORDER.replace(
+                "  quantity:",
+                "  rule: { words: about, digits: 1 }\n  quantity:",
+            ),
+            "key `rule`: `approximation-order` is an order",
+        ),
+        (
+            ORDER.replace("nutation-ratio", "approximation-order"),
+            "`approximation-order` is not one of",
+        ),
+    ] {
+        let why = validate(&paper_with(&entry)).expect_err(wanted);
+        assert!(why.contains(wanted), "{why}");
+    }
+}

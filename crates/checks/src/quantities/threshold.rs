@@ -4,6 +4,7 @@
 
 use super::{Computed, Kind, Parameter, Quantity, Values, K};
 use crate::finding::{Method, Tolerance};
+use crate::harness::Bench;
 use numerics::oscillation::bisect;
 use physics::disk::Disk;
 use physics::model::frictionless as fl;
@@ -40,7 +41,7 @@ pub(super) const VERTICAL_SPIN_THRESHOLD: Quantity = Quantity {
 
 /// The threshold of [`VERTICAL_SPIN_THRESHOLD`] in $\sqrt{g/a}$: the edge between an unstable
 /// ($\varpi^2 < 0$) and a stable upright spin, by bisection over $[10^{-4}, 10^4]$.
-fn vertical_spin_threshold(v: &Values) -> Computed {
+fn vertical_spin_threshold(v: &Values, _: &Bench) -> Computed {
     let k = v.number("k");
     let contact = v.word("contact");
     let Ok(disk) = Disk::new(1.0, k, 1.0, 1.0) else {
@@ -63,6 +64,7 @@ fn vertical_spin_threshold(v: &Values) -> Computed {
             "{contact} contact, k = {k}: bisection on varpi^2 of the linearized equations at \
              alpha = pi/2, bracket [{lo:.12e}, {hi:.12e}] sqrt(g/a)"
         ),
+        series: None,
     }
 }
 
@@ -71,11 +73,12 @@ pub(super) fn not_located(why: String) -> Computed {
     Computed {
         value: f64::NAN,
         at: why,
+        series: None,
     }
 }
 
 /// The tolerance of a value bracketed by bisection to relative width `WIDTH`.
-pub(super) fn bisection() -> Tolerance {
+pub(super) fn bisection(_: &Bench) -> Tolerance {
     Tolerance::bisection(WIDTH)
 }
 
@@ -85,10 +88,13 @@ mod tests {
     use crate::quantities::Value;
 
     fn at(k: f64, contact: &'static str) -> f64 {
-        vertical_spin_threshold(&Values(vec![
-            ("k", Value::Number(k)),
-            ("contact", Value::Word(contact)),
-        ]))
+        vertical_spin_threshold(
+            &Values(vec![
+                ("k", Value::Number(k)),
+                ("contact", Value::Word(contact)),
+            ]),
+            &Bench::default(),
+        )
         .value
     }
 

@@ -97,6 +97,15 @@ fn claim(c: &ClaimEntry, named: &NamedQuantity) -> Result<(&'static Quantity, Va
             q.unit
         ));
     }
+    if q.method == crate::finding::Method::Asymptotic && c.rule.is_some() {
+        return Err(format!(
+            "{}, key `rule`: `{}` is an order, judged by the asymptotic rule (the fitted order \
+             within {} of the printed one); remove the `rule`",
+            at("name"),
+            q.name,
+            crate::finding::Tolerance::order().value
+        ));
+    }
     let range = c.rule.as_ref().is_some_and(|r| r.range.is_some());
     if c.claimed_value.is_none() && !range {
         return Err(format!(
@@ -113,8 +122,18 @@ fn claim(c: &ClaimEntry, named: &NamedQuantity) -> Result<(&'static Quantity, Va
 /// A parameter's value as given, read as its kind asks; why not otherwise.
 fn value_of(kind: Kind, given: &ParameterValue) -> Result<Value, String> {
     match (kind, given) {
-        (Kind::Number { unit, above, below }, ParameterValue::Number(x)) => {
-            if x.is_finite() && *x > above && *x < below {
+        (
+            Kind::Number {
+                unit,
+                above,
+                below,
+                whole,
+            },
+            ParameterValue::Number(x),
+        ) => {
+            if whole && x.fract() != 0.0 {
+                Err(format!("{x} is not a whole number: give one (in {unit})"))
+            } else if x.is_finite() && *x > above && *x < below {
                 Ok(Value::Number(*x))
             } else {
                 Err(format!(

@@ -2,10 +2,8 @@
 //! 80-81), under each placement of eq 75's dissipative torque.
 
 use super::judge::printed;
-use super::{
-    rolling, solve, steady_motion, Bench, Disk, Event, Extras, Finding, Method, Model, PowerLaw,
-    Problem, Rolling, State, Tolerance, Worst,
-};
+use super::{Bench, Disk, Finding, Method, PowerLaw, Tolerance, Worst};
+use crate::quantities;
 use crate::robustness::Alternative;
 use physics::model::dissipation::Placement;
 
@@ -14,8 +12,9 @@ use physics::model::dissipation::Placement;
 /// k = 1/4, m = 0.4 kg) rolling with eq 75's drag ($\beta = 2$; $\epsilon$ = 1.2e-6 s, what
 /// the paper's fit means through its printed eq 79, and half and twice that) from steady $b = 0$
 /// motion at 0.15 rad until the tilt falls below 1e-4 rad (or 120 s pass), and the smallest
-/// $F_z/mg = 1 + (a/g)(\ddot\alpha\cos\alpha - \dot\alpha^2\sin\alpha)$ over the solver's steps
-/// (eq 20's exact contact force), one point per run.
+/// $F_z/mg = 1 + (a/g)(\ddot\alpha\cos\alpha - \dot\alpha^2\sin\alpha)$ over the run (eq 20's
+/// exact contact force; the catalogue's `least-contact-force`, [`quantities::least_contact_force`]), one
+/// point per run.
 ///
 /// The paper gives eq 75 only as a power; where its torque acts is a choice it leaves open. The
 /// check runs each placement of [`Placement`]: against $\vec\omega$ (the tool's model, the
@@ -36,7 +35,7 @@ pub(super) fn disk_leaves_table(b: &Bench) -> Finding {
     ];
     let judged: Vec<(&str, Finding)> = placements
         .iter()
-        .map(|&(p, what)| (what, least_contact_force(b, p, what)))
+        .map(|&(p, what)| (what, least_over_runs(b, p, what)))
         .collect();
     let alternatives = judged
         .iter()
@@ -49,7 +48,7 @@ pub(super) fn disk_leaves_table(b: &Bench) -> Finding {
 
 /// The smallest $F_z/mg$ of the runs of [`disk_leaves_table`] with eq 75's torque placed at
 /// `placement`, against the paper's 0.
-fn least_contact_force(b: &Bench, placement: Placement, what: &str) -> Finding {
+fn least_over_runs(b: &Bench, placement: Placement, what: &str) -> Finding {
     let disk = Disk {
         a: 0.0375,
         k: 0.25,
@@ -63,41 +62,27 @@ fn least_contact_force(b: &Bench, placement: Placement, what: &str) -> Finding {
     let mut least: (f64, String) = (f64::INFINITY, String::new());
     for epsilon in [0.6e-6, 1.2e-6, 2.4e-6] {
         let law = PowerLaw { epsilon, beta: 2.0 };
-        let model = Rolling::<4>::new(disk, Extras::default(), Some(law)).with_placement(placement);
-        let Ok(start) = steady_motion(&disk, 0.15, 0.0) else {
-            continue;
-        };
-        let y0 = model.state(&start);
-        let stop = Event::new("the tilt falls below 1e-4 rad", move |y: &State<4>| {
-            y[0] - floor
-        });
-        let Ok(sol) = solve(
-            Problem::new(&model, 0.0, y0, 120.0).stop_when(stop),
+        let Ok(r) = quantities::least_contact_force(
+            &disk,
+            law,
+            placement,
+            0.15,
+            0.0,
+            floor,
+            120.0,
             &b.settings(),
         ) else {
             continue;
         };
-        let (end, t_end) = (
-            sol.y.last().map_or(f64::NAN, |y| y[0]),
-            sol.t.last().copied().unwrap_or(f64::NAN),
-        );
-        let mut lowest: (f64, f64, f64) = (f64::INFINITY, f64::NAN, f64::NAN);
-        for (t, y) in sol.t.iter().zip(&sol.y) {
-            let fz = rolling::contact_force(&disk, &model.motion(y), &model.rates(y))[0]
-                / (disk.m * disk.g);
-            if fz < lowest.0 {
-                lowest = (fz, *t, y[0]);
-            }
-        }
-        let (fz, t, alpha) = lowest;
         runs += 1;
-        if fz < least.0 {
+        if r.fz < least.0 {
             least = (
-                fz,
+                r.fz,
                 format!(
-                    "torque {what}; epsilon = {epsilon:e} s, beta = 2: smallest F_z = {fz:.4} m g at t = \
-                     {t:.4} s, alpha = {alpha:.3e} rad (the run ends at alpha = {end:.1e} rad, \
-                     t = {t_end:.3} s)"
+                    "torque {what}; epsilon = {epsilon:e} s, beta = 2: smallest F_z = {:.4} m g \
+                     at t = {:.4} s, alpha = {:.3e} rad (the run ends at alpha = {:.1e} rad, \
+                     t = {:.3} s)",
+                    r.fz, r.t, r.alpha, r.alpha_end, r.t_end
                 ),
             );
         }
