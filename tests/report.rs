@@ -9,6 +9,7 @@ use std::path::PathBuf;
 use std::process::Command;
 use std::sync::OnceLock;
 
+mod cache;
 mod layout;
 mod pipeline;
 mod reading;

@@ -1,6 +1,7 @@
 //! `rolling-disk report`: the reproduction report, written as one set of files.
 
 use crate::cli::paper_input::PaperInput;
+use ::report::cache::Cache;
 use std::path::{Path, PathBuf};
 
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -25,6 +26,15 @@ pub struct Args {
     /// after them. The report's files are the same to the byte.
     #[arg(long, short)]
     pub verbose: bool,
+    /// Computes every study, keeping nothing between runs. Without it, the results that depend
+    /// on nothing but the program (the toy's stored peer runs and scans) are computed once per
+    /// build and kept in the cache folder; the report's files are the same to the byte either
+    /// way.
+    #[arg(long)]
+    pub no_cache: bool,
+    /// The cache folder (default: $XDG_CACHE_HOME/rolling-disk, or ~/.cache/rolling-disk).
+    #[arg(long, value_name = "DIR", conflicts_with = "no_cache")]
+    pub cache_dir: Option<PathBuf>,
     #[command(flatten)]
     pub(crate) input: PaperInput,
 }
@@ -32,7 +42,12 @@ pub struct Args {
 impl Args {
     /// Runs the command.
     pub fn run(self) -> anyhow::Result<()> {
-        report(self.format, &self.out, &self.input, self.verbose)
+        let cache = if self.no_cache {
+            None
+        } else {
+            self.cache_dir.map(Cache::at).or_else(Cache::user)
+        };
+        report(self.format, &self.out, &self.input, self.verbose, cache)
     }
 }
 
@@ -41,18 +56,16 @@ fn report(
     out: &Path,
     input: &PaperInput,
     verbose: bool,
+    cache: Option<Cache>,
 ) -> anyhow::Result<()> {
-    use ::report::{build, render, timing::Timings};
+    use ::report::{build, pipeline::RunConfig, render, timing::Timings};
     // Check --out and make room beside it before computing anything.
     let set = crate::cli::stdout::begin_set(out)?;
     let bench = input.bench()?;
     let status = |s: &str| crate::cli::stdout::progress(&format!("report: {s}"));
     let timings = Timings::new();
-    let (report, figures) = if verbose {
-        build::build_timed(&bench, &status, &timings)?
-    } else {
-        build::build(&bench, &status)?
-    };
+    let config = RunConfig::report(bench).with_cache(cache);
+    let (report, figures) = build::build_from(&config, &status, verbose.then_some(&timings))?;
     crate::cli::within_budget()?;
     let formats = match format {
         ReportFormat::Html => vec![render::Format::Html],

@@ -145,8 +145,28 @@ pub fn build(
     bench: &Bench,
     progress: &(dyn Fn(&str) + Sync),
 ) -> Result<(Report, Vec<Figure>), ReportError> {
-    let results = compute(&RunConfig::report(*bench), progress)?;
-    from_results(bench, &results, progress)
+    build_from(&RunConfig::report(*bench), progress, None)
+}
+
+/// Builds the report for `config` (a [`RunConfig::report`], with or without a cache): every
+/// study side by side ([`compute`]), or, with `timings`, one after another, each one's and each
+/// later stage's wall and CPU time recorded there. The same report, to the byte, either way,
+/// and from a cold cache, a warm one or none.
+pub fn build_from(
+    config: &RunConfig,
+    progress: &(dyn Fn(&str) + Sync),
+    timings: Option<&Timings>,
+) -> Result<(Report, Vec<Figure>), ReportError> {
+    match timings {
+        None => {
+            let results = compute(config, progress)?;
+            from_results(&config.bench, &results, progress)
+        }
+        Some(timings) => {
+            let results = compute_timed(config, progress, timings)?;
+            assemble(&config.bench, &results, progress, timings)
+        }
+    }
 }
 
 /// [`build`] with the studies one after another, each study's and each later stage's wall and
@@ -156,8 +176,7 @@ pub fn build_timed(
     progress: &(dyn Fn(&str) + Sync),
     timings: &Timings,
 ) -> Result<(Report, Vec<Figure>), ReportError> {
-    let results = compute_timed(&RunConfig::report(*bench), progress, timings)?;
-    assemble(bench, &results, progress, timings)
+    build_from(&RunConfig::report(*bench), progress, Some(timings))
 }
 
 /// Builds the report from results computed before (a full [`RunConfig::report`]); computes

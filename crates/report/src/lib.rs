@@ -3,6 +3,7 @@
 //! by templates (`render`) to HTML, LaTeX or JSON. Templates and figures only read it.
 
 pub mod build;
+pub mod cache;
 pub mod document;
 pub mod error;
 pub mod figures;

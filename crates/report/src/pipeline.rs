@@ -7,10 +7,11 @@
 //! the renderers to reach the solver, the scene runner, the simulations or the checks, and
 //! [`Results::computed`] records how many times each study ran (once, for a full report).
 
+use crate::cache::Cache;
 use crate::error::ReportError;
 use crate::results::Results;
-use crate::study::{self, Run, Step};
-use crate::timing::Timings;
+use crate::study::{self, Run, Source, Step};
+use crate::timing::{Timing, Timings};
 use checks::equations::Bench;
 use std::time::Instant;
 
@@ -21,6 +22,9 @@ pub struct RunConfig<'p> {
     pub bench: Bench<'p>,
     /// The studies to compute (each once, whatever the list repeats).
     pub studies: Vec<&'static dyn Run>,
+    /// Where the results that depend on nothing but the program are kept between runs
+    /// ([`crate::cache`]); `None`: every study is computed.
+    pub cache: Option<Cache>,
 }
 
 impl<'p> RunConfig<'p> {
@@ -29,7 +33,13 @@ impl<'p> RunConfig<'p> {
         Self {
             bench,
             studies: study::ALL.to_vec(),
+            cache: None,
         }
+    }
+
+    /// The same, with the results that may be kept read from and written to `cache`.
+    pub fn with_cache(self, cache: Option<Cache>) -> Self {
+        Self { cache, ..self }
     }
 
     /// What the named figures need, and nothing else (no checks); an unknown name is an error
@@ -43,7 +53,11 @@ impl<'p> RunConfig<'p> {
                 }
             }
         }
-        Ok(Self { bench, studies })
+        Ok(Self {
+            bench,
+            studies,
+            cache: None,
+        })
     }
 
     /// The names of the studies to compute, in order.
@@ -67,10 +81,11 @@ pub fn compute(
         .par_iter()
         .map(|s| {
             let start = Instant::now();
-            let out = run_one(*s, config, progress)?;
+            let (out, source) = run_one(*s, config, progress)?;
             let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             progress(&format!(
-                "computed {} ({n}/{total}) in {:.2} s",
+                "{} {} ({n}/{total}) in {:.2} s",
+                said(source),
                 s.name(),
                 start.elapsed().as_secs_f64()
             ));
@@ -81,8 +96,9 @@ pub fn compute(
 }
 
 /// Computes every study of `config` once, one after another (each still on as many threads as
-/// it uses alone), and records each one's wall and CPU time in `timings`: the process's CPU
-/// time over a study is then that study's own. The results are those of [`compute`].
+/// it uses alone), and records each one's wall and CPU time in `timings` (a study read from the
+/// cache as `NAME (cached)`): the process's CPU time over a study is then that study's own. The
+/// results are those of [`compute`].
 pub fn compute_timed(
     config: &RunConfig,
     progress: &(dyn Fn(&str) + Sync),
@@ -92,8 +108,22 @@ pub fn compute_timed(
     let total = wanted.len();
     let mut outputs = Vec::with_capacity(total);
     for (n, s) in wanted.iter().enumerate() {
-        let out = timings.time(s.name(), || run_one(*s, config, progress))?;
-        progress(&format!("computed {} ({}/{total})", s.name(), n + 1));
+        let start = (Instant::now(), crate::timing::cpu_seconds());
+        let (out, source) = run_one(*s, config, progress)?;
+        timings.record(Timing {
+            name: match source {
+                Source::Cached => format!("{} (cached)", s.name()),
+                _ => s.name().to_string(),
+            },
+            wall: start.0.elapsed().as_secs_f64(),
+            cpu: crate::timing::cpu_seconds() - start.1,
+        });
+        progress(&format!(
+            "{} {} ({}/{total})",
+            said(source),
+            s.name(),
+            n + 1
+        ));
         outputs.push((s.name(), out));
     }
     Ok(results(config, outputs))
@@ -112,12 +142,23 @@ fn wanted(config: &RunConfig) -> Vec<&'static dyn Run> {
     wanted
 }
 
-/// Runs one study, with a progress line at each quarter of the steps it counts.
+/// How a progress line says where a study's result came from.
+fn said(source: Source) -> &'static str {
+    match source {
+        Source::Computed => "computed",
+        Source::Stored => "computed and cached",
+        Source::Cached => "read from the cache",
+    }
+}
+
+/// Runs one study (or reads it from the cache), with a progress line at each quarter of the
+/// steps it counts; a cache entry that is not trusted, or a cache that cannot be written, is a
+/// warning on standard error (the report is the same without the cache).
 fn run_one(
     s: &'static dyn Run,
     config: &RunConfig,
     progress: &(dyn Fn(&str) + Sync),
-) -> Result<study::Output, ReportError> {
+) -> Result<(study::Output, Source), ReportError> {
     let name = s.name();
     let observe = |step: Step| {
         let quarter = |done: usize| done * 4 / step.total.max(1);
@@ -126,7 +167,8 @@ fn run_one(
         }
     };
     physics::budget::in_stage(&format!("the {name} study"), || {
-        s.run(&config.bench, &observe)
+        let warn = |w: &str| eprintln!("warning: {w}");
+        s.run(&config.bench, &observe, config.cache.as_ref(), &warn)
     })
     .map_err(|e| format!("the {name} study failed: {e}").into())
 }

@@ -38,7 +38,7 @@ use physics::model::steady::steady_motion;
 use physics::model::steady_solid::RollingSolid;
 use physics::run::sliding::integrate;
 use physics::scene::Scene;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// The toy's radius (m), thickness (m), fillet (m) and mass (kg).
 pub const TOY: (f64, f64, f64, f64) = (0.0375, 0.0128, 0.002, 0.4);
@@ -52,7 +52,7 @@ pub const SPIN_DOWN_START: f64 = 0.15;
 pub const FIT_TILTS: (f64, f64) = (0.002, 0.05);
 
 /// Which disk.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, schemars::JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, schemars::JsonSchema)]
 pub enum Shape {
     /// The thin uniform disk, $k = 1/4$.
     Thin,
@@ -188,7 +188,7 @@ pub fn period(shape: Shape, alpha0: f64, precession: f64) -> Result<f64, StudyEr
 }
 
 /// One tilt's steady motion and small oscillation, thin and toy.
-#[derive(Debug, Clone, PartialEq, Serialize, schemars::JsonSchema)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 pub struct SteadyPair {
     /// $\alpha_0$ (rad).
     pub alpha0: f64,
@@ -207,7 +207,7 @@ pub struct SteadyPair {
 }
 
 /// One disk's spin-down under eq 75.
-#[derive(Debug, Clone, PartialEq, Serialize, schemars::JsonSchema)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 pub struct SpinDownLaw {
     /// Which disk.
     pub shape: Shape,
@@ -230,7 +230,7 @@ pub struct SpinDownLaw {
 }
 
 /// One fall from unstable steady motion (sec. 7), thin and toy.
-#[derive(Debug, Clone, PartialEq, Serialize, schemars::JsonSchema)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 pub struct FallPair {
     /// The steady tilt (deg).
     pub alpha0_deg: f64,
@@ -327,7 +327,7 @@ fn falls() -> Result<Vec<FallPair>, StudyError> {
 }
 
 /// The toy against the thin disk.
-#[derive(Debug, Clone, PartialEq, Serialize, schemars::JsonSchema)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 pub struct Thickness {
     /// At each of [`STEADY_TILTS`].
     pub steady: Vec<SteadyPair>,

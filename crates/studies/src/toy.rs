@@ -6,10 +6,10 @@ use crate::peer::stored::{compare_stored, StoredComparison};
 use crate::thickness::Thickness;
 use crate::toy_steady::ToySteady;
 use crate::StudyError;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// The toy's studies.
-#[derive(Debug, Clone, PartialEq, Serialize, schemars::JsonSchema)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 pub struct Toy {
     /// Every stored peer run against this tool's run of its scene.
     pub peer: Vec<StoredComparison>,

@@ -28,7 +28,7 @@ use physics::model::sliding::{Flow, Mode, Sliding};
 use physics::model::steady_solid::Side;
 use physics::model::Motion;
 use physics::solve::{solve, Problem, Settings};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// The tilts compared (deg).
 pub const TILTS_DEG: [f64; 9] = [10.0, 30.0, 50.0, 70.0, 75.0, 78.0, 80.0, 82.0, 85.0];
@@ -40,7 +40,7 @@ pub const HOLD: f64 = 0.1;
 const TAU: f64 = 1e-3;
 
 /// One tilt: the thin disk's eq 30 and 29 beside the toy's, and the model's checks.
-#[derive(Debug, Clone, PartialEq, Serialize, schemars::JsonSchema)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 pub struct EdgeRow {
     /// $\alpha_0$ (deg).
     pub alpha0_deg: f64,
@@ -203,7 +203,7 @@ pub fn row(alpha0_deg: f64) -> Result<EdgeRow, StudyError> {
 }
 
 /// Eq 30 for the toy: the rows, and the tilts between which it cannot spin in place.
-#[derive(Debug, Clone, PartialEq, Serialize, schemars::JsonSchema)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 pub struct ToySteady {
     /// One row per tilt of [`TILTS_DEG`].
     pub rows: Vec<EdgeRow>,

@@ -4,6 +4,7 @@
 //! ([`Observer`]). Adding a study is one file here and its row in [`ALL`]; the figures that read
 //! it name it in their own row (`crate::figures::FAMILIES`).
 
+use crate::cache::{Cache, Lookup};
 use crate::error::ReportError;
 use checks::equations::Bench;
 use std::any::Any;
@@ -57,6 +58,36 @@ pub trait Study: Sync {
     const NAME: &'static str;
     /// Computes the result for `bench`; `observe` hears each step the study counts.
     fn compute(&self, bench: &Bench, observe: &Observer) -> Result<Self::Output, ReportError>;
+
+    /// How the result may be kept between runs ([`crate::cache`]), for a study whose result
+    /// depends on nothing but the program and the inputs it names; `None` (the default): the
+    /// study is computed every time.
+    fn kept(&self, _bench: &Bench) -> Option<Kept<Self::Output>> {
+        None
+    }
+}
+
+/// A result kept between runs: every input it depends on besides the program, as bytes, and
+/// its encoding, which must give back a result equal to the one encoded (every field, every
+/// float to the bit).
+pub struct Kept<T> {
+    /// The inputs' bytes (hashed into the entry's key).
+    pub inputs: Vec<u8>,
+    /// The result as bytes.
+    pub encode: fn(&T) -> Result<Vec<u8>, String>,
+    /// The result read back.
+    pub decode: fn(&[u8]) -> Result<T, String>,
+}
+
+/// Where a study's result came from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Source {
+    /// Computed, and not kept (no cache, or a study computed every time).
+    Computed,
+    /// Computed and written to the cache (none valid was there).
+    Stored,
+    /// Read from the cache.
+    Cached,
 }
 
 /// A result of any study, kept under the study's name.
@@ -66,8 +97,16 @@ pub type Output = Arc<dyn Any + Send + Sync>;
 pub trait Run: Sync {
     /// The study's name.
     fn name(&self) -> &'static str;
-    /// Computes the study's result.
-    fn run(&self, bench: &Bench, observe: &Observer) -> Result<Output, ReportError>;
+    /// Computes the study's result, or reads it from `cache` when the study's result may be
+    /// kept and a valid entry is there (an entry that is not is replaced by the computed
+    /// result). A cache that cannot be written is said in `note`, and the result is computed.
+    fn run(
+        &self,
+        bench: &Bench,
+        observe: &Observer,
+        cache: Option<&Cache>,
+        note: &(dyn Fn(&str) + Sync),
+    ) -> Result<(Output, Source), ReportError>;
 }
 
 impl<S: Study> Run for S {
@@ -75,8 +114,42 @@ impl<S: Study> Run for S {
         S::NAME
     }
 
-    fn run(&self, bench: &Bench, observe: &Observer) -> Result<Output, ReportError> {
-        Ok(Arc::new(self.compute(bench, observe)?))
+    fn run(
+        &self,
+        bench: &Bench,
+        observe: &Observer,
+        cache: Option<&Cache>,
+        note: &(dyn Fn(&str) + Sync),
+    ) -> Result<(Output, Source), ReportError> {
+        let kept = self.kept(bench);
+        let key = kept.as_ref().and_then(|k| Cache::key(S::NAME, &k.inputs));
+        let (Some(cache), Some(kept), Some(key)) = (cache, kept, key) else {
+            return Ok((Arc::new(self.compute(bench, observe)?), Source::Computed));
+        };
+        let (lookup, bytes) = cache.get(S::NAME, &key);
+        if let Some(out) = bytes.and_then(|b| (kept.decode)(&b).ok()) {
+            return Ok((Arc::new(out), Source::Cached));
+        }
+        if lookup != Lookup::Missing {
+            note(&format!(
+                "{}: the cached result in {} did not pass its checks; computing it again",
+                S::NAME,
+                cache.dir().display()
+            ));
+        }
+        let out = self.compute(bench, observe)?;
+        let stored = (kept.encode)(&out)
+            .map_err(std::io::Error::other)
+            .and_then(|bytes| cache.put(S::NAME, &key, &bytes));
+        if let Err(e) = stored {
+            note(&format!(
+                "{}: could not keep the result in {} ({e}); it is computed every time",
+                S::NAME,
+                cache.dir().display()
+            ));
+            return Ok((Arc::new(out), Source::Computed));
+        }
+        Ok((Arc::new(out), Source::Stored))
     }
 }
 

@@ -12,10 +12,10 @@ use super::result::{switches, PeerRow};
 use super::PeerError;
 use physics::dispatch::sliding_model;
 use physics::scene::Scene;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// The run split at the peer's first relock.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, schemars::JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 pub struct RelockSplit {
     /// The peer's relock: its first row rolling after sliding (s).
     pub relock: f64,

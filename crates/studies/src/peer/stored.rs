@@ -10,7 +10,7 @@ use super::relock::{split, RelockSplit};
 use super::result::parse;
 use super::PeerError;
 use physics::scene::Scene;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// One stored peer run.
 #[derive(Debug, Clone, Copy)]
@@ -157,7 +157,7 @@ pub const STORED: [StoredRun; 11] = [
 ];
 
 /// The largest differences of one peer run from this tool's.
-#[derive(Debug, Clone, PartialEq, Serialize, schemars::JsonSchema)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 pub struct Differences {
     /// Print times compared.
     pub rows: usize,
@@ -225,7 +225,7 @@ impl Differences {
 }
 
 /// One stored run compared with this tool.
-#[derive(Debug, Clone, PartialEq, Serialize, schemars::JsonSchema)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 pub struct StoredComparison {
     /// Its folder's name.
     pub name: String,

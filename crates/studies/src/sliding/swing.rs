@@ -15,7 +15,7 @@
 //!   and does not settle, whatever its least tilt.
 
 use numerics::oscillation::bisect;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// The tilt is fallen once this far below the start's steady tilt (deg).
 pub const FALLEN: f64 = 5.0;
@@ -23,7 +23,7 @@ pub const FALLEN: f64 = 5.0;
 pub const DECAY: f64 = 0.5;
 
 /// A run's tilt over the whole run (module documentation).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, schemars::JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 pub struct Swing {
     /// Least tilt over the run (deg).
     pub min_deg: f64,
