@@ -73,7 +73,7 @@ pub fn integrate(
     scene: &Scene,
     sample: Option<f64>,
 ) -> Result<SlidingRun, SettingsError> {
-    run_model(model, scene, sample, None, false)
+    run_model(model, scene, sample, None, true)
 }
 
 /// [`integrate`] with its samples from the dense output when `dense`, otherwise each
@@ -95,7 +95,7 @@ pub fn integrate_into(
     sample: Option<f64>,
     on_point: PointSink<'_, Mode, 14>,
 ) -> Result<SlidingRun, SettingsError> {
-    run_model(model, scene, sample, Some(on_point), false)
+    run_model(model, scene, sample, Some(on_point), true)
 }
 
 /// [`integrate`], handing every point to `on_point` instead of holding it.
