@@ -20,6 +20,11 @@ component, relative to the largest magnitude that component reaches on the refer
 final time). It prints the machine, the date, a work-precision table and the ratios at equal
 error, and writes the table (JSON) and a figure (error against time and against evaluations).
 
+Then the same with sampling on both sides: the tool's scene run as `simulate` runs it, one row
+every millisecond with its recorded quantities (the Rust side's `sampled` part), against
+solve_ivp DOP853 with `t_eval` on the same grid; each side's largest error in alpha over the
+rows against the same reference, the ratio of times at equal alpha error.
+
 Usage: compare.py [--quick] [--out DIR] [--repeats N]
 """
 
@@ -147,6 +152,60 @@ def python_runs(data, repeats, budget):
     return rows
 
 
+def sampled_runs(data, repeats, budget):
+    """solve_ivp DOP853 with t_eval on the Rust side's grid, timed with its sampling, and its
+    largest error in alpha over the rows against the Rust side's reference."""
+    import numpy as np
+
+    sampled = data["sampled"]
+    grid = np.array(sampled["t"])
+    alpha_ref = np.array(sampled["alpha"])
+    s = data["start"]
+    y0 = [s["alpha"], s["alpha_dot"], s["precession"], s["spin"]]
+    rows = []
+    for e in range(5, 14):
+        rtol = 10.0 ** -e
+        atol = data["atol_per_rtol"] * rtol
+        f = plain_rhs(data["disk"], [0])
+
+        def ivp(f=f, rtol=rtol, atol=atol):
+            return solve_ivp(f, (0.0, data["t_end"]), y0, method="DOP853", rtol=rtol,
+                             atol=atol, t_eval=grid)
+
+        wall, n, sol = timed(ivp, repeats, budget)
+        if not sol.success or len(sol.t) != len(grid):
+            continue
+        rows.append({
+            "solver": "solve_ivp DOP853 t_eval", "rtol": rtol, "atol": atol,
+            "evaluations": int(sol.nfev), "wall_seconds": wall, "runs": n,
+            "alpha_error": float(np.max(np.abs(sol.y[0] - alpha_ref))),
+        })
+    return rows
+
+
+def sampled_table(data, rows):
+    ours = [dict(p, final_error=p["alpha_error"]) for p in data["sampled"]["rust"]]
+    print()
+    print(f"sampled every {data['sampled']['sample']} s ({len(data['sampled']['t'])} rows), "
+          f"error = largest |alpha - reference| over the rows")
+    print(f"{'solver':<26}{'rtol':>7}{'wall [s]':>11}{'alpha error':>13}{'tool time@err':>15}"
+          f"{'time ratio':>12}")
+    for p in ours:
+        print(f"{'rolling-disk simulate':<26}{p['rtol']:>7.0e}{p['wall_seconds']:>11.3e}"
+              f"{p['alpha_error']:>13.1e}")
+    for r in rows:
+        wt = at_error(ours, r["alpha_error"], "wall_seconds")
+        r["tool_seconds_at_equal_error"] = wt
+        r["time_ratio_at_equal_error"] = r["wall_seconds"] / wt
+        print(f"{r['solver']:<26}{r['rtol']:>7.0e}{r['wall_seconds']:>11.3e}"
+              f"{r['alpha_error']:>13.1e}{wt:>15.3e}{r['time_ratio_at_equal_error']:>11.1f}x")
+    sel = [r for r in rows if any(abs(r["rtol"] - x) < 1e-3 * x for x in RTOLS)]
+    if sel:
+        ratios = ", ".join(f"{r['time_ratio_at_equal_error']:.0f}x at rtol {r['rtol']:.0e}"
+                           for r in sel)
+        print(f"solve_ivp DOP853 sampled, at equal alpha error: {ratios} the tool's time")
+
+
 def at_error(points, err, key):
     """`key` (wall_seconds or evaluations) of a solver at final error `err`: log-log
     interpolation along its measured curve made monotone (the cheapest run reaching each
@@ -254,9 +313,14 @@ def main():
           f"the chained right-hand side, {min(over):.2f} to {max(over):.2f} times the throughput "
           f"figure (target <= 0.5)")
 
+    sampled_rows = sampled_runs(data, repeats, budget)
+    sampled_table(data, sampled_rows)
+
     os.makedirs(args.out, exist_ok=True)
+    sampled = {k: v for k, v in data["sampled"].items() if k not in ("t", "alpha")}
     with open(os.path.join(args.out, "compare.json"), "w") as f:
         json.dump({"machine": info, "reference": ref, "rust": rust, "python": rows,
+                   "sampled": dict(sampled, python=sampled_rows),
                    "rhs_nanoseconds": ns, "rhs_latency_nanoseconds": lat}, f, indent=1)
     fig_path = os.path.join(args.out, "work_precision.svg")
     figure(rust, rows, fig_path)

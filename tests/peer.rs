@@ -281,7 +281,9 @@ fn scenes_the_peer_cannot_run_are_refused_with_a_fix() {
 
 /// The accuracy both integrators reach: the fast slide run by both at rtol = atol = 1e-6, 1e-8 and
 /// 1e-10 (the peer with $\varepsilon = 10^{-7}$ m/s, so that only the integrators differ). The
-/// difference falls with the tolerance until it meets the peer's printed digits.
+/// difference falls with the tolerance until it meets the peer's printed digits: this tool's
+/// sampled run integrates at the tightened tolerances of its dense output, so it meets them at
+/// rtol 1e-8 already, and 1e-8 and 1e-10 differ from the peer alike.
 #[test]
 fn tightening_both_tolerances_closes_the_gap_to_the_printed_digits() {
     let d = dir("thick-sliding");
@@ -300,7 +302,7 @@ fn tightening_both_tolerances_closes_the_gap_to_the_printed_digits() {
         tilt.push(c.tilt.value);
     }
     assert!(
-        tilt[0] > 10.0 * tilt[1] && tilt[1] > 10.0 * tilt[2],
+        tilt[0] > 10.0 * tilt[1] && (tilt[1] - tilt[2]).abs() < 0.1 * tilt[2],
         "{tilt:?}"
     );
     assert!(tilt[2] < 1e-7);

@@ -7,6 +7,7 @@ pub mod rhs;
 pub mod sampling;
 pub mod scenes;
 pub mod scipy_reference;
+pub mod scipy_sampled;
 pub mod sliding;
 pub mod solver;
 pub mod solver_steps;

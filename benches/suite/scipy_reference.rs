@@ -8,7 +8,8 @@
 //! ```
 //! Options: `--scene NAME` (default `benchmark`), `--drift` (1e4 precession periods at DOP853
 //! rtol 1e-13, and 1e5 periods), `--study` (also the whole work-precision study, RK4
-//! included), `--quick` (each point timed once).
+//! included), `--quick` (each point timed once). The document's `sampled` part is the scene run
+//! as `simulate` runs it, sampled ([`super::scipy_sampled`]).
 
 use physics::model::rolling::Rolling;
 use physics::model::{Extras, Model};
@@ -77,6 +78,8 @@ pub fn main() {
         .map(|&a| json!(measure_preset(&scene, a, &reference, &timing).expect("preset")))
         .collect();
 
+    let sampled = super::scipy_sampled::sweep(&scene, &timing);
+
     let mut drift = Vec::new();
     if flag("--drift") {
         let s = Settings::dop853(1e-13, 1e-15);
@@ -117,6 +120,7 @@ pub fn main() {
         "rhs_latency_nanoseconds": rhs_latency_ns,
         "rust": rust,
         "presets": presets,
+        "sampled": sampled,
         "drift": drift,
         "study": study,
     });

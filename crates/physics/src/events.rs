@@ -118,9 +118,9 @@ where
     /// the first point and the last.
     pub on_point: Option<PointSink<'a, H::Mode, N>>,
     /// Take DOP853's samples from each segment's dense output instead of re-integrating each
-    /// from the step before it (see [`Problem::dense_samples`]). Off by default: the tightened
-    /// tolerances of a dense run can cost a stiff segment (a regularized friction at rtol
-    /// 1e-12) more steps than its limit where the tolerance asked does not.
+    /// from the step before it (see [`Problem::dense_samples`]); on by default. Each segment
+    /// then integrates at the tightened tolerances of a dense run, so that its samples are as
+    /// accurate as the settings ask, after a switch as before it (`dense_error`).
     pub dense_samples: bool,
 }
 
@@ -144,7 +144,7 @@ impl<'a, H: Hybrid<N>, const N: usize> HybridProblem<'a, H, N> {
             sample: None,
             max_switches: 10_000,
             on_point: None,
-            dense_samples: false,
+            dense_samples: true,
         }
     }
 }

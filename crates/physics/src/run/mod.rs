@@ -52,11 +52,10 @@ fn record_run(
     sink: RowSink<'_>,
     dense: bool,
 ) -> Result<Run, SettingsError> {
-    // The sliding model's samples are re-integrated (see `HybridProblem::dense_samples`): at
-    // the tightened tolerances of dense samples a stiff regularized friction can exceed the
-    // step limit where the tolerance asked does not.
+    // The sliding model samples each segment of its hybrid run on that segment's dense output
+    // (`HybridProblem::dense_samples`).
     if scene.model.has_coulomb_friction() {
-        return sliding::run_streamed(scene, sink, false);
+        return sliding::run_streamed(scene, sink, dense);
     }
     dispatch(
         scene,

@@ -7,7 +7,7 @@ use crate::dispatch::sliding_model;
 use crate::events::PointSink;
 use crate::model::sliding::contact_events::contact_events;
 use crate::model::sliding::{Flow, Mode, Sliding, SlidingRun};
-use crate::model::{Model, Quantity};
+use crate::model::Model;
 use crate::scene::Scene;
 use crate::solve::{Event, SettingsError, State};
 use std::f64::consts::{FRAC_PI_2, PI};
@@ -28,16 +28,9 @@ pub fn run_streamed(scene: &Scene, sink: RowSink<'_>, dense: bool) -> Result<Run
             mode: *mode,
         };
         // The energy once, for the row and for the largest change.
-        let energy = model.energy(y);
         row.clear();
         row.push(t);
-        for &q in &scene.record {
-            if q == Quantity::Energy {
-                row.push(energy);
-            } else {
-                flow.record(y, q, &mut row);
-            }
-        }
+        let energy = flow.record_row(y, &scene.record, &mut row);
         sink(&row);
         recorded += 1;
         energy_change = energy_change.max(((energy - e0) / e0).abs());
@@ -73,7 +66,7 @@ pub fn integrate(
     scene: &Scene,
     sample: Option<f64>,
 ) -> Result<SlidingRun, SettingsError> {
-    run_model(model, scene, sample, None, false)
+    run_model(model, scene, sample, None, true)
 }
 
 /// [`integrate`] with its samples from the dense output when `dense`, otherwise each
@@ -95,7 +88,7 @@ pub fn integrate_into(
     sample: Option<f64>,
     on_point: PointSink<'_, Mode, 14>,
 ) -> Result<SlidingRun, SettingsError> {
-    run_model(model, scene, sample, Some(on_point), false)
+    run_model(model, scene, sample, Some(on_point), true)
 }
 
 /// [`integrate`], handing every point to `on_point` instead of holding it.

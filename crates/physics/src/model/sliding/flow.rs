@@ -29,6 +29,52 @@ impl Flow<'_> {
             .force
     }
 
+    /// Records `quantities` of `y` in order, as [`Model::record`] does one by one, with the
+    /// geometry made once for the row and the contact force (one contact problem) solved at
+    /// most once for it. Returns the energy, computed once whether it is recorded or not.
+    pub fn record_row(&self, y: &State<14>, quantities: &[Quantity], out: &mut Vec<f64>) -> f64 {
+        let s = self.snapshot(y);
+        let energy = self.model.energy_at(&s);
+        let mut force = None;
+        for &q in quantities {
+            if q == Quantity::Energy {
+                out.push(energy);
+            } else {
+                self.record_with(&s, y, q, &mut force, out);
+            }
+        }
+        energy
+    }
+
+    /// [`Model::record`] on the geometry `s` of `y`, the contact force solved into `force`
+    /// when a quantity needs it and it is not there yet.
+    fn record_with(
+        &self,
+        s: &Snapshot,
+        y: &State<14>,
+        q: Quantity,
+        force: &mut Option<Vector3<f64>>,
+        out: &mut Vec<f64>,
+    ) -> bool {
+        let mut contact =
+            || *force.get_or_insert_with(|| self.model.contact_force(&self.mode, s).force);
+        match q {
+            Quantity::Energy => out.push(self.model.energy_at(s)),
+            Quantity::Lz => {
+                let i = self.model.inertia();
+                out.push((s.rotation * i.component_mul(&s.omega_body)).z);
+            }
+            Quantity::NormalForce => out.push(contact().z),
+            Quantity::Friction => {
+                let f = contact();
+                out.extend_from_slice(&[f.dot(&s.r), f.dot(&s.e2)]);
+            }
+            Quantity::Dissipated => out.push(y[DISSIPATED]),
+            geometric => return s.record_geometry(geometric, out),
+        }
+        true
+    }
+
     /// The drift control added to $\dot{\mathbf v}$ in this mode.
     fn drift_correction(&self, s: &Snapshot) -> Vector3<f64> {
         let lambda = self.model.stabilisation;
@@ -84,22 +130,7 @@ impl Model<14> for Flow<'_> {
     }
 
     fn record(&self, y: &State<14>, q: Quantity, out: &mut Vec<f64>) -> bool {
-        let s = self.snapshot(y);
-        match q {
-            Quantity::Energy => out.push(self.model.energy_at(&s)),
-            Quantity::Lz => {
-                let i = self.model.inertia();
-                out.push((s.rotation * i.component_mul(&s.omega_body)).z);
-            }
-            Quantity::NormalForce => out.push(self.force(y).z),
-            Quantity::Friction => {
-                let f = self.force(y);
-                out.extend_from_slice(&[f.dot(&s.r), f.dot(&s.e2)]);
-            }
-            Quantity::Dissipated => out.push(y[DISSIPATED]),
-            geometric => return s.record_geometry(geometric, out),
-        }
-        true
+        self.record_with(&self.snapshot(y), y, q, &mut None, out)
     }
 
     /// The model's start state (rolling plus its start slip).

@@ -154,7 +154,7 @@ impl Sliding {
         sample: Option<f64>,
         stops: &'a dyn Fn() -> Vec<Event<'a, 14>>,
     ) -> Result<SlidingRun, SettingsError> {
-        self.run_into(y0, t_end, settings, sample, stops, None, false)
+        self.run_into(y0, t_end, settings, sample, stops, None, true)
     }
 
     /// [`Sliding::run`] handing every point to `on_point` as it is made instead of holding it

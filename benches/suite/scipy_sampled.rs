@@ -1,0 +1,111 @@
+//! The sampled side of `scripts/compare`: the benchmark scene run as `simulate` runs it, one
+//! row every [`SAMPLE`] seconds with the scene's recorded quantities
+//! ([`physics::run::run_streamed`], rows discarded), over a tolerance sweep, each run's error
+//! in $\alpha$ measured over every row against a reference sampled on the same grid. SciPy's
+//! `solve_ivp` is timed the same way by `scripts/compare.py` (its `t_eval` on this grid), and
+//! the two compared at equal error in $\alpha$, sampling included on both sides.
+
+use physics::run::run_streamed;
+use physics::scene::Scene;
+use physics::solve::{Method, Settings};
+use serde_json::{json, Value};
+use std::time::Instant;
+use studies::precision::Timing;
+
+/// The sampling interval of both sides (s): 10,001 rows over the benchmark scene's 10 s.
+pub const SAMPLE: f64 = 1e-3;
+
+/// The reference's tolerances: DOP853 at rtol 1e-14, each row landed on by its own step
+/// rather than interpolated, so that the reference carries no interpolant's error.
+const REFERENCE_RTOL: f64 = 1e-14;
+
+/// `scene` with its sampling and solver settings replaced.
+fn sampled(scene: &Scene, settings: Settings) -> Scene {
+    let mut s = scene.clone();
+    s.sample = Some(SAMPLE);
+    s.settings = settings;
+    s
+}
+
+/// The times and $\alpha$ of every row of a run of `scene` (the scene records $\alpha$
+/// first).
+fn alpha_rows(scene: &Scene) -> (Vec<f64>, Vec<f64>) {
+    let (mut t, mut alpha) = (Vec::new(), Vec::new());
+    let mut sink = |row: &[f64]| {
+        t.push(row[0]);
+        alpha.push(row[1]);
+    };
+    run_streamed(scene, None, &mut sink).expect("the benchmark scene runs");
+    (t, alpha)
+}
+
+/// The reference's $\alpha$ on the grid: each row landed on by the integration
+/// (`Problem::dense_samples` off), at [`REFERENCE_RTOL`], atol 1e-2 rtol.
+fn reference(scene: &Scene) -> (Vec<f64>, Vec<f64>) {
+    use physics::dispatch::{dispatch, problem, Visit};
+    use physics::model::Model;
+    use physics::solve::solve_with;
+    struct Landed;
+    impl Visit for Landed {
+        type Out = (Vec<f64>, Vec<f64>);
+        fn visit<M: Model<N>, const N: usize>(self, model: &M, scene: &Scene) -> Self::Out {
+            let y0 = model.state(&scene.start);
+            let mut p = problem(model, scene, y0, scene.stop.time).sampled(SAMPLE);
+            p.dense_samples = false;
+            let s = Settings::dop853(REFERENCE_RTOL, 1e-2 * REFERENCE_RTOL);
+            let sol = solve_with(p, &s, physics::solve::Engine::Own).expect("reference");
+            (sol.t, sol.y.iter().map(|y| y[0]).collect())
+        }
+    }
+    dispatch(scene, Landed)
+}
+
+/// The sweep: for DOP853 at rtol 1e-5 to 1e-13 (atol 1e-2 rtol), the median wall time of a
+/// sampled run (rows and recorded quantities made, then discarded) and its largest error in
+/// $\alpha$ over the rows; with the reference's grid and $\alpha$ for the Python side.
+pub fn sweep(scene: &Scene, timing: &Timing) -> Value {
+    let (t_ref, alpha_ref) = reference(scene);
+    let mut points = Vec::new();
+    for e in 5..=13 {
+        let rtol = 10f64.powi(-e);
+        let settings = Settings {
+            method: Method::Dop853,
+            rtol,
+            atol: 1e-2 * rtol,
+            ..Settings::default()
+        };
+        let s = sampled(scene, settings);
+        let (t, alpha) = alpha_rows(&s);
+        assert_eq!(t.len(), t_ref.len(), "the same grid on both runs");
+        let alpha_error = alpha
+            .iter()
+            .zip(&alpha_ref)
+            .map(|(a, r)| (a - r).abs())
+            .fold(0.0, f64::max);
+        let started = Instant::now();
+        let mut times = Vec::new();
+        while times.len() < timing.max_runs.max(1)
+            && (times.len() < timing.min_runs
+                || started.elapsed().as_secs_f64() < timing.budget_seconds)
+        {
+            let t0 = Instant::now();
+            let mut rows = 0u64;
+            let mut sink = |row: &[f64]| rows += std::hint::black_box(row).len() as u64;
+            std::hint::black_box(run_streamed(&s, None, &mut sink).expect("runs"));
+            times.push(t0.elapsed().as_secs_f64());
+        }
+        times.sort_by(f64::total_cmp);
+        points.push(json!({
+            "method": "dop853", "rtol": rtol, "atol": settings.atol,
+            "rows": t.len(), "wall_seconds": times[times.len() / 2], "runs": times.len(),
+            "alpha_error": alpha_error,
+        }));
+    }
+    json!({
+        "sample": SAMPLE,
+        "reference_rtol": REFERENCE_RTOL,
+        "t": t_ref,
+        "alpha": alpha_ref,
+        "rust": points,
+    })
+}
