@@ -179,30 +179,6 @@ fn bad_settings_are_refused_with_a_reason() {
     assert!(solve(p(), &rk).unwrap_err().to_string().contains("steps"));
 }
 
-/// The restricted three-body problem of Arenstorf (Hairer, Norsett and Wanner, *Solving ODEs I*,
-/// section II.0): the orbit from this start is periodic with period
-/// 17.0652165601579625588917206249, a test problem Hairer published with `dop853`.
-struct Arenstorf;
-
-#[allow(clippy::excessive_precision)]
-const ARENSTORF_PERIOD: f64 = 17.065_216_560_157_962_558_891_720_624_9;
-
-impl Dynamics<4> for Arenstorf {
-    fn rhs(&self, y: &State<4>, dy: &mut State<4>) {
-        let mu = 0.012277471;
-        let mu1 = 1.0 - mu;
-        let d1 = ((y[0] + mu).powi(2) + y[1] * y[1]).powf(1.5);
-        let d2 = ((y[0] - mu1).powi(2) + y[1] * y[1]).powf(1.5);
-        dy[0] = y[2];
-        dy[1] = y[3];
-        dy[2] = y[0] + 2.0 * y[3] - mu1 * (y[0] + mu) / d1 - mu * (y[0] - mu1) / d2;
-        dy[3] = y[1] - 2.0 * y[2] - mu1 * y[1] / d1 - mu * y[1] / d2;
-    }
-}
-
-fn arenstorf_start() -> State<4> {
-    State::<4>::new(0.994, 0.0, 0.0, -2.001_585_106_379_082_5)
-}
 
 #[test]
 fn own_dop853_closes_the_arenstorf_orbit() {
@@ -210,10 +186,10 @@ fn own_dop853_closes_the_arenstorf_orbit() {
     // close approaches to the moon amplify the local errors by about 1e4).
     let mut last_gap = f64::INFINITY;
     for (rtol, bound) in [(1e-6, 1e-1), (1e-9, 1e-4), (1e-12, 1e-7)] {
-        let p = Problem::new(&Arenstorf, 0.0, arenstorf_start(), ARENSTORF_PERIOD);
+        let p = Problem::new(&Arenstorf, 0.0, start(), PERIOD);
         let sol = solve(p, &Settings::dop853(rtol, rtol)).unwrap();
         assert_eq!(sol.ending, Ending::TimeReached);
-        let gap = (sol.last().1 - arenstorf_start()).amax();
+        let gap = (sol.last().1 - start()).amax();
         eprintln!(
             "Arenstorf, rtol = atol = {rtol:.0e}: gap after one period {gap:.2e}, {} evaluations, {} accepted, {} rejected",
             sol.stats.evaluations, sol.stats.accepted, sol.stats.rejected

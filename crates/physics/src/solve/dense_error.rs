@@ -19,24 +19,7 @@ use crate::scene::{builtin, Scene};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
-/// Arenstorf's restricted three-body orbit (Hairer, Norsett and Wanner, section II.0): steps
-/// that vary over four decades along one period.
-struct Arenstorf;
-
-impl Dynamics<4> for Arenstorf {
-    fn rhs(&self, y: &State<4>, dy: &mut State<4>) {
-        let mu = 0.012277471;
-        let mu1 = 1.0 - mu;
-        let d1 = ((y[0] + mu).powi(2) + y[1] * y[1]).powf(1.5);
-        let d2 = ((y[0] - mu1).powi(2) + y[1] * y[1]).powf(1.5);
-        dy[0] = y[2];
-        dy[1] = y[3];
-        dy[2] = y[0] + 2.0 * y[3] - mu1 * (y[0] + mu) / d1 - mu * (y[0] - mu1) / d2;
-        dy[3] = y[1] - 2.0 * y[2] - mu1 * y[1] / d1 - mu * y[1] / d2;
-    }
-}
-
-const PERIOD: f64 = 17.065_216_560_157_963;
+use super::arenstorf::{start as arenstorf_start, Arenstorf, PERIOD};
 
 /// The largest difference over a run's steps from `y0` over `span` between an interpolant and
 /// landing runs, in the scale of the tolerance asked (`rtol`, `atol` = `rtol`): (dense output,
@@ -105,7 +88,7 @@ const BOUND: f64 = 3.0;
 
 #[test]
 fn the_dense_output_is_as_accurate_as_the_tolerance_asks() {
-    let y0 = State::<4>::new(0.994, 0.0, 0.0, -2.001_585_106_379_082_5);
+    let y0 = arenstorf_start();
     for rtol in [1e-6, 1e-9, 1e-12] {
         let (dense, hermite) = worst_errors(&Arenstorf, y0, PERIOD, rtol, 4, true);
         eprintln!("rtol {rtol:.0e}: dense output {dense:.3}, cubic Hermite {hermite:.3e}");

@@ -19,6 +19,7 @@
 //! tableau has $c_{12} = c_{13} = 0$ where Hairer's has 1); a problem that depends on time
 //! carries it as a state ([`WithTime`] does that for you).
 
+pub mod arenstorf;
 #[cfg(test)]
 mod dense_error;
 mod dop853;
