@@ -176,28 +176,104 @@ fn the_heading_between_sampled_rows_is_the_solvers() {
     );
 }
 
-/// A Core Audio (CAF) or Ogg Opus file, which no decoder here reads, is named as what its bytes
-/// say it is, with the conversion to do; never taken for a CSV or a damaged file of another kind.
+/// 16-bit big-endian PCM samples of a signal of full scale 1, interleaved over `ch` channels
+/// (each channel the signal times its number).
+fn pcm16_be(v: &[f64], ch: usize) -> Vec<u8> {
+    let mut out = Vec::new();
+    for x in v {
+        for c in 1..=ch {
+            let s = (x * c as f64 / ch as f64 * 32767.0).round() as i16;
+            out.extend_from_slice(&s.to_be_bytes());
+        }
+    }
+    out
+}
+
+/// An AIFF file as its specification lays it out: `FORM`, `COMM` (channels, frames, 16 bits,
+/// the rate as an 80-bit extended float) and `SSND`.
+fn aiff_bytes(v: &[f64], rate: u32, ch: usize) -> Vec<u8> {
+    let data = pcm16_be(v, ch);
+    let e = 31 - rate.leading_zeros();
+    let mut comm = (ch as u16).to_be_bytes().to_vec();
+    comm.extend_from_slice(&(v.len() as u32).to_be_bytes());
+    comm.extend_from_slice(&16u16.to_be_bytes());
+    comm.extend_from_slice(&(16383 + e as u16).to_be_bytes());
+    comm.extend_from_slice(&(u64::from(rate) << (63 - e)).to_be_bytes());
+    let mut body = b"AIFF".to_vec();
+    body.extend_from_slice(b"COMM");
+    body.extend_from_slice(&(comm.len() as u32).to_be_bytes());
+    body.extend_from_slice(&comm);
+    body.extend_from_slice(b"SSND");
+    body.extend_from_slice(&(data.len() as u32 + 8).to_be_bytes());
+    body.extend_from_slice(&[0; 8]);
+    body.extend_from_slice(&data);
+    let mut file = b"FORM".to_vec();
+    file.extend_from_slice(&(body.len() as u32).to_be_bytes());
+    file.extend_from_slice(&body);
+    file
+}
+
+/// A Core Audio file as Apple's specification lays it out: `caff` version 1, a `desc` chunk
+/// (rate, `lpcm`, big-endian integers of 16 bits) and a `data` chunk.
+fn caf_bytes(v: &[f64], rate: u32, ch: usize) -> Vec<u8> {
+    let data = pcm16_be(v, ch);
+    let mut file = b"caff\x00\x01\x00\x00desc".to_vec();
+    file.extend_from_slice(&32i64.to_be_bytes());
+    file.extend_from_slice(&f64::from(rate).to_be_bytes());
+    file.extend_from_slice(b"lpcm");
+    file.extend_from_slice(&0u32.to_be_bytes());
+    for n in [2 * ch as u32, 1, ch as u32, 16] {
+        file.extend_from_slice(&n.to_be_bytes());
+    }
+    file.extend_from_slice(b"data");
+    file.extend_from_slice(&(data.len() as i64 + 4).to_be_bytes());
+    file.extend_from_slice(&0u32.to_be_bytes());
+    file.extend_from_slice(&data);
+    file
+}
+
+/// AIFF and Core Audio (CAF) files are read by their content, whatever their name, and give the
+/// samples written, channel by channel; an Ogg Opus file, which no decoder here reads, is named
+/// as what its bytes say it is, with the conversion to do.
 #[test]
-fn caf_and_opus_are_named_by_their_bytes() {
-    let mut caf = b"caff\x00\x01\x00\x00desc".to_vec();
-    caf.resize(200, 0);
+fn aiff_and_caf_are_read_and_opus_is_named_by_its_bytes() {
+    let v: Vec<f64> = (0..4410).map(|j| 0.5 * (j as f64 * 0.07).sin()).collect();
+    for (bytes, what) in [
+        (aiff_bytes(&v, 44_100, 2), "AIFF"),
+        (caf_bytes(&v, 44_100, 2), "Core Audio (CAF)"),
+    ] {
+        for (k, gain) in [(1usize, 0.5), (2, 1.0)] {
+            let r = parse_recording(bytes.clone(), "take1", Channels::One(k)).unwrap();
+            assert!(r.info.format.starts_with(what), "{}", r.info);
+            assert_eq!(
+                (r.info.sample_rate, r.info.channels, r.trace.v.len()),
+                (44_100, 2, v.len()),
+                "{}",
+                r.info
+            );
+            let err = r
+                .trace
+                .v
+                .iter()
+                .zip(&v)
+                .map(|(a, b)| (a - gain * b).abs())
+                .fold(0.0, f64::max);
+            assert!(err < 1.0 / 32767.0, "{what} channel {k}: {err}");
+        }
+    }
     let mut opus = b"OggS\x00\x02".to_vec();
     opus.resize(28, 0);
     opus.extend_from_slice(b"OpusHead\x01\x01");
     opus.resize(200, 0);
-    for (bytes, what) in [(caf, "Core Audio (CAF)"), (opus, "Ogg Opus")] {
-        let e = parse_recording(bytes, "take1", Channels::Mix)
-            .unwrap_err()
-            .to_string();
-        println!("{e}");
-        assert!(
-            e.starts_with(&format!(
-                "take1: {what} recording: this tool has no decoder for it"
-            )) && e.contains("WAV or FLAC"),
-            "{e}"
-        );
-    }
+    let e = parse_recording(opus, "take1", Channels::Mix)
+        .unwrap_err()
+        .to_string();
+    println!("{e}");
+    assert!(
+        e.starts_with("take1: Ogg Opus recording: this tool has no Opus decoder")
+            && e.contains("ffmpeg -i FILE.opus FILE.wav"),
+        "{e}"
+    );
 }
 
 /// A file whose content is no format read is refused naming its first bytes and the formats

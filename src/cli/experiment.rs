@@ -230,11 +230,13 @@ enum Recording<'a> {
     Stdin(Vec<u8>),
 }
 
-/// Whether `bytes` begin as a sound file does (RIFF/RF64 WAV, FLAC, Ogg, CAF, MP3 with its ID3
+/// Whether `bytes` begin as a sound file does (RIFF/RF64 WAV, FLAC, Ogg, CAF, AIFF, MP3 with its ID3
 /// tag or a frame's sync bits, raw AAC, M4A/MP4): a scope CSV is text and begins with none of
 /// them.
 fn sound_bytes(bytes: &[u8]) -> bool {
-    let magic: [&[u8]; 7] = [b"RIFF", b"RF64", b"RIFX", b"fLaC", b"OggS", b"ID3", b"caff"];
+    let magic: [&[u8]; 8] = [
+        b"RIFF", b"RF64", b"RIFX", b"fLaC", b"OggS", b"ID3", b"caff", b"FORM",
+    ];
     magic.iter().any(|m| bytes.starts_with(m))
         || bytes.first() == Some(&0xFF)
         || bytes.get(4..8) == Some(b"ftyp".as_slice())

@@ -17,7 +17,8 @@ pub const MAX_CHANNELS: usize = 8;
 /// Which channel of a multi-channel recording is analysed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub enum Channels {
-    /// The channels' mean.
+    /// The channels' mean, each aligned in time with the first
+    /// ([`stereo`](crate::formats::stereo)).
     Mix,
     /// One channel, counted from 1.
     One(usize),
@@ -32,7 +33,8 @@ pub struct RecordingInfo {
     pub sample_rate: u32,
     /// Channels in the file.
     pub channels: usize,
-    /// The channel analysed ("mix of 2", "channel 1 of 2", "mono").
+    /// The channel analysed ("mix of 2", "mix of 2, channel 2 advanced by 0.771 ms",
+    /// "channel 1 of 2", "mono").
     pub used: String,
     /// Samples per channel.
     pub samples: usize,
@@ -155,12 +157,28 @@ pub(crate) fn mix(
     let (v, used): (Vec<f64>, String) = match channels {
         Channels::Mix if n_ch == 1 => (interleaved, "mono".into()),
         Channels::Mix => {
-            let v: Vec<f64> = interleaved
-                .chunks_exact(n_ch)
-                .map(|c| c.iter().sum::<f64>() / n_ch as f64)
-                .collect();
+            let d = crate::formats::stereo::delays(&interleaved, n_ch, rate);
+            let v = crate::formats::stereo::aligned_mean(&interleaved, n_ch, &d);
             refuse_cancelling(&interleaved, &v, n_ch, &format, file)?;
-            (v, format!("mix of {n_ch}"))
+            let shifts: Vec<String> = d
+                .iter()
+                .enumerate()
+                .filter(|(_, &s)| s != 0)
+                .map(|(c, &s)| {
+                    format!(
+                        "channel {} {} {:.3} ms",
+                        c + 1,
+                        if s > 0 { "advanced by" } else { "delayed by" },
+                        1e3 * s.unsigned_abs() as f64 / f64::from(rate)
+                    )
+                })
+                .collect();
+            let used = if shifts.is_empty() {
+                format!("mix of {n_ch}")
+            } else {
+                format!("mix of {n_ch}, {}", shifts.join(", "))
+            };
+            (v, used)
         }
         Channels::One(k) if (1..=n_ch).contains(&k) => (
             interleaved.chunks_exact(n_ch).map(|c| c[k - 1]).collect(),

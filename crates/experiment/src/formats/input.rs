@@ -65,7 +65,7 @@ pub fn read_bounded(path: &Path, limit: u64) -> Result<Vec<u8>, ExperimentError>
 
 /// The formats a recording is read in, in words, for messages.
 pub const FORMATS_READ: &str = "a scope CSV (text), or sound as WAV, FLAC, Ogg Vorbis, MP3, \
-                                M4A/AAC or raw AAC (ADTS)";
+                                M4A/AAC, raw AAC (ADTS), AIFF or CAF";
 
 /// The first bytes of a file in words: up to 8 in hexadecimal, and as text where printable
 /// (`52 49 46 46 ... ("RIFF....")`).

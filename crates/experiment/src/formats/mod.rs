@@ -2,7 +2,7 @@
 //! through which a file is read ([`input`]), a scope's CSV ([`csv`], the instruments' layouts in
 //! [`scope_layout`], the cells and units both read in [`cells`]), sound as WAV ([`wav`]) and
 //! as every other format ([`recording`], with the MP4 edit list in [`mp4_edit`]), one channel at
-//! its rate ([`channel`]), and a synthetic sound encoded ([`sound_file`]).
+//! its rate ([`channel`]), several mixed with their delays ([`stereo`]), and a synthetic sound encoded ([`sound_file`]).
 
 pub mod cells;
 pub mod channel;
@@ -12,4 +12,5 @@ pub mod mp4_edit;
 pub mod recording;
 pub mod scope_layout;
 pub mod sound_file;
+pub mod stereo;
 pub mod wav;

@@ -1,6 +1,6 @@
 //! A sound recording as a person has it: WAV (through `hound`, 8-32 bit integer or 32-bit float)
-//! or a compressed file a phone or an editor writes (FLAC, MP3, Ogg Vorbis, M4A/AAC, through the
-//! pure-Rust `symphonia` decoders), read into a [`Trace`] of full-scale units with what the file
+//! or a file a phone or an editor writes (FLAC, MP3, Ogg Vorbis, M4A/AAC, AIFF/AIFF-C, Core Audio
+//! CAF, through the pure-Rust `symphonia` decoders), read into a [`Trace`] of full-scale units with what the file
 //! is ([`RecordingInfo`]: format, rate, channels, length).
 //!
 //! The samples an encoder adds are left out: MP3's (its LAME header) and Ogg's by the decoder in
@@ -35,17 +35,23 @@ fn adts(bytes: &[u8]) -> bool {
     bytes.len() > 1 && bytes[0] == 0xFF && bytes[1] & 0xF6 == 0xF0
 }
 
-/// A sound format recognised by its first bytes that no decoder here reads: Core Audio (CAF)
-/// and Ogg Opus.
+/// A sound format recognised by its first bytes that no decoder here reads: Ogg Opus
+/// (`symphonia` 0.5 has no Opus decoder; the pure-Rust ones on crates.io, `opus-decoder` 0.1,
+/// `opus-pure` 0.2, `opus-rs` 0.1, are early releases not built in), refused with the
+/// conversion to make.
 fn unread(bytes: &[u8]) -> Option<&'static str> {
     let head = &bytes[..bytes.len().min(64)];
-    if head.starts_with(b"caff") {
-        Some("Core Audio (CAF)")
-    } else if head.starts_with(b"OggS") && head.windows(8).any(|w| w == b"OpusHead") {
+    if head.starts_with(b"OggS") && head.windows(8).any(|w| w == b"OpusHead") {
         Some("Ogg Opus")
     } else {
         None
     }
+}
+
+/// Whether the first bytes are an AIFF or AIFF-C file: an IFF `FORM` whose type is `AIFF` or
+/// `AIFC`.
+fn aiff(bytes: &[u8]) -> bool {
+    bytes.starts_with(b"FORM") && matches!(bytes.get(8..12), Some(b"AIFF" | b"AIFC"))
 }
 
 /// The container, by the file's first bytes.
@@ -55,6 +61,10 @@ fn container(bytes: &[u8]) -> Option<(&'static str, &'static str)> {
         Some(("WAV", "wav"))
     } else if head(b"fLaC") {
         Some(("FLAC", "flac"))
+    } else if aiff(bytes) {
+        Some(("AIFF", "aiff"))
+    } else if head(b"caff") {
+        Some(("Core Audio (CAF)", "caf"))
     } else if head(b"OggS") {
         Some(("Ogg", "ogg"))
     } else if bytes.len() > 8 && &bytes[4..8] == b"ftyp" {
@@ -80,14 +90,14 @@ pub fn read_recording(
 }
 
 /// Whether the file at `path` is a sound recording by its first bytes (WAV, FLAC, Ogg, MP3,
-/// M4A or raw AAC), whatever its name; `false` when it cannot be read (the reader then says why).
+/// M4A, raw AAC, AIFF or CAF), whatever its name; `false` when it cannot be read (the reader then says why).
 pub fn is_recording(path: &Path) -> bool {
     use std::io::Read;
     let mut head = [0u8; 12];
     let n = std::fs::File::open(path)
         .and_then(|f| f.take(12).read(&mut head))
         .unwrap_or(0);
-    container(&head[..n]).is_some() || head[..n].starts_with(b"caff")
+    container(&head[..n]).is_some()
 }
 
 /// Decodes a recording's bytes; `file` names them in errors.
@@ -100,8 +110,9 @@ pub fn parse_recording(
         return Err(refuse(
             file,
             what,
-            "this tool has no decoder for it".into(),
-            "convert it to WAV or FLAC (for example `ffmpeg -i FILE FILE.wav`) and analyse that",
+            "this tool has no Opus decoder".into(),
+            "convert it to WAV or FLAC, for example `ffmpeg -i FILE.opus FILE.wav`, and analyse \
+             the WAV",
         ));
     }
     let Some((format, ext)) = container(&bytes) else {
@@ -126,7 +137,7 @@ pub fn parse_recording(
     mix(interleaved, rate, n_ch, format, file, channels)
 }
 
-/// Decodes FLAC, Ogg Vorbis, MP3 or M4A/AAC bytes to interleaved full-scale samples.
+/// Decodes FLAC, Ogg Vorbis, MP3, M4A/AAC, AIFF or CAF bytes to interleaved full-scale samples.
 fn decode_compressed(
     bytes: Vec<u8>,
     file: &str,

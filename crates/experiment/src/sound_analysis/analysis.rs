@@ -280,8 +280,9 @@ pub fn analyze_sound_within(
 
 /// The pitch track of `trace`: with `settings`, and where that holds fewer than
 /// [`SOUND_MIN_FRAMES`] frames of the line (a spin of a few seconds of sound holds only a few
-/// search frames of the default length), with search frames halved down to 0.125 s, the track
-/// of most frames kept (the first error when none could be made).
+/// search frames of the default length), with search frames halved down to 0.125 s, and where
+/// none holds that many, the same lengths again at a signal-to-noise threshold [`WEAK_LINE`]
+/// times lower; the track of most frames kept (the first error when none could be made).
 fn track_of(trace: &Trace, settings: &TrackSettings) -> Result<FrequencyTrack, ExperimentError> {
     let mut best = frequency_track(trace, settings);
     let mut s = *settings;
@@ -295,8 +296,24 @@ fn track_of(trace: &Trace, settings: &TrackSettings) -> Result<FrequencyTrack, E
             best = shorter;
         }
     }
+    // A line too weak for `min_snr` in every frame length (a low line behind a phone's
+    // high-pass, a quiet spin in room noise) is looked for again at a third of it.
+    let mut weak = *settings;
+    weak.min_snr = settings.min_snr / WEAK_LINE;
+    while held(&best) < SOUND_MIN_FRAMES && weak.search > 0.125 - 1e-9 {
+        let again = frequency_track(trace, &weak);
+        if held(&again) > held(&best) {
+            best = again;
+        }
+        weak.search *= 0.5;
+        weak.max_frame = weak.max_frame.min(weak.search);
+    }
     best
 }
+
+/// How much lower the signal-to-noise threshold is where no frame length holds a line at the
+/// settings' own: a third (from 30 to 10 at the defaults, 10 dB over the noise per bin).
+const WEAK_LINE: f64 = 3.0;
 
 /// Eq 79's heading fitted to the phase of `trace` from `first` (s), started from the track's fit
 /// `fit` (covariance `cov`); the phase, or why it is not used, and the turns counted.
