@@ -52,7 +52,7 @@ pub const PAPER_FIGURES: [(&str, &str, &str); 8] = [
         "tek726",
         "1/Ω against t₀ − t on logarithmic axes for t₀ = 7.26 s, with straight lines (drawn, \
          not fitted) of eq 84's slope for several β; the paper reads β = 2 as fitting the whole \
-         sample and takes C^(−1/4) = 0.0055 s from this plot.",
+         sample and takes C^(−1/4) = 0.0055 s^(3/4) from this plot.",
     ),
     (
         "tek728",
