@@ -4,6 +4,7 @@
 pub mod atomic;
 pub mod input;
 pub mod inputs;
+pub mod kept;
 pub mod output;
 pub mod output_file;
 pub mod streamed;

@@ -14,7 +14,6 @@
 
 use sha2::{Digest, Sha256};
 use std::fs;
-use std::io::Write;
 use std::path::{Path, PathBuf};
 
 /// The entry format's version: changes whenever the header's layout or a payload's encoding
@@ -105,42 +104,15 @@ impl Cache {
     /// Stores `payload` under `study` and `key`, replacing any entry there, and removes the
     /// study's oldest entries beyond the few kept.
     pub fn put(&self, study: &str, key: &[u8; 32], payload: &[u8]) -> std::io::Result<()> {
-        fs::create_dir_all(&self.dir)?;
         let path = self.path(study, key);
-        let tmp = self
-            .dir
-            .join(format!(".{study}-{}.{}.tmp", hex(key), std::process::id()));
-        let written = (|| {
-            let mut f = fs::File::create(&tmp)?;
-            f.write_all(&entry(key, payload))?;
-            f.sync_all()?;
-            fs::rename(&tmp, &path)
-        })();
-        if written.is_err() {
-            let _ = fs::remove_file(&tmp);
-        }
-        written?;
-        self.prune(study, &path);
+        let name = path
+            .file_name()
+            .and_then(|n| n.to_str())
+            .unwrap_or_default();
+        files::kept::store(&self.dir, name, &entry(key, payload))?;
+        let own = |n: &str| is_entry_of(Path::new(n), study);
+        files::kept::prune(&self.dir, own, KEPT_PER_STUDY - 1, &path);
         Ok(())
-    }
-
-    /// Removes `study`'s entries beyond the [`KEPT_PER_STUDY`] most recently written, never
-    /// `keep`. Only files named as this module names entries are touched.
-    fn prune(&self, study: &str, keep: &Path) {
-        let Ok(dir) = fs::read_dir(&self.dir) else {
-            return;
-        };
-        let mut entries: Vec<(std::time::SystemTime, PathBuf)> = dir
-            .filter_map(Result::ok)
-            .map(|e| e.path())
-            .filter(|p| p != keep && is_entry_of(p, study))
-            .filter_map(|p| Some((fs::metadata(&p).ok()?.modified().ok()?, p)))
-            .collect();
-        entries.sort();
-        let excess = (entries.len() + 1).saturating_sub(KEPT_PER_STUDY);
-        for (_, p) in entries.into_iter().take(excess) {
-            let _ = fs::remove_file(p);
-        }
     }
 }
 
