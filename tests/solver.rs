@@ -1,5 +1,6 @@
 //! The solver layer against problems with known answers.
 
+use physics::solve::arenstorf::{start, Arenstorf, PERIOD};
 use physics::solve::{
     solve, solve_with, Dynamics, Ending, Engine, Event, Method, Problem, Settings, State, WithTime,
 };
@@ -178,7 +179,6 @@ fn bad_settings_are_refused_with_a_reason() {
     };
     assert!(solve(p(), &rk).unwrap_err().to_string().contains("steps"));
 }
-
 
 #[test]
 fn own_dop853_closes_the_arenstorf_orbit() {
