@@ -20,6 +20,19 @@
 //! and $\omega_c$'s uncertainty is carried into $\beta$'s and $t_0$'s by refitting at
 //! $\omega_c \pm \sigma_{\omega_c}$.
 //!
+//! **Taken out only where the record shows a high-pass.** A recording without one has
+//! $\omega_c = 0$; the fit, held to positive corners, still finds one in the splits' noise and in
+//! what other filters (a room's reverb, the disk's own harmonics) do to them, and far below a
+//! corner the lead nears $\pi$: a large, wrong correction at low pitch. So the lead is taken out
+//! only where the corner stands [`CORNER_SIGMAS`] of its own uncertainty above zero and its fit
+//! beats no high-pass at all ($\omega_c = 0$, no lead) by as many sigmas of the splits' own
+//! scatter ([`Corner::why_not_used`]), and where taking it out keeps the turns counted: a high-pass's lead
+//! lies between 0 and $\pi$ at every pitch, so it moves the heading's run from the first block to
+//! the last by less than half a turn, and a corrected fit whose count differs from the
+//! uncorrected one's by [`MAX_TURN_CHANGE`] or more has slipped a turn
+//! ([`phase_fit`](crate::sound_analysis::phase_fit)). Otherwise the heading is fitted as heard and
+//! the reason is stated.
+//!
 //! **The filter's form** is a second-order Butterworth high-pass's,
 //! $$\varphi(\omega) = \operatorname{atan2}\bigl(\sqrt2\,\omega\,\omega_c,\ \omega^2 - \omega_c^2\bigr),$$
 //! the biquad of a phone's audio path; far above its corner any high-pass's lead is
@@ -118,6 +131,38 @@ pub struct Corner {
     pub omega_c: f64,
     /// (rad/s)
     pub sigma: f64,
+    /// How far the corner's fit beats no high-pass at all, in sigmas:
+    /// $\sqrt{(\chi^2(0) - \chi^2(\hat\omega_c)) / (\chi^2(\hat\omega_c)/(n-1))}$, the splits'
+    /// $\chi^2$ scaled by its own residuals.
+    pub shown: f64,
+}
+
+/// How many of its own standard uncertainties a corner must stand above zero for its lead to be
+/// taken out.
+pub const CORNER_SIGMAS: f64 = 3.0;
+
+/// The change in the turns counted (turns) at and above which the lead is not taken out: half a
+/// turn, more than a high-pass's lead (between 0 and $\pi$) can move the heading's run.
+pub const MAX_TURN_CHANGE: f64 = 0.5;
+
+impl Corner {
+    /// Why the record does not show this corner (`None` when it stands [`CORNER_SIGMAS`] of its
+    /// uncertainty above zero).
+    pub fn why_not_used(&self) -> Option<String> {
+        if self.omega_c <= CORNER_SIGMAS * self.sigma {
+            Some(format!(
+                "it is within {CORNER_SIGMAS} of its sigmas of zero, so the record shows no high-pass"
+            ))
+        } else if self.shown.is_nan() || self.shown <= CORNER_SIGMAS {
+            Some(format!(
+                "it fits the harmonics' phases better than no high-pass by {:.1} sigmas, not \
+                 {CORNER_SIGMAS}, so the record shows none",
+                self.shown
+            ))
+        } else {
+            None
+        }
+    }
 }
 
 /// The rates (rad/s) of the law `p` at the blocks' centroids.
@@ -143,9 +188,12 @@ pub fn fit_corner(bl: &[Block], omega: &[f64]) -> Option<Corner> {
         .min_by(|a, b| chi2(*a).total_cmp(&chi2(*b)))?;
     let s = solve(&sp, &var, SVector::<f64, 1>::new(start), Scale::Stationary).ok()?;
     let sigma = s.cov[(0, 0)].sqrt();
+    let best = chi2(s.p[0]);
+    let shown = ((chi2(0.0) - best).max(0.0) / (best / (sp.y.len() - 1) as f64)).sqrt();
     (s.p[0].is_finite() && sigma.is_finite()).then_some(Corner {
         omega_c: s.p[0],
         sigma,
+        shown,
     })
 }
 
@@ -202,6 +250,52 @@ mod tests {
         assert!((l.beta - 2.0).abs() <= 1.96 * l.beta_sigma, "{a}");
         assert!((l.t0 - truth.t0).abs() <= 1.96 * l.t0_sigma, "{a}");
         assert!((a.fit.t0 - truth.t0).abs() > (l.t0 - truth.t0).abs(), "{a}");
+    }
+
+    /// The same sound without a high-pass: whatever corner the splits give, its lead is not
+    /// taken out (the record shows none), and the phase's fit holds the truth.
+    #[test]
+    fn without_a_high_pass_no_lead_is_taken_out() {
+        use crate::fit::plausibility::Plausibility;
+        use crate::sound_analysis::analysis::analyze_sound;
+        use crate::sound_analysis::track::TrackSettings;
+        use crate::synthetic::artifacts::Artifacts;
+        use crate::synthetic::law::Law;
+        use crate::synthetic::sound::{law_sound, Microphone};
+        let law = Law {
+            beta: 2.0,
+            c: 100f64.powi(4) * 7.0,
+        };
+        let s = law_sound(&law, &Microphone::phone(16_000, 3), &Artifacts::none()).unwrap();
+        let a = analyze_sound(&s, &TrackSettings::default(), &Plausibility::default()).unwrap();
+        let truth = s.truth.clone().unwrap();
+        let p = a.phase.as_ref().unwrap();
+        assert!(
+            p.corner.is_none() || p.corner_not_used.is_some(),
+            "{:?}\n{a}",
+            p.corner
+        );
+        assert_eq!((p.beta_high_pass, p.t0_high_pass), (0.0, 0.0), "{a}");
+        let l = a.law();
+        assert!((l.beta - 2.0).abs() <= 1.96 * l.beta_sigma, "{a}");
+        assert!((l.t0 - truth.t0).abs() <= 1.96 * l.t0_sigma, "{a}");
+    }
+
+    /// A corner within [`CORNER_SIGMAS`] of its sigmas of zero, or whose fit beats no
+    /// high-pass by no more than as many sigmas, is not shown by the record; one above both is.
+    #[test]
+    fn a_corner_is_used_only_above_its_sigmas() {
+        let at = |omega_c: f64, shown: f64| {
+            Corner {
+                omega_c,
+                sigma: 10.0,
+                shown,
+            }
+            .why_not_used()
+        };
+        assert!(at(CORNER_SIGMAS * 10.0, 10.0).is_some());
+        assert!(at(CORNER_SIGMAS * 10.0 + 1.0, 10.0).is_none());
+        assert!(at(CORNER_SIGMAS * 10.0 + 1.0, CORNER_SIGMAS).is_some());
     }
 
     /// The lead is 90 degrees at the corner, tends to 180 degrees far below and to

@@ -18,7 +18,10 @@
 //! **A phone's high-pass.** Its phase leads the heading by an amount that falls as the pitch
 //! rises; the harmonics' phases measure its corner apart from the law, each block's heading is
 //! corrected by the lead it holds, and the corner's uncertainty is carried into $\beta$'s and
-//! $t_0$'s ([`high_pass`](crate::sound_analysis::high_pass)).
+//! $t_0$'s ([`high_pass`](crate::sound_analysis::high_pass)). The lead is taken out only where
+//! the record shows a high-pass and the correction keeps the turns counted (the rule and its
+//! reason: [`high_pass::CORNER_SIGMAS`](crate::sound_analysis::high_pass::CORNER_SIGMAS) and
+//! [`high_pass::MAX_TURN_CHANGE`](crate::sound_analysis::high_pass::MAX_TURN_CHANGE)).
 //!
 //! **The law's own error.** The heading is refitted on the later half of the blocks; where
 //! $\beta$ or $t_0$ moves by more than [`DRIFT_SIGMAS`](crate::fit::law_stability::DRIFT_SIGMAS) of the half's uncertainty, the shift is
@@ -29,7 +32,7 @@ use crate::fit::band::Row;
 use crate::fit::eq84_85::phase;
 use crate::fit::law_stability::LawStability;
 use crate::fit::least_squares::{solve, FitError, Problem, Scale};
-use crate::sound_analysis::high_pass::{block_leads, fit_corner, rates};
+use crate::sound_analysis::high_pass::{block_leads, fit_corner, rates, Corner, MAX_TURN_CHANGE};
 use crate::sound_analysis::mains::hum::remove_hum_clear;
 use crate::sound_analysis::phase_blocks::{blocks, Block, BlockSettings, Samples};
 use nalgebra::SVector;
@@ -105,6 +108,9 @@ pub struct PhaseFit {
     /// The phone's high-pass corner $\omega_c/2\pi$ (Hz) read from the harmonics' phases and
     /// its standard uncertainty, when a harmonic above the fundamental was followed.
     pub corner: Option<(f64, f64)>,
+    /// Why the corner read is not taken out of the heading (`None` when it is, or when no
+    /// corner was read).
+    pub corner_not_used: Option<String>,
     /// What the corner's uncertainty makes of $\beta$'s and $t_0$'s (s): half the difference of
     /// the fits at $\omega_c \pm \sigma_{\omega_c}$; 0 without a corner.
     pub beta_high_pass: f64,
@@ -167,13 +173,31 @@ pub fn fit_phase(
         let bl = blocks(rec, &p, shift, (first, end), round == 0, settings);
         FitError::at_least("phase blocks", bl.len(), 12, "")?;
         let omega = rates(&bl, &p);
-        let corner = fit_corner(&bl, &omega);
         let leads = |wc: f64| block_leads(&bl, &omega, wc);
-        let lead = corner.map_or_else(|| vec![0.0; bl.len()], |c| leads(c.omega_c));
-        let (mut fit, p4) = fit_blocks(&bl, &p, shift, &lead)?;
+        let read = fit_corner(&bl, &omega);
+        let plain = fit_blocks(&bl, &p, shift, &vec![0.0; bl.len()])?;
+        let (corner, not_used, lead, (mut fit, p4)) = match read.map(|c| (c, c.why_not_used())) {
+            Some((c, None)) => {
+                let lead = leads(c.omega_c);
+                let corrected = fit_blocks(&bl, &p, shift, &lead)?;
+                let change = corrected.0.turns - plain.0.turns;
+                if change.abs() < MAX_TURN_CHANGE {
+                    (Some(c), None, lead, corrected)
+                } else {
+                    let why = format!(
+                        "its lead would change the turns counted by {change:+.2}, more than \
+                         the {MAX_TURN_CHANGE} turn a high-pass's lead can move them"
+                    );
+                    (None, Some(why), vec![0.0; bl.len()], plain)
+                }
+            }
+            Some((_, why)) => (None, why, vec![0.0; bl.len()], plain),
+            None => (None, None, vec![0.0; bl.len()], plain),
+        };
         if round + 1 == ROUNDS {
+            fit.corner = read.map(|c: Corner| (c.omega_c / TAU, c.sigma / TAU));
+            fit.corner_not_used = not_used;
             if let Some(c) = corner {
-                fit.corner = Some((c.omega_c / TAU, c.sigma / TAU));
                 let (hi, _) = fit_blocks(&bl, &p, shift, &leads(c.omega_c + c.sigma))?;
                 let (lo, _) = fit_blocks(&bl, &p, shift, &leads(c.omega_c - c.sigma))?;
                 fit.beta_high_pass = 0.5 * (hi.beta - lo.beta).abs();
@@ -299,6 +323,7 @@ fn fit_blocks(
         ln_c: s.p[2],
         ln_c_sigma: s.cov[(2, 2)].sqrt(),
         corner: None,
+        corner_not_used: None,
         beta_high_pass: 0.0,
         t0_high_pass: 0.0,
         turns,

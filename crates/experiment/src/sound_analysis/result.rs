@@ -202,10 +202,11 @@ pub fn describe_terms(p: &PhaseFit, law: &SoundLaw) -> String {
         s.push_str(&format!("; total {:.6}{unit})", t.total()));
         s
     };
-    let corner = p.corner.map_or_else(
-        || "no harmonic above the fundamental to read a high-pass's corner from".to_string(),
-        |(f, s)| format!("a high-pass's corner read from the harmonics' phases: {f:.1} +- {s:.1} Hz, its lead taken out"),
-    );
+    let corner = match (p.corner, &p.corner_not_used) {
+        (None, _) => "no harmonic above the fundamental to read a high-pass's corner from".to_string(),
+        (Some((f, s)), None) => format!("a high-pass's corner read from the harmonics' phases: {f:.1} +- {s:.1} Hz, its lead taken out"),
+        (Some((f, s)), Some(why)) => format!("a high-pass's corner read from the harmonics' phases: {f:.1} +- {s:.1} Hz, its lead not taken out: {why}"),
+    };
     format!(
         "{}, {}; {corner}",
         part("beta", p.beta, &law.beta_terms, ""),
