@@ -229,9 +229,10 @@ fn figures_under_a_budget_too_small_advise_only_a_larger_budget_and_it_works() {
     assert!(ok && dir.join("f/slip-stick.svg").is_file(), "{err}");
 }
 
-/// A recording cut inside its samples, and one in a format this tool does not read (an AIFF
-/// header), are refused with what to do; done (the whole file, the recording as WAV), it is
-/// analysed. Neither refusal says "save the CSV as UTF-8" or "save as PCM".
+/// A recording cut inside its samples, a damaged one (an AIFF header with no samples) and one in
+/// a coding this tool does not decode (Ogg Opus) are refused with what to do; done (the whole
+/// file, the recording as WAV), it is analysed. No refusal says "save the CSV as UTF-8" or "save
+/// as PCM".
 #[test]
 fn a_truncated_or_unread_recording_is_refused_with_advice_that_works() {
     let dir = temp_dir("hostile-advice", "recordings");
@@ -240,9 +241,12 @@ fn a_truncated_or_unread_recording_is_refused_with_advice_that_works() {
     let whole = std::fs::read(dir.join("whole.wav")).expect("written");
     std::fs::write(dir.join("cut.wav"), &whole[..3000]).expect("written");
     std::fs::write(dir.join("take.aiff"), b"FORM\0\0\0\x10AIFFCOMMjunk").expect("written");
+    let opus = b"OggS\0\x02\0\0\0\0\0\0\0\0\x01\0\0\0\0\0\0\0\0\0\0\0\x01\x13OpusHead\x01\x02";
+    std::fs::write(dir.join("take.opus"), opus).expect("written");
     for (file, says) in [
         ("cut.wav", "copy or export the whole file again"),
-        ("take.aiff", "export the recording in one of them"),
+        ("take.aiff", "export it as WAV or FLAC"),
+        ("take.opus", "convert it to WAV or FLAC"),
     ] {
         let (ok, _, err, took) = run(&dir, &["experiment", "analyze", file]);
         assert!(!ok && took < Duration::from_secs(2), "{file}: {took:?}");
