@@ -7,7 +7,8 @@ use super::{
     SMALL_ALPHAS,
 };
 use crate::equations::disk_runs::{worse_part, DiskRuns};
-use physics::disk::toy_sized;
+use crate::equations::spin_down_reference::Descent;
+use physics::disk::{toy_sized, Disk};
 
 /// Eqs 74-75 against the dissipative rolling model: at states sampled along its integrations,
 /// the rate of the exact energy, $\nabla E\cdot f(y)$ (gradient by dual numbers), against the
@@ -105,47 +106,43 @@ pub fn eq76(b: &Bench) -> Finding {
     let eq = b.paper.equation(76);
     let relations = eq.relations();
     let alphas = [0.2, 0.1, 0.05];
-    let mut runs = DiskRuns::default();
     let mut seen = String::new();
     let mut headline = None;
-    for &k in &[0.25, 0.5] {
-        let d = toy_sized(k);
-        for &beta in &BETAS {
-            for (i, &alpha0) in alphas.iter().enumerate() {
-                let e = descent(b, &d, beta, alpha0)
-                    .and_then(|r| {
-                        let law = PowerLaw {
-                            epsilon: r.epsilon,
-                            beta,
-                        };
-                        let bind = law_bindings(&d, &law);
-                        // The printed rate along the run, integrated by the trapezoid rule.
-                        let mut predicted = vec![r.alpha[0]];
-                        for j in 1..r.t.len() {
-                            let rate = |jj: usize| {
-                                let bb = bind
-                                    .clone()
-                                    .scalar("Omega", r.precession[jj])
-                                    .scalar("alpha", r.alpha[jj]);
-                                eq.scalar(relations[0].rhs, &bb).ok()
-                            };
-                            let step = 0.5 * (rate(j - 1)? + rate(j)?) * (r.t[j] - r.t[j - 1]);
-                            predicted.push(predicted[j - 1] + b.claim(step));
-                        }
-                        let measured = slope(&r.t, &r.alpha);
-                        let claimed = slope(&r.t, &predicted);
-                        let e = ((claimed - measured) / measured).abs();
-                        if i == alphas.len() - 1 && k == 0.25 && beta == 2.0 {
-                            // The printed rate's coefficient over eps Omega^beta (at the start),
-                            // and the measured mean rate over the mean of eps Omega^beta.
-                            let printed = r.epsilon
-                                * r.precession.iter().map(|o| o.powf(beta)).sum::<f64>()
-                                / r.precession.len() as f64;
-                            let om0 = r.precession[0];
-                            let at_start = eq
-                                .scalar(relations[0].rhs, &bind.clone().scalar("Omega", om0).scalar("alpha", r.alpha[0]))
-                                .unwrap_or(f64::NAN);
-                            headline = Some(Headline::new(
+    let runs = over_descents(b, &alphas, |d, law, i, r| {
+        let (k, beta, alpha0) = (d.k, law.beta, alphas[i]);
+        let bind = law_bindings(&d, &law);
+        // The printed rate along the run, integrated by the trapezoid rule.
+        let mut predicted = vec![r.alpha[0]];
+        for j in 1..r.t.len() {
+            let rate = |jj: usize| {
+                let bb = bind
+                    .clone()
+                    .scalar("Omega", r.precession[jj])
+                    .scalar("alpha", r.alpha[jj]);
+                eq.scalar(relations[0].rhs, &bb).ok()
+            };
+            let step = 0.5 * (rate(j - 1)? + rate(j)?) * (r.t[j] - r.t[j - 1]);
+            predicted.push(predicted[j - 1] + b.claim(step));
+        }
+        let measured = slope(&r.t, &r.alpha);
+        let claimed = slope(&r.t, &predicted);
+        let e = ((claimed - measured) / measured).abs();
+        if i == alphas.len() - 1 && k == 0.25 && beta == 2.0 {
+            // The printed rate's coefficient over eps Omega^beta (at the start),
+            // and the measured mean rate over the mean of eps Omega^beta.
+            let printed = r.epsilon * r.precession.iter().map(|o| o.powf(beta)).sum::<f64>()
+                / r.precession.len() as f64;
+            let om0 = r.precession[0];
+            let at_start = eq
+                .scalar(
+                    relations[0].rhs,
+                    &bind
+                        .clone()
+                        .scalar("Omega", om0)
+                        .scalar("alpha", r.alpha[0]),
+                )
+                .unwrap_or(f64::NAN);
+            headline = Some(Headline::new(
                                 "alpha_dot / (epsilon Omega^beta), the rate of the tilt over the power-law rate (measured: mean over 20 precession periods)",
                                 at_start / (r.epsilon * om0.powf(beta)),
                                 "printed",
@@ -153,21 +150,16 @@ pub fn eq76(b: &Bench) -> Finding {
                                 "1",
                                 format!("uniform disk (k = 1/4), beta = 2, from steady b = 0 motion at alpha0 = {alpha0}, mean over 20 precession periods"),
                             ));
-                        }
-                        if i == alphas.len() - 1 {
-                            seen = format!(
+        }
+        if i == alphas.len() - 1 {
+            seen = format!(
                                 "mean rate: printed {claimed:.5e}, measured {measured:.5e} rad/s (ratio {:.4}; adiabatic 5/3/cos = {:.4}) at k = {k}, beta = {beta}",
                                 claimed / measured,
                                 (2.0 / 5.0) / (2.0 / 3.0 / alpha0.cos()),
                             );
-                        }
-                        Some(e)
-                    })
-                    .unwrap_or(f64::INFINITY);
-                runs.add(k, Some(beta), alphas.len(), i, e);
-            }
         }
-    }
+        Some(e)
+    });
     let errors = runs.all(alphas.len());
     let claimed_order = eq.entry.claimed_order.unwrap_or(2.0);
     let mut first = Finding::from_order(
@@ -256,25 +248,17 @@ pub fn eq79(b: &Bench) -> Finding {
     let eq = b.paper.equation(79);
     let definition = eq.relations().get(1).copied();
     let alphas = [0.1, 0.05, 0.025];
-    let mut runs = DiskRuns::default();
     let mut seen = String::new();
     let mut headline = None;
-    for &k in &[0.25, 0.5] {
-        let d = toy_sized(k);
-        for &beta in &BETAS {
-            for (i, &alpha0) in alphas.iter().enumerate() {
-                let e = descent(b, &d, beta, alpha0).map_or(f64::INFINITY, |r| {
-                    let law = PowerLaw {
-                        epsilon: r.epsilon,
-                        beta,
-                    };
-                    let bind = law_bindings(&d, &law).scalar("t_0", 1.7).scalar("t", 0.7);
-                    let printed = definition
-                        .and_then(|rel| solve_printed(eq, &rel, "C", &bind, 0.0, 1e3 * r.c))
-                        .unwrap_or(f64::NAN);
-                    if i == alphas.len() - 1 && k == 0.25 && beta == 2.0 {
-                        let unit = d.g / (r.epsilon * (beta + 2.0) * d.a * k);
-                        headline = Some(Headline::new(
+    let runs = over_descents(b, &alphas, |d, law, i, r| {
+        let (k, beta, alpha0) = (d.k, law.beta, alphas[i]);
+        let bind = law_bindings(d, law).scalar("t_0", 1.7).scalar("t", 0.7);
+        let printed = definition
+            .and_then(|rel| solve_printed(eq, &rel, "C", &bind, 0.0, 1e3 * r.c))
+            .unwrap_or(f64::NAN);
+        if i == alphas.len() - 1 && k == 0.25 && beta == 2.0 {
+            let unit = d.g / (r.epsilon * (beta + 2.0) * d.a * k);
+            headline = Some(Headline::new(
                             "C of eq 79 in units of g / (epsilon (beta + 2) a k)",
                             printed / unit,
                             "printed",
@@ -282,19 +266,15 @@ pub fn eq79(b: &Bench) -> Finding {
                             "1",
                             format!("uniform disk (k = 1/4), beta = 2, from steady b = 0 motion at alpha0 = {alpha0}"),
                         ));
-                    }
-                    if i == alphas.len() - 1 {
-                        seen = format!(
-                            "printed C / measured C = {:.4} at k = {k}, beta = {beta}, alpha0 = {alpha0}",
-                            printed / r.c
-                        );
-                    }
-                    ((b.claim(printed) - r.c) / r.c).abs()
-                });
-                runs.add(k, Some(beta), alphas.len(), i, e);
-            }
         }
-    }
+        if i == alphas.len() - 1 {
+            seen = format!(
+                "printed C / measured C = {:.4} at k = {k}, beta = {beta}, alpha0 = {alpha0}",
+                printed / r.c
+            );
+        }
+        Some(((b.claim(printed) - r.c) / r.c).abs())
+    });
     let claimed_order = b.paper.equation(76).entry.claimed_order.unwrap_or(2.0);
     let mut physical = Finding::from_order(
         "eq 79's C (its second relation) against C = -1/(d/dt Omega^-(beta+2)) on the full dissipative rolling model, relative error against alpha0",
@@ -311,4 +291,34 @@ pub fn eq79(b: &Bench) -> Finding {
         ("C of the second relation".into(), physical),
     ];
     worse_part(parts, &judged, &runs, &alphas, claimed_order)
+}
+
+/// The runs of eqs 76 and 79: one descent of the dissipative rolling model ([`descent`]) per disk
+/// (k = 1/4, 1/2), law exponent ($\beta$ of [`BETAS`]) and start tilt of `alphas`, each given to
+/// `measure` with its disk, its law and the index of its start tilt; the relative error it
+/// returns is kept, infinite where the run or the measure fails.
+fn over_descents(
+    b: &Bench,
+    alphas: &[f64],
+    mut measure: impl FnMut(&Disk, &PowerLaw, usize, &Descent) -> Option<f64>,
+) -> DiskRuns {
+    let mut runs = DiskRuns::default();
+    for &k in &[0.25, 0.5] {
+        let d = toy_sized(k);
+        for &beta in &BETAS {
+            for (i, &alpha0) in alphas.iter().enumerate() {
+                let e = descent(b, &d, beta, alpha0)
+                    .and_then(|r| {
+                        let law = PowerLaw {
+                            epsilon: r.epsilon,
+                            beta,
+                        };
+                        measure(&d, &law, i, &r)
+                    })
+                    .unwrap_or(f64::INFINITY);
+                runs.add(k, Some(beta), alphas.len(), i, e);
+            }
+        }
+    }
+    runs
 }
