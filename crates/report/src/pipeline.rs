@@ -168,7 +168,12 @@ fn run_one(
     };
     physics::budget::in_stage(&format!("the {name} study"), || {
         let warn = |w: &str| eprintln!("warning: {w}");
-        s.run(&config.bench, &observe, config.cache.as_ref(), &warn)
+        s.run(&study::RunContext {
+            bench: &config.bench,
+            observe: &observe,
+            cache: config.cache.as_ref(),
+            note: &warn,
+        })
     })
     .map_err(|e| format!("the {name} study failed: {e}").into())
 }

@@ -93,20 +93,28 @@ pub enum Source {
 /// A result of any study, kept under the study's name.
 pub type Output = Arc<dyn Any + Send + Sync>;
 
+/// What a study runs with: the bench, the observer of its steps, the cache its result may be
+/// kept in, and where a note for the user goes.
+pub struct RunContext<'a> {
+    /// The paper, solver and settings the study computes with.
+    pub bench: &'a Bench<'a>,
+    /// Told of each step the study counts.
+    pub observe: &'a Observer<'a>,
+    /// Where the study's result is kept between runs, if anywhere.
+    pub cache: Option<&'a Cache>,
+    /// Where a note for the user goes (a cache that cannot be read or written).
+    pub note: &'a (dyn Fn(&str) + Sync),
+}
+
 /// Any [`Study`] behind one face, for the executor's table.
 pub trait Run: Sync {
     /// The study's name.
     fn name(&self) -> &'static str;
-    /// Computes the study's result, or reads it from `cache` when the study's result may be
-    /// kept and a valid entry is there (an entry that is not is replaced by the computed
-    /// result). A cache that cannot be written is said in `note`, and the result is computed.
-    fn run(
-        &self,
-        bench: &Bench,
-        observe: &Observer,
-        cache: Option<&Cache>,
-        note: &(dyn Fn(&str) + Sync),
-    ) -> Result<(Output, Source), ReportError>;
+    /// Computes the study's result, or reads it from the context's cache when the study's
+    /// result may be kept and a valid entry is there (an entry that is not is replaced by the
+    /// computed result). A cache that cannot be written is said in the context's note, and the
+    /// result is computed.
+    fn run(&self, context: &RunContext) -> Result<(Output, Source), ReportError>;
 }
 
 impl<S: Study> Run for S {
@@ -114,13 +122,13 @@ impl<S: Study> Run for S {
         S::NAME
     }
 
-    fn run(
-        &self,
-        bench: &Bench,
-        observe: &Observer,
-        cache: Option<&Cache>,
-        note: &(dyn Fn(&str) + Sync),
-    ) -> Result<(Output, Source), ReportError> {
+    fn run(&self, context: &RunContext) -> Result<(Output, Source), ReportError> {
+        let RunContext {
+            bench,
+            observe,
+            cache,
+            note,
+        } = *context;
         let kept = self.kept(bench);
         let key = kept.as_ref().and_then(|k| Cache::key(S::NAME, &k.inputs));
         let (Some(cache), Some(kept), Some(key)) = (cache, kept, key) else {
