@@ -36,7 +36,8 @@ pub struct Cli {
     command: Command,
     /// Wall-time budget of each integration and of each analysis or simulation of a recording,
     /// in seconds (default 600): work that takes longer ends and says so instead of running on.
-    #[arg(long, global = true, value_name = "SECONDS")]
+    #[arg(long, global = true, value_name = "SECONDS", allow_negative_numbers = true,
+          value_parser = cli::ranges::seconds)]
     max_seconds: Option<f64>,
     /// Prints only what a command is for (its results, its data), not what it wrote where nor
     /// its progress; errors are still said.

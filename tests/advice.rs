@@ -183,9 +183,9 @@ fn options_out_of_range_are_refused_with_a_fix_that_works() {
                 "--csv",
                 "g.csv",
                 "--glitches",
-                "2",
+                "1000",
             ],
-            "give --glitches 2",
+            "isolated glitches per second from 0 to 1000",
         ),
     ] {
         let (ok, _, err, took) = cli_timed(&dir, bad);

@@ -23,7 +23,7 @@ pub enum Command {
         #[arg(long, value_name = "FILE", conflicts_with = "csv")]
         wav: Option<PathBuf>,
         /// The sound's sample rate (S/s), 1000 to 384000.
-        #[arg(long, value_name = "R", default_value_t = 48000,
+        #[arg(long, value_name = "R", default_value_t = 48000, allow_negative_numbers = true,
               value_parser = clap::value_parser!(u32).range(1000..=384_000))]
         rate: u32,
         /// The sound's coding: 16-bit WAV, 24-bit WAV, 32-bit float WAV, or 16-bit FLAC.
@@ -68,25 +68,25 @@ pub struct ArtifactArgs {
     #[arg(long)]
     realistic: bool,
     /// Baseline drift, rms, as a fraction of the signal's span (0 to 1).
-    #[arg(long, value_name = "FRACTION", value_parser = crate::cli::ranges::fraction)]
+    #[arg(long, value_name = "FRACTION", allow_negative_numbers = true, value_parser = crate::cli::ranges::fraction)]
     drift: Option<f64>,
     /// Mains hum amplitude as a fraction of the signal's span (0 to 1).
-    #[arg(long, value_name = "FRACTION", value_parser = crate::cli::ranges::fraction)]
+    #[arg(long, value_name = "FRACTION", allow_negative_numbers = true, value_parser = crate::cli::ranges::fraction)]
     hum: Option<f64>,
     /// Mains frequency (Hz, 10 to 1000).
-    #[arg(long, value_name = "HZ", default_value_t = 50.0, value_parser = crate::cli::ranges::mains_hz)]
+    #[arg(long, value_name = "HZ", default_value_t = 50.0, allow_negative_numbers = true, value_parser = crate::cli::ranges::mains_hz)]
     mains: f64,
     /// Clip above this fraction of the signal's range (above 0, at most 1).
-    #[arg(long, value_name = "FRACTION")]
+    #[arg(long, value_name = "FRACTION", allow_negative_numbers = true, value_parser = crate::cli::ranges::clip)]
     clip: Option<f64>,
     /// Isolated glitches per second (0 to 1000).
-    #[arg(long, value_name = "RATE")]
+    #[arg(long, value_name = "RATE", allow_negative_numbers = true, value_parser = crate::cli::ranges::glitches)]
     glitches: Option<f64>,
     /// Fraction of samples dropped (0 to below 0.5).
-    #[arg(long, value_name = "FRACTION")]
+    #[arg(long, value_name = "FRACTION", allow_negative_numbers = true, value_parser = crate::cli::ranges::dropped)]
     dropped: Option<f64>,
     /// Noise seed of the scope or microphone, and of the artifacts.
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = 1, allow_negative_numbers = true)]
     seed: u64,
 }
 

@@ -18,7 +18,7 @@ pub struct Args {
     #[arg(long)]
     pub quick: bool,
     /// Also name the cheapest method and tolerance reaching this accuracy (e.g. 1e-8).
-    #[arg(long, value_name = "ERROR")]
+    #[arg(long, value_name = "ERROR", allow_negative_numbers = true)]
     pub target: Option<f64>,
 }
 

@@ -94,3 +94,63 @@ fn peer_export_warns_where_the_peers_floors_shape_its_run() {
         "{err}"
     );
 }
+
+/// A numeric option given a negative, zero or huge value is refused by its own range, naming
+/// the option, the value in the user's digits and the range; never with clap's "unexpected
+/// argument" and its tip `-- -1`, which would not run. The range's end, given instead, runs.
+#[test]
+fn numeric_options_out_of_range_name_the_option_and_the_range_and_its_end_runs() {
+    let dir = temp_dir("hostile2", "ranges");
+    let simulate = ["experiment", "simulate", "spin-down", "--csv", "out.csv"];
+    // (the option, a value outside, what the message says, a value inside)
+    let cases: [(&str, &str, &str, &str); 8] = [
+        ("--max-seconds", "-1", "above 0, at most 86400", "86400"),
+        ("--max-seconds", "1e300", "1e300 is outside", "86400"),
+        ("--drift", "-0.1", "from 0 to 1", "0"),
+        ("--clip", "-1", "above 0, at most 1", "1"),
+        ("--glitches", "1e300", "1e300 is outside", "1000"),
+        ("--dropped", "-0.1", "from 0 to below 0.5", "0"),
+        ("--mains", "-50", "from 10 to 1000", "10"),
+        ("--rate", "-5", "1000..=384000", "1000"),
+    ];
+    for (option, outside, says, inside) in cases {
+        let mut args: Vec<&str> = simulate.to_vec();
+        args.extend([option, outside]);
+        let (ok, _, err, took) = cli_timed(&dir, &args);
+        assert!(!ok && took < QUICK, "{option} {outside}: {err}");
+        assert!(
+            err.contains(option) && err.contains(says) && !err.contains("unexpected argument"),
+            "{option} {outside}: {err}"
+        );
+        assert!(!dir.join("out.csv").exists(), "{option} {outside} wrote");
+        let fixed: Vec<&str> = args[..args.len() - 1]
+            .iter()
+            .copied()
+            .chain([inside, "--seed", "2"])
+            .collect();
+        let (ok, _, err, _) = cli_timed(&dir, &fixed);
+        assert!(ok, "{option} {inside}: {err}");
+        std::fs::remove_file(dir.join("out.csv")).unwrap();
+    }
+    // A negative seed and target name their option too.
+    for args in [
+        &[
+            "experiment",
+            "simulate",
+            "spin-down",
+            "--csv",
+            "s.csv",
+            "--seed",
+            "-1",
+        ][..],
+        &["precision", "--quick", "--target", "-1"],
+    ] {
+        let (ok, _, err, took) = cli_timed(&dir, args);
+        let option = args[args.len() - 2];
+        assert!(!ok && took < QUICK, "{args:?}: {err}");
+        assert!(
+            err.contains(option) && !err.contains("unexpected argument"),
+            "{args:?}: {err}"
+        );
+    }
+}
