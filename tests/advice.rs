@@ -69,7 +69,7 @@ fn cases() -> Vec<Case> {
         },
         Case {
             name: "rtol below double precision",
-            scene: format!("{COIN}solver: {{ method: dop853, rtol: 1.0e-20, atol: 0 }}\n"),
+            scene: format!("{COIN}solver: {{ method: dop853, rtol: 1.0e-20, atol: 1.0e-12 }}\n"),
             says: "use rtol ",
             fix: |scene, msg| scene.replace("1.0e-20", word_after(msg, "use rtol ")),
         },

@@ -108,7 +108,13 @@ fn solver_settings_and_physical_values_that_cannot_mean_anything_are_refused() {
             "atol",
             solver,
             "{ atol: -1.0 }",
-            "atol must be zero or a positive",
+            "atol must be a number of at least 1e-30",
+        ),
+        (
+            "atol-zero",
+            solver,
+            "{ atol: 0 }",
+            "atol must be a number of at least 1e-30",
         ),
         ("rtol-nan", solver, "{ rtol: .nan }", "rtol"),
         (

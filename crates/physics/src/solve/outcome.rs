@@ -111,8 +111,8 @@ impl fmt::Display for Ending {
             } if *n <= crate::budget::MAX_STEPS_LIMIT => write!(
                 f,
                 "gave up after {steps} steps at t = {t:.9} s; at its pace so far about {n} steps \
-                 reach the end: set solver: {{ max_steps: {n} }} (or loosen solver.rtol or lower \
-                 stop.time)"
+                 reach the end: set solver: {{ max_steps: {n} }} (or loosen solver.rtol, raise a tiny \
+                 solver.atol, or lower stop.time)"
             ),
             Ending::TooManySteps {
                 t,
@@ -122,13 +122,13 @@ impl fmt::Display for Ending {
                 f,
                 "gave up after {steps} steps at t = {t:.9} s; at its pace so far about {n:.2e} \
                  steps reach the end, more than the {:.0e} solver.max_steps allows: loosen \
-                 solver.rtol or lower stop.time",
+                 solver.rtol, raise a tiny solver.atol, or lower stop.time",
                 crate::budget::MAX_STEPS_LIMIT as f64
             ),
             Ending::TooManySteps { t, steps, .. } => write!(
                 f,
                 "gave up after {steps} steps at t = {t:.9} s (raise solver.max_steps, loosen \
-                 solver.rtol or lower stop.time)"
+                 solver.rtol, raise a tiny solver.atol, or lower stop.time)"
             ),
             Ending::Unstable { t, ratio, step } => write!(
                 f,

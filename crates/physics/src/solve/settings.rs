@@ -77,8 +77,10 @@ pub enum SettingsError {
     /// rtol below [`RTOL_LEAST`] asks for more than double precision holds.
     #[error("rtol {0:e} asks for more than double precision holds (numbers are stored to 2.2e-16 relative, and rounding adds up over the steps): use rtol 1e-14 or more")]
     RtolBelowPrecision(f64),
-    /// atol must be zero or positive, and finite.
-    #[error("atol must be zero or a positive number (for example 1e-12), got {0}")]
+    /// atol must be finite and at least [`ATOL_LEAST`]: with no absolute floor, a state that
+    /// passes through zero must be computed to a relative accuracy of its own rounding and the
+    /// step collapses there.
+    #[error("atol must be a number of at least 1e-30 (for example 1e-12): with a smaller floor a state that passes through zero must be computed exactly and the step collapses there, got {0:e}")]
     Atol(f64),
     /// max_steps must be at least 1 and at most [`budget::MAX_STEPS_LIMIT`].
     #[error("max_steps must lie between 1 and {limit}, got {steps}")]
@@ -157,6 +159,12 @@ pub enum SettingsError {
 /// meet no tighter one, and the step size collapses instead.
 pub const RTOL_LEAST: f64 = 1e-15;
 
+/// The smallest atol accepted. The error of a state that passes through zero is held to atol
+/// alone; far below the states' scale (1 rad, 1 rad/s) that asks for a vanishing error, and the
+/// step size collapses (at 0 on the sliding and bouncing scenes); from this floor up the built-in
+/// scenes run (`tests/limits.rs`).
+pub const ATOL_LEAST: f64 = 1e-30;
+
 impl Settings {
     /// Checks that the settings can be used: rtol in (0, 1), atol >= 0, a positive finite rk4
     /// step, and max_steps between 1 and [`budget::MAX_STEPS_LIMIT`]. The memory the steps may
@@ -178,7 +186,9 @@ impl Settings {
             Method::Dopri5 | Method::Dop853 if self.rtol < RTOL_LEAST => {
                 Err(SettingsError::RtolBelowPrecision(self.rtol))
             }
-            Method::Dopri5 | Method::Dop853 if !(self.atol.is_finite() && self.atol >= 0.0) => {
+            Method::Dopri5 | Method::Dop853
+                if !(self.atol.is_finite() && self.atol >= ATOL_LEAST) =>
+            {
                 Err(SettingsError::Atol(self.atol))
             }
             _ => Ok(()),
