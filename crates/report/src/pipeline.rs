@@ -73,7 +73,7 @@ pub fn compute(
     config: &RunConfig,
     progress: &(dyn Fn(&str) + Sync),
 ) -> Result<Results, ReportError> {
-    crate::kept_film::around(config.cache.as_ref(), &warn, || {
+    crate::kept_film::around(config.cache.as_ref(), &cache_warning, || {
         compute_all(config, progress)
     })
 }
@@ -114,7 +114,7 @@ pub fn compute_timed(
     progress: &(dyn Fn(&str) + Sync),
     timings: &Timings,
 ) -> Result<Results, ReportError> {
-    crate::kept_film::around(config.cache.as_ref(), &warn, || {
+    crate::kept_film::around(config.cache.as_ref(), &cache_warning, || {
         compute_all_timed(config, progress, timings)
     })
 }
@@ -188,6 +188,7 @@ fn run_one(
         }
     };
     physics::budget::in_stage(&format!("the {name} study"), || {
+        let warn = |w: &str| eprintln!("warning: {w}");
         s.run(&config.bench, &observe, config.cache.as_ref(), &warn)
     })
     .map_err(|e| format!("the {name} study failed: {e}").into())
@@ -195,7 +196,7 @@ fn run_one(
 
 /// A cache entry that is not trusted, or a cache that cannot be written: a warning on standard
 /// error.
-fn warn(w: &str) {
+fn cache_warning(w: &str) {
     eprintln!("warning: {w}");
 }
 
