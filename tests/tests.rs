@@ -5,6 +5,7 @@ mod advice;
 mod advice_names;
 mod architecture;
 mod author_forms;
+mod check_cache;
 mod check_snapshot;
 mod claims_yaml;
 mod cli;

@@ -8,6 +8,7 @@ use crate::cli::{exit, stdin, stdout, verdict_snapshot};
 use checks::check::{run_checks, Checked, Selection, Tally};
 use checks::finding::Verdict;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use report::cache::Cache;
 use report::document::PAPER;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
@@ -41,6 +42,14 @@ pub struct Args {
     /// approximately, definition and estimate).
     #[arg(long, value_name = "KIND", value_enum)]
     pub fail_on: Option<FailOn>,
+    /// Solves everything, keeping nothing between runs. Without it, what depends on nothing but
+    /// the program (the squeeze film's dissipation number of eqs 76-84) is solved once per build
+    /// and kept in the cache folder; the output is the same either way.
+    #[arg(long)]
+    pub no_cache: bool,
+    /// The cache folder (default: $XDG_CACHE_HOME/rolling-disk, or ~/.cache/rolling-disk).
+    #[arg(long, value_name = "DIR", conflicts_with = "no_cache")]
+    pub cache_dir: Option<PathBuf>,
     #[command(flatten)]
     pub(crate) input: PaperInput,
 }
@@ -116,7 +125,17 @@ fn check(args: &Args) -> anyhow::Result<(Vec<Checked>, Value)> {
         bar.set_length(total as u64);
         bar.set_position(done as u64);
     };
-    let checked = run_checks(&bench, &selection, threads, &progress)?;
+    let cache = if args.no_cache {
+        None
+    } else {
+        args.cache_dir.clone().map(Cache::at).or_else(Cache::user)
+    };
+    let warn = |w: &str| {
+        bar.suspend(|| eprintln!("warning: {w}"));
+    };
+    let checked = report::kept_film::around(cache.as_ref(), &warn, || {
+        run_checks(&bench, &selection, threads, &progress)
+    })?;
     bar.finish_and_clear();
     crate::cli::within_budget()?;
     let elapsed = started.elapsed().as_secs_f64();

@@ -51,7 +51,9 @@ pub use formats::csv::{parse_trace, parse_trace_columns, read_trace, read_trace_
 pub use formats::recording::read_recording;
 pub use formats::sound_file::{encode_sound, SoundFormat};
 pub use formats::wav::{encode_wav, read_wav, wav_bytes, WavCoding};
-pub use light_analysis::analysis::{analyze, analyze_within, write_analysis, Analysis};
+pub use light_analysis::analysis::{
+    analyze, analyze_within, timed, write_analysis, Analysis, Timed,
+};
 pub use light_analysis::settings::AnalysisSettings;
 pub use sound_analysis::analysis::{
     analyze_sound, analyze_sound_within, write_sound_analysis, SoundAnalysis, SoundLaw,

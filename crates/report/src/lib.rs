@@ -11,6 +11,7 @@ mod finding_view;
 pub mod fonts;
 pub mod inline_math;
 pub mod json;
+pub mod kept_film;
 pub mod mathml;
 pub mod mutation;
 pub mod number;

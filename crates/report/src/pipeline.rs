@@ -73,6 +73,16 @@ pub fn compute(
     config: &RunConfig,
     progress: &(dyn Fn(&str) + Sync),
 ) -> Result<Results, ReportError> {
+    crate::kept_film::around(config.cache.as_ref(), &cache_warning, || {
+        compute_all(config, progress)
+    })
+}
+
+/// [`compute`] with the film's $I$ as the process has it.
+fn compute_all(
+    config: &RunConfig,
+    progress: &(dyn Fn(&str) + Sync),
+) -> Result<Results, ReportError> {
     use rayon::prelude::*;
     let wanted = wanted(config);
     let total = wanted.len();
@@ -100,6 +110,17 @@ pub fn compute(
 /// cache as `NAME (cached)`): the process's CPU time over a study is then that study's own. The
 /// results are those of [`compute`].
 pub fn compute_timed(
+    config: &RunConfig,
+    progress: &(dyn Fn(&str) + Sync),
+    timings: &Timings,
+) -> Result<Results, ReportError> {
+    crate::kept_film::around(config.cache.as_ref(), &cache_warning, || {
+        compute_all_timed(config, progress, timings)
+    })
+}
+
+/// [`compute_timed`] with the film's $I$ as the process has it.
+fn compute_all_timed(
     config: &RunConfig,
     progress: &(dyn Fn(&str) + Sync),
     timings: &Timings,
@@ -176,6 +197,12 @@ fn run_one(
         })
     })
     .map_err(|e| format!("the {name} study failed: {e}").into())
+}
+
+/// A cache entry that is not trusted, or a cache that cannot be written: a warning on standard
+/// error.
+fn cache_warning(w: &str) {
+    eprintln!("warning: {w}");
 }
 
 /// The studies' outputs as the pipeline's results.

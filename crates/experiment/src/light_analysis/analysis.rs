@@ -97,12 +97,33 @@ pub fn analyze(trace: &Trace, s: &AnalysisSettings) -> Result<Analysis, Experime
     analyze_within(trace, s, &work)
 }
 
-/// [`analyze`] as part of `work`: each stage checks its budget and reports its progress.
-pub fn analyze_within(
+/// What the analysis measures before it fits any law: the trace cleaned, its peaks timed,
+/// $\Omega_i$ and $d\Omega_i/dt$ formed and the fitting window chosen ([`timed`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Timed {
+    /// Estimated noise (V rms).
+    pub noise: f64,
+    /// Isolated one-sample glitches replaced before timing.
+    pub glitches: usize,
+    /// The largest mains-hum amplitude subtracted before timing (V; 0 if none was found).
+    pub hum: f64,
+    /// Peaks found.
+    pub peaks: Vec<Peak>,
+    /// $\Omega_i$.
+    pub cycles: Vec<Cycle>,
+    /// $d\Omega_i/dt$.
+    pub accelerations: Vec<Acceleration>,
+    /// The fitting window.
+    pub window: Window,
+}
+
+/// The analysis of [`analyze_within`] up to the fitting window, without the fits: the same
+/// peaks, cycles and window, for a caller that reads no fit.
+pub fn timed(
     trace: &Trace,
     s: &AnalysisSettings,
     work: &Work<'_>,
-) -> Result<Analysis, ExperimentError> {
+) -> Result<Timed, ExperimentError> {
     check_settings(trace, s)?;
     let dt = trace.sample_interval();
     work.stage("measuring the noise")?;
@@ -117,13 +138,42 @@ pub fn analyze_within(
     check_peak_count(trace, &peaks, s)?;
     work.stage("fitting the laws")?;
     let tp: Vec<f64> = peaks.iter().map(|p| p.t).collect();
+    let cycles = cycles(&tp);
+    let accelerations = accelerations(&tp);
+    let window = fitting_window(
+        &trace.source,
+        &peaks,
+        &cycles,
+        accelerations.len(),
+        dt,
+        noise,
+        s,
+    )?;
+    Ok(Timed {
+        noise,
+        glitches,
+        hum,
+        peaks,
+        cycles,
+        accelerations,
+        window,
+    })
+}
+
+/// [`analyze`] as part of `work`: each stage checks its budget and reports its progress.
+pub fn analyze_within(
+    trace: &Trace,
+    s: &AnalysisSettings,
+    work: &Work<'_>,
+) -> Result<Analysis, ExperimentError> {
+    let dt = trace.sample_interval();
+    let timed = timed(trace, s, work)?;
+    let peaks = &timed.peaks;
+    let tp: Vec<f64> = peaks.iter().map(|p| p.t).collect();
     let w: Vec<f64> = peaks.iter().map(|p| p.sigma * p.sigma).collect();
-    let cyc = cycles(&tp);
-    let acc = accelerations(&tp);
-    let window = fitting_window(&trace.source, &peaks, &cyc, acc.len(), dt, noise, s)?;
-    let fits = fit_laws(&trace.source, s, &tp, &w, &cyc, &window)?;
+    let fits = fit_laws(&trace.source, s, &tp, &w, &timed.cycles, &timed.window)?;
     let (beta_stated, t0_stated) = stated_sigmas(&fits.eq84, fits.law_stability.as_ref());
-    let early_end = early_end(fits.eq84.t0, t0_stated, &peaks, s.min_snr * noise);
+    let early_end = early_end(fits.eq84.t0, t0_stated, peaks, s.min_snr * timed.noise);
     let score = trace
         .truth
         .as_ref()
@@ -132,14 +182,14 @@ pub fn analyze_within(
         source: trace.source.clone(),
         samples: trace.len(),
         sample_interval: dt,
-        noise,
-        glitches,
-        hum,
+        noise: timed.noise,
+        glitches: timed.glitches,
+        hum: timed.hum,
         settings: *s,
-        peaks,
-        cycles: cyc,
-        accelerations: acc,
-        window,
+        peaks: timed.peaks,
+        cycles: timed.cycles,
+        accelerations: timed.accelerations,
+        window: timed.window,
         eq84: fits.eq84,
         eq85: fits.eq85,
         models: fits.models,

@@ -59,21 +59,40 @@ pub struct SqueezeFilm {
 
 /// Cells of the coarsest of the three grids of [`SqueezeFilm::solved`] (the others have two
 /// and four times as many).
-const COARSEST: usize = 64;
+pub const COARSEST: usize = 64;
+
+/// The process's $I$: solved at its first use, or a value kept from an earlier run of the same
+/// program ([`SqueezeFilm::keep`]).
+static FILM: OnceLock<SqueezeFilm> = OnceLock::new();
 
 impl SqueezeFilm {
     /// $I$ from the lower bounds of conforming finite elements on grids of 64, 128 and 256
     /// cells, extrapolated at the second order (see [`film_bound::extrapolated`]); computed once per
-    /// process.
+    /// process, unless [`SqueezeFilm::keep`] gave it first.
     pub fn solved() -> Self {
-        static FILM: OnceLock<SqueezeFilm> = OnceLock::new();
-        *FILM.get_or_init(|| {
-            let number = film_bound::extrapolated(COARSEST);
-            SqueezeFilm {
-                coefficient: number.estimate,
-                uncertainty: number.uncertainty,
-            }
-        })
+        *FILM.get_or_init(Self::computed)
+    }
+
+    /// $I$ computed now, as [`SqueezeFilm::solved`] computes it: the same number to the bit.
+    pub fn computed() -> Self {
+        let number = film_bound::extrapolated(COARSEST);
+        SqueezeFilm {
+            coefficient: number.estimate,
+            uncertainty: number.uncertainty,
+        }
+    }
+
+    /// Makes `film` the process's $I$, for a value that [`SqueezeFilm::computed`] gave in an
+    /// earlier run of this same program (kept between runs by the report crate's cache, which
+    /// trusts only an intact entry of this build). False when the process already has its $I$,
+    /// which then stays.
+    pub fn keep(film: SqueezeFilm) -> bool {
+        FILM.set(film).is_ok()
+    }
+
+    /// The process's $I$ when it has one yet (solved or kept), without solving it.
+    pub fn settled() -> Option<Self> {
+        FILM.get().copied()
     }
 
     /// The power the air film takes from the disk (W, positive),
@@ -222,6 +241,9 @@ mod tests {
         // on 48 radial cells, which approach from above.
         assert!(number.lower_bound < film.coefficient, "{number:?}");
         assert!(film.coefficient < dissipation_number(48), "{film:?}");
+        // What a cache keeps is `computed`'s value: the process's own to the bit.
+        assert_eq!(SqueezeFilm::computed(), film);
+        assert_eq!(number.estimate.to_bits(), film.coefficient.to_bits());
         // Five digits: the extrapolation moved by less than 1e-5 between the grid pairs.
         assert!(film.uncertainty < 1e-5, "{film:?}");
         assert!((1.9..2.1).contains(&number.observed_order), "{number:?}");
