@@ -201,6 +201,9 @@ fn needs_space(left: &Node, right: &Node) -> bool {
         _ => false,
     };
     match (left, right) {
+        (_, Node::Scripts { base, above, .. }) if !above && matches!(**base, Node::Mark(_)) => {
+            needs_space(left, base)
+        }
         (_, Node::Mark(m)) if m.starts_with([')', ']', '}', ',', '.', ';', '/', '\u{338}']) => {
             false
         }
@@ -389,6 +392,10 @@ mod tests {
         assert_eq!(
             plain_math(r"\Omega^2 = \frac{g}{a k \sin\alpha_0}"),
             "Ω² = g/(ak sin α₀)"
+        );
+        assert_eq!(
+            plain_math(r"\alpha = A (t_0 - t)^{2/(\beta+2)}"),
+            "α = A(t₀ − t)^(2/(β+2))"
         );
     }
 
