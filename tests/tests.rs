@@ -37,6 +37,7 @@ mod lab_frame_invariants;
 mod limits;
 mod loop_docs;
 mod manifests;
+mod math_markup;
 mod model_kinds;
 mod models;
 mod mutation;

@@ -354,6 +354,8 @@ pub(crate) fn print_table(checked: &[Checked]) {
             Err(e) => println!("{:<34} {:>3}  {e}", c.subject.name(), c.section),
         }
     }
+    // A formula between dollar signs in a card's text, in Unicode for the terminal.
+    let plain = ::report::inline_math::plain;
     for c in checked {
         if let Ok(f) = &c.finding {
             if !f.verdict.passes() {
@@ -368,18 +370,21 @@ pub(crate) fn print_table(checked: &[Checked]) {
                 println!(
                     "\n{} {verdict}: {}\n  claimed {:.9e}{unit}, reference {:.9e}{unit}, error {:.3e} > {:.3e} ({})\n  at {}",
                     c.subject.name(),
-                    f.compared,
+                    plain(&f.compared),
                     f.claimed,
                     f.reference,
                     f.error,
                     f.tolerance.value,
-                    f.tolerance.rule,
-                    f.at
+                    plain(&f.tolerance.rule),
+                    plain(&f.at)
                 );
                 for a in &f.robustness {
                     println!(
                         "  {}: {}: reference {:.6e}{unit}, {}",
-                        a.choice, a.alternative, a.reference, a.verdict
+                        a.choice,
+                        plain(&a.alternative),
+                        a.reference,
+                        a.verdict
                     );
                 }
                 if !c.dimensions.starts_with("consistent") {

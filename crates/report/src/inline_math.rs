@@ -1,7 +1,8 @@
 //! Prose with formulas: a sentence the report writes itself (a figure's caption) puts each
 //! formula in LaTeX between dollar signs, `the tilt $\alpha_0 = 0.4$ rad`, and each format sets
 //! it as mathematics from that one source: MathML in the HTML ([`html`]), TeX in the LaTeX
-//! report ([`tex`]). A dollar sign without its closing one is text.
+//! report ([`tex`]), plain Unicode text on a terminal ([`plain`]). A dollar sign without its
+//! closing one is text.
 
 use crate::mathml::inline_math;
 use std::collections::HashMap;
@@ -59,6 +60,18 @@ pub fn tex(prose: &str) -> String {
         .collect()
 }
 
+/// `prose` as plain text: its text as it is, its formulas in Unicode
+/// ([`crate::plain_math::plain_math`]).
+pub fn plain(prose: &str) -> String {
+    pieces(prose)
+        .into_iter()
+        .map(|p| match p {
+            Piece::Text(t) => t.to_string(),
+            Piece::Math(m) => crate::plain_math::plain_math(m),
+        })
+        .collect()
+}
+
 /// A Tera filter applying `render` to a string.
 fn filter(
     render: fn(&str) -> String,
@@ -105,5 +118,6 @@ mod tests {
             "{h}"
         );
         assert_eq!(tex(prose), r"the tilt $\alpha_0 < 1$ \& more");
+        assert_eq!(plain(prose), "the tilt α₀ < 1 & more");
     }
 }

@@ -17,6 +17,7 @@ pub mod mutation;
 pub mod number;
 pub mod parts;
 pub mod pipeline;
+pub mod plain_math;
 pub mod render;
 pub mod results;
 pub mod study;

@@ -444,11 +444,13 @@ fn ascii(text: &str) -> String {
     o
 }
 
-/// The tables as text, for the disclosure and the appendix.
+/// The tables as text, for the disclosure and the appendix: a caption's formulas written plain
+/// ([`crate::inline_math::plain`]), then in ASCII.
 fn output(tables: &[StudyTable]) -> String {
     let mut o = String::new();
     for t in tables {
-        let _ = writeln!(o, "Table {}: {}", t.number, t.caption);
+        let caption = crate::inline_math::plain(&t.caption);
+        let _ = writeln!(o, "Table {}: {caption}", t.number);
         let _ = writeln!(o, "  {}", t.columns.join(" | "));
         for r in &t.rows {
             let _ = writeln!(o, "  {}", r.join(" | "));
