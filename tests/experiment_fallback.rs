@@ -22,6 +22,9 @@ fn an_implausible_phase_fit_falls_back_to_the_pitch() {
         a.to_string().contains("eq 79 on the phase (the result)"),
         "{a}"
     );
+    let json: serde_json::Value = serde_json::from_str(&a.to_json()).unwrap();
+    assert_eq!(json["result"]["fitted_on"], "phase", "{json}");
+    assert!(json["result"]["why_not_phase"].is_null(), "{json}");
 
     let last = a.track.points.last().map(|q| 0.5 * (q.a + q.b)).unwrap();
     let mut early = a.clone();
@@ -47,5 +50,15 @@ fn an_implausible_phase_fit_falls_back_to_the_pitch() {
                 && text.contains("the pitch's fit is reported"),
             "{text}"
         );
+        // The JSON says it too.
+        let json: serde_json::Value = serde_json::from_str(&b.to_json()).unwrap();
+        assert_eq!(json["result"]["fitted_on"], "pitch", "{json}");
+        assert!(
+            json["result"]["why_not_phase"]
+                .as_str()
+                .is_some_and(|w| w.contains(why)),
+            "{json}"
+        );
+        assert_eq!(json["result"]["law"]["beta"], b.fit.beta, "{json}");
     }
 }

@@ -54,8 +54,9 @@ pub use formats::wav::{encode_wav, read_wav, wav_bytes, WavCoding};
 pub use light_analysis::analysis::{analyze, analyze_within, write_analysis, Analysis};
 pub use light_analysis::settings::AnalysisSettings;
 pub use sound_analysis::analysis::{
-    analyze_sound, analyze_sound_within, write_sound_analysis, SoundAnalysis, SoundLaw,
+    analyze_sound, analyze_sound_within, write_sound_analysis, SoundAnalysis,
 };
+pub use sound_analysis::result::{SoundLaw, SoundResult, Terms};
 pub use sound_analysis::track::TrackSettings;
 pub use synthetic::artifacts::Artifacts;
 pub use synthetic::law::{law_trace, Law};
