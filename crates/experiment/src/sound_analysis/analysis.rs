@@ -21,7 +21,6 @@ use crate::fit::least_squares::{solve, FitError, Problem, Scale};
 use crate::fit::plausibility::{Evidence, Plausibility, Points, Verdict, SOUND_MIN_FRAMES};
 use crate::sound_analysis::phase_blocks::{BlockSettings, Samples};
 use crate::sound_analysis::phase_fit::{fit_phase, PhaseFit};
-use crate::sound_analysis::result::describe_terms;
 use crate::sound_analysis::track::{frequency_track, FrequencyTrack, TrackSettings};
 use crate::sound_analysis::turn_count::TurnCount;
 use crate::trace::{Trace, Truth};
@@ -410,7 +409,7 @@ impl fmt::Display for SoundAnalysis {
             .and_then(|()| {
                 let l = self.law();
                 if l.from_phase {
-                    writeln!(f, "  stated: {}", describe_terms(p, &l))
+                    writeln!(f, "  stated: {}", l.describe_terms(p))
                 } else {
                     Ok(())
                 }

@@ -182,34 +182,37 @@ impl SoundAnalysis {
     }
 }
 
-/// The phase's fit's parameters with the terms of their uncertainties, as the analysis's text
-/// states them.
-pub fn describe_terms(p: &PhaseFit, law: &SoundLaw) -> String {
-    let part = |name: &str, v: f64, t: &Terms, unit: &str| {
-        let mut s = format!("{name} = {v:.6} +- {:.6}{unit} (fit", t.fit);
-        if t.high_pass > 0.0 {
-            s.push_str(&format!(", +- {:.6} the high-pass's corner", t.high_pass));
-        }
-        if t.law > 0.0 {
-            s.push_str(&format!(", +- {:.6} the law's drift", t.law));
-        }
-        if t.disagreement > 0.0 {
-            s.push_str(&format!(
-                ", +- {:.6} the two fits' disagreement",
-                t.disagreement
-            ));
-        }
-        s.push_str(&format!("; total {:.6}{unit})", t.total()));
-        s
-    };
-    let corner = match (p.corner, &p.corner_not_used) {
-        (None, _) => "no harmonic above the fundamental to read a high-pass's corner from".to_string(),
-        (Some((f, s)), None) => format!("a high-pass's corner read from the harmonics' phases: {f:.1} +- {s:.1} Hz, its lead taken out"),
-        (Some((f, s)), Some(why)) => format!("a high-pass's corner read from the harmonics' phases: {f:.1} +- {s:.1} Hz, its lead not taken out: {why}"),
-    };
-    format!(
-        "{}, {}; {corner}",
-        part("beta", p.beta, &law.beta_terms, ""),
-        part("t0", p.t0, &law.t0_terms, " s"),
-    )
+impl SoundLaw {
+    /// The phase's fit `p`'s parameters with the terms of their uncertainties in this law, as the
+    /// analysis's text states them.
+    pub fn describe_terms(&self, p: &PhaseFit) -> String {
+        let law = self;
+        let part = |name: &str, v: f64, t: &Terms, unit: &str| {
+            let mut s = format!("{name} = {v:.6} +- {:.6}{unit} (fit", t.fit);
+            if t.high_pass > 0.0 {
+                s.push_str(&format!(", +- {:.6} the high-pass's corner", t.high_pass));
+            }
+            if t.law > 0.0 {
+                s.push_str(&format!(", +- {:.6} the law's drift", t.law));
+            }
+            if t.disagreement > 0.0 {
+                s.push_str(&format!(
+                    ", +- {:.6} the two fits' disagreement",
+                    t.disagreement
+                ));
+            }
+            s.push_str(&format!("; total {:.6}{unit})", t.total()));
+            s
+        };
+        let corner = match (p.corner, &p.corner_not_used) {
+            (None, _) => "no harmonic above the fundamental to read a high-pass's corner from".to_string(),
+            (Some((f, s)), None) => format!("a high-pass's corner read from the harmonics' phases: {f:.1} +- {s:.1} Hz, its lead taken out"),
+            (Some((f, s)), Some(why)) => format!("a high-pass's corner read from the harmonics' phases: {f:.1} +- {s:.1} Hz, its lead not taken out: {why}"),
+        };
+        format!(
+            "{}, {}; {corner}",
+            part("beta", p.beta, &law.beta_terms, ""),
+            part("t0", p.t0, &law.t0_terms, " s"),
+        )
+    }
 }
