@@ -85,14 +85,17 @@ pub fn sound_coverage(runs: usize, seed0: u64) -> Result<Coverage, ExperimentErr
     Ok(c)
 }
 
-/// Prints the median stated sigmas of the analysed recordings' outcomes `results` (beta error,
-/// t0 error, their sigmas, drift).
-fn print_widths(results: &[Result<Option<(f64, f64, f64, f64, bool)>, ExperimentError>]) {
+/// An analysed recording's outcome: beta error, t0 error, their stated sigmas, and whether the
+/// law drifts.
+type Outcome = (f64, f64, f64, f64, bool);
+
+/// Prints the median stated sigmas of the analysed recordings' outcomes `results`.
+fn print_widths(results: &[Result<Option<Outcome>, ExperimentError>]) {
     let ok: Vec<_> = results
         .iter()
         .filter_map(|r| r.as_ref().ok().copied().flatten())
         .collect();
-    let median = |f: &dyn Fn(&(f64, f64, f64, f64, bool)) -> f64| {
+    let median = |f: &dyn Fn(&Outcome) -> f64| {
         let mut v: Vec<f64> = ok.iter().map(f).collect();
         v.sort_by(f64::total_cmp);
         v.get(v.len() / 2).copied().unwrap_or(f64::NAN)

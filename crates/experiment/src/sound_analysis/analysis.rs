@@ -409,9 +409,20 @@ impl fmt::Display for SoundAnalysis {
             .and_then(|()| {
                 let l = self.law();
                 if l.from_phase {
-                    writeln!(f, "  stated: {}", l.describe_terms(p))
-                } else {
-                    Ok(())
+                    writeln!(f, "  stated: {}", l.describe_terms(p))?;
+                }
+                match (p.structure, self.disagreement_note()) {
+                    (_, Some(d)) => writeln!(f, "  disagreement: {d}"),
+                    (Some(s), None) => writeln!(
+                        f,
+                        "  phase residuals: {s}: {}",
+                        if s.shown() {
+                            "structure, but the fits agree within their noise, so nothing is added"
+                        } else {
+                            "noise"
+                        }
+                    ),
+                    (None, None) => Ok(()),
                 }
             })
             .and_then(|()| match &p.law {

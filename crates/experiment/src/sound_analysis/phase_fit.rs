@@ -35,6 +35,7 @@ use crate::fit::least_squares::{solve, FitError, Problem, Scale};
 use crate::sound_analysis::high_pass::{block_leads, fit_corner, rates, Corner, MAX_TURN_CHANGE};
 use crate::sound_analysis::mains::hum::remove_hum_clear;
 use crate::sound_analysis::phase_blocks::{blocks, Block, BlockSettings, Samples};
+use crate::sound_analysis::residual_structure::Structure;
 use nalgebra::SVector;
 use serde::Serialize;
 use std::f64::consts::TAU;
@@ -128,6 +129,9 @@ pub struct PhaseFit {
     pub points: Vec<PhasePoint>,
     /// The later half's fit against this one: whether eq 79 drifts over the record.
     pub law: Option<LawStability>,
+    /// The tests of the blocks' whitened residuals for structure (`None` below
+    /// [`MIN_BLOCKS`](crate::sound_analysis::residual_structure::MIN_BLOCKS)).
+    pub structure: Option<Structure>,
 }
 
 impl PhaseFit {
@@ -330,6 +334,7 @@ fn fit_blocks(
         rms: (s.residual.iter().map(|r| r * r).sum::<f64>() / n as f64).sqrt(),
         chi2_dof: chi2 / (n - 4) as f64,
         n,
+        structure: Structure::of(&s.residual, &bl.iter().map(|b| b.sigma).collect::<Vec<_>>()),
         points: bl
             .iter()
             .zip(&s.residual)

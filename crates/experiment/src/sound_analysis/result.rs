@@ -12,7 +12,21 @@
 //! phone's high-pass, whose corner the harmonics' phases measure
 //! ([`high_pass`](crate::sound_analysis::high_pass)); the law's drift over the record
 //! ([`law_stability`](crate::fit::law_stability)); and the two fits' disagreement where it
-//! exceeds their noise.
+//! exceeds their noise and the phase's fit is itself in doubt ([`SoundAnalysis::phase_in_doubt`]).
+//!
+//! **Which fit a disagreement speaks against.** Two fits that disagree beyond their noise say
+//! that one of them is wrong, not which. The phase's fit is charged with the disagreement only
+//! where its own evidence or the lack of any other cause puts it in doubt: its residuals show
+//! structure ([`residual_structure`](crate::sound_analysis::residual_structure): the heading it
+//! states does not hold over the record), or no mains hum was found, so that nothing known biases
+//! the pitch track alone. Where hum was found and the phase's residuals are noise, the
+//! disagreement is the pitch track's: the hum's lines cross the disk's harmonics as the pitch
+//! rises, and the frames the track keeps near them are pulled by an amount their scatter does not
+//! show, so the pitch fit's sigma (from its residuals) leaves its bias out, while the phase is
+//! fitted only where the disk's harmonics keep clear of the hum
+//! ([`HUM_GUARD`](crate::sound_analysis::phase_fit::HUM_GUARD)). Charging that bias to the phase's
+//! fit would widen an interval the phase's residuals give no reason to widen (in a quiet room
+//! with 2 % hum, beta right to 2e-4 with a sigma of 1.2e-4 would be stated as +- 0.0095).
 
 use crate::fit::law_stability::DRIFT_SIGMAS;
 use crate::sound_analysis::analysis::SoundAnalysis;
@@ -31,7 +45,9 @@ pub struct Terms {
     /// [`DRIFT_SIGMAS`] of the half's own uncertainty, else 0.
     pub law: f64,
     /// The two fits' disagreement $|\hat x_{phase} - \hat x_{pitch}|$ where it exceeds
-    /// [`DRIFT_SIGMAS`] times $\sqrt{\sigma_{phase}^2 + \sigma_{pitch}^2}$, else 0. Both fits
+    /// [`DRIFT_SIGMAS`] times $\sqrt{\sigma_{phase}^2 + \sigma_{pitch}^2}$ and the phase's fit is
+    /// in doubt ([`SoundAnalysis::phase_in_doubt`]; the rule and its reason: the module's
+    /// documentation), else 0. Both fits
     /// estimate the same parameter from the same sound; their difference has the variance of
     /// the sum at most (the errors of two fits of one record are correlated positively, if at
     /// all), so a difference beyond [`DRIFT_SIGMAS`] of it is a systematic error the noise
@@ -79,10 +95,13 @@ pub struct SoundResult {
     pub fitted_on: &'static str,
     /// Why the phase's fit is not the result.
     pub why_not_phase: Option<String>,
+    /// Where the two fits disagree beyond their noise: whether the disagreement is counted in the
+    /// phase's uncertainty, and why.
+    pub disagreement: Option<String>,
 }
 
-/// The disagreement term ([`Terms::disagreement`]) of estimates `a` and `b` with standard
-/// uncertainties `sa` and `sb`.
+/// The disagreement of estimates `a` and `b` with standard uncertainties `sa` and `sb` where it
+/// exceeds [`DRIFT_SIGMAS`] of their noise, else 0.
 fn disagreement(a: f64, sa: f64, b: f64, sb: f64) -> f64 {
     let d = (a - b).abs();
     if d > DRIFT_SIGMAS * sa.hypot(sb) {
@@ -100,17 +119,22 @@ impl SoundAnalysis {
         match &self.phase {
             Some(p) if self.phase_implausible().is_none() => {
                 let law = p.law.as_ref();
+                let doubt = if self.phase_in_doubt().is_some() {
+                    1.0
+                } else {
+                    0.0
+                };
                 let beta_terms = Terms {
                     fit: p.beta_sigma,
                     high_pass: p.beta_high_pass,
                     law: law.map_or(0.0, |l| l.beta_systematic()),
-                    disagreement: disagreement(p.beta, p.beta_sigma, x.beta, x.beta_sigma),
+                    disagreement: doubt * disagreement(p.beta, p.beta_sigma, x.beta, x.beta_sigma),
                 };
                 let t0_terms = Terms {
                     fit: p.t0_sigma,
                     high_pass: p.t0_high_pass,
                     law: law.map_or(0.0, |l| l.t0_systematic()),
-                    disagreement: disagreement(p.t0, p.t0_sigma, x.t0, x.t0_sigma),
+                    disagreement: doubt * disagreement(p.t0, p.t0_sigma, x.t0, x.t0_sigma),
                 };
                 SoundLaw {
                     beta: p.beta,
@@ -153,7 +177,56 @@ impl SoundAnalysis {
             law,
             fitted_on: if law.from_phase { "phase" } else { "pitch" },
             why_not_phase: self.phase_implausible(),
+            disagreement: self.disagreement_note(),
         }
+    }
+
+    /// Why the phase's fit is in doubt by its own evidence or for want of another cause, when it
+    /// is: then the two fits' disagreement, where it exceeds their noise, is counted in its
+    /// uncertainty (the rule and its reason: the module's documentation).
+    pub fn phase_in_doubt(&self) -> Option<String> {
+        let p = self.phase.as_ref()?;
+        match p.structure {
+            Some(s) if s.shown() => Some(format!("its residuals show structure ({s})")),
+            _ if self.track.hum.is_empty() => {
+                Some("no mains hum was found, so nothing known biases the pitch track alone".into())
+            }
+            _ => None,
+        }
+    }
+
+    /// Where the phase's plausible fit and the pitch's disagree beyond their noise: the
+    /// disagreement, whether it is counted in the stated uncertainty, and why.
+    pub fn disagreement_note(&self) -> Option<String> {
+        let p = self.phase.as_ref()?;
+        if self.phase_implausible().is_some() {
+            return None;
+        }
+        let x = &self.fit;
+        let sigmas = |a: f64, sa: f64, b: f64, sb: f64| (a - b).abs() / sa.hypot(sb);
+        let zb = sigmas(p.beta, p.beta_sigma, x.beta, x.beta_sigma);
+        let zt = sigmas(p.t0, p.t0_sigma, x.t0, x.t0_sigma);
+        if zb <= DRIFT_SIGMAS && zt <= DRIFT_SIGMAS {
+            return None;
+        }
+        let what = format!(
+            "the phase's and the pitch's fits disagree by {:.5} in beta ({zb:.1} sigma) and \
+             {:.6} s in t0 ({zt:.1} sigma)",
+            (p.beta - x.beta).abs(),
+            (p.t0 - x.t0).abs()
+        );
+        Some(match self.phase_in_doubt() {
+            Some(why) => format!(
+                "{what}; counted where beyond {DRIFT_SIGMAS} sigma in the phase's uncertainty, \
+                 which is in doubt: {why}"
+            ),
+            None => format!(
+                "{what}; not counted in the phase's uncertainty: its residuals show no structure \
+                 and the pitch track is under mains hum at {}, which pulls it by more than its \
+                 scatter shows",
+                hum_lines(&self.track.hum)
+            ),
+        })
     }
 
     /// Why the phase's fit cannot be the result, if it cannot; then [`law`](Self::law) is the
@@ -180,6 +253,12 @@ impl SoundAnalysis {
         }
         None
     }
+}
+
+/// The mains lines `hum` (Hz) as the text names them.
+fn hum_lines(hum: &[f64]) -> String {
+    let lines: Vec<String> = hum.iter().map(|h| format!("{h:.2}")).collect();
+    format!("{} Hz", lines.join(", "))
 }
 
 impl SoundLaw {
