@@ -119,6 +119,18 @@ fn a_disagreement_widens_the_phase_only_where_the_phase_is_in_doubt() {
         "{json}"
     );
 
+    // A corner whose sigma is larger than itself is no corner read: its number is not printed.
+    let mut loose = a.clone();
+    let q = loose.phase.as_mut().unwrap();
+    q.corner = Some((4.665e8, 1.3e26));
+    q.corner_not_used = Some("it is within 3 of its sigmas of zero".into());
+    let text = loose.to_string();
+    let stated = text.lines().find(|x| x.contains("stated:")).unwrap();
+    assert!(
+        stated.contains("determine no high-pass's corner") && !stated.contains("466500000"),
+        "{stated}"
+    );
+
     // The same blocks with residuals that drift by three sigmas over the record.
     let mut drifting = a.clone();
     let q = drifting.phase.as_mut().unwrap();

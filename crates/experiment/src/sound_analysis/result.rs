@@ -286,6 +286,7 @@ impl SoundLaw {
         let corner = match (p.corner, &p.corner_not_used) {
             (None, _) => "no harmonic above the fundamental to read a high-pass's corner from".to_string(),
             (Some((f, s)), None) => format!("a high-pass's corner read from the harmonics' phases: {f:.1} +- {s:.1} Hz, its lead taken out"),
+            (Some((f, s)), Some(why)) if s.is_nan() || s >= f => format!("the harmonics' phases determine no high-pass's corner (its sigma is at least the corner), no lead taken out: {why}"),
             (Some((f, s)), Some(why)) => format!("a high-pass's corner read from the harmonics' phases: {f:.1} +- {s:.1} Hz, its lead not taken out: {why}"),
         };
         format!(
