@@ -56,8 +56,9 @@ pub use light_analysis::analysis::{
 };
 pub use light_analysis::settings::AnalysisSettings;
 pub use sound_analysis::analysis::{
-    analyze_sound, analyze_sound_within, write_sound_analysis, SoundAnalysis, SoundLaw,
+    analyze_sound, analyze_sound_within, write_sound_analysis, SoundAnalysis,
 };
+pub use sound_analysis::result::{SoundLaw, SoundResult, Terms};
 pub use sound_analysis::track::TrackSettings;
 pub use synthetic::artifacts::Artifacts;
 pub use synthetic::law::{law_trace, Law};

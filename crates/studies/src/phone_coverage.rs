@@ -230,6 +230,25 @@ mod tests {
         room
     }
 
+    /// The analyses of the seeds in `ROLLING_DISK_SEEDS` (comma-separated), as `experiment
+    /// analyze` prints them, with the truth.
+    #[test]
+    #[ignore = "prints the analyses of chosen recordings"]
+    fn print_analyses() {
+        let seeds = std::env::var("ROLLING_DISK_SEEDS").unwrap_or_default();
+        for seed in seeds.split(',').filter_map(|s| s.parse::<u64>().ok()) {
+            let room = PhoneRoom::draw(seed);
+            let rec = room.record().unwrap();
+            let r = parse_recording(rec.wav().unwrap(), "x.wav", Channels::Mix).unwrap();
+            let mut trace = r.trace;
+            trace.truth = Some(rec.truth.clone());
+            match analyze_sound(&trace, &TrackSettings::default(), &Plausibility::default()) {
+                Ok(a) => println!("seed {seed}, high-pass {:.0} Hz\n{a}", room.high_pass),
+                Err(e) => println!("seed {seed}: {e}"),
+            }
+        }
+    }
+
     /// The rooms and pitch tracks of the seeds in `ROLLING_DISK_SEEDS` (comma-separated).
     #[test]
     #[ignore = "prints the tracks of chosen recordings"]

@@ -128,22 +128,6 @@ pub struct SoundAnalysis {
     pub truth: Option<Truth>,
 }
 
-/// Eq 79's parameters as a sound analysis states them.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct SoundLaw {
-    /// $\beta$ and its total standard uncertainty (the fit's and, where eq 79 drifts over the
-    /// record, the law's).
-    pub beta: f64,
-    /// (see `beta`)
-    pub beta_sigma: f64,
-    /// $t_0$ (s) and its total standard uncertainty.
-    pub t0: f64,
-    /// (s)
-    pub t0_sigma: f64,
-    /// Whether they come from the phase (else from the pitch track).
-    pub from_phase: bool,
-}
-
 /// Analyses a sound recording.
 pub fn analyze_sound(
     trace: &Trace,
@@ -422,6 +406,25 @@ impl fmt::Display for SoundAnalysis {
                 Some(c) => writeln!(f, "  turns counted: {c}"),
                 None => Ok(()),
             })
+            .and_then(|()| {
+                let l = self.law();
+                if l.from_phase {
+                    writeln!(f, "  stated: {}", l.describe_terms(p))?;
+                }
+                match (p.structure, self.disagreement_note()) {
+                    (_, Some(d)) => writeln!(f, "  disagreement: {d}"),
+                    (Some(s), None) => writeln!(
+                        f,
+                        "  phase residuals: {s}: {}",
+                        if s.shown() {
+                            "structure, but the fits agree within their noise, so nothing is added"
+                        } else {
+                            "noise"
+                        }
+                    ),
+                    (None, None) => Ok(()),
+                }
+            })
             .and_then(|()| match &p.law {
                 Some(l) if l.drifts => writeln!(
                     f,
@@ -459,55 +462,13 @@ impl fmt::Display for SoundAnalysis {
 }
 
 impl SoundAnalysis {
-    /// The result: eq 79 fitted to the phase when it was, else to the pitch track.
-    pub fn law(&self) -> SoundLaw {
-        let x = &self.fit;
-        match &self.phase {
-            Some(p) if self.phase_implausible().is_none() => SoundLaw {
-                beta: p.beta,
-                beta_sigma: p.beta_total(),
-                t0: p.t0,
-                t0_sigma: p.t0_total(),
-                from_phase: true,
-            },
-            _ => SoundLaw {
-                beta: x.beta,
-                beta_sigma: x.beta_sigma,
-                t0: x.t0,
-                t0_sigma: x.t0_sigma,
-                from_phase: false,
-            },
-        }
-    }
-
-    /// Why the phase's fit cannot be the result, if it cannot; then [`law`](Self::law) is the
-    /// pitch track's fit. Eq 79's $t_0$ is where the disk stops: a $t_0$ more than three of its
-    /// sigmas before the middle of the last tracked frame contradicts a pitch that was heard;
-    /// and a $\beta$ whose standard uncertainty exceeds it is not determined by the fit.
-    pub fn phase_implausible(&self) -> Option<String> {
-        let p = self.phase.as_ref()?;
-        let last = self.track.points.last().map(|q| 0.5 * (q.a + q.b))?;
-        if p.t0 + 3.0 * p.t0_total() < last {
-            return Some(format!(
-                "its t0 = {:.4} +- {:.4} s is before the last tracked pitch, at {last:.4} s, \
-                 where the disk was still heard turning",
-                p.t0,
-                p.t0_total()
-            ));
-        }
-        let sigma = p.beta_total();
-        if sigma.is_nan() || sigma >= p.beta.abs() {
-            return Some(format!(
-                "its beta = {:.3} +- {sigma:.3} is not determined: the sigma is at least beta",
-                p.beta
-            ));
-        }
-        None
-    }
-
-    /// The analysis as pretty JSON.
+    /// The analysis as pretty JSON, with the result ([`SoundResult`](crate::sound_analysis::result::SoundResult)) under `result`.
     pub fn to_json(&self) -> String {
-        serde_json::to_string_pretty(self).unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))
+        let mut v = serde_json::to_value(self).unwrap_or_default();
+        if let (Some(m), Ok(r)) = (v.as_object_mut(), serde_json::to_value(self.result())) {
+            m.insert("result".into(), r);
+        }
+        serde_json::to_string_pretty(&v).unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))
     }
 
     /// The frequency track as CSV: frame start and end (s), $\Omega$ (rad/s), its standard

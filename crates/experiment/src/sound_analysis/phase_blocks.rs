@@ -57,6 +57,16 @@ pub struct Block {
     pub sigma: f64,
     /// The fundamental's power over the noise's in $z_1$.
     pub snr: f64,
+    /// Per harmonic $h \ge 2$ (index $h - 1$; NaN where the block has no such harmonic): its
+    /// phase against $h$ times the fundamental's, $\mathrm{wrap}(\arg z_h - c_h - h u_1)$ (rad),
+    /// which the heading does not move and a filter's phase $\varphi$ moves by
+    /// $\varphi(h\Omega) - h\varphi(\Omega)$ less its mean over the record.
+    pub split: [f64; HARMONICS],
+    /// Its variance $\mathrm{Var}(\arg z_h) + h^2\,\mathrm{Var}(u_1)$ (rad²).
+    pub split_var: [f64; HARMONICS],
+    /// The weight of harmonic $h$ in `offset`, $\mathrm{offset} = u_1 + \sum_{h \ge 2}
+    /// W_h\,\mathrm{split}_h / h$ (index $h - 1$; 0 where absent).
+    pub weight: [f64; HARMONICS],
 }
 
 /// How blocks are cut and kept.
@@ -342,11 +352,22 @@ fn combine(
         .enumerate()
         .map(|(i, &k)| {
             let (mut num, mut den) = (u1[i] / per[k][0].1, 1.0 / per[k][0].1);
+            let (mut split, mut split_var, mut weight) = (
+                [f64::NAN; HARMONICS],
+                [f64::NAN; HARMONICS],
+                [0.0; HARMONICS],
+            );
             for (h, &(ph, var)) in per[k].iter().enumerate().skip(1) {
                 let hh = (h + 1) as f64;
-                let est = u1[i] + wrap(ph - c[h] - hh * u1[i]) / hh;
+                split[h] = wrap(ph - c[h] - hh * u1[i]);
+                split_var[h] = var + hh * hh * per[k][0].1;
+                let est = u1[i] + split[h] / hh;
                 num += est * hh * hh / var;
                 den += hh * hh / var;
+                weight[h] = hh * hh / var;
+            }
+            for w in weight.iter_mut() {
+                *w /= den;
             }
             let r = &raw[k];
             Block {
@@ -357,6 +378,9 @@ fn combine(
                 offset: num / den,
                 sigma: den.recip().sqrt(),
                 snr: keep[k],
+                split,
+                split_var,
+                weight,
             }
         })
         .collect()

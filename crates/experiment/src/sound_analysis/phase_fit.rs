@@ -15,6 +15,14 @@
 //! mean offset sits at its centroid; the blocks near $t_0$ reach up to five of the last fit's
 //! $\sigma_{t_0}$ (and at least one millisecond) before it.
 //!
+//! **A phone's high-pass.** Its phase leads the heading by an amount that falls as the pitch
+//! rises; the harmonics' phases measure its corner apart from the law, each block's heading is
+//! corrected by the lead it holds, and the corner's uncertainty is carried into $\beta$'s and
+//! $t_0$'s ([`high_pass`](crate::sound_analysis::high_pass)). The lead is taken out only where
+//! the record shows a high-pass and the correction keeps the turns counted (the rule and its
+//! reason: [`high_pass::CORNER_SIGMAS`](crate::sound_analysis::high_pass::CORNER_SIGMAS) and
+//! [`high_pass::MAX_TURN_CHANGE`](crate::sound_analysis::high_pass::MAX_TURN_CHANGE)).
+//!
 //! **The law's own error.** The heading is refitted on the later half of the blocks; where
 //! $\beta$ or $t_0$ moves by more than [`DRIFT_SIGMAS`](crate::fit::law_stability::DRIFT_SIGMAS) of the half's uncertainty, the shift is
 //! stated as the law's systematic uncertainty, as for the light signal
@@ -24,10 +32,13 @@ use crate::fit::band::Row;
 use crate::fit::eq84_85::phase;
 use crate::fit::law_stability::LawStability;
 use crate::fit::least_squares::{solve, FitError, Problem, Scale};
+use crate::sound_analysis::high_pass::{block_leads, fit_corner, rates, Corner, MAX_TURN_CHANGE};
 use crate::sound_analysis::mains::hum::remove_hum_clear;
 use crate::sound_analysis::phase_blocks::{blocks, Block, BlockSettings, Samples};
+use crate::sound_analysis::residual_structure::Structure;
 use nalgebra::SVector;
 use serde::Serialize;
+use std::f64::consts::TAU;
 
 /// Rounds of blocks and fit.
 const ROUNDS: usize = 3;
@@ -95,6 +106,17 @@ pub struct PhaseFit {
     pub ln_c: f64,
     /// (see `ln_c`)
     pub ln_c_sigma: f64,
+    /// The phone's high-pass corner $\omega_c/2\pi$ (Hz) read from the harmonics' phases and
+    /// its standard uncertainty, when a harmonic above the fundamental was followed.
+    pub corner: Option<(f64, f64)>,
+    /// Why the corner read is not taken out of the heading (`None` when it is, or when no
+    /// corner was read).
+    pub corner_not_used: Option<String>,
+    /// What the corner's uncertainty makes of $\beta$'s and $t_0$'s (s): half the difference of
+    /// the fits at $\omega_c \pm \sigma_{\omega_c}$; 0 without a corner.
+    pub beta_high_pass: f64,
+    /// (s)
+    pub t0_high_pass: f64,
     /// Turns of the heading followed, from the first block's start to the last block's end.
     pub turns: f64,
     /// The rms residual (rad).
@@ -107,19 +129,24 @@ pub struct PhaseFit {
     pub points: Vec<PhasePoint>,
     /// The later half's fit against this one: whether eq 79 drifts over the record.
     pub law: Option<LawStability>,
+    /// The tests of the blocks' whitened residuals for structure (`None` below
+    /// [`MIN_BLOCKS`](crate::sound_analysis::residual_structure::MIN_BLOCKS)).
+    pub structure: Option<Structure>,
 }
 
 impl PhaseFit {
-    /// $\beta$'s total standard uncertainty: the fit's and the law's in quadrature.
+    /// $\beta$'s standard uncertainty from the fit, the high-pass's corner and the law, in
+    /// quadrature.
     pub fn beta_total(&self) -> f64 {
         let law = self.law.as_ref().map_or(0.0, LawStability::beta_systematic);
-        self.beta_sigma.hypot(law)
+        self.beta_sigma.hypot(self.beta_high_pass).hypot(law)
     }
 
-    /// $t_0$'s total standard uncertainty (s): the fit's and the law's in quadrature.
+    /// $t_0$'s standard uncertainty (s) from the fit, the high-pass's corner and the law, in
+    /// quadrature.
     pub fn t0_total(&self) -> f64 {
         let law = self.law.as_ref().map_or(0.0, LawStability::t0_systematic);
-        self.t0_sigma.hypot(law)
+        self.t0_sigma.hypot(self.t0_high_pass).hypot(law)
     }
 }
 
@@ -149,9 +176,38 @@ pub fn fit_phase(
             (p[1] - (5.0 * sigma_t0).max(1e-3)).min(rec.t_start + rec.x.len() as f64 * rec.dt);
         let bl = blocks(rec, &p, shift, (first, end), round == 0, settings);
         FitError::at_least("phase blocks", bl.len(), 12, "")?;
-        let (mut fit, p4) = fit_blocks(&bl, &p, shift)?;
+        let omega = rates(&bl, &p);
+        let leads = |wc: f64| block_leads(&bl, &omega, wc);
+        let read = fit_corner(&bl, &omega);
+        let plain = fit_blocks(&bl, &p, shift, &vec![0.0; bl.len()])?;
+        let (corner, not_used, lead, (mut fit, p4)) = match read.map(|c| (c, c.why_not_used())) {
+            Some((c, None)) => {
+                let lead = leads(c.omega_c);
+                let corrected = fit_blocks(&bl, &p, shift, &lead)?;
+                let change = corrected.0.turns - plain.0.turns;
+                if change.abs() < MAX_TURN_CHANGE {
+                    (Some(c), None, lead, corrected)
+                } else {
+                    let why = format!(
+                        "its lead would change the turns counted by {change:+.2}, more than \
+                         the {MAX_TURN_CHANGE} turn a high-pass's lead can move them"
+                    );
+                    (None, Some(why), vec![0.0; bl.len()], plain)
+                }
+            }
+            Some((_, why)) => (None, why, vec![0.0; bl.len()], plain),
+            None => (None, None, vec![0.0; bl.len()], plain),
+        };
         if round + 1 == ROUNDS {
-            fit.law = later_half(&bl, &p, shift, &fit);
+            fit.corner = read.map(|c: Corner| (c.omega_c / TAU, c.sigma / TAU));
+            fit.corner_not_used = not_used;
+            if let Some(c) = corner {
+                let (hi, _) = fit_blocks(&bl, &p, shift, &leads(c.omega_c + c.sigma))?;
+                let (lo, _) = fit_blocks(&bl, &p, shift, &leads(c.omega_c - c.sigma))?;
+                fit.beta_high_pass = 0.5 * (hi.beta - lo.beta).abs();
+                fit.t0_high_pass = 0.5 * (hi.t0 - lo.t0).abs();
+            }
+            fit.law = later_half(&bl, &p, shift, &lead, &fit);
         }
         p = SVector::<f64, 3>::new(p4[0], p4[1], p4[2]);
         shift = p4[3];
@@ -170,10 +226,11 @@ fn later_half(
     bl: &[Block],
     p: &SVector<f64, 3>,
     shift: f64,
+    lead: &[f64],
     whole: &PhaseFit,
 ) -> Option<LawStability> {
     let h = bl.len() / 2;
-    let (half, _) = fit_blocks(&bl[h..], p, shift).ok()?;
+    let (half, _) = fit_blocks(&bl[h..], p, shift, &lead[h..]).ok()?;
     Some(LawStability::of_halves(
         bl.len() - h,
         bl[h].a,
@@ -213,7 +270,7 @@ fn without_hum(rec: &Samples<'_>, hum: &[f64], p: &SVector<f64, 3>) -> Vec<f64> 
         .map(|c| {
             let t = rec.t_start + ((c as f64 + 0.5) * chunk as f64) * rec.dt;
             if t < p[1] {
-                phase(p, t).1 / std::f64::consts::TAU
+                phase(p, t).1 / TAU
             } else {
                 f64::NAN
             }
@@ -227,16 +284,19 @@ fn without_hum(rec: &Samples<'_>, hum: &[f64], p: &SVector<f64, 3>) -> Vec<f64> 
     x
 }
 
-/// Fits the heading to blocks demodulated against `p` plus `shift`.
+/// Fits the heading to blocks demodulated against `p` plus `shift`, each block's datum less
+/// the high-pass's `lead` (rad) it holds.
 fn fit_blocks(
     bl: &[Block],
     p: &SVector<f64, 3>,
     shift: f64,
+    lead: &[f64],
 ) -> Result<(PhaseFit, SVector<f64, 4>), FitError> {
     let t: Vec<f64> = bl.iter().map(|b| b.t).collect();
     let y: Vec<f64> = bl
         .iter()
-        .map(|b| phase(p, b.t).0 + shift + b.offset)
+        .zip(lead)
+        .map(|(b, l)| phase(p, b.t).0 + shift + b.offset - l)
         .collect();
     let w: Vec<f64> = bl.iter().map(|b| b.sigma * b.sigma).collect();
     let last = bl.iter().map(|b| b.b).fold(f64::MIN, f64::max);
@@ -258,7 +318,7 @@ fn fit_blocks(
         .map(|(r, w)| r * r / w)
         .sum::<f64>();
     let q = |tt: f64| phase(&SVector::<f64, 3>::new(s.p[0], s.p[1], s.p[2]), tt).0;
-    let turns = (q(last) - q(bl[0].a)) / std::f64::consts::TAU;
+    let turns = (q(last) - q(bl[0].a)) / TAU;
     let fit = PhaseFit {
         beta: s.p[0],
         beta_sigma: s.cov[(0, 0)].sqrt(),
@@ -266,10 +326,15 @@ fn fit_blocks(
         t0_sigma: s.cov[(1, 1)].sqrt(),
         ln_c: s.p[2],
         ln_c_sigma: s.cov[(2, 2)].sqrt(),
+        corner: None,
+        corner_not_used: None,
+        beta_high_pass: 0.0,
+        t0_high_pass: 0.0,
         turns,
         rms: (s.residual.iter().map(|r| r * r).sum::<f64>() / n as f64).sqrt(),
         chi2_dof: chi2 / (n - 4) as f64,
         n,
+        structure: Structure::of(&s.residual, &bl.iter().map(|b| b.sigma).collect::<Vec<_>>()),
         points: bl
             .iter()
             .zip(&s.residual)

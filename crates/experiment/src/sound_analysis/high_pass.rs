@@ -1,0 +1,320 @@
+//! A phone's high-pass, read from the phases of the disk's harmonics, and the lead it puts on
+//! the heading the blocks hold ([`phase_blocks`](crate::sound_analysis::phase_blocks)).
+//!
+//! A phone filters its microphone with a high-pass of a corner $\omega_c$ of tens to hundreds
+//! of hertz. Its phase $\varphi(\omega)$ leads the sound at $\omega$, and falls toward 0 as the
+//! pitch rises: its group delay $-d\varphi/d\omega$ makes the pitch heard late, so a heading
+//! fitted without it puts $t_0$ late (by milliseconds at a corner of 100 Hz) and moves $\beta$.
+//! Fitted as a fifth parameter beside eq 79's, the lead is nearly a combination of the law's
+//! own derivatives over a record's span (far above the corner it is $\propto 1/\Omega \propto
+//! (t_0 - t)^{1/(\beta+2)}$) and the law's uncertainties grow many-fold.
+//!
+//! **The harmonics measure it apart from the law.** The heading moves harmonic $h$'s phase by $h$
+//! times the fundamental's; the filter moves it by $\varphi(h\Omega)$. So each block's
+//! $\mathrm{split}_h = \arg z_h - c_h - h u_1$ does not depend on the heading at all and holds
+//! $$g_h(\Omega) - \bar g_h, \qquad g_h = \varphi(h\Omega) - h\,\varphi(\Omega),$$
+//! $\bar g_h$ its weighted mean over the blocks (the constant $c_h$ took it). $\omega_c$ is
+//! fitted to the splits alone (one parameter, the rates $\Omega_k$ from the reference law); the
+//! blocks' headings are corrected by the lead their data hold,
+//! $$\varphi(\Omega) + \sum_{h \ge 2} W_h\,\frac{g_h(\Omega) - \bar g_h}{h},$$
+//! and $\omega_c$'s uncertainty is carried into $\beta$'s and $t_0$'s by refitting at
+//! $\omega_c \pm \sigma_{\omega_c}$.
+//!
+//! **Taken out only where the record shows a high-pass.** A recording without one has
+//! $\omega_c = 0$; the fit, held to positive corners, still finds one in the splits' noise and in
+//! what other filters (a room's reverb, the disk's own harmonics) do to them, and far below a
+//! corner the lead nears $\pi$: a large, wrong correction at low pitch. So the lead is taken out
+//! only where the corner stands [`CORNER_SIGMAS`] of its own uncertainty above zero and its fit
+//! beats no high-pass at all ($\omega_c = 0$, no lead) by as many sigmas of the splits' own
+//! scatter ([`Corner::why_not_used`]), and where taking it out keeps the turns counted: a high-pass's lead
+//! lies between 0 and $\pi$ at every pitch, so it moves the heading's run from the first block to
+//! the last by less than half a turn, and a corrected fit whose count differs from the
+//! uncorrected one's by [`MAX_TURN_CHANGE`] or more has slipped a turn
+//! ([`phase_fit`](crate::sound_analysis::phase_fit)). Otherwise the heading is fitted as heard and
+//! the reason is stated.
+//!
+//! **The filter's form** is a second-order Butterworth high-pass's,
+//! $$\varphi(\omega) = \operatorname{atan2}\bigl(\sqrt2\,\omega\,\omega_c,\ \omega^2 - \omega_c^2\bigr),$$
+//! the biquad of a phone's audio path; far above its corner any high-pass's lead is
+//! $\propto 1/\omega$, where a first-order's at $\sqrt2\,\omega_c$ is the same.
+
+use crate::fit::band::Row;
+use crate::fit::eq84_85::phase;
+use crate::fit::least_squares::{solve, Problem, Scale};
+use crate::sound_analysis::phase_blocks::{Block, HARMONICS};
+use nalgebra::SVector;
+use std::f64::consts::{SQRT_2, TAU};
+
+/// The lead (rad) of a second-order Butterworth high-pass of corner `wc` at `w` (both rad/s),
+/// and its derivative by `wc`.
+pub fn lead(wc: f64, w: f64) -> (f64, f64) {
+    let (u, v) = (SQRT_2 * w * wc, w * w - wc * wc);
+    let d = (u * u + v * v).max(f64::MIN_POSITIVE);
+    (u.atan2(v), (v * SQRT_2 * w + u * 2.0 * wc) / d)
+}
+
+/// $g_h(\Omega) = \varphi(h\Omega) - h\varphi(\Omega)$ and its derivative by $\omega_c$.
+fn g(h: usize, wc: f64, w: f64) -> (f64, f64) {
+    let hh = h as f64;
+    let (a, da) = lead(wc, hh * w);
+    let (b, db) = lead(wc, w);
+    (a - hh * b, da - hh * db)
+}
+
+/// The splits of blocks `bl` with rates `omega` (rad/s): data (block, harmonic) pairs.
+struct Splits<'a> {
+    bl: &'a [Block],
+    omega: &'a [f64],
+    /// (block, harmonic h) of each datum.
+    at: Vec<(usize, usize)>,
+    y: Vec<f64>,
+}
+
+impl<'a> Splits<'a> {
+    fn new(bl: &'a [Block], omega: &'a [f64]) -> (Self, Vec<f64>) {
+        let (mut at, mut y, mut var) = (Vec::new(), Vec::new(), Vec::new());
+        for h in 2..=HARMONICS {
+            for (k, b) in bl.iter().enumerate() {
+                if b.split[h - 1].is_finite() && b.split_var[h - 1] > 0.0 {
+                    at.push((k, h));
+                    y.push(b.split[h - 1]);
+                    var.push(b.split_var[h - 1]);
+                }
+            }
+        }
+        (Self { bl, omega, at, y }, var)
+    }
+
+    /// The weighted mean of $g_h$ (and of its derivative) over the blocks holding `h`.
+    fn mean(&self, h: usize, wc: f64) -> (f64, f64) {
+        let (mut s, mut ds, mut wsum) = (0.0, 0.0, 0.0);
+        for (k, b) in self.bl.iter().enumerate() {
+            let v = b.split_var[h - 1];
+            if b.split[h - 1].is_finite() && v > 0.0 {
+                let (gv, dg) = g(h, wc, self.omega[k]);
+                s += gv / v;
+                ds += dg / v;
+                wsum += 1.0 / v;
+            }
+        }
+        (s / wsum, ds / wsum)
+    }
+}
+
+impl Problem<1> for Splits<'_> {
+    fn y(&self) -> &[f64] {
+        &self.y
+    }
+    fn model(&self, p: &SVector<f64, 1>, i: usize) -> (f64, SVector<f64, 1>) {
+        let (k, h) = self.at[i];
+        let (gv, dg) = g(h, p[0], self.omega[k]);
+        let (m, dm) = self.mean(h, p[0]);
+        (gv - m, SVector::<f64, 1>::new(dg - dm))
+    }
+    fn rows(&self, _p: &SVector<f64, 1>) -> Vec<Row> {
+        (0..self.y.len())
+            .map(|i| Row {
+                start: i,
+                coef: vec![1.0],
+            })
+            .collect()
+    }
+    fn admissible(&self, p: &SVector<f64, 1>) -> bool {
+        p[0].is_finite() && p[0] > 0.0
+    }
+}
+
+/// The high-pass's corner read from the splits.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Corner {
+    /// $\omega_c$ (rad/s) and its standard uncertainty.
+    pub omega_c: f64,
+    /// (rad/s)
+    pub sigma: f64,
+    /// How far the corner's fit beats no high-pass at all, in sigmas:
+    /// $\sqrt{(\chi^2(0) - \chi^2(\hat\omega_c)) / (\chi^2(\hat\omega_c)/(n-1))}$, the splits'
+    /// $\chi^2$ scaled by its own residuals.
+    pub shown: f64,
+}
+
+/// How many of its own standard uncertainties a corner must stand above zero for its lead to be
+/// taken out.
+pub const CORNER_SIGMAS: f64 = 3.0;
+
+/// The change in the turns counted (turns) at and above which the lead is not taken out: half a
+/// turn, more than a high-pass's lead (between 0 and $\pi$) can move the heading's run.
+pub const MAX_TURN_CHANGE: f64 = 0.5;
+
+impl Corner {
+    /// Why the record does not show this corner (`None` when it stands [`CORNER_SIGMAS`] of its
+    /// uncertainty above zero).
+    pub fn why_not_used(&self) -> Option<String> {
+        if self.omega_c <= CORNER_SIGMAS * self.sigma {
+            Some(format!(
+                "it is within {CORNER_SIGMAS} of its sigmas of zero, so the record shows no high-pass"
+            ))
+        } else if self.shown.is_nan() || self.shown <= CORNER_SIGMAS {
+            Some(format!(
+                "it fits the harmonics' phases better than no high-pass by {:.1} sigmas, not \
+                 {CORNER_SIGMAS}, so the record shows none",
+                self.shown
+            ))
+        } else {
+            None
+        }
+    }
+}
+
+/// The rates (rad/s) of the law `p` at the blocks' centroids.
+pub fn rates(bl: &[Block], p: &SVector<f64, 3>) -> Vec<f64> {
+    bl.iter().map(|b| phase(p, b.t).1).collect()
+}
+
+/// Fits the corner to the splits of blocks `bl` at rates `omega`: started from the best of
+/// corners 2-2000 Hz on a logarithmic grid; `None` where no block holds a harmonic above the
+/// fundamental, or the fit fails.
+pub fn fit_corner(bl: &[Block], omega: &[f64]) -> Option<Corner> {
+    let (sp, var) = Splits::new(bl, omega);
+    if sp.y.len() < 4 {
+        return None;
+    }
+    let chi2 = |wc: f64| -> f64 {
+        (0..sp.y.len())
+            .map(|i| (sp.y[i] - sp.model(&SVector::<f64, 1>::new(wc), i).0).powi(2) / var[i])
+            .sum()
+    };
+    let start = (0..=60)
+        .map(|j| TAU * 2.0 * 1000f64.powf(j as f64 / 60.0))
+        .min_by(|a, b| chi2(*a).total_cmp(&chi2(*b)))?;
+    let s = solve(&sp, &var, SVector::<f64, 1>::new(start), Scale::Stationary).ok()?;
+    let sigma = s.cov[(0, 0)].sqrt();
+    let best = chi2(s.p[0]);
+    let shown = ((chi2(0.0) - best).max(0.0) / (best / (sp.y.len() - 1) as f64)).sqrt();
+    (s.p[0].is_finite() && sigma.is_finite()).then_some(Corner {
+        omega_c: s.p[0],
+        sigma,
+        shown,
+    })
+}
+
+/// The lead (rad) each block's datum holds for a corner `wc` (rad/s), at rates `omega`.
+pub fn block_leads(bl: &[Block], omega: &[f64], wc: f64) -> Vec<f64> {
+    let (sp, _) = Splits::new(bl, omega);
+    let means: Vec<f64> = (1..=HARMONICS)
+        .map(|h| if h == 1 { 0.0 } else { sp.mean(h, wc).0 })
+        .collect();
+    bl.iter()
+        .zip(omega)
+        .map(|(b, &w)| {
+            let mut l = lead(wc, w).0;
+            for h in 2..=HARMONICS {
+                if b.weight[h - 1] > 0.0 && means[h - 1].is_finite() {
+                    l += b.weight[h - 1] * (g(h, wc, w).0 - means[h - 1]) / h as f64;
+                }
+            }
+            l
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A phone's sound of eq 79 exactly ($\beta = 2$, 16 kS/s, its fundamental 16-80 Hz)
+    /// through a second-order Butterworth high-pass at 120 Hz: the harmonics read the corner
+    /// within three of its sigmas, the phase's fit is the result, and its 95 % intervals hold
+    /// the true $\beta$ and $t_0$; the pitch track's $t_0$, which the high-pass's group delay
+    /// makes late, is further from the truth.
+    #[test]
+    fn a_known_high_pass_is_read_and_the_intervals_hold_the_truth() {
+        use crate::fit::plausibility::Plausibility;
+        use crate::sound_analysis::analysis::analyze_sound;
+        use crate::sound_analysis::track::TrackSettings;
+        use crate::synthetic::artifacts::Artifacts;
+        use crate::synthetic::law::Law;
+        use crate::synthetic::room_filters::high_pass;
+        use crate::synthetic::sound::{law_sound, Microphone};
+        let law = Law {
+            beta: 2.0,
+            c: 100f64.powi(4) * 7.0,
+        };
+        let mut s = law_sound(&law, &Microphone::phone(16_000, 3), &Artifacts::none()).unwrap();
+        high_pass(&mut s.v, 120.0, 16_000.0);
+        let a = analyze_sound(&s, &TrackSettings::default(), &Plausibility::default()).unwrap();
+        let truth = s.truth.clone().unwrap();
+        let (f, sf) = a.phase.as_ref().and_then(|p| p.corner).unwrap();
+        assert!((f - 120.0).abs() < 3.0 * sf, "corner {f} +- {sf}\n{a}");
+        let l = a.law();
+        assert!(l.from_phase, "{a}");
+        assert!((l.beta - 2.0).abs() <= 1.96 * l.beta_sigma, "{a}");
+        assert!((l.t0 - truth.t0).abs() <= 1.96 * l.t0_sigma, "{a}");
+        assert!((a.fit.t0 - truth.t0).abs() > (l.t0 - truth.t0).abs(), "{a}");
+    }
+
+    /// The same sound without a high-pass: whatever corner the splits give, its lead is not
+    /// taken out (the record shows none), and the phase's fit holds the truth.
+    #[test]
+    fn without_a_high_pass_no_lead_is_taken_out() {
+        use crate::fit::plausibility::Plausibility;
+        use crate::sound_analysis::analysis::analyze_sound;
+        use crate::sound_analysis::track::TrackSettings;
+        use crate::synthetic::artifacts::Artifacts;
+        use crate::synthetic::law::Law;
+        use crate::synthetic::sound::{law_sound, Microphone};
+        let law = Law {
+            beta: 2.0,
+            c: 100f64.powi(4) * 7.0,
+        };
+        let s = law_sound(&law, &Microphone::phone(16_000, 3), &Artifacts::none()).unwrap();
+        let a = analyze_sound(&s, &TrackSettings::default(), &Plausibility::default()).unwrap();
+        let truth = s.truth.clone().unwrap();
+        let p = a.phase.as_ref().unwrap();
+        assert!(
+            p.corner.is_none() || p.corner_not_used.is_some(),
+            "{:?}\n{a}",
+            p.corner
+        );
+        assert_eq!((p.beta_high_pass, p.t0_high_pass), (0.0, 0.0), "{a}");
+        let l = a.law();
+        assert!((l.beta - 2.0).abs() <= 1.96 * l.beta_sigma, "{a}");
+        assert!((l.t0 - truth.t0).abs() <= 1.96 * l.t0_sigma, "{a}");
+    }
+
+    /// A corner within [`CORNER_SIGMAS`] of its sigmas of zero, or whose fit beats no
+    /// high-pass by no more than as many sigmas, is not shown by the record; one above both is.
+    #[test]
+    fn a_corner_is_used_only_above_its_sigmas() {
+        let at = |omega_c: f64, shown: f64| {
+            Corner {
+                omega_c,
+                sigma: 10.0,
+                shown,
+            }
+            .why_not_used()
+        };
+        assert!(at(CORNER_SIGMAS * 10.0, 10.0).is_some());
+        assert!(at(CORNER_SIGMAS * 10.0 + 1.0, 10.0).is_none());
+        assert!(at(CORNER_SIGMAS * 10.0 + 1.0, CORNER_SIGMAS).is_some());
+    }
+
+    /// The lead is 90 degrees at the corner, tends to 180 degrees far below and to
+    /// $\sqrt2\,\omega_c/\omega$ far above it; its derivative by the corner is the difference
+    /// quotient's.
+    #[test]
+    fn the_butterworth_lead() {
+        let wc = 100.0;
+        assert!((lead(wc, wc).0 - std::f64::consts::FRAC_PI_2).abs() < 1e-12);
+        assert!((lead(wc, 0.01 * wc).0 - std::f64::consts::PI).abs() < 0.02);
+        let far = lead(wc, 1000.0 * wc).0;
+        assert!((far / (SQRT_2 / 1000.0) - 1.0).abs() < 1e-5, "{far}");
+        for w in [30.0, 100.0, 400.0] {
+            let e = 1e-5;
+            let dq = (lead(wc + e, w).0 - lead(wc - e, w).0) / (2.0 * e);
+            assert!(
+                (lead(wc, w).1 - dq).abs() < 1e-7 * dq.abs().max(1e-3),
+                "{w}"
+            );
+        }
+    }
+}
