@@ -110,7 +110,7 @@ pub fn eq76(b: &Bench) -> Finding {
     let mut headline = None;
     let runs = over_descents(b, &alphas, |d, law, i, r| {
         let (k, beta, alpha0) = (d.k, law.beta, alphas[i]);
-        let bind = law_bindings(&d, &law);
+        let bind = law_bindings(d, law);
         // The printed rate along the run, integrated by the trapezoid rule.
         let mut predicted = vec![r.alpha[0]];
         for j in 1..r.t.len() {
