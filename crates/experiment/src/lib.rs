@@ -42,7 +42,7 @@ pub mod trace;
 // The modules whose paths callers outside this crate name, at the root as before the rooms.
 pub use fit::{motion_law, plausibility};
 pub use formats::{recording, scope_layout, wav};
-pub use sound_analysis::{spectrogram, track, turn_count};
+pub use sound_analysis::{refusal, spectrogram, track, turn_count};
 pub use synthetic::{law, mechanisms, simulate, sound};
 
 pub use error::ExperimentError;
@@ -54,7 +54,8 @@ pub use formats::wav::{encode_wav, read_wav, wav_bytes, WavCoding};
 pub use light_analysis::analysis::{analyze, analyze_within, write_analysis, Analysis};
 pub use light_analysis::settings::AnalysisSettings;
 pub use sound_analysis::analysis::{
-    analyze_sound, analyze_sound_within, write_sound_analysis, SoundAnalysis, SoundLaw,
+    analyze_sound, analyze_sound_keeping_track, analyze_sound_within, write_sound_analysis,
+    SoundAnalysis, SoundLaw,
 };
 pub use sound_analysis::track::TrackSettings;
 pub use synthetic::artifacts::Artifacts;

@@ -2,12 +2,14 @@
 //! ([`spectrum`]) followed into a pitch track ([`track`]), the spectrogram for the eye
 //! ([`spectrogram`]), the phase followed turn by turn ([`phase_blocks`]) and eq 79's heading
 //! fitted to it ([`phase_fit`]), the turns it counts checked against the track's
-//! ([`turn_count`]), and the whole analysis ([`analysis`]).
+//! ([`turn_count`]), and the whole analysis ([`analysis`]) or its refusal with the track it had
+//! made ([`refusal`]).
 
 pub mod analysis;
 pub mod mains;
 pub mod phase_blocks;
 pub mod phase_fit;
+pub mod refusal;
 pub mod spectrogram;
 pub mod spectrum;
 pub mod track;
