@@ -2,8 +2,8 @@
 //!
 //! **Which line is followed.** The sound of a spinning disk is at the contact point's rate,
 //! $\Omega/2\pi$, with harmonics at $h\Omega/2\pi$ (see [`sound`](crate::synthetic::sound)).
-//! Each frame's fundamental is found by the harmonic sum and refined by reassignment, with a
-//! parabola as the cross-check ([`spectrum`](crate::sound_analysis::spectrum)). Mains hum is
+//! Each frame's fundamental is found by its harmonic family (each harmonic's power over its own
+//! noise floor) and refined by reassignment, with a parabola as the cross-check ([`spectrum`](crate::sound_analysis::spectrum)). Mains hum is
 //! subtracted first ([`hum`](crate::sound_analysis::mains::hum)).
 //!
 //! **Frames follow the pitch.** Frames are contiguous and do not overlap (their errors are
@@ -36,7 +36,8 @@
 //! **Left out.** Frames off the line the track follows (cut where a searched frame's
 //! fundamental jumps by more than [`STEP`] from the last one held; the longest run is the line):
 //! before the line's first frame or after its last, as outside (skipped: the disk is not yet
-//! followed there, or no longer heard), and between them as stray; frames whose two estimators disagree by more than 5 of their sigmas plus a
+//! followed there, or no longer heard; the line ends where its pitch stops rising, see
+//! `end_at_stall`), and between them as stray; frames whose two estimators disagree by more than 5 of their sigmas plus a
 //! hundredth of the resolution $1/T$, and frames found by the wide search that lie more than
 //! 10 % off the median of their four neighbours, as stray; frames without a line, as silent; the last frame before a silence
 //! (the disk may settle inside it), as smeared.
