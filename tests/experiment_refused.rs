@@ -11,7 +11,7 @@ use rand_distr::{Distribution, Normal};
 /// Three seconds of room noise at 8 kS/s: no tone, so no line to follow.
 fn noise_wav(dir: &std::path::Path) -> &'static str {
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
-    let normal = Normal::new(0.0, 3000.0).expect("a normal law");
+    let normal = Normal::new(0.0f64, 3000.0).expect("a normal law");
     let v: Vec<i16> = (0..24_000)
         .map(|_| normal.sample(&mut rng).round().clamp(-32_000.0, 32_000.0) as i16)
         .collect();
