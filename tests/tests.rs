@@ -24,6 +24,7 @@ mod experiment_hum;
 mod experiment_inputs;
 mod experiment_models;
 mod experiment_phone;
+mod experiment_refused;
 mod experiment_scope_csv;
 mod experiment_sound_bound;
 mod experiment_turn_count;

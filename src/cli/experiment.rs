@@ -295,9 +295,17 @@ fn experiment_analyze(
         &work,
     );
     bar.finish_and_clear();
-    let (text, files) = analysed?;
+    let (text, files, refused) = match analysed? {
+        Analysed::Done(text, files) => (Some(text), files, None),
+        Analysed::Refused(error, files) => (None, files, Some(error)),
+    };
+    let mut dir = None;
     if let Some(set) = set {
         let shown: Vec<PathBuf> = files.iter().map(|p| set.final_path(p)).collect();
+        dir = shown
+            .first()
+            .and_then(|p| p.parent())
+            .map(|d| d.display().to_string());
         set.commit(&files)?;
         // On standard error: standard output carries the analysis.
         if !stdout::quiet() {
@@ -306,8 +314,27 @@ fn experiment_analyze(
             }
         }
     }
-    println!("{text}");
+    if let Some(error) = refused {
+        return Err(match dir {
+            Some(d) => anyhow::anyhow!(
+                "{error}; the reason, the pitch track made before it and the spectrogram with \
+                 both on it are written to {d} (refusal.txt, track.csv, spectrogram.svg)"
+            ),
+            None => error.into(),
+        });
+    }
+    if let Some(text) = text {
+        println!("{text}");
+    }
     Ok(())
+}
+
+/// What [`analyse`] gives: the text to print and the files written into the output set, or a
+/// sound analysis's refusal with the files that show it (the reason, the track, the
+/// spectrogram), written into the output set.
+enum Analysed {
+    Done(String, Vec<PathBuf>),
+    Refused(experiment::ExperimentError, Vec<PathBuf>),
 }
 
 /// Reads and analyses the recording within `work`: the text to print and the files written
@@ -322,7 +349,7 @@ fn analyse(
     json: bool,
     set: Option<&SetWriter>,
     work: &Work<'_>,
-) -> anyhow::Result<(String, Vec<PathBuf>)> {
+) -> anyhow::Result<Analysed> {
     work.stage("reading")?;
     Ok(if is_sound {
         let rec = match recording {
@@ -331,12 +358,29 @@ fn analyse(
                 experiment::recording::parse_recording(bytes, crate::cli::stdin::NAME, channels)?
             }
         };
-        let mut a = experiment::analyze_sound_within(
+        let analysed = experiment::analyze_sound_keeping_track(
             &rec.trace,
             &experiment::TrackSettings::default(),
             &experiment::plausibility::Plausibility::default(),
             work,
-        )?;
+        );
+        let mut a = match (analysed, set) {
+            (Ok(a), _) => a,
+            // Out of time: nothing more is done.
+            (Err(r), _) if matches!(r.error, experiment::ExperimentError::OverBudget(_)) => {
+                return Err(r.error.into())
+            }
+            (Err(r), None) => return Err(r.error.into()),
+            (Err(r), Some(set)) => {
+                let mut f = r.write(set.dir())?;
+                f.extend(crate::cli::sound_figures::write_refused(
+                    &r,
+                    &rec.trace,
+                    set.dir(),
+                )?);
+                return Ok(Analysed::Refused(r.error, f));
+            }
+        };
         a.recording = Some(rec.info);
         let text = if json { a.to_json() } else { a.to_string() };
         let files = match set {
@@ -347,7 +391,7 @@ fn analyse(
             }
             None => Vec::new(),
         };
-        (text, files)
+        Analysed::Done(text, files)
     } else {
         let (trace, column) = match recording {
             Recording::File(path) => experiment::read_trace_columns(path, columns)?,
@@ -383,6 +427,6 @@ fn analyse(
             Some(set) => experiment::write_analysis(&analysis, set.dir())?,
             None => Vec::new(),
         };
-        (text, files)
+        Analysed::Done(text, files)
     })
 }

@@ -42,7 +42,7 @@ pub mod trace;
 // The modules whose paths callers outside this crate name, at the root as before the rooms.
 pub use fit::{motion_law, plausibility};
 pub use formats::{recording, scope_layout, wav};
-pub use sound_analysis::{spectrogram, track, turn_count};
+pub use sound_analysis::{refusal, spectrogram, track, turn_count};
 pub use synthetic::{law, mechanisms, simulate, sound};
 
 pub use error::ExperimentError;
@@ -56,7 +56,8 @@ pub use light_analysis::analysis::{
 };
 pub use light_analysis::settings::AnalysisSettings;
 pub use sound_analysis::analysis::{
-    analyze_sound, analyze_sound_within, write_sound_analysis, SoundAnalysis,
+    analyze_sound, analyze_sound_keeping_track, analyze_sound_within, write_sound_analysis,
+    SoundAnalysis,
 };
 pub use sound_analysis::result::{SoundLaw, SoundResult, Terms};
 pub use sound_analysis::track::TrackSettings;

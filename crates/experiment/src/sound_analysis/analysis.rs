@@ -21,6 +21,7 @@ use crate::fit::least_squares::{solve, FitError, Problem, Scale};
 use crate::fit::plausibility::{Evidence, Plausibility, Points, Verdict, SOUND_MIN_FRAMES};
 use crate::sound_analysis::phase_blocks::{BlockSettings, Samples};
 use crate::sound_analysis::phase_fit::{fit_phase, PhaseFit};
+use crate::sound_analysis::refusal::SoundRefusal;
 use crate::sound_analysis::track::{frequency_track, FrequencyTrack, TrackSettings};
 use crate::sound_analysis::turn_count::TurnCount;
 use crate::trace::{Trace, Truth};
@@ -145,13 +146,33 @@ pub fn analyze_sound_within(
     checks: &Plausibility,
     work: &Work<'_>,
 ) -> Result<SoundAnalysis, ExperimentError> {
-    work.stage("following the pitch")?;
-    let track = track_of(trace, settings)?;
-    work.stage("fitting eq 79")?;
+    analyze_sound_keeping_track(trace, settings, checks, work).map_err(|r| r.error)
+}
+
+/// [`analyze_sound_within`], whose refusal keeps the pitch track made before it.
+pub fn analyze_sound_keeping_track(
+    trace: &Trace,
+    settings: &TrackSettings,
+    checks: &Plausibility,
+    work: &Work<'_>,
+) -> Result<SoundAnalysis, Box<SoundRefusal>> {
+    let early = |e: ExperimentError| Box::new(SoundRefusal::before_track(e));
+    work.stage("following the pitch")
+        .map_err(|e| early(e.into()))?;
+    let track = track_of(trace, settings).map_err(early)?;
+    let keep = |error: ExperimentError| {
+        Box::new(SoundRefusal {
+            error,
+            track: Some(track.clone()),
+        })
+    };
+    work.stage("fitting eq 79").map_err(|e| keep(e.into()))?;
     let file = trace.source.clone();
-    let refuse = |reason: String| ExperimentError::Refused {
-        file: file.clone(),
-        reason,
+    let refuse = |reason: String| {
+        keep(ExperimentError::Refused {
+            file: file.clone(),
+            reason,
+        })
     };
     let pts = &track.points;
     if pts.len() < 6 {
@@ -246,7 +267,8 @@ pub fn analyze_sound_within(
             ));
         }
     }
-    work.stage("following the phase")?;
+    work.stage("following the phase")
+        .map_err(|e| keep(e.into()))?;
     let (phase, phase_refused, turn_count) = phase_of(trace, &track, a[0], &fit, &s.cov);
     Ok(SoundAnalysis {
         source: trace.source.clone(),
@@ -471,17 +493,9 @@ impl SoundAnalysis {
         serde_json::to_string_pretty(&v).unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))
     }
 
-    /// The frequency track as CSV: frame start and end (s), $\Omega$ (rad/s), its standard
-    /// uncertainty (rad/s), the cross-check's $\Omega$ (rad/s), signal-to-noise.
+    /// The frequency track as CSV ([`FrequencyTrack::csv`]).
     pub fn track_csv(&self) -> String {
-        let mut s = String::from("t_start_s,t_end_s,omega_rad_s,sigma_rad_s,check_rad_s,snr\n");
-        for p in &self.track.points {
-            s.push_str(&format!(
-                "{},{},{},{},{},{}\n",
-                p.a, p.b, p.omega, p.sigma, p.check, p.snr
-            ));
-        }
-        s
+        self.track.csv()
     }
 }
 

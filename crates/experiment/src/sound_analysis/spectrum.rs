@@ -7,8 +7,14 @@
 //! one FFT of $x\,(w + i\,w')$ by conjugate symmetry.
 //!
 //! **Which line.** The fundamental is the bin $k$ in the search band that maximises the harmonic
-//! sum $S(k) = \sum_h |X_w(hk)|$ over the harmonics below [`MAX_HARMONIC_HZ`] (at most four):
-//! at the true fundamental all harmonics add, at half of it only the even ones.
+//! family's score
+//! $$S(k) = \sum_{h=1}^{4} \max\!\left(0, \ln\frac{|X_w(hk)|^2}{N(hk)}\right)$$
+//! over the harmonics below [`MAX_HARMONIC_HZ`], each harmonic's power over its own noise floor
+//! $N(f)$ ([`noise_floor`]): at the true fundamental every harmonic of the disk counts, at half
+//! of it only the even ones, at a multiple of it only some. Each harmonic is weighed against the
+//! noise at its own frequency, not by its loudness: a phone's high-pass that leaves the
+//! fundamental far below its third harmonic lowers the noise there as much, so the family, not
+//! the loudest line, names the fundamental.
 //!
 //! **Hum masked where the line is searched for.** In a frame searched for the line (`masked`),
 //! a harmonic $hk$ that lies within the window's main lobe ($\pm 2/T$) of a mains line the
@@ -50,6 +56,12 @@ pub const MAX_HARMONIC_HZ: f64 = 3500.0;
 /// The Hann window's widening of the frequency's standard deviation over the rectangular
 /// window's bound.
 pub const HANN_FACTOR: f64 = 1.3;
+
+/// A peak counts as a harmonic in the family's score only where its power exceeds this fraction
+/// of the strongest power within 4 resolution cells of it: the Hann window's first sidelobe is
+/// 31.5 dB (a power ratio of 7e-4) below its line, so a loud line's sidelobes are not taken for
+/// lines of their own.
+const SIDELOBE: f64 = 3e-3;
 
 /// The fundamental found in one frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -146,7 +158,22 @@ impl Analyser {
             .collect();
         let k_lo = ((lo / bin).floor() as usize).max(2);
         let k_hi = ((hi / bin).ceil() as usize).min(top.saturating_sub(2));
-        let mag = |k: usize| power[k].sqrt();
+        let cells = nfft / n;
+        let floor = noise_floor(&power, cells);
+        let reach = (cells / 2).max(2);
+        let over = |k: usize| {
+            let span = k.saturating_sub(reach)..=(k + reach).min(power.len() - 1);
+            let p = span
+                .clone()
+                .max_by(|a, b| power[*a].total_cmp(&power[*b]))
+                .unwrap_or(k);
+            let near = p.saturating_sub(4 * cells)..=(p + 4 * cells).min(power.len() - 1);
+            let lead = near.map(|j| power[j]).fold(0.0, f64::max);
+            if p == *span.start() || p == *span.end() || power[p] < SIDELOBE * lead {
+                return 0.0;
+            }
+            (power[p] / floor[p]).max(1.0).ln()
+        };
         let lobe = 2.0 * fs / n as f64;
         let clear = |k: usize| !masked || !self.masked(k as f64 * bin, lobe);
         let k0 = (k_lo..=k_hi)
@@ -155,7 +182,7 @@ impl Analyser {
                     (0.0, 0, 0),
                     |(s, terms, used), h| {
                         if clear(h * k) {
-                            (s + mag(h * k), terms + 1, used + 1)
+                            (s + over(h * k), terms + 1, used + 1)
                         } else {
                             (s, terms + 1, used)
                         }
@@ -243,6 +270,26 @@ impl Analyser {
     }
 }
 
+/// The noise's power per bin at each bin of `power` (a frame's spectrum with `cells` bins per
+/// resolution cell $1/T$): the lowest quartile of the bins about it divided by $\ln(4/3)$ (an
+/// exponential variate's lower quartile over its mean), over spans of at least 8 resolution
+/// cells and an eighth of their frequency, so that the lines in a span, each $4/T$ wide, leave
+/// most of its bins to the noise.
+pub fn noise_floor(power: &[f64], cells: usize) -> Vec<f64> {
+    let mut floor = vec![f64::MIN_POSITIVE; power.len()];
+    let mut start = 0;
+    while start < power.len() {
+        let width = (8 * cells.max(1)).max(start / 8);
+        let end = (start + width).min(power.len());
+        let mut span = power[start..end].to_vec();
+        let q = span.len() / 4;
+        let level = *span.select_nth_unstable_by(q, f64::total_cmp).1 / (4.0f64 / 3.0).ln();
+        floor[start..end].fill(level.max(f64::MIN_POSITIVE));
+        start = end;
+    }
+    floor
+}
+
 /// The parabola's vertex offset through three values around a local maximum.
 fn vertex(l: f64, c: f64, r: f64) -> f64 {
     let d = l - 2.0 * c + r;
@@ -267,27 +314,65 @@ mod tests {
     use super::*;
     use std::f64::consts::TAU;
 
-    /// A disk's line at 20 Hz (harmonics at 20, 40, 60 and 80 Hz) under the residue of a 50 Hz
-    /// mains line fifty times louder: unmasked, the residue's family wins the harmonic sum; with
-    /// the mains line masked, the disk's fundamental is found.
+    /// A disk's line at 20 Hz (harmonics at 20, 40, 60 and 80 Hz) under the residue of 50 Hz
+    /// mains hum with its harmonics, each fifty times louder: unmasked, the hum's family wins the
+    /// family's score; with the mains lines masked, the disk's fundamental is found.
     #[test]
     fn a_masked_mains_line_is_not_taken_for_the_fundamental() {
+        use rand::SeedableRng;
+        use rand_distr::{Distribution, StandardNormal};
         let (fs, n) = (4000.0, 2000);
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(3);
         let x: Vec<f64> = (0..n)
             .map(|j| {
                 let t = j as f64 / fs;
                 let disk: f64 = (1..=4)
                     .map(|h| 0.02 * (TAU * 20.0 * f64::from(h) * t + 0.4 * f64::from(h)).sin())
                     .sum();
-                let noise = ((j * 7919) % 1000) as f64 / 1000.0 - 0.5;
-                disk + (TAU * 50.0 * t + 0.3).sin() + 1e-3 * noise
+                let noise: f64 = StandardNormal.sample(&mut rng);
+                let hum: f64 = (1..=4)
+                    .map(|h| (TAU * 50.0 * f64::from(h) * t + 0.3 * f64::from(h)).sin())
+                    .sum();
+                disk + hum + 3e-4 * noise
             })
             .collect();
         let mut an = Analyser::new(fs);
-        an.mask(&[50.0]);
+        an.mask(&[50.0, 100.0, 150.0, 200.0]);
         let open = an.fundamental(&x, (5.0, 200.0), 30.0, false).unwrap();
         assert!((open.f - 20.0).abs() > 1.0, "unmasked: {} Hz", open.f);
         let masked = an.fundamental(&x, (5.0, 200.0), 30.0, true).unwrap();
         assert!((masked.f - 20.0).abs() < 0.05, "masked: {} Hz", masked.f);
+    }
+
+    /// A disk's family at 10 Hz (six equal lines) in white noise, both through a phone's
+    /// high-pass at 160 Hz: the fundamental comes out 36 times weaker than its sixth harmonic
+    /// (loudness would name 20 or 30 Hz), but each line stands as far over the noise at its own
+    /// frequency, so the family names 10 Hz.
+    #[test]
+    fn behind_a_high_pass_the_family_names_the_fundamental() {
+        use crate::synthetic::room_filters::high_pass;
+        use rand::SeedableRng;
+        use rand_distr::{Distribution, StandardNormal};
+        let fs = 4000.0;
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(5);
+        let mut x: Vec<f64> = (0..6000)
+            .map(|j| {
+                let t = j as f64 / fs;
+                let r: f64 = StandardNormal.sample(&mut rng);
+                let disk: f64 = (1..=6)
+                    .map(|h| (TAU * 10.0 * f64::from(h) * t + 0.9 * f64::from(h)).sin())
+                    .sum();
+                disk + 0.01 * r
+            })
+            .collect();
+        high_pass(&mut x, 160.0, fs);
+        let frame = &x[4000..6000];
+        let mut an = Analyser::new(fs);
+        let e = an.fundamental(frame, (5.0, 200.0), 30.0, true).unwrap();
+        assert!(
+            (e.f - 10.0).abs() < 0.05,
+            "the family's fundamental: {} Hz",
+            e.f
+        );
     }
 }

@@ -2,8 +2,8 @@
 //!
 //! **Which line is followed.** The sound of a spinning disk is at the contact point's rate,
 //! $\Omega/2\pi$, with harmonics at $h\Omega/2\pi$ (see [`sound`](crate::synthetic::sound)).
-//! Each frame's fundamental is found by the harmonic sum and refined by reassignment, with a
-//! parabola as the cross-check ([`spectrum`](crate::sound_analysis::spectrum)). Mains hum is
+//! Each frame's fundamental is found by its harmonic family (each harmonic's power over its own
+//! noise floor) and refined by reassignment, with a parabola as the cross-check ([`spectrum`](crate::sound_analysis::spectrum)). Mains hum is
 //! subtracted first ([`hum`](crate::sound_analysis::mains::hum)).
 //!
 //! **Frames follow the pitch.** Frames are contiguous and do not overlap (their errors are
@@ -36,7 +36,8 @@
 //! **Left out.** Frames off the line the track follows (cut where a searched frame's
 //! fundamental jumps by more than [`STEP`] from the last one held; the longest run is the line):
 //! before the line's first frame or after its last, as outside (skipped: the disk is not yet
-//! followed there, or no longer heard), and between them as stray; frames whose two estimators disagree by more than 5 of their sigmas plus a
+//! followed there, or no longer heard; the line ends where its pitch stops rising, see
+//! `end_at_stall`), and between them as stray; frames whose two estimators disagree by more than 5 of their sigmas plus a
 //! hundredth of the resolution $1/T$, and frames found by the wide search that lie more than
 //! 10 % off the median of their four neighbours, as stray; frames without a line, as silent; the last frame before a silence
 //! (the disk may settle inside it), as smeared.
@@ -115,6 +116,21 @@ pub struct FrequencyTrack {
     pub outside: usize,
     /// Mains lines subtracted (Hz).
     pub hum: Vec<f64>,
+}
+
+impl FrequencyTrack {
+    /// The track as CSV: frame start and end (s), $\Omega$ (rad/s), its standard uncertainty
+    /// (rad/s), the cross-check's $\Omega$ (rad/s), signal-to-noise.
+    pub fn csv(&self) -> String {
+        let mut s = String::from("t_start_s,t_end_s,omega_rad_s,sigma_rad_s,check_rad_s,snr\n");
+        for p in &self.points {
+            s.push_str(&format!(
+                "{},{},{},{},{},{}\n",
+                p.a, p.b, p.omega, p.sigma, p.check, p.snr
+            ));
+        }
+        s
+    }
 }
 
 /// A frame as analysed: its span and what it held.
@@ -244,7 +260,45 @@ fn the_line(frames: &[Frame]) -> Vec<bool> {
     }
     let count = |i: usize| run.iter().filter(|&&r| r == i).count();
     let best = (0..=id).rev().max_by_key(|&i| count(i)).unwrap_or(0);
-    run.iter().map(|&r| r == best).collect()
+    let mut line: Vec<bool> = run.iter().map(|&r| r == best).collect();
+    end_at_stall(frames, &mut line);
+    line
+}
+
+/// Ends `line` where the pitch stops rising: eq 79's rate rises ever faster toward $t_0$, so
+/// after two frames of the line $(t_1, f_1)$, $(t_2, f_2)$ whose pitch rose by more than three
+/// of their sigmas, the pitch at a later $t$ is at least
+/// $$f_2 + \tfrac12\,\frac{f_2 - f_1}{t_2 - t_1}\,(t - t_2)$$
+/// (half the chord's slope, a margin for the slope's noise). A frame more than three sigmas
+/// below that, after which no frame of the line comes back above it, is where the disk's line
+/// ended (at $t_0$, or where it was no longer heard): a tone held on after it (a mains line the
+/// disk's line ran into, the shudder's ring) lies outside the line. A single frame below it with
+/// the line going on is left to the stray frames' tests.
+fn end_at_stall(frames: &[Frame], line: &mut [bool]) {
+    let held: Vec<(usize, f64, Estimate)> = (0..frames.len())
+        .filter(|&k| line[k])
+        .filter_map(|k| {
+            frames[k]
+                .est
+                .map(|e| (k, 0.5 * (frames[k].a + frames[k].b), e))
+        })
+        .collect();
+    for i in 2..held.len() {
+        let ((_, t1, e1), (_, t2, e2)) = (held[i - 2], held[i - 1]);
+        let rise = e2.f - e1.f;
+        if rise <= 3.0 * e1.sigma.hypot(e2.sigma) {
+            continue;
+        }
+        let least = |t: f64| e2.f + 0.5 * rise / (t2 - t1) * (t - t2);
+        let below =
+            |&(_, t, e): &(usize, f64, Estimate)| e.f < least(t) - 3.0 * e.sigma.hypot(e2.sigma);
+        if below(&held[i]) && held[i..].iter().all(below) {
+            for &(k, _, _) in &held[i..] {
+                line[k] = false;
+            }
+            return;
+        }
+    }
 }
 
 /// Walks the record frame by frame (see the module's documentation); returns the frames and 1

@@ -31,25 +31,14 @@ pub fn spectrogram(
     sp: &Spectrogram,
     about: &str,
 ) -> Result<Figure, FigureError> {
-    let mut plot = Plot::new(
-        "Spectrogram of the sound, with eq 79's pitch and harmonics",
-        "time t (s)",
-        "frequency f (Hz)",
+    let mut plot = bands(
+        Plot::new(
+            "Spectrogram of the sound, with eq 79's pitch and harmonics",
+            "time t (s)",
+            "frequency f (Hz)",
+        ),
+        sp,
     );
-    for (lo, hi) in BANDS {
-        let cells: Vec<(f64, f64)> =
-            sp.t.iter()
-                .zip(&sp.db)
-                .flat_map(|(t, row)| {
-                    sp.f.iter()
-                        .zip(row)
-                        .filter(move |(_, d)| **d >= lo && **d < hi)
-                        .map(move |(f, _)| (*t, *f))
-                })
-                .collect();
-        let label = format!("{} to {} dB", lo.round(), hi.round());
-        plot = plot.with(Series::new(label, cells, Style::Cells));
-    }
     let law = a.law();
     let f_top = sp.f.last().copied().unwrap_or(1000.0);
     // The law the analysis reports: eq 79 fitted to the phase, or to the pitch track when the
@@ -118,6 +107,97 @@ pub fn spectrogram(
         )?,
         drawing: Drawing::Plot(plot),
     })
+}
+
+/// `plot` with the spectrogram `sp` as loudness [`BANDS`].
+fn bands(mut plot: Plot, sp: &Spectrogram) -> Plot {
+    for (lo, hi) in BANDS {
+        let cells: Vec<(f64, f64)> =
+            sp.t.iter()
+                .zip(&sp.db)
+                .flat_map(|(t, row)| {
+                    sp.f.iter()
+                        .zip(row)
+                        .filter(move |(_, d)| **d >= lo && **d < hi)
+                        .map(move |(f, _)| (*t, *f))
+                })
+                .collect();
+        let label = format!("{} to {} dB", lo.round(), hi.round());
+        plot = plot.with(Series::new(label, cells, Style::Cells));
+    }
+    plot
+}
+
+/// The spectrogram `sp` of a recording whose analysis was refused, as loudness bands, with the
+/// pitch track made before the refusal (its frames' $\Omega/2\pi$, when one was made) and the
+/// refusal written on it, so that the user sees what the analysis saw.
+pub fn refused_spectrogram(
+    source: &str,
+    track: Option<&experiment::track::FrequencyTrack>,
+    sp: &Spectrogram,
+    reason: &str,
+) -> Figure {
+    let mut plot = bands(
+        Plot::new(
+            "Spectrogram of the sound: the analysis was refused",
+            "time t (s)",
+            "frequency f (Hz)",
+        ),
+        sp,
+    );
+    let f_top = sp.f.last().copied().unwrap_or(1000.0);
+    let pts: Vec<(f64, f64)> = track
+        .map(|t| {
+            t.points
+                .iter()
+                .map(|p| (0.5 * (p.a + p.b), p.omega / std::f64::consts::TAU))
+                .filter(|(_, f)| *f <= f_top)
+                .collect()
+        })
+        .unwrap_or_default();
+    let n = pts.len();
+    plot = plot.with_colored(
+        Series::new(
+            format!("the pitch track's frames, Ω/2π ({n})"),
+            pts,
+            Style::Points,
+        ),
+        [0, 0, 0],
+    );
+    let t_start = sp.t.first().copied().unwrap_or(0.0);
+    let note = format!("refused: {}", wrap(reason, 80));
+    let plot =
+        plot.y_range(0.0, f_top)
+            .legend_at(Legend::LowerRight)
+            .note(t_start, 0.98 * f_top, note);
+    Figure {
+        name: "sound-spectrogram",
+        title: "Spectrogram of the refused sound with its pitch track".into(),
+        caption: format!(
+            "{source}: the analysis was refused ({reason}). The spectrogram in three bands of \
+             loudness relative to the loudest cell, with the frames of the pitch track made before \
+             the refusal ({n})."
+        ),
+        drawing: Drawing::Plot(plot),
+    }
+}
+
+/// `text` cut into lines of at most `width` characters at spaces.
+fn wrap(text: &str, width: usize) -> String {
+    let mut lines: Vec<String> = vec![String::new()];
+    for word in text.split_whitespace() {
+        let last = lines.last_mut().map_or(0, |l| l.chars().count());
+        if last > 0 && last + 1 + word.chars().count() > width {
+            lines.push(String::new());
+        }
+        if let Some(l) = lines.last_mut() {
+            if !l.is_empty() {
+                l.push(' ');
+            }
+            l.push_str(word);
+        }
+    }
+    lines.join("\n")
 }
 
 /// The residuals of eq 79's heading, block by block, in units of their own sigma.
