@@ -9,21 +9,11 @@ use checks::equations::built_in_paper;
 use report::inline_math::{pieces, Piece};
 use std::path::Path;
 
-/// The Greek letters' names that ASCII math spells out.
-const GREEK_NAMES: &[&str] = &[
-    "alpha",
-    "beta",
-    "gamma",
-    "delta",
-    "epsilon",
-    "varepsilon",
-    "theta",
-    "mu",
-    "varpi",
-    "omega",
-    "Omega",
-    "sqrt",
-];
+/// A Greek letter's name (every one the paper's LaTeX may use as a symbol, `paper::parse::GREEK`)
+/// or `sqrt` spelled out as a word: ASCII math.
+fn spelled_out(word: &str) -> bool {
+    paper::parse::GREEK.contains(&word) || word == "sqrt"
+}
 
 /// Whether a word is a path of the repository (`crates/studies/src/sliding/contact_loss.rs`),
 /// whose underscores are not subscripts.
@@ -56,7 +46,7 @@ fn ascii_math(text: &str) -> Option<String> {
         let words = t.split(|c: char| !c.is_ascii_alphabetic() && c != '-');
         for word in words {
             let bare = word.trim_matches('-');
-            if GREEK_NAMES.contains(&bare) || word.ends_with("-dot") {
+            if spelled_out(bare) || word.ends_with("-dot") {
                 return Some(word.to_string());
             }
         }

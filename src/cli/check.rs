@@ -8,7 +8,6 @@ use crate::cli::{exit, stdin, stdout, verdict_snapshot};
 use checks::check::{run_checks, Checked, Selection, Tally};
 use checks::finding::Verdict;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
-use report::cache::Cache;
 use report::document::PAPER;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
@@ -42,14 +41,8 @@ pub struct Args {
     /// approximately, definition and estimate).
     #[arg(long, value_name = "KIND", value_enum)]
     pub fail_on: Option<FailOn>,
-    /// Solves everything, keeping nothing between runs. Without it, what depends on nothing but
-    /// the program (the squeeze film's dissipation number of eqs 76-84) is solved once per build
-    /// and kept in the cache folder; the output is the same either way.
-    #[arg(long)]
-    pub no_cache: bool,
-    /// The cache folder (default: $XDG_CACHE_HOME/rolling-disk, or ~/.cache/rolling-disk).
-    #[arg(long, value_name = "DIR", conflicts_with = "no_cache")]
-    pub cache_dir: Option<PathBuf>,
+    #[command(flatten)]
+    pub caching: crate::cli::caching::Caching,
     #[command(flatten)]
     pub(crate) input: PaperInput,
 }
@@ -125,11 +118,7 @@ fn check(args: &Args) -> anyhow::Result<(Vec<Checked>, Value)> {
         bar.set_length(total as u64);
         bar.set_position(done as u64);
     };
-    let cache = if args.no_cache {
-        None
-    } else {
-        args.cache_dir.clone().map(Cache::at).or_else(Cache::user)
-    };
+    let cache = args.caching.cache();
     let warn = |w: &str| {
         bar.suspend(|| eprintln!("warning: {w}"));
     };

@@ -3,6 +3,7 @@
 //! `run`. Errors are anyhow's here, and only here: the library's typed errors print their
 //! sentence.
 
+pub(crate) mod caching;
 pub mod check;
 pub(crate) mod choice;
 pub mod completions;

@@ -1,7 +1,6 @@
 //! `rolling-disk report`: the reproduction report, written as one set of files.
 
 use crate::cli::paper_input::PaperInput;
-use ::report::cache::Cache;
 use std::path::{Path, PathBuf};
 
 #[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -26,15 +25,8 @@ pub struct Args {
     /// after them. The report's files are the same to the byte.
     #[arg(long, short)]
     pub verbose: bool,
-    /// Computes every study, keeping nothing between runs. Without it, the results that depend
-    /// on nothing but the program (the toy's stored peer runs and scans) are computed once per
-    /// build and kept in the cache folder; the report's files are the same to the byte either
-    /// way.
-    #[arg(long)]
-    pub no_cache: bool,
-    /// The cache folder (default: $XDG_CACHE_HOME/rolling-disk, or ~/.cache/rolling-disk).
-    #[arg(long, value_name = "DIR", conflicts_with = "no_cache")]
-    pub cache_dir: Option<PathBuf>,
+    #[command(flatten)]
+    pub caching: crate::cli::caching::Caching,
     #[command(flatten)]
     pub(crate) input: PaperInput,
 }
@@ -42,11 +34,7 @@ pub struct Args {
 impl Args {
     /// Runs the command.
     pub fn run(self) -> anyhow::Result<()> {
-        let cache = if self.no_cache {
-            None
-        } else {
-            self.cache_dir.map(Cache::at).or_else(Cache::user)
-        };
+        let cache = self.caching.cache();
         report(self.format, &self.out, &self.input, self.verbose, cache)
     }
 }
@@ -56,7 +44,7 @@ fn report(
     out: &Path,
     input: &PaperInput,
     verbose: bool,
-    cache: Option<Cache>,
+    cache: Option<::report::cache::Cache>,
 ) -> anyhow::Result<()> {
     use ::report::{build, pipeline::RunConfig, render, timing::Timings};
     // Check --out and make room beside it before computing anything.

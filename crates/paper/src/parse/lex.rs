@@ -340,7 +340,7 @@ pub(super) fn lex(s: &str) -> Result<Vec<(Tok, usize)>, ParseError> {
 }
 
 /// Greek letters the paper uses as symbols (`\pi` is the constant).
-pub(crate) const GREEK: &[&str] = &[
+pub const GREEK: &[&str] = &[
     "alpha",
     "beta",
     "gamma",

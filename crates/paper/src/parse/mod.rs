@@ -59,7 +59,7 @@ mod symbols;
 #[cfg(test)]
 mod tests;
 
-pub(crate) use lex::GREEK;
+pub use lex::GREEK;
 use lex::{lex, Tok};
 
 /// Parses the LaTeX of one printed equation into its chains, and lists every symbol occurrence.
