@@ -20,6 +20,7 @@
 //! ($\chi^2$/dof) and their correlation.
 
 use crate::fit::band::Row;
+use crate::fit::law_fit::LawFit;
 use crate::fit::least_squares::{solve, FitError, Problem, Scale, Solved};
 use nalgebra::SVector;
 use serde::Serialize;
@@ -43,18 +44,10 @@ pub struct FitPoint {
 /// The fit of eq 84.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Eq84Fit {
-    /// $\beta$.
-    pub beta: f64,
-    /// Its standard uncertainty.
-    pub beta_sigma: f64,
-    /// $t_0$ (s).
-    pub t0: f64,
-    /// Its standard uncertainty (s).
-    pub t0_sigma: f64,
-    /// $\ln C$ ($C$ in $s^{-(\beta+1)}$).
-    pub ln_c: f64,
-    /// Its standard uncertainty.
-    pub ln_c_sigma: f64,
+    /// Eq 79's $\beta$, $t_0$ and $\ln C$ with their uncertainties, read as this fit's own
+    /// fields.
+    #[serde(flatten)]
+    pub parameters: LawFit,
     /// $C^{-1/(\beta+2)}$ = $1/\Omega$ one second before $t_0$ (s): the paper's $C^{-1/4} = 0.0055$.
     pub inv_omega_1s: f64,
     /// Its standard uncertainty (s).
@@ -228,19 +221,14 @@ pub fn fit_eq84(ta: &[f64], tb: &[f64], start: &[usize], w: &[f64]) -> Result<Eq
         start,
     };
     let s = solve(&pr, w, p0, Scale::Stationary)?;
-    let (beta, t0, ln_c) = (s.p[0], s.p[1], s.p[2]);
+    let (beta, ln_c) = (s.p[0], s.p[2]);
     let q = 1.0 / (beta + 2.0);
     let inv = (-q * ln_c).exp();
     // d inv / d(beta, t0, lnC) = inv * (lnC q^2, 0, -q)
     let g = SVector::<f64, 3>::new(inv * ln_c * q * q, 0.0, -inv * q);
     let var_inv = (g.transpose() * s.cov * g)[(0, 0)];
     Ok(Eq84Fit {
-        beta,
-        beta_sigma: s.cov[(0, 0)].sqrt(),
-        t0,
-        t0_sigma: s.cov[(1, 1)].sqrt(),
-        ln_c,
-        ln_c_sigma: s.cov[(2, 2)].sqrt(),
+        parameters: LawFit::of(&s),
         inv_omega_1s: inv,
         inv_omega_1s_sigma: var_inv.sqrt(),
         covariance: std::array::from_fn(|i| std::array::from_fn(|j| s.cov[(i, j)])),
@@ -494,3 +482,5 @@ pub fn fit_eq84_fixed(
         n,
     })
 }
+
+crate::fit::law_fit::reads_law_fit!(Eq84Fit);

@@ -17,6 +17,7 @@ use crate::error::ExperimentError;
 use crate::fit::band::Row;
 use crate::fit::eq84_85::{start84, FixedBeta};
 use crate::fit::law_choice::{compare, Comparison};
+use crate::fit::law_fit::LawFit;
 use crate::fit::least_squares::{solve, FitError, Problem, Scale};
 use crate::fit::plausibility::{Evidence, Plausibility, Points, Verdict, SOUND_MIN_FRAMES};
 use crate::sound_analysis::phase_blocks::{BlockSettings, Samples};
@@ -82,18 +83,10 @@ impl Problem<3> for TrackLaw<'_> {
 /// Eq 79 fitted to a frequency track.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct TrackFit {
-    /// $\beta$ and its standard uncertainty.
-    pub beta: f64,
-    /// (see `beta`)
-    pub beta_sigma: f64,
-    /// $t_0$ (s) and its standard uncertainty.
-    pub t0: f64,
-    /// (s)
-    pub t0_sigma: f64,
-    /// $\ln C$ and its standard uncertainty.
-    pub ln_c: f64,
-    /// (see `ln_c`)
-    pub ln_c_sigma: f64,
+    /// Eq 79's $\beta$, $t_0$ and $\ln C$ with their uncertainties, read as this fit's own
+    /// fields.
+    #[serde(flatten)]
+    pub parameters: LawFit,
     /// The rms residual (rad/s).
     pub rms: f64,
     /// The reduced $\chi^2$ of the weighted residuals.
@@ -205,12 +198,7 @@ pub fn analyze_sound_keeping_track(
         Err(m) => return Err(refuse(format!("eq 79 cannot be fitted to the track ({m})"))),
     };
     let fit = TrackFit {
-        beta: s.p[0],
-        beta_sigma: s.cov[(0, 0)].sqrt(),
-        t0: s.p[1],
-        t0_sigma: s.cov[(1, 1)].sqrt(),
-        ln_c: s.p[2],
-        ln_c_sigma: s.cov[(2, 2)].sqrt(),
+        parameters: LawFit::of(&s),
         rms: (s.residual.iter().map(|r| r * r).sum::<f64>() / y.len() as f64).sqrt(),
         chi2_dof: s.s2,
         n: y.len(),
@@ -522,3 +510,5 @@ pub fn write_sound_analysis(
     }
     Ok(out)
 }
+
+crate::fit::law_fit::reads_law_fit!(TrackFit);

@@ -30,6 +30,7 @@
 
 use crate::fit::band::Row;
 use crate::fit::eq84_85::phase;
+use crate::fit::law_fit::LawFit;
 use crate::fit::law_stability::LawStability;
 use crate::fit::least_squares::{solve, FitError, Problem, Scale};
 use crate::sound_analysis::high_pass::{block_leads, fit_corner, rates, Corner, MAX_TURN_CHANGE};
@@ -94,18 +95,10 @@ pub struct PhasePoint {
 /// Eq 79 fitted to the sound's phase.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct PhaseFit {
-    /// $\beta$ and its standard uncertainty.
-    pub beta: f64,
-    /// (see `beta`)
-    pub beta_sigma: f64,
-    /// $t_0$ (s) and its standard uncertainty.
-    pub t0: f64,
-    /// (s)
-    pub t0_sigma: f64,
-    /// $\ln C$ and its standard uncertainty.
-    pub ln_c: f64,
-    /// (see `ln_c`)
-    pub ln_c_sigma: f64,
+    /// Eq 79's $\beta$, $t_0$ and $\ln C$ with their uncertainties, read as this fit's own
+    /// fields.
+    #[serde(flatten)]
+    pub parameters: LawFit,
     /// The phone's high-pass corner $\omega_c/2\pi$ (Hz) read from the harmonics' phases and
     /// its standard uncertainty, when a harmonic above the fundamental was followed.
     pub corner: Option<(f64, f64)>,
@@ -320,12 +313,7 @@ fn fit_blocks(
     let q = |tt: f64| phase(&SVector::<f64, 3>::new(s.p[0], s.p[1], s.p[2]), tt).0;
     let turns = (q(last) - q(bl[0].a)) / TAU;
     let fit = PhaseFit {
-        beta: s.p[0],
-        beta_sigma: s.cov[(0, 0)].sqrt(),
-        t0: s.p[1],
-        t0_sigma: s.cov[(1, 1)].sqrt(),
-        ln_c: s.p[2],
-        ln_c_sigma: s.cov[(2, 2)].sqrt(),
+        parameters: LawFit::of(&s),
         corner: None,
         corner_not_used: None,
         beta_high_pass: 0.0,
@@ -352,3 +340,5 @@ fn fit_blocks(
     };
     Ok((fit, s.p))
 }
+
+crate::fit::law_fit::reads_law_fit!(PhaseFit);
