@@ -365,7 +365,7 @@ fn figure_views(figures: &[Figure]) -> Result<Vec<FigureView>, ReportError> {
                 paper: match crate::figures::paper_scale::paper_figure(f.name) {
                     Some((label, says)) => Some(super::PaperScaleView {
                         label: label.to_string(),
-                        says: says.to_string(),
+                        says,
                         svg: f.paper_svg()?,
                         file: format!("figures/paper/{}.png", f.name),
                     }),

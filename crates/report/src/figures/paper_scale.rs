@@ -12,61 +12,34 @@ use std::path::Path;
 pub const PAPER_WIDTH_IN: f64 = 3.0;
 
 /// The paper's figures by our names, with their label in the paper's LaTeX and what the
-/// paper's figure shows (its caption and the text that discusses it, described in our words).
-pub const PAPER_FIGURES: [(&str, &str, &str); 8] = [
-    (
-        "fig1",
-        "fig1",
-        "A sketch of the disk of radius a on the plane with the triad used throughout: axis 1 \
-         along the symmetry axis at angle α from the upward vertical z, axis 3 from the centre \
-         to the contact point, axis 2 = 3 × 1 horizontal, r = 2 × z horizontal; ω₁ is the spin \
-         about axis 1 and Ω the turning of the triad about the vertical; the contact point \
-         moves on a circle of radius r whose axis passes at distance b from the centre of mass.",
-    ),
-    (
-        "tek04",
-        "tek04",
-        "Ten seconds of a phototransistor's output, sampled at 5 kS/s, watching light reflected \
-         from a spinning Tangent Toy Euler's Disk: one pulse per turn of the contact point.",
-    ),
-    (
-        "tek01",
-        "tek01",
-        "The last quarter second of the same record: the pulses come faster and weaker until \
-         the signal goes flat.",
-    ),
-    (
-        "tek02",
-        "tek02",
-        "The last 0.06 s of the record; from it the paper judges that the motion ends (t₀) \
-         between 7.26 and 7.28 s.",
-    ),
-    (
-        "Omega",
-        "Omega",
-        "Ω against t, one point per cycle, from the peak times tᵢ as Ωᵢ = 2π/(tᵢ₊₁ − tᵢ), the \
-         peak of a cycle taken midway between its half-height edges.",
-    ),
-    (
-        "tek726",
-        "tek726",
-        "1/Ω against t₀ − t on logarithmic axes for t₀ = 7.26 s, with straight lines (drawn, \
-         not fitted) of eq 84's slope for several β; the paper reads β = 2 as fitting the whole \
-         sample and takes C^(−1/4) = 0.0055 s^(3/4) from this plot.",
-    ),
-    (
-        "tek728",
-        "tek728",
-        "The same plot for t₀ = 7.28 s: the last cycles flatten towards a smaller apparent β \
-         (about 0), which the paper finds inconsistent with its dΩ/dt plot.",
-    ),
-    (
-        "Odot",
-        "Odot",
-        "dΩ/dt against Ω on logarithmic axes, with lines of eq 85's slope for several β; \
-         the paper uses it to rule out the β = 0 that t₀ = 7.28 s would suggest.",
-    ),
-];
+/// paper's figure shows (its caption and the text that discusses it, described in our words): one
+/// text file each, `templates/paper-figures/NAME.txt`, a paragraph whose line breaks are spaces.
+macro_rules! paper_figures {
+    ($(($name:literal, $label:literal)),* $(,)?) => {
+        /// Every paper figure: `(our name, the paper's label, its description's file)`.
+        pub const PAPER_FIGURES: &[(&str, &str, &str)] = &[$((
+            $name,
+            $label,
+            include_str!(concat!(
+                env!("CARGO_MANIFEST_DIR"),
+                "/../../templates/paper-figures/",
+                $name,
+                ".txt"
+            )),
+        )),*];
+    };
+}
+
+paper_figures!(
+    ("fig1", "fig1"),
+    ("tek04", "tek04"),
+    ("tek01", "tek01"),
+    ("tek02", "tek02"),
+    ("Omega", "Omega"),
+    ("tek726", "tek726"),
+    ("tek728", "tek728"),
+    ("Odot", "Odot"),
+);
 
 /// The canvas a paper-size version is laid out on, in px (at scale 1).
 pub fn size(name: &str) -> (u32, u32) {
@@ -78,11 +51,11 @@ pub fn size(name: &str) -> (u32, u32) {
 }
 
 /// The paper's label and description of one of our figures, if it is one of the paper's.
-pub fn paper_figure(name: &str) -> Option<(&'static str, &'static str)> {
+pub fn paper_figure(name: &str) -> Option<(&'static str, String)> {
     PAPER_FIGURES
         .iter()
         .find(|(n, _, _)| *n == name)
-        .map(|(_, label, says)| (*label, *says))
+        .map(|(_, label, says)| (*label, says.trim_end().replace('\n', " ")))
 }
 
 impl Figure {
@@ -115,5 +88,24 @@ mod tests {
         assert!(PAPER_FIGURES.iter().all(|(_, _, says)| says.len() > 40));
         assert_eq!(size("fig1"), (480, 360));
         assert!(paper_figure("stability-map").is_none());
+    }
+
+    /// Every file of `templates/paper-figures/` is a registered paper figure's description.
+    #[test]
+    fn every_description_file_is_registered() {
+        let dir =
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../templates/paper-figures");
+        let mut files: Vec<String> = std::fs::read_dir(&dir)
+            .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+            .filter_map(Result::ok)
+            .map(|e| e.file_name().to_string_lossy().into_owned())
+            .collect();
+        files.sort();
+        let mut registered: Vec<String> = PAPER_FIGURES
+            .iter()
+            .map(|(n, _, _)| format!("{n}.txt"))
+            .collect();
+        registered.sort();
+        assert_eq!(files, registered);
     }
 }
