@@ -439,3 +439,24 @@ fn rk4_is_flagged_exactly_where_its_steps_stop_resolving() {
         assert_eq!(sol.ending, Ending::TimeReached, "h omega = {hw}");
     }
 }
+
+/// A start slip beyond a million times the natural speed sqrt(g a) is refused naming the key.
+#[test]
+fn a_slip_speed_beyond_its_range_is_refused_naming_the_key() {
+    let scene = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("paper/scenes/slip-stick.yaml"),
+    )
+    .expect("the built-in scene");
+    let fast = scene.replace("forward: 0.3", "forward: 1.0e6");
+    assert_ne!(fast, scene, "the scene's slip was replaced");
+    refused(
+        "slip",
+        &fast,
+        1.0,
+        &[
+            "scene.yaml:9",
+            "slip forward = 1000000 m/s",
+            "beyond the supported",
+        ],
+    );
+}

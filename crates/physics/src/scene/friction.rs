@@ -39,9 +39,9 @@ pub(super) struct FrictionSpec {
 #[serde(deny_unknown_fields)]
 pub(super) struct SlipSpec {
     #[serde(default)]
-    forward: f64,
+    pub(super) forward: f64,
     #[serde(default)]
-    sideways: f64,
+    pub(super) sideways: f64,
 }
 
 impl Validator<'_> {

@@ -92,6 +92,20 @@ pub fn refuse_rate(key: &str, w: f64, a: f64, g: f64) -> Option<String> {
     ))
 }
 
+/// The refusal, if any, of a starting slip speed `v` (m/s) of the disk `a`, `g`, named `key`:
+/// the same bound as [`refuse_rate`]'s, in the natural speed $\sqrt{g a}$.
+pub fn refuse_slip(key: &str, v: f64, a: f64, g: f64) -> Option<String> {
+    let limit = MAX_RATE_IN_NATURAL_UNITS * (g * a).sqrt();
+    if v.is_finite() && v.abs() <= limit {
+        return None;
+    }
+    Some(format!(
+        "start: slip {key} = {v} m/s is beyond the supported {limit:.3e} m/s (a million times \
+         sqrt(g a)): the contact would change on time scales below a microsecond of the natural \
+         period, where the step sizes lose their meaning"
+    ))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -110,5 +124,8 @@ mod tests {
         assert!(MASS.refuse(f64::NAN).is_some());
         assert!(refuse_rate("spin", 100.0, 0.0375, 9.81).is_none());
         assert!(refuse_rate("spin", 1e300, 0.0375, 9.81).is_some());
+        assert!(refuse_slip("forward", 0.5, 0.0375, 9.81).is_none());
+        let m = refuse_slip("forward", 1e6, 0.0375, 9.81).unwrap_or_default();
+        assert!(m.contains("beyond the supported 6.065e5 m/s"), "{m}");
     }
 }

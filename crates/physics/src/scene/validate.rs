@@ -79,6 +79,13 @@ impl Validator<'_> {
                 return Err(self.err(&["start"], m));
             }
         }
+        if let Some(slip) = s.start.slip {
+            for (key, v) in [("forward", slip.forward), ("sideways", slip.sideways)] {
+                if let Some(m) = range::refuse_slip(key, v, disk.a, disk.g) {
+                    return Err(self.err(&["start", "slip", key], m));
+                }
+            }
+        }
         let time = s.stop.time.unwrap_or(0.0);
         if let Some(dt) = s.sample {
             let rows = (time / dt).floor() + 2.0;
