@@ -2,6 +2,7 @@
 //! oscillation frequencies measured on trajectories, bisection, references computed once per
 //! process.
 
+pub mod autocorrelation;
 pub mod fit;
 pub mod linearize;
 pub mod memo;

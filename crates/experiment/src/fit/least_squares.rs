@@ -88,18 +88,7 @@ pub struct Solved<const P: usize> {
 
 /// The lag-one autocorrelation of `r`, clamped to [0, 0.9].
 fn lag_one(r: &[f64]) -> f64 {
-    let n = r.len();
-    if n < 3 {
-        return 0.0;
-    }
-    let m = r.iter().sum::<f64>() / n as f64;
-    let c0: f64 = r.iter().map(|x| (x - m).powi(2)).sum();
-    let c1: f64 = r.windows(2).map(|w| (w[0] - m) * (w[1] - m)).sum();
-    if c0 > 0.0 {
-        (c1 / c0).clamp(0.0, 0.9)
-    } else {
-        0.0
-    }
+    numerics::autocorrelation::lag_one(r).clamp(0.0, 0.9)
 }
 
 /// How the covariance is estimated (see the module's documentation).

@@ -58,10 +58,7 @@ impl Structure {
             return None;
         }
         let nf = n as f64;
-        let m = e.iter().sum::<f64>() / nf;
-        let c0: f64 = e.iter().map(|x| (x - m).powi(2)).sum();
-        let c1: f64 = e.windows(2).map(|w| (w[0] - m) * (w[1] - m)).sum();
-        let lag_one = if c0 > 0.0 { c1 / c0 } else { 0.0 };
+        let lag_one = numerics::autocorrelation::lag_one(&e);
         let plus = e.iter().filter(|x| **x >= 0.0).count() as f64;
         let minus = nf - plus;
         let runs = 1 + e

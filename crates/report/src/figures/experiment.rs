@@ -506,18 +506,7 @@ pub fn residuals(a: &experiment::Analysis) -> Result<Figure, FigureError> {
 /// slow wave that the law does not follow.
 fn lag_one(points: &[experiment::fit::FitPoint]) -> f64 {
     let r: Vec<f64> = points.iter().map(|p| p.normalized).collect();
-    if r.len() < 3 {
-        return 0.0;
-    }
-    let mean = r.iter().sum::<f64>() / r.len() as f64;
-    let var: f64 = r.iter().map(|x| (x - mean).powi(2)).sum();
-    if var == 0.0 {
-        return 0.0;
-    }
-    r.windows(2)
-        .map(|w| (w[0] - mean) * (w[1] - mean))
-        .sum::<f64>()
-        / var
+    numerics::autocorrelation::lag_one(&r)
 }
 
 /// A sound recording's frequency track with eq 79's fitted frame means.
