@@ -24,11 +24,22 @@ pub mod cli;
 /// The program's version and the commit it is built from ([`report::TOOL_VERSION`]).
 pub const VERSION: &str = report::TOOL_VERSION;
 
+/// What `--version` prints after the program's name: the version and commit, then the SHA-256
+/// of the built-in paper (the hash every output's provenance names for it). `-V` prints the
+/// first line only.
+static LONG_VERSION: std::sync::LazyLock<String> = std::sync::LazyLock::new(|| {
+    format!(
+        "{VERSION}\nbuilt-in paper: sha256 {}",
+        paper::Paper::built_in_sha256()
+    )
+});
+
 /// The command line.
 #[derive(Parser)]
 #[command(
     name = "rolling-disk",
     version = VERSION,
+    long_version = LONG_VERSION.as_str(),
     about = "Reproduces and checks McDonald & McDonald (2001), The Rolling Motion of a Disk on a Horizontal Plane"
 )]
 pub struct Cli {

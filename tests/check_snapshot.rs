@@ -75,7 +75,7 @@ fn an_edited_paper_is_said_changed_then_blessed() {
         .map(|c| c["name"].as_str().unwrap())
         .collect();
     assert_eq!(names, ["eq 76", "eq 77", "eq 78", "eq 79", "eq 84"]);
-    let (_, version, _) = cli_status(&dir, &["--version"]);
+    let (_, version, _) = cli_status(&dir, &["-V"]);
     assert_eq!(
         format!("rolling-disk {}", snap["tool"]["version"].as_str().unwrap()),
         version.trim()

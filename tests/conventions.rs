@@ -27,10 +27,11 @@ fn the_version_names_the_commit_it_is_built_from() {
         )),
         "{version}"
     );
-    let commit = version
+    let first = version.lines().next().unwrap_or_default();
+    let commit = first
         .split("(commit ")
         .nth(1)
-        .and_then(|s| s.strip_suffix(")\n"))
+        .and_then(|s| s.strip_suffix(')'))
         .expect("a commit in brackets");
     assert!(!commit.is_empty(), "{version}");
     // Built from a git checkout, it is that checkout's commit (possibly marked dirty).
@@ -47,8 +48,25 @@ fn the_version_names_the_commit_it_is_built_from() {
 }
 
 #[test]
+fn the_long_version_names_the_built_in_papers_hash_as_the_outputs_do() {
+    let long = text(&run(&["--version"]).stdout);
+    let short = text(&run(&["-V"]).stdout);
+    let mut lines = long.lines();
+    assert_eq!(lines.next(), short.lines().next(), "--version starts as -V");
+    let hash = lines
+        .next()
+        .and_then(|l| l.strip_prefix("built-in paper: sha256 "))
+        .unwrap_or_else(|| panic!("no paper hash in {long:?}"));
+    let out = run(&["check", "--only", "22", "--json"]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(json["paper"]["source"], "built-in");
+    assert_eq!(json["paper"]["sha256"], hash, "check --json's provenance");
+}
+
+#[test]
 fn every_output_names_the_version_and_commit_that_made_it() {
-    let version = text(&run(&["--version"]).stdout);
+    let version = text(&run(&["-V"]).stdout);
     let version = version
         .trim()
         .strip_prefix("rolling-disk ")

@@ -42,6 +42,13 @@ impl Paper {
         Self::from_texts(PaperSource::BuiltIn, Texts::BUILT_IN)
     }
 
+    /// SHA-256 (hex) of the built-in paper's four files, as [`Paper::sha256`] of
+    /// [`Paper::built_in`] gives it, without reading the paper: what `--version` names.
+    pub fn built_in_sha256() -> String {
+        let t = Texts::BUILT_IN;
+        sha256(&[t.equations, t.symbols, t.claims, t.corrections])
+    }
+
     /// The built-in paper, read once per process and shared: what a user's paper is compared
     /// with where a check must know what the built-in claim gives (its `rule`, its number).
     pub fn built_in_shared() -> &'static Paper {
