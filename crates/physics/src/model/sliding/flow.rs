@@ -35,25 +35,26 @@ impl Flow<'_> {
     pub fn record_row(&self, y: &State<14>, quantities: &[Quantity], out: &mut Vec<f64>) -> f64 {
         let s = self.snapshot(y);
         let energy = self.model.energy_at(&s);
-        let mut force = None;
+        let (mut force, mut motion) = (None, None);
         for &q in quantities {
             if q == Quantity::Energy {
                 out.push(energy);
             } else {
-                self.record_with(&s, y, q, &mut force, out);
+                self.record_with(&s, y, q, (&mut force, &mut motion), out);
             }
         }
         energy
     }
 
     /// [`Model::record`] on the geometry `s` of `y`, the contact force solved into `force`
-    /// when a quantity needs it and it is not there yet.
+    /// and the paper's variables read into `motion` when a quantity needs them and they are
+    /// not there yet.
     fn record_with(
         &self,
         s: &Snapshot,
         y: &State<14>,
         q: Quantity,
-        force: &mut Option<Vector3<f64>>,
+        (force, motion): (&mut Option<Vector3<f64>>, &mut Option<Motion>),
         out: &mut Vec<f64>,
     ) -> bool {
         let mut contact =
@@ -70,7 +71,7 @@ impl Flow<'_> {
                 out.extend_from_slice(&[f.dot(&s.r), f.dot(&s.e2)]);
             }
             Quantity::Dissipated => out.push(y[DISSIPATED]),
-            geometric => return s.record_geometry(geometric, out),
+            geometric => return s.record_geometry_with(geometric, motion, out),
         }
         true
     }
@@ -130,7 +131,7 @@ impl Model<14> for Flow<'_> {
     }
 
     fn record(&self, y: &State<14>, q: Quantity, out: &mut Vec<f64>) -> bool {
-        self.record_with(&self.snapshot(y), y, q, &mut None, out)
+        self.record_with(&self.snapshot(y), y, q, (&mut None, &mut None), out)
     }
 
     /// The model's start state (rolling plus its start slip).
