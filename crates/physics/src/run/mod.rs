@@ -1,8 +1,10 @@
 //! Running a scene: build the model with only the states it needs, integrate, record.
 
+mod csv;
 pub mod sliding;
 mod table;
 
+pub use csv::csv_row;
 pub use table::{ContactLost, Run};
 
 use crate::solve::Solution;
@@ -197,20 +199,6 @@ pub fn columns(scene: &Scene) -> Vec<String> {
         columns.extend(q.columns().iter().map(|c| c.to_string()));
     }
     columns
-}
-
-/// Appends one CSV row to `out`: each number with 17 significant digits (so that it reads back
-/// exactly), separated by commas, ended by a newline.
-pub fn csv_row(row: &[f64], out: &mut Vec<u8>) {
-    use std::io::Write as _;
-    for (i, v) in row.iter().enumerate() {
-        if i > 0 {
-            out.push(b',');
-        }
-        // Writing to a Vec cannot fail.
-        let _ = write!(out, "{v:.16e}");
-    }
-    out.push(b'\n');
 }
 
 impl Run {
