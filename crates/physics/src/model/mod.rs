@@ -13,6 +13,8 @@ pub mod frictionless;
 pub mod lab_frame;
 pub mod layout;
 pub mod mechanism;
+#[cfg(test)]
+mod record_row;
 pub mod rolling;
 pub mod sliding;
 pub mod steady;
