@@ -8,9 +8,10 @@ use crate::cli::stdout::CLOSED_PIPE_STATUS;
 use files::streamed::Streamed;
 use std::path::Path;
 
-/// The most bytes one number takes in a row: 17 significant digits, a sign, a point and an
-/// exponent of up to three digits with its sign (`-1.2345678901234567e-100`), then a comma or
-/// the newline.
+/// The most bytes one number takes in a row ([`physics::run::csv_row`], the shortest decimal
+/// that reads back): at most 17 significant digits, a sign, a point and an exponent of up to
+/// three digits with its sign (`-1.2345678901234567e-308`, 24 bytes), then a comma or the
+/// newline.
 pub(crate) const CELL_BYTES: u64 = 25;
 
 /// Rows written as CSV while a run makes them.

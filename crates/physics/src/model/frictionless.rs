@@ -8,15 +8,24 @@
 //! mass moves only vertically (eq 59), so its horizontal position is a constant too.
 
 use crate::disk::Disk;
-use crate::model::rolling::{extras_rhs, lz, record_common};
-use crate::model::{leading_state, Extras, Layout, Model, Motion, Quantity};
+use crate::model::rolling::{extras_rhs, lz, lz_at_tilt, record_common};
+use crate::model::{leading_state, Extras, Layout, Model, Motion, Quantity, RowShared};
 use crate::solve::{Dynamics, State};
 use num_dual::DualNum;
 
 /// Eqs 61-62 solved for $(\ddot\alpha, \dot\Omega)$ at spin $\omega_1$.
 pub fn accelerations<T: DualNum<f64> + Copy>(disk: &Disk, m: &Motion<T>) -> (T, T) {
+    accelerations_at_tilt(disk, m, m.alpha.sin_cos())
+}
+
+/// [`accelerations`] (eqs 61-62) with $(\sin\alpha, \cos\alpha)$ given.
+#[inline]
+pub fn accelerations_at_tilt<T: DualNum<f64> + Copy>(
+    disk: &Disk,
+    m: &Motion<T>,
+    (s, c): (T, T),
+) -> (T, T) {
     let k = disk.k;
-    let (s, c) = m.alpha.sin_cos();
     let (w, ad, om) = (m.spin, m.alpha_dot, m.precession);
     let alpha_ddot = ((om * om * k + ad * ad) * s * c + w * om * s * (2.0 * k)
         - c * disk.g_over_a())
@@ -43,8 +52,13 @@ pub fn spinless_jacobian(disk: &Disk, y: &[f64; 3]) -> nalgebra::SMatrix<f64, 3,
 /// $a\dot\alpha\cos\alpha$ (eq 59), so
 /// $E = \frac{m a^2}{2}\left[2k\omega_1^2 + (k + \cos^2\alpha)\dot\alpha^2 + k\Omega^2\sin^2\alpha + \frac{2g}{a}\sin\alpha\right]$.
 pub fn energy(disk: &Disk, m: &Motion) -> f64 {
+    energy_at_tilt(disk, m, m.alpha.sin_cos())
+}
+
+/// [`energy`] with $(\sin\alpha, \cos\alpha)$ given.
+#[inline]
+pub fn energy_at_tilt(disk: &Disk, m: &Motion, (s, c): (f64, f64)) -> f64 {
     let k = disk.k;
-    let (s, c) = m.alpha.sin_cos();
     0.5 * disk.m
         * disk.a
         * disk.a
@@ -57,7 +71,12 @@ pub fn energy(disk: &Disk, m: &Motion) -> f64 {
 /// The vertical contact force, the only one without friction:
 /// $F_z = m g + m\,\frac{d^2}{dt^2}(a\sin\alpha)$.
 pub fn normal_force(disk: &Disk, m: &Motion, alpha_ddot: f64) -> f64 {
-    let (s, c) = m.alpha.sin_cos();
+    normal_force_at_tilt(disk, m, m.alpha.sin_cos(), alpha_ddot)
+}
+
+/// [`normal_force`] with $(\sin\alpha, \cos\alpha)$ given.
+#[inline]
+pub fn normal_force_at_tilt(disk: &Disk, m: &Motion, (s, c): (f64, f64), alpha_ddot: f64) -> f64 {
     disk.m * disk.g + disk.m * disk.a * (alpha_ddot * c - m.alpha_dot * m.alpha_dot * s)
 }
 
@@ -143,5 +162,44 @@ impl<const N: usize> Model<N> for Frictionless<N> {
 
     fn state(&self, m: &Motion) -> State<N> {
         leading_state(&[m.alpha, m.alpha_dot, m.precession])
+    }
+
+    /// The row with the tilt's sine and cosine taken once, and the accelerations only when
+    /// the normal force is asked.
+    fn record_row(
+        &self,
+        y: &State<N>,
+        quantities: &[Quantity],
+        normal_force: bool,
+        out: &mut Vec<f64>,
+    ) -> RowShared {
+        let m = self.motion(y);
+        let sc = m.alpha.sin_cos();
+        let energy = energy_at_tilt(&self.disk, &m, sc);
+        let needs_force = normal_force || quantities.contains(&Quantity::NormalForce);
+        let force = needs_force.then(|| {
+            let (alpha_ddot, _) = accelerations_at_tilt(&self.disk, &m, sc);
+            normal_force_at_tilt(&self.disk, &m, sc, alpha_ddot)
+        });
+        for &q in quantities {
+            match (q, force) {
+                (Quantity::Alpha, _) => out.push(m.alpha),
+                (Quantity::AlphaDot, _) => out.push(m.alpha_dot),
+                (Quantity::Precession, _) => out.push(m.precession),
+                (Quantity::Spin, _) => out.push(m.spin),
+                (Quantity::Energy, _) => out.push(energy),
+                (Quantity::Lz, _) => out.push(lz_at_tilt(&self.disk, &m, sc)),
+                (Quantity::NormalForce, Some(f)) => out.push(f),
+                (Quantity::Friction | Quantity::Path, _) => out.extend_from_slice(&[0.0, 0.0]),
+                _ => {
+                    let ok = record_common(&self.layout, &m, y, q, out);
+                    debug_assert!(ok, "validated scenes only record what their model provides");
+                }
+            }
+        }
+        RowShared {
+            energy,
+            normal_force: force.filter(|_| normal_force),
+        }
     }
 }

@@ -13,6 +13,8 @@ pub mod frictionless;
 pub mod lab_frame;
 pub mod layout;
 pub mod mechanism;
+#[cfg(test)]
+mod record_row;
 pub mod rolling;
 pub mod sliding;
 pub mod steady;
@@ -180,4 +182,50 @@ pub trait Model<const N: usize>: Dynamics<N> {
     fn record(&self, y: &State<N>, q: Quantity, out: &mut Vec<f64>) -> bool;
     /// The start state of this model for the paper's variables (extras start at zero).
     fn state(&self, m: &Motion) -> State<N>;
+
+    /// Appends the columns of `quantities` in state `y` to `out`, each as [`Model::record`]
+    /// writes it, and returns the energy and, when `normal_force` is asked, the normal force
+    /// (`None` for a model without one). What the columns share is computed once for the row:
+    /// the energy, the normal force (one evaluation of the accelerations), and in a model that
+    /// overrides this, the tilt's sine and cosine or the geometry.
+    fn record_row(
+        &self,
+        y: &State<N>,
+        quantities: &[Quantity],
+        normal_force: bool,
+        out: &mut Vec<f64>,
+    ) -> RowShared {
+        let mut force = None;
+        if normal_force {
+            let at = out.len();
+            if self.record(y, Quantity::NormalForce, out) {
+                force = out.get(at).copied();
+            }
+            out.truncate(at);
+        }
+        let energy = self.energy(y);
+        for &q in quantities {
+            match (q, force) {
+                (Quantity::Energy, _) => out.push(energy),
+                (Quantity::NormalForce, Some(f)) => out.push(f),
+                _ => {
+                    let ok = self.record(y, q, out);
+                    debug_assert!(ok, "validated scenes only record what their model provides");
+                }
+            }
+        }
+        RowShared {
+            energy,
+            normal_force: force,
+        }
+    }
+}
+
+/// What [`Model::record_row`] computes for a row beside its columns.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RowShared {
+    /// The total energy (J).
+    pub energy: f64,
+    /// The normal force $F_z$ (N), when asked and the model has one.
+    pub normal_force: Option<f64>,
 }

@@ -12,7 +12,7 @@
 use crate::disk::Disk;
 use crate::model::dissipation::{Placement, PowerLaw};
 use crate::model::mechanism::Mechanism;
-use crate::model::{leading_state, Extras, Layout, Model, Motion, Quantity};
+use crate::model::{leading_state, Extras, Layout, Model, Motion, Quantity, RowShared};
 use crate::solve::{Dynamics, State};
 use num_dual::DualNum;
 
@@ -49,8 +49,18 @@ pub fn rates<T: DualNum<f64> + Copy>(
     m: &Motion<T>,
     torque_per_ma2: [T; 3],
 ) -> Rates<T> {
+    rates_at_tilt(disk, m, m.alpha.sin_cos(), torque_per_ma2)
+}
+
+/// [`rates`] with $(\sin\alpha, \cos\alpha)$ given, for a caller that already has them.
+#[inline]
+pub fn rates_at_tilt<T: DualNum<f64> + Copy>(
+    disk: &Disk,
+    m: &Motion<T>,
+    (s, c): (T, T),
+    torque_per_ma2: [T; 3],
+) -> Rates<T> {
     let k = disk.k;
-    let (s, c) = m.alpha.sin_cos();
     let [n1, n2, n3] = torque_per_ma2;
     let (w, ad, om) = (m.spin, m.alpha_dot, m.precession);
     Rates {
@@ -66,8 +76,13 @@ pub fn rates<T: DualNum<f64> + Copy>(
 /// generic so that its rate along a motion is exact by a dual number (the checks of sec. 11
 /// differentiate it).
 pub fn energy<T: DualNum<f64> + Copy>(disk: &Disk, m: &Motion<T>) -> T {
+    energy_at_tilt(disk, m, m.alpha.sin())
+}
+
+/// [`energy`] (eq 26) with $\sin\alpha$ given.
+#[inline]
+pub fn energy_at_tilt<T: DualNum<f64> + Copy>(disk: &Disk, m: &Motion<T>, s: T) -> T {
     let k = disk.k;
-    let s = m.alpha.sin();
     let kinetic = m.spin * m.spin * (2.0 * k + 1.0)
         + m.alpha_dot * m.alpha_dot * (k + 1.0)
         + m.precession * m.precession * s * s * k;
@@ -77,7 +92,12 @@ pub fn energy<T: DualNum<f64> + Copy>(disk: &Disk, m: &Motion<T>) -> T {
 /// Eq 63's $L_z = k m a^2(\Omega\sin^2\alpha - 2\omega_1\cos\alpha)$, the vertical component of
 /// the angular momentum about the centre of mass (eq 19 dotted with $\hat{\mathbf z}$ of eq 4).
 pub fn lz(disk: &Disk, m: &Motion) -> f64 {
-    let (s, c) = m.alpha.sin_cos();
+    lz_at_tilt(disk, m, m.alpha.sin_cos())
+}
+
+/// [`lz`] (eq 63) with $(\sin\alpha, \cos\alpha)$ given.
+#[inline]
+pub fn lz_at_tilt(disk: &Disk, m: &Motion, (s, c): (f64, f64)) -> f64 {
     disk.i22() * (m.precession * s * s - 2.0 * m.spin * c)
 }
 
@@ -86,7 +106,12 @@ pub fn lz(disk: &Disk, m: &Motion) -> f64 {
 /// a\omega_1\hat{\mathbf 2}$ through eqs 5-6. Returned as (vertical $F_z$, along $\hat{\mathbf r}$,
 /// along $\hat{\mathbf 2}$) in newtons.
 pub fn contact_force(disk: &Disk, m: &Motion, r: &Rates) -> [f64; 3] {
-    let (s, c) = m.alpha.sin_cos();
+    contact_force_at_tilt(disk, m, m.alpha.sin_cos(), r)
+}
+
+/// [`contact_force`] (eq 20) with $(\sin\alpha, \cos\alpha)$ given.
+#[inline]
+pub fn contact_force_at_tilt(disk: &Disk, m: &Motion, (s, c): (f64, f64), r: &Rates) -> [f64; 3] {
     let a = disk.a;
     let (w, ad, om) = (m.spin, m.alpha_dot, m.precession);
     // Acceleration of the centre of mass in the triad.
@@ -240,9 +265,52 @@ impl<const N: usize> Model<N> for Rolling<N> {
     fn state(&self, m: &Motion) -> State<N> {
         leading_state(&[m.alpha, m.alpha_dot, m.precession, m.spin])
     }
+
+    /// The row with the tilt's sine and cosine taken once, and the accelerations (for the
+    /// contact force) only when the normal force or the friction is asked.
+    fn record_row(
+        &self,
+        y: &State<N>,
+        quantities: &[Quantity],
+        normal_force: bool,
+        out: &mut Vec<f64>,
+    ) -> RowShared {
+        let m = self.motion(y);
+        let sc = m.alpha.sin_cos();
+        let energy = energy_at_tilt(&self.disk, &m, sc.0);
+        let needs_force = normal_force
+            || quantities
+                .iter()
+                .any(|q| matches!(q, Quantity::NormalForce | Quantity::Friction));
+        let force = needs_force.then(|| {
+            let r = rates_at_tilt(&self.disk, &m, sc, self.torque(&m));
+            contact_force_at_tilt(&self.disk, &m, sc, &r)
+        });
+        for &q in quantities {
+            match (q, force) {
+                (Quantity::Alpha, _) => out.push(m.alpha),
+                (Quantity::AlphaDot, _) => out.push(m.alpha_dot),
+                (Quantity::Precession, _) => out.push(m.precession),
+                (Quantity::Spin, _) => out.push(m.spin),
+                (Quantity::Energy, _) => out.push(energy),
+                (Quantity::Lz, _) => out.push(lz_at_tilt(&self.disk, &m, sc)),
+                (Quantity::NormalForce, Some(f)) => out.push(f[0]),
+                (Quantity::Friction, Some(f)) => out.extend_from_slice(&f[1..]),
+                _ => {
+                    let ok = record_common(&self.layout, &m, y, q, out);
+                    debug_assert!(ok, "validated scenes only record what their model provides");
+                }
+            }
+        }
+        RowShared {
+            energy,
+            normal_force: force.filter(|_| normal_force).map(|f| f[0]),
+        }
+    }
 }
 
 /// The quantities every model reads the same way: the paper's variables and the extra states.
+#[inline]
 pub(crate) fn record_common<const N: usize>(
     layout: &Layout,
     m: &Motion,

@@ -1,15 +1,17 @@
 //! Running a scene: build the model with only the states it needs, integrate, record.
 
+mod csv;
 pub mod sliding;
 mod table;
 
+pub use csv::csv_row;
 pub use table::{ContactLost, Run};
 
 use crate::solve::Solution;
 
 use crate::budget;
 use crate::dispatch::{dispatch, problem, Visit};
-use crate::model::{Model, Quantity};
+use crate::model::Model;
 use crate::scene::Scene;
 use crate::solve::{held_samples, solve, Ending, SettingsError, State};
 
@@ -121,7 +123,6 @@ struct Recorder<'m, 's, M> {
     checks_contact: bool,
     recorded: u64,
     row: Vec<f64>,
-    force: Vec<f64>,
     sink: RowSink<'s>,
 }
 
@@ -141,44 +142,30 @@ impl<'m, 's, M> Recorder<'m, 's, M> {
             contact_lost: None,
             checks_contact: true,
             recorded: 0,
-            force: Vec::with_capacity(1),
             sink,
         }
     }
 
     /// Records one row. Each quantity is computed once: the energy (for the row and for the
     /// largest change) and the normal force (for the row and for the loss of contact, looked
-    /// for until the first) are shared, so a row costs what its quantities cost.
+    /// for until the first) are shared ([`Model::record_row`]), so a row costs what its
+    /// quantities cost.
     fn take<const N: usize>(&mut self, t: f64, y: &State<N>)
     where
         M: Model<N>,
     {
-        let model = self.model;
-        let mut normal_force = None;
-        if self.contact_lost.is_none() && self.checks_contact {
-            self.force.clear();
-            if model.record(y, Quantity::NormalForce, &mut self.force) {
-                normal_force = self.force.first().copied();
-            }
-            if let Some(f) = normal_force.filter(|&f| f < 0.0) {
-                self.contact_lost = Some(ContactLost { t, normal_force: f });
-            }
-        }
-        let energy = model.energy(y);
+        let looks = self.contact_lost.is_none() && self.checks_contact;
         self.row.clear();
         self.row.push(t);
-        for &q in &self.scene.record {
-            match (q, normal_force) {
-                (Quantity::Energy, _) => self.row.push(energy),
-                (Quantity::NormalForce, Some(f)) => self.row.push(f),
-                _ => {
-                    let ok = model.record(y, q, &mut self.row);
-                    debug_assert!(ok, "validated scenes only record what their model provides");
-                }
-            }
+        let shared = self
+            .model
+            .record_row(y, &self.scene.record, looks, &mut self.row);
+        if let Some(f) = shared.normal_force.filter(|&f| looks && f < 0.0) {
+            self.contact_lost = Some(ContactLost { t, normal_force: f });
         }
         (self.sink)(&self.row);
         self.recorded += 1;
+        let energy = shared.energy;
         self.energy_change = self.energy_change.max(((energy - self.e0) / self.e0).abs());
     }
 
@@ -212,20 +199,6 @@ pub fn columns(scene: &Scene) -> Vec<String> {
         columns.extend(q.columns().iter().map(|c| c.to_string()));
     }
     columns
-}
-
-/// Appends one CSV row to `out`: each number with 17 significant digits (so that it reads back
-/// exactly), separated by commas, ended by a newline.
-pub fn csv_row(row: &[f64], out: &mut Vec<u8>) {
-    use std::io::Write as _;
-    for (i, v) in row.iter().enumerate() {
-        if i > 0 {
-            out.push(b',');
-        }
-        // Writing to a Vec cannot fail.
-        let _ = write!(out, "{v:.16e}");
-    }
-    out.push(b'\n');
 }
 
 impl Run {

@@ -30,7 +30,7 @@ pub fn run_streamed(scene: &Scene, sink: RowSink<'_>, dense: bool) -> Result<Run
         // The energy once, for the row and for the largest change.
         row.clear();
         row.push(t);
-        let energy = flow.record_row(y, &scene.record, &mut row);
+        let energy = flow.record_row(y, &scene.record, false, &mut row).energy;
         sink(&row);
         recorded += 1;
         energy_change = energy_change.max(((energy - e0) / e0).abs());

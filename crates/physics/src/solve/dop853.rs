@@ -96,17 +96,15 @@ impl<const N: usize> Dense<N> {
         let s = (t - self.t_old) / self.h;
         let s1 = 1.0 - s;
         let r = &self.r;
-        let mut y = State::<N>::zeros();
-        for i in 0..N {
-            let p = r[6][i] + s * r[7][i];
-            let p = r[5][i] + s1 * p;
-            let p = r[4][i] + s * p;
-            let p = r[3][i] + s1 * p;
-            let p = r[2][i] + s * p;
-            let p = r[1][i] + s1 * p;
-            y[i] = r[0][i] + s * p;
-        }
-        y
+        // Horner's scheme in s and 1 - s alternately (Hairer's `contd8`), on whole states so
+        // that the components are evaluated side by side.
+        let mut p = r[6] + r[7] * s;
+        p = r[5] + p * s1;
+        p = r[4] + p * s;
+        p = r[3] + p * s1;
+        p = r[2] + p * s;
+        p = r[1] + p * s1;
+        r[0] + p * s
     }
 }
 

@@ -142,12 +142,23 @@ impl Snapshot {
     /// face, speeds, the contact's height and path); false for what needs the model (energy,
     /// $L_z$, forces, energy dissipated), which the model records itself.
     pub fn record_geometry(&self, q: Quantity, out: &mut Vec<f64>) -> bool {
-        let m = self.motion();
+        self.record_geometry_with(q, &mut None, out)
+    }
+
+    /// [`Snapshot::record_geometry`] with the paper's variables read into `motion` when a
+    /// quantity needs them and they are not there yet, so that a row reads them once.
+    pub fn record_geometry_with(
+        &self,
+        q: Quantity,
+        motion: &mut Option<Motion>,
+        out: &mut Vec<f64>,
+    ) -> bool {
+        let mut m = || *motion.get_or_insert_with(|| self.motion());
         match q {
-            Quantity::Alpha => out.push(m.alpha),
-            Quantity::AlphaDot => out.push(m.alpha_dot),
-            Quantity::Precession => out.push(m.precession),
-            Quantity::Spin => out.push(m.spin),
+            Quantity::Alpha => out.push(m().alpha),
+            Quantity::AlphaDot => out.push(m().alpha_dot),
+            Quantity::Precession => out.push(m().precession),
+            Quantity::Spin => out.push(m().spin),
             Quantity::Heading => out.push(self.heading()),
             Quantity::Path => out.extend_from_slice(&[self.centre.x, self.centre.y]),
             Quantity::Face => out.push(self.face()),

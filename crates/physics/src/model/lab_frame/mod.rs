@@ -61,7 +61,7 @@ mod tests;
 pub use geometry::Snapshot;
 
 use crate::disk::Disk;
-use crate::model::{Extras, Layout, Model, Motion, Quantity};
+use crate::model::{Extras, Layout, Model, Motion, Quantity, RowShared};
 use crate::solve::{Dynamics, State};
 use geometry::{Q, V, W, X};
 use nalgebra::{Quaternion, Vector3};
@@ -112,7 +112,11 @@ impl LabFrame {
 
     /// Total energy computed in the lab: $\frac12 m|\mathbf v|^2 + \frac12\boldsymbol\omega_b\cdot I\boldsymbol\omega_b + mg z_{cm}$ (J).
     pub fn energy(&self, y: &State<13>) -> f64 {
-        let s = self.snapshot(y);
+        self.energy_at(&self.snapshot(y))
+    }
+
+    /// [`LabFrame::energy`] of the geometry `s`.
+    fn energy_at(&self, s: &Snapshot) -> f64 {
         let i = inertia(&self.disk);
         let w = s.omega_body;
         0.5 * self.disk.m * s.velocity.norm_squared()
@@ -122,7 +126,11 @@ impl LabFrame {
 
     /// Vertical angular momentum about the centre of mass, $\hat{\mathbf z}\cdot R\,I\boldsymbol\omega_b$ (kg m²/s).
     pub fn lz(&self, y: &State<13>) -> f64 {
-        let s = self.snapshot(y);
+        self.lz_at(&self.snapshot(y))
+    }
+
+    /// [`LabFrame::lz`] of the geometry `s`.
+    fn lz_at(&self, s: &Snapshot) -> f64 {
         (s.rotation * inertia(&self.disk).component_mul(&s.omega_body)).z
     }
 }
@@ -183,5 +191,41 @@ impl Model<13> for LabFrame {
     /// The lab state for `m` with heading 0, the centre above the origin and face angle 0.
     fn state(&self, m: &Motion) -> State<13> {
         self.state_from(m, 0.0, [0.0, 0.0], 0.0)
+    }
+
+    /// The row with the geometry made once and the contact force solved at most once.
+    fn record_row(
+        &self,
+        y: &State<13>,
+        quantities: &[Quantity],
+        normal_force: bool,
+        out: &mut Vec<f64>,
+    ) -> RowShared {
+        let s = self.snapshot(y);
+        let energy = self.energy_at(&s);
+        let mut force = None;
+        let mut contact = || *force.get_or_insert_with(|| self.force(&s));
+        let normal = normal_force.then(|| contact().z);
+        let mut motion = None;
+        for &q in quantities {
+            match q {
+                Quantity::Energy => out.push(energy),
+                Quantity::Lz => out.push(self.lz_at(&s)),
+                Quantity::NormalForce => out.push(contact().z),
+                Quantity::Friction => {
+                    let f = contact();
+                    out.extend_from_slice(&[f.dot(&s.r), f.dot(&s.e2)]);
+                }
+                Quantity::Dissipated => out.push(0.0),
+                geometric => {
+                    let ok = s.record_geometry_with(geometric, &mut motion, out);
+                    debug_assert!(ok, "validated scenes only record what their model provides");
+                }
+            }
+        }
+        RowShared {
+            energy,
+            normal_force: normal,
+        }
     }
 }

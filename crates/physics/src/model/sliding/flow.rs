@@ -3,7 +3,7 @@
 
 use super::{horizontal, Mode, Sliding, DISSIPATED};
 use crate::model::lab_frame::Snapshot;
-use crate::model::{Layout, Model, Motion, Quantity};
+use crate::model::{Layout, Model, Motion, Quantity, RowShared};
 use crate::solve::{Dynamics, State};
 use nalgebra::{Quaternion, Vector3};
 
@@ -29,31 +29,15 @@ impl Flow<'_> {
             .force
     }
 
-    /// Records `quantities` of `y` in order, as [`Model::record`] does one by one, with the
-    /// geometry made once for the row and the contact force (one contact problem) solved at
-    /// most once for it. Returns the energy, computed once whether it is recorded or not.
-    pub fn record_row(&self, y: &State<14>, quantities: &[Quantity], out: &mut Vec<f64>) -> f64 {
-        let s = self.snapshot(y);
-        let energy = self.model.energy_at(&s);
-        let mut force = None;
-        for &q in quantities {
-            if q == Quantity::Energy {
-                out.push(energy);
-            } else {
-                self.record_with(&s, y, q, &mut force, out);
-            }
-        }
-        energy
-    }
-
     /// [`Model::record`] on the geometry `s` of `y`, the contact force solved into `force`
-    /// when a quantity needs it and it is not there yet.
+    /// and the paper's variables read into `motion` when a quantity needs them and they are
+    /// not there yet.
     fn record_with(
         &self,
         s: &Snapshot,
         y: &State<14>,
         q: Quantity,
-        force: &mut Option<Vector3<f64>>,
+        (force, motion): (&mut Option<Vector3<f64>>, &mut Option<Motion>),
         out: &mut Vec<f64>,
     ) -> bool {
         let mut contact =
@@ -70,7 +54,7 @@ impl Flow<'_> {
                 out.extend_from_slice(&[f.dot(&s.r), f.dot(&s.e2)]);
             }
             Quantity::Dissipated => out.push(y[DISSIPATED]),
-            geometric => return s.record_geometry(geometric, out),
+            geometric => return s.record_geometry_with(geometric, motion, out),
         }
         true
     }
@@ -130,11 +114,42 @@ impl Model<14> for Flow<'_> {
     }
 
     fn record(&self, y: &State<14>, q: Quantity, out: &mut Vec<f64>) -> bool {
-        self.record_with(&self.snapshot(y), y, q, &mut None, out)
+        self.record_with(&self.snapshot(y), y, q, (&mut None, &mut None), out)
     }
 
     /// The model's start state (rolling plus its start slip).
     fn state(&self, m: &Motion) -> State<14> {
         self.model.start_state(m)
+    }
+
+    /// The row with the geometry made once, the contact force (one contact problem) solved
+    /// at most once and the paper's variables read at most once.
+    fn record_row(
+        &self,
+        y: &State<14>,
+        quantities: &[Quantity],
+        normal_force: bool,
+        out: &mut Vec<f64>,
+    ) -> RowShared {
+        let s = self.snapshot(y);
+        let energy = self.model.energy_at(&s);
+        let mut force = None;
+        let normal = normal_force.then(|| {
+            force
+                .get_or_insert_with(|| self.model.contact_force(&self.mode, &s).force)
+                .z
+        });
+        let mut motion = None;
+        for &q in quantities {
+            if q == Quantity::Energy {
+                out.push(energy);
+            } else {
+                self.record_with(&s, y, q, (&mut force, &mut motion), out);
+            }
+        }
+        RowShared {
+            energy,
+            normal_force: normal,
+        }
     }
 }

@@ -1,0 +1,88 @@
+//! A row recorded at once ([`Model::record_row`], what shares its work between columns) is the
+//! row recorded column by column ([`Model::record`]), to the bit, in every model a scene can
+//! build.
+
+use crate::dispatch::{dispatch, problem, Visit};
+use crate::model::{Model, Quantity};
+use crate::scene::{builtin, ModelKind, Scene};
+use crate::solve::{solve, State};
+
+/// Compares, on the states of the first 0.05 s of the scene's run, one row of every quantity
+/// the model records against the same columns one at a time; returns the rows compared.
+struct SameRow;
+
+impl Visit for SameRow {
+    type Out = usize;
+
+    fn visit<M: Model<N>, const N: usize>(self, model: &M, scene: &Scene) -> usize {
+        let y0 = model.state(&scene.start);
+        let mut scratch = Vec::new();
+        let quantities: Vec<Quantity> = Quantity::ALL
+            .into_iter()
+            .filter(|&q| model.record(&y0, q, &mut scratch))
+            .collect();
+        let sol = solve(problem(model, scene, y0, 0.05), &scene.settings).expect("it runs");
+        let states: Vec<State<N>> = std::iter::once(y0).chain(sol.y).collect();
+        for y in &states {
+            let mut one_by_one = Vec::new();
+            for &q in &quantities {
+                assert!(model.record(y, q, &mut one_by_one));
+            }
+            let mut force = Vec::new();
+            let has_force = model.record(y, Quantity::NormalForce, &mut force);
+            for asked in [true, false] {
+                let mut row = vec![-1.0];
+                let shared = model.record_row(y, &quantities, asked, &mut row);
+                let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+                assert_eq!(
+                    bits(&row[1..]),
+                    bits(&one_by_one),
+                    "{}: {quantities:?}",
+                    scene.name
+                );
+                assert_eq!(row[0], -1.0, "{}: the row is appended to", scene.name);
+                assert_eq!(shared.energy.to_bits(), model.energy(y).to_bits());
+                let expected = (asked && has_force).then(|| force[0].to_bits());
+                assert_eq!(
+                    shared.normal_force.map(f64::to_bits),
+                    expected,
+                    "{}",
+                    scene.name
+                );
+            }
+        }
+        states.len()
+    }
+}
+
+#[test]
+fn a_row_recorded_at_once_is_its_columns_recorded_one_by_one_in_every_model() {
+    let mut models = Vec::new();
+    for (name, src) in builtin::BUILTIN {
+        let base = Scene::parse(src, &format!("{name}.yaml")).expect("a built-in scene");
+        for kind in [None, Some(ModelKind::LabFrame)] {
+            let mut scene = base.clone();
+            if let Some(k) = kind {
+                if scene.model != ModelKind::Rolling {
+                    continue;
+                }
+                scene.model = k;
+            }
+            // Every quantity asked, so that the model carries every optional state.
+            scene.record = Quantity::ALL.to_vec();
+            let rows = dispatch(&scene, SameRow);
+            assert!(rows > 1, "{name}: no state compared");
+            models.push(scene.model);
+        }
+    }
+    for kind in [
+        ModelKind::Rolling,
+        ModelKind::Dissipative,
+        ModelKind::Frictionless,
+        ModelKind::Adiabatic,
+        ModelKind::LabFrame,
+        ModelKind::Sliding,
+    ] {
+        assert!(models.contains(&kind), "no built-in scene of {kind:?}");
+    }
+}
