@@ -185,7 +185,10 @@ fn a_disagreement_widens_the_phase_only_where_the_phase_is_in_doubt() {
     let l = stated.law();
     assert!(l.from_phase, "{stated}");
     assert_eq!(l.beta_terms.disagreement, (p.beta - a.fit.beta).abs());
-    assert!(stated.to_string().contains("counted where beyond"), "{stated}");
+    assert!(
+        stated.to_string().contains("counted where beyond"),
+        "{stated}"
+    );
 
     // The same analysis had no mains hum been found: nothing known biases the pitch track alone,
     // so the phase's fit is in doubt and the disagreement is counted in its uncertainty.
