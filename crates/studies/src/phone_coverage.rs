@@ -230,6 +230,77 @@ mod tests {
         room
     }
 
+    /// One JSON line per recording of `ROLLING_DISK_RUNS` (default 40) from
+    /// `ROLLING_DISK_SEED0` (default 1) or of the seeds in `ROLLING_DISK_SEEDS`, without the nuisances of `ROLLING_DISK_WITHOUT` when
+    /// set: both fits' errors and sigmas, the stated terms and the phase fit's diagnostics, to
+    /// read what each nuisance does to each fit.
+    #[test]
+    #[ignore = "slow: tens of recordings; prints both fits of each"]
+    fn print_both_fits() {
+        let env = |k: &str, d: u64| {
+            std::env::var(k)
+                .ok()
+                .and_then(|v| v.parse().ok())
+                .unwrap_or(d)
+        };
+        let (runs, seed0) = (env("ROLLING_DISK_RUNS", 40), env("ROLLING_DISK_SEED0", 1));
+        let what = std::env::var("ROLLING_DISK_WITHOUT").ok();
+        // ROLLING_DISK_SEEDS (comma-separated), when set, in place of the run of seeds.
+        let seeds: Vec<u64> = match std::env::var("ROLLING_DISK_SEEDS") {
+            Ok(list) => list.split(',').filter_map(|s| s.parse().ok()).collect(),
+            Err(_) => (seed0..seed0 + runs).collect(),
+        };
+        let lines: Vec<String> = seeds
+            .into_par_iter()
+            .map(|seed| {
+                let mut room = PhoneRoom::draw(seed);
+                if let Some(w) = &what {
+                    room = without(room, w);
+                }
+                let rec = room.record().unwrap();
+                let r = parse_recording(rec.wav().unwrap(), "x.wav", Channels::Mix).unwrap();
+                let mut trace = r.trace;
+                trace.truth = Some(rec.truth.clone());
+                let (b, t0) = (room.law.beta, room.t0());
+                match analyze_sound(&trace, &TrackSettings::default(), &Plausibility::default()) {
+                    Ok(a) => {
+                        let l = a.law();
+                        let x = &a.fit;
+                        let phase = a.phase.as_ref().map(|p| {
+                            serde_json::json!({
+                                "beta_err": p.beta - b, "beta_sigma": p.beta_sigma,
+                                "t0_err": p.t0 - t0, "t0_sigma": p.t0_sigma,
+                                "n": p.n, "chi2": p.chi2_dof, "corner": p.corner,
+                                "corner_used": p.corner.is_some() && p.corner_not_used.is_none(),
+                                "structure": p.structure.map(|s| (s.lag_one_z, s.runs_z)),
+                                "last_block_before_t0": t0 - p.points.last().map_or(f64::NAN, |q| q.b),
+                            })
+                        });
+                        serde_json::json!({
+                            "seed": seed, "rate": room.sample_rate, "sound": room.sound,
+                            "high_pass": room.high_pass, "reverb": room.reverb, "agc": room.agc,
+                            "clip": room.clip, "hum": !room.hum.lines.is_empty(),
+                            "from_phase": l.from_phase,
+                            "beta_err": l.beta - b, "beta_sigma": l.beta_sigma,
+                            "t0_err": l.t0 - t0, "t0_sigma": l.t0_sigma,
+                            "beta_terms": l.beta_terms, "t0_terms": l.t0_terms,
+                            "pitch": {"beta_err": x.beta - b, "beta_sigma": x.beta_sigma,
+                                      "t0_err": x.t0 - t0, "t0_sigma": x.t0_sigma, "n": x.n,
+                                      "chi2": x.chi2_dof},
+                            "phase": phase, "why_not_phase": a.phase_implausible(),
+                            "phase_refused": a.phase_refused,
+                        })
+                        .to_string()
+                    }
+                    Err(e) => serde_json::json!({"seed": seed, "refused": e.to_string()}).to_string(),
+                }
+            })
+            .collect();
+        for l in lines {
+            println!("FIT {l}");
+        }
+    }
+
     /// The analyses of the seeds in `ROLLING_DISK_SEEDS` (comma-separated), as `experiment
     /// analyze` prints them, with the truth.
     #[test]

@@ -426,8 +426,10 @@ impl fmt::Display for SoundAnalysis {
                     (Some(s), None) => writeln!(
                         f,
                         "  phase residuals: {s}: {}",
-                        if s.shown() {
-                            "structure, but the fits agree within their noise, so nothing is added"
+                        if s.shown() && self.phase_implausible().is_some() {
+                            "structure, so the phase's fit is not the result"
+                        } else if s.shown() {
+                            "structure, with the law's drift across the record stated, and the fits agree within their noise"
                         } else {
                             "noise"
                         }

@@ -12,14 +12,26 @@
 //! phone's high-pass, whose corner the harmonics' phases measure
 //! ([`high_pass`](crate::sound_analysis::high_pass)); the law's drift over the record
 //! ([`law_stability`](crate::fit::law_stability)); and the two fits' disagreement where it
-//! exceeds their noise and the phase's fit is itself in doubt ([`SoundAnalysis::phase_in_doubt`]).
+//! exceeds their noise and the phase's fit is in doubt ([`SoundAnalysis::phase_in_doubt`]).
+//!
+//! **Residuals with structure: the pitch's fit is the result, unless the law's drift is
+//! stated.** Where the phase fit's whitened residuals show structure
+//! ([`residual_structure`](crate::sound_analysis::residual_structure): the heading it states does
+//! not hold over the record), its sigma, read from residuals taken as the noise of a law that
+//! holds, does not bound its error. Where the later half's refit measures eq 79 drifting over the
+//! record ([`law_stability`](crate::fit::law_stability)), the shift is stated in its uncertainty
+//! and the structure has a measured part in it: the phase's fit stays the result, in doubt (its
+//! disagreement with the pitch's counted, below). Where no drift is measured, nothing stated
+//! measures what bends the heading (an uncorrected part of a high-pass's lead, reverberation,
+//! clipping): the pitch track's fit is reported instead, and the analysis says why. The pitch
+//! track's frames are fitted apart from the heading's run of turns, and its sigma is read from
+//! residuals that hold the frames' scatter.
 //!
 //! **Which fit a disagreement speaks against.** Two fits that disagree beyond their noise say
 //! that one of them is wrong, not which. The phase's fit is charged with the disagreement only
 //! where its own evidence or the lack of any other cause puts it in doubt: its residuals show
-//! structure ([`residual_structure`](crate::sound_analysis::residual_structure): the heading it
-//! states does not hold over the record), or no mains hum was found, so that nothing known biases
-//! the pitch track alone. Where hum was found and the phase's residuals are noise, the
+//! structure with the law's drift stated (above), or no mains hum was found, so that nothing
+//! known biases the pitch track alone. Where hum was found and the residuals are noise, the
 //! disagreement is the pitch track's: the hum's lines cross the disk's harmonics as the pitch
 //! rises, and the frames the track keeps near them are pulled by an amount their scatter does not
 //! show, so the pitch fit's sigma (from its residuals) leaves its bias out, while the phase is
@@ -181,9 +193,9 @@ impl SoundAnalysis {
         }
     }
 
-    /// Why the phase's fit is in doubt by its own evidence or for want of another cause, when it
-    /// is: then the two fits' disagreement, where it exceeds their noise, is counted in its
-    /// uncertainty (the rule and its reason: the module's documentation).
+    /// Why the phase's fit, plausible, is in doubt by its own evidence or for want of another
+    /// cause, when it is: then the two fits' disagreement, where it exceeds their noise, is
+    /// counted in its uncertainty (the rule and its reason: the module's documentation).
     pub fn phase_in_doubt(&self) -> Option<String> {
         let p = self.phase.as_ref()?;
         match p.structure {
@@ -232,9 +244,23 @@ impl SoundAnalysis {
     /// Why the phase's fit cannot be the result, if it cannot; then [`law`](Self::law) is the
     /// pitch track's fit. Eq 79's $t_0$ is where the disk stops: a $t_0$ more than three of its
     /// sigmas before the middle of the last tracked frame contradicts a pitch that was heard;
-    /// and a $\beta$ whose standard uncertainty exceeds it is not determined by the fit.
+    /// a $\beta$ whose standard uncertainty exceeds it is not determined by the fit; and
+    /// residuals that show structure
+    /// ([`residual_structure`](crate::sound_analysis::residual_structure)) with no drift of the
+    /// law across the record measured ([`law_stability`](crate::fit::law_stability)) say that
+    /// the heading the fit states does not hold over the record by an amount nothing in its
+    /// stated uncertainty measures, so that its sigma, read from residuals taken as noise, does
+    /// not bound its error (the rule and its reason: the module's documentation).
     pub fn phase_implausible(&self) -> Option<String> {
         let p = self.phase.as_ref()?;
+        let drift_stated = p.law.as_ref().is_some_and(|l| l.drifts);
+        if let Some(s) = p.structure.filter(|s| s.shown() && !drift_stated) {
+            return Some(format!(
+                "its residuals show structure ({s}) and no drift of the law across the record \
+                 is measured: the heading it states does not hold over the record, so its sigma \
+                 does not bound its error"
+            ));
+        }
         let last = self.track.points.last().map(|q| 0.5 * (q.a + q.b))?;
         if p.t0 + 3.0 * p.t0_total() < last {
             return Some(format!(
