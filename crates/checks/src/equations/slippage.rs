@@ -177,7 +177,7 @@ fn eq43(b: &Bench) -> Finding {
                     claimed,
                     e_ref,
                     format!(
-                        "$k = {k}$, $\\alpha_0 = {alpha0}$, $b = {beta} x$ the edge; $\\mu$ needed {mu:.4e}"
+                        "$k = {k}$, $\\alpha_0 = {alpha0}$, $b = {beta} \\times$ the edge; $\\mu$ needed {mu:.4e}"
                     ),
                 ));
             }

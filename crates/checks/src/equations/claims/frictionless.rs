@@ -71,7 +71,7 @@ pub(super) fn with_integration(
     f.at =
         format!(
         "{}; integrated from 1e-3 rad off the vertical, the departure grows {below:.3e}-fold at \
-         0.9 x and {above:.3} at 1.1 x the printed threshold{}",
+         0.9 × and {above:.3} at 1.1 × the printed threshold{}",
         f.at,
         if agrees { "" } else { ": THE INTEGRATIONS DISAGREE" }
     );

@@ -61,7 +61,7 @@ pub(super) fn rising_needs_slip(b: &Bench) -> Finding {
     let without = study.largest_rise_without_slip();
     let holds = with > RISEN && without < NONE;
     f.at = format!(
-        "{}; launch at {:.0} deg turning at {LAUNCH_OVER_THRESHOLD} x the threshold about the \
+        "{}; launch at {:.0} deg turning at {LAUNCH_OVER_THRESHOLD} × the threshold about the \
          vertical, contact sliding at ${:.3} m/$s; lasting gain of tilt over {} s (lowest tilt in the \
          second half minus the launch tilt): {cases}. {}",
         f.at,
