@@ -330,7 +330,7 @@ pub(super) fn angular_momentum_near_vertical(b: &Bench) -> Finding {
         coefficient,
         Tolerance::roundoff(),
         format!(
-            "$L = I \\omega$ with $I = \\operatorname{{diag}}$(2k, k, $k) m a^{{2}}$: $L = {:.4} m a^{{2}} \\Omega$ along $-\\hat{{\\mathbf{{3}}}}$ \
+            "$\\mathbf{{L}} = I \\vec\\omega$ with $I = \\operatorname{{diag}}(2k, k, k)\\, m a^{{2}}$: $L = {:.4} m a^{{2}} \\Omega$ along $-\\hat{{\\mathbf{{3}}}}$ \
              (off-axis part {across:.1e}); the printed form lacks $k m a^{{2}}$",
             coefficient
         ),

@@ -96,7 +96,7 @@ pub(super) fn rolling_extra_integrals(b: &Bench) -> Finding {
     );
     let mut f = single(
         Method::Integration,
-        "integrals of the rolling motion besides E and ($x_A$, $y_A)$ (count)",
+        "integrals of the rolling motion besides $E$ and $(x_A, y_A)$ (count)",
         b.claim(printed(&b, "rolling-extra-integrals")),
         found,
         Tolerance::roundoff(),

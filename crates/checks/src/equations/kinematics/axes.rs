@@ -88,7 +88,7 @@ pub(super) fn eq8(b: &Bench) -> Finding {
         printed_relations(b, 8, &bind, 1.0, &mut w, &|| at(&k, r"$\hat{\mathbf{r}}$"));
     }
     identity(
-        "the printed $\\hat{\\mathbf{r}}$ against 3's horizontal direction and 2 x z",
+        "the printed $\\hat{\\mathbf{r}}$ against $\\hat{\\mathbf{3}}$'s horizontal direction and $\\hat{\\mathbf{2}} \\times \\hat{\\mathbf{z}}$",
         w,
         Stated::Definition,
     )
