@@ -17,7 +17,7 @@ mod tables;
 
 type Built = (String, String, Vec<String>, String);
 
-fn built() -> &'static Built {
+pub(crate) fn built() -> &'static Built {
     static REPORT: OnceLock<Built> = OnceLock::new();
     REPORT.get_or_init(|| {
         let (report, figures) = build(&Bench::default(), &|_| {}).unwrap();

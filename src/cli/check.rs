@@ -333,7 +333,7 @@ pub(crate) fn print_table(checked: &[Checked]) {
                 f.method.to_string(),
                 f.error,
                 f.tolerance.value,
-                f.verdict,
+                ::report::inline_math::plain(&f.verdict.to_string()),
                 if f.premises_failing.is_empty() {
                     String::new()
                 } else {
@@ -350,7 +350,7 @@ pub(crate) fn print_table(checked: &[Checked]) {
             if !f.verdict.passes() {
                 let unit = match f.unit.as_str() {
                     "" | "1" => String::new(),
-                    u => format!(" {u}"),
+                    u => format!(" {}", plain(&::paper::unit_tex::unit_prose(u))),
                 };
                 let verdict = match f.verdict {
                     ::checks::finding::Verdict::Fails => "FAILS".to_string(),
@@ -377,10 +377,10 @@ pub(crate) fn print_table(checked: &[Checked]) {
                     );
                 }
                 if !c.dimensions.starts_with("consistent") {
-                    println!("  dimensions: {}", c.dimensions);
+                    println!("  dimensions: {}", plain(&c.dimensions));
                 }
                 if let Some(cause) = &c.cause {
-                    println!("  cause: {}", cause.describe());
+                    println!("  cause: {}", plain(&cause.describe()));
                 }
             }
         }
@@ -422,7 +422,7 @@ pub(crate) fn print_root_causes(checked: &[Checked]) {
     }
     for (n, c) in &causes {
         if let Cause::Undetermined { .. } = c {
-            println!("  eq {n}: {}", c.describe());
+            println!("  eq {n}: {}", ::report::inline_math::plain(&c.describe()));
         }
     }
 }

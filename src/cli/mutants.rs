@@ -80,7 +80,10 @@ fn mutants(only: Option<&str>, json: bool, dir: &PaperDir) -> anyhow::Result<()>
             }
         );
         for change in &s.survivors {
-            println!("         survives: {change}");
+            println!(
+                "         survives: {}",
+                ::report::inline_math::plain(change)
+            );
         }
     }
     println!("{killed}/{made} mutants killed");

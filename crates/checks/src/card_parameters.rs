@@ -27,8 +27,18 @@ const DISKS: &[&str] = &[
     "benchmark start",
 ];
 
+/// `text` with its formulas' LaTeX read as the words the parameters are matched on:
+/// `$\alpha_{0} = 0.3$` as `alpha_0 = 0.3`.
+fn without_tex(text: &str) -> String {
+    text.replace("\\mathrm", "")
+        .chars()
+        .filter(|c| !"$\\{}".contains(*c))
+        .collect()
+}
+
 /// `text` with the numbers that are not values removed (module documentation).
 fn values_only(text: &str) -> String {
+    let text = &without_tex(text);
     let mut out = String::with_capacity(text.len());
     let chars: Vec<char> = text.chars().collect();
     let mut i = 0;
@@ -117,6 +127,9 @@ fn numbers_that_are_not_values_are_set_aside() {
             .contains(char::is_numeric)
     );
     assert!(names_a_parameter("at k = 0.25, alpha0 0.3"));
+    assert!(names_a_parameter(&values_only(
+        r"at $k = 0.25$, $\alpha = 0.3$"
+    )));
     assert!(names_a_parameter("the toy disk at 2 s"));
     assert!(!names_a_parameter(
         "error 7.8e-4 at the smallest, a factor 3"

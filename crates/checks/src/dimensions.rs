@@ -11,6 +11,7 @@ use crate::checked::Subject;
 use crate::finding::{Finding, Verdict};
 use crate::harness::Bench;
 use paper::dimensions::{analyse, parse_unit, Dimension};
+use paper::unit_tex::{unit_prose, unit_tex_as};
 
 /// Claims whose prose prints a relation or a unit to analyse, not only a number: (id, what is
 /// printed, the unit of the quantity it is about, the unit of what is printed, whether a
@@ -19,21 +20,21 @@ use paper::dimensions::{analyse, parse_unit, Dimension};
 pub const PRINTED: &[(&str, &str, &str, &str, bool)] = &[
     (
         "angular-momentum-near-vertical",
-        "L = -Omega 3-hat",
+        r"$\mathbf{L} = -\Omega \hat{\mathbf{3}}$",
         "kg m^2/s",
         "rad/s",
         true,
     ),
     (
         "air-viscosity",
-        "eta = 1.8e-4 g-cm^-1-s",
+        "$\\eta = 1.8 \\times 10^{-4}$ g-cm$^{-1}$-s",
         "g/(cm s)",
         "g cm^-1 s",
         false,
     ),
     (
         "omega-units-hz-vs-rad-per-s",
-        "Omega = 560 Hz",
+        "$\\Omega = 560$ Hz",
         "rad/s",
         "Hz",
         false,
@@ -120,14 +121,18 @@ fn of_claim(bench: &Bench, id: &str, finding: Option<&Finding>) -> String {
         let (q, p) = (parse_unit(quantity, 2.0), parse_unit(printed, 2.0));
         return match (q, p) {
             (Ok(q), Ok(p)) if q.same(p) => "consistent".into(),
-            (Ok(q), Ok(p)) => format!(
-                "inconsistent: the printed {relation} is in {p}, the quantity in {q}: missing a \
-                 factor {}",
-                Some(q.over(p))
-                    .filter(|_| *disk)
-                    .and_then(Dimension::as_disk_factor)
-                    .unwrap_or_else(|| q.over(p).to_string())
-            ),
+            (Ok(q), Ok(p)) => {
+                format!(
+                "inconsistent: the printed {relation} is in ${}$, the quantity in ${}$: missing \
+                 a factor ${}$",
+                unit_tex_as(&p.to_string(), false),
+                unit_tex_as(&q.to_string(), false),
+                match Some(q.over(p)).filter(|_| *disk).and_then(Dimension::as_disk_factor) {
+                    Some(f) => unit_tex_as(&f, true),
+                    None => unit_tex_as(&q.over(p).to_string(), false),
+                }
+            )
+            }
             (Err(e), _) | (_, Err(e)) => format!("not analysed: {e}"),
         };
     }
@@ -145,12 +150,16 @@ fn of_claim(bench: &Bench, id: &str, finding: Option<&Finding>) -> String {
     match compared.as_deref().map(|u| (u, claim_unit(u))) {
         Some((_, Some(d))) if d.same(printed) => "consistent".into(),
         Some((u, Some(d))) => format!(
-            "inconsistent: the claim's unit {} is {printed}, the computed quantity's ({u}) is {d}",
-            c.unit
+            "inconsistent: the claim's unit {} is ${}$, the computed quantity's ({}) is ${}$",
+            unit_prose(&c.unit),
+            unit_tex_as(&printed.to_string(), false),
+            unit_prose(u),
+            unit_tex_as(&d.to_string(), false)
         ),
         _ => format!(
-            "unit read: {} is {printed} (the check compares another quantity)",
-            c.unit
+            "unit read: {} is ${}$ (the check compares another quantity)",
+            unit_prose(&c.unit),
+            unit_tex_as(&printed.to_string(), false)
         ),
     }
 }
@@ -200,7 +209,10 @@ mod tests {
         let text = h.to_string();
         assert!(text.starts_with("inconsistent"), "{text}");
         assert!(text.contains("m g h a"), "{text}");
-        assert!(text.contains("the second is the first times a;"), "{text}");
+        assert!(
+            text.contains("the second is the first times $a$;"),
+            "{text}"
+        );
     }
 
     #[test]
@@ -213,7 +225,7 @@ mod tests {
             },
             None,
         );
-        assert!(s.contains("missing a factor m a^2"), "{s}");
+        assert!(s.contains("missing a factor $m a^{2}$"), "{s}");
         let s = of(
             &b,
             &Subject::Claim {
@@ -221,6 +233,6 @@ mod tests {
             },
             None,
         );
-        assert!(s.contains("missing a factor s^-2"), "{s}");
+        assert!(s.contains(r"missing a factor $\mathrm{s}^{-2}$"), "{s}");
     }
 }

@@ -345,18 +345,27 @@ impl Mismatch {
         let d = self.right.over(self.left);
         d.as_disk_factor().unwrap_or_else(|| d.to_string())
     }
+
+    /// [`Mismatch::factor`] in LaTeX.
+    pub fn factor_tex(&self) -> String {
+        let d = self.right.over(self.left);
+        match d.as_disk_factor() {
+            Some(f) => crate::unit_tex::unit_tex_as(&f, true),
+            None => crate::unit_tex::unit_tex_as(&d.to_string(), false),
+        }
+    }
 }
 
 impl fmt::Display for Mismatch {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "{}: {} ({} against {}: the second is the first times {}; beta = {})",
+            "{}: {} (${}$ against ${}$: the second is the first times ${}$; $\\beta = {}$)",
             self.relation,
             self.what,
-            self.left,
-            self.right,
-            self.factor(),
+            crate::unit_tex::unit_tex_as(&self.left.to_string(), false),
+            crate::unit_tex::unit_tex_as(&self.right.to_string(), false),
+            self.factor_tex(),
             self.beta
         )
     }
@@ -435,7 +444,7 @@ fn side(eq: &Equation, e: &Expr, beta: f64) -> Result<Dimension, Fault> {
             Ok(())
         } else {
             Err(Fault::Differs {
-                what: format!("{what} {} is not a pure number", x.to_plain()),
+                what: format!("{what} ${}$ is not a pure number", x.to_tex()),
                 left: d,
                 right: Dimension::ONE,
             })
@@ -445,9 +454,9 @@ fn side(eq: &Equation, e: &Expr, beta: f64) -> Result<Dimension, Fault> {
         Expr::Num(_) | Expr::Pi => Ok(Dimension::ONE),
         Expr::Sym(s) => match eq.symbols.get(s) {
             Some(info) => {
-                parse_unit(&info.unit, beta).map_err(|u| Fault::Unit(format!("{}: {u}", s.plain())))
+                parse_unit(&info.unit, beta).map_err(|u| Fault::Unit(format!("${}$: {u}", s.tex())))
             }
-            None => Err(Fault::Unit(format!("the symbol {} has no unit", s.plain()))),
+            None => Err(Fault::Unit(format!("the symbol ${}$ has no unit", s.tex()))),
         },
         Expr::Neg(a) => side(eq, a, beta),
         Expr::Bin(op @ (Op::Add | Op::Sub), a, b) => {
@@ -457,9 +466,9 @@ fn side(eq: &Equation, e: &Expr, beta: f64) -> Result<Dimension, Fault> {
             } else {
                 Err(Fault::Differs {
                     what: format!(
-                        "the terms {} and {} of a {} differ",
-                        a.to_plain(),
-                        b.to_plain(),
+                        "the terms ${}$ and ${}$ of a {} differ",
+                        a.to_tex(),
+                        b.to_tex(),
                         if *op == Op::Add { "sum" } else { "difference" }
                     ),
                     left: da,
@@ -480,9 +489,9 @@ fn side(eq: &Equation, e: &Expr, beta: f64) -> Result<Dimension, Fault> {
             match number(eq, b, beta) {
                 Some(p) => Ok(base.pow(p)),
                 None => Err(Fault::Unit(format!(
-                    "the exponent {} of {} is not a number",
-                    b.to_plain(),
-                    a.to_plain()
+                    "the exponent ${}$ of ${}$ is not a number",
+                    b.to_tex(),
+                    a.to_tex()
                 ))),
             }
         }

@@ -42,9 +42,9 @@ pub enum Accent {
 }
 
 impl Symbol {
-    /// The symbol in the plain words the findings use elsewhere (`alpha_dot`, `Omega_0`,
-    /// `3-hat`, `dL_cm/dt`, `omega_rel`): readable as text in the HTML and the PDF alike, where
-    /// the canonical text of [`fmt::Display`] (`hat:bf:3`) is for symbol tables.
+    /// The symbol in plain words (`alpha_dot`, `Omega_0`, `3-hat`, `dL_cm/dt`, `omega_rel`),
+    /// for [`Expr::to_plain`]; the canonical text of [`fmt::Display`] (`hat:bf:3`) is for symbol
+    /// tables, and [`Symbol::tex`] is its LaTeX.
     pub fn plain(&self) -> String {
         let mut x = self.base.clone();
         if !self.sub.is_empty() {
@@ -225,7 +225,8 @@ impl Expr {
     }
 
     /// [`Expr::to_latex`] in plain words ([`Symbol::plain`], `cos` for `\cos`, `x` for
-    /// `\times`): what messages and findings show a reader.
+    /// `\times`), for a note printed on a terminal as it is; a finding's text writes a formula
+    /// as LaTeX between dollar signs ([`Expr::to_tex`]).
     pub fn to_plain(&self) -> String {
         self.render(true)
     }

@@ -11,8 +11,10 @@ pub mod correction;
 pub mod dimensions;
 pub mod eval;
 pub mod expr;
+mod expr_tex;
 pub mod forms;
 mod load;
+pub mod unit_tex;
 pub use load::Texts;
 pub mod mutate;
 pub mod notation;
@@ -137,11 +139,11 @@ impl Relation<'_> {
     /// A short name for findings: "form 2" of a chain, "relation 1 of 2".
     pub fn name(&self) -> String {
         format!(
-            "relation {} ({} {} {})",
+            "relation {} (${} {} {}$)",
             self.index + 1,
-            self.lhs.to_plain(),
+            self.lhs.to_tex(),
             self.rel.latex(),
-            self.rhs.to_plain()
+            self.rhs.to_tex()
         )
     }
 }

@@ -81,7 +81,7 @@ fn node_mutants(e: &Expr, target: usize) -> Vec<(String, Expr)> {
             );
         }
         Expr::Neg(a) => push(
-            format!("the sign of -{} dropped", a.to_plain()),
+            format!("the sign of ${}$ dropped", Expr::Neg(a.clone()).to_tex()),
             (**a).clone(),
         ),
         Expr::Call(f, a) => {
@@ -94,7 +94,7 @@ fn node_mutants(e: &Expr, target: usize) -> Vec<(String, Expr)> {
             };
             if let Some(g) = swapped {
                 push(
-                    format!("{} -> {}", f.latex(), g.latex()),
+                    format!("${}$ -> ${}$", f.latex(), g.latex()),
                     Expr::Call(g, a.clone()),
                 );
             }
@@ -102,24 +102,24 @@ fn node_mutants(e: &Expr, target: usize) -> Vec<(String, Expr)> {
         Expr::Bin(op @ (Op::Add | Op::Sub), a, b) => {
             let flipped = if *op == Op::Add { Op::Sub } else { Op::Add };
             push(
-                format!("{:?} -> {:?} before {}", op, flipped, b.to_plain()),
+                format!("{:?} -> {:?} before ${}$", op, flipped, b.to_tex()),
                 Expr::Bin(flipped, a.clone(), b.clone()),
             );
-            push(format!("the term {} dropped", b.to_plain()), (**a).clone());
-            push(format!("the term {} dropped", a.to_plain()), (**b).clone());
+            push(format!("the term ${}$ dropped", b.to_tex()), (**a).clone());
+            push(format!("the term ${}$ dropped", a.to_tex()), (**b).clone());
         }
         Expr::Bin(Op::Mul, a, b) => {
             push(
-                format!("the factor {} dropped", b.to_plain()),
+                format!("the factor ${}$ dropped", b.to_tex()),
                 (**a).clone(),
             );
             push(
-                format!("the factor {} dropped", a.to_plain()),
+                format!("the factor ${}$ dropped", a.to_tex()),
                 (**b).clone(),
             );
         }
         Expr::Bin(Op::Cross, a, b) => push(
-            format!("{} x {} swapped", a.to_plain(), b.to_plain()),
+            format!("${}$ and ${}$ swapped", a.to_tex(), b.to_tex()),
             Expr::Bin(Op::Cross, b.clone(), a.clone()),
         ),
         Expr::Bin(Op::Pow, a, b) => {
@@ -187,7 +187,7 @@ mod tests {
             "{changes:?}"
         );
         assert!(
-            changes.iter().any(|c| c.contains(r"\cos -> \sin")),
+            changes.iter().any(|c| c.contains(r"$\cos$ -> $\sin$")),
             "{changes:?}"
         );
         assert!(changes.iter().any(|c| c.contains("sign of")), "{changes:?}");

@@ -83,7 +83,7 @@ fn failure_view(c: &Checked) -> Option<FailureView> {
                 let unit = if h.unit == "1" {
                     String::new()
                 } else {
-                    format!(" {}", h.unit)
+                    format!(" {}", paper::unit_tex::unit_prose(&h.unit))
                 };
                 [
                     h.quantity.clone(),

@@ -23,7 +23,7 @@ pub(crate) fn values(f: &Finding) -> (String, String) {
         // With the unit where the check knows it (none shown for a pure number).
         let unit = match f.unit.as_str() {
             "" | "1" | "order" => String::new(),
-            u => format!(" {u}"),
+            u => format!(" {}", paper::unit_tex::unit_prose(u)),
         };
         (
             format!("{}{unit}", within(f.claimed, tolerance)),
@@ -114,7 +114,7 @@ pub(crate) fn headline_text(h: &checks::finding::Headline, paper: &str) -> Strin
     let unit = if h.unit == "1" {
         String::new()
     } else {
-        format!(" {}", h.unit)
+        format!(" {}", paper::unit_tex::unit_prose(&h.unit))
     };
     let paper = paper.replacen("{}", &format!("{}{unit}", fmt_num(h.paper)), 1);
     format!(
@@ -157,7 +157,7 @@ pub(crate) fn computed_text(f: &Finding) -> String {
     match printed_and_true(f) {
         Some((_, t, unit)) => match unit.as_str() {
             "" | "1" => fmt_num(t),
-            u => format!("{} {u}", fmt_num(t)),
+            u => format!("{} {}", fmt_num(t), paper::unit_tex::unit_prose(u)),
         },
         None => values(f).1,
     }
@@ -192,7 +192,7 @@ pub(crate) fn claim_views(
             claim: c.claim.clone(),
             printed: match c.claimed_value {
                 Some(v) if c.unit == "1" => fmt_num(v),
-                Some(v) => format!("{} {}", fmt_num(v), c.unit),
+                Some(v) => format!("{} {}", fmt_num(v), paper::unit_tex::unit_prose(&c.unit)),
                 None => "(qualitative)".into(),
             },
             how: crate::number::prose(&how_of(c)),

@@ -113,8 +113,8 @@ fn time_remaining(
 /// The window of the toy disk, in words for a finding's `at`.
 fn window_words(w: &Window) -> String {
     format!(
-        "alpha from {:.2e} to {:.2e} rad, where the idealized film applies to the toy disk \
-         (a = 37.5 mm, m = 0.4 kg, k = 1/4): below {:.2e} rad its suction would pass one \
+        "$\\alpha$ from {:.2e} to {:.2e} rad, where the idealized film applies to the toy disk \
+         ($a = 37.5$ mm, $m = 0.4$ kg, $k = 1/4$): below {:.2e} rad its suction would pass one \
          atmosphere, below {:.2e} rad the disk would leave the table, above {:.2e} rad the air's \
          inertia counts",
         w.low(),
@@ -244,8 +244,8 @@ pub fn eq82(b: &Bench) -> Finding {
         worst.add(printed, tau, tau, || {
             let omega = steady_precession(&d, alpha);
             format!(
-                "alpha = {alpha:.3e} rad: time remaining {printed:.4e} s printed, {tau:.4e} s \
-                 by the squeeze film (I = {:.6} +- {:.6}; gap / viscous layer {:.2} at Omega = \
+                "$\\alpha = {alpha:.3e}$ rad: time remaining {printed:.4e} s printed, {tau:.4e} s \
+                 by the squeeze film ($I = {:.6} +- {:.6}$; gap / viscous layer {:.2} at $\\Omega =$ \
                  {omega:.0} rad/s)",
                 film.coefficient,
                 film.uncertainty,
@@ -269,7 +269,7 @@ pub fn eq82(b: &Bench) -> Finding {
     judged(
         b,
         82,
-        "time remaining t0 - t at a tilt by eq 82 against the squeeze film of air (lubrication \
+        "time remaining $t_0 - t$ at a tilt by eq 82 against the squeeze film of air (lubrication \
          theory) draining the rolling disk's steady energy",
         worst,
         film_tolerance(film),
@@ -277,7 +277,7 @@ pub fn eq82(b: &Bench) -> Finding {
     )
     .in_unit("s")
     .with_headline(Headline::new(
-        "rate K of alpha^3 = K (t0 - t), uniform disk (k = 1/4), toy disk",
+        "rate K of $\\alpha^{3} = K (t_0 - t)$, uniform disk $(k = 1/4)$, toy disk",
         paper_rate,
         "printed",
         film_rate,
@@ -312,14 +312,14 @@ pub fn eq83(b: &Bench) -> Finding {
         printed_omega.push(printed);
         steady_omega.push(omega);
         worst.add(printed, omega, omega, || {
-            format!("alpha = {alpha:.3e} rad, t0 - t = {tau:.4e} s by the squeeze film")
+            format!("$\\alpha = {alpha:.3e}$ rad, $t_0 - t = {tau:.4e}$ s by the squeeze film")
         });
     }
     let scaling = Scaling::of(&taus, &printed_omega, &steady_omega);
     let f = judged(
         b,
         83,
-        "Omega of eq 83 at the squeeze film's time remaining against the steady precession at \
+        "$\\Omega$ of eq 83 at the squeeze film's time remaining against the steady precession at \
          that tilt",
         worst,
         film_tolerance(film),
@@ -333,13 +333,13 @@ pub fn eq83(b: &Bench) -> Finding {
         steady_omega.last().copied().unwrap_or(f64::NAN),
     );
     let at = format!(
-        "alpha = {:.2e} rad, the highest tilt of the window, t0 - t = {:.3e} s: {}",
+        "$\\alpha = {:.2e}$ rad, the highest tilt of the window, $t_0 - t = {:.3e}$ s: {}",
         descent.last().map_or(f64::NAN, |d| d.0),
         taus.last().copied().unwrap_or(f64::NAN),
         window_words(&window)
     );
     f.with_headline(Headline::new(
-        "precession rate Omega at a given time remaining before t0 (toy disk, k = 1/4)",
+        "precession rate $\\Omega$ at a given time remaining before $t_0$ (toy disk, $k = 1/4$)",
         paper,
         "printed",
         reference,
@@ -354,7 +354,7 @@ fn film_tolerance(film: SqueezeFilm) -> Tolerance {
     Tolerance {
         value: film.uncertainty / film.coefficient,
         rule: format!(
-            "the squeeze film number I = {:.6} to its discretization bound ({:.1e} relative)",
+            "the squeeze film number $I = {:.6}$ to its discretization bound ({:.1e} relative)",
             film.coefficient,
             film.uncertainty / film.coefficient
         ),

@@ -87,13 +87,13 @@ pub fn eq83_from_eq82(b: &Bench) -> Finding {
                 &bind.scalar("Omega", reference),
                 reference,
                 &mut worst,
-                &|| format!("k = {k}, t0 - t = {tau:.3e} s"),
+                &|| format!("$k = {k}$, $t_0 - t = {tau:.3e}$ s"),
             );
         }
     }
     Finding::from_worst(
         Method::Derivation,
-        "Omega of eq 83 against eq 82's alpha put into Omega^2 = g/(a k alpha)",
+        "$\\Omega$ of eq 83 against eq 82's $\\alpha$ put into $\\Omega^{2} = g/(a k \\alpha)$",
         worst,
         Tolerance::roundoff(),
     )
@@ -140,8 +140,8 @@ pub fn eq73_from_eq72(b: &Bench) -> Finding {
                 .scalar("U_rate", derived);
             printed_relations(b, 73, &at, unit, &mut worst, &|| {
                 format!(
-                    "k = {k}, alpha = {alpha}, alpha_dot = {alpha_dot:.4} rad/s, alpha_ddot = -g/a; \
-                     eq 72's last form gives dU/dt = {:.4} m a g alpha_dot",
+                    "$k = {k}$, $\\alpha = {alpha}$, $\\dot\\alpha = {alpha_dot:.4}$ rad/s, $\\ddot\\alpha = -g/a$; \
+                     eq 72's last form gives $dU/dt = {:.4} m a g \\dot\\alpha$",
                     derived / (d.m * d.a * d.g * alpha_dot)
                 )
             });
@@ -149,8 +149,8 @@ pub fn eq73_from_eq72(b: &Bench) -> Finding {
     }
     Finding::from_worst(
         Method::Derivation,
-        "every printed form of eq 73 against the rate of eq 72's last form where F_z = m g + m a alpha_ddot = 0 \
-         (error in units of m a g |alpha_dot|)",
+        "every printed form of eq 73 against the rate of eq 72's last form where $F_z = m g + m a \\ddot\\alpha = 0$ \
+         (error in units of $m a g |\\dot\\alpha|$)",
         worst,
         Tolerance::roundoff())
 }
@@ -214,7 +214,7 @@ pub fn eq76_from_eqs73_75(b: &Bench) -> Finding {
                     .unwrap_or(f64::NAN);
                 worst.add(b.claim(printed), derived, derived.abs(), || {
                     format!(
-                        "k = {k}, beta = {beta}, Omega = {omega} rad/s: eqs 73 and 75 give alpha_dot = {derived:.6e} rad/s"
+                        "$k = {k}$, $\\beta = {beta}$, $\\Omega = {omega}$ rad/s: eqs 73 and 75 give $\\dot\\alpha = {derived:.6e}$ rad/s"
                     )
                 });
             }
@@ -222,7 +222,7 @@ pub fn eq76_from_eqs73_75(b: &Bench) -> Finding {
     }
     let first = Finding::from_worst(
         Method::Derivation,
-        "eq 76's first relation against alpha_dot solved from eq 73's last form with the power of eq 75",
+        "eq 76's first relation against $\\dot\\alpha$ solved from eq 73's last form with the power of eq 75",
         worst,
         Tolerance::roundoff());
     worst_order(vec![
@@ -256,7 +256,7 @@ fn eq76_second_from_eq31(b: &Bench) -> Finding {
         }
     }
     Finding::from_order(
-        "eq 76's second relation against its first with Omega_0 solved from eq 31 as printed, relative error against alpha",
+        "eq 76's second relation against its first with $\\Omega_0$ solved from eq 31 as printed, relative error against $\\alpha$",
         &SMALL_ALPHAS,
         &errors,
         eq76.entry.claimed_order.unwrap_or(2.0),
@@ -303,7 +303,7 @@ pub fn eq78_from_eq77(b: &Bench) -> Finding {
             &mut worst,
             &|| {
                 format!(
-                    "k = {}, beta = {}, t_0 - t = {tau:e} s: eq 77 gives alpha = {alpha:.6e}",
+                    "$k = {}$, $\\beta = {}$, $t_0 - t = {tau:e}$ s: eq 77 gives $\\alpha = {alpha:.6e}$",
                     d.k, law.beta
                 )
             },
@@ -311,7 +311,7 @@ pub fn eq78_from_eq77(b: &Bench) -> Finding {
     }
     Finding::from_worst(
         Method::Derivation,
-        "eq 78's tilt against the tilt that solves eq 77, at times before t_0 over ten decades",
+        "eq 78's tilt against the tilt that solves eq 77, at times before $t_0$ over ten decades",
         worst,
         Tolerance::roundoff(),
     )
@@ -364,7 +364,7 @@ pub fn eq79_from_eqs78_31(b: &Bench) -> Finding {
         }
     }
     Finding::from_order(
-        "eq 79's Omega (first relation and last side) against eq 31's Omega at eq 78's tilt, relative error against alpha",
+        "eq 79's $\\Omega$ (first relation and last side) against eq 31's $\\Omega$ at eq 78's tilt, relative error against $\\alpha$",
         &SMALL_ALPHAS,
         &errors,
         eq79.entry.claimed_order.unwrap_or(2.0),
@@ -385,12 +385,17 @@ pub fn eq84_from_eq79(b: &Bench) -> Finding {
             &bind.scalar("Omega", omega),
             1.0 / omega,
             &mut worst,
-            &|| format!("k = {}, beta = {}, t_0 - t = {tau:e} s", d.k, law.beta),
+            &|| {
+                format!(
+                    "$k = {}$, $\\beta = {}$, $t_0 - t = {tau:e}$ s",
+                    d.k, law.beta
+                )
+            },
         );
     }
     Finding::from_worst(
         Method::Derivation,
-        "eq 84's 1/Omega against the reciprocal of eq 79's last side, at times before t_0 over ten decades",
+        "eq 84's $1/\\Omega$ against the reciprocal of eq 79's last side, at times before $t_0$ over ten decades",
         worst,
         Tolerance::roundoff())
 }

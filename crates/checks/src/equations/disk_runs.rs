@@ -75,10 +75,10 @@ impl DiskRuns {
         let mut out = vec![Alternative::new(
             "k of the disk",
             if betas.is_empty() {
-                format!("as read: the worst over k = {}", list(&ks))
+                format!("as read: the worst over $k = {}$", list(&ks))
             } else {
                 format!(
-                    "as read: the worst over k = {} and beta = {}",
+                    "as read: the worst over $k = {}$ and $\\beta = {}$",
                     list(&ks),
                     list(&betas)
                 )
@@ -92,9 +92,9 @@ impl DiskRuns {
                 out.push(Alternative::new(
                     "k of the disk",
                     if betas.is_empty() {
-                        format!("k = {k} alone")
+                        format!("$k = {k}$ alone")
                     } else {
-                        format!("k = {k} alone (beta = {})", list(&betas))
+                        format!("$k = {k}$ alone $(\\beta = {})$", list(&betas))
                     },
                     reference,
                     verdict,
@@ -107,7 +107,7 @@ impl DiskRuns {
                 out.push(Alternative::new(
                     "the dissipation's form",
                     format!(
-                        "beta = {beta} alone (P = -epsilon m a g Omega^{beta}; k = {})",
+                        "$\\beta = {beta}$ alone ($P = -\\epsilon m a g \\Omega^{{{beta}}}$; $k = {}$)",
                         list(&ks)
                     ),
                     reference,
@@ -164,11 +164,11 @@ mod tests {
         };
         assert_eq!(verdict("as read"), Some(Verdict::Fails));
         assert!(matches!(
-            verdict("k = 0.25 alone"),
+            verdict("$k = 0.25$ alone"),
             Some(Verdict::HoldsApproximately { .. })
         ));
-        assert_eq!(verdict("k = 0.5 alone"), Some(Verdict::Fails));
-        assert_eq!(verdict("beta = 2 alone"), Some(Verdict::Fails));
+        assert_eq!(verdict("$k = 0.5$ alone"), Some(Verdict::Fails));
+        assert_eq!(verdict(r"$\beta = 2$ alone"), Some(Verdict::Fails));
         let f = Finding::from_order("x", &small, &runs.all(small.len()), 2.0).with_robustness(alts);
         assert_eq!(
             f.verdict,

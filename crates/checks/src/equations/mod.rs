@@ -210,7 +210,7 @@ pub const UNCHECKABLE_CLAIMS: &[(&str, &str)] = &[
     ),
     (
         "contact-speed-exceeds-sound",
-        "names no number; its content (Omega unbounded) is checked by finite-time-singularity",
+        "names no number; its content ($\\Omega$ unbounded) is checked by finite-time-singularity",
     ),
 ];
 

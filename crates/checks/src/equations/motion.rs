@@ -34,7 +34,10 @@ fn starts(disk: &Disk) -> Vec<(String, Motion)> {
         if let Ok(mut m) = steady_motion(disk, alpha0, b_over_a * disk.a) {
             m.alpha += 0.02;
             m.alpha_dot = 0.5;
-            out.push((format!("alpha0 {alpha0}, b/a {b_over_a}, k {}", disk.k), m));
+            out.push((
+                format!("$\\alpha_0 {alpha0}$, $b/a {b_over_a}$, k {}", disk.k),
+                m,
+            ));
         }
     }
     out.push((
@@ -61,7 +64,7 @@ const FLOW_STEP: f64 = 1e-5;
 fn flow_differences() -> Tolerance {
     Tolerance {
         value: 1e-7,
-        rule: "Richardson-extrapolated central differences along the lab model's flow (h = 1e-5 s): 1e-7 of the sum of the relation's terms and g/a".into(),
+        rule: "Richardson-extrapolated central differences along the lab model's flow (h = 1e-5 s): 1e-7 of the sum of the relation's terms and $g/a$".into(),
     }
 }
 
@@ -151,7 +154,7 @@ fn residuals(b: &Bench, n: u32) -> Finding {
                 .fold(0.0, f64::max)
                 + run.disk.g_over_a();
             printed_relations(b, n, &bind, scale, &mut worst, &|| {
-                format!("{}, t = {t:.2} s", run.name)
+                format!("{}, $t = {t:.2}$ s", run.name)
             });
         }
     }
@@ -221,7 +224,7 @@ fn eq26(b: &Bench) -> Finding {
                 .scalar("omega_1", m.spin);
             printed_relations(b, 26, &bind, reference.abs(), &mut worst, &|| {
                 format!(
-                    "k {k}, alpha = {} rad, alpha_dot = {} rad/s, Omega = {} rad/s, omega_1 = {} rad/s",
+                    "k {k}, $\\alpha = {}$ rad, $\\dot\\alpha = {}$ rad/s, $\\Omega = {}$ rad/s, $\\omega_1 = {}$ rad/s",
                     m.alpha, m.alpha_dot, m.precession, m.spin
                 )
             });

@@ -48,7 +48,7 @@ fn small() -> Vec<f64> {
 /// exact to round-off) and the along-$\hat{\mathbf 2}$ part (zero) relative to $mg$.
 fn eq41(b: &Bench) -> Finding {
     small_b_order(
-        "steady contact force for b << a",
+        "steady contact force for $b \\ll  a$",
         |d, _, alpha0, sign, x| {
             let rho = sign * x;
             let [fz, fr, f2] = force(d, alpha0, rho);
@@ -92,7 +92,7 @@ fn small_b_order(compared: &str, error: impl Fn(&Disk, f64, f64, f64, f64) -> f6
                     .map(|&x| error(&d, k, alpha0, sign, x))
                     .collect();
                 fits.push((
-                    format!("k = {k}, alpha0 = {alpha0}, sign of b {sign}"),
+                    format!("$k = {k}$, $\\alpha_0 = {alpha0}$, sign of b {sign}"),
                     Finding::from_order(compared, &small, &errs, 1.0),
                 ));
             }
@@ -111,7 +111,7 @@ fn small_b_order(compared: &str, error: impl Fn(&Disk, f64, f64, f64, f64) -> f6
 /// the need, for $b < 0$ it under-states it).
 fn eq42(b: &Bench) -> Finding {
     small_b_order(
-        "friction needed in steady motion, b << a",
+        "friction needed in steady motion, $b \\ll  a$",
         |d, k, alpha0, sign, x| {
             let mu = needed_mu(d, alpha0, sign * x);
             let bind = Bindings::new()
@@ -177,7 +177,7 @@ fn eq43(b: &Bench) -> Finding {
                     claimed,
                     e_ref,
                     format!(
-                        "k = {k}, alpha0 = {alpha0}, b = {beta} x the edge; mu needed {mu:.4e}"
+                        "$k = {k}$, $\\alpha_0 = {alpha0}$, $b = {beta} \\times$ the edge; $\\mu$ needed {mu:.4e}"
                     ),
                 ));
             }
@@ -216,9 +216,9 @@ fn eq43(b: &Bench) -> Finding {
     );
     let f = f.with_robustness(std::iter::once(as_read).chain(alternatives).collect());
     let h = Headline::new(
-        "friction coefficient mu that steady motion with negative b needs (eq 43 bounds it): \
-         unbounded, mu* = beta/(1 - beta) cot(alpha0)/(2k + 1) at b = beta times eq 30's edge; \
-         the value shown is where the samples stop, beta = 0.99",
+        "friction coefficient $\\mu$ that steady motion with negative b needs (eq 43 bounds it): \
+         unbounded, $\\mu^* = \\beta/(1 - \\beta) \\cot(\\alpha_0)/(2k + 1)$ at $b = \\beta$ times eq 30's edge; \
+         the value shown is where the samples stop, $\\beta = 0.99$",
         f.claimed,
         "implied",
         f.reference,
@@ -234,7 +234,7 @@ fn eq43(b: &Bench) -> Finding {
 fn edge_tolerance() -> Tolerance {
     Tolerance {
         value: 1e-9,
-        rule: "edge bisected to 1e-12 relative, amplified at most 100 times through mu*, plus round-off: 1e-9 relative".into(),
+        rule: "edge bisected to 1e-12 relative, amplified at most 100 times through $\\mu^*$, plus round-off: 1e-9 relative".into(),
     }
 }
 

@@ -178,7 +178,7 @@ pub(crate) fn law_runs(b: &Bench) -> Vec<(Disk, LawRun)> {
             let Ok(sol) = solve(
                 Problem::new(&model, 0.0, State::<1>::new(LAW_ALPHA0), 10.0)
                     .sampled(0.01)
-                    .stop_when(Event::new("alpha small", |y: &State<1>| {
+                    .stop_when(Event::new("$\\alpha$ small", |y: &State<1>| {
                         y[0] - LAW_ALPHA0 / 10.0
                     })),
                 &b.settings(),
@@ -234,7 +234,7 @@ pub(crate) fn implied_t0_of(b: &Bench, n: u32, rel: &Relation<'_>, worst: &mut W
             let reference = *first.get_or_insert(t0);
             worst.add(b.claim(t0), reference, reference.abs(), || {
                 format!(
-                    "eq {n} {}: implied t_0 at t = {t:.4} s against {reference:.9} s at the start, k = {}, beta = {beta}, alpha = {a:.4}",
+                    "eq {n} {}: implied $t_0$ at $t = {t:.4}$ s against {reference:.9} s at the start, $k = {}$, $\\beta = {beta}$, $\\alpha = {a:.4}$",
                     rel.name(),
                     d.k
                 )
@@ -248,7 +248,7 @@ pub(crate) fn derivation_from_eq76(b: &Bench, n: u32, relation: usize, what: &st
     implied_t0(b, n, relation, &mut worst);
     Finding::from_worst(
         Method::Derivation,
-        format!("{what}: the t_0 it implies along eq 76's printed law integrated numerically, which must not drift"),
+        format!("{what}: the $t_0$ it implies along eq 76's printed law integrated numerically, which must not drift"),
         worst,
         Tolerance::solver(b.rtol))
 }
@@ -318,17 +318,17 @@ pub(crate) fn time_remaining_on_model(b: &Bench, n: u32, relation: usize, what: 
                 let x = factor.unwrap_or(f64::NAN);
                 if i == MODEL_ALPHAS.len() - 1 && k == 0.25 && beta == 2.0 {
                     headline = Some(Headline::new(
-                        format!("time remaining to t_0 that {what} implies, over the true time remaining"),
+                        format!("time remaining to $t_0$ that {what} implies, over the true time remaining"),
                         x,
                         "implied",
                         1.0,
                         "1",
-                        format!("uniform disk (k = 1/4), beta = 2, alpha0 = {alpha0}"),
+                        format!("uniform disk $(k = 1/4)$, $\\beta = 2$, $\\alpha_0 = {alpha0}$"),
                     ));
                 }
                 if i == MODEL_ALPHAS.len() - 1 {
                     seen = format!(
-                        "the printed relation puts the time remaining at {x:.4} times the model's at k = {k}, beta = {beta}, alpha0 = {alpha0}"
+                        "the printed relation puts the time remaining at {x:.4} times the model's at $k = {k}$, $\\beta = {beta}$, $\\alpha_0 = {alpha0}$"
                     );
                 }
                 runs.add(k, Some(beta), MODEL_ALPHAS.len(), i, (x - 1.0).abs());
@@ -338,8 +338,8 @@ pub(crate) fn time_remaining_on_model(b: &Bench, n: u32, relation: usize, what: 
     let claimed_order = b.paper.equation(76).entry.claimed_order.unwrap_or(2.0);
     let mut f = Finding::from_order(
         format!(
-            "{what}: the time remaining to t_0 that it implies along the full dissipative rolling model, \
-             as a multiple of the true one (relative error against alpha0)"
+            "{what}: the time remaining to $t_0$ that it implies along the full dissipative rolling model, \
+             as a multiple of the true one (relative error against $\\alpha_0$)"
         ),
         &MODEL_ALPHAS,
         &runs.all(MODEL_ALPHAS.len()),

@@ -103,7 +103,7 @@ mod tests {
         assert_eq!(class_of("the constant 1 -> 1.001"), Some(Change::Exponent));
         assert_eq!(class_of("the constant 3 -> 3.00"), Some(Change::Exponent));
         assert_eq!(class_of("Sub -> Add"), Some(Change::Sign));
-        assert_eq!(class_of("the term t dropped"), Some(Change::Form));
+        assert_eq!(class_of("the term $t$ dropped"), Some(Change::Form));
     }
 
     #[test]
@@ -117,6 +117,6 @@ mod tests {
         };
         assert_eq!(of("reversed"), Some(Change::Relation));
         assert_eq!(of("sign of"), Some(Change::Sign));
-        assert_eq!(of(r"\cos -> \sin"), Some(Change::Form));
+        assert_eq!(of(r"$\cos$ -> $\sin$"), Some(Change::Form));
     }
 }

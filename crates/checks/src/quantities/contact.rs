@@ -130,7 +130,7 @@ pub fn least_contact_force(
 ) -> Result<LeastContact, String> {
     let model = Rolling::<4>::new(*disk, Extras::default(), Some(law)).with_placement(placement);
     let start = steady_motion(disk, alpha0, b * disk.a).map_err(|e| {
-        format!("no steady rolling motion at alpha_0 = {alpha0} rad, b/a = {b}: {e}")
+        format!("no steady rolling motion at $\\alpha_0 = {alpha0}$ rad, $b/a = {b}$: {e}")
     })?;
     let stop = Event::new(
         format!("the tilt falls below {floor:e} rad"),
@@ -184,7 +184,7 @@ fn least(v: &Values, b: &Bench) -> Computed {
         .find(|(w, _)| *w == v.word("placement"))
         .map_or(Placement::AgainstOmega, |(_, p)| *p);
     let Ok(disk) = Disk::new(1.0, k, 1.0, 1.0) else {
-        return super::threshold::not_located(format!("no disk with k = {k}"));
+        return super::threshold::not_located(format!("no disk with $k = {k}$"));
     };
     let (floor, t_end) = (v.number("alpha_end"), v.number("t_end"));
     match least_contact_force(
@@ -200,8 +200,8 @@ fn least(v: &Values, b: &Bench) -> Computed {
         Ok(r) => Computed::value(
             r.fz,
             format!(
-                "{}: smallest F_z = {:.9} m g at t = {:.6} sqrt(a/g), alpha = {:.3e} rad (the run \
-                 ends at alpha = {:.1e} rad, t = {:.3} sqrt(a/g))",
+                "{}: smallest $F_z = {:.9} m g$ at $t = {:.6} \\sqrt{{a/g}}$, $\\alpha = {:.3e}$ rad (the run \
+                 ends at $\\alpha = {:.1e}$ rad, $t = {:.3} \\sqrt{{a/g}}$)",
                 v.describe(),
                 r.fz,
                 r.t,

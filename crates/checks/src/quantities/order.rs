@@ -88,14 +88,14 @@ fn fitted_order(v: &Values, b: &Bench) -> Computed {
             Ok(x) => x,
             Err(e) => {
                 return super::threshold::not_located(format!(
-                    "eq {n}'s right side cannot be evaluated at k, alpha_0, b, a = g = m = 1 and \
-                     Omega_0: {e}"
+                    "eq {n}'s right side cannot be evaluated at k, $\\alpha_0$, b, $a = g = m = 1$ and \
+                     $\\Omega_0$: {e}"
                 ))
             }
         };
         if !reference.is_finite() {
             return super::threshold::not_located(format!(
-                "{exact} at alpha_0 = {alpha0} rad could not be computed"
+                "{exact} at $\\alpha_0 = {alpha0}$ rad could not be computed"
             ));
         }
         errors.push((printed - reference).abs());
@@ -104,7 +104,7 @@ fn fitted_order(v: &Values, b: &Bench) -> Computed {
     Computed {
         value: order,
         at: format!(
-            "eq {n} against {exact} at k = {k}, b/a = {b_over_a}: |error| {:.3e} at alpha_0 = \
+            "eq {n} against {exact} at $k = {k}$, $b/a = {b_over_a}$: |error| {:.3e} at $\\alpha_0 =$ \
              0.1 rad, {:.3e} at 1e-3 rad",
             errors[0], errors[4]
         ),

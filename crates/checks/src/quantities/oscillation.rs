@@ -44,7 +44,7 @@ fn varpi(v: &Values) -> Result<(f64, f64, String), String> {
     let varpi2 = -(j * j).trace() / 2.0;
     if varpi2 <= 0.0 {
         return Err(format!(
-            "{at}; the steady motion is unstable there (varpi^2 = {varpi2:.6e} <= 0): it has no \
+            "{at}; the steady motion is unstable there $(\\varpi^{{2}} = {varpi2:.6e} \\leq  0)$: it has no \
              oscillation frequency"
         ));
     }
@@ -56,7 +56,7 @@ fn frequency(v: &Values, _: &Bench) -> Computed {
     match varpi(v) {
         Ok((w, _, at)) => Computed {
             value: w,
-            at: format!("{at}; varpi from the exact Jacobian"),
+            at: format!("{at}; $\\varpi$ from the exact Jacobian"),
             series: None,
         },
         Err(why) => not_located(why),
@@ -68,7 +68,7 @@ fn ratio(v: &Values, _: &Bench) -> Computed {
     match varpi(v) {
         Ok((w, om, at)) => Computed {
             value: w / om.abs(),
-            at: format!("{at}; varpi = {w:.9} sqrt(g/a) from the exact Jacobian"),
+            at: format!("{at}; $\\varpi = {w:.9} \\sqrt{{g/a}}$ from the exact Jacobian"),
             series: None,
         },
         Err(why) => not_located(why),

@@ -49,7 +49,7 @@ pub(super) const FRICTION_NEEDED: Quantity = Quantity {
 /// $\omega_1 = (b/a)\Omega$, by bisection; an error saying why where there is none.
 pub(super) fn steady_state(v: &Values) -> Result<(Disk, Motion, String), String> {
     let (k, alpha0, b) = (v.number("k"), v.number("alpha0"), v.number("b_over_a"));
-    let disk = Disk::new(1.0, k, 1.0, 1.0).map_err(|e| format!("no disk with k = {k}: {e}"))?;
+    let disk = Disk::new(1.0, k, 1.0, 1.0).map_err(|e| format!("no disk with $k = {k}$: {e}"))?;
     let sign = if b < 0.0 { -1.0 } else { 1.0 };
     let motion = |om: f64| Motion {
         alpha: alpha0,
@@ -61,14 +61,14 @@ pub(super) fn steady_state(v: &Values) -> Result<(Disk, Motion, String), String>
     let (lo, hi) = bisect(1e-4, 1e4, WIDTH, |om| alpha_ddot(om) > 0.0);
     if !(lo.is_finite() && hi.is_finite()) {
         return Err(format!(
-            "no steady rolling motion at alpha_0 = {alpha0} rad, b/a = {b}, k = {k}: \
-             alpha_ddot keeps one sign for |Omega| from 1e-4 to 1e4 sqrt(g/a)"
+            "no steady rolling motion at $\\alpha_0 = {alpha0}$ rad, $b/a = {b}$, $k = {k}$: \
+             $\\ddot\\alpha$ keeps one sign for $|\\Omega|$ from 1e-4 to $1e4 \\sqrt{{g/a}}$"
         ));
     }
     let om = 0.5 * (lo + hi);
     let at = format!(
-        "k = {k}, alpha_0 = {alpha0} rad, b/a = {b}: alpha_ddot = 0 of eqs 23-25 at |Omega| in \
-         [{lo:.12e}, {hi:.12e}] sqrt(g/a) (bisection)"
+        "$k = {k}$, $\\alpha_0 = {alpha0}$ rad, $b/a = {b}$: $\\ddot\\alpha = 0$ of eqs 23-25 at $|\\Omega|$ in \
+         [{lo:.12e}, {hi:.12e}] $\\sqrt{{g/a}}$ (bisection)"
     );
     Ok((disk, motion(om), at))
 }
@@ -93,7 +93,7 @@ fn friction_needed(v: &Values, _: &Bench) -> Computed {
             let [fz, fr, f2] = rolling::contact_force(&disk, &m, &r);
             Computed {
                 value: fr.hypot(f2) / fz,
-                at: format!("{at}; F_z = {fz:.9} m g"),
+                at: format!("{at}; $F_z = {fz:.9} m g$"),
                 series: None,
             }
         }

@@ -152,7 +152,7 @@ fn a_wrong_name_parameter_value_or_unit_is_refused_where_it_stands() {
 #[test]
 fn a_claim_with_its_own_check_cannot_name_a_quantity() {
     let text = paper::Texts::BUILT_IN.claims.replace(
-        "  quantity: \"sqrt(1/k) at k = 1/4 from eq 65\"",
+        r"  quantity: '$\sqrt{1/k}$ at $k = 1/4$ from eq 65'",
         "  quantity: { name: vertical-spin-threshold, contact: frictionless, k: 0.25 }",
     );
     let paper = paper::Paper::from_texts(

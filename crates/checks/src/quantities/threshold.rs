@@ -45,7 +45,7 @@ fn vertical_spin_threshold(v: &Values, _: &Bench) -> Computed {
     let k = v.number("k");
     let contact = v.word("contact");
     let Ok(disk) = Disk::new(1.0, k, 1.0, 1.0) else {
-        return not_located(format!("no disk with k = {k}"));
+        return not_located(format!("no disk with $k = {k}$"));
     };
     let varpi2 = |om: f64| -> f64 {
         if contact == "frictionless" {
@@ -61,8 +61,8 @@ fn vertical_spin_threshold(v: &Values, _: &Bench) -> Computed {
     Computed {
         value: 0.5 * (lo + hi),
         at: format!(
-            "{contact} contact, k = {k}: bisection on varpi^2 of the linearized equations at \
-             alpha = pi/2, bracket [{lo:.12e}, {hi:.12e}] sqrt(g/a)"
+            "{contact} contact, $k = {k}$: bisection on $\\varpi^{{2}}$ of the linearized equations at \
+             $\\alpha = \\pi/2$, bracket [{lo:.12e}, {hi:.12e}] $\\sqrt{{g/a}}$"
         ),
         series: None,
     }

@@ -16,7 +16,7 @@ use crate::robustness::Alternative;
 use studies::sliding::fall::{band, fall_from, FallCase, DURATION, MUS, TILTS_DEG};
 
 /// The choice the fall's verdict rests on.
-pub(super) const SLIDES: &str = "whether the contact can slide (the table's mu)";
+pub(super) const SLIDES: &str = "whether the contact can slide (the table's $\\mu$)";
 
 /// The fall from every start of `TILTS_DEG` on one table (`None`: rolling, eqs 23-25), judged
 /// against "at most `top` deg": the alternative and its words for the card.
@@ -35,7 +35,7 @@ fn table(b: &Bench, mu: Option<f64>, top: f64) -> (Alternative, String) {
         .collect();
     let name = match mu {
         None => "rolling without slip (eqs 23-25, unlimited friction)".to_string(),
-        Some(mu) => format!("the sliding model on a table with mu = {mu}"),
+        Some(mu) => format!("the sliding model on a table with $\\mu = {mu}$"),
     };
     let settled = |c: &FallCase| c.swing.late_mean_deg.filter(|_| c.swing.settles);
     let holds = !runs.is_empty()
@@ -99,7 +99,7 @@ pub(super) fn fall_readings(b: &Bench, claimed: f64, within: f64) -> (Vec<Altern
     let tables = std::iter::once(None).chain(MUS.iter().map(|&mu| Some(mu)));
     let (alternatives, texts): (Vec<_>, Vec<_>) = tables.map(|mu| table(b, mu, top)).unzip();
     let text = format!(
-        "the fall of the thin disk (k = 1/4, a = 37.5 mm) from b mid-band over {DURATION} s, judged on whether \
+        "the fall of the thin disk ($k = 1/4$, $a = 37.5$ mm) from b mid-band over {DURATION} s, judged on whether \
          it settles into a lower rolling at or below {top:.0} deg (tilts in deg): {}",
         texts.join(" | ")
     );

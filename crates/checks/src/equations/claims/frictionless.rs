@@ -71,7 +71,7 @@ pub(super) fn with_integration(
     f.at =
         format!(
         "{}; integrated from 1e-3 rad off the vertical, the departure grows {below:.3e}-fold at \
-         0.9 x and {above:.3} at 1.1 x the printed threshold{}",
+         0.9 × and {above:.3} at 1.1 × the printed threshold{}",
         f.at,
         if agrees { "" } else { ": THE INTEGRATIONS DISAGREE" }
     );
@@ -89,11 +89,11 @@ pub(super) fn frictionless_threshold_uniform(b: &Bench) -> Finding {
     let thr = mid(frictionless_vertical_threshold(0.25));
     let f = single(
         Method::Linearization,
-        "frictionless stability threshold, k = 1/4 (sqrt(g/a))",
+        "frictionless stability threshold, $k = 1/4 (\\sqrt{g/a})$",
         b.claim(printed(b, "frictionless-threshold-uniform")),
         thr,
         Tolerance::bisection(WIDTH),
-        "bisection on varpi^2 of the linearized eqs 61-62 at alpha = pi/2".into(),
+        "bisection on $\\varpi^{2}$ of the linearized eqs 61-62 at $\\alpha = \\pi/2$".into(),
     );
     with_integration(
         f,
@@ -110,18 +110,18 @@ pub(super) fn rolling_threshold_uniform(b: &Bench) -> Finding {
     let thr = mid(rolling_vertical_threshold(0.25));
     let exact = single(
         Method::Linearization,
-        "rolling stability threshold, k = 1/4, against 2 sqrt(g/5a)",
+        "rolling stability threshold, $k = 1/4$, against $2 \\sqrt{g/5a}$",
         b.claim(2.0 / 5f64.sqrt()),
         thr,
         Tolerance::bisection(WIDTH),
-        "bisection on varpi^2 of the linearized eqs 23-25 at alpha = pi/2".into(),
+        "bisection on $\\varpi^{2}$ of the linearized eqs 23-25 at $\\alpha = \\pi/2$".into(),
     )
     .in_unit("sqrt(g/a)");
     let printed = stated(
         b,
         "rolling-threshold-uniform",
         Method::Linearization,
-        "rolling stability threshold, k = 1/4, printed 0.9 sqrt(g/a)",
+        "rolling stability threshold, $k = 1/4$, printed $0.9 \\sqrt{g/a}$",
         thr,
         "bisection on the linearization".into(),
     );
@@ -136,7 +136,7 @@ pub(super) fn thresholds_ratio(b: &Bench) -> Finding {
     let ratio = mid(frictionless_vertical_threshold(0.25)) / mid(rolling_vertical_threshold(0.25));
     let mut f = single(
         Method::Linearization,
-        "ratio of the frictionless to the rolling threshold (k = 1/4), against the printed thresholds' sqrt(5)",
+        "ratio of the frictionless to the rolling threshold $(k = 1/4)$, against the printed thresholds' $\\sqrt{5}$",
         b.claim(5f64.sqrt()),
         ratio,
         Tolerance::bisection(2.0 * WIDTH),
@@ -237,7 +237,13 @@ pub(super) fn frictionless_constants_lab(b: &Bench) -> Finding {
     }
     let count = worst.iter().filter(|d| **d <= tol.value).count() as f64;
     let rolling = lab_frame_drifts(b, starts[0].0, &starts[0].1, Contact::Rolling);
-    let names = ["x_cm", "y_cm", "omega_1", "L_z", "E"];
+    let names = [
+        r"$x_{\mathrm{cm}}$",
+        r"$y_{\mathrm{cm}}$",
+        r"$\omega_1$",
+        "$L_z$",
+        "$E$",
+    ];
     let list = |d: &[f64; 5]| {
         names
             .iter()
@@ -253,8 +259,8 @@ pub(super) fn frictionless_constants_lab(b: &Bench) -> Finding {
         count,
         Tolerance::roundoff(),
         format!(
-            "largest relative drifts over 30 sqrt(a/g) from two starts (k = 1/4, 1/2): {} \
-             (constant if at most {:.0e}); with rolling contact instead (k = 1/4): {}",
+            "largest relative drifts over $30 \\sqrt{{a/g}}$ from two starts ($k = 1/4$, 1/2): {} \
+             (constant if at most {:.0e}); with rolling contact instead $(k = 1/4)$: {}",
             list(&worst),
             tol.value,
             list(&rolling)
@@ -282,16 +288,16 @@ pub(super) fn frictionless_constants_reduced(b: &Bench) -> Finding {
         for (t, y) in sol.t.iter().zip(&sol.y) {
             let m = model.motion(y);
             w.add(b.claim(e0), fl::energy(&disk, &m), e0.abs(), || {
-                format!("energy at t = {t:.1}, k = {k}")
+                format!("energy at $t = {t:.1}$, $k = {k}$")
             });
             w.add(b.claim(l0), rolling::lz(&disk, &m), l0.abs(), || {
-                format!("L_z at t = {t:.1}, k = {k}")
+                format!("$L_z$ at $t = {t:.1}$, $k = {k}$")
             });
         }
     }
     Finding::from_worst(
         Method::Conservation,
-        "energy and L_z along frictionless motions (x_cm, y_cm, omega_1 constant by construction)",
+        "energy and $L_z$ along frictionless motions ($x_{\\mathrm{cm}}$, $y_{\\mathrm{cm}}$, $\\omega_1$ constant by construction)",
         w,
         Tolerance::solver(b.rtol),
     )
@@ -319,13 +325,13 @@ pub(super) fn angular_momentum_near_vertical(b: &Bench) -> Finding {
     let across = (l[0].powi(2) + l[1].powi(2)).sqrt() / l.norm();
     single(
         Method::Derivation,
-        "coefficient of -m a^2 Omega 3-hat in L near the vertical (k = 1/4)",
+        "coefficient of $-m a^{2} \\Omega \\hat{\\mathbf{3}}$ in L near the vertical $(k = 1/4)$",
         b.claim(printed(b, "angular-momentum-near-vertical")),
         coefficient,
         Tolerance::roundoff(),
         format!(
-            "L = I omega with I = diag(2k, k, k) m a^2: L = {:.4} m a^2 Omega along -3-hat \
-             (off-axis part {across:.1e}); the printed form lacks k m a^2",
+            "$\\mathbf{{L}} = I \\vec\\omega$ with $I = \\operatorname{{diag}}(2k, k, k)\\, m a^{{2}}$: $L = {:.4} m a^{{2}} \\Omega$ along $-\\hat{{\\mathbf{{3}}}}$ \
+             (off-axis part {across:.1e}); the printed form lacks $k m a^{{2}}$",
             coefficient
         ),
     )
@@ -372,13 +378,13 @@ pub(super) fn limits_eq55_eq71(b: &Bench) -> Finding {
         .collect();
     worse(
         Finding::from_order(
-            "rolling varpi / Omega0 (b = 0) approaching sqrt(3k/(k+1)), k = 1/4",
+            "rolling $\\varpi / \\Omega_0 (b = 0)$ approaching $\\sqrt{3k/(k+1)}$, $k = 1/4$",
             &alphas,
             &rolling,
             2.0,
         ),
         Finding::from_order(
-            "frictionless varpi / Omega0 approaching sqrt(3k/(k+1)), k = 1/4",
+            "frictionless $\\varpi / \\Omega_0$ approaching $\\sqrt{3k/(k+1)}$, $k = 1/4$",
             &alphas,
             &frictionless,
             2.0,

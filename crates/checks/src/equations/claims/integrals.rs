@@ -34,7 +34,7 @@ pub(super) fn rolling_extra_integrals(b: &Bench) -> Finding {
     let disk = unit_disk(0.25);
     let model = Rolling::<4>::new(disk, Extras::default(), None);
     let Ok(mut m0) = steady_motion(&disk, 0.5, 0.1) else {
-        panic!("the steady motion at alpha0 = 0.5, b = 0.1 a exists (eq 30)")
+        panic!("the steady motion at $\\alpha_0 = 0.5$, $b = 0.1 a$ exists (eq 30)")
     };
     m0.alpha += 0.4;
     let dt = 2e-3;
@@ -86,9 +86,9 @@ pub(super) fn rolling_extra_integrals(b: &Bench) -> Finding {
     });
     let found = ratios.iter().filter(|r| (0.0..1e-6).contains(*r)).count() as f64;
     let verdict_at = format!(
-        "k = 1/4, from the steady motion alpha0 = 0.5, b = 0.1 a with alpha raised by 0.4: \
-         {} returns to alpha = {level:.4} (swing {lo:.4} to {hi:.4}) over 60 sqrt(a/g); spread \
-         there / swing along the motion: Omega {:.1e}, omega_1 {:.1e} (below 1e-6 counts as an \
+        "$k = 1/4$, from the steady motion $\\alpha_0 = 0.5$, $b = 0.1 a$ with $\\alpha$ raised by 0.4: \
+         {} returns to $\\alpha = {level:.4}$ (swing {lo:.4} to {hi:.4}) over $60 \\sqrt{{a/g}}$; spread \
+         there / swing along the motion: $\\Omega {:.1e}$, $\\omega_1 {:.1e}$ (below 1e-6 counts as an \
          integral)",
         at_level.len(),
         ratios[0],
@@ -96,7 +96,7 @@ pub(super) fn rolling_extra_integrals(b: &Bench) -> Finding {
     );
     let mut f = single(
         Method::Integration,
-        "integrals of the rolling motion besides E and (x_A, y_A) (count)",
+        "integrals of the rolling motion besides $E$ and $(x_A, y_A)$ (count)",
         b.claim(printed(&b, "rolling-extra-integrals")),
         found,
         Tolerance::roundoff(),

@@ -210,7 +210,7 @@ fn judged(
             claimed,
             reference: computed,
             at: format!(
-                "{at}; error is |ln(computed / printed)|, a factor {:.3}",
+                "{at}; error is $|\\ln(\\text{{computed}} / \\text{{printed}})|$, a factor {:.3}",
                 error.exp()
             ),
             points: 1,

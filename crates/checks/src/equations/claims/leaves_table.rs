@@ -23,14 +23,17 @@ use physics::model::dissipation::Placement;
 /// one it stays above 0: the disk does not leave the table. FAILS, robustly.
 pub(super) fn disk_leaves_table(b: &Bench) -> Finding {
     let placements = [
-        (Placement::AgainstOmega, "against omega (the tool's model)"),
+        (
+            Placement::AgainstOmega,
+            "against $\\omega$ (the tool's model)",
+        ),
         (
             Placement::ContactDiameter,
-            "about the contact diameter 3-hat",
+            "about the contact diameter $\\hat{\\mathbf{3}}$",
         ),
         (
             Placement::AcrossPath,
-            "about the horizontal axis across the path, r-hat",
+            "about the horizontal axis across the path, $\\hat{\\mathbf{r}}$",
         ),
     ];
     let judged: Vec<(&str, Finding)> = placements
@@ -79,9 +82,9 @@ fn least_over_runs(b: &Bench, placement: Placement, what: &str) -> Finding {
             least = (
                 r.fz,
                 format!(
-                    "torque {what}; epsilon = {epsilon:e} s, beta = 2: smallest F_z = {:.4} m g \
-                     at t = {:.4} s, alpha = {:.3e} rad (the run ends at alpha = {:.1e} rad, \
-                     t = {:.3} s)",
+                    "torque {what}; $\\epsilon = {epsilon:e}$ s, $\\beta = 2$: smallest $F_z = {:.4} m g$ \
+                     at $t = {:.4}$ s, $\\alpha = {:.3e}$ rad (the run ends at $\\alpha = {:.1e}$ rad, \
+                     $t = {:.3}$ s)",
                     r.fz, r.t, r.alpha, r.alpha_end, r.t_end
                 ),
             );
@@ -92,7 +95,7 @@ fn least_over_runs(b: &Bench, placement: Placement, what: &str) -> Finding {
         claimed,
         reference: least.0,
         at: format!(
-            "{}; the least over the runs at epsilon = 0.6e-6, 1.2e-6 and 2.4e-6 s",
+            "{}; the least over the runs at $\\epsilon = 0.6e-6$, 1.2e-6 and 2.4e-6 s",
             least.1
         ),
         points: runs,
@@ -100,7 +103,7 @@ fn least_over_runs(b: &Bench, placement: Placement, what: &str) -> Finding {
     };
     Finding::from_worst(
         Method::Integration,
-        "smallest contact force F_z / m g along the toy disk's spin-down in the rolling model with \
+        "smallest contact force $F_z / m g$ along the toy disk's spin-down in the rolling model with \
          eq 75's drag, against 0 (the disk leaves the table)",
         w,
         Tolerance::solver(b.rtol),

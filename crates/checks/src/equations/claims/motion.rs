@@ -28,13 +28,13 @@ pub(super) fn k_rim_disk(b: &Bench) -> Finding {
         b.claim(printed(b, "k-rim-disk")),
         i11 / (2.0 * m * a * a),
         0.5,
-        || "I_11/(2 m a^2) of a ring of 24 point masses".into(),
+        || "$I_{11}/(2 m a^{2})$ of a ring of 24 point masses".into(),
     );
     w.add(
         b.claim(printed(b, "k-rim-disk")),
         i22 / (m * a * a),
         0.5,
-        || "I_22/(m a^2), diametral moment of the same ring".into(),
+        || "$I_{22}/(m a^{2})$, diametral moment of the same ring".into(),
     );
     Finding::from_worst(
         Method::Derivation,
@@ -71,13 +71,13 @@ pub(super) fn k_uniform_disk(b: &Bench) -> Finding {
         b.claim(printed(b, "k-uniform-disk")),
         i11 / (2.0 * mass * a * a),
         0.25,
-        || "I_11/(2 m a^2) by quadrature".into(),
+        || "$I_{11}/(2 m a^{2})$ by quadrature".into(),
     );
     w.add(
         b.claim(printed(b, "k-uniform-disk")),
         i22 / (mass * a * a),
         0.25,
-        || "I_22/(m a^2) by quadrature".into(),
+        || "$I_{22}/(m a^{2})$ by quadrature".into(),
     );
     Finding::from_worst(
         Method::Derivation,
@@ -135,11 +135,11 @@ pub(super) fn center_of_motion_constant(b: &Bench) -> Finding {
                 excursion = excursion.max((a.0 - a0.0).hypot(a.1 - a0.1));
                 let drift = (a.0 - start.0).hypot(a.1 - start.1) / disk.a;
                 w.add_error(0.0, drift, drift, "a", || {
-                    format!("|A - A(0)| at t = {t:.3}, k = {k}, alpha0 = {alpha0}, b = {beta} a, alpha perturbed by {delta}")
+                    format!("$|A - A(0)|$ at $t = {t:.3}$, $k = {k}$, $\\alpha_0 = {alpha0}$, $b = {beta} a$, $\\alpha$ perturbed by {delta}")
                 });
             }
             notes.push(format!(
-                "k={k} delta={delta}: |A - A(0)|max = {excursion:.3e} a"
+                "$k = {k}$, $\\delta = {delta}$: $|A - A(0)|_{{\\max}} = {excursion:.3e} a$"
             ));
             for (push, most) in by_push.iter_mut() {
                 if *push == delta {
@@ -150,13 +150,13 @@ pub(super) fn center_of_motion_constant(b: &Bench) -> Finding {
     }
     let mut f = Finding::from_worst(
         Method::Integration,
-        "drift |A - A(0)| of the centre of motion along rolling motions, in units of a (claimed: 0, a constant)",
+        "drift $|A - A(0)|$ of the centre of motion along rolling motions, in units of a (claimed: 0, a constant)",
         w,
         Tolerance::solver(b.rtol),
     );
     f.at = format!("{}; {}", f.at, notes.join("; "));
     let h = Headline::new(
-        "the drift |A - A(0)| of the centre of motion at the worst time (the paper: 0, a constant)",
+        "the drift $|A - A(0)|$ of the centre of motion at the worst time (the paper: 0, a constant)",
         f.claimed,
         "implied",
         f.reference,
@@ -171,7 +171,7 @@ pub(super) fn center_of_motion_constant(b: &Bench) -> Finding {
         .map(|&(push, most)| {
             Alternative::new(
                 "how far the motion is from steady",
-                format!("the tilt pushed {push} rad off steady motion (k = 1/4 and 1/2)"),
+                format!("the tilt pushed {push} rad off steady motion ($k = 1/4$ and 1/2)"),
                 most,
                 if most > tolerance {
                     Verdict::Fails
@@ -220,23 +220,26 @@ pub(super) fn no_steady_motion_beyond_vertical(b: &Bench) -> Finding {
                 !exists(k, al, r)
             }));
             w.add(b.claim(FRAC_PI_2), edge, FRAC_PI_2, || {
-                format!("edge of existence at k = {k}, r = {r} a")
+                format!("edge of existence at $k = {k}$, $r = {r} a$")
             });
         }
     }
     if found > 0 {
         w.add(f64::NAN, 0.0, 1.0, || {
-            format!("{found} steady motions found with pi/2 < alpha0 < pi")
+            format!("{found} steady motions found with $\\pi/2 < \\alpha_0 < \\pi$")
         });
     }
     let mut f = Finding::from_worst(
         Method::Derivation,
-        "largest tilt with a steady motion (r > 0), from the equilibria of eqs 23-25 (rad)",
+        "largest tilt with a steady motion $(r > 0)$, from the equilibria of eqs 23-25 (rad)",
         w,
         Tolerance::bisection(WIDTH),
     )
     .in_unit("rad");
-    f.at = format!("{}; no equilibrium on 464 grid points in (pi/2, pi)", f.at);
+    f.at = format!(
+        "{}; no equilibrium on 464 grid points in ($\\pi/2$, $\\pi$)",
+        f.at
+    );
     f
 }
 
@@ -251,7 +254,7 @@ pub(super) fn no_steady_motion_beyond_vertical(b: &Bench) -> Finding {
 fn face_rate_in_the_lab(b: &Bench, alpha0: f64) -> (f64, f64) {
     let disk = unit_disk(0.25);
     let model = LabFrame::new(disk, Contact::Rolling);
-    let m = steady_motion(&disk, alpha0, 0.0).expect("a steady b = 0 motion at a small tilt");
+    let m = steady_motion(&disk, alpha0, 0.0).expect("a steady $b = 0$ motion at a small tilt");
     let span = 5.0 * 2.0 * PI / m.precession;
     let sol = solve(
         Problem::new(&model, 0.0, model.state(&m), span).sampled(span / 400.0),
@@ -291,9 +294,13 @@ pub(super) fn face_figure_rate_vanishes(b: &Bench) -> Finding {
             b.claim(precession * (1.0 - al.cos())),
             face_rate,
             face_rate.abs(),
-            || format!("face rate at alpha0 = {al}: {face_rate:.6e} measured in the lab frame"),
+            || {
+                format!(
+                    "face rate at $\\alpha_0 = {al}$: {face_rate:.6e} measured in the lab frame"
+                )
+            },
         );
-        let m = steady_motion(&disk, al, 0.0).expect("a steady b = 0 motion at a small tilt");
+        let m = steady_motion(&disk, al, 0.0).expect("a steady $b = 0$ motion at a small tilt");
         let omega =
             (m.spin * m.spin + m.alpha_dot * m.alpha_dot + (m.precession * al.sin()).powi(2))
                 .sqrt();
@@ -302,24 +309,24 @@ pub(super) fn face_figure_rate_vanishes(b: &Bench) -> Finding {
     }
     let values = Finding::from_worst(
         Method::Integration,
-        "face figure's rate in the lab-frame model against the paper's Omega0 (1 - cos alpha0)",
+        "face figure's rate in the lab-frame model against the paper's $\\Omega_0 (1 - \\cos \\alpha_0)$",
         w,
         Tolerance::solver(b.rtol),
     );
     let face_order = Finding::from_order(
-        "face figure's rate Omega0 (1 - cos alpha0) vanishing as alpha0 -> 0",
+        "face figure's rate $\\Omega_0 (1 - \\cos \\alpha_0)$ vanishing as $\\alpha_0 \\to  0$",
         &alphas,
         &face,
         1.5,
     );
     let total_order = Finding::from_order(
-        "total angular velocity |omega| vanishing as alpha0 -> 0",
+        "total angular velocity $|\\omega|$ vanishing as $\\alpha_0 \\to  0$",
         &alphas,
         &total,
         0.5,
     );
     let mut f = worse(worse(face_order, total_order), values);
-    f.at = format!("{}; k = 1/4, b = 0", f.at);
+    f.at = format!("{}; $k = 1/4$, $b = 0$", f.at);
     f
 }
 
@@ -344,13 +351,13 @@ pub(super) fn slip_when_b_large(b: &Bench) -> Finding {
         errors.push(e);
     }
     let mut f = Finding::from_order(
-        "required friction coefficient at |b| = a k sin(alpha0) against 1 (eq 42's threshold)",
+        "required friction coefficient at $|b| = a k \\sin(\\alpha_0)$ against 1 (eq 42's threshold)",
         &alphas,
         &errors,
         1.0,
     );
     f.at = format!(
-        "{}; at 45 deg, k = 1/4 the exact requirement is {:.3}",
+        "{}; at 45 deg, $k = 1/4$ the exact requirement is {:.3}",
         f.at,
         mu_required(0.25, PI / 4.0, 0.25 * (PI / 4.0).sin())
     );
@@ -378,10 +385,10 @@ pub(super) fn negative_b_friction_angle(b: &Bench) -> Finding {
         b,
         "negative-b-friction-angle",
         Method::Derivation,
-        "lowest tilt meeting eq 43 with mu = 1, k = 1/4 (rad)",
+        "lowest tilt meeting eq 43 with $\\mu = 1$, $k = 1/4$ (rad)",
         edge,
         format!(
-            "edge {:.4} rad = {:.2} deg; the claimed pi/3 implies mu = {:.3}",
+            "edge {:.4} rad = {:.2} deg; the claimed $\\pi/3$ implies $\\mu = {:.3}$",
             edge,
             edge.to_degrees(),
             eq43(FRAC_PI_3)

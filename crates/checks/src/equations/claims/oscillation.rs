@@ -32,13 +32,18 @@ pub(super) fn bracket_negative_angle(b: &Bench) -> Finding {
     };
     let others: Vec<String> = [0.1, 0.5, 0.9]
         .iter()
-        .map(|&k| format!("k={k}: {:.2} deg", bracket_root_linearized(k).to_degrees()))
+        .map(|&k| {
+            format!(
+                "$k = {k}$: {:.2} deg",
+                bracket_root_linearized(k).to_degrees()
+            )
+        })
         .collect();
     stated(
         b,
         "bracket-negative-angle",
         Method::Linearization,
-        "tilt where eq 54's b-coefficient turns negative, k = 1/4 (deg)",
+        "tilt where eq 54's b-coefficient turns negative, $k = 1/4$ (deg)",
         root.to_degrees(),
         format!(
             "linearization {:.4} deg, eq 54's printed bracket {}; {}",
@@ -91,11 +96,11 @@ pub(super) fn positive_b_unstable_large_tilt(b: &Bench) -> Finding {
         b,
         "positive-b-unstable-large-tilt",
         Method::Linearization,
-        "lowest tilt at which some b > 0 is unstable, k = 1/4 (deg), against the paper's 60",
+        "lowest tilt at which some $b > 0$ is unstable, $k = 1/4$ (deg), against the paper's 60",
         onset.to_degrees(),
         format!(
-            "onset {:.3} deg at b = {:.3} a; unstable band at 80 deg: b/a in ({:.3}, {:.3}); \
-             max Re(lambda) {:.3e} inside, {:.1e} at 65 deg, {:.1e} at 80 deg above the band",
+            "onset {:.3} deg at $b = {:.3} a$; unstable band at 80 deg: $b/a$ in ({:.3}, {:.3}); \
+             max Re$(\\lambda) {:.3e}$ inside, {:.1e} at 65 deg, {:.1e} at 80 deg above the band",
             onset.to_degrees(),
             beta_at_onset,
             b1,
@@ -163,14 +168,14 @@ pub(super) fn negative_b_always_stable(b: &Bench) -> Finding {
                     f64::NAN
                 };
                 w.add(claimed, lin, lin.abs(), || {
-                    format!("k = {k}, alpha0 = {al}, b = {beta:.4} a")
+                    format!("$k = {k}$, $\\alpha_0 = {al}$, $b = {beta:.4} a$")
                 });
             }
         }
     }
     let mut f = Finding::from_worst(
         Method::Linearization,
-        "(k+1) varpi^2 / Omega0^2 for b < 0: linearized eqs 23-25 against eq 54, and its sign",
+        "$(k+1) \\varpi^{2} / \\Omega_0^{2}$ for $b < 0$: linearized eqs 23-25 against eq 54, and its sign",
         w,
         linearization_tolerance(),
     )
@@ -188,7 +193,7 @@ pub(super) fn negative_b_always_stable(b: &Bench) -> Finding {
 pub(super) fn linearization_tolerance() -> Tolerance {
     Tolerance {
         value: 1e-10,
-        rule: "linearization: exact Jacobian, varpi^2 = -tr(J^2)/2 cancels up to ~1e5 ulp: 1e-10 relative".into(),
+        rule: "linearization: exact Jacobian, $\\varpi^{2} = -\\operatorname{tr}(J^{2})/2$ cancels up to ~1e5 ulp: 1e-10 relative".into(),
     }
 }
 
@@ -207,9 +212,9 @@ pub(super) fn ratio_uniform_disk_077(b: &Bench) -> Finding {
         b,
         "ratio-uniform-disk-077",
         Method::Linearization,
-        "varpi / Omega0 at b = 0, alpha0 -> 0, k = 1/4 (printed 0.77)",
+        "$\\varpi / \\Omega_0$ at $b = 0$, $\\alpha_0 \\to  0$, $k = 1/4$ (printed 0.77)",
         limit,
-        "linearization at alpha0 = 1e-5".into(),
+        "linearization at $\\alpha_0 = 1e-5$".into(),
     );
     let alphas = [1e-1, 3e-2, 1e-2, 3e-3, 1e-3];
     let errors: Vec<f64> = alphas
@@ -217,7 +222,7 @@ pub(super) fn ratio_uniform_disk_077(b: &Bench) -> Finding {
         .map(|&al| (ratio_b0(k, al) - b.claim((0.6f64).sqrt())).abs())
         .collect();
     let order = Finding::from_order(
-        "varpi / Omega0 at b = 0 approaching sqrt(3/5) (k = 1/4)",
+        "$\\varpi / \\Omega_0$ at $b = 0$ approaching $\\sqrt{3/5} (k = 1/4)$",
         &alphas,
         &errors,
         2.0,
@@ -234,7 +239,7 @@ pub(super) fn ratio_hoop_one(b: &Bench) -> Finding {
         .map(|&al| (ratio_b0(0.5, al) - b.claim(1.0)).abs())
         .collect();
     Finding::from_order(
-        "varpi / Omega0 at b = 0 approaching 1 for a hoop (k = 1/2)",
+        "$\\varpi / \\Omega_0$ at $b = 0$ approaching 1 for a hoop $(k = 1/2)$",
         &alphas,
         &errors,
         2.0,
@@ -260,18 +265,21 @@ pub(super) fn b_of_order_a_alpha(b: &Bench) -> Finding {
             b,
             "b-of-order-a-alpha",
             Method::Derivation,
-            "largest b / (a alpha0) rolling without slipping at mu = 1, k = 1/4, against the assumed 1",
+            "largest $b / (a \\alpha_0)$ rolling without slipping at $\\mu = 1$, $k = 1/4$, against the assumed 1",
             ratio,
             format!(
-                "alpha0 = {al}: {ratio:.5} (k = 1/4), {:.5} (k = 1/2); required mu at b = alpha0 a: {:.4}",
+                "$\\alpha_0 = {al}$: ${ratio:.5} (k = 1/4)$, ${:.5} (k = 1/2)$; required $\\mu$ at $b = \\alpha_0 a$: {:.4}",
                 largest(0.5, al),
                 mu_required(0.25, al, al)
             ),
         )
     };
     let points = [
-        ("alpha0 -> 0 (1e-4 rad)", 1e-4),
-        ("alpha0 = 0.2 rad, where sec. 7 uses b = alpha0 a", 0.2),
+        ("$\\alpha_0 \\to  0$ (1e-4 rad)", 1e-4),
+        (
+            "$\\alpha_0 = 0.2$ rad, where sec. 7 uses $b = \\alpha_0 a$",
+            0.2,
+        ),
     ];
     let judged: Vec<(&str, Finding)> = points
         .iter()
@@ -297,13 +305,13 @@ pub(super) fn coincidence_eq58(b: &Bench) -> Finding {
     let (lin, eq54) = coincidence_tilts(b);
     single(
         Method::Derivation,
-        "tilt where eq 58 gives varpi = Omega0 (rad)",
+        "tilt where eq 58 gives $\\varpi = \\Omega_0$ (rad)",
         b.claim(printed(b, "coincidence-eq58")),
         root,
         Tolerance::bisection(WIDTH),
         format!(
             "bisection on eq 58; the tool's finding, not the paper's claim: the full theory \
-             (linearized eqs 23-25 with b = alpha0 a, k = 1/4) puts the coincidence at {lin:.6} \
+             (linearized eqs 23-25 with $b = \\alpha_0 a$, $k = 1/4$) puts the coincidence at {lin:.6} \
              rad ({:.2} deg), eq 54 at {eq54:.6} rad",
             lin.to_degrees()
         ),
@@ -337,7 +345,7 @@ pub(super) fn rattling_needs_more_friction(b: &Bench) -> Finding {
     let model = Rolling::<4>::new(disk, Extras::default(), None);
     let (alpha0, beta) = (0.3, 0.05);
     let Ok(m0) = steady_motion(&disk, alpha0, beta) else {
-        panic!("the steady motion at alpha0 = 0.3, b = 0.05 a exists (eq 30)")
+        panic!("the steady motion at $\\alpha_0 = 0.3$, $b = 0.05 a$ exists (eq 30)")
     };
     let peak = |push: f64| {
         let mut m = m0;
@@ -362,12 +370,12 @@ pub(super) fn rattling_needs_more_friction(b: &Bench) -> Finding {
     let mut f = single(
         Method::Integration,
         "friction coefficient needed to roll at zero oscillation, against the steady motion's \
-         (k = 1/4, alpha0 = 0.3, b = 0.05 a)",
+         ($k = 1/4$, $\\alpha_0 = 0.3$, $b = 0.05 a$)",
         b.claim(steady),
         peaks[0],
         Tolerance::solver(b.rtol),
         format!(
-            "peak |F_h| / F_z after kicks of alpha_dot by {} sqrt(g/a): {} ({})",
+            "peak $|F_h| / F_z$ after kicks of $\\dot\\alpha$ by {} $\\sqrt{{g/a}}$: {} ({})",
             pushes
                 .iter()
                 .map(|p| format!("{p}"))
@@ -403,7 +411,7 @@ pub(super) fn summary_nutation_10_15_deg(b: &Bench) -> Finding {
         b,
         "summary-nutation-10-15-deg",
         Method::Linearization,
-        "tilt where varpi = Omega0 with b = alpha0 a, k = 1/4 (deg)",
+        "tilt where $\\varpi = \\Omega_0$ with $b = \\alpha_0 a$, $k = 1/4$ (deg)",
         lin.to_degrees(),
         format!(
             "linearization {:.2} deg, eq 54 {:.2} deg; eq 58 gives 0.2 rad = {:.2} deg",

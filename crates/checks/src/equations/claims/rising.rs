@@ -26,11 +26,11 @@ pub(super) fn rising_needs_slip(b: &Bench) -> Finding {
     let exact = mid(frictionless_vertical_threshold(k)) * k.sqrt();
     let mut f = single(
         Method::Linearization,
-        "the launch's premise, eq 65's sleeping threshold without friction (in sqrt(g/(a k)), k = 1/4)",
+        "the launch's premise, eq 65's sleeping threshold without friction (in $\\sqrt{g/(a k)}$, $k = 1/4$)",
         coefficient,
         exact,
         Tolerance::bisection(WIDTH),
-        "bisection on varpi^2 of the linearized eqs 61-62 at alpha = pi/2".into(),
+        "bisection on $\\varpi^{2}$ of the linearized eqs 61-62 at $\\alpha = \\pi/2$".into(),
     );
     let Ok(disk) = Disk::new(0.0375, k, 0.4, 9.81) else {
         unreachable!("the toy disk is valid")
@@ -51,7 +51,7 @@ pub(super) fn rising_needs_slip(b: &Bench) -> Finding {
             "no friction" => format!("no friction: {:+.2} deg", c.rise_deg),
             "rolling" => format!("rolling: {:+.2} deg (no slip)", c.rise_deg),
             _ => format!(
-                "mu {}: {:+.2} deg (slid {:.3} s)",
+                "$\\mu {}$: {:+.2} deg (slid {:.3} s)",
                 c.mu, c.rise_deg, c.slip_time
             ),
         })
@@ -61,8 +61,8 @@ pub(super) fn rising_needs_slip(b: &Bench) -> Finding {
     let without = study.largest_rise_without_slip();
     let holds = with > RISEN && without < NONE;
     f.at = format!(
-        "{}; launch at {:.0} deg turning at {LAUNCH_OVER_THRESHOLD} x the threshold about the \
-         vertical, contact sliding at {:.3} m/s; lasting gain of tilt over {} s (lowest tilt in the \
+        "{}; launch at {:.0} deg turning at {LAUNCH_OVER_THRESHOLD} × the threshold about the \
+         vertical, contact sliding at ${:.3} m/$s; lasting gain of tilt over {} s (lowest tilt in the \
          second half minus the launch tilt): {cases}. {}",
         f.at,
         LAUNCH_TILT.to_degrees(),
@@ -70,7 +70,7 @@ pub(super) fn rising_needs_slip(b: &Bench) -> Finding {
         studies::sliding::rising::DURATION,
         if holds {
             format!(
-                "Rises only when it slides (by up to {with:.2} deg); with mu >= 0.3 the slip stops \
+                "Rises only when it slides (by up to {with:.2} deg); with $\\mu \\geq  0.3$ the slip stops \
                  within milliseconds and the disk ends lower"
             )
         } else {

@@ -39,12 +39,12 @@ pub(super) fn eq73_second_approximation_sign(b: &Bench) -> Finding {
     let c = disk.a * add / disk.g + 1.5;
     single(
         Method::Derivation,
-        "coefficient of m a g alpha_dot in eq 73's first form (eq 72's energy) at F_z = 0",
+        "coefficient of $m a g \\dot\\alpha$ in eq 73's first form (eq 72's energy) at $F_z = 0$",
         b.claim(printed(b, "eq73-second-approximation-sign")),
         c,
         Tolerance::bisection(WIDTH),
         format!(
-            "F_z = 0 at alpha_ddot = {add:.6} g/a (alpha = 1e-4); with eq 26's energy the coefficient is {:.4}",
+            "$F_z = 0$ at $\\ddot\\alpha = {add:.6} g/a (\\alpha = 1e-4)$; with eq 26's energy the coefficient is {:.4}",
             1.5 + (disk.k + 1.0) * add
         ),
     )
@@ -69,11 +69,11 @@ pub(super) fn drag_exponent(n: f64) -> f64 {
 pub(super) fn drag_exponent_linear_force(b: &Bench) -> Finding {
     single(
         Method::Derivation,
-        "beta for a drag force proportional to the contact speed",
+        "$\\beta$ for a drag force proportional to the contact speed",
         b.claim(printed(b, "drag-exponent-linear-force")),
         drag_exponent(1.0),
         Tolerance::roundoff(),
-        "log-log slope of P = F v against Omega".into(),
+        "log-log slope of $P = F v$ against $\\Omega$".into(),
     )
 }
 
@@ -81,11 +81,11 @@ pub(super) fn drag_exponent_linear_force(b: &Bench) -> Finding {
 pub(super) fn drag_exponent_quadratic_air(b: &Bench) -> Finding {
     single(
         Method::Derivation,
-        "beta for a drag force proportional to the speed squared",
+        "$\\beta$ for a drag force proportional to the speed squared",
         b.claim(printed(b, "drag-exponent-quadratic-air")),
         drag_exponent(2.0),
         Tolerance::roundoff(),
-        "log-log slope of P = F v against Omega".into(),
+        "log-log slope of $P = F v$ against $\\Omega$".into(),
     )
 }
 
@@ -106,11 +106,11 @@ pub(super) fn drag_exponent_moffatt(b: &Bench) -> Finding {
     }
     single(
         Method::Derivation,
-        "beta of Moffatt's air-film model (exponent of P against Omega)",
+        "$\\beta$ of Moffatt's air-film model (exponent of P against $\\Omega$)",
         b.claim(printed(b, "drag-exponent-moffatt")),
         log_log_slope(&omegas, &powers),
         Tolerance::roundoff(),
-        "eq 82 differentiated exactly, Omega from eq 31".into(),
+        "eq 82 differentiated exactly, $\\Omega$ from eq 31".into(),
     )
 }
 
@@ -132,7 +132,7 @@ pub(super) fn finite_time_singularity(b: &Bench) -> Finding {
         let sol = solve(
             Problem::new(&model, 0.0, State::<1>::new(alpha0), 2.0 * span)
                 .sampled(span / 2000.0)
-                .stop_when(Event::new("alpha tiny", move |y: &State<1>| y[0] - end)),
+                .stop_when(Event::new("$\\alpha$ tiny", move |y: &State<1>| y[0] - end)),
             &b.settings(),
         )
         .expect("valid settings");
@@ -158,18 +158,18 @@ pub(super) fn finite_time_singularity(b: &Bench) -> Finding {
                 b.claim(printed(b, "finite-time-singularity")),
                 root,
                 2.0,
-                || format!("from beta = {} and {}", betas[i], betas[j]),
+                || format!("from $\\beta = {}$ and {}", betas[i], betas[j]),
             );
         }
     }
     let mut f = Finding::from_worst(
         Method::Integration,
-        "beta below which eq 76 no longer reaches alpha = 0 in finite time",
+        "$\\beta$ below which eq 76 no longer reaches $\\alpha = 0$ in finite time",
         w,
         Tolerance::solver(b.rtol),
     );
     f.at = format!(
-        "{}; fitted exponents p = {:?} (2/(beta+2) expected)",
+        "{}; fitted exponents $p = {:?}$ ($2/(\\beta+2)$ expected)",
         f.at,
         p.iter().map(|x| format!("{x:.6}")).collect::<Vec<_>>()
     );
@@ -187,19 +187,19 @@ pub(super) fn air_viscosity(b: &Bench) -> Finding {
     // it) against a dynamic viscosity's, M L^-1 T^-1.
     let as_printed = single(
         Method::Derivation,
-        "power of the second in the printed unit g-cm^-1-s (g s/cm) against a viscosity's \
+        "power of the second in the printed unit g-cm$^{-1}$-s (g s/cm) against a viscosity's \
          (g/(cm s))",
         b.claim(1.0),
         -1.0,
         Tolerance::roundoff(),
-        "the printed g-cm^-1-s has s to the power +1; a viscosity, force per area over shear \
-         rate, has s^-1"
+        "the printed g-cm$^{-1}$-s has s to the power +1; a viscosity, force per area over \
+         shear rate, has $\\mathrm{s}^{-1}$"
             .into(),
     )
     .in_unit("1");
     let as_meant = air_viscosity_as_meant(b);
     let headline = Headline::new(
-        "viscosity of air in g/(cm s), the unit meant (the unit printed, g-cm^-1-s, is g s/cm: \
+        "viscosity of air in g/(cm s), the unit meant (the unit printed, g-cm$^{-1}$-s, is g s/cm: \
          s to the power +1 where a viscosity has -1)",
         as_meant.claimed,
         "printed",
@@ -227,7 +227,7 @@ fn air_viscosity_as_meant(b: &Bench) -> Finding {
     }
     Finding::from_worst(
         Method::Derivation,
-        "viscosity of air near room temperature, T = 15, 20 and 25 C (g/(cm s))",
+        "viscosity of air near room temperature, $T$ = 15, 20 and 25 °C (g/(cm s))",
         w,
         printed_tolerance(2),
     )
@@ -242,13 +242,13 @@ pub(super) fn omega_units_hz_vs_rad_per_s(b: &Bench) -> Finding {
     let period = printed(b, "one-period-remaining-time");
     let period_if_hz = 1.0 / omega;
     let at = format!(
-        "as rad/s: 2 pi / {omega} = {:.5} s, matching the paper",
+        "as rad/s: $2 \\pi / {omega} = {:.5}$ s, matching the paper",
         2.0 * PI / omega
     );
     let as_meant = printed_precision(
         b,
         Method::Derivation,
-        &format!("period 2 pi / Omega with Omega = {omega} rad/s, against the printed {period} s"),
+        &format!("period $2 \\pi / \\Omega$ with $\\Omega = {omega}$ rad/s, against the printed {period} s"),
         2.0 * PI / omega,
         period,
         2,
@@ -266,7 +266,7 @@ pub(super) fn omega_units_hz_vs_rad_per_s(b: &Bench) -> Finding {
     unit_misprint(as_printed, as_meant)
         .in_unit("s")
         .with_headline(Headline::new(
-            format!("period 1/Omega if the printed {omega} were in Hz"),
+            format!("period $1/\\Omega$ if the printed {omega} were in Hz"),
             period,
             "printed",
             period_if_hz,
@@ -280,7 +280,7 @@ pub(super) fn omega_units_hz_vs_rad_per_s(b: &Bench) -> Finding {
 fn fit_named(b: &Bench) -> String {
     let beta = b.paper.fit.beta;
     format!(
-        "eq 79 with the paper's fit: beta = {beta}, C = {:.4e} s^-{}",
+        "eq 79 with the paper's fit: $\\beta = {beta}$, $C = {:.4e} \\mathrm{{s}}^{{-{}}}$",
         c_fit(b),
         beta + 1.0
     )
@@ -297,7 +297,7 @@ pub(super) fn one_period_remaining_omega(b: &Bench) -> Finding {
         "precession rate with one period remaining (rad/s; printed as Hz)",
         om,
         format!(
-            "bisection gives {om:.3}; closed form (C/2pi)^(1/3) = {:.3}; {}",
+            "bisection gives {om:.3}; closed form $(C/2\\pi)^{{1/3}} = {:.3}$; {}",
             (c_fit(b) / (2.0 * PI)).cbrt(),
             fit_named(b)
         ),
@@ -313,7 +313,7 @@ pub(super) fn one_period_remaining_time(b: &Bench) -> Finding {
         Method::Derivation,
         "the last remaining period (s)",
         period,
-        format!("2 pi over the bisected rate; {}", fit_named(b)),
+        format!("$2 \\pi$ over the bisected rate; {}", fit_named(b)),
     )
 }
 
@@ -330,10 +330,10 @@ pub(super) fn t0_after_last_peak(b: &Bench) -> Finding {
         b,
         "t0-after-last-peak",
         Method::Derivation,
-        "time left before t0 at the last analysed peak, Omega = 680 rad/s (s)",
+        "time left before $t_0$ at the last analysed peak, $\\Omega = 680$ rad/s (s)",
         remaining,
         format!(
-            "eq 79 reaches 680 rad/s {remaining:.5} s before t0 (closed form C / 680^4 = {:.5} s); {}",
+            "eq 79 reaches 680 rad/s {remaining:.5} s before $t_0$ (closed form $C / 680^{{4}} = {:.5}$ s); {}",
             c / 680f64.powi(4),
             fit_named(b)
         ),
@@ -349,10 +349,10 @@ pub(super) fn contact_loss_time(b: &Bench) -> Finding {
         b,
         "contact-loss-time",
         Method::Derivation,
-        "t0 - t at contact loss, beta = 2, k = 1/4 (s)",
+        "$t_0 - t$ at contact loss, $\\beta = 2$, $k = 1/4$ (s)",
         tau,
         format!(
-            "bisection {tau:.6e} s; C^(-1/3) = {:.6e} s; {}",
+            "bisection {tau:.6e} s; $C^{{-1/3}} = {:.6e}$ s; {}",
             c_fit(b).powf(-1.0 / 3.0),
             fit_named(b)
         ),
@@ -369,7 +369,7 @@ pub(super) fn contact_loss_omega(b: &Bench) -> Finding {
         "precession rate at contact loss (rad/s; printed as Hz)",
         om,
         format!(
-            "eq 79 at the bisected time: {om:.4}; C^(1/3) = {:.4}; k = 1/4, {}",
+            "eq 79 at the bisected time: {om:.4}; $C^{{1/3}} = {:.4}$; $k = 1/4$, {}",
             c_fit(b).cbrt(),
             fit_named(b)
         ),
@@ -442,7 +442,7 @@ pub(super) fn larger_t0_lowers_beta(b: &Bench) -> Finding {
                 (lo.min(c.1), hi.max(c.1))
             });
             let text = format!(
-                "{} cycles of the analysis's window, Omega {lo:.0} to {hi:.0} rad/s",
+                "{} cycles of the analysis's window, $\\Omega {lo:.0}$ to {hi:.0} rad/s",
                 cycles.len()
             );
             (betas, text)
@@ -455,13 +455,13 @@ pub(super) fn larger_t0_lowers_beta(b: &Bench) -> Finding {
     let falls = betas.windows(2).all(|p| p[1] < p[0]) && betas.iter().all(|x| x.is_finite());
     let mut f = single(
         Method::Derivation,
-        "apparent beta of a synthetic light record refitted with a later t0",
+        "apparent $\\beta$ of a synthetic light record refitted with a later $t_0$",
         b.claim(beta),
         exact_beta,
         Tolerance::roundoff(),
         format!(
-            "synthetic record ({record}): apparent beta at t0' - t0 = 0, 5, 10 ms: {}; \
-             on exact eq 79 values at t0' = t0: {exact_beta:.6}",
+            "synthetic record ({record}): apparent $\\beta$ at $t_0' - t_0 = 0$, 5, 10 ms: {}; \
+             on exact eq 79 values at $t_0' = t_0$: {exact_beta:.6}",
             betas
                 .iter()
                 .map(|x| format!("{x:.3}"))
@@ -503,8 +503,8 @@ pub(super) fn summary_contact_lost_few_degrees(b: &Bench) -> Finding {
         "largest tilt at contact loss for radii 5-50 mm (deg), against 'a few degrees'",
         largest,
         format!(
-            "{largest:.3} deg at a = 5 mm; {:.4} deg at a = 37.5 mm (C scaled as 1/a at the \
-             toy's epsilon); 1 deg needs a = {:.2e} mm",
+            "{largest:.3} deg at $a = 5$ mm; {:.4} deg at $a = 37.5$ mm (C scaled as $1/a$ at the \
+             toy's $\\epsilon$); 1 deg needs $a = {:.2e}$ mm",
             tilt(toy),
             // tilt is proportional to a^(-(beta - 1)/(beta + 1)).
             1e3 * toy * (tilt(toy) / 1.0).powf((beta + 1.0) / (beta - 1.0))

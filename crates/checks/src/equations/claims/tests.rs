@@ -293,8 +293,8 @@ fn about_has_one_reading() {
 }
 
 /// "Falls to below about 60 degrees" read as what the fall does: rolling without slip no start
-/// settles into a lower rolling; on the smoothest table (mu = 0.2) every start slides and settles
-/// below 60 deg; on the roughest (mu = 1) none slides. The verdict depends on whether the contact
+/// settles into a lower rolling; on the smoothest table ($\mu = 0.2$) every start slides and settles
+/// below 60 deg; on the roughest ($\mu = 1$) none slides. The verdict depends on whether the contact
 /// can slide, the onset's failure kept as the verdict as read.
 #[test]
 fn the_fall_depends_on_whether_the_contact_can_slide() {
@@ -315,11 +315,11 @@ fn the_fall_depends_on_whether_the_contact_can_slide() {
     let rolling = table("rolling without slip");
     assert_eq!(rolling.verdict, Verdict::Fails);
     assert!(rolling.reference > 63.0, "{rolling:?}");
-    let smooth = table("the sliding model on a table with mu = 0.2");
+    let smooth = table(r"the sliding model on a table with $\mu = 0.2$");
     assert_eq!(smooth.verdict, Verdict::Holds);
     assert!(smooth.reference < 60.0, "{smooth:?}");
     assert_eq!(
-        table("the sliding model on a table with mu = 1").verdict,
+        table(r"the sliding model on a table with $\mu = 1$").verdict,
         Verdict::Fails
     );
 }

@@ -51,7 +51,7 @@ pub fn eq85(b: &Bench) -> Finding {
                 let reference = *first.get_or_insert(ratio);
                 worst.add(b.claim(ratio), reference, reference.abs(), || {
                     format!(
-                        "k = {k}, beta = {beta}, alpha = {alpha:.3e}: (dOmega/dt) / Omega^(beta+3) = {ratio:.6e} against {reference:.6e} at alpha = 0.2"
+                        "$k = {k}$, $\\beta = {beta}$, $\\alpha = {alpha:.3e}$: $(d\\Omega/dt) / \\Omega^{{\\beta+3}} = {ratio:.6e}$ against {reference:.6e} at $\\alpha = 0.2$"
                     )
                 });
             }

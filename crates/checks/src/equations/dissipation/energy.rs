@@ -55,21 +55,21 @@ pub(super) fn eq72_at(b: &Bench, c0: f64) -> Finding {
                 let printed = last_side(eq, &bind);
                 headline = Some(Headline::new(
                     format!(
-                        "U / (m g a alpha) at alpha_dot^2 = {c0} g alpha / a (eq 72's last form)"
+                        "$U / (m g a \\alpha)$ at $\\dot\\alpha^{{2}} = {c0} g \\alpha / a$ (eq 72's last form)"
                     ),
                     printed / unit,
                     "implied",
                     reference / unit,
                     "1",
-                    format!("uniform disk (k = 1/4), alpha = {alpha}, b = 0"),
+                    format!("uniform disk $(k = 1/4)$, $\\alpha = {alpha}$, $b = 0$"),
                 ));
             }
         }
     }
     let f = Finding::from_order(
         format!(
-            "every printed form of U in eq 72 against the exact energy at b = 0 (Omega^2 = g/ak sin alpha, omega_1 = 0), \
-             alpha_dot^2 = {c0} g alpha / a, relative error against alpha"
+            "every printed form of U in eq 72 against the exact energy at $b = 0$ ($\\Omega^{{2}} = g/a k \\sin \\alpha$, $\\omega_1 = 0$), \
+             $\\dot\\alpha^{{2}} = {c0} g \\alpha / a$, relative error against $\\alpha$"
         ),
         &SMALL_ALPHAS,
         &errors,
@@ -77,7 +77,10 @@ pub(super) fn eq72_at(b: &Bench, c0: f64) -> Finding {
     );
     let alternatives = runs.alternatives(&SMALL_ALPHAS, f.claimed);
     let mut f = naming_the_worst_side(f, &worst_form, headline);
-    f.at = format!("{}; each error the worst over k = 1/4 and 1/2, b = 0", f.at);
+    f.at = format!(
+        "{}; each error the worst over $k = 1/4$ and 1/2, $b = 0$",
+        f.at
+    );
     f.with_robustness(alternatives)
 }
 
@@ -102,7 +105,7 @@ pub fn eq72(b: &Bench) -> Finding {
     let slow = eq72_at(b, 0.01);
     eq72_at(b, 1.0).with_robustness(vec![crate::robustness::Alternative::new(
         "the point of evaluation",
-        "alpha_dot^2 = 0.01 g alpha / a, a slow fall, in place of g alpha / a (k = 0.25, 0.5)",
+        "$\\dot\\alpha^{2} = 0.01 g \\alpha / a$, a slow fall, in place of $g \\alpha / a$ ($k = 0.25$, 0.5)",
         slow.reference,
         slow.as_read(),
     )])
@@ -171,14 +174,14 @@ pub fn eq73(b: &Bench) -> Finding {
                     .and_then(|i| eq.scalar(&sides[i], &bind).ok())
                     .unwrap_or(f64::NAN);
                 headline = Some(Headline::new(
-                    "P / (m a g alpha_dot) where F_z = 0 (eq 73's last form), against the exact \
-                     rate of the full energy, 1/2 - k as alpha -> 0",
+                    "$P / (m a g \\dot\\alpha)$ where $F_z = 0$ (eq 73's last form), against the exact \
+                     rate of the full energy, $1/2 - k$ as $\\alpha \\to  0$",
                     printed / coefficient,
                     "printed",
                     reference / coefficient,
                     "1",
                     format!(
-                        "uniform disk (k = 1/4), alpha = {alpha}, b = 0; eq 73's own first form \
+                        "uniform disk $(k = 1/4)$, $\\alpha = {alpha}$, $b = 0$; eq 73's own first form \
                          (eq 72's energy) gives {:.4} there",
                         first / coefficient
                     ),
@@ -187,16 +190,16 @@ pub fn eq73(b: &Bench) -> Finding {
         }
     }
     let f = Finding::from_order(
-        "every printed form of P in eq 73 against the exact dE/dt where F_z = 0 (b = 0, adiabatic precession), \
-         error in units of m a g |alpha_dot|, against alpha",
+        "every printed form of P in eq 73 against the exact $dE/dt$ where $F_z = 0$ ($b = 0$, adiabatic precession), \
+         error in units of $m a g |\\dot\\alpha|$, against $\\alpha$",
         &SMALL_ALPHAS,
         &errors,
         b.paper.equation(73).entry.claimed_order.unwrap_or(2.0),
     );
     let mut f = naming_the_worst_side(f, &worst_form, headline);
     f.at = format!(
-        "{}; each error is the larger of k = 1/4 and k = 1/2 at its alpha, at the smallest alpha \
-         that of k = {} (2 + k in units of m a g |alpha_dot|)",
+        "{}; each error is the larger of $k = 1/4$ and $k = 1/2$ at its $\\alpha$, at the smallest $\\alpha$ \
+         that of $k = {}$ (2 + k in units of $m a g |\\dot\\alpha|$)",
         f.at,
         worst_k.last().copied().unwrap_or(f64::NAN)
     );
@@ -212,7 +215,7 @@ fn naming_the_worst_side(
     headline: Option<Headline>,
 ) -> Finding {
     f.at = format!(
-        "{}; worst printed form at the smallest alpha: side {}",
+        "{}; worst printed form at the smallest $\\alpha$: side {}",
         f.at,
         worst_form.last().copied().unwrap_or(0)
     );

@@ -77,15 +77,15 @@ pub(super) fn lift_off_check(b: &Bench, n: u32) -> Finding {
             .scalar("t_max", -tau);
         let scale = if n == 80 { om } else { tau };
         printed_relations(b, n, &bind, scale, &mut worst, &|| {
-            format!("k = {k}, beta = {beta}, C = {c:e}")
+            format!("$k = {k}$, $\\beta = {beta}$, $C = {c:e}$")
         });
     }
     Finding::from_worst(
         Method::Threshold,
         if n == 80 {
-            "Omega_max of eq 80 against eq 79 as printed at d^2(1/Omega^2)/dt^2 = -k (bisection)"
+            "$\\Omega_{\\mathrm{max}}$ of eq 80 against eq 79 as printed at $d^{2}(1/\\Omega^{2})/dt^{2} = -k$ (bisection)"
         } else {
-            "t0 - t_max of eq 81 against the time where eq 79 as printed gives d^2(1/Omega^2)/dt^2 = -k (bisection)"
+            "$t_0 - t_{\\mathrm{max}}$ of eq 81 against the time where eq 79 as printed gives $d^{2}(1/\\Omega^{2})/dt^{2} = -k$ (bisection)"
         },
         worst,
         Tolerance::bisection(WIDTH))

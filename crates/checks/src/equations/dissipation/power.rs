@@ -63,7 +63,7 @@ pub(super) fn dissipation(b: &Bench, n: u32, betas: &[f64]) -> Finding {
                         .scalar("P", rate);
                     printed_relations(b, n, &bind, terms, &mut worst, &|| {
                         format!(
-                            "k = {k}, beta = {beta}, start alpha0 = {alpha0}, b = {bb}, at alpha = {:.4}",
+                            "$k = {k}$, $\\beta = {beta}$, start $\\alpha_0 = {alpha0}$, $b = {bb}$, at $\\alpha = {:.4}$",
                             y[0]
                         )
                     });
@@ -73,7 +73,7 @@ pub(super) fn dissipation(b: &Bench, n: u32, betas: &[f64]) -> Finding {
     }
     Finding::definition(
         Method::Integration,
-        "every printed form of the power against dE/dt (exact gradient of the energy . right-hand side) along the dissipative rolling model",
+        "every printed form of the power against $dE/dt$ (exact gradient of the energy . right-hand side) along the dissipative rolling model",
         worst,
         Tolerance::roundoff())
 }
@@ -143,17 +143,17 @@ pub fn eq76(b: &Bench) -> Finding {
                 )
                 .unwrap_or(f64::NAN);
             headline = Some(Headline::new(
-                                "alpha_dot / (epsilon Omega^beta), the rate of the tilt over the power-law rate (measured: mean over 20 precession periods)",
+                                "$\\dot\\alpha / (\\epsilon \\Omega^{\\beta})$, the rate of the tilt over the power-law rate (measured: mean over 20 precession periods)",
                                 at_start / (r.epsilon * om0.powf(beta)),
                                 "printed",
                                 measured / printed,
                                 "1",
-                                format!("uniform disk (k = 1/4), beta = 2, from steady b = 0 motion at alpha0 = {alpha0}, mean over 20 precession periods"),
+                                format!("uniform disk $(k = 1/4)$, $\\beta = 2$, from steady $b = 0$ motion at $\\alpha_0 = {alpha0}$, mean over 20 precession periods"),
                             ));
         }
         if i == alphas.len() - 1 {
             seen = format!(
-                                "mean rate: printed {claimed:.5e}, measured {measured:.5e} rad/s (ratio {:.4}; adiabatic 5/3/cos = {:.4}) at k = {k}, beta = {beta}",
+                                "mean rate: printed {claimed:.5e}, measured {measured:.5e} rad/s (ratio {:.4}; adiabatic $5/3/\\cos = {:.4}$) at $k = {k}$, $\\beta = {beta}$",
                                 claimed / measured,
                                 (2.0 / 5.0) / (2.0 / 3.0 / alpha0.cos()),
                             );
@@ -163,17 +163,17 @@ pub fn eq76(b: &Bench) -> Finding {
     let errors = runs.all(alphas.len());
     let claimed_order = eq.entry.claimed_order.unwrap_or(2.0);
     let mut first = Finding::from_order(
-        "eq 76's first relation: the printed rate of alpha against the mean rate on the full dissipative rolling model, \
-         relative error against alpha0",
+        "eq 76's first relation: the printed rate of $\\alpha$ against the mean rate on the full dissipative rolling model, \
+         relative error against $\\alpha_0$",
         &alphas,
         &errors,
         claimed_order,
     );
     first.at = format!(
-        "{}; {seen}; inherited as the derivation runs: eq 76 takes eq 73's printed 5/2 m a g \
-         alpha_dot as the power of the slowly falling disk, where the adiabatic power is 3/2 m a g \
-         alpha_dot (a rate of -2/3 epsilon Omega^beta / cos alpha); eq 73 corrected alone, to \
-         (1/2 - k) m a g alpha_dot where F_z = 0, would move eq 76 further from the model",
+        "{}; {seen}; inherited as the derivation runs: eq 76 takes eq 73's printed $5/2 m a g$ \
+         $\\dot\\alpha$ as the power of the slowly falling disk, where the adiabatic power is $3/2 m a g$ \
+         $\\dot\\alpha$ (a rate of $-2/3 \\epsilon \\Omega^{{\\beta}} / \\cos \\alpha$); eq 73 corrected alone, to \
+         $(1/2 - k) m a g \\dot\\alpha$ where $F_z = 0$, would move eq 76 further from the model",
         first.at
     );
     first.headline = headline;
@@ -200,7 +200,7 @@ pub fn eq76(b: &Bench) -> Finding {
         }
     }
     let second = Finding::from_order(
-        "eq 76's second relation against its first with the steady precession of the b = 0 disk, relative error against alpha",
+        "eq 76's second relation against its first with the steady precession of the $b = 0$ disk, relative error against $\\alpha$",
         &SMALL_ALPHAS,
         &errors2,
         claimed_order,
@@ -259,17 +259,17 @@ pub fn eq79(b: &Bench) -> Finding {
         if i == alphas.len() - 1 && k == 0.25 && beta == 2.0 {
             let unit = d.g / (r.epsilon * (beta + 2.0) * d.a * k);
             headline = Some(Headline::new(
-                            "C of eq 79 in units of g / (epsilon (beta + 2) a k)",
+                            "C of eq 79 in units of $g / (\\epsilon (\\beta + 2) a k)$",
                             printed / unit,
                             "printed",
                             r.c / unit,
                             "1",
-                            format!("uniform disk (k = 1/4), beta = 2, from steady b = 0 motion at alpha0 = {alpha0}"),
+                            format!("uniform disk $(k = 1/4)$, $\\beta = 2$, from steady $b = 0$ motion at $\\alpha_0 = {alpha0}$"),
                         ));
         }
         if i == alphas.len() - 1 {
             seen = format!(
-                "printed C / measured C = {:.4} at k = {k}, beta = {beta}, alpha0 = {alpha0}",
+                "printed $C /$ measured $C = {:.4}$ at $k = {k}$, $\\beta = {beta}$, $\\alpha_0 = {alpha0}$",
                 printed / r.c
             );
         }
@@ -277,7 +277,7 @@ pub fn eq79(b: &Bench) -> Finding {
     });
     let claimed_order = b.paper.equation(76).entry.claimed_order.unwrap_or(2.0);
     let mut physical = Finding::from_order(
-        "eq 79's C (its second relation) against C = -1/(d/dt Omega^-(beta+2)) on the full dissipative rolling model, relative error against alpha0",
+        "eq 79's C (its second relation) against $C = -1/(d/dt \\Omega^{-(\\beta+2)})$ on the full dissipative rolling model, relative error against $\\alpha_0$",
         &alphas,
         &runs.all(alphas.len()),
         claimed_order,

@@ -50,12 +50,12 @@ pub(super) fn eq59(b: &Bench) -> Finding {
             .scalar("a", a)
             .scalar("alpha", alpha);
         printed_relations(b, 59, &bind, a, &mut worst, &|| {
-            format!("alpha = {alpha:.4}")
+            format!("$\\alpha = {alpha:.4}$")
         });
     }
     Finding::definition(
         Method::Identity,
-        "eq 59 as printed, r_cm bound to the centre's height above the disk's lowest rim point (from the orientation)",
+        "eq 59 as printed, $\\mathbf{r}_{\\mathrm{cm}}$ bound to the centre's height above the disk's lowest rim point (from the orientation)",
         worst,
         Tolerance::roundoff())
 }
@@ -84,7 +84,7 @@ pub(super) fn squared_rate(d: &Disk, m: &Motion) -> f64 {
 
 pub(super) fn describe(k: f64, m: &Motion) -> String {
     format!(
-        "k = {k}, alpha = {:.3}, alpha_dot = {:.3}, Omega = {:.3}, omega_1 = {:.3}",
+        "$k = {k}$, $\\alpha = {:.3}$, $\\dot\\alpha = {:.3}$, $\\Omega = {:.3}$, $\\omega_1 = {:.3}$",
         m.alpha, m.alpha_dot, m.precession, m.spin
     )
 }
@@ -124,7 +124,7 @@ pub(super) fn eq60(b: &Bench) -> Finding {
                 let rates = reference_rates(&d, &s);
                 let bind = state_bindings(&d, &s, rates);
                 let scale = rates[2].abs() + squared_rate(&d, &s);
-                let at = || format!("{} at t = {t:.4} s", describe(k, m));
+                let at = || format!("{} at $t = {t:.4}$ s", describe(k, m));
                 printed_relations(b, 60, &bind, scale, &mut worst, &at);
                 for (r, (spin, prev)) in rels.iter().zip(implied.iter_mut()) {
                     if r.rel.is_inequality() {
@@ -152,7 +152,7 @@ pub(super) fn eq60(b: &Bench) -> Finding {
     }
     Finding::from_worst(
         Method::IndependentModel,
-        "eq 60 as printed at states integrated from the Lagrangian reference (residual with its rate), and the spin it implies against the integrated omega_1(t)",
+        "eq 60 as printed at states integrated from the Lagrangian reference (residual with its rate), and the spin it implies against the integrated $\\omega_1(t)$",
         worst,
         Tolerance::solver(b.rtol))
 }
@@ -241,14 +241,14 @@ pub(super) fn eq63(b: &Bench) -> Finding {
                     .scalar("L_z", lz_geometric(&d, &s))
                     .scalar("L_z_initial", initial);
                 printed_relations(b, 63, &bind, scale, &mut worst, &|| {
-                    format!("{} at t = {t:.4} s", describe(k, &m))
+                    format!("{} at $t = {t:.4}$ s", describe(k, &m))
                 });
             }
         }
     }
     Finding::from_worst(
         Method::Conservation,
-        "eq 63 as printed along frictionless integrations, L_z bound to z . I omega from geometry (now and at the start)",
+        "eq 63 as printed along frictionless integrations, $L_z$ bound to $\\hat{\\mathbf{z}} \\cdot I \\boldsymbol\\omega$ from geometry (now and at the start)",
         worst,
         Tolerance::solver(b.rtol))
 }

@@ -80,16 +80,16 @@ pub(super) fn ansatz(b: &Bench, n: u32, amplitude: fn(f64, f64) -> f64) -> Findi
     let mut f = Finding::from_order(
         format!(
             "residual of eq {n}'s trial form as printed (amplitude from the reference eigenvector, \
-             varpi from its eigenvalue) on frictionless integrations, relative to the amplitude, \
-             against the amplitude epsilon/alpha0"
+             $\\varpi$ from its eigenvalue) on frictionless integrations, relative to the amplitude, \
+             against the amplitude $\\epsilon/\\alpha_0$"
         ),
         &fractions,
         &errors,
         1.0,
     );
     f.at = format!(
-        "{}; each amplitude's error the worst over k = 1/4, 1/2 and alpha0 = 0.3, 0.9, 1.3 \
-         (toy-sized disk, a = 37.5 mm)",
+        "{}; each amplitude's error the worst over $k = 1/4$, 1/2 and $\\alpha_0 = 0.3$, 0.9, 1.3 \
+         (toy-sized disk, $a = 37.5$ mm)",
         f.at
     );
     if f.verdict.passes() {
@@ -140,21 +140,21 @@ pub(super) fn linear_bindings(d: &Disk, alpha0: f64, lin: &Linear) -> Bindings<f
 /// from the reference itself), at $\epsilon$ = 0.3 and -0.05; the ratio must be real.
 pub(super) fn eq68(b: &Bench) -> Finding {
     let worst = sweep_linear(|d, alpha0, lin, worst| {
-        let at = || format!("k = {}, alpha0 = {alpha0}", d.k);
+        let at = || format!("$k = {}$, $\\alpha_0 = {alpha0}$", d.k);
         for eps in [0.3, -0.05] {
             let delta = lin.ratio.re * eps;
             let bind = linear_bindings(d, alpha0, lin)
                 .scalar("epsilon", eps)
                 .scalar("delta", delta);
             printed_relations(b, 68, &bind, delta.abs(), worst, &|| {
-                format!("{}, epsilon = {eps}", at())
+                format!("{}, $\\epsilon = {eps}$", at())
             });
         }
         worst.add(0.0, lin.ratio.im, lin.ratio.re.abs(), at);
     });
     Finding::from_worst(
         Method::Linearization,
-        "eq 68 as printed, delta from the eigenvector of the linearized Lagrangian reference",
+        "eq 68 as printed, $\\delta$ from the eigenvector of the linearized Lagrangian reference",
         worst,
         Tolerance::roundoff(),
     )
@@ -172,7 +172,7 @@ pub(super) fn eq68(b: &Bench) -> Finding {
 pub(super) fn eq69(b: &Bench) -> Finding {
     let worst = sweep_linear(|d, alpha0, lin, worst| {
         let (j_a, j_ad, j_om) = (lin.jac[(1, 0)], lin.jac[(1, 1)], lin.jac[(1, 2)]);
-        let at = || format!("k = {}, alpha0 = {alpha0}", d.k);
+        let at = || format!("$k = {}$, $\\alpha_0 = {alpha0}$", d.k);
         let eps = 0.3;
         let eq = b.paper.equation(69);
         for s in [0.0, 0.5, -0.5] {
@@ -187,14 +187,14 @@ pub(super) fn eq69(b: &Bench) -> Finding {
                 .scalar("varpi", varpi2.sqrt());
             let scale = relation_scale(eq, &bind);
             printed_relations(b, 69, &bind, scale, worst, &|| {
-                format!("{}, delta = {delta:.4}", at())
+                format!("{}, $\\delta = {delta:.4}$", at())
             });
         }
         worst.add_in(0.0, j_ad, j_a.abs().sqrt(), "1/s", at);
     });
     Finding::from_worst(
         Method::Linearization,
-        "eq 69 as printed, varpi from the linear tilt equation of the Lagrangian reference at independent epsilon and delta",
+        "eq 69 as printed, $\\varpi$ from the linear tilt equation of the Lagrangian reference at independent $\\epsilon$ and $\\delta$",
         worst,
         Tolerance::roundoff())
     .in_unit("rad/s^2")
@@ -211,12 +211,12 @@ pub(super) fn eq70(b: &Bench) -> Finding {
         let bind = linear_bindings(d, alpha0, lin).scalar("varpi", lin.varpi);
         let scale = relation_scale(eq, &bind);
         printed_relations(b, 70, &bind, scale, worst, &|| {
-            format!("k = {}, alpha0 = {alpha0}", d.k)
+            format!("$k = {}$, $\\alpha_0 = {alpha0}$", d.k)
         });
     });
     Finding::from_worst(
         Method::Linearization,
-        "eq 70 as printed (both relations), varpi and Omega0 from the linearized Lagrangian reference",
+        "eq 70 as printed (both relations), $\\varpi$ and $\\Omega_0$ from the linearized Lagrangian reference",
         worst,
         Tolerance::roundoff())
     .in_unit("rad^2/s^2")
@@ -247,12 +247,12 @@ pub(super) fn eq71(b: &Bench) -> Finding {
         };
         let bind = linear_bindings(d, alpha0, lin).scalar("varpi", varpi);
         printed_relations(b, 71, &bind, varpi / lin.omega0, worst, &|| {
-            format!("k = {}, alpha0 = {alpha0}", d.k)
+            format!("$k = {}$, $\\alpha_0 = {alpha0}$", d.k)
         });
     });
     Finding::from_worst(
         Method::Integration,
-        "eq 71 as printed, varpi measured on small oscillations of the frictionless model",
+        "eq 71 as printed, $\\varpi$ measured on small oscillations of the frictionless model",
         worst,
         Tolerance::solver(b.rtol),
     )

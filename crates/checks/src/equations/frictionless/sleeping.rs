@@ -23,7 +23,7 @@ pub(super) fn eq64(b: &Bench) -> Finding {
             let om = f * d.g_over_a().sqrt();
             let jac = reference_jacobian(&d, [FRAC_PI_2, 0.0, om], 0.0);
             let scale = om * om + d.g / (d.a * k);
-            let at = || format!("k = {k}, Omega = {om:.3}");
+            let at = || format!("$k = {k}$, $\\Omega = {om:.3}$");
             for eps in [0.3, -0.05] {
                 let bind = Bindings::new()
                     .scalar("tilt_from_vertical", eps)
@@ -33,7 +33,7 @@ pub(super) fn eq64(b: &Bench) -> Finding {
                     .scalar("a", d.a)
                     .scalar("k", k);
                 printed_relations(b, 64, &bind, scale * eps.abs(), &mut worst, &|| {
-                    format!("{}, epsilon = {eps}", at())
+                    format!("{}, $\\epsilon = {eps}$", at())
                 });
             }
             // d(alpha_ddot)/d(alpha_dot) and d(alpha_ddot)/d(Omega), both in 1/s, must vanish.
@@ -107,20 +107,23 @@ pub(super) fn eq65(b: &Bench) -> Finding {
         );
         printed.edge = printed.edge.abs();
         add_threshold(b, &mut worst, &printed, threshold, allowed, &|| {
-            format!("k = {k}, Omega {}", if sign > 0.0 { "> 0" } else { "< 0" })
+            format!(
+                "$k = {k}$, $\\Omega {}$",
+                if sign > 0.0 { "> 0" } else { "< 0" }
+            )
         });
     }
     let bis = Tolerance::bisection(width);
     let tolerance = Tolerance {
         value: bis.value + 2.0 * resolution,
         rule: format!(
-            "{} plus twice the finite-run resolution (arccosh 2 / T)^2 / 2 Omega^2 = {resolution:.1e}",
+            "{} plus twice the finite-run resolution $(\\operatorname{{arccosh}} 2 / T)^{{2}} / 2 \\Omega^{{2}} = {resolution:.1e}$",
             bis.rule
         ),
     };
     Finding::from_worst(
         Method::Threshold,
-        "sqrt(g/ak) against the spin rate below which a nearly vertical frictionless disk falls (bisection on integrations)",
+        "$\\sqrt{g/a k}$ against the spin rate below which a nearly vertical frictionless disk falls (bisection on integrations)",
         worst,
         tolerance)
     .in_unit("rad/s")

@@ -23,40 +23,40 @@ const IDENTITIES: &[Identity] = &[
     // Eq 1, $\mathbf a = a\hat{\mathbf 3}$ (definition): the offset of the contact point from the
     // centre. Reference: the lowest point of the rim, found in body coordinates, against $a$ times
     // the constructed $\hat{\mathbf 3}$.
-    Identity { number: 1, scale: |_| A, quantity: "a", stated: Stated::Definition, reference: "the printed a against the offset of the rim's lowest point (body coordinates)" },
+    Identity { number: 1, scale: |_| A, quantity: "$\\mathbf{a}$", stated: Stated::Definition, reference: "the printed $\\mathbf{a}$ against the offset of the rim's lowest point (body coordinates)" },
     // Eq 2, $\vec\omega = \vec\omega_{123} + \omega_{rel}\hat{\mathbf 1}$ (definition). Reference:
     // the disk's angular velocity from $\dot R R^T$, the triad's from $\dot T T^T$, and the measured
     // rate of a face mark relative to the triad.
-    Identity { number: 2, scale: rate_scale, quantity: "omega", stated: Stated::Definition, reference: "the printed composition of omega against the axial vector of dR/dt R^T" },
+    Identity { number: 2, scale: rate_scale, quantity: "$\\vec\\omega$", stated: Stated::Definition, reference: "the printed composition of $\\vec\\omega$ against the axial vector of $\\dot R R^{T}$" },
     // Eq 3, $\vec\omega_{123} = \Omega\hat{\mathbf z} + \dot\alpha\hat{\mathbf 2} =
     // -\Omega\cos\alpha\hat{\mathbf 1} + \dot\alpha\hat{\mathbf 2} - \Omega\sin\alpha\hat{\mathbf 3}$.
     // Reference: the triad's angular velocity from $\dot T T^T$; each printed equality in turn.
-    Identity { number: 3, scale: rate_scale, quantity: "omega_123", stated: Stated::Relation, reference: "both printed equalities for omega_123 against the axial vector of dT/dt T^T" },
+    Identity { number: 3, scale: rate_scale, quantity: "$\\vec\\omega_{123}$", stated: Stated::Relation, reference: "both printed equalities for $\\vec\\omega_{123}$ against the axial vector of $\\dot T T^{T}$" },
     // Eq 4, $\hat{\mathbf z} = -\cos\alpha\hat{\mathbf 1} - \sin\alpha\hat{\mathbf 3}$. Reference:
     // the lab's vertical; $\alpha$ is the disk plane's tilt (the nutation angle).
-    Identity { number: 4, scale: |_| 1.0, quantity: "z", stated: Stated::Relation, reference: "the printed z against the lab's vertical" },
+    Identity { number: 4, scale: |_| 1.0, quantity: "$\\hat{\\mathbf{z}}$", stated: Stated::Relation, reference: "the printed $\\hat{\\mathbf{z}}$ against the lab's vertical" },
     // Eq 5, $d\hat{\mathbf 1}/dt = \vec\omega_{123}\times\hat{\mathbf 1} = -\Omega\sin\alpha
     // \hat{\mathbf 2} - \dot\alpha\hat{\mathbf 3}$. Reference: the exact derivative of the
     // constructed axis and the measured $\vec\omega_{123}$.
-    Identity { number: 5, scale: rate_scale, quantity: "the axis' rate", stated: Stated::Relation, reference: "d1/dt, both printed equalities, against the exact derivative" },
+    Identity { number: 5, scale: rate_scale, quantity: "the axis' rate", stated: Stated::Relation, reference: "$d\\hat{\\mathbf{1}}/dt$, both printed equalities, against the exact derivative" },
     // Eq 6, $d\hat{\mathbf 2}/dt = \vec\omega_{123}\times\hat{\mathbf 2} = \Omega\sin\alpha
     // \hat{\mathbf 1} - \Omega\cos\alpha\hat{\mathbf 3} = -\Omega\hat{\mathbf r}$ (the printed stray
     // comma dropped). Reference: the exact derivative of the constructed axis.
-    Identity { number: 6, scale: rate_scale, quantity: "the axis' rate", stated: Stated::Relation, reference: "d2/dt, all three printed equalities, against the exact derivative" },
+    Identity { number: 6, scale: rate_scale, quantity: "the axis' rate", stated: Stated::Relation, reference: "$d\\hat{\\mathbf{2}}/dt$, all three printed equalities, against the exact derivative" },
     // Eq 7, $d\hat{\mathbf 3}/dt = \vec\omega_{123}\times\hat{\mathbf 3} = \dot\alpha\hat{\mathbf 1}
     // + \Omega\cos\alpha\hat{\mathbf 2}$. Reference: the exact derivative of the constructed axis.
-    Identity { number: 7, scale: rate_scale, quantity: "the axis' rate", stated: Stated::Relation, reference: "d3/dt, both printed equalities, against the exact derivative" },
+    Identity { number: 7, scale: rate_scale, quantity: "the axis' rate", stated: Stated::Relation, reference: "$d\\hat{\\mathbf{3}}/dt$, both printed equalities, against the exact derivative" },
     // Eq 9, $d\hat{\mathbf r}/dt = \Omega\hat{\mathbf 2}$. Reference: the exact derivative of the
     // constructed $\hat{\mathbf r}$.
-    Identity { number: 9, scale: rate_scale, quantity: "r-hat's rate", stated: Stated::Relation, reference: "the printed rate of r-hat against its exact derivative" },
+    Identity { number: 9, scale: rate_scale, quantity: "$\\hat{\\mathbf{r}}$'s rate", stated: Stated::Relation, reference: "the printed rate of $\\hat{\\mathbf{r}}$ against its exact derivative" },
     // Eq 10, $\vec\omega = \omega_1\hat{\mathbf 1} + \dot\alpha\hat{\mathbf 2} -
     // \Omega\sin\alpha\hat{\mathbf 3}$, with $\omega_1 = \vec\omega\cdot\hat{\mathbf 1}$. Reference:
     // the axial vector of $\dot R R^T$ (the 2 and 3 components are the content).
-    Identity { number: 10, scale: rate_scale, quantity: "omega", stated: Stated::Relation, reference: "the printed triad form of omega against dR/dt R^T" },
+    Identity { number: 10, scale: rate_scale, quantity: "$\\vec\\omega$", stated: Stated::Relation, reference: "the printed triad form of $\\vec\\omega$ against $\\dot R R^{T}$" },
     // Eq 11, $\omega_1 = \omega_{rel} - \Omega\cos\alpha$ (definition). Reference: $\vec\omega\cdot
     // \hat{\mathbf 1}$ from $\dot R R^T$, the measured rate of a face mark relative to the triad and
     // the measured precession.
-    Identity { number: 11, scale: rate_scale, quantity: "omega_1", stated: Stated::Definition, reference: "the printed omega_1 against omega . 1 from dR/dt R^T" },
+    Identity { number: 11, scale: rate_scale, quantity: "$\\omega_1$", stated: Stated::Definition, reference: "the printed $\\omega_1$ against $\\vec\\omega \\cdot \\hat{\\mathbf{1}}$ from $\\dot R R^{T}$" },
 ];
 
 /// The check of eq `N`, one of [`IDENTITIES`].
@@ -85,10 +85,10 @@ pub(super) fn eq8(b: &Bench) -> Finding {
             let dir = horizontal / horizontal.norm();
             bind.set("r_hat", Value::Vector(dir));
         }
-        printed_relations(b, 8, &bind, 1.0, &mut w, &|| at(&k, "r-hat"));
+        printed_relations(b, 8, &bind, 1.0, &mut w, &|| at(&k, r"$\hat{\mathbf{r}}$"));
     }
     identity(
-        "the printed r-hat against 3's horizontal direction and 2 x z",
+        "the printed $\\hat{\\mathbf{r}}$ against $\\hat{\\mathbf{3}}$'s horizontal direction and $\\hat{\\mathbf{2}} \\times \\hat{\\mathbf{z}}$",
         w,
         Stated::Definition,
     )

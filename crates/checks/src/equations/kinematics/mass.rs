@@ -53,22 +53,22 @@ pub(super) fn plate(inner: f64, outer: f64) -> Vec<(V<f64>, f64)> {
 pub(super) fn bodies() -> Vec<Body> {
     vec![
         Body {
-            name: "uniform disk (k = 1/4)",
+            name: "uniform disk ($k = 1/4$)",
             k: 0.25,
             points: plate(0.0, A),
         },
         Body {
-            name: "ring (k = 1/2)",
+            name: "ring ($k = 1/2$)",
             k: 0.5,
             points: plate(A, A),
         },
         Body {
-            name: "annulus c = a/2 (k = 5/16)",
+            name: "annulus $c = a/2$ ($k = 5/16$)",
             k: 5.0 / 16.0,
             points: plate(0.5 * A, A),
         },
         Body {
-            name: "ring at radius a sqrt(0.2) (k = 0.1)",
+            name: "ring at radius $a \\sqrt{0.2}$ ($k = 0.1$)",
             k: 0.1,
             points: plate(A * 0.2f64.sqrt(), A * 0.2f64.sqrt()),
         },
@@ -143,12 +143,15 @@ pub(super) fn eq19(b: &Bench) -> Finding {
                 .scalar("k", body.k)
                 .scalar("m", MASS);
             printed_relations(b, 19, &bind, unit * rate_scale(&k), &mut w, &|| {
-                at(&k, &format!("L_cm for the {}", body.name))
+                at(
+                    &k,
+                    &format!("$\\mathbf{{L}}_{{\\mathrm{{cm}}}}$ for the {}", body.name),
+                )
             });
         }
     }
     identity(
-        "the triad components of L_cm against R I_body R^T omega (I_body by quadrature)",
+        "the triad components of $\\mathbf{L}_{\\mathrm{cm}}$ against $R I_{\\mathrm{body}} R^{T} \\omega$ ($I_{\\mathrm{body}}$ by quadrature)",
         w,
         Stated::Relation,
     )
@@ -211,12 +214,15 @@ pub(super) fn eq20(b: &Bench) -> Finding {
                 .vector("F", force)
                 .vector("z_hat", Vector3::z());
             printed_relations(b, 20, &bind, sc, &mut w, &|| {
-                format!("m d2r_cm/dt2 for the {}", body.name)
+                format!(
+                    "$m \\, d^2\\mathbf{{r}}_{{\\mathrm{{cm}}}}/dt^2$ for the {}",
+                    body.name
+                )
             });
         }
     }
     identity(
-        "m d2r_cm/dt2 against F - m g z summed over the point masses of a rigid body",
+        "$m \\, d^2\\mathbf{r}_{\\mathrm{cm}}/dt^2$ against $\\mathbf{F} - m g \\hat{\\mathbf{z}}$ summed over the point masses of a rigid body",
         w,
         Stated::Relation,
     )
@@ -262,7 +268,10 @@ pub(super) fn eq21(b: &Bench) -> Finding {
                 .vector("L_cm_rate", l_dot)
                 .vector("N_cm", reference);
             printed_relation(b, 21, 0, &bind, sc, &mut w, &|| {
-                format!("dL_cm/dt for the {}", body.name)
+                format!(
+                    "$d\\mathbf{{L}}_{{\\mathrm{{cm}}}}/dt$ for the {}",
+                    body.name
+                )
             });
         }
     }
@@ -279,12 +288,15 @@ pub(super) fn eq21(b: &Bench) -> Finding {
             .vector("F", force);
         let sc = A * force.norm();
         printed_relation(b, 21, 1, &bind, sc, &mut w, &|| {
-            format!("N_cm of the contact force, alpha = {:.3}", k.alpha)
+            format!(
+                "$\\mathbf{{N}}_{{\\mathrm{{cm}}}}$ of the contact force, $\\alpha = {:.3}$",
+                k.alpha
+            )
         });
     }
     identity(
-        "dL_cm/dt of R I R^T omega against the torque summed over point masses; the contact \
-         force's torque against the gradient in omega of the power it delivers",
+        "$d\\mathbf{L}_{\\mathrm{cm}}/dt$ of $R I R^{T} \\vec\\omega$ against the torque summed over point masses; the contact \
+         force's torque against the gradient in $\\omega$ of the power it delivers",
         w,
         Stated::Relation,
     )
@@ -344,7 +356,7 @@ pub(super) fn eq22(b: &Bench) -> Finding {
                     sc,
                     || {
                         format!(
-                            "component {} of eq 22's residual for the {}, alpha = {:.3}",
+                            "component {} of eq 22's residual for the {}, $\\alpha = {:.3}$",
                             ["x", "y", "z"][i],
                             body.name,
                             k.alpha.re

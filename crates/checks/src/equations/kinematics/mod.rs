@@ -276,7 +276,7 @@ fn rate_scale(k: &Kin<f64>) -> f64 {
 
 fn at(k: &Kin<f64>, what: &str) -> String {
     format!(
-        "{what} at alpha = {:.4}, alpha_dot = {:.4}, Omega = {:.4}, omega_1 = {:.4} (rad, rad/s)",
+        "{what} at $\\alpha = {:.4}$, $\\dot\\alpha = {:.4}$, $\\Omega = {:.4}$, $\\omega_1 = {:.4}$ (rad, rad/s)",
         k.alpha,
         k.alpha_dot,
         k.precession,

@@ -19,7 +19,13 @@ pub(super) fn v_cm_rolling(k: &Kin<f64>) -> V<f64> {
 /// rolling without slipping built from the rim's geometry (no cross product): its contact point
 /// is at rest and its $\mathbf v_{cm}$ measured.
 pub(super) fn eq12(b: &Bench) -> Finding {
-    let w = printed_kinematics(b, 12, 12, |k| A * rate_scale(k), "v_contact");
+    let w = printed_kinematics(
+        b,
+        12,
+        12,
+        |k| A * rate_scale(k),
+        "$\\mathbf{v}_{\\mathrm{contact}}$",
+    );
     identity(
         "the printed contact velocity against a disk rolled along its rim",
         w,
@@ -31,9 +37,15 @@ pub(super) fn eq12(b: &Bench) -> Finding {
 /// -a\dot\alpha\hat{\mathbf 1} + a\omega_1\hat{\mathbf 2}$. Reference: the velocity of the centre
 /// of a disk rolled along its rim; every printed equality.
 pub(super) fn eq13(b: &Bench) -> Finding {
-    let w = printed_kinematics(b, 13, 13, |k| A * rate_scale(k), "v_cm");
+    let w = printed_kinematics(
+        b,
+        13,
+        13,
+        |k| A * rate_scale(k),
+        "$\\mathbf{v}_{\\mathrm{cm}}$",
+    );
     identity(
-        "the printed forms of v_cm against a disk rolled along its rim",
+        "the printed forms of $\\mathbf{v}_{\\mathrm{cm}}$ against a disk rolled along its rim",
         w,
         Stated::Relation,
     )
@@ -78,12 +90,15 @@ pub(super) fn eq14(b: &Bench) -> Finding {
             .vector("x_hat", Vector3::x())
             .vector("y_hat", Vector3::y());
         printed_relations(b, 14, &bind, A + r.abs(), &mut w, &|| {
-            at(&k, &format!("r_cm (r = {r:.4e} m)"))
+            at(
+                &k,
+                &format!("$\\mathbf{{r}}_{{\\mathrm{{cm}}}} (r = {r:.4e} m)$"),
+            )
         });
     }
-    w.at = format!("{}; r < 0 at {negative} of {} points", w.at, points.len());
+    w.at = format!("{}; $r < 0$ at {negative} of {} points", w.at, points.len());
     identity(
-        "x_A x + y_A y + r r-hat - a 3 against a rolled disk's centre, A the contact path's centre of curvature",
+        "$x_A \\hat{\\mathbf{x}} + y_A \\hat{\\mathbf{y}} + r \\hat{\\mathbf{r}} - a \\hat{\\mathbf{3}}$ against a rolled disk's centre, A the contact path's centre of curvature",
         w, Stated::Definition,
     )
 }
@@ -124,7 +139,9 @@ pub(super) fn eq15(b: &Bench) -> Finding {
             .scalar("r_dot", r_dot)
             .vector("x_hat", Vector3::x())
             .vector("y_hat", Vector3::y());
-        printed_relations(b, 15, &bind, sc, &mut w, &|| at(&k, "dr_cm/dt"));
+        printed_relations(b, 15, &bind, sc, &mut w, &|| {
+            at(&k, r"$d\mathbf{r}_{\mathrm{cm}}/dt$")
+        });
     }
     identity(
         "the printed derivative against eq 14 differentiated exactly",
@@ -189,7 +206,7 @@ pub(super) fn steady_sweep() -> Vec<Steady> {
 
 pub(super) fn steady_at(s: &Steady) -> String {
     format!(
-        "alpha = {:.3}, Omega = {:+.3}, b = {:+.4e} m, r = {:.4e} m",
+        "$\\alpha = {:.3}$, $\\Omega = {:+.3}$, $b = {:+.4e} m$, $r = {:.4e} m$",
         s.alpha, s.precession, s.b, s.r
     )
 }
@@ -216,7 +233,7 @@ pub(super) fn eq16(b: &Bench) -> Finding {
         );
     }
     identity(
-        "b Omega / a against omega . 1 on steady rolling, b measured on the circle",
+        "$b \\Omega / a$ against $\\vec\\omega \\cdot \\hat{\\mathbf{1}}$ on steady rolling, b measured on the circle",
         w,
         Stated::Relation,
     )
@@ -235,7 +252,7 @@ pub(super) fn eq17(b: &Bench) -> Finding {
         printed_relations(b, 17, &bind, A + s.b.abs(), &mut w, &|| steady_at(&s));
     }
     identity(
-        "r - a cos(alpha) against the measured b on steady rolling",
+        "$r - a \\cos(\\alpha)$ against the measured b on steady rolling",
         w,
         Stated::Definition,
     )

@@ -80,7 +80,7 @@ pub(super) fn ansatz(b: &Bench, which: usize) -> Finding {
             let order = if shrinking { order } else { f64::NAN };
             w.add(order, 1.0, 1.0, || {
                 format!(
-                    "k = {k}, alpha0 = {alpha0}, b/a = {rho}: residual / amplitude {:.2e} at epsilon/alpha0 = 1e-6",
+                    "$k = {k}$, $\\alpha_0 = {alpha0}$, $b/a = {rho}$: residual / amplitude {:.2e} at $\\epsilon/\\alpha_0 = 1e-6$",
                     errs[errs.len() - 1]
                 )
             });
@@ -88,7 +88,7 @@ pub(super) fn ansatz(b: &Bench, which: usize) -> Finding {
     }
     Finding::definition(
         Method::Integration,
-        "fitted order of the ansatz's residual (relative to its amplitude) in epsilon, against 1",
+        "fitted order of the ansatz's residual (relative to its amplitude) in $\\epsilon$, against 1",
         w,
         Tolerance::order(),
     )

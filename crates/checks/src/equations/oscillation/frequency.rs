@@ -43,14 +43,14 @@ pub(super) fn eq50(b: &Bench) -> Finding {
     });
     let a = Finding::from_worst(
         Method::Linearization,
-        "varpi^2 against e2 of the model's Jacobian, relative to Omega_0^2 + omega_10^2 + g/a",
+        "$\\varpi^{2}$ against e2 of the model's Jacobian, relative to $\\Omega_0^{2} + \\omega_{10}^{2} + g/a$",
         lin,
         Tolerance::roundoff(),
     )
     .in_unit("rad^2/s^2");
     let bfind = Finding::from_worst(
         Method::Integration,
-        "varpi against the frequency of alpha measured on small-amplitude integrations",
+        "$\\varpi$ against the frequency of $\\alpha$ measured on small-amplitude integrations",
         int,
         Tolerance::solver(b.rtol),
     )
@@ -118,9 +118,9 @@ pub(super) fn ratio_check(b: &Bench, which: u32) -> Finding {
     Finding::from_worst(
         Method::Linearization,
         if which == 47 {
-            "delta/epsilon against the mode's eigenvector of the model's Jacobian"
+            "$\\delta/\\epsilon$ against the mode's eigenvector of the model's Jacobian"
         } else {
-            "gamma/epsilon against the mode's eigenvector of the model's Jacobian"
+            "$\\gamma/\\epsilon$ against the mode's eigenvector of the model's Jacobian"
         },
         w,
         Tolerance::roundoff(),
@@ -148,7 +148,7 @@ pub(super) fn eq49(b: &Bench) -> Finding {
     });
     Finding::from_worst(
         Method::Linearization,
-        "varpi^2 from the alpha row with the eigenvector's delta, gamma, against e2 of the Jacobian",
+        "$\\varpi^{2}$ from the $\\alpha$ row with the eigenvector's $\\delta$, $\\gamma$, against e2 of the Jacobian",
         w,
         Tolerance::roundoff())
     .in_unit("rad^2/s^2")
@@ -175,13 +175,13 @@ pub(super) fn eq51(b: &Bench) -> Finding {
             };
             let claimed = printed_varpi2(b, 51, &steady_bindings(&d, &m));
             w.add(claimed, reference, w10 * w10 + d.g_over_a(), || {
-                format!("k = {k}, omega_10^2 = {f} g/a")
+                format!("$k = {k}$, $\\omega_{{10}}^{{2}} = {f} g/a$")
             });
         }
     }
     Finding::from_worst(
         Method::Linearization,
-        "varpi^2 of the straight wheel against e2 of the Jacobian, relative to omega_10^2 + g/a",
+        "$\\varpi^{2}$ of the straight wheel against e2 of the Jacobian, relative to $\\omega_{10}^{2} + g/a$",
         w,
         Tolerance::roundoff(),
     )

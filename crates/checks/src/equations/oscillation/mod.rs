@@ -97,7 +97,7 @@ fn rhos(d: &Disk, alpha0: f64) -> [f64; 4] {
 }
 
 fn at(k: f64, alpha0: f64, rho: f64) -> String {
-    format!("k = {k}, alpha0 = {alpha0}, b/a = {rho:.4}")
+    format!("$k = {k}$, $\\alpha_0 = {alpha0}$, $b/a = {rho:.4}$")
 }
 
 /// Calls `f(k, disk, alpha0, rho, steady motion)` over the sweep.

@@ -32,7 +32,7 @@ pub(super) fn eq54(b: &Bench) -> Finding {
     });
     Finding::from_worst(
         Method::Linearization,
-        "varpi^2 (k+1) / Omega_0^2 against the model's Jacobian",
+        "$\\varpi^{2} (k+1) / \\Omega_0^{2}$ against the model's Jacobian",
         w,
         Tolerance::roundoff(),
     )
@@ -75,9 +75,9 @@ pub(super) fn eq55(b: &Bench) -> Finding {
                     })
                     .collect();
                 fits.push((
-                    format!("k = {k}, alpha0 = {alpha0}, sign of b {sign}"),
+                    format!("$k = {k}$, $\\alpha_0 = {alpha0}$, sign of b {sign}"),
                     Finding::from_order(
-                        "varpi/Omega_0 for b << a",
+                        "$\\varpi/\\Omega_0$ for $b \\ll  a$",
                         &small,
                         &errs,
                         b.paper.equation(55).entry.claimed_order.unwrap_or(1.0),
@@ -106,8 +106,13 @@ pub(super) fn eq56(b: &Bench) -> Finding {
             })
             .collect();
         fits.push((
-            format!("k = {k}"),
-            Finding::from_order("varpi/Omega_0 at small tilt, b = 0", &small, &errs, 2.0),
+            format!("$k = {k}$"),
+            Finding::from_order(
+                "$\\varpi/\\Omega_0$ at small tilt, $b = 0$",
+                &small,
+                &errs,
+                2.0,
+            ),
         ));
     }
     crate::harness::worst_order(fits)
@@ -130,9 +135,9 @@ pub(super) fn small_tilt_b(b: &Bench, n: u32, ks: &[f64]) -> Finding {
             })
             .collect();
         fits.push((
-            format!("k = {k}"),
+            format!("$k = {k}$"),
             Finding::from_order(
-                "varpi/Omega_0 at small tilt with b = alpha_0 a",
+                "$\\varpi/\\Omega_0$ at small tilt with $b = \\alpha_0 a$",
                 &small,
                 &errs,
                 2.0,

@@ -24,8 +24,8 @@ pub(super) fn finite_time_tolerance(k: f64, width: f64, squared: bool) -> Tolera
     Tolerance {
         value: bias + 2.0 * width,
         rule: format!(
-            "threshold from integrations of {N_NATURAL} sqrt(a/g): finite-time bias \
-             (k+1) (pi/2)^2 / N^2{} plus twice the bracket ({width:e})",
+            "threshold from integrations of ${N_NATURAL} \\sqrt{{a/g}}$: finite-time bias \
+             $(k+1) (\\pi/2)^{{2}} / N^{{2}}{}$ plus twice the bracket ({width:e})",
             if squared { "" } else { " / 2" }
         ),
     }
@@ -46,7 +46,7 @@ pub(super) fn turns_back(b: &Bench, d: &Disk, precession: f64, spin: f64) -> boo
     let t = N_NATURAL / d.g_over_a().sqrt();
     let sol = solve(
         Problem::new(&model, 0.0, model.state(&m), t)
-            .stop_when(Event::new("alpha_dot turns back", |y: &State<4>| y[1]))
+            .stop_when(Event::new("$\\dot\\alpha$ turns back", |y: &State<4>| y[1]))
             .stop_when(Event::new("falls 1e-3 rad off upright", |y: &State<4>| {
                 1e-3 - (y[0] - FRAC_PI_2).abs()
             })),
@@ -114,20 +114,20 @@ pub(super) fn threshold_check(b: &Bench, which: u32) -> Finding {
         let allowed = probes.map(stable);
         let mut wl = Worst::default();
         add_threshold(b, &mut wl, &printed, lin, allowed, &|| {
-            format!("k = {k}, linearization")
+            format!("$k = {k}$, linearization")
         });
         let mut wi = Worst::default();
         wi.add(b.claim(printed.edge), int, int, || {
-            format!("{}: k = {k}, integrations", printed.relation)
+            format!("{}: $k = {k}$, integrations", printed.relation)
         });
         let what = if which == 52 {
-            "omega_10 threshold"
+            "$\\omega_{10}$ threshold"
         } else {
-            "|Omega_0| threshold"
+            "$|\\Omega_0|$ threshold"
         };
         let fl = Finding::from_worst(
             Method::Linearization,
-            format!("{what}: the printed edge and direction against the sign change of the linearized varpi^2"),
+            format!("{what}: the printed edge and direction against the sign change of the linearized $\\varpi^{{2}}$"),
             wl,
             Tolerance::bisection(width));
         let fi = Finding::from_worst(

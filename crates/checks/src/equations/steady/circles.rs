@@ -49,7 +49,7 @@ pub(super) fn eq27(b: &Bench) -> Finding {
                 let drift = steady_drift(b, &d, &m, 2.0);
                 w.add(drift, 0.0, 1.0, || {
                     format!(
-                        "{}; largest relative drift of (alpha, Omega, omega_1) over 2 precession periods",
+                        "{}; largest relative drift of ($\\alpha$, $\\Omega$, $\\omega_1$) over 2 precession periods",
                         at(k, alpha0, rho)
                     )
                 });
@@ -58,7 +58,7 @@ pub(super) fn eq27(b: &Bench) -> Finding {
     }
     Finding::from_worst(
         Method::Integration,
-        "drift of alpha, Omega, omega_1 started at eq 27's steady state",
+        "drift of $\\alpha$, $\\Omega$, $\\omega_1$ started at eq 27's steady state",
         w,
         Tolerance::solver(b.rtol),
     )
@@ -102,7 +102,7 @@ pub(super) fn eq28(b: &Bench) -> Finding {
     });
     Finding::from_worst(
         Method::Integration,
-        "both printed relations of eq 28 at the model's steady spin and the measured b, r, relative to |Omega_0|",
+        "both printed relations of eq 28 at the model's steady spin and the measured b, r, relative to $|\\Omega_0|$",
         w,
         Tolerance::solver(b.rtol))
 }
@@ -126,7 +126,7 @@ pub(super) fn eq29(b: &Bench) -> Finding {
     });
     Finding::from_worst(
         Method::Integration,
-        "both printed forms of eq 29 at the measured b and r against the model's steady Omega_0^2",
+        "both printed forms of eq 29 at the measured b and r against the model's steady $\\Omega_0^{2}$",
         w,
         Tolerance::solver(b.rtol),
     )
@@ -155,7 +155,7 @@ pub(super) fn eq30(b: &Bench) -> Finding {
             let printed = printed_threshold(b, 30, "b", &bind, (-d.a, d.a), probes);
             let allowed = probes.map(|x| steady_exists(&d, alpha0, x / d.a));
             add_threshold(b, &mut w, &printed, edge, allowed, &|| {
-                format!("k = {k}, alpha0 = {alpha0}")
+                format!("$k = {k}$, $\\alpha_0 = {alpha0}$")
             });
         }
     }
@@ -194,13 +194,15 @@ pub(super) fn eq31(b: &Bench) -> Finding {
             };
             let drift = steady_drift(b, &d, &m, 2.0);
             w.add(drift, 0.0, 1.0, || {
-                format!("k = {k}, alpha0 = {alpha0}; relative drift over 2 precession periods")
+                format!(
+                    "$k = {k}$, $\\alpha_0 = {alpha0}$; relative drift over 2 precession periods"
+                )
             });
         }
     }
     Finding::from_worst(
         Method::Integration,
-        "drift of alpha, Omega, omega_1 started at eq 31's steady state (b = 0)",
+        "drift of $\\alpha$, $\\Omega$, $\\omega_1$ started at eq 31's steady state $(b = 0)$",
         w,
         Tolerance::solver(b.rtol),
     )
@@ -243,13 +245,13 @@ pub(super) fn rel_spin_check(b: &Bench, n: u32) -> Finding {
                 .scalar("Omega_0", m.precession)
                 .scalar("omega_rel", measured);
             printed_relations(b, n, &bind, m.precession.abs(), &mut w, &|| {
-                format!("k = {k}, alpha0 = {alpha0}, b = 0")
+                format!("$k = {k}$, $\\alpha_0 = {alpha0}$, $b = 0$")
             });
         }
     }
     Finding::from_worst(
         Method::Integration,
-        "omega_rel = Omega_0 cos(alpha_0) against the face angle's measured rate at b = 0, relative to |Omega_0|",
+        "$\\omega_{\\mathrm{rel}} = \\Omega_0 \\cos(\\alpha_0)$ against the face angle's measured rate at $b = 0$, relative to $|\\Omega_0|$",
         w,
         Tolerance::solver(b.rtol))
 }
@@ -298,19 +300,19 @@ pub(super) fn eq38(b: &Bench) -> Finding {
             // (a F.2 against 0) are compared too.
             let omega_ref = d.a * f1 / (d.i22() * m.precession * c);
             w.add(f2, 0.0, d.m * d.g, || {
-                format!("k = {k}, alpha0 = {alpha0}: F along axis 2 / mg")
+                format!("$k = {k}$, $\\alpha_0 = {alpha0}$: $F_2 / (m g)$")
             });
             let bind = steady_bindings(&d, alpha0)
                 .scalar("Omega_0", m.precession)
                 .scalar("omega_3", omega_ref);
             printed_relations(b, 38, &bind, omega_ref.abs(), &mut w, &|| {
-                format!("k = {k}, alpha0 = {alpha0}, b = 0")
+                format!("$k = {k}$, $\\alpha_0 = {alpha0}$, $b = 0$")
             });
         }
     }
     Finding::from_worst(
         Method::Derivation,
-        "rate about axis 3 at b = 0: claimed against the rate the model's contact torque sustains",
+        "rate about axis 3 at $b = 0$: claimed against the rate the model's contact torque sustains",
         w,
         Tolerance::roundoff(),
     )
@@ -331,13 +333,13 @@ pub(super) fn eq40(b: &Bench) -> Finding {
             let om2 = m.precession * m.precession;
             let bind = steady_bindings(&d, alpha0).scalar("Omega_0", m.precession);
             printed_relations(b, 40, &bind, om2, &mut w, &|| {
-                format!("k = {k}, alpha0 = {alpha0}")
+                format!("$k = {k}$, $\\alpha_0 = {alpha0}$")
             });
         }
     }
     Finding::from_worst(
         Method::Derivation,
-        "Omega_0^2 at b = 0 against the model's steady state solved by Newton",
+        "$\\Omega_0^{2}$ at $b = 0$ against the model's steady state solved by Newton",
         w,
         Tolerance::roundoff(),
     )

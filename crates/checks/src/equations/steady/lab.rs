@@ -157,7 +157,7 @@ impl LabSteady {
     /// Where, in words.
     fn at(&self, i: usize, what: &str) -> String {
         format!(
-            "k = {}, alpha0 = {}, Omega_0 = {:.4} rad/s (b = 0, lab frame), t = {:.5} s: {what}",
+            "$k = {}$, $\\alpha_0 = {}$, $\\Omega_0 = {:.4}$ rad/s ($b = 0$, lab frame), $t = {:.5}$ s: {what}",
             self.k, self.alpha0, self.precession, self.t[i]
         )
     }
@@ -167,7 +167,7 @@ impl LabSteady {
         w.add(self.unsteadiness, 0.0, 1.0, || {
             self.at(
                 self.t.len() - 1,
-                "largest departure of the lab run from steady b = 0 motion (premise)",
+                "largest departure of the lab run from steady $b = 0$ motion (premise)",
             )
         });
     }
@@ -235,10 +235,10 @@ pub(super) fn lab_relations(
 /// $\hat{\mathbf 3}$ the lab's direction to the lowest rim point, and $I_{33} =
 /// \hat{\mathbf 3}\cdot R I R^T\hat{\mathbf 3}$ from the lab's inertia tensor.
 pub(super) fn eq33(b: &Bench) -> Finding {
-    let w = lab_relations(b, 33, |run, i| run.l[i].norm(), "L, relative to |L|");
+    let w = lab_relations(b, 33, |run, i| run.l[i].norm(), "L, relative to $|L|$");
     Finding::from_worst(
         Method::IndependentModel,
-        "the printed forms of L against R I omega_b along lab-frame b = 0 steady runs, relative to |L|",
+        "the printed forms of L against $R I \\boldsymbol\\omega_b$ along lab-frame $b = 0$ steady runs, relative to $|L|$",
         w,
         Tolerance::solver(b.rtol))
     .in_unit("kg m^2/s")
@@ -264,7 +264,7 @@ pub(super) fn eq34(b: &Bench) -> Finding {
     );
     Finding::from_worst(
         Method::IndependentModel,
-        "the printed torque against the lab's contact torque rho x F and the lab run's dL/dt (seven-point difference), relative to |N|",
+        "the printed torque against the lab's contact torque $\\rho x F$ and the lab run's $dL/dt$ (seven-point difference), relative to $|N|$",
         w,
         Tolerance::solver(b.rtol))
 }
@@ -279,11 +279,11 @@ pub(super) fn eq35(b: &Bench) -> Finding {
         b,
         35,
         |run, i| run.l_dot(i).norm(),
-        "dL/dt, relative to |dL/dt|",
+        "$dL/dt$, relative to $|dL/dt|$",
     );
     Finding::from_worst(
         Method::IndependentModel,
-        "Omega_0 x L (the lab run's measured precession) against the lab run's dL/dt, relative to |dL/dt|",
+        "$\\Omega_0 x L$ (the lab run's measured precession) against the lab run's $dL/dt$, relative to $|dL/dt|$",
         w,
         Tolerance::solver(b.rtol))
 }
@@ -300,11 +300,11 @@ pub(super) fn eq36(b: &Bench) -> Finding {
         b,
         36,
         |run, _| run.precession.abs(),
-        "Omega_0, relative to |Omega_0|",
+        "$\\Omega_0$, relative to $|\\Omega_0|$",
     );
     Finding::from_worst(
         Method::IndependentModel,
-        "the printed precession vector (omega measured in the lab) against the lab run's measured precession vector, relative to |Omega_0|",
+        "the printed precession vector ($\\omega$ measured in the lab) against the lab run's measured precession vector, relative to $|\\Omega_0|$",
         w,
         Tolerance::solver(b.rtol))
 }
@@ -322,11 +322,11 @@ pub(super) fn eq37(b: &Bench) -> Finding {
         b,
         37,
         |run, i| run.snaps[i].omega.norm(),
-        "omega, relative to |omega|",
+        "$\\omega$, relative to $|\\omega|$",
     );
     Finding::from_worst(
         Method::IndependentModel,
-        "the printed forms of the angular velocity (Omega_0, omega_rel measured) against the lab's R omega_b, relative to |omega|",
+        "the printed forms of the angular velocity ($\\Omega_0$, $\\omega_{\\mathrm{rel}}$ measured) against the lab's $R \\boldsymbol\\omega_b$, relative to $|\\omega|$",
         w,
         Tolerance::solver(b.rtol))
 }

@@ -59,7 +59,7 @@ pub const EQUATIONS: &[Row] = &[
 ];
 
 fn at(k: f64, alpha0: f64, rho: f64) -> String {
-    format!("k = {k}, alpha0 = {alpha0}, b/a = {rho:.4}")
+    format!("$k = {k}$, $\\alpha_0 = {alpha0}$, $b/a = {rho:.4}$")
 }
 
 // ------------------------------------------------------------------------------------------
