@@ -103,25 +103,25 @@ fn assert_analysed(t: &experiment::Trace) {
 }
 
 /// A disk too faint for its line to stand out of the recorder's noise: the refusal says that no
-/// line was found and to record closer; recorded closer (the disk 30 times louder over the same
+/// line was found and to record closer; recorded closer (the disk 100 times louder over the same
 /// noise), it is analysed.
 #[test]
 fn a_line_lost_in_the_noise_is_refused_with_record_closer_and_closer_works() {
-    let e = analysed(&disk(0.002, 0.05, 1.0)).expect_err("a line under the noise is refused");
+    let e = analysed(&disk(0.003, 0.03, 1.0)).expect_err("a line under the noise is refused");
     assert!(e.contains("no rising line to follow"), "{e}");
     assert!(
         e.contains("did a line of the disk stand out of the noise"),
         "the refusal names what was found: {e}"
     );
     assert!(e.contains("record closer to the disk"), "{e}");
-    assert_analysed(&disk(0.06, 0.05, 1.0));
+    assert_analysed(&disk(0.3, 0.03, 1.0));
 }
 
-/// A disk heard only in its last second: the refusal says over how long the line was followed
-/// and to record the whole spin; the whole spin recorded, it is analysed.
+/// A disk heard only in its last half second: the refusal says over how long the line was
+/// followed and to record the whole spin; the whole spin recorded, it is analysed.
 #[test]
 fn a_spin_heard_too_briefly_is_refused_with_record_the_whole_spin_and_that_works() {
-    let e = analysed(&disk(0.3, 0.003, 7.5)).expect_err("a second of the line is refused");
+    let e = analysed(&disk(0.3, 0.003, 8.0)).expect_err("half a second of the line is refused");
     assert!(
         e.contains("the disk's line was followed over"),
         "the refusal names what was found: {e}"
