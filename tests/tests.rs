@@ -17,7 +17,6 @@ mod coverage_record;
 mod experiment;
 mod experiment_audio;
 mod experiment_bias;
-mod experiment_bumps;
 mod experiment_coverage_diagnosis;
 mod experiment_fallback;
 mod experiment_formats;

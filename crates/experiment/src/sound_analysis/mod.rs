@@ -1,5 +1,4 @@
-//! The sound recording analysed: mains hum out ([`mains`]), handling bumps stepped over
-//! ([`bumps`]), the fundamental of each frame
+//! The sound recording analysed: mains hum out ([`mains`]), the fundamental of each frame
 //! ([`spectrum`]) followed into a pitch track ([`track`]), the spectrogram for the eye
 //! ([`spectrogram`]), the phase followed turn by turn ([`phase_blocks`]) and eq 79's heading
 //! fitted to it ([`phase_fit`]), its residuals tested for structure ([`residual_structure`]),
@@ -9,7 +8,6 @@
 //! ([`refusal`]).
 
 pub mod analysis;
-pub mod bumps;
 pub mod high_pass;
 pub mod mains;
 pub mod phase_blocks;

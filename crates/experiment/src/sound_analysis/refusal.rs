@@ -20,11 +20,6 @@ pub fn what_was_heard(track: &FrequencyTrack) -> String {
     } else {
         let lines: Vec<String> = track.hum.iter().map(|h| format!("{h:.1}")).collect();
         format!("; mains hum at {} Hz was subtracted", lines.join(", "))
-    } + &if track.bumps.is_empty() {
-        String::new()
-    } else {
-        let at: Vec<String> = track.bumps.iter().map(|b| format!("{:.2}", b.0)).collect();
-        format!("; bumps at {} s were stepped over", at.join(", "))
     };
     let (Some(p), Some(q)) = (track.points.first(), track.points.last()) else {
         return format!(

@@ -16,15 +16,15 @@
 //! fundamental far below its third harmonic lowers the noise there as much, so the family, not
 //! the loudest line, names the fundamental.
 //!
-//! **Hum masked wherever it crosses the disk's lines.** A harmonic $hk$ that lies within the
-//! window's main lobe ($\pm 2/T$) of a mains line the analysis subtracted ([`Analyser::mask`])
-//! is left out of the sum (the sum of the others scaled by the harmonics' count over theirs) and
-//! of the estimate (`masked`): what is left of the hum there, and what the hum's subtraction took
-//! of the disk's line where the two ran together, is not the disk's, and a fundamental whose every
-//! harmonic is on the hum is no fundamental of the disk. The pitch track reads a frame that
-//! follows a line already held without the mask only where the mask leaves it nothing to read:
-//! near $t_0$ its short frames' lobes ($2/T$ grows as $T$ shrinks) can cover the whole band
-//! about the predicted pitch, and elsewhere the harmonics clear of the hum may be too weak.
+//! **Hum masked where the line is searched for.** In a frame searched for the line (`masked`),
+//! a harmonic $hk$ that lies within the window's main lobe ($\pm 2/T$) of a mains line the
+//! analysis subtracted ([`Analyser::mask`]) is left out of the sum (the sum of the others
+//! scaled by the harmonics' count over theirs) and of the estimate: what is left of the hum
+//! there is not the disk's, and a fundamental whose every harmonic is on the hum is no
+//! fundamental of the disk. A frame that follows a line already held, searched within a narrow
+//! band about its predicted pitch, is not masked: its short frames' lobes ($2/T$ grows as $T$
+//! shrinks near $t_0$) would cover most of the band below a few hundred hertz, and leave the
+//! disk's line read from its weakest harmonics or not at all.
 //!
 //! **Where on the line.** Each harmonic's peak bin $p$ is refined two ways:
 //! - by **reassignment** (the estimate used): for a sinusoid of frequency $f_0$,

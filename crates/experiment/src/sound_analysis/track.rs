@@ -3,9 +3,8 @@
 //! **Which line is followed.** The sound of a spinning disk is at the contact point's rate,
 //! $\Omega/2\pi$, with harmonics at $h\Omega/2\pi$ (see [`sound`](crate::synthetic::sound)).
 //! Each frame's fundamental is found by its harmonic family (each harmonic's power over its own
-//! noise floor) and refined by reassignment, with a parabola as the cross-check
-//! ([`spectrum`](crate::sound_analysis::spectrum)). Mains hum is subtracted first
-//! ([`hum`](crate::sound_analysis::mains::hum)) and its lines masked in every frame.
+//! noise floor) and refined by reassignment, with a parabola as the cross-check ([`spectrum`](crate::sound_analysis::spectrum)). Mains hum is
+//! subtracted first ([`hum`](crate::sound_analysis::mains::hum)).
 //!
 //! **Frames follow the pitch.** Frames are contiguous and do not overlap (their errors are
 //! independent). Until a line is held, frames of `search` seconds look for a fundamental
@@ -26,10 +25,6 @@
 //! `cycles` periods (the line smears near $t_0$) after four frames in a row held the line;
 //! that end counts as one smeared frame.
 //!
-//! **Bumps stepped over.** Handling bumps and clicks ([`bumps`](crate::sound_analysis::bumps))
-//! are set to the record's mean before the hum is fitted, and no frame holds one: a frame that
-//! would is started after it, its length and band from the line's motion before it.
-//!
 //! **Each point's uncertainty** is the noise's (from the frame's own power over its noise, see
 //! [`spectrum`](crate::sound_analysis::spectrum)) and the pitch's motion within the frame, in
 //! quadrature. The fit takes the rate's mean over the frame weighted by the window's energy
@@ -48,7 +43,6 @@
 //! (the disk may settle inside it), as smeared.
 
 use crate::error::ExperimentError;
-use crate::sound_analysis::bumps::find_bumps;
 use crate::sound_analysis::mains::hum::remove_hum;
 use crate::sound_analysis::spectrum::{Analyser, Estimate};
 use crate::trace::Trace;
@@ -122,8 +116,6 @@ pub struct FrequencyTrack {
     pub outside: usize,
     /// Mains lines subtracted (Hz).
     pub hum: Vec<f64>,
-    /// Handling bumps stepped over: each one's start and end (s).
-    pub bumps: Vec<(f64, f64)>,
 }
 
 impl FrequencyTrack {
@@ -177,13 +169,8 @@ pub fn frequency_track(
         });
     }
     let mut v = trace.v.clone();
-    let bumps = find_bumps(&v, fs);
-    let mean = v.iter().sum::<f64>() / v.len() as f64;
-    for &(a, b) in &bumps {
-        v[a..b].fill(mean);
-    }
     let hum = remove_hum(&mut v, fs);
-    let (frames, smeared_end) = march(&v, trace.t[0], fs, s, &hum, &bumps);
+    let (frames, smeared_end) = march(&v, trace.t[0], fs, s, &hum);
     let lens: Vec<f64> = frames.iter().map(|f| f.b - f.a).collect();
     let frame_span = (
         lens.iter().copied().fold(f64::INFINITY, f64::min),
@@ -251,10 +238,6 @@ pub fn frequency_track(
         smeared,
         outside,
         hum,
-        bumps: bumps
-            .iter()
-            .map(|&(a, b)| (trace.t[0] + a as f64 / fs, trace.t[0] + b as f64 / fs))
-            .collect(),
     })
 }
 
@@ -321,30 +304,22 @@ fn end_at_stall(frames: &[Frame], line: &mut [bool]) {
 /// Walks the record frame by frame (see the module's documentation); returns the frames and 1
 /// when the track ended because the line moved too fast for a frame (counted as one smeared
 /// frame), else 0.
-fn march(
-    v: &[f64],
-    t0: f64,
-    fs: f64,
-    s: &TrackSettings,
-    hum: &[f64],
-    bumps: &[(usize, usize)],
-) -> (Vec<Frame>, usize) {
+fn march(v: &[f64], t0: f64, fs: f64, s: &TrackSettings, hum: &[f64]) -> (Vec<Frame>, usize) {
     let mut an = Analyser::new(fs);
     an.mask(hum);
     let mut frames: Vec<Frame> = Vec::new();
     let mut pos = 0usize;
     let mut smeared = 0;
     loop {
-        let start = t0 + pos as f64 / fs;
         let (len_s, lo, hi) = match predict(&frames) {
             Some(motion) => {
                 // T and the pitch at the frame's middle, each from the other (two rounds).
                 let mut t = s.max_frame;
                 let mut f_mid = motion.f;
-                let limit = s.max_frame.min(0.5 * motion.remaining(start));
+                let limit = s.max_frame.min(0.5 * motion.remaining());
                 let mut allowed = t;
                 for _ in 0..3 {
-                    f_mid = motion.pitch(start + 0.5 * t);
+                    f_mid = motion.pitch(motion.end + 0.5 * t);
                     let fdot = motion.slope(f_mid);
                     allowed = (s.kappa / fdot.max(f64::MIN_POSITIVE)).sqrt();
                     t = allowed.min(limit);
@@ -373,20 +348,9 @@ fn march(
         if pos + len > v.len() {
             break;
         }
-        // A frame that would hold a bump starts after it; the line's motion carries over.
-        if let Some(&(_, end)) = bumps.iter().find(|(a, b)| *a < pos + len && *b > pos) {
-            pos = end;
-            continue;
-        }
         let band = (lo.max(5.0).max(2.5 / len_s), hi.min(2000.0));
         let searched = lo == 0.0;
-        let x = &v[pos..pos + len];
-        // Every frame masks the mains lines; a followed frame that the mask leaves nothing to
-        // read (a short frame's wide lobes near t0, or its clear harmonics too weak) is read
-        // unmasked (see `spectrum`).
-        let est = an
-            .fundamental(x, band, s.min_snr, true)
-            .or_else(|| (!searched).then(|| an.fundamental(x, band, s.min_snr, false))?);
+        let est = an.fundamental(&v[pos..pos + len], band, s.min_snr, searched);
         frames.push(Frame {
             a: t0 + pos as f64 / fs,
             b: t0 + (pos + len) as f64 / fs,
@@ -405,6 +369,7 @@ struct Motion {
     t: f64,
     fdot: f64,
     q: f64,
+    end: f64,
 }
 
 impl Motion {
@@ -413,11 +378,11 @@ impl Motion {
         self.fdot.abs() * (f / self.f).powf(self.q)
     }
 
-    /// The time from `start` to the singularity of $\dot f \propto f^q$ (for
+    /// The time from the last frame's end to the singularity of $\dot f \propto f^q$ (for
     /// $q > 1$, $t_0 - t = f/((q-1)\dot f)$); infinite for $q \le 1$.
-    fn remaining(&self, start: f64) -> f64 {
+    fn remaining(&self) -> f64 {
         if self.q > 1.0 && self.fdot > 0.0 {
-            self.f / ((self.q - 1.0) * self.fdot) - (start - self.t)
+            self.f / ((self.q - 1.0) * self.fdot) - (self.end - self.t)
         } else {
             f64::INFINITY
         }
@@ -476,6 +441,7 @@ fn predict(frames: &[Frame]) -> Option<Motion> {
         t: mid(q),
         fdot,
         q: exponent,
+        end: q.b,
     })
 }
 
