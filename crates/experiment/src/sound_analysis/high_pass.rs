@@ -70,8 +70,11 @@ struct Splits<'a> {
     y: Vec<f64>,
     /// The last corner's means of each harmonic ([`Splits::mean`]), kept: every datum of one
     /// evaluation asks for them at the same corner.
-    means: std::cell::RefCell<Option<(f64, [(f64, f64); HARMONICS])>>,
+    means: std::cell::RefCell<Option<(f64, Means)>>,
 }
+
+/// Each harmonic's mean lead and its derivative by the corner ([`Splits::mean`]), by harmonic.
+type Means = [(f64, f64); HARMONICS];
 
 impl<'a> Splits<'a> {
     fn new(bl: &'a [Block], omega: &'a [f64]) -> (Self, Vec<f64>) {
