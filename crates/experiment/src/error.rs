@@ -114,6 +114,16 @@ pub enum ExperimentError {
         /// The limit.
         limit: usize,
     },
+    /// A sound recording longer than the analysis holds.
+    #[error("{file}: more than {limit} samples per channel ({} s at {rate} S/s), the most a sound recording may hold: cut it to the spin-down's last {} s, for example `ffmpeg -sseof -{} -i {file} cut.wav`, and analyse cut.wav", limit / (*rate).max(1) as usize, keep_s(*limit, *rate), keep_s(*limit, *rate))]
+    SoundTooLong {
+        /// The file.
+        file: String,
+        /// Its sample rate (S/s).
+        rate: u32,
+        /// The limit (samples per channel).
+        limit: usize,
+    },
     /// A unit in a header this reader does not know.
     #[error("{file}:{line}:{column}: unknown unit \"{unit}\" in the header: write the time in s, ms or us and the signal in V or mV (or no unit)")]
     UnknownUnit {
@@ -228,6 +238,12 @@ impl ExperimentError {
 }
 
 /// `span / noise` in words for a message, `-` when the noise is zero.
+/// The seconds of a recording at `rate` S/s to keep under `limit` samples: the whole seconds
+/// below the limit, less one for the cut's slack.
+fn keep_s(limit: usize, rate: u32) -> usize {
+    (limit / rate.max(1) as usize).saturating_sub(1).max(1)
+}
+
 fn ratio(span: f64, noise: f64) -> String {
     if noise > 0.0 {
         format!("{:.1}", span / noise)

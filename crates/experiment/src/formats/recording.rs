@@ -181,9 +181,9 @@ fn decode_compressed(
         .n_frames
         .is_some_and(|n| n > MAX_SOUND_SAMPLES as u64)
     {
-        return Err(ExperimentError::TooManySamples {
+        return Err(ExperimentError::SoundTooLong {
             file: file.into(),
-            line: 0,
+            rate: params.sample_rate.unwrap_or(0),
             limit: MAX_SOUND_SAMPLES,
         });
     }
@@ -215,9 +215,9 @@ fn decode_compressed(
         sb.copy_interleaved_ref(buf);
         out.extend(sb.samples().iter().map(|&x| f64::from(x)));
         if out.len() > MAX_SOUND_SAMPLES * channels.max(1) {
-            return Err(ExperimentError::TooManySamples {
+            return Err(ExperimentError::SoundTooLong {
                 file: file.into(),
-                line: 0,
+                rate,
                 limit: MAX_SOUND_SAMPLES,
             });
         }

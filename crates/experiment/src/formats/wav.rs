@@ -62,9 +62,9 @@ pub(crate) fn decode_wav(
     }
     let frames = reader.duration() as usize;
     if frames > MAX_SOUND_SAMPLES {
-        return Err(ExperimentError::TooManySamples {
+        return Err(ExperimentError::SoundTooLong {
             file: file.into(),
-            line: 0,
+            rate: spec.sample_rate,
             limit: MAX_SOUND_SAMPLES,
         });
     }

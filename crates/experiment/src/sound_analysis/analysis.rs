@@ -22,7 +22,7 @@ use crate::fit::least_squares::{solve, FitError, Problem, Scale};
 use crate::fit::plausibility::{Evidence, Plausibility, Points, Verdict, SOUND_MIN_FRAMES};
 use crate::sound_analysis::phase_blocks::{BlockSettings, Samples};
 use crate::sound_analysis::phase_fit::{fit_phase, PhaseFit};
-use crate::sound_analysis::refusal::SoundRefusal;
+use crate::sound_analysis::refusal::{what_was_heard, SoundRefusal};
 use crate::sound_analysis::track::{frequency_track, FrequencyTrack, TrackSettings};
 use crate::sound_analysis::turn_count::TurnCount;
 use crate::trace::{Trace, Truth};
@@ -161,10 +161,11 @@ pub fn analyze_sound_keeping_track(
     };
     work.stage("fitting eq 79").map_err(|e| keep(e.into()))?;
     let file = trace.source.clone();
+    let heard = what_was_heard(&track);
     let refuse = |reason: String| {
         keep(ExperimentError::Refused {
             file: file.clone(),
-            reason,
+            reason: format!("{reason}; {heard}"),
         })
     };
     let pts = &track.points;

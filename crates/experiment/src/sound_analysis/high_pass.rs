@@ -68,7 +68,13 @@ struct Splits<'a> {
     /// (block, harmonic h) of each datum.
     at: Vec<(usize, usize)>,
     y: Vec<f64>,
+    /// The last corner's means of each harmonic ([`Splits::mean`]), kept: every datum of one
+    /// evaluation asks for them at the same corner.
+    means: std::cell::RefCell<Option<(f64, Means)>>,
 }
+
+/// Each harmonic's mean lead and its derivative by the corner ([`Splits::mean`]), by harmonic.
+type Means = [(f64, f64); HARMONICS];
 
 impl<'a> Splits<'a> {
     fn new(bl: &'a [Block], omega: &'a [f64]) -> (Self, Vec<f64>) {
@@ -82,7 +88,34 @@ impl<'a> Splits<'a> {
                 }
             }
         }
-        (Self { bl, omega, at, y }, var)
+        let means = std::cell::RefCell::new(None);
+        (
+            Self {
+                bl,
+                omega,
+                at,
+                y,
+                means,
+            },
+            var,
+        )
+    }
+
+    /// [`Splits::mean`] of harmonic `h` at corner `wc`, from the kept means when they are
+    /// `wc`'s (the same numbers, computed once per corner).
+    fn mean_at(&self, h: usize, wc: f64) -> (f64, f64) {
+        let mut kept = self.means.borrow_mut();
+        match *kept {
+            Some((c, m)) if c.to_bits() == wc.to_bits() => m[h - 1],
+            _ => {
+                let mut m = [(f64::NAN, f64::NAN); HARMONICS];
+                for (j, mj) in m.iter_mut().enumerate().skip(1) {
+                    *mj = self.mean(j + 1, wc);
+                }
+                *kept = Some((wc, m));
+                m[h - 1]
+            }
+        }
     }
 
     /// The weighted mean of $g_h$ (and of its derivative) over the blocks holding `h`.
@@ -108,7 +141,7 @@ impl Problem<1> for Splits<'_> {
     fn model(&self, p: &SVector<f64, 1>, i: usize) -> (f64, SVector<f64, 1>) {
         let (k, h) = self.at[i];
         let (gv, dg) = g(h, p[0], self.omega[k]);
-        let (m, dm) = self.mean(h, p[0]);
+        let (m, dm) = self.mean_at(h, p[0]);
         (gv - m, SVector::<f64, 1>::new(dg - dm))
     }
     fn rows(&self, _p: &SVector<f64, 1>) -> Vec<Row> {

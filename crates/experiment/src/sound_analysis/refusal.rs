@@ -4,7 +4,54 @@
 
 use crate::error::ExperimentError;
 use crate::sound_analysis::track::FrequencyTrack;
+use std::f64::consts::TAU;
 use std::path::{Path, PathBuf};
+
+/// The span of the disk's line (s) below which a refusal advises recording more of the spin:
+/// eq 79's rate must rise by half across the frames fitted, which takes a second or more of the
+/// line at the paper's law.
+const SHORT_LINE_S: f64 = 2.0;
+
+/// What the pitch track heard, for a refusal's message: where the disk's line was followed (or
+/// that no line stood out of the noise), the mains lines subtracted, and what to do.
+pub fn what_was_heard(track: &FrequencyTrack) -> String {
+    let hum = if track.hum.is_empty() {
+        String::new()
+    } else {
+        let lines: Vec<String> = track.hum.iter().map(|h| format!("{h:.1}")).collect();
+        format!("; mains hum at {} Hz was subtracted", lines.join(", "))
+    };
+    let (Some(p), Some(q)) = (track.points.first(), track.points.last()) else {
+        return format!(
+            "in none of the {} frames did a line of the disk stand out of the noise between 5 Hz \
+             and 2 kHz{hum}: record closer to the disk in a quieter room, with the phone's noise \
+             suppression off where it has the setting (a line far below a phone's high-pass, \
+             often 50-200 Hz, is faint: an external microphone or a recorder app without it \
+             hears it)",
+            track.frames
+        );
+    };
+    let span = q.b - p.a;
+    let heard = format!(
+        "the disk's line was followed over {span:.2} s, from {:.1} Hz at {:.2} s to {:.1} Hz at \
+         {:.2} s{hum}",
+        p.omega / TAU,
+        p.a,
+        q.omega / TAU,
+        q.b
+    );
+    let advice = if span < SHORT_LINE_S {
+        "record the whole spin, starting before the disk is released, and spin it longer (a \
+         heavier disk, a smoother and harder surface): the fit needs the line over a rise of \
+         half its pitch"
+    } else if !track.hum.is_empty() {
+        "record closer to the disk, on battery and away from mains-powered devices, so that its \
+         line stands above the hum"
+    } else {
+        "record closer to the disk, away from other sounds"
+    };
+    format!("{heard}: {advice}")
+}
 
 /// Why a sound analysis was refused, and the pitch track it had made, when it had made one.
 #[derive(Debug)]
