@@ -13,6 +13,8 @@
 //!    prefix operator, which Chromium sets tight against its operand as TeX does.
 //! 3. **Solidus.** `\beta/2` in an exponent is spaced like a binary operator; TeX sets `/` as an
 //!    ordinary symbol, so its spaces are set to zero.
+//! 4. **Mu.** `\mu` comes out as U+00B5, the micro sign of units; in mathematics it is the Greek
+//!    letter U+03BC ([`greek_mu`]).
 //!
 //! Accents (`\dot\alpha`, `\hat{\mathbf{1}}`, `\vec\omega`), primes (`\alpha'`), `\left( \right)`
 //! and subscripts on bold vectors (`\mathbf{r}_{\mathrm{cm}}`) come out well formed already, and
@@ -140,10 +142,20 @@ fn write_node(n: roxmltree::Node, out: &mut String, root: bool) {
         if c.is_element() {
             write_node(c, out, false);
         } else if c.is_text() {
-            out.push_str(&escape_html(c.text().unwrap_or("")));
+            out.push_str(&escape_html(&greek_mu(c.text().unwrap_or(""))));
         }
     }
     close(tag, out);
+}
+
+/// `s` with the micro sign (U+00B5), which pulldown-latex writes for `\mu`, as the Greek
+/// letter mu (U+03BC) that TeX sets for it.
+pub fn greek_mu(s: &str) -> std::borrow::Cow<'_, str> {
+    if s.contains('\u{b5}') {
+        s.replace('\u{b5}', "\u{3bc}").into()
+    } else {
+        s.into()
+    }
 }
 
 fn open(n: roxmltree::Node, out: &mut String, root: bool, extra: &[(&str, &str)]) {
@@ -213,6 +225,21 @@ mod tests {
     fn renders_mathml_with_its_source() {
         let m = clean(r"\Omega_0^2 = \frac{g}{a k \sin\alpha_0}");
         assert!(m.contains("<mfrac>") && m.contains("annotation"), "{m}");
+    }
+
+    #[test]
+    fn mu_is_the_greek_letter_not_the_micro_sign() {
+        // Guards the repair's reason: pulldown-latex writes the micro sign for `\mu`.
+        let mut raw = String::new();
+        let storage = Storage::new();
+        let parser = Parser::new(r"\mu", &storage);
+        push_mathml(&mut raw, parser, RenderConfig::default()).unwrap();
+        assert!(raw.contains('\u{b5}'), "{raw}");
+        let m = clean(r"\mu_k < \mu");
+        assert!(
+            !m.contains('\u{b5}') && m.matches('\u{3bc}').count() == 2,
+            "{m}"
+        );
     }
 
     #[test]

@@ -134,7 +134,9 @@ fn element(events: &[Event<'_>], at: &mut usize) -> Option<Node> {
 fn leaf(content: &Content<'_>) -> Node {
     match content {
         Content::Text(t) | Content::Number(t) | Content::Function(t) => Node::Word(t.to_string()),
-        Content::Ordinary { content, .. } => Node::Letter(content.to_string()),
+        Content::Ordinary { content, .. } => {
+            Node::Letter(crate::mathml::greek_mu(&content.to_string()).into_owned())
+        }
         Content::LargeOp { content, .. } => Node::Letter(content.to_string()),
         Content::BinaryOp { content: '/', .. } => Node::Mark("/".to_string()),
         Content::BinaryOp { content, .. } => Node::Operator(match content {
@@ -379,6 +381,7 @@ mod tests {
         assert_eq!(plain_math(r"\omega_1 \Omega"), "ω₁ Ω");
         assert_eq!(plain_math(r"\ddot\alpha"), "α̈");
         assert_eq!(plain_math(r"\Omega^{\beta+3}"), "Ω^(β+3)");
+        assert_eq!(plain_math(r"\mu_k"), "\u{3bc}ₖ");
     }
 
     #[test]
