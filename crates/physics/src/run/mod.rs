@@ -1,5 +1,6 @@
 //! Running a scene: build the model with only the states it needs, integrate, record.
 
+mod contact_watch;
 mod csv;
 pub mod sliding;
 mod table;
@@ -14,6 +15,7 @@ use crate::dispatch::{dispatch, problem, Visit};
 use crate::model::Model;
 use crate::scene::Scene;
 use crate::solve::{held_samples, solve, Ending, SettingsError, State};
+use contact_watch::ContactWatch;
 
 /// Runs a scene and holds its rows in [`Run::rows`]. `progress` receives the simulated time
 /// now and then. A held run records at most [`budget::MAX_ROWS`] rows: a scene that samples
@@ -81,7 +83,16 @@ impl Visit for Integrate<'_, '_> {
 
     fn visit<M: Model<N>, const N: usize>(self, model: &M, scene: &Scene) -> Self::Out {
         let y0 = model.state(&scene.start);
-        let mut recorder = Recorder::new(model, scene, &y0, self.sink);
+        // A sampled run looks for a loss of contact at its steps' ends and only then at the
+        // rows of the steps next to a negative end; an unsampled run's rows are its steps.
+        let watch = scene.sample.map(|_| ContactWatch::new(model, &y0));
+        let mut recorder = Recorder::new(model, scene, &y0, self.sink, watch.as_ref());
+        let mut scratch = Vec::new();
+        let mut step_end = |_: f64, y: &State<N>| {
+            if let Some(w) = &watch {
+                w.step_end(model, y, &mut scratch);
+            }
+        };
         let mut take = |t: f64, y: &State<N>| recorder.take(t, y);
         let mut p = problem(model, scene, y0, scene.stop.time);
         p.progress = self.progress;
@@ -89,6 +100,7 @@ impl Visit for Integrate<'_, '_> {
         p.dense_samples = self.dense;
         if scene.sample.is_some() {
             p.on_sample = Some(&mut take);
+            p.on_step = Some(&mut step_end);
         }
         let sol = solve(p, &scene.settings)?;
         let rows = sol.t.len() as u64;
@@ -121,13 +133,21 @@ struct Recorder<'m, 's, M> {
     contact_lost: Option<ContactLost>,
     /// Whether the next row may count as a loss of contact.
     checks_contact: bool,
+    /// Which rows of a sampled run to check for a loss of contact (every row without it).
+    watch: Option<&'m ContactWatch>,
     recorded: u64,
     row: Vec<f64>,
     sink: RowSink<'s>,
 }
 
 impl<'m, 's, M> Recorder<'m, 's, M> {
-    fn new<const N: usize>(model: &'m M, scene: &'m Scene, y0: &State<N>, sink: RowSink<'s>) -> Self
+    fn new<const N: usize>(
+        model: &'m M,
+        scene: &'m Scene,
+        y0: &State<N>,
+        sink: RowSink<'s>,
+        watch: Option<&'m ContactWatch>,
+    ) -> Self
     where
         M: Model<N>,
     {
@@ -141,6 +161,7 @@ impl<'m, 's, M> Recorder<'m, 's, M> {
             energy_change: 0.0,
             contact_lost: None,
             checks_contact: true,
+            watch,
             recorded: 0,
             sink,
         }
@@ -154,7 +175,9 @@ impl<'m, 's, M> Recorder<'m, 's, M> {
     where
         M: Model<N>,
     {
-        let looks = self.contact_lost.is_none() && self.checks_contact;
+        let looks = self.contact_lost.is_none()
+            && self.checks_contact
+            && self.watch.is_none_or(ContactWatch::armed);
         self.row.clear();
         self.row.push(t);
         let shared = self
@@ -162,6 +185,9 @@ impl<'m, 's, M> Recorder<'m, 's, M> {
             .record_row(y, &self.scene.record, looks, &mut self.row);
         if let Some(f) = shared.normal_force.filter(|&f| looks && f < 0.0) {
             self.contact_lost = Some(ContactLost { t, normal_force: f });
+            if let Some(w) = self.watch {
+                w.mark_found();
+            }
         }
         (self.sink)(&self.row);
         self.recorded += 1;
