@@ -12,7 +12,7 @@ use crate::solve::Solution;
 
 use crate::budget;
 use crate::dispatch::{dispatch, problem, Visit};
-use crate::model::Model;
+use crate::model::{Model, Quantity};
 use crate::scene::Scene;
 use crate::solve::{held_samples, solve, Ending, SettingsError, State};
 use contact_watch::ContactWatch;
@@ -84,13 +84,17 @@ impl Visit for Integrate<'_, '_> {
     fn visit<M: Model<N>, const N: usize>(self, model: &M, scene: &Scene) -> Self::Out {
         let y0 = model.state(&scene.start);
         // A sampled run looks for a loss of contact at its steps' ends and only then at the
-        // rows of the steps next to a negative end; an unsampled run's rows are its steps.
-        let watch = scene.sample.map(|_| ContactWatch::new(model, &y0));
+        // rows of the steps next to a negative end; an unsampled run's rows are its steps, and
+        // a run that records the normal force computes it at every row anyway.
+        let watch = scene
+            .sample
+            .filter(|_| !scene.record.contains(&Quantity::NormalForce))
+            .map(|dt| ContactWatch::new(model, 0.0, &y0, dt));
         let mut recorder = Recorder::new(model, scene, &y0, self.sink, watch.as_ref());
         let mut scratch = Vec::new();
-        let mut step_end = |_: f64, y: &State<N>| {
+        let mut step_end = |t: f64, y: &State<N>| {
             if let Some(w) = &watch {
-                w.step_end(model, y, &mut scratch);
+                w.step_end(model, t, y, &mut scratch);
             }
         };
         let mut take = |t: f64, y: &State<N>| recorder.take(t, y);
@@ -124,7 +128,7 @@ impl Visit for Integrate<'_, '_> {
 
 /// Turns the states of a run into its rows, one at a time, keeping the energy's largest change
 /// and the first loss of contact.
-struct Recorder<'m, 's, M> {
+struct Recorder<'m, 's, M, const N: usize> {
     model: &'m M,
     scene: &'m Scene,
     columns: Vec<String>,
@@ -134,23 +138,20 @@ struct Recorder<'m, 's, M> {
     /// Whether the next row may count as a loss of contact.
     checks_contact: bool,
     /// Which rows of a sampled run to check for a loss of contact (every row without it).
-    watch: Option<&'m ContactWatch>,
+    watch: Option<&'m ContactWatch<N>>,
     recorded: u64,
     row: Vec<f64>,
     sink: RowSink<'s>,
 }
 
-impl<'m, 's, M> Recorder<'m, 's, M> {
-    fn new<const N: usize>(
+impl<'m, 's, M: Model<N>, const N: usize> Recorder<'m, 's, M, N> {
+    fn new(
         model: &'m M,
         scene: &'m Scene,
         y0: &State<N>,
         sink: RowSink<'s>,
-        watch: Option<&'m ContactWatch>,
-    ) -> Self
-    where
-        M: Model<N>,
-    {
+        watch: Option<&'m ContactWatch<N>>,
+    ) -> Self {
         let columns = columns(scene);
         Self {
             model,
@@ -171,10 +172,7 @@ impl<'m, 's, M> Recorder<'m, 's, M> {
     /// largest change) and the normal force (for the row and for the loss of contact, looked
     /// for until the first) are shared ([`Model::record_row`]), so a row costs what its
     /// quantities cost.
-    fn take<const N: usize>(&mut self, t: f64, y: &State<N>)
-    where
-        M: Model<N>,
-    {
+    fn take(&mut self, t: f64, y: &State<N>) {
         let looks = self.contact_lost.is_none()
             && self.checks_contact
             && self.watch.is_none_or(ContactWatch::armed);
@@ -195,10 +193,7 @@ impl<'m, 's, M> Recorder<'m, 's, M> {
         self.energy_change = self.energy_change.max(((energy - self.e0) / self.e0).abs());
     }
 
-    fn finish<const N: usize>(self, sol: &Solution<N>) -> Run
-    where
-        M: Model<N>,
-    {
+    fn finish(self, sol: &Solution<N>) -> Run {
         let (_, y_end) = sol.last();
         Run {
             scene: self.scene.name.clone(),
