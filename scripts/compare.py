@@ -20,12 +20,14 @@ component, relative to the largest magnitude that component reaches on the refer
 final time). It prints the machine, the date, a work-precision table and the ratios at equal
 error, and writes the table (JSON) and a figure (error against time and against evaluations).
 
-Then the same with sampling on both sides: the tool's scene run as `simulate` runs it, one row
-every millisecond with its recorded quantities (the Rust side's `sampled` part), against
-solve_ivp DOP853 with `t_eval` on the same grid; each side's largest error in alpha over the
-rows against the same reference, the ratio of times at equal alpha error.
+Then the same with sampling on both sides, one row every millisecond, each side doing the same
+work, two ways: the states alone at the rows (the tool's solver layer sampling on its dense
+output, against solve_ivp DOP853 with `t_eval` on the same grid), and with the quantities the
+tool's scene records (the scene run as `simulate` runs it, against `t_eval` followed by the
+energy, its largest change and the normal force in numpy); each side's largest error in alpha
+over the rows against the same reference, the ratio of times at equal alpha error.
 
-Usage: compare.py [--quick] [--out DIR] [--repeats N]
+Usage: compare.py [--quick] [--sampled-only] [--out DIR] [--repeats N]
 """
 
 import argparse
@@ -152,9 +154,36 @@ def python_runs(data, repeats, budget):
     return rows
 
 
+def recorded_quantities(sol, disk):
+    """What the tool's sampled run records beside the states, in numpy over all rows at once:
+    eq 26's energy E = m a^2 / 2 [(2k+1) w^2 + (k+1) alpha_dot^2 + k Omega^2 sin^2 alpha
+    + 2 (g/a) sin alpha] at each row and its largest relative change from the start, and the
+    normal force F_z (eqs 20, 23-25) at each row, whose first negative value is a loss of
+    contact (the tool looks at its steps' ends and then at the rows of the steps next to a
+    negative one; numpy has no steps to look at, so every row)."""
+    import numpy as np
+
+    k, a, m, g = disk["k"], disk["a"], disk["m"], disk["g"]
+    alpha, alpha_dot, om, w = sol.y
+    s, c = np.sin(alpha), np.cos(alpha)
+    energy = 0.5 * m * a * a * ((2.0 * k + 1.0) * w * w + (k + 1.0) * alpha_dot * alpha_dot
+                                + k * om * om * s * s + 2.0 * (g / a) * s)
+    change = np.max(np.abs((energy - energy[0]) / energy[0]))
+    alpha_ddot = (k * om * om * s * c + (2.0 * k + 1.0) * w * om * s - (g / a) * c) / (k + 1.0)
+    acc1 = -a * alpha_ddot + a * w * om * s
+    acc3 = a * alpha_dot * alpha_dot - a * w * om * c
+    f1 = m * acc1 - m * g * c
+    f3 = m * acc3 - m * g * s
+    fz = -c * f1 - s * f3
+    lost = np.flatnonzero(fz < 0.0)
+    return energy, change, (lost[0] if lost.size else None)
+
+
 def sampled_runs(data, repeats, budget):
-    """solve_ivp DOP853 with t_eval on the Rust side's grid, timed with its sampling, and its
-    largest error in alpha over the rows against the Rust side's reference."""
+    """solve_ivp DOP853 with t_eval on the Rust side's grid, timed with its sampling two ways
+    (the states alone, as t_eval returns them; then with the quantities the tool's run records,
+    in numpy), and its largest error in alpha over the rows against the Rust side's
+    reference."""
     import numpy as np
 
     sampled = data["sampled"]
@@ -172,38 +201,57 @@ def sampled_runs(data, repeats, budget):
             return solve_ivp(f, (0.0, data["t_end"]), y0, method="DOP853", rtol=rtol,
                              atol=atol, t_eval=grid)
 
+        def ivp_recorded(ivp=ivp):
+            sol = ivp()
+            return sol, recorded_quantities(sol, data["disk"])
+
         wall, n, sol = timed(ivp, repeats, budget)
         if not sol.success or len(sol.t) != len(grid):
             continue
+        wall_recorded, n_recorded, _ = timed(ivp_recorded, repeats, budget)
         rows.append({
             "solver": "solve_ivp DOP853 t_eval", "rtol": rtol, "atol": atol,
             "evaluations": int(sol.nfev), "wall_seconds": wall, "runs": n,
+            "recorded_wall_seconds": wall_recorded, "recorded_runs": n_recorded,
             "alpha_error": float(np.max(np.abs(sol.y[0] - alpha_ref))),
         })
     return rows
 
 
 def sampled_table(data, rows):
-    ours = [dict(p, final_error=p["alpha_error"]) for p in data["sampled"]["rust"]]
+    """Two comparisons at equal error in alpha, each side doing the same work: the states
+    alone at the rows (the tool's solver layer against t_eval), and the recorded quantities
+    too (the tool's run as simulate runs it against t_eval and the same quantities in
+    numpy)."""
+    rust = [dict(p, final_error=p["alpha_error"]) for p in data["sampled"]["rust"]]
     print()
     print(f"sampled every {data['sampled']['sample']} s ({len(data['sampled']['t'])} rows), "
           f"error = largest |alpha - reference| over the rows")
-    print(f"{'solver':<26}{'rtol':>7}{'wall [s]':>11}{'alpha error':>13}{'tool time@err':>15}"
-          f"{'time ratio':>12}")
-    for p in ours:
-        print(f"{'rolling-disk simulate':<26}{p['rtol']:>7.0e}{p['wall_seconds']:>11.3e}"
-              f"{p['alpha_error']:>13.1e}")
+    print(f"{'solver':<34}{'rtol':>7}{'states [s]':>12}{'recorded [s]':>14}{'alpha error':>13}")
+    for p in rust:
+        print(f"{'rolling-disk':<34}{p['rtol']:>7.0e}{p['states_wall_seconds']:>12.3e}"
+              f"{p['wall_seconds']:>14.3e}{p['alpha_error']:>13.1e}")
     for r in rows:
-        wt = at_error(ours, r["alpha_error"], "wall_seconds")
-        r["tool_seconds_at_equal_error"] = wt
-        r["time_ratio_at_equal_error"] = r["wall_seconds"] / wt
-        print(f"{r['solver']:<26}{r['rtol']:>7.0e}{r['wall_seconds']:>11.3e}"
-              f"{r['alpha_error']:>13.1e}{wt:>15.3e}{r['time_ratio_at_equal_error']:>11.1f}x")
+        print(f"{r['solver']:<34}{r['rtol']:>7.0e}{r['wall_seconds']:>12.3e}"
+              f"{r['recorded_wall_seconds']:>14.3e}{r['alpha_error']:>13.1e}")
+    print(f"{'at equal alpha error':<34}{'rtol':>7}{'states':>12}{'recorded':>14}")
+    for r in rows:
+        states = at_error(rust, r["alpha_error"], "states_wall_seconds")
+        recorded = at_error(rust, r["alpha_error"], "wall_seconds")
+        r["tool_states_seconds_at_equal_error"] = states
+        r["tool_seconds_at_equal_error"] = recorded
+        r["states_time_ratio_at_equal_error"] = r["wall_seconds"] / states
+        r["time_ratio_at_equal_error"] = r["recorded_wall_seconds"] / recorded
+        print(f"{'solve_ivp / rolling-disk':<34}{r['rtol']:>7.0e}"
+              f"{r['states_time_ratio_at_equal_error']:>11.1f}x"
+              f"{r['time_ratio_at_equal_error']:>13.1f}x")
     sel = [r for r in rows if any(abs(r["rtol"] - x) < 1e-3 * x for x in RTOLS)]
     if sel:
-        ratios = ", ".join(f"{r['time_ratio_at_equal_error']:.0f}x at rtol {r['rtol']:.0e}"
-                           for r in sel)
-        print(f"solve_ivp DOP853 sampled, at equal alpha error: {ratios} the tool's time")
+        for key, what in [("states_time_ratio_at_equal_error", "the states alone"),
+                          ("time_ratio_at_equal_error", "with the recorded quantities")]:
+            ratios = ", ".join(f"{r[key]:.0f}x at rtol {r['rtol']:.0e}" for r in sel)
+            print(f"solve_ivp DOP853 sampled, {what}, at equal alpha error: {ratios} the "
+                  f"tool's time")
 
 
 def at_error(points, err, key):
@@ -260,6 +308,8 @@ def main():
     ap.add_argument("--quick", action="store_true", help="time each point once")
     ap.add_argument("--out", default=os.path.join(ROOT, "target", "compare"))
     ap.add_argument("--repeats", type=int, default=15, help="most timed runs per Python point")
+    ap.add_argument("--sampled-only", action="store_true",
+                    help="only the sampled comparison (no unsampled runs on the Python side)")
     args = ap.parse_args()
     repeats, budget = (1, 0.0) if args.quick else (args.repeats, 2.0)
 
@@ -270,7 +320,7 @@ def main():
           f"Python {info['python']}, SciPy {info['scipy']}")
     print(f"scene {data['scene']}: {data['t_end']} s; reference {ref['settings']['method']} "
           f"rtol {ref['settings']['rtol']:.0e}, uncertainty {ref['uncertainty']:.1e}")
-    rows = python_runs(data, repeats, budget)
+    rows = [] if args.sampled_only else python_runs(data, repeats, budget)
     rust = data["rust"]
     ours = [p for p in rust if p["method"] == "dop853"]
 

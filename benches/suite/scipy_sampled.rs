@@ -1,14 +1,25 @@
-//! The sampled side of `scripts/compare`: the benchmark scene run as `simulate` runs it, one
-//! row every [`SAMPLE`] seconds with the scene's recorded quantities
-//! ([`physics::run::run_streamed`], rows discarded), over a tolerance sweep, each run's error
-//! in $\alpha$ measured over every row against a reference sampled on the same grid. SciPy's
-//! `solve_ivp` is timed the same way by `scripts/compare.py` (its `t_eval` on this grid), and
-//! the two compared at equal error in $\alpha$, sampling included on both sides.
+//! The sampled side of `scripts/compare`, over a tolerance sweep, each run's error in $\alpha$
+//! measured over every row against a reference sampled on the same grid, one row every
+//! [`SAMPLE`] seconds, timed two ways so that each compares with a SciPy side doing the same
+//! work:
+//!
+//! - the states alone at the rows, as `solve_ivp`'s `t_eval` returns them: the solver layer's
+//!   sampled run (`physics::solve::solve`, each sample from the dense output handed to a sink
+//!   and discarded), against `solve_ivp` with `t_eval`;
+//! - the benchmark scene run as `simulate` runs it, with its recorded quantities (the state and
+//!   the energy, the energy's largest change, the loss of contact looked for:
+//!   [`physics::run::run_streamed`], rows discarded), against `solve_ivp` with `t_eval` followed
+//!   by the same quantities in numpy (`scripts/compare.py`).
+//!
+//! The two sides are compared at equal error in $\alpha$, sampling included on both.
 
+use physics::dispatch::{dispatch, problem, Visit};
+use physics::model::Model;
 use physics::run::run_streamed;
 use physics::scene::Scene;
-use physics::solve::{Method, Settings};
+use physics::solve::{solve, Method, Settings, State};
 use serde_json::{json, Value};
+use std::hint::black_box;
 use std::time::Instant;
 use studies::precision::Timing;
 
@@ -42,8 +53,6 @@ fn alpha_rows(scene: &Scene) -> (Vec<f64>, Vec<f64>) {
 /// The reference's $\alpha$ on the grid: each row landed on by the integration
 /// (`Problem::dense_samples` off), at [`REFERENCE_RTOL`], atol 1e-2 rtol.
 fn reference(scene: &Scene) -> (Vec<f64>, Vec<f64>) {
-    use physics::dispatch::{dispatch, problem, Visit};
-    use physics::model::Model;
     use physics::solve::solve_with;
     struct Landed;
     impl Visit for Landed {
@@ -60,9 +69,51 @@ fn reference(scene: &Scene) -> (Vec<f64>, Vec<f64>) {
     dispatch(scene, Landed)
 }
 
+/// The states of a run of `scene` at its samples and nothing else, as `solve_ivp`'s `t_eval`
+/// returns them: its model integrated by the solver layer with the scene's events, each sample
+/// taken from the dense output and handed to a sink; returns how many samples were made.
+fn states_only(scene: &Scene) -> u64 {
+    struct States;
+    impl Visit for States {
+        type Out = u64;
+        fn visit<M: Model<N>, const N: usize>(self, model: &M, scene: &Scene) -> u64 {
+            let y0 = model.state(&scene.start);
+            let mut samples = 0u64;
+            let mut sink = |t: f64, y: &State<N>| {
+                black_box((t, y));
+                samples += 1;
+            };
+            let mut p = problem(model, scene, y0, scene.stop.time);
+            p.sample = scene.sample;
+            p.on_sample = Some(&mut sink);
+            let sol = solve(p, &scene.settings).expect("the benchmark scene runs");
+            black_box(&sol);
+            samples + sol.t.len() as u64
+        }
+    }
+    dispatch(scene, States)
+}
+
+/// The median wall time of `run` (s) and how many runs it took, within `timing`'s budget.
+fn median_seconds(timing: &Timing, mut run: impl FnMut()) -> (f64, usize) {
+    let started = Instant::now();
+    let mut times = Vec::new();
+    while times.len() < timing.max_runs.max(1)
+        && (times.len() < timing.min_runs
+            || started.elapsed().as_secs_f64() < timing.budget_seconds)
+    {
+        let t0 = Instant::now();
+        run();
+        times.push(t0.elapsed().as_secs_f64());
+    }
+    times.sort_by(f64::total_cmp);
+    (times[times.len() / 2], times.len())
+}
+
 /// The sweep: for DOP853 at rtol 1e-5 to 1e-13 (atol 1e-2 rtol), the median wall time of a
-/// sampled run (rows and recorded quantities made, then discarded) and its largest error in
-/// $\alpha$ over the rows; with the reference's grid and $\alpha$ for the Python side.
+/// sampled run with its recorded quantities (rows made, then discarded) and of the states
+/// alone at the same rows, and its largest error in $\alpha$ over the rows; with the
+/// reference's grid and $\alpha$ for the Python side.
 pub fn sweep(scene: &Scene, timing: &Timing) -> Value {
     let (t_ref, alpha_ref) = reference(scene);
     let mut points = Vec::new();
@@ -82,22 +133,18 @@ pub fn sweep(scene: &Scene, timing: &Timing) -> Value {
             .zip(&alpha_ref)
             .map(|(a, r)| (a - r).abs())
             .fold(0.0, f64::max);
-        let started = Instant::now();
-        let mut times = Vec::new();
-        while times.len() < timing.max_runs.max(1)
-            && (times.len() < timing.min_runs
-                || started.elapsed().as_secs_f64() < timing.budget_seconds)
-        {
-            let t0 = Instant::now();
+        let recorded = median_seconds(timing, || {
             let mut rows = 0u64;
-            let mut sink = |row: &[f64]| rows += std::hint::black_box(row).len() as u64;
-            std::hint::black_box(run_streamed(&s, None, &mut sink).expect("runs"));
-            times.push(t0.elapsed().as_secs_f64());
-        }
-        times.sort_by(f64::total_cmp);
+            let mut sink = |row: &[f64]| rows += black_box(row).len() as u64;
+            black_box(run_streamed(&s, None, &mut sink).expect("runs"));
+        });
+        let states = median_seconds(timing, || {
+            black_box(states_only(&s));
+        });
         points.push(json!({
             "method": "dop853", "rtol": rtol, "atol": settings.atol,
-            "rows": t.len(), "wall_seconds": times[times.len() / 2], "runs": times.len(),
+            "rows": t.len(), "wall_seconds": recorded.0, "runs": recorded.1,
+            "states_wall_seconds": states.0, "states_runs": states.1,
             "alpha_error": alpha_error,
         }));
     }

@@ -1,5 +1,6 @@
 //! Running a scene: build the model with only the states it needs, integrate, record.
 
+mod contact_watch;
 mod csv;
 pub mod sliding;
 mod table;
@@ -11,9 +12,10 @@ use crate::solve::Solution;
 
 use crate::budget;
 use crate::dispatch::{dispatch, problem, Visit};
-use crate::model::Model;
+use crate::model::{Model, Quantity};
 use crate::scene::Scene;
 use crate::solve::{held_samples, solve, Ending, SettingsError, State};
+use contact_watch::ContactWatch;
 
 /// Runs a scene and holds its rows in [`Run::rows`]. `progress` receives the simulated time
 /// now and then. A held run records at most [`budget::MAX_ROWS`] rows: a scene that samples
@@ -81,7 +83,20 @@ impl Visit for Integrate<'_, '_> {
 
     fn visit<M: Model<N>, const N: usize>(self, model: &M, scene: &Scene) -> Self::Out {
         let y0 = model.state(&scene.start);
-        let mut recorder = Recorder::new(model, scene, &y0, self.sink);
+        // A sampled run looks for a loss of contact at its steps' ends and only then at the
+        // rows of the steps next to a negative end; an unsampled run's rows are its steps, and
+        // a run that records the normal force computes it at every row anyway.
+        let watch = scene
+            .sample
+            .filter(|_| !scene.record.contains(&Quantity::NormalForce))
+            .map(|dt| ContactWatch::new(model, 0.0, &y0, dt));
+        let mut recorder = Recorder::new(model, scene, &y0, self.sink, watch.as_ref());
+        let mut scratch = Vec::new();
+        let mut step_end = |t: f64, y: &State<N>| {
+            if let Some(w) = &watch {
+                w.step_end(model, t, y, &mut scratch);
+            }
+        };
         let mut take = |t: f64, y: &State<N>| recorder.take(t, y);
         let mut p = problem(model, scene, y0, scene.stop.time);
         p.progress = self.progress;
@@ -89,6 +104,7 @@ impl Visit for Integrate<'_, '_> {
         p.dense_samples = self.dense;
         if scene.sample.is_some() {
             p.on_sample = Some(&mut take);
+            p.on_step = Some(&mut step_end);
         }
         let sol = solve(p, &scene.settings)?;
         let rows = sol.t.len() as u64;
@@ -112,7 +128,7 @@ impl Visit for Integrate<'_, '_> {
 
 /// Turns the states of a run into its rows, one at a time, keeping the energy's largest change
 /// and the first loss of contact.
-struct Recorder<'m, 's, M> {
+struct Recorder<'m, 's, M, const N: usize> {
     model: &'m M,
     scene: &'m Scene,
     columns: Vec<String>,
@@ -121,16 +137,21 @@ struct Recorder<'m, 's, M> {
     contact_lost: Option<ContactLost>,
     /// Whether the next row may count as a loss of contact.
     checks_contact: bool,
+    /// Which rows of a sampled run to check for a loss of contact (every row without it).
+    watch: Option<&'m ContactWatch<N>>,
     recorded: u64,
     row: Vec<f64>,
     sink: RowSink<'s>,
 }
 
-impl<'m, 's, M> Recorder<'m, 's, M> {
-    fn new<const N: usize>(model: &'m M, scene: &'m Scene, y0: &State<N>, sink: RowSink<'s>) -> Self
-    where
-        M: Model<N>,
-    {
+impl<'m, 's, M: Model<N>, const N: usize> Recorder<'m, 's, M, N> {
+    fn new(
+        model: &'m M,
+        scene: &'m Scene,
+        y0: &State<N>,
+        sink: RowSink<'s>,
+        watch: Option<&'m ContactWatch<N>>,
+    ) -> Self {
         let columns = columns(scene);
         Self {
             model,
@@ -141,6 +162,7 @@ impl<'m, 's, M> Recorder<'m, 's, M> {
             energy_change: 0.0,
             contact_lost: None,
             checks_contact: true,
+            watch,
             recorded: 0,
             sink,
         }
@@ -150,11 +172,10 @@ impl<'m, 's, M> Recorder<'m, 's, M> {
     /// largest change) and the normal force (for the row and for the loss of contact, looked
     /// for until the first) are shared ([`Model::record_row`]), so a row costs what its
     /// quantities cost.
-    fn take<const N: usize>(&mut self, t: f64, y: &State<N>)
-    where
-        M: Model<N>,
-    {
-        let looks = self.contact_lost.is_none() && self.checks_contact;
+    fn take(&mut self, t: f64, y: &State<N>) {
+        let looks = self.contact_lost.is_none()
+            && self.checks_contact
+            && self.watch.is_none_or(ContactWatch::armed);
         self.row.clear();
         self.row.push(t);
         let shared = self
@@ -162,6 +183,9 @@ impl<'m, 's, M> Recorder<'m, 's, M> {
             .record_row(y, &self.scene.record, looks, &mut self.row);
         if let Some(f) = shared.normal_force.filter(|&f| looks && f < 0.0) {
             self.contact_lost = Some(ContactLost { t, normal_force: f });
+            if let Some(w) = self.watch {
+                w.mark_found();
+            }
         }
         (self.sink)(&self.row);
         self.recorded += 1;
@@ -169,10 +193,7 @@ impl<'m, 's, M> Recorder<'m, 's, M> {
         self.energy_change = self.energy_change.max(((energy - self.e0) / self.e0).abs());
     }
 
-    fn finish<const N: usize>(self, sol: &Solution<N>) -> Run
-    where
-        M: Model<N>,
-    {
+    fn finish(self, sol: &Solution<N>) -> Run {
         let (_, y_end) = sol.last();
         Run {
             scene: self.scene.name.clone(),

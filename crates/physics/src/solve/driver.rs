@@ -156,6 +156,7 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
     let mut s = Dop853::new(problem.dynamics, rtol, atol, t0, y0, t_end - t0);
     let origin = problem.sample_origin.unwrap_or(t0);
     let mut sink = problem.on_sample;
+    let mut on_step = problem.on_step.filter(|_| problem.sample.is_some());
     let mut sampler = problem
         .sample
         .map(|dt| Sampler::new(origin, dt, t0, sink.take(), problem.dense_samples));
@@ -190,6 +191,9 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
         if problem.events.iter().any(|e| (e.value)(&y_b) <= 0.0) {
             let d = s.dense();
             let (index, t_e, y_e) = locate(&problem.events, &d, t_a, t_b, y_b);
+            if let Some(on_step) = on_step.as_mut() {
+                on_step(t_e, &y_e);
+            }
             if let Some(sm) = sampler.as_mut() {
                 let mut extra = 0;
                 if sm.dense {
@@ -207,6 +211,9 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
                 name: problem.events[index].name.clone(),
                 t: t_e,
             };
+        }
+        if let Some(on_step) = on_step.as_mut() {
+            on_step(t_b, &y_b);
         }
         if let Some(sm) = sampler.as_mut() {
             if sm.due(t_b, t_end) {

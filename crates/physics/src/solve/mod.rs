@@ -97,6 +97,12 @@ pub struct Problem<'a, D, const N: usize> {
     /// [`Solution`] then holds only the last point (the end time or the event), which is not
     /// passed to the sink.
     pub on_sample: Option<Sink<'a, N>>,
+    /// Takes the end of every accepted step of a sampled run, each before the samples that
+    /// lie in that step go to [`Problem::on_sample`] (a step's samples are those after its
+    /// start and up to its end), so that a recorder can watch a quantity at the steps and
+    /// look closer only in the steps where it changes sign. A run stopped by an event passes
+    /// the located event's time and state as the end of its last step.
+    pub on_step: Option<Sink<'a, N>>,
     /// Take DOP853's samples from its dense output (a polynomial evaluation each; the default)
     /// instead of re-integrating each from the step before it. Such a run integrates at the
     /// tightened tolerances of [`driver::dense_tolerances`], so that its samples are as
@@ -122,6 +128,7 @@ impl<'a, D: Dynamics<N>, const N: usize> Problem<'a, D, N> {
             sample: None,
             sample_origin: None,
             on_sample: None,
+            on_step: None,
             dense_samples: true,
             progress: None,
             project: None,

@@ -313,6 +313,7 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
                 &deadline,
                 &mut stats,
                 problem.on_sample,
+                problem.on_step,
             );
             if !complete && ending.is_complete() {
                 ending = Ending::WallTime {
@@ -352,7 +353,8 @@ fn locate<D: Dynamics<N>, const N: usize>(
 /// Samples a solution on the grid `origin + n dt` from its first step on, each sample
 /// re-integrated from the last accepted step before it. The final point (end time or event) is kept as the last sample.
 /// The flag is false when the wall-time budget ran out first (the samples then stop there).
-/// With a sink the samples go there and only the final point is returned.
+/// With a sink the samples go there and only the final point is returned. `on_step` takes each
+/// step's end before the samples that lie in that step (see [`super::Problem::on_step`]).
 #[allow(clippy::too_many_arguments)]
 fn resample<const N: usize, D: Dynamics<N>>(
     dynamics: &D,
@@ -364,6 +366,7 @@ fn resample<const N: usize, D: Dynamics<N>>(
     deadline: &Deadline,
     stats: &mut Stats,
     mut sink: Option<Sink<'_, N>>,
+    mut on_step: Option<Sink<'_, N>>,
 ) -> (Vec<f64>, Vec<State<N>>, bool) {
     let Some((&t_last, &y_last)) = ts.last().zip(ys.last()) else {
         return (Vec::new(), Vec::new(), true);
@@ -371,6 +374,8 @@ fn resample<const N: usize, D: Dynamics<N>>(
     let mut out_t = Vec::new();
     let mut out_y = Vec::new();
     let mut j = 0;
+    // The next step whose end goes to `on_step`.
+    let mut reported = 1;
     let t0 = ts[0];
     let mut n = ((t0 - origin) / dt).floor().max(0.0) as u64;
     while origin + dt * (n as f64) < t0 {
@@ -389,6 +394,13 @@ fn resample<const N: usize, D: Dynamics<N>>(
         while j + 1 < ts.len() && ts[j + 1] <= t {
             j += 1;
         }
+        // The steps up to the one that holds t: the first, and each that starts before t.
+        if let Some(on_step) = on_step.as_mut() {
+            while reported < ts.len() && (reported == 1 || ts[reported - 1] < t) {
+                on_step(ts[reported], &ys[reported]);
+                reported += 1;
+            }
+        }
         let y = advance(dynamics, settings, ts[j], ys[j], t - ts[j], stats);
         match sink.as_mut() {
             Some(sink) => sink(t, &y),
@@ -398,6 +410,11 @@ fn resample<const N: usize, D: Dynamics<N>>(
             }
         }
         n += 1;
+    }
+    if let Some(on_step) = on_step.as_mut() {
+        for (t, y) in ts.iter().zip(ys).skip(reported) {
+            on_step(*t, y);
+        }
     }
     out_t.push(t_last);
     out_y.push(y_last);
