@@ -266,7 +266,8 @@ fn a_recording_stopped_while_the_disk_sounds_is_refused_with_record_until_silent
 /// recordings, only by recording a disk, which is analysed.
 #[test]
 fn sounds_that_are_not_a_spin_down_are_refused_naming_what_failed() {
-    let cases: [(&str, &dyn Fn(f64) -> f64, &[&str]); 3] = [
+    type Case<'a> = (&'a str, &'a dyn Fn(f64) -> f64, &'a [&'a str]);
+    let cases: [Case; 3] = [
         (
             "tone",
             &|_| 40.0,
