@@ -18,9 +18,9 @@
 //! above the decimated Nyquist folds below $f_b$ by more than the window's side lobes
 //! (-92 dB). At 48 kS/s that is $M = 192$ (8 ms). The filter is symmetric, so output $k$ is
 //! the low-passed signal at input sample $kq$ exactly: time, which the analysis measures, is
-//! kept. (`rubato`'s sinc resampler, tried first, places its output a few samples from where
-//! its stated delay says, by an amount that changes with the rate: 7 output samples late at
-//! 48 kS/s, 13 early at 22.05 kS/s.)
+//! kept. (`rubato`'s sinc resampler is not used: with whole-factor decimation it places its
+//! output a few samples from where its stated delay says, by an amount that changes with the
+//! rate, 7 output samples late at 48 kS/s and 13 early at 22.05 kS/s.)
 
 use crate::error::ExperimentError;
 use crate::sound_analysis::spectrum::MAX_HARMONIC_HZ;
