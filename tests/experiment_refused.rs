@@ -3,6 +3,25 @@
 //! spectrogram with the track and the reason on it (`spectrogram.svg`), says so, and exits 1;
 //! without `--out` it writes nothing. A sound's refusal speaks of tones and lines, never of
 //! pulses or a light signal.
+//!
+//! Every sound refusal, matched by the stable part that names its cause (the sentence around it
+//! may change), the case here that provokes it, its advice, and that advice applied:
+//!
+//! | refusal (cause) | provoking case | advice | advice applied |
+//! |---|---|---|---|
+//! | "did a line of the disk stand out of the noise" | a disk under the recorder's noise | record closer | the disk 100x louder: analysed |
+//! | "frames hold a tone ... no rising line to follow" | 3 s of room noise | record closer | (as above) |
+//! | "the disk's line was followed over" (under 2 s) | a disk heard for its last 0.5 s | record the whole spin | the whole spin: analysed |
+//! | "the rate does not rise enough" | a spin whose recording stops 3.5 s before its end | record until the disk is silent | the whole spin: analysed |
+//! | "after the last fitted frame" (t0 far past the line) | (the same) | (the same) | (the same) |
+//! | "outside the law's domain" (eq 79's fit cannot start) | a steady tone | a line that does not rise is another sound: record the disk | cannot be applied to a tone; a disk recorded: analysed |
+//! | "does not rise toward an end time" | a falling pitch | (as the tone) | (as the tone) |
+//! | "eq 79 explains too little of the pitch track's Omega" (R^2) | a pitch rising exponentially | record until silent (its line sounds to the end) | cannot be applied to a chirp; a disk recorded: analysed |
+//! | "lies outside -0.5 .. 8" (beta's range) | (the same) | (the same) | (the same) |
+//! | "samples per channel" (over two hours) | 2 h 1 s at 1 kS/s | the `ffmpeg -sseof` cut | the cut is read (and refused for its noise only) |
+//! | "does not rise steadily" (Kendall's tau) | none here | | |
+//! | "lie off the disk's line (stray)" | none here | | |
+//! | "fewer than the 8 a fit of eq 79 is judged on" | none here | | |
 
 use crate::common::{cli_in, temp_dir, write_wav_i16};
 use rand::SeedableRng;
@@ -133,11 +152,12 @@ fn a_spin_heard_too_briefly_is_refused_with_record_the_whole_spin_and_that_works
     assert_analysed(&disk(0.3, 0.003, 1.0));
 }
 
-/// A sound recording longer than the analysis holds (6,000,000 samples per channel) is refused
-/// naming the limit and the cut to make; the cut made as it says (the spin-down's last 749 s of
-/// an 8 kS/s recording), it is analysed.
+/// A recording over the whole-file limit (6,000,000 samples per channel, here 750 s at 8 kS/s
+/// with the spin in its last seconds) is read in pieces and analysed as it is; one longer than
+/// the two hours read (here 2 h and 1 s at 1 kS/s) is refused naming the limit and the cut to
+/// make, and the cut made as it says is read (and refused only for what it holds: room noise).
 #[test]
-fn a_recording_too_long_is_refused_with_the_cut_to_make_and_the_cut_is_analysed() {
+fn a_long_recording_is_analysed_and_one_over_two_hours_is_refused_with_the_cut_to_make() {
     let mut mic = experiment::Microphone::phone(8000, 4);
     mic.voice.lead = 1.0;
     let law = experiment::Law {
@@ -157,18 +177,127 @@ fn a_recording_too_long_is_refused_with_the_cut_to_make_and_the_cut_is_analysed(
     v.extend(spin.v.iter().map(|x| (x * 32767.0).round() as i16));
     let dir = temp_dir("refused", "too-long");
     write_wav_i16(&dir.join("long.wav"), &v, 8000, 1);
-    let (ok, _, err) = cli_in(&dir, &["experiment", "analyze", "long.wav"]);
+    let (ok, out, err) = cli_in(&dir, &["experiment", "analyze", "long.wav"]);
+    assert!(
+        ok,
+        "a recording over the whole-file limit is refused: {err}"
+    );
+    assert!(out.contains("read in pieces"), "{out}");
+    assert!(out.contains("eq 79 on the"), "{out}");
+    let hours: Vec<i16> = (0..7_200_001).map(|_| quiet()).collect();
+    write_wav_i16(&dir.join("hours.wav"), &hours, 1000, 1);
+    let (ok, _, err) = cli_in(&dir, &["experiment", "analyze", "hours.wav"]);
     assert!(!ok);
     assert!(
-        err.contains("more than 6000000 samples per channel (750 s at 8000 S/s)"),
+        err.contains("more than 7200000 samples per channel (7200 s at 1000 S/s)"),
         "{err}"
     );
     assert!(
-        err.contains("cut it to the spin-down's last 749 s, for example `ffmpeg -sseof -749 -i long.wav cut.wav`"),
+        err.contains("cut it to the spin-down's last 7199 s, for example `ffmpeg -sseof -7199 -i hours.wav cut.wav`"),
         "{err}"
     );
-    write_wav_i16(&dir.join("cut.wav"), &v[v.len() - 749 * 8000..], 8000, 1);
-    let (ok, out, err) = cli_in(&dir, &["experiment", "analyze", "cut.wav"]);
-    assert!(ok, "the cut is refused: {err}");
-    assert!(out.contains("eq 79 on the"), "{out}");
+    write_wav_i16(
+        &dir.join("cut.wav"),
+        &hours[hours.len() - 7199 * 1000..],
+        1000,
+        1,
+    );
+    let (ok, _, err) = cli_in(&dir, &["experiment", "analyze", "cut.wav"]);
+    assert!(!ok, "room noise is no spin-down");
+    assert!(
+        !err.contains("samples per channel"),
+        "the cut is still too long: {err}"
+    );
+    assert!(err.contains("no rising line to follow"), "{err}");
+}
+
+/// 10 s at 16 kS/s of a sound whose fundamental is `f(t)` Hz, with its second harmonic, over a
+/// recorder's faint noise.
+fn pitched(name: &str, f: &dyn Fn(f64) -> f64) -> experiment::Trace {
+    let (fs, n) = (16_000.0, 160_000);
+    let (mut psi, mut v) = (0.0, Vec::with_capacity(n));
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(3);
+    let normal = Normal::new(0.0f64, 0.003).expect("a normal law");
+    for j in 0..n {
+        let t = j as f64 / fs;
+        psi += std::f64::consts::TAU * f(t + 0.5 / fs) / fs;
+        v.push(0.3 * (psi.sin() + 0.5 * (2.0 * psi).sin()) + normal.sample(&mut rng));
+    }
+    experiment::Trace {
+        source: format!("{name}.wav"),
+        t: (0..n).map(|j| j as f64 / fs).collect(),
+        v,
+        truth: None,
+    }
+}
+
+/// A spin-down whose recording stops while the disk still sounds (3.5 s before its end): the
+/// rate does not rise enough and the fitted end lies far past the last frame; the refusal says
+/// the recording stops while the line sounds and to record until the disk is silent; the
+/// whole spin recorded (to 1.5 s after its end), it is analysed.
+#[test]
+fn a_recording_stopped_while_the_disk_sounds_is_refused_with_record_until_silent_and_that_works() {
+    let whole = disk(0.3, 0.003, 1.0);
+    let mut cut = whole.clone();
+    cut.t.truncate(5 * 16_000);
+    cut.v.truncate(5 * 16_000);
+    let e = analysed(&cut).expect_err("the rate's rise to its end is not heard");
+    assert!(e.contains("the rate does not rise enough"), "{e}");
+    assert!(e.contains("after the last fitted frame"), "{e}");
+    assert!(
+        e.contains("the recording stops while the disk's line still sounds"),
+        "{e}"
+    );
+    assert!(
+        e.contains("record until the disk has settled and is silent"),
+        "{e}"
+    );
+    for word in ["pulse", "light", "peak", "1/Omega"] {
+        assert!(!e.contains(word), "a sound's refusal speaks of {word}: {e}");
+    }
+    assert_analysed(&whole);
+}
+
+/// Sounds that are not a disk's spin-down, each refused naming what failed: a steady tone
+/// (eq 79's fit cannot start: "outside the law's domain"), a falling pitch ("does not rise
+/// toward an end time"), a pitch rising exponentially ("eq 79 explains too little" of the
+/// track, and beta outside the physical range). A steady or falling line is said to be another
+/// sound, with the advice to record the disk itself; that advice cannot be applied to these
+/// recordings, only by recording a disk, which is analysed.
+#[test]
+fn sounds_that_are_not_a_spin_down_are_refused_naming_what_failed() {
+    type Case<'a> = (&'a str, &'a dyn Fn(f64) -> f64, &'a [&'a str]);
+    let cases: [Case; 3] = [
+        (
+            "tone",
+            &|_| 40.0,
+            &["outside the law's domain", "is not a settling disk's"],
+        ),
+        (
+            "falling",
+            &|t| 80.0 - 5.0 * t,
+            &[
+                "does not rise toward an end time",
+                "is not a settling disk's",
+            ],
+        ),
+        (
+            "exponential",
+            &|t| 20.0 * (0.15 * t).exp(),
+            &[
+                "eq 79 explains too little of the pitch track's Omega",
+                "lies outside -0.5 .. 8",
+            ],
+        ),
+    ];
+    for (name, f, causes) in cases {
+        let e = analysed(&pitched(name, f)).expect_err("not a spin-down");
+        for cause in causes {
+            assert!(e.contains(cause), "{name}: {e}");
+        }
+        for word in ["pulse", "light", "peak", "1/Omega"] {
+            assert!(!e.contains(word), "a sound's refusal speaks of {word}: {e}");
+        }
+    }
+    assert_analysed(&disk(0.3, 0.003, 1.0));
 }

@@ -22,6 +22,7 @@ mod experiment_fallback;
 mod experiment_formats;
 mod experiment_hum;
 mod experiment_inputs;
+mod experiment_long;
 mod experiment_models;
 mod experiment_phone;
 mod experiment_refused;

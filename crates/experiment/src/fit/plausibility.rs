@@ -196,12 +196,17 @@ impl Plausibility {
         let crossover = e.crossover_residual_ss.map(r2_of);
         let r2 = crossover.map_or(single, |c| c.max(single));
         if r2 < self.min_r2 {
-            refusals.push(match crossover {
-                None => format!(
+            refusals.push(match (crossover, points) {
+                (None, Points::Frames(_)) => format!(
+                    "eq 79 explains too little of the pitch track's Omega (R^2 = {r2:.4}, at \
+                     least {} needed)",
+                    self.min_r2
+                ),
+                (None, Points::Cycles) => format!(
                     "eq 84 explains too little of 1/Omega (R^2 = {r2:.4}, at least {} needed)",
                     self.min_r2
                 ),
-                Some(c) => format!(
+                (Some(c), _) => format!(
                     "neither eq 84 nor the two-mechanism law explains enough of 1/Omega (R^2 = \
                      {single:.4} and {c:.4}, at least {} needed)",
                     self.min_r2

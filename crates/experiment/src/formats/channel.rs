@@ -75,20 +75,38 @@ fn refuse_cancelling(
     format: &str,
     file: &str,
 ) -> Result<(), ExperimentError> {
-    let rms = |x: &mut dyn Iterator<Item = f64>| {
-        let (sum, n) = x.fold((0.0, 0usize), |(s, n), v| (s + v * v, n + 1));
-        (sum / n.max(1) as f64).sqrt()
-    };
-    let (loudest, level) = (1..=n_ch)
-        .map(|k| {
-            let mut it = interleaved.chunks_exact(n_ch).map(|c| c[k - 1]);
-            (k, rms(&mut it))
-        })
-        .fold(
+    let levels: Vec<f64> = (1..=n_ch)
+        .map(|k| rms(&mut interleaved.chunks_exact(n_ch).map(|c| c[k - 1])))
+        .collect();
+    refuse_cancelled(&levels, rms(&mut mix.iter().copied()), format, file)
+}
+
+/// The root mean square of the values.
+fn rms(x: &mut dyn Iterator<Item = f64>) -> f64 {
+    let (sum, n) = x.fold((0.0, 0usize), |(s, n), v| (s + v * v, n + 1));
+    (sum / n.max(1) as f64).sqrt()
+}
+
+/// Refuses a mix whose rms `mixed` is [`CANCELLED`] times below the loudest of the channels'
+/// rms `levels`.
+pub(crate) fn refuse_cancelled(
+    levels: &[f64],
+    mixed: f64,
+    format: &str,
+    file: &str,
+) -> Result<(), ExperimentError> {
+    let n_ch = levels.len();
+    let (loudest, level) =
+        levels.iter().enumerate().fold(
             (1, 0.0),
-            |best, (k, r)| if r > best.1 { (k, r) } else { best },
+            |best, (k, &r)| {
+                if r > best.1 {
+                    (k + 1, r)
+                } else {
+                    best
+                }
+            },
         );
-    let mixed = rms(&mut mix.iter().copied());
     if level > 0.0 && mixed < CANCELLED * level {
         let mean = if mixed > 0.0 {
             format!(
@@ -129,55 +147,15 @@ pub(crate) fn mix(
     file: &str,
     channels: Channels,
 ) -> Result<Recording, ExperimentError> {
-    if !(RATES.0..=RATES.1).contains(&rate) {
-        return Err(refuse(
-            file,
-            &format,
-            format!("a sample rate of {rate} S/s"),
-            "record or export at a rate between 1000 and 384000 S/s (44100 or 48000 is usual)",
-        ));
-    }
-    if n_ch == 0 || n_ch > MAX_CHANNELS {
-        return Err(refuse(
-            file,
-            &format,
-            format!("{n_ch} channels"),
-            "export the recording as mono or stereo",
-        ));
-    }
-    let samples = interleaved.len() / n_ch;
-    if samples < MIN_SAMPLES {
-        return Err(refuse(
-            file,
-            &format,
-            format!("it holds {samples} sample(s) per channel, fewer than {MIN_SAMPLES}"),
-            "record the whole spin-down, from a few seconds before the disk settles until it is silent",
-        ));
-    }
+    let samples = interleaved.len() / n_ch.max(1);
+    check_shape(rate, n_ch, samples, &format, file)?;
     let (v, used): (Vec<f64>, String) = match channels {
         Channels::Mix if n_ch == 1 => (interleaved, "mono".into()),
         Channels::Mix => {
             let d = crate::formats::stereo::delays(&interleaved, n_ch, rate);
             let v = crate::formats::stereo::aligned_mean(&interleaved, n_ch, &d);
             refuse_cancelling(&interleaved, &v, n_ch, &format, file)?;
-            let shifts: Vec<String> = d
-                .iter()
-                .enumerate()
-                .filter(|(_, &s)| s != 0)
-                .map(|(c, &s)| {
-                    format!(
-                        "channel {} {} {:.3} ms",
-                        c + 1,
-                        if s > 0 { "advanced by" } else { "delayed by" },
-                        1e3 * s.unsigned_abs() as f64 / f64::from(rate)
-                    )
-                })
-                .collect();
-            let used = if shifts.is_empty() {
-                format!("mix of {n_ch}")
-            } else {
-                format!("mix of {n_ch}, {}", shifts.join(", "))
-            };
+            let used = mix_used(n_ch, &d, rate);
             (v, used)
         }
         Channels::One(k) if (1..=n_ch).contains(&k) => (
@@ -211,4 +189,63 @@ pub(crate) fn mix(
         },
         info,
     })
+}
+
+/// Refuses a rate outside [`RATES`], a channel count outside 1 to [`MAX_CHANNELS`] and fewer
+/// than [`MIN_SAMPLES`] samples per channel.
+pub(crate) fn check_shape(
+    rate: u32,
+    n_ch: usize,
+    samples: usize,
+    format: &str,
+    file: &str,
+) -> Result<(), ExperimentError> {
+    if !(RATES.0..=RATES.1).contains(&rate) {
+        return Err(refuse(
+            file,
+            format,
+            format!("a sample rate of {rate} S/s"),
+            "record or export at a rate between 1000 and 384000 S/s (44100 or 48000 is usual)",
+        ));
+    }
+    if n_ch == 0 || n_ch > MAX_CHANNELS {
+        return Err(refuse(
+            file,
+            format,
+            format!("{n_ch} channels"),
+            "export the recording as mono or stereo",
+        ));
+    }
+    if samples < MIN_SAMPLES {
+        return Err(refuse(
+            file,
+            format,
+            format!("it holds {samples} sample(s) per channel, fewer than {MIN_SAMPLES}"),
+            "record the whole spin-down, from a few seconds before the disk settles until it is silent",
+        ));
+    }
+    Ok(())
+}
+
+/// The words for a mix of `n_ch` channels advanced by `d` samples at `rate` S/s: "mix of 2" or
+/// "mix of 2, channel 2 advanced by 0.771 ms".
+pub(crate) fn mix_used(n_ch: usize, d: &[isize], rate: u32) -> String {
+    let shifts: Vec<String> = d
+        .iter()
+        .enumerate()
+        .filter(|(_, &s)| s != 0)
+        .map(|(c, &s)| {
+            format!(
+                "channel {} {} {:.3} ms",
+                c + 1,
+                if s > 0 { "advanced by" } else { "delayed by" },
+                1e3 * s.unsigned_abs() as f64 / f64::from(rate)
+            )
+        })
+        .collect();
+    if shifts.is_empty() {
+        format!("mix of {n_ch}")
+    } else {
+        format!("mix of {n_ch}, {}", shifts.join(", "))
+    }
 }

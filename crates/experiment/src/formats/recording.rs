@@ -11,7 +11,8 @@
 //! The container is recognised by its first bytes, not by the file's name. Every file goes
 //! through [`read_bounded`] (size limit, regular files only); the decoded length is checked
 //! against [`MAX_SOUND_SAMPLES`] per channel while decoding, so memory stays bounded. The channels are
-//! averaged, or one is chosen ([`Channels`]).
+//! averaged, or one is chosen ([`Channels`]). A recording over either limit is read again in
+//! pieces and decimated to the band the analysis uses ([`long`](crate::formats::long)).
 
 use crate::error::ExperimentError;
 use crate::formats::channel::{mix, refuse, Channels, Recording};
@@ -55,7 +56,7 @@ fn aiff(bytes: &[u8]) -> bool {
 }
 
 /// The container, by the file's first bytes.
-fn container(bytes: &[u8]) -> Option<(&'static str, &'static str)> {
+pub(crate) fn container(bytes: &[u8]) -> Option<(&'static str, &'static str)> {
     let head = |s: &[u8]| bytes.starts_with(s);
     if head(b"RIFF") || head(b"RF64") || head(b"RIFX") {
         Some(("WAV", "wav"))
@@ -85,8 +86,15 @@ pub fn read_recording(
 ) -> Result<Recording, ExperimentError> {
     let path = path.as_ref();
     let file = path.display().to_string();
-    let bytes = read_bounded(path, MAX_BYTES)?;
-    parse_recording(bytes, &file, channels)
+    let whole = read_bounded(path, MAX_BYTES).and_then(|b| parse_recording(b, &file, channels));
+    match whole {
+        Err(ExperimentError::SoundTooLong { .. } | ExperimentError::TooLarge { .. })
+            if is_recording(path) =>
+        {
+            crate::formats::long::read_long(path, channels)
+        }
+        r => r,
+    }
 }
 
 /// Whether the file at `path` is a sound recording by its first bytes (WAV, FLAC, Ogg, MP3,

@@ -43,9 +43,43 @@ pub const CLEAR: f64 = 6.0;
 /// `n_ch` interleaved channels at `rate` S/s.
 pub fn delays(interleaved: &[f64], n_ch: usize, rate: u32) -> Vec<isize> {
     let n = interleaved.len() / n_ch.max(1);
+    delays_of(n, n_ch, rate, &|j, c| interleaved[j * n_ch + c])
+}
+
+/// The frames `[start, end)` of each block [`delays`] reads in a recording of `n` frames at
+/// `rate` S/s (none where the recording is too short for a delay to be measured): a recording
+/// read in pieces keeps these, and only these, for [`delays_of`].
+pub fn blocks_read(n: usize, rate: u32) -> Vec<(usize, usize)> {
+    let max_lag = max_lag(rate);
+    if n < 4 * max_lag.max(1) {
+        return Vec::new();
+    }
+    let len = BLOCK.min(n.next_power_of_two());
+    let blocks = n.div_ceil(len);
+    (0..blocks.min(MAX_BLOCKS))
+        .map(|k| k * blocks / blocks.min(MAX_BLOCKS) * len)
+        .filter(|start| start + max_lag < n)
+        .map(|start| (start, (start + len).min(n)))
+        .collect()
+}
+
+/// The largest lag searched (samples) at `rate` S/s.
+fn max_lag(rate: u32) -> usize {
+    ((MAX_DELAY * f64::from(rate)).round() as usize).min(BLOCK / 4)
+}
+
+/// [`delays`] of a recording of `n` frames whose sample `j` of channel `c` (from 0) is
+/// `sample(j, c)`; only the frames of [`blocks_read`] are asked for.
+pub fn delays_of(
+    n: usize,
+    n_ch: usize,
+    rate: u32,
+    sample: &dyn Fn(usize, usize) -> f64,
+) -> Vec<isize> {
     let mut out = vec![0isize; n_ch];
-    let max_lag = ((MAX_DELAY * f64::from(rate)).round() as usize).min(BLOCK / 4);
-    if n_ch < 2 || n < 4 * max_lag.max(1) {
+    let max_lag = max_lag(rate);
+    let blocks = blocks_read(n, rate);
+    if n_ch < 2 || blocks.is_empty() {
         return out;
     }
     let len = BLOCK.min(n.next_power_of_two());
@@ -55,9 +89,9 @@ pub fn delays(interleaved: &[f64], n_ch: usize, rate: u32) -> Vec<isize> {
         planner.plan_fft_forward(nfft),
         planner.plan_fft_inverse(nfft),
     );
-    let spectrum = |c: usize, start: usize, fft: &dyn rustfft::Fft<f64>| {
-        let mut buf: Vec<Complex<f64>> = (start..(start + len).min(n))
-            .map(|j| Complex::new(interleaved[j * n_ch + c], 0.0))
+    let spectrum = |c: usize, (start, end): (usize, usize), fft: &dyn rustfft::Fft<f64>| {
+        let mut buf: Vec<Complex<f64>> = (start..end)
+            .map(|j| Complex::new(sample(j, c), 0.0))
             .collect();
         let m = buf.iter().map(|z| z.re).sum::<f64>() / buf.len().max(1) as f64;
         buf.iter_mut().for_each(|z| z.re -= m);
@@ -67,14 +101,9 @@ pub fn delays(interleaved: &[f64], n_ch: usize, rate: u32) -> Vec<isize> {
     };
     for (c, d) in out.iter_mut().enumerate().skip(1) {
         let mut cross = vec![Complex::new(0.0, 0.0); nfft];
-        let blocks = n.div_ceil(len);
-        for k in 0..blocks.min(MAX_BLOCKS) {
-            let start = k * blocks / blocks.min(MAX_BLOCKS) * len;
-            if start + max_lag >= n {
-                continue;
-            }
-            let a = spectrum(0, start, fwd.as_ref());
-            let b = spectrum(c, start, fwd.as_ref());
+        for &block in &blocks {
+            let a = spectrum(0, block, fwd.as_ref());
+            let b = spectrum(c, block, fwd.as_ref());
             for (s, (x, y)) in cross.iter_mut().zip(a.iter().zip(&b)) {
                 *s += x.conj() * y;
             }

@@ -4,7 +4,7 @@
 //!
 //! Reading goes through [`read_bounded`](crate::formats::input::read_bounded) like every
 //! file; the header's sample count is checked against [`MAX_SOUND_SAMPLES`] before any sample is
-//! decoded. [`read_wav`] averages the channels;
+//! decoded, and a longer file is read in pieces and decimated ([`long`](crate::formats::long)). [`read_wav`] averages the channels;
 //! [`read_recording`](crate::formats::recording::read_recording) can choose one.
 
 use crate::error::ExperimentError;
@@ -19,8 +19,12 @@ use std::path::Path;
 pub fn read_wav(path: impl AsRef<Path>) -> Result<Trace, ExperimentError> {
     let path = path.as_ref();
     let file = path.display().to_string();
-    let bytes = read_bounded(path, MAX_BYTES)?;
-    parse_wav(&bytes, &file)
+    match read_bounded(path, MAX_BYTES).and_then(|b| parse_wav(&b, &file)) {
+        Err(ExperimentError::SoundTooLong { .. } | ExperimentError::TooLarge { .. }) => {
+            Ok(crate::formats::long::read_long(path, Channels::Mix)?.trace)
+        }
+        r => r,
+    }
 }
 
 /// Decodes WAV bytes, channels averaged; `file` names them in errors.

@@ -161,7 +161,7 @@ pub fn analyze_sound_keeping_track(
     };
     work.stage("fitting eq 79").map_err(|e| keep(e.into()))?;
     let file = trace.source.clone();
-    let heard = what_was_heard(&track);
+    let heard = what_was_heard(&track, trace.t.last().copied().unwrap_or(0.0));
     let refuse = |reason: String| {
         keep(ExperimentError::Refused {
             file: file.clone(),

@@ -12,9 +12,19 @@ use std::path::{Path, PathBuf};
 /// line at the paper's law.
 const SHORT_LINE_S: f64 = 2.0;
 
+/// The least rise of the line's pitch, last over first, that a disk's spin-down is taken to
+/// have: 5 %, far below any spin-down's fitted (the plausibility check asks for 50 %), so that
+/// only a line that holds its pitch or falls is called another sound.
+const RISES: f64 = 1.05;
+
 /// What the pitch track heard, for a refusal's message: where the disk's line was followed (or
-/// that no line stood out of the noise), the mains lines subtracted, and what to do.
-pub fn what_was_heard(track: &FrequencyTrack) -> String {
+/// that no line stood out of the noise), the mains lines subtracted, and what to do. `end` is
+/// the recording's last time (s): a line followed into the recording's last frame (its last
+/// frame ends less than one frame of its own length, and a sample, before `end`; the frames
+/// tile the record, and near a disk's end they shrink to a few hundredths of a second) was
+/// still sounding when the recording stopped, and the advice is to record until the disk is
+/// silent.
+pub fn what_was_heard(track: &FrequencyTrack, end: f64) -> String {
     let hum = if track.hum.is_empty() {
         String::new()
     } else {
@@ -44,6 +54,13 @@ pub fn what_was_heard(track: &FrequencyTrack) -> String {
         "record the whole spin, starting before the disk is released, and spin it longer (a \
          heavier disk, a smoother and harder surface): the fit needs the line over a rise of \
          half its pitch"
+    } else if q.omega < RISES * p.omega {
+        "a line whose pitch does not rise is not a settling disk's (its pitch rises toward the \
+         end): it is another sound, a motor, a fan or a tone; record the disk's own spin-down, \
+         from its release until it is silent"
+    } else if q.b + (q.b - q.a) + 1e-3 >= end {
+        "the recording stops while the disk's line still sounds: record until the disk has \
+         settled and is silent, so that the rate's rise to its end is heard"
     } else if !track.hum.is_empty() {
         "record closer to the disk, on battery and away from mains-powered devices, so that its \
          line stands above the hum"

@@ -26,10 +26,18 @@ pub const HUM_RATIO: f64 = 10.0;
 /// Length of the blocks in which each hum line's amplitude and phase are fitted (s).
 pub const BLOCK_S: f64 = 2.0;
 
+/// The longest stretch of record (s) whose power the mains search sums coherently: a record
+/// longer than this is searched on the sum of its pieces' powers, so that the search's grid
+/// (a quarter of the pieces' resolution) and each of its points' cost do not both grow with
+/// the record (which would make an hour's search 900 times a minute's, not 60).
+pub const SEARCH_S: f64 = 120.0;
+
 /// Subtracts mains hum from `v` (sampled at `fs`); returns the frequencies removed (Hz).
 ///
 /// The search runs on the record averaged over blocks of $\lfloor f_s/2000\rfloor$ samples
-/// (a 2 kS/s copy, ample for lines up to 600 Hz); the subtraction on the record itself.
+/// (a 2 kS/s copy, ample for lines up to 600 Hz), over the whole record up to [`SEARCH_S`]
+/// and on the summed powers of its pieces of [`SEARCH_S`] beyond; the subtraction on the
+/// record itself.
 pub fn remove_hum(v: &mut [f64], fs: f64) -> Vec<f64> {
     let span = v.len() as f64 / fs;
     if span < 2.0 {
@@ -41,14 +49,24 @@ pub fn remove_hum(v: &mut [f64], fs: f64) -> Vec<f64> {
         .map(|c| c.iter().sum::<f64>() / q as f64)
         .collect();
     let fs_low = fs / q as f64;
-    let w_low = hann(low.len());
-    let res = 1.0 / span;
+    // The whole record, or pieces of SEARCH_S seconds where it is longer.
+    let (piece, res) = if span > SEARCH_S {
+        let n = (SEARCH_S * fs_low) as usize;
+        (n, fs_low / n as f64)
+    } else {
+        (low.len(), 1.0 / span)
+    };
+    let w_low = hann(piece);
     let mut removed = Vec::new();
     for mains in [50.0, 60.0] {
         let score = |f: f64| -> f64 {
             (1..=3)
                 .filter(|k| f64::from(*k) * f < 0.45 * fs_low)
-                .map(|k| power(&low, &w_low, fs_low, f64::from(k) * f))
+                .map(|k| {
+                    low.chunks_exact(piece)
+                        .map(|x| power(x, &w_low, fs_low, f64::from(k) * f))
+                        .sum::<f64>()
+                })
                 .sum()
         };
         let step = 0.25 * res;
