@@ -117,31 +117,3 @@ fn record_the_phone_study() {
         std::fs::write(path(), serde_json::to_string_pretty(&s).unwrap() + "\n").unwrap();
     }
 }
-
-/// A corner the record does not show still counts (`studies::phone_coverage`'s seed 45: a
-/// 2.8 s spin behind a 56 Hz high-pass): the heading is fitted as heard, the shift the read
-/// corner's lead would make is stated as the high-pass's term, and with it t0's 95 % interval
-/// holds the truth, which the fit's own sigma alone does not.
-#[test]
-fn a_corner_not_shown_counts_its_shift() {
-    use experiment::fit::plausibility::Plausibility;
-    use experiment::formats::channel::Channels;
-    use experiment::formats::recording::parse_recording;
-    use experiment::sound_analysis::analysis::analyze_sound;
-    use experiment::sound_analysis::track::TrackSettings;
-    use experiment::synthetic::phone_room::PhoneRoom;
-    let room = PhoneRoom::draw(45);
-    let rec = room.record().unwrap();
-    let trace = parse_recording(rec.wav().unwrap(), "phone-45.wav", Channels::Mix)
-        .unwrap()
-        .trace;
-    let a = analyze_sound(&trace, &TrackSettings::default(), &Plausibility::default()).unwrap();
-    let p = a.phase.as_ref().expect("the phase is fitted");
-    assert!(p.corner.is_some() && p.corner_not_used.is_some(), "{a}");
-    let l = a.law();
-    assert!(l.from_phase, "{a}");
-    let err = (l.t0 - room.t0()).abs();
-    assert!(l.t0_terms.high_pass > l.t0_terms.fit, "{a}");
-    assert!(err <= 1.96 * l.t0_sigma, "{a}");
-    assert!(err > 1.96 * l.t0_terms.fit, "{a}");
-}

@@ -106,9 +106,7 @@ pub struct PhaseFit {
     /// corner was read).
     pub corner_not_used: Option<String>,
     /// What the corner's uncertainty makes of $\beta$'s and $t_0$'s (s): half the difference of
-    /// the fits at $\omega_c \pm \sigma_{\omega_c}$ where its lead is taken out; where a corner
-    /// was read and the record does not show it, the shift of the fit with its lead taken out
-    /// from the fit without (unless that slips a turn); 0 without a corner.
+    /// the fits at $\omega_c \pm \sigma_{\omega_c}$; 0 without a corner.
     pub beta_high_pass: f64,
     /// (s)
     pub t0_high_pass: f64,
@@ -175,7 +173,6 @@ pub fn fit_phase(
         let leads = |wc: f64| block_leads(&bl, &omega, wc);
         let read = fit_corner(&bl, &omega);
         let plain = fit_blocks(&bl, &p, shift, &vec![0.0; bl.len()])?;
-        let as_heard = (plain.0.turns, plain.0.beta, plain.0.t0);
         let (corner, not_used, lead, (mut fit, p4)) = match read.map(|c| (c, c.why_not_used())) {
             Some((c, None)) => {
                 let lead = leads(c.omega_c);
@@ -202,11 +199,6 @@ pub fn fit_phase(
                 let (lo, _) = fit_blocks(&bl, &p, shift, &leads(c.omega_c - c.sigma))?;
                 fit.beta_high_pass = 0.5 * (hi.beta - lo.beta).abs();
                 fit.t0_high_pass = 0.5 * (hi.t0 - lo.t0).abs();
-            } else if let Some((b, t)) =
-                read.and_then(|c| unshown_shift(&bl, &p, shift, as_heard, &leads(c.omega_c)))
-            {
-                fit.beta_high_pass = b;
-                fit.t0_high_pass = t;
             }
             fit.law = later_half(&bl, &p, shift, &lead, &fit);
         }
@@ -216,24 +208,6 @@ pub fn fit_phase(
         result = Some(fit);
     }
     result.ok_or_else(|| FitError::Numerics("no round".into()))
-}
-
-/// What a corner the record does not show could make of $\beta$ and $t_0$ (s): the shifts of
-/// the fit of blocks `bl` with its `lead` taken out from the fit without it (its turns, $\beta$
-/// and $t_0$: `plain`), where
-/// that keeps the turns counted (`None` where it does not, or fails). The record leaves it open
-/// whether the heading holds a high-pass's lead, from none to the corner read; a phone's
-/// microphone has one, so the fit without it is stated with the shift as its uncertainty.
-fn unshown_shift(
-    bl: &[Block],
-    p: &SVector<f64, 3>,
-    shift: f64,
-    (turns, beta, t0): (f64, f64, f64),
-    lead: &[f64],
-) -> Option<(f64, f64)> {
-    let (with, _) = fit_blocks(bl, p, shift, lead).ok()?;
-    ((with.turns - turns).abs() < MAX_TURN_CHANGE)
-        .then(|| ((with.beta - beta).abs(), (with.t0 - t0).abs()))
 }
 
 /// The heading refitted on the later half of the blocks `bl` (demodulated against `p` plus
