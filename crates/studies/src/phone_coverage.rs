@@ -272,6 +272,8 @@ mod tests {
                                 "t0_err": p.t0 - t0, "t0_sigma": p.t0_sigma,
                                 "n": p.n, "chi2": p.chi2_dof, "corner": p.corner,
                                 "corner_used": p.corner.is_some() && p.corner_not_used.is_none(),
+                                "corner_not_used": p.corner_not_used,
+                                "law_drifts": p.law.as_ref().map(|l| l.drifts),
                                 "structure": p.structure.map(|s| (s.lag_one_z, s.runs_z)),
                                 "last_block_before_t0": t0 - p.points.last().map_or(f64::NAN, |q| q.b),
                             })

@@ -12,8 +12,9 @@
 //! 3. **a rising rate**: Kendall's $\tau$ between $\bar t_i$ and $\Omega_i$ at least 0.5, and
 //!    $\Omega$ rising by at least a factor `min_rise` across the window;
 //! 4. **the law explains the data**: $R^2 = 1 - \sum r_i^2 / \sum (y_i - \bar y)^2 \ge$ `min_r2` for
-//!    $y_i = 1/\Omega_i$ (a spin-down gives 0.999 and more; scatter about a constant rate gives
-//!    about 0), for the better of eq 84 and the two-mechanism law when that could be fitted:
+//!    $y_i = 1/\Omega_i$ of the light's cycles, or $y_i = \Omega_i$ of a sound's pitch-track
+//!    frames with eq 79's frame means (a spin-down gives 0.999 and more; scatter about a constant
+//!    rate gives about 0), for the better of eq 84 and the two-mechanism law when that could be fitted:
 //!    a spin-down whose exponent changes is still a spin-down, and the comparison of laws, not
 //!    this check, says which law the data support;
 //! 5. **a runaway toward $t_0$**: $t_0$ after the last fitted peak (the fit's domain) by less than
@@ -101,7 +102,7 @@ pub struct Evidence<'a> {
     pub omega: &'a [f64],
     /// Cycles in the window that were anomalous.
     pub anomalous: usize,
-    /// The data $1/\Omega_i$ and the fit's residuals.
+    /// The data ($1/\Omega_i$ of the light's cycles, $\Omega_i$ of a sound's frames) and the fit's residuals.
     pub y: &'a [f64],
     /// Residuals.
     pub residual: &'a [f64],

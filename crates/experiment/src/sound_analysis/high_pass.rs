@@ -12,13 +12,17 @@
 //! **The harmonics measure it apart from the law.** The heading moves harmonic $h$'s phase by $h$
 //! times the fundamental's; the filter moves it by $\varphi(h\Omega)$. So each block's
 //! $\mathrm{split}_h = \arg z_h - c_h - h u_1$ does not depend on the heading at all and holds
-//! $$g_h(\Omega) - \bar g_h, \qquad g_h = \varphi(h\Omega) - h\,\varphi(\Omega),$$
-//! $\bar g_h$ its weighted mean over the blocks (the constant $c_h$ took it). $\omega_c$ is
-//! fitted to the splits alone (one parameter, the rates $\Omega_k$ from the reference law); the
+//! $$g_h(\Omega) + \kappa_h, \qquad g_h = \varphi(h\Omega) - h\,\varphi(\Omega),$$
+//! a constant $\kappa_h$ (what $c_h$ left) aside, **to a whole turn**: the splits are phases,
+//! wrapped to $(-\pi, \pi]$, and where the fundamental lies below the corner $g_h$ runs over more
+//! than a turn across the record (at a tenth of the corner $g_3 \approx -2\pi$). $\omega_c$ is
+//! fitted to the splits alone (one parameter, the rates $\Omega_k$ from the reference law), each
+//! residual the wrapped difference $\mathrm{wrap}(\mathrm{split}_h - g_h - \kappa_h)$ and
+//! $\kappa_h$ the splits' circular mean about $g_h$ at that corner ([`Splits::constant`]); the
 //! blocks' headings are corrected by the lead their data hold,
-//! $$\varphi(\Omega) + \sum_{h \ge 2} W_h\,\frac{g_h(\Omega) - \bar g_h}{h},$$
-//! and $\omega_c$'s uncertainty is carried into $\beta$'s and $t_0$'s by refitting at
-//! $\omega_c \pm \sigma_{\omega_c}$.
+//! $$\varphi(\Omega) + \sum_{h \ge 2} W_h\,\frac{g_h(\Omega) + \kappa_h}{h},$$
+//! each harmonic's term taken to the turn of the block's own split, and $\omega_c$'s uncertainty
+//! is carried into $\beta$'s and $t_0$'s by refitting at $\omega_c \pm \sigma_{\omega_c}$.
 //!
 //! **Taken out only where the record shows a high-pass.** A recording without one has
 //! $\omega_c = 0$; the fit, held to positive corners, still finds one in the splits' noise and in
@@ -41,7 +45,7 @@
 use crate::fit::band::Row;
 use crate::fit::eq84_85::phase;
 use crate::fit::least_squares::{solve, Problem, Scale};
-use crate::sound_analysis::phase_blocks::{Block, HARMONICS};
+use crate::sound_analysis::phase_blocks::{wrap, Block, HARMONICS};
 use nalgebra::SVector;
 use std::f64::consts::{SQRT_2, TAU};
 
@@ -68,13 +72,14 @@ struct Splits<'a> {
     /// (block, harmonic h) of each datum.
     at: Vec<(usize, usize)>,
     y: Vec<f64>,
-    /// The last corner's means of each harmonic ([`Splits::mean`]), kept: every datum of one
-    /// evaluation asks for them at the same corner.
-    means: std::cell::RefCell<Option<(f64, Means)>>,
+    /// The last corner's constants of each harmonic ([`Splits::constant`]), kept: every datum
+    /// of one evaluation asks for them at the same corner.
+    constants: std::cell::RefCell<Option<(f64, Constants)>>,
 }
 
-/// Each harmonic's mean lead and its derivative by the corner ([`Splits::mean`]), by harmonic.
-type Means = [(f64, f64); HARMONICS];
+/// Each harmonic's constant phase and its derivative by the corner ([`Splits::constant`]), by
+/// harmonic.
+type Constants = [(f64, f64); HARMONICS];
 
 impl<'a> Splits<'a> {
     fn new(bl: &'a [Block], omega: &'a [f64]) -> (Self, Vec<f64>) {
@@ -88,29 +93,29 @@ impl<'a> Splits<'a> {
                 }
             }
         }
-        let means = std::cell::RefCell::new(None);
+        let constants = std::cell::RefCell::new(None);
         (
             Self {
                 bl,
                 omega,
                 at,
                 y,
-                means,
+                constants,
             },
             var,
         )
     }
 
-    /// [`Splits::mean`] of harmonic `h` at corner `wc`, from the kept means when they are
-    /// `wc`'s (the same numbers, computed once per corner).
-    fn mean_at(&self, h: usize, wc: f64) -> (f64, f64) {
-        let mut kept = self.means.borrow_mut();
+    /// [`Splits::constant`] of harmonic `h` at corner `wc`, from the kept constants when they
+    /// are `wc`'s (the same numbers, computed once per corner).
+    fn constant_at(&self, h: usize, wc: f64) -> (f64, f64) {
+        let mut kept = self.constants.borrow_mut();
         match *kept {
             Some((c, m)) if c.to_bits() == wc.to_bits() => m[h - 1],
             _ => {
                 let mut m = [(f64::NAN, f64::NAN); HARMONICS];
                 for (j, mj) in m.iter_mut().enumerate().skip(1) {
-                    *mj = self.mean(j + 1, wc);
+                    *mj = self.constant(j + 1, wc);
                 }
                 *kept = Some((wc, m));
                 m[h - 1]
@@ -118,19 +123,47 @@ impl<'a> Splits<'a> {
         }
     }
 
-    /// The weighted mean of $g_h$ (and of its derivative) over the blocks holding `h`.
-    fn mean(&self, h: usize, wc: f64) -> (f64, f64) {
-        let (mut s, mut ds, mut wsum) = (0.0, 0.0, 0.0);
-        for (k, b) in self.bl.iter().enumerate() {
-            let v = b.split_var[h - 1];
-            if b.split[h - 1].is_finite() && v > 0.0 {
-                let (gv, dg) = g(h, wc, self.omega[k]);
-                s += gv / v;
-                ds += dg / v;
-                wsum += 1.0 / v;
+    /// Harmonic `h`'s constant $\kappa_h$ at corner `wc` and its derivative by `wc`: the
+    /// circular mean of $\mathrm{split}_h - g_h$ over the blocks holding `h`, weighted by
+    /// their inverse variances $w_k$,
+    /// $$\kappa_h = \arg \sum_k w_k\, e^{i(\mathrm{split}_{h,k} - g_h(\Omega_k))}, \qquad
+    ///   \frac{d\kappa_h}{d\omega_c} = -\frac{\sum_k w_k \cos r_k\, \partial_{\omega_c} g_h(\Omega_k)}
+    ///   {\sum_k w_k \cos r_k},$$
+    /// $r_k = \mathrm{split}_{h,k} - g_h(\Omega_k) - \kappa_h$.
+    fn constant(&self, h: usize, wc: f64) -> (f64, f64) {
+        let held = |k: usize| {
+            let b = &self.bl[k];
+            (b.split[h - 1].is_finite() && b.split_var[h - 1] > 0.0)
+                .then(|| (b.split[h - 1], 1.0 / b.split_var[h - 1]))
+        };
+        let (mut sin, mut cos) = (0.0, 0.0);
+        for k in 0..self.bl.len() {
+            if let Some((y, w)) = held(k) {
+                let (sk, ck) = (y - g(h, wc, self.omega[k]).0).sin_cos();
+                sin += w * sk;
+                cos += w * ck;
             }
         }
-        (s / wsum, ds / wsum)
+        let kappa = sin.atan2(cos);
+        let (mut num, mut den) = (0.0, 0.0);
+        for k in 0..self.bl.len() {
+            if let Some((y, w)) = held(k) {
+                let (gv, dg) = g(h, wc, self.omega[k]);
+                let c = (y - gv - kappa).cos();
+                num += w * c * dg;
+                den += w * c;
+            }
+        }
+        (kappa, -num / den)
+    }
+
+    /// The model of datum `y` of harmonic `h` at rate `w` and corner `wc`, $g_h + \kappa_h$
+    /// taken to the turn nearest `y` (the splits are phases, known to a whole turn), and its
+    /// derivative by `wc`.
+    fn near(&self, y: f64, h: usize, wc: f64, w: f64) -> (f64, f64) {
+        let (gv, dg) = g(h, wc, w);
+        let (kappa, dk) = self.constant_at(h, wc);
+        (y - wrap(y - gv - kappa), dg + dk)
     }
 }
 
@@ -140,9 +173,8 @@ impl Problem<1> for Splits<'_> {
     }
     fn model(&self, p: &SVector<f64, 1>, i: usize) -> (f64, SVector<f64, 1>) {
         let (k, h) = self.at[i];
-        let (gv, dg) = g(h, p[0], self.omega[k]);
-        let (m, dm) = self.mean_at(h, p[0]);
-        (gv - m, SVector::<f64, 1>::new(dg - dm))
+        let (m, dm) = self.near(self.y[i], h, p[0], self.omega[k]);
+        (m, SVector::<f64, 1>::new(dm))
     }
     fn rows(&self, _p: &SVector<f64, 1>) -> Vec<Row> {
         (0..self.y.len())
@@ -230,19 +262,22 @@ pub fn fit_corner(bl: &[Block], omega: &[f64]) -> Option<Corner> {
     })
 }
 
-/// The lead (rad) each block's datum holds for a corner `wc` (rad/s), at rates `omega`.
+/// The lead (rad) each block's datum holds for a corner `wc` (rad/s), at rates `omega`: the
+/// fundamental's $\varphi(\Omega)$ and each harmonic's split model ([`Splits::near`]) by its
+/// weight in the datum.
 pub fn block_leads(bl: &[Block], omega: &[f64], wc: f64) -> Vec<f64> {
     let (sp, _) = Splits::new(bl, omega);
-    let means: Vec<f64> = (1..=HARMONICS)
-        .map(|h| if h == 1 { 0.0 } else { sp.mean(h, wc).0 })
-        .collect();
     bl.iter()
         .zip(omega)
         .map(|(b, &w)| {
             let mut l = lead(wc, w).0;
             for h in 2..=HARMONICS {
-                if b.weight[h - 1] > 0.0 && means[h - 1].is_finite() {
-                    l += b.weight[h - 1] * (g(h, wc, w).0 - means[h - 1]) / h as f64;
+                let y = b.split[h - 1];
+                if b.weight[h - 1] > 0.0 && y.is_finite() {
+                    let m = sp.near(y, h, wc, w).0;
+                    if m.is_finite() {
+                        l += b.weight[h - 1] * m / h as f64;
+                    }
                 }
             }
             l
