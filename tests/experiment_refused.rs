@@ -11,7 +11,7 @@
 //! |---|---|---|---|
 //! | "did a line of the disk stand out of the noise" | a disk under the recorder's noise | record closer | the disk 100x louder: analysed |
 //! | "frames hold a tone ... no rising line to follow" | 3 s of room noise | record closer | (as above) |
-//! | "the disk's line was followed over" (under 2 s) | a disk heard for its last 0.5 s | record the whole spin | the whole spin: analysed |
+//! | "the pitch track followed a line over" (under 2 s) | a disk heard for its last 0.5 s | record the whole spin | the whole spin: analysed |
 //! | "the rate does not rise enough" | a spin whose recording stops 3.5 s before its end | record until the disk is silent | the whole spin: analysed |
 //! | "after the last fitted frame" (t0 far past the line) | (the same) | (the same) | (the same) |
 //! | "outside the law's domain" (eq 79's fit cannot start) | a steady tone | a line that does not rise is another sound: record the disk | cannot be applied to a tone; a disk recorded: analysed |
@@ -142,7 +142,7 @@ fn a_line_lost_in_the_noise_is_refused_with_record_closer_and_closer_works() {
 fn a_spin_heard_too_briefly_is_refused_with_record_the_whole_spin_and_that_works() {
     let e = analysed(&disk(0.3, 0.003, 8.0)).expect_err("half a second of the line is refused");
     assert!(
-        e.contains("the disk's line was followed over"),
+        e.contains("the pitch track followed a line over"),
         "the refusal names what was found: {e}"
     );
     assert!(e.contains("record the whole spin"), "{e}");

@@ -17,8 +17,9 @@ const SHORT_LINE_S: f64 = 2.0;
 /// only a line that holds its pitch or falls is called another sound.
 const RISES: f64 = 1.05;
 
-/// What the pitch track heard, for a refusal's message: where the disk's line was followed (or
-/// that no line stood out of the noise), the mains lines subtracted, and what to do. `end` is
+/// What the pitch track heard, for a refusal's message: where it followed a line (the disk's, or
+/// another sound it took for the disk's, such as a mains line the hum's removal left; or that no
+/// line stood out of the noise), the mains lines subtracted, and what to do. `end` is
 /// the recording's last time (s): a line followed into the recording's last frame (its last
 /// frame ends less than one frame of its own length, and a sample, before `end`; the frames
 /// tile the record, and near a disk's end they shrink to a few hundredths of a second) was
@@ -43,8 +44,8 @@ pub fn what_was_heard(track: &FrequencyTrack, end: f64) -> String {
     };
     let span = q.b - p.a;
     let heard = format!(
-        "the disk's line was followed over {span:.2} s, from {:.1} Hz at {:.2} s to {:.1} Hz at \
-         {:.2} s{hum}",
+        "the pitch track followed a line over {span:.2} s, from {:.1} Hz at {:.2} s to {:.1} Hz \
+         at {:.2} s{hum}",
         p.omega / TAU,
         p.a,
         q.omega / TAU,
