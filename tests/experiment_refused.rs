@@ -21,7 +21,7 @@
 //! | "samples per channel" (over two hours) | 2 h 1 s at 1 kS/s | the `ffmpeg -sseof` cut | the cut is read (and refused for its noise only) |
 //! | "does not rise steadily" (Kendall's tau) | none here | | |
 //! | "lie off the disk's line (stray)" | none here | | |
-//! | "fewer than the 8 a fit of eq 79 is judged on" | none here | | |
+//! | "fewer than the 8 a fit of eq 79 is judged on" | a disk heard for its last 0.7 s | record the spin from earlier | the spin from its first seconds: analysed |
 
 use crate::common::{cli_in, temp_dir, write_wav_i16};
 use rand::SeedableRng;
@@ -147,6 +147,23 @@ fn a_spin_heard_too_briefly_is_refused_with_record_the_whole_spin_and_that_works
     );
     assert!(e.contains("record the whole spin"), "{e}");
     for word in ["pulse", "light", "peak"] {
+        assert!(!e.contains(word), "a sound's refusal speaks of {word}: {e}");
+    }
+    assert_analysed(&disk(0.3, 0.003, 1.0));
+}
+
+/// A disk first heard 7.75 s into the record, 0.7 s before its end: its line holds 6 frames of
+/// the pitch track, fewer than the 8 a fit of eq 79 is judged on, and the refusal says to record
+/// the spin from earlier; recorded from its first seconds, it is analysed.
+#[test]
+fn a_line_of_too_few_frames_is_refused_with_record_from_earlier_and_that_works() {
+    let e = analysed(&disk(0.3, 0.003, 7.75)).expect_err("six frames are too few to judge");
+    assert!(
+        e.contains("fewer than the 8 a fit of eq 79 is judged on"),
+        "the refusal names its cause: {e}"
+    );
+    assert!(e.contains("record the spin from earlier"), "{e}");
+    for word in ["pulse", "light", "peak", "cycles"] {
         assert!(!e.contains(word), "a sound's refusal speaks of {word}: {e}");
     }
     assert_analysed(&disk(0.3, 0.003, 1.0));
