@@ -19,8 +19,8 @@
 //! | "eq 79 explains too little of the pitch track's Omega" (R^2) | a pitch rising exponentially | record until silent (its line sounds to the end) | cannot be applied to a chirp; a disk recorded: analysed |
 //! | "lies outside -0.5 .. 8" (beta's range) | (the same) | (the same) | (the same) |
 //! | "samples per channel" (over two hours) | 2 h 1 s at 1 kS/s | the `ffmpeg -sseof` cut | the cut is read (and refused for its noise only) |
-//! | "does not rise steadily" (Kendall's tau) | none here | | |
-//! | "lie off the disk's line (stray)" | none here | | |
+//! | "does not rise steadily" (Kendall's tau) | phone-room seed 200 (its track joins a mains residue to the disk's harmonics) | record closer, away from other sounds | does not work yet: recorded louder or without the hum, the recording is still refused (for other causes); open |
+//! | "lie off the disk's line (stray)" | phone-room seeds 15 (its track follows 3 Omega in places) and 200 | record closer, away from other sounds | does not work yet: (as above) |
 //! | "fewer than the 8 a fit of eq 79 is judged on" | a disk heard for its last 0.7 s | record the spin from earlier | the spin from its first seconds: analysed |
 
 use crate::common::{cli_in, temp_dir, write_wav_i16};
@@ -167,6 +167,49 @@ fn a_line_of_too_few_frames_is_refused_with_record_from_earlier_and_that_works()
         assert!(!e.contains(word), "a sound's refusal speaks of {word}: {e}");
     }
     assert_analysed(&disk(0.3, 0.003, 1.0));
+}
+
+/// Two recordings of the phone-room generator whose pitch tracks hold frames off the disk's
+/// line: seed 15's track follows the disk's third harmonic in places and seed 200's joins a
+/// mains residue to its harmonics. Each is refused naming the stray frames (seed 200 also the
+/// unsteady rise, Kendall's tau), in a sound's terms. Their advice, record closer and away from
+/// other sounds, does not yet rescue them (the same rooms with the disk louder, or without the
+/// hum, are still refused, for other causes), so this test holds the messages only.
+#[test]
+fn a_track_off_the_disks_line_is_refused_naming_the_stray_frames_and_the_unsteady_rise() {
+    use experiment::formats::channel::Channels;
+    use experiment::formats::recording::parse_recording;
+    use experiment::synthetic::phone_room::PhoneRoom;
+    let refusal = |seed: u64| {
+        let rec = PhoneRoom::draw(seed).record().expect("a recording");
+        let file = format!("phone-{seed}.wav");
+        let r = parse_recording(rec.wav().expect("WAV bytes"), &file, Channels::Mix)
+            .expect("a readable recording");
+        analysed(&r.trace).expect_err("a track off the disk's line is refused")
+    };
+    let cases: [(u64, &[&str]); 2] = [
+        (15, &["lie off the disk's line (stray)"]),
+        (
+            200,
+            &[
+                "lie off the disk's line (stray)",
+                "the rate does not rise steadily (Kendall tau",
+            ],
+        ),
+    ];
+    for (seed, causes) in cases {
+        let e = refusal(seed);
+        for cause in causes {
+            assert!(e.contains(cause), "seed {seed}: {e}");
+        }
+        assert!(
+            e.contains("record closer to the disk, away from other sounds"),
+            "{e}"
+        );
+        for word in ["pulse", "light", "peak", "1/Omega"] {
+            assert!(!e.contains(word), "a sound's refusal speaks of {word}: {e}");
+        }
+    }
 }
 
 /// A recording over the whole-file limit (6,000,000 samples per channel, here 750 s at 8 kS/s
