@@ -19,6 +19,7 @@ use crate::formats::decimate::{Decimator, BAND_HZ};
 use crate::formats::input::MAX_BYTES;
 use crate::formats::recording::{container, ADTS_PRIMING};
 use crate::formats::stereo::{blocks_read, delays_of};
+use crate::formats::wav::truncated;
 use crate::trace::Trace;
 use hound::{SampleFormat, WavReader};
 use std::collections::VecDeque;
@@ -314,20 +315,7 @@ fn decode_wav(
         )));
     }
     let frames = reader.duration() as usize;
-    let truncated = |e: hound::Error, got: usize| {
-        match e {
-        hound::Error::IoError(_) => refuse(
-            file,
-            "WAV",
-            format!(
-                "truncated: it ends after {} of the {frames} samples per channel its header declares",
-                got / ch
-            ),
-            "copy or export the whole file again",
-        ),
-        e => wav(e.to_string()),
-    }
-    };
+    let truncated = |e: hound::Error, got: usize| truncated(file, e, got / ch, frames);
     let mut buf = Vec::with_capacity(PIECE * ch);
     let mut got = 0usize;
     let format = match (spec.sample_format, spec.bits_per_sample) {

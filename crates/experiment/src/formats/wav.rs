@@ -74,21 +74,7 @@ pub(crate) fn decode_wav(
     }
     let mut v = Vec::with_capacity(frames * ch);
     // A data chunk cut short: the header declares more samples than the file holds.
-    let truncated = |e: hound::Error, got: usize| {
-        match e {
-        // Bytes in memory fail to read only where they end.
-        hound::Error::IoError(_) => refuse(
-            file,
-            "WAV",
-            format!(
-                "truncated: it ends after {} of the {frames} samples per channel its header declares",
-                got / ch
-            ),
-            "copy or export the whole file again",
-        ),
-        e => wav(e.to_string()),
-    }
-    };
+    let truncated = |e: hound::Error, got: usize| truncated(file, e, got / ch, frames);
     let format = match (spec.sample_format, spec.bits_per_sample) {
         (SampleFormat::Float, 32) => {
             for s in reader.samples::<f32>() {
@@ -169,4 +155,25 @@ pub fn encode_wav_channels(
         w.finalize()?;
     }
     Ok(out.into_inner())
+}
+
+/// A WAV's samples that fail to read after `got` of the `frames` samples per channel its header
+/// declares: a file cut short (an I/O error, which bytes in memory give only where they end),
+/// or the decoder's own complaint.
+pub(crate) fn truncated(file: &str, e: hound::Error, got: usize, frames: usize) -> ExperimentError {
+    match e {
+        hound::Error::IoError(_) => refuse(
+            file,
+            "WAV",
+            format!(
+                "truncated: it ends after {got} of the {frames} samples per channel its header \
+                 declares"
+            ),
+            "copy or export the whole file again",
+        ),
+        e => ExperimentError::Wav {
+            file: file.into(),
+            message: e.to_string(),
+        },
+    }
 }
