@@ -17,7 +17,7 @@ use crate::formats::channel::{
 };
 use crate::formats::decimate::{Decimator, BAND_HZ};
 use crate::formats::input::MAX_BYTES;
-use crate::formats::recording::{container, ADTS_PRIMING};
+use crate::formats::recording::{container, each_packet, ADTS_PRIMING};
 use crate::formats::stereo::{blocks_read, delays_of};
 use crate::formats::wav::truncated;
 use crate::trace::Trace;
@@ -25,7 +25,6 @@ use hound::{SampleFormat, WavReader};
 use std::collections::VecDeque;
 use std::io::{BufReader, Read};
 use std::path::Path;
-use symphonia::core::audio::SampleBuffer;
 use symphonia::core::codecs::{DecoderOptions, CODEC_TYPE_NULL};
 use symphonia::core::errors::Error as DecodeError;
 use symphonia::core::formats::FormatOptions;
@@ -420,44 +419,34 @@ fn decode_packets(
         None => (0, None),
     };
     let (mut seen, mut kept) = (0usize, 0usize);
-    loop {
-        let packet = match reader.next_packet() {
-            Ok(p) => p,
-            Err(DecodeError::IoError(e)) if e.kind() == std::io::ErrorKind::UnexpectedEof => break,
-            Err(DecodeError::ResetRequired) => break,
-            Err(e) => return Err(bad(e)),
-        };
-        if packet.track_id() != id {
-            continue;
-        }
-        let buf = match decoder.decode(&packet) {
-            Ok(b) => b,
-            Err(DecodeError::DecodeError(_)) => continue,
-            Err(e) => return Err(bad(e)),
-        };
-        let spec = *buf.spec();
-        rate = spec.rate;
-        channels = spec.channels.count().max(1);
-        let mut sb = SampleBuffer::<f32>::new(buf.capacity() as u64, spec);
-        sb.copy_interleaved_ref(buf);
-        let x: Vec<f64> = sb.samples().iter().map(|&x| f64::from(x)).collect();
-        if let Some(j) = x.iter().position(|x| !x.is_finite()) {
-            return Err(refuse(
-                file,
-                &format,
-                format!("sample {} decodes to NaN or infinity", seen * channels + j),
-                fix,
-            ));
-        }
-        let frames = x.len() / channels;
-        let from = skip.saturating_sub(seen).min(frames);
-        let to = keep.map_or(frames, |k| frames.min(from + k.saturating_sub(kept)));
-        seen += frames;
-        if from < to {
-            kept += to - from;
-            each(&x[from * channels..to * channels], channels)?;
-        }
-    }
+    each_packet(
+        reader.as_mut(),
+        decoder.as_mut(),
+        id,
+        &bad,
+        &mut |s, r, c| {
+            rate = r;
+            channels = c.max(1);
+            let x: Vec<f64> = s.iter().map(|&x| f64::from(x)).collect();
+            if let Some(j) = x.iter().position(|x| !x.is_finite()) {
+                return Err(refuse(
+                    file,
+                    &format,
+                    format!("sample {} decodes to NaN or infinity", seen * channels + j),
+                    fix,
+                ));
+            }
+            let frames = x.len() / channels;
+            let from = skip.saturating_sub(seen).min(frames);
+            let to = keep.map_or(frames, |k| frames.min(from + k.saturating_sub(kept)));
+            seen += frames;
+            if from < to {
+                kept += to - from;
+                each(&x[from * channels..to * channels], channels)?;
+            }
+            Ok(())
+        },
+    )?;
     if edit.is_some() {
         format = format!("{format}, its edit list's {skip} priming samples left out");
     } else if ext == "aac" {

@@ -19,9 +19,9 @@ use crate::formats::channel::{mix, refuse, Channels, Recording};
 use crate::formats::input::{read_bounded, MAX_BYTES, MAX_SOUND_SAMPLES};
 use std::path::Path;
 use symphonia::core::audio::SampleBuffer;
-use symphonia::core::codecs::{DecoderOptions, CODEC_TYPE_NULL};
+use symphonia::core::codecs::{Decoder, DecoderOptions, CODEC_TYPE_NULL};
 use symphonia::core::errors::Error as DecodeError;
-use symphonia::core::formats::FormatOptions;
+use symphonia::core::formats::{FormatOptions, FormatReader};
 use symphonia::core::io::MediaSourceStream;
 use symphonia::core::meta::MetadataOptions;
 use symphonia::core::probe::Hint;
@@ -201,35 +201,25 @@ fn decode_compressed(
     let mut out: Vec<f64> = Vec::new();
     let mut rate = params.sample_rate.unwrap_or(0);
     let mut channels = n_ch;
-    loop {
-        let packet = match reader.next_packet() {
-            Ok(p) => p,
-            Err(DecodeError::IoError(e)) if e.kind() == std::io::ErrorKind::UnexpectedEof => break,
-            Err(DecodeError::ResetRequired) => break,
-            Err(e) => return Err(bad(e)),
-        };
-        if packet.track_id() != id {
-            continue;
-        }
-        let buf = match decoder.decode(&packet) {
-            Ok(b) => b,
-            Err(DecodeError::DecodeError(_)) => continue,
-            Err(e) => return Err(bad(e)),
-        };
-        let spec = *buf.spec();
-        rate = spec.rate;
-        channels = spec.channels.count();
-        let mut sb = SampleBuffer::<f32>::new(buf.capacity() as u64, spec);
-        sb.copy_interleaved_ref(buf);
-        out.extend(sb.samples().iter().map(|&x| f64::from(x)));
-        if out.len() > MAX_SOUND_SAMPLES * channels.max(1) {
-            return Err(ExperimentError::SoundTooLong {
-                file: file.into(),
-                rate,
-                limit: MAX_SOUND_SAMPLES,
-            });
-        }
-    }
+    each_packet(
+        reader.as_mut(),
+        decoder.as_mut(),
+        id,
+        &bad,
+        &mut |x, r, c| {
+            rate = r;
+            channels = c;
+            out.extend(x.iter().map(|&x| f64::from(x)));
+            if out.len() > MAX_SOUND_SAMPLES * channels.max(1) {
+                return Err(ExperimentError::SoundTooLong {
+                    file: file.into(),
+                    rate,
+                    limit: MAX_SOUND_SAMPLES,
+                });
+            }
+            Ok(())
+        },
+    )?;
     let format = match edit {
         Some(e) => {
             // The samples the edit list plays (the encoder's priming and padding left out).
@@ -265,4 +255,42 @@ fn decode_compressed(
         ));
     }
     Ok((out, rate, channels, format))
+}
+
+/// What [`each_packet`] hands each packet's samples to: the interleaved samples, the rate (S/s)
+/// and the channel count.
+pub(crate) type Samples<'a> = dyn FnMut(&[f32], u32, usize) -> Result<(), ExperimentError> + 'a;
+
+/// Decodes track `id` of `reader` packet by packet to its end, handing `each` every packet's
+/// interleaved samples with the sample rate and channel count its buffer states. A packet that
+/// fails to decode is skipped (symphonia's decoders take up again at the next one); any other
+/// error is `bad`'s.
+pub(crate) fn each_packet(
+    reader: &mut dyn FormatReader,
+    decoder: &mut dyn Decoder,
+    id: u32,
+    bad: &dyn Fn(DecodeError) -> ExperimentError,
+    each: &mut Samples<'_>,
+) -> Result<(), ExperimentError> {
+    loop {
+        let packet = match reader.next_packet() {
+            Ok(p) => p,
+            Err(DecodeError::IoError(e)) if e.kind() == std::io::ErrorKind::UnexpectedEof => break,
+            Err(DecodeError::ResetRequired) => break,
+            Err(e) => return Err(bad(e)),
+        };
+        if packet.track_id() != id {
+            continue;
+        }
+        let buf = match decoder.decode(&packet) {
+            Ok(b) => b,
+            Err(DecodeError::DecodeError(_)) => continue,
+            Err(e) => return Err(bad(e)),
+        };
+        let spec = *buf.spec();
+        let mut sb = SampleBuffer::<f32>::new(buf.capacity() as u64, spec);
+        sb.copy_interleaved_ref(buf);
+        each(sb.samples(), spec.rate, spec.channels.count())?;
+    }
+    Ok(())
 }
