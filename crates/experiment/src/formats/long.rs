@@ -15,11 +15,12 @@ use crate::formats::channel::{
     check_shape, mix_used, refuse, refuse_cancelled, Channels, Recording, RecordingInfo,
     MAX_CHANNELS,
 };
+use crate::formats::container::{container, ADTS_PRIMING};
 use crate::formats::decimate::{Decimator, BAND_HZ};
+use crate::formats::decoding::each_packet;
+use crate::formats::decoding::truncated;
 use crate::formats::input::MAX_BYTES;
-use crate::formats::recording::{container, each_packet, ADTS_PRIMING};
 use crate::formats::stereo::{blocks_read, delays_of};
-use crate::formats::wav::truncated;
 use crate::trace::Trace;
 use hound::{SampleFormat, WavReader};
 use std::collections::VecDeque;

@@ -16,68 +16,17 @@
 
 use crate::error::ExperimentError;
 use crate::formats::channel::{mix, refuse, Channels, Recording};
+pub use crate::formats::container::ADTS_PRIMING;
+use crate::formats::container::{container, unread};
+use crate::formats::decoding::each_packet;
 use crate::formats::input::{read_bounded, MAX_BYTES, MAX_SOUND_SAMPLES};
 use std::path::Path;
-use symphonia::core::audio::SampleBuffer;
-use symphonia::core::codecs::{Decoder, DecoderOptions, CODEC_TYPE_NULL};
+use symphonia::core::codecs::{DecoderOptions, CODEC_TYPE_NULL};
 use symphonia::core::errors::Error as DecodeError;
-use symphonia::core::formats::{FormatOptions, FormatReader};
+use symphonia::core::formats::FormatOptions;
 use symphonia::core::io::MediaSourceStream;
 use symphonia::core::meta::MetadataOptions;
 use symphonia::core::probe::Hint;
-
-/// The priming samples an AAC-LC encoder puts before the sound (one frame of 1024, ffmpeg's and
-/// FAAC's), left out of a raw ADTS stream, which does not record its own.
-pub const ADTS_PRIMING: usize = 1024;
-
-/// Whether the first bytes are an ADTS frame header: the 12-bit sync word and layer 00 (MPEG
-/// audio's layers I-III, which share the sync word, have a non-zero layer).
-fn adts(bytes: &[u8]) -> bool {
-    bytes.len() > 1 && bytes[0] == 0xFF && bytes[1] & 0xF6 == 0xF0
-}
-
-/// A sound format recognised by its first bytes that no decoder here reads: Ogg Opus
-/// (`symphonia` 0.5 has no Opus decoder; the pure-Rust ones on crates.io, `opus-decoder` 0.1,
-/// `opus-pure` 0.2, `opus-rs` 0.1, are early releases not built in), refused with the
-/// conversion to make.
-fn unread(bytes: &[u8]) -> Option<&'static str> {
-    let head = &bytes[..bytes.len().min(64)];
-    if head.starts_with(b"OggS") && head.windows(8).any(|w| w == b"OpusHead") {
-        Some("Ogg Opus")
-    } else {
-        None
-    }
-}
-
-/// Whether the first bytes are an AIFF or AIFF-C file: an IFF `FORM` whose type is `AIFF` or
-/// `AIFC`.
-fn aiff(bytes: &[u8]) -> bool {
-    bytes.starts_with(b"FORM") && matches!(bytes.get(8..12), Some(b"AIFF" | b"AIFC"))
-}
-
-/// The container, by the file's first bytes.
-pub(crate) fn container(bytes: &[u8]) -> Option<(&'static str, &'static str)> {
-    let head = |s: &[u8]| bytes.starts_with(s);
-    if head(b"RIFF") || head(b"RF64") || head(b"RIFX") {
-        Some(("WAV", "wav"))
-    } else if head(b"fLaC") {
-        Some(("FLAC", "flac"))
-    } else if aiff(bytes) {
-        Some(("AIFF", "aiff"))
-    } else if head(b"caff") {
-        Some(("Core Audio (CAF)", "caf"))
-    } else if head(b"OggS") {
-        Some(("Ogg", "ogg"))
-    } else if bytes.len() > 8 && &bytes[4..8] == b"ftyp" {
-        Some(("M4A/MP4", "m4a"))
-    } else if adts(bytes) {
-        Some(("raw AAC (ADTS)", "aac"))
-    } else if head(b"ID3") || (bytes.len() > 1 && bytes[0] == 0xFF && bytes[1] & 0xE0 == 0xE0) {
-        Some(("MP3", "mp3"))
-    } else {
-        None
-    }
-}
 
 /// Reads a recording of any supported format.
 pub fn read_recording(
@@ -255,42 +204,4 @@ fn decode_compressed(
         ));
     }
     Ok((out, rate, channels, format))
-}
-
-/// What [`each_packet`] hands each packet's samples to: the interleaved samples, the rate (S/s)
-/// and the channel count.
-pub(crate) type Samples<'a> = dyn FnMut(&[f32], u32, usize) -> Result<(), ExperimentError> + 'a;
-
-/// Decodes track `id` of `reader` packet by packet to its end, handing `each` every packet's
-/// interleaved samples with the sample rate and channel count its buffer states. A packet that
-/// fails to decode is skipped (symphonia's decoders take up again at the next one); any other
-/// error is `bad`'s.
-pub(crate) fn each_packet(
-    reader: &mut dyn FormatReader,
-    decoder: &mut dyn Decoder,
-    id: u32,
-    bad: &dyn Fn(DecodeError) -> ExperimentError,
-    each: &mut Samples<'_>,
-) -> Result<(), ExperimentError> {
-    loop {
-        let packet = match reader.next_packet() {
-            Ok(p) => p,
-            Err(DecodeError::IoError(e)) if e.kind() == std::io::ErrorKind::UnexpectedEof => break,
-            Err(DecodeError::ResetRequired) => break,
-            Err(e) => return Err(bad(e)),
-        };
-        if packet.track_id() != id {
-            continue;
-        }
-        let buf = match decoder.decode(&packet) {
-            Ok(b) => b,
-            Err(DecodeError::DecodeError(_)) => continue,
-            Err(e) => return Err(bad(e)),
-        };
-        let spec = *buf.spec();
-        let mut sb = SampleBuffer::<f32>::new(buf.capacity() as u64, spec);
-        sb.copy_interleaved_ref(buf);
-        each(sb.samples(), spec.rate, spec.channels.count())?;
-    }
-    Ok(())
 }

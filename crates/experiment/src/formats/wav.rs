@@ -9,6 +9,7 @@
 
 use crate::error::ExperimentError;
 use crate::formats::channel::{mix, refuse, Channels};
+use crate::formats::decoding::truncated;
 use crate::formats::input::{read_bounded, MAX_BYTES, MAX_SOUND_SAMPLES};
 use crate::trace::Trace;
 use hound::{SampleFormat, WavReader, WavSpec, WavWriter};
@@ -155,25 +156,4 @@ pub fn encode_wav_channels(
         w.finalize()?;
     }
     Ok(out.into_inner())
-}
-
-/// A WAV's samples that fail to read after `got` of the `frames` samples per channel its header
-/// declares: a file cut short (an I/O error, which bytes in memory give only where they end),
-/// or the decoder's own complaint.
-pub(crate) fn truncated(file: &str, e: hound::Error, got: usize, frames: usize) -> ExperimentError {
-    match e {
-        hound::Error::IoError(_) => refuse(
-            file,
-            "WAV",
-            format!(
-                "truncated: it ends after {got} of the {frames} samples per channel its header \
-                 declares"
-            ),
-            "copy or export the whole file again",
-        ),
-        e => ExperimentError::Wav {
-            file: file.into(),
-            message: e.to_string(),
-        },
-    }
 }
