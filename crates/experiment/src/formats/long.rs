@@ -17,8 +17,9 @@ use crate::formats::channel::{
 };
 use crate::formats::container::{container, ADTS_PRIMING};
 use crate::formats::decimate::{Decimator, BAND_HZ};
-use crate::formats::decoding::each_packet;
-use crate::formats::decoding::truncated;
+use crate::formats::decoding::{
+    each_packet, open_track, truncated, undecodable, AudioTrack, UNDECODABLE_FIX,
+};
 use crate::formats::input::MAX_BYTES;
 use crate::formats::stereo::{blocks_read, delays_of};
 use crate::trace::Trace;
@@ -26,12 +27,8 @@ use hound::{SampleFormat, WavReader};
 use std::collections::VecDeque;
 use std::io::{BufReader, Read};
 use std::path::Path;
-use symphonia::core::codecs::{DecoderOptions, CODEC_TYPE_NULL};
+use symphonia::core::codecs::DecoderOptions;
 use symphonia::core::errors::Error as DecodeError;
-use symphonia::core::formats::FormatOptions;
-use symphonia::core::io::MediaSourceStream;
-use symphonia::core::meta::MetadataOptions;
-use symphonia::core::probe::Hint;
 
 /// The longest sound recording read (s): two hours.
 pub const MAX_SOUND_SECONDS: usize = 7200;
@@ -372,8 +369,7 @@ fn decode_packets(
     ext: &str,
     each: &mut Each<'_>,
 ) -> Result<Meta, ExperimentError> {
-    let fix = "the file may be damaged or use a coding this tool does not decode: export it as WAV or FLAC";
-    let bad = |e: DecodeError| refuse(file, container, format!("not decodable ({e})"), fix);
+    let bad = |e: DecodeError| undecodable(file, container, e);
     let edit = if ext == "m4a" {
         crate::formats::input::read_bounded(path, MAX_BYTES)
             .ok()
@@ -385,27 +381,12 @@ fn decode_packets(
         file: file.into(),
         message: format!("cannot open it ({e})"),
     })?;
-    let mss = MediaSourceStream::new(Box::new(f), Default::default());
-    let mut hint = Hint::new();
-    hint.with_extension(ext);
-    let options = FormatOptions {
-        enable_gapless: true,
-        ..FormatOptions::default()
-    };
-    let probed = symphonia::default::get_probe()
-        .format(&hint, mss, &options, &MetadataOptions::default())
-        .map_err(bad)?;
-    let mut reader = probed.format;
-    let track = reader
-        .tracks()
-        .iter()
-        .find(|t| t.codec_params.codec != CODEC_TYPE_NULL)
-        .ok_or_else(|| refuse(file, container, "no audio track".into(), fix))?;
-    let (id, params) = (track.id, track.codec_params.clone());
-    let codec = symphonia::default::get_codecs()
-        .get_codec(params.codec)
-        .map_or("unknown coding", |d| d.long_name);
-    let mut format = format!("{container}, {codec}");
+    let AudioTrack {
+        mut reader,
+        id,
+        params,
+        mut format,
+    } = open_track(Box::new(f), file, container, ext)?;
     let mut decoder = symphonia::default::get_codecs()
         .make(&params, &DecoderOptions::default())
         .map_err(bad)?;
@@ -434,7 +415,7 @@ fn decode_packets(
                     file,
                     &format,
                     format!("sample {} decodes to NaN or infinity", seen * channels + j),
-                    fix,
+                    UNDECODABLE_FIX,
                 ));
             }
             let frames = x.len() / channels;

@@ -18,15 +18,11 @@ use crate::error::ExperimentError;
 use crate::formats::channel::{mix, refuse, Channels, Recording};
 pub use crate::formats::container::ADTS_PRIMING;
 use crate::formats::container::{container, unread};
-use crate::formats::decoding::each_packet;
+use crate::formats::decoding::{each_packet, open_track, undecodable, AudioTrack, UNDECODABLE_FIX};
 use crate::formats::input::{read_bounded, MAX_BYTES, MAX_SOUND_SAMPLES};
 use std::path::Path;
-use symphonia::core::codecs::{DecoderOptions, CODEC_TYPE_NULL};
+use symphonia::core::codecs::DecoderOptions;
 use symphonia::core::errors::Error as DecodeError;
-use symphonia::core::formats::FormatOptions;
-use symphonia::core::io::MediaSourceStream;
-use symphonia::core::meta::MetadataOptions;
-use symphonia::core::probe::Hint;
 
 /// Reads a recording of any supported format.
 pub fn read_recording(
@@ -101,38 +97,18 @@ fn decode_compressed(
     container: &str,
     ext: &str,
 ) -> Result<(Vec<f64>, u32, usize, String), ExperimentError> {
-    let fix = "the file may be damaged or use a coding this tool does not decode: export it as WAV or FLAC";
-    let bad = |e: DecodeError| refuse(file, container, format!("not decodable ({e})"), fix);
+    let bad = |e: DecodeError| undecodable(file, container, e);
     let edit = if ext == "m4a" {
         crate::formats::mp4_edit::sound_edit(&bytes)
     } else {
         None
     };
-    let mss = MediaSourceStream::new(Box::new(std::io::Cursor::new(bytes)), Default::default());
-    let mut hint = Hint::new();
-    hint.with_extension(ext);
-    let probed = symphonia::default::get_probe()
-        .format(
-            &hint,
-            mss,
-            &FormatOptions {
-                enable_gapless: true,
-                ..FormatOptions::default()
-            },
-            &MetadataOptions::default(),
-        )
-        .map_err(bad)?;
-    let mut reader = probed.format;
-    let track = reader
-        .tracks()
-        .iter()
-        .find(|t| t.codec_params.codec != CODEC_TYPE_NULL)
-        .ok_or_else(|| refuse(file, container, "no audio track".into(), fix))?;
-    let (id, params) = (track.id, track.codec_params.clone());
-    let codec = symphonia::default::get_codecs()
-        .get_codec(params.codec)
-        .map_or("unknown coding", |d| d.long_name);
-    let format = format!("{container}, {codec}");
+    let AudioTrack {
+        mut reader,
+        id,
+        params,
+        format,
+    } = open_track(Box::new(std::io::Cursor::new(bytes)), file, container, ext)?;
     let n_ch = params.channels.map_or(0, |c| c.count());
     if params
         .n_frames
@@ -200,7 +176,7 @@ fn decode_compressed(
             file,
             &format,
             format!("sample {j} decodes to NaN or infinity"),
-            fix,
+            UNDECODABLE_FIX,
         ));
     }
     Ok((out, rate, channels, format))
