@@ -30,6 +30,31 @@ impl Timing {
         max_runs: 1,
         budget_seconds: 0.0,
     };
+
+    /// Runs `run` as this timing asks and returns the first run's result, the median wall time
+    /// (s) of the runs and how many were made; the first error ends the runs.
+    pub fn repeat<T, E>(
+        &self,
+        mut run: impl FnMut() -> Result<T, E>,
+    ) -> Result<(T, f64, usize), E> {
+        let started = Instant::now();
+        let mut walls = Vec::new();
+        let mut first = None;
+        loop {
+            let t = Instant::now();
+            let out = run()?;
+            walls.push(t.elapsed().as_secs_f64());
+            first.get_or_insert(out);
+            let n = walls.len();
+            if n >= self.max_runs.max(1)
+                || (n >= self.min_runs && started.elapsed().as_secs_f64() >= self.budget_seconds)
+            {
+                break;
+            }
+        }
+        let runs = walls.len();
+        Ok((first.expect("at least one run"), median(&mut walls), runs))
+    }
 }
 
 impl Default for Timing {
@@ -115,24 +140,9 @@ impl Visit for TraceJob<'_> {
     fn visit<M: Model<N>, const N: usize>(self, model: &M, scene: &Scene) -> Self::Out {
         let y0 = model.state(&scene.start);
         let t_end = scene.stop.time;
-        let started = Instant::now();
-        let mut walls = Vec::new();
-        let mut first = None;
-        loop {
-            let p = problem(model, scene, y0, t_end);
-            let t = Instant::now();
-            let sol = solve_with(p, self.settings, self.engine)?;
-            walls.push(t.elapsed().as_secs_f64());
-            first.get_or_insert(sol);
-            let n = walls.len();
-            let spent = started.elapsed().as_secs_f64();
-            if n >= self.timing.max_runs.max(1)
-                || (n >= self.timing.min_runs && spent >= self.timing.budget_seconds)
-            {
-                break;
-            }
-        }
-        let sol = first.expect("at least one run");
+        let (sol, wall_seconds, runs) = self
+            .timing
+            .repeat(|| solve_with(problem(model, scene, y0, t_end), self.settings, self.engine))?;
         let (t_final, y_end) = sol.last();
         let (mut sample_t, mut samples) = (Vec::new(), Vec::new());
         if let Some(dt) = self.sample {
@@ -154,8 +164,8 @@ impl Visit for TraceJob<'_> {
             y_final: y_end.iter().copied().collect(),
             sample_t,
             samples,
-            wall_seconds: median(&mut walls),
-            runs: walls.len(),
+            wall_seconds,
+            runs,
             energy_change: (model.energy(&y_end) - e0) / e0.abs(),
         })
     }
@@ -171,22 +181,12 @@ pub fn recorded_wall(
 ) -> Result<f64, SettingsError> {
     let mut scene = scene.clone();
     scene.settings = *settings;
-    let started = Instant::now();
-    let mut walls = Vec::new();
-    loop {
+    let (_, wall_seconds, _) = timing.repeat(|| {
         let mut rows = 0u64;
         let mut sink = |row: &[f64]| rows += std::hint::black_box(row).len() as u64;
-        let t = Instant::now();
-        run_streamed(&scene, None, &mut sink)?;
-        walls.push(t.elapsed().as_secs_f64());
-        let n = walls.len();
-        if n >= timing.max_runs.max(1)
-            || (n >= timing.min_runs && started.elapsed().as_secs_f64() >= timing.budget_seconds)
-        {
-            break;
-        }
-    }
-    Ok(median(&mut walls))
+        run_streamed(&scene, None, &mut sink)
+    })?;
+    Ok(wall_seconds)
 }
 
 /// [`trace`] of a sliding scene: the whole run through the hybrid driver, its switches between
@@ -201,21 +201,7 @@ fn trace_sliding(
     let mut scene = scene.clone();
     scene.settings = *settings;
     let model = sliding_model(&scene);
-    let started = Instant::now();
-    let mut walls = Vec::new();
-    let mut first = None;
-    loop {
-        let t = Instant::now();
-        let sol = integrate(&model, &scene, None)?;
-        walls.push(t.elapsed().as_secs_f64());
-        first.get_or_insert(sol);
-        let n = walls.len();
-        let spent = started.elapsed().as_secs_f64();
-        if n >= timing.max_runs.max(1) || (n >= timing.min_runs && spent >= timing.budget_seconds) {
-            break;
-        }
-    }
-    let sol = first.expect("at least one run");
+    let (sol, wall_seconds, runs) = timing.repeat(|| integrate(&model, &scene, None))?;
     let last = sol.y.len() - 1;
     let (t_final, y_end) = (sol.t[last], sol.y[last]);
     let (mut sample_t, mut samples) = (Vec::new(), Vec::new());
@@ -242,8 +228,8 @@ fn trace_sliding(
         y_final: y_end.iter().copied().collect(),
         sample_t,
         samples,
-        wall_seconds: median(&mut walls),
-        runs: walls.len(),
+        wall_seconds,
+        runs,
         energy_change: (model.energy(&y_end) - e0) / e0.abs(),
     })
 }
