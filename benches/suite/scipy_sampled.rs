@@ -4,8 +4,8 @@
 //! work:
 //!
 //! - the states alone at the rows, as `solve_ivp`'s `t_eval` returns them: the solver layer's
-//!   sampled run (`physics::solve::solve`, each sample from the dense output handed to a sink
-//!   and discarded), against `solve_ivp` with `t_eval`;
+//!   sampled run (`physics::solve::solve`, the samples of each step evaluated together from its
+//!   dense output and handed to a sink a batch at a time, then discarded), against `solve_ivp` with `t_eval`;
 //! - the benchmark scene run as `simulate` runs it, with its recorded quantities (the state and
 //!   the energy, the energy's largest change, the loss of contact looked for:
 //!   [`physics::run::run_streamed`], rows discarded), against `solve_ivp` with `t_eval` followed
@@ -17,7 +17,7 @@ use physics::dispatch::{dispatch, problem, Visit};
 use physics::model::Model;
 use physics::run::run_streamed;
 use physics::scene::Scene;
-use physics::solve::{solve, Method, Settings, State};
+use physics::solve::{solve, Batch, Method, Settings};
 use serde_json::{json, Value};
 use std::hint::black_box;
 use std::time::Instant;
@@ -71,7 +71,8 @@ fn reference(scene: &Scene) -> (Vec<f64>, Vec<f64>) {
 
 /// The states of a run of `scene` at its samples and nothing else, as `solve_ivp`'s `t_eval`
 /// returns them: its model integrated by the solver layer with the scene's events, each sample
-/// taken from the dense output and handed to a sink; returns how many samples were made.
+/// taken from the dense output, a step's samples evaluated together and handed to a sink as a
+/// batch; returns how many samples were made.
 fn states_only(scene: &Scene) -> u64 {
     struct States;
     impl Visit for States {
@@ -79,13 +80,13 @@ fn states_only(scene: &Scene) -> u64 {
         fn visit<M: Model<N>, const N: usize>(self, model: &M, scene: &Scene) -> u64 {
             let y0 = model.state(&scene.start);
             let mut samples = 0u64;
-            let mut sink = |t: f64, y: &State<N>| {
-                black_box((t, y));
-                samples += 1;
+            let mut sink = |batch: &Batch<N>| {
+                black_box(batch);
+                samples += batch.len() as u64;
             };
             let mut p = problem(model, scene, y0, scene.stop.time);
             p.sample = scene.sample;
-            p.on_sample = Some(&mut sink);
+            p.on_batch = Some(&mut sink);
             let sol = solve(p, &scene.settings).expect("the benchmark scene runs");
             black_box(&sol);
             samples + sol.t.len() as u64
