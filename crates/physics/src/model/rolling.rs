@@ -313,9 +313,16 @@ impl<const N: usize> Model<N> for Rolling<N> {
         }
     }
 
+    /// True unless the contact force is recorded.
+    fn rows_together(&self, quantities: &[Quantity]) -> bool {
+        !quantities
+            .iter()
+            .any(|q| matches!(q, Quantity::NormalForce | Quantity::Friction))
+    }
+
     /// The rows column by column over the batch: the tilt's sines and cosines two at a time
-    /// ([`sin_cos_each`], the bits of [`sin_cos`]), then each column over every row. A row
-    /// that records the contact force goes through [`Model::record_row`] one row at a time.
+    /// ([`sin_cos_each`], the bits of [`sin_cos`]), then each column over every row. Rows that
+    /// record the contact force go through [`Model::record_row`] one at a time.
     fn record_rows(
         &self,
         batch: &Batch<N>,
@@ -323,10 +330,7 @@ impl<const N: usize> Model<N> for Rolling<N> {
         out: &mut Vec<f64>,
         energy: &mut [f64],
     ) {
-        if quantities
-            .iter()
-            .any(|q| matches!(q, Quantity::NormalForce | Quantity::Friction))
-        {
+        if !self.rows_together(quantities) {
             for (j, (&t, e)) in batch.times().iter().zip(energy).enumerate() {
                 out.push(t);
                 *e = self

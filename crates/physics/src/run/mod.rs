@@ -16,6 +16,7 @@ use crate::model::{Model, Quantity};
 use crate::scene::Scene;
 use crate::solve::{held_samples, solve, Batch, Ending, SettingsError, State, BATCH};
 use contact_watch::ContactWatch;
+use std::cell::RefCell;
 
 /// Runs a scene and holds its rows in [`Run::rows`]. `progress` receives the simulated time
 /// now and then. A held run records at most [`budget::MAX_ROWS`] rows: a scene that samples
@@ -107,23 +108,31 @@ impl Visit for Integrate<'_, '_> {
             .sample
             .filter(|_| !scene.record.contains(&Quantity::NormalForce))
             .map(|dt| ContactWatch::new(model, 0.0, &y0, dt));
-        let mut recorder = Recorder::new(model, scene, &y0, self.sink, watch.as_ref());
+        let recorder = RefCell::new(Recorder::new(model, scene, &y0, self.sink, watch.as_ref()));
         let mut scratch = Vec::new();
         let mut step_end = |t: f64, y: &State<N>| {
             if let Some(w) = &watch {
                 w.step_end(model, t, y, &mut scratch);
             }
         };
-        let mut take = |batch: &Batch<N>| recorder.take_batch(batch);
+        let mut take_batch = |batch: &Batch<N>| recorder.borrow_mut().take_batch(batch);
+        let mut take = |t: f64, y: &State<N>| recorder.borrow_mut().take(t, y);
         let mut p = problem(model, scene, y0, scene.stop.time);
         p.progress = self.progress;
         p.sample = scene.sample;
         p.dense_samples = self.dense;
         if scene.sample.is_some() {
-            p.on_batch = Some(&mut take);
+            // A model that makes a batch's rows one at a time takes each sample as it comes,
+            // with no batch to gather it from.
+            if model.rows_together(&scene.record) {
+                p.on_batch = Some(&mut take_batch);
+            } else {
+                p.on_sample = Some(&mut take);
+            }
             p.on_step = Some(&mut step_end);
         }
         let sol = solve(p, &scene.settings)?;
+        let mut recorder = recorder.into_inner();
         let rows = sol.t.len() as u64;
         if scene.sample.is_none() && rows > budget::MAX_ROWS {
             return Err(SettingsError::Rows {
