@@ -5,17 +5,18 @@
 //!
 //! - the states alone at the rows, as `solve_ivp`'s `t_eval` returns them: the solver layer's
 //!   sampled run (`physics::solve::solve`, the samples of each step evaluated together from its
-//!   dense output and handed to a sink a batch at a time, then discarded), against `solve_ivp` with `t_eval`;
+//!   dense output and handed to a sink a batch at a time, then discarded), against `solve_ivp`
+//!   with `t_eval`;
 //! - the benchmark scene run as `simulate` runs it, with its recorded quantities (the state and
 //!   the energy, the energy's largest change, the loss of contact looked for:
-//!   [`physics::run::run_streamed`], rows discarded), against `solve_ivp` with `t_eval` followed
-//!   by the same quantities in numpy (`scripts/compare.py`).
+//!   [`physics::run::run_streamed_rows`], rows discarded), against `solve_ivp` with `t_eval`
+//!   followed by the same quantities in numpy (`scripts/compare.py`).
 //!
 //! The two sides are compared at equal error in $\alpha$, sampling included on both.
 
 use physics::dispatch::{dispatch, problem, Visit};
 use physics::model::Model;
-use physics::run::run_streamed;
+use physics::run::{run_streamed, run_streamed_rows};
 use physics::scene::Scene;
 use physics::solve::{solve, Batch, Method, Settings};
 use serde_json::{json, Value};
@@ -136,8 +137,8 @@ pub fn sweep(scene: &Scene, timing: &Timing) -> Value {
             .fold(0.0, f64::max);
         let recorded = median_seconds(timing, || {
             let mut rows = 0u64;
-            let mut sink = |row: &[f64]| rows += black_box(row).len() as u64;
-            black_box(run_streamed(&s, None, &mut sink).expect("runs"));
+            let mut sink = |batch: &[f64]| rows += black_box(batch).len() as u64;
+            black_box(run_streamed_rows(&s, None, &mut sink).expect("runs"));
         });
         let states = median_seconds(timing, || {
             black_box(states_only(&s));
