@@ -1,14 +1,14 @@
-//! What a recorded sample costs: a scene run end to end through
-//! [`physics::run::run_streamed`] at one row per 0.1 ms against one per 10 ms, for each model
-//! and event path (rolling with its stop events, sliding with mode switches, frictionless, the
-//! lab frame), rows discarded; and a minute at 48 kHz written as CSV to a file, as
-//! `simulate --csv` writes it.
+//! What a recorded sample costs: a scene run end to end as `simulate` runs it
+//! ([`physics::run::run_streamed_rows`], the rows of a step handed on together) at one row per
+//! 0.1 ms against one per 10 ms, for each model and event path (rolling with its stop events,
+//! sliding with mode switches, frictionless, the lab frame), rows discarded; and a minute at
+//! 48 kHz written as CSV to a file, row by row, as `simulate --csv` writes it.
 //!
 //! `cargo bench --bench benches -- sampling`; the ratio of the two rates is the price of sampling (the
 //! target is at most 1.5).
 
 use criterion::Criterion;
-use physics::run::{csv_row, run_streamed};
+use physics::run::{csv_row, run_streamed, run_streamed_rows};
 use physics::scene::Scene;
 use std::hint::black_box;
 use std::io::Write;
@@ -53,8 +53,8 @@ fn sampling(c: &mut Criterion) {
             group.bench_function(label, |b| {
                 b.iter(|| {
                     let mut n = 0u64;
-                    let mut sink = |row: &[f64]| n += black_box(row).len() as u64;
-                    black_box(run_streamed(black_box(&s), None, &mut sink).expect("runs"));
+                    let mut sink = |rows: &[f64]| n += black_box(rows).len() as u64;
+                    black_box(run_streamed_rows(black_box(&s), None, &mut sink).expect("runs"));
                     n
                 })
             });

@@ -4,20 +4,21 @@
 //! work:
 //!
 //! - the states alone at the rows, as `solve_ivp`'s `t_eval` returns them: the solver layer's
-//!   sampled run (`physics::solve::solve`, each sample from the dense output handed to a sink
-//!   and discarded), against `solve_ivp` with `t_eval`;
+//!   sampled run (`physics::solve::solve`, the samples of each step evaluated together from its
+//!   dense output and handed to a sink a batch at a time, then discarded), against `solve_ivp`
+//!   with `t_eval`;
 //! - the benchmark scene run as `simulate` runs it, with its recorded quantities (the state and
 //!   the energy, the energy's largest change, the loss of contact looked for:
-//!   [`physics::run::run_streamed`], rows discarded), against `solve_ivp` with `t_eval` followed
-//!   by the same quantities in numpy (`scripts/compare.py`).
+//!   [`physics::run::run_streamed_rows`], rows discarded), against `solve_ivp` with `t_eval`
+//!   followed by the same quantities in numpy (`scripts/compare.py`).
 //!
 //! The two sides are compared at equal error in $\alpha$, sampling included on both.
 
 use physics::dispatch::{dispatch, problem, Visit};
 use physics::model::Model;
-use physics::run::run_streamed;
+use physics::run::{run_streamed, run_streamed_rows};
 use physics::scene::Scene;
-use physics::solve::{solve, Method, Settings, State};
+use physics::solve::{solve, Batch, Method, Settings};
 use serde_json::{json, Value};
 use std::hint::black_box;
 use std::time::Instant;
@@ -71,7 +72,8 @@ fn reference(scene: &Scene) -> (Vec<f64>, Vec<f64>) {
 
 /// The states of a run of `scene` at its samples and nothing else, as `solve_ivp`'s `t_eval`
 /// returns them: its model integrated by the solver layer with the scene's events, each sample
-/// taken from the dense output and handed to a sink; returns how many samples were made.
+/// taken from the dense output, a step's samples evaluated together and handed to a sink as a
+/// batch; returns how many samples were made.
 fn states_only(scene: &Scene) -> u64 {
     struct States;
     impl Visit for States {
@@ -79,13 +81,13 @@ fn states_only(scene: &Scene) -> u64 {
         fn visit<M: Model<N>, const N: usize>(self, model: &M, scene: &Scene) -> u64 {
             let y0 = model.state(&scene.start);
             let mut samples = 0u64;
-            let mut sink = |t: f64, y: &State<N>| {
-                black_box((t, y));
-                samples += 1;
+            let mut sink = |batch: &Batch<N>| {
+                black_box(batch);
+                samples += batch.len() as u64;
             };
             let mut p = problem(model, scene, y0, scene.stop.time);
             p.sample = scene.sample;
-            p.on_sample = Some(&mut sink);
+            p.on_batch = Some(&mut sink);
             let sol = solve(p, &scene.settings).expect("the benchmark scene runs");
             black_box(&sol);
             samples + sol.t.len() as u64
@@ -135,8 +137,8 @@ pub fn sweep(scene: &Scene, timing: &Timing) -> Value {
             .fold(0.0, f64::max);
         let recorded = median_seconds(timing, || {
             let mut rows = 0u64;
-            let mut sink = |row: &[f64]| rows += black_box(row).len() as u64;
-            black_box(run_streamed(&s, None, &mut sink).expect("runs"));
+            let mut sink = |batch: &[f64]| rows += black_box(batch).len() as u64;
+            black_box(run_streamed_rows(&s, None, &mut sink).expect("runs"));
         });
         let states = median_seconds(timing, || {
             black_box(states_only(&s));

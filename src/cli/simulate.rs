@@ -4,7 +4,7 @@ use crate::cli::row_stream::RowStream;
 use crate::cli::trace_against::{Recorded, TraceAgainst};
 use crate::cli::{exit, stdin, stdout};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
-use physics::run::{columns, run_streamed, Run};
+use physics::run::{columns, run_streamed_rows, Run};
 use physics::scene::Scene;
 use physics::solve::Ending;
 use std::path::{Path, PathBuf};
@@ -142,16 +142,19 @@ fn simulate(
         None => None,
     };
     let mut last_time = 0.0;
-    let mut sink = |row: &[f64]| {
-        last_time = row[0];
+    let width = run_columns.len();
+    let mut sink = |rows: &[f64]| {
+        if let Some(last) = rows.len().checked_sub(width) {
+            last_time = rows[last];
+        }
         if let Some(s) = stream.as_mut() {
-            s.write(row);
+            rows.chunks_exact(width).for_each(|row| s.write(row));
         }
         if let Some(c) = compared.as_mut() {
-            c.push(row);
+            rows.chunks_exact(width).for_each(|row| c.push(row));
         }
     };
-    let result = run_streamed(&scene, Some(&report), &mut sink)
+    let result = run_streamed_rows(&scene, Some(&report), &mut sink)
         .map_err(|e| anyhow::anyhow!("{}: {e}", scene.source));
     bar.finish_and_clear();
     let result = result?;

@@ -1,6 +1,6 @@
 //! Small numerical tools shared by the checks: a seeded random source, fits, linearization,
 //! oscillation frequencies measured on trajectories, bisection, references computed once per
-//! process.
+//! process, a sine and cosine taken two at a time.
 
 pub mod autocorrelation;
 pub mod fit;
@@ -9,3 +9,4 @@ pub mod memo;
 pub mod minimize;
 pub mod oscillation;
 pub mod rng;
+pub mod trig;

@@ -22,7 +22,7 @@ pub mod steady_solid;
 
 pub use layout::{Extras, Layout};
 
-use crate::solve::{Dynamics, State};
+use crate::solve::{Batch, Dynamics, State};
 use serde::{Deserialize, Serialize};
 
 /// The paper's four variables of motion at one instant. The scalar is `f64`, or a dual number
@@ -217,6 +217,32 @@ pub trait Model<const N: usize>: Dynamics<N> {
         RowShared {
             energy,
             normal_force: force,
+        }
+    }
+
+    /// Whether [`Model::record_rows`] computes the columns of `quantities` over a batch at
+    /// once (rather than one row at a time, as by default).
+    fn rows_together(&self, quantities: &[Quantity]) -> bool {
+        let _ = quantities;
+        false
+    }
+
+    /// Appends one row per sample of `batch` to `out`, row after row: the sample's time, then
+    /// the columns of `quantities` as [`Model::record_row`] writes them for its state; writes
+    /// each row's energy to `energy` (at least as long as the batch). A model that overrides
+    /// this computes a column over all the rows at once, to the same bits.
+    fn record_rows(
+        &self,
+        batch: &Batch<N>,
+        quantities: &[Quantity],
+        out: &mut Vec<f64>,
+        energy: &mut [f64],
+    ) {
+        for (j, (&t, e)) in batch.times().iter().zip(energy).enumerate() {
+            out.push(t);
+            *e = self
+                .record_row(&batch.state(j), quantities, false, out)
+                .energy;
         }
     }
 }

@@ -1,11 +1,11 @@
 //! A row recorded at once ([`Model::record_row`], what shares its work between columns) is the
-//! row recorded column by column ([`Model::record`]), to the bit, in every model a scene can
-//! build.
+//! row recorded column by column ([`Model::record`]), and rows recorded a batch at a time
+//! ([`Model::record_rows`]) are those rows, to the bit, in every model a scene can build.
 
 use crate::dispatch::{dispatch, problem, Visit};
 use crate::model::{Model, Quantity};
 use crate::scene::{builtin, ModelKind, Scene};
-use crate::solve::{solve, State};
+use crate::solve::{solve, Batch, State, BATCH};
 
 /// Compares, on the states of the first 0.05 s of the scene's run, one row of every quantity
 /// the model records against the same columns one at a time; returns the rows compared.
@@ -46,6 +46,43 @@ impl Visit for SameRow {
                 assert_eq!(
                     shared.normal_force.map(f64::to_bits),
                     expected,
+                    "{}",
+                    scene.name
+                );
+            }
+        }
+        // Rows in batches (with and without the contact force, which a model may record one
+        // row at a time) against the rows one by one.
+        let no_force: Vec<Quantity> = quantities
+            .iter()
+            .copied()
+            .filter(|q| !matches!(q, Quantity::NormalForce | Quantity::Friction))
+            .collect();
+        for asked in [&quantities, &no_force] {
+            for chunk in states.chunks(BATCH - 3) {
+                let mut batch = Batch::default();
+                let mut one_by_one = Vec::new();
+                let mut energies = Vec::new();
+                for (j, y) in chunk.iter().enumerate() {
+                    let t = 0.01 * j as f64;
+                    assert!(batch.push(t, y));
+                    one_by_one.push(t);
+                    energies.push(model.record_row(y, asked, false, &mut one_by_one).energy);
+                }
+                let mut rows = vec![-1.0];
+                let mut energy = [0.0; BATCH];
+                model.record_rows(&batch, asked, &mut rows, &mut energy);
+                let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+                assert_eq!(rows[0], -1.0, "{}: the rows are appended to", scene.name);
+                assert_eq!(
+                    bits(&rows[1..]),
+                    bits(&one_by_one),
+                    "{}: {asked:?}",
+                    scene.name
+                );
+                assert_eq!(
+                    bits(&energy[..chunk.len()]),
+                    bits(&energies),
                     "{}",
                     scene.name
                 );

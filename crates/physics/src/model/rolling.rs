@@ -13,8 +13,9 @@ use crate::disk::Disk;
 use crate::model::dissipation::{Placement, PowerLaw};
 use crate::model::mechanism::Mechanism;
 use crate::model::{leading_state, Extras, Layout, Model, Motion, Quantity, RowShared};
-use crate::solve::{Dynamics, State};
+use crate::solve::{Batch, Dynamics, State, BATCH};
 use num_dual::DualNum;
+use numerics::trig::{sin_cos, sin_cos_each};
 
 /// Time derivatives of the paper's variables.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -240,17 +241,21 @@ impl<const N: usize> Model<N> for Rolling<N> {
         Motion::from_state(y.as_slice(), y[3])
     }
 
+    /// Eq 26 with the tilt's sine of [`numerics::trig`], the one every recorded row uses.
     fn energy(&self, y: &State<N>) -> f64 {
-        energy(&self.disk, &self.motion(y))
+        let m = self.motion(y);
+        energy_at_tilt(&self.disk, &m, sin_cos(m.alpha).0)
     }
 
     fn record(&self, y: &State<N>, q: Quantity, out: &mut Vec<f64>) -> bool {
         let m = self.motion(y);
+        let sc = sin_cos(m.alpha);
         match q {
             Quantity::Energy => out.push(self.energy(y)),
-            Quantity::Lz => out.push(lz(&self.disk, &m)),
+            Quantity::Lz => out.push(lz_at_tilt(&self.disk, &m, sc)),
             Quantity::NormalForce | Quantity::Friction => {
-                let f = contact_force(&self.disk, &m, &self.rates(y));
+                let r = rates_at_tilt(&self.disk, &m, sc, self.torque(&m));
+                let f = contact_force_at_tilt(&self.disk, &m, sc, &r);
                 if q == Quantity::NormalForce {
                     out.push(f[0]);
                 } else {
@@ -276,7 +281,7 @@ impl<const N: usize> Model<N> for Rolling<N> {
         out: &mut Vec<f64>,
     ) -> RowShared {
         let m = self.motion(y);
-        let sc = m.alpha.sin_cos();
+        let sc = sin_cos(m.alpha);
         let energy = energy_at_tilt(&self.disk, &m, sc.0);
         let needs_force = normal_force
             || quantities
@@ -306,6 +311,95 @@ impl<const N: usize> Model<N> for Rolling<N> {
             energy,
             normal_force: force.filter(|_| normal_force).map(|f| f[0]),
         }
+    }
+
+    /// True unless the contact force is recorded.
+    fn rows_together(&self, quantities: &[Quantity]) -> bool {
+        !quantities
+            .iter()
+            .any(|q| matches!(q, Quantity::NormalForce | Quantity::Friction))
+    }
+
+    /// The rows column by column over the batch: the tilt's sines and cosines two at a time
+    /// ([`sin_cos_each`], the bits of [`sin_cos`]), then each column over every row. Rows that
+    /// record the contact force go through [`Model::record_row`] one at a time.
+    fn record_rows(
+        &self,
+        batch: &Batch<N>,
+        quantities: &[Quantity],
+        out: &mut Vec<f64>,
+        energy: &mut [f64],
+    ) {
+        if !self.rows_together(quantities) {
+            for (j, (&t, e)) in batch.times().iter().zip(energy).enumerate() {
+                out.push(t);
+                *e = self
+                    .record_row(&batch.state(j), quantities, false, out)
+                    .energy;
+            }
+            return;
+        }
+        let n = batch.len();
+        let (mut sin, mut cos) = ([0.0; BATCH], [0.0; BATCH]);
+        sin_cos_each(batch.component(0), &mut sin, &mut cos);
+        let (alpha, alpha_dot) = (batch.component(0), batch.component(1));
+        let (precession, spin) = (batch.component(2), batch.component(3));
+        let at = |j: usize| Motion {
+            alpha: alpha[j],
+            alpha_dot: alpha_dot[j],
+            precession: precession[j],
+            spin: spin[j],
+        };
+        for (j, e) in energy[..n].iter_mut().enumerate() {
+            *e = energy_at_tilt(&self.disk, &at(j), sin[j]);
+        }
+        let width = 1 + quantities.iter().map(|q| q.columns().len()).sum::<usize>();
+        let start = out.len();
+        out.resize(start + n * width, 0.0);
+        let rows = &mut out[start..];
+        let state = |i: Option<usize>| i.map(|i| batch.component(i));
+        put(rows, width, 0, batch.times());
+        let mut lz = [0.0; BATCH];
+        let mut c = 1;
+        for &q in quantities {
+            let values = match q {
+                Quantity::Alpha => Some(alpha),
+                Quantity::AlphaDot => Some(alpha_dot),
+                Quantity::Precession => Some(precession),
+                Quantity::Spin => Some(spin),
+                Quantity::Energy => Some(&energy[..n]),
+                Quantity::Heading => state(self.layout.heading),
+                Quantity::Face => state(self.layout.face),
+                _ => None,
+            };
+            match (q, values) {
+                (_, Some(v)) => put(rows, width, c, v),
+                (Quantity::Lz, _) => {
+                    for (j, l) in lz[..n].iter_mut().enumerate() {
+                        *l = lz_at_tilt(&self.disk, &at(j), (sin[j], cos[j]));
+                    }
+                    put(rows, width, c, &lz[..n]);
+                }
+                (Quantity::Path, _) => {
+                    let p = self.layout.path.expect("validated: the path is a state");
+                    put(rows, width, c, batch.component(p));
+                    put(rows, width, c + 1, batch.component(p + 1));
+                }
+                _ => debug_assert!(
+                    false,
+                    "validated scenes only record what the model provides"
+                ),
+            }
+            c += q.columns().len();
+        }
+    }
+}
+
+/// Writes `values[j]` into column `c` of each row `j` of `rows` (rows of `width` numbers).
+#[inline]
+pub(crate) fn put(rows: &mut [f64], width: usize, c: usize, values: &[f64]) {
+    for (row, v) in rows.chunks_exact_mut(width).zip(values) {
+        row[c] = *v;
     }
 }
 

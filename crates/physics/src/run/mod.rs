@@ -14,8 +14,9 @@ use crate::budget;
 use crate::dispatch::{dispatch, problem, Visit};
 use crate::model::{Model, Quantity};
 use crate::scene::Scene;
-use crate::solve::{held_samples, solve, Ending, SettingsError, State};
+use crate::solve::{held_samples, solve, Batch, Ending, SettingsError, State, BATCH};
 use contact_watch::ContactWatch;
+use std::cell::RefCell;
 
 /// Runs a scene and holds its rows in [`Run::rows`]. `progress` receives the simulated time
 /// now and then. A held run records at most [`budget::MAX_ROWS`] rows: a scene that samples
@@ -26,7 +27,8 @@ pub fn run(scene: &Scene, progress: Option<&dyn Fn(f64)>) -> Result<Run, Setting
         held_samples(scene.stop.time, dt)?;
     }
     let mut rows = Vec::new();
-    let mut hold = |row: &[f64]| rows.push(row.to_vec());
+    let width = columns(scene).len();
+    let mut hold = |batch: &[f64]| rows.extend(batch.chunks_exact(width).map(<[f64]>::to_vec));
     let mut r = record_run(scene, progress, &mut hold, true)?;
     r.rows = rows;
     Ok(r)
@@ -34,6 +36,10 @@ pub fn run(scene: &Scene, progress: Option<&dyn Fn(f64)>) -> Result<Run, Setting
 
 /// Takes each recorded row (the time, then the scene's quantities) as it is made.
 pub type RowSink<'a> = &'a mut dyn FnMut(&[f64]);
+
+/// Takes the recorded rows as they are made, one or more at a time: whole rows of
+/// [`columns`]`(scene).len()` numbers each, back to back, in time order.
+pub type RowsSink<'a> = &'a mut dyn FnMut(&[f64]);
 
 /// Runs a scene and hands each recorded row to `sink` as it is made, holding none: the
 /// returned [`Run`] has no [`Run::rows`], and [`Run::recorded`] counts them. A sampled run costs
@@ -44,6 +50,18 @@ pub fn run_streamed(
     progress: Option<&dyn Fn(f64)>,
     sink: RowSink<'_>,
 ) -> Result<Run, SettingsError> {
+    let width = columns(scene).len();
+    let mut each = |rows: &[f64]| rows.chunks_exact(width).for_each(&mut *sink);
+    record_run(scene, progress, &mut each, true)
+}
+
+/// [`run_streamed`] with the rows handed on as they are made together: those of one step's
+/// samples in one call ([`RowsSink`]), so that a caller pays no call per row.
+pub fn run_streamed_rows(
+    scene: &Scene,
+    progress: Option<&dyn Fn(f64)>,
+    sink: RowsSink<'_>,
+) -> Result<Run, SettingsError> {
     record_run(scene, progress, sink, true)
 }
 
@@ -53,7 +71,7 @@ pub fn run_streamed(
 fn record_run(
     scene: &Scene,
     progress: Option<&dyn Fn(f64)>,
-    sink: RowSink<'_>,
+    sink: RowsSink<'_>,
     dense: bool,
 ) -> Result<Run, SettingsError> {
     // The sliding model samples each segment of its hybrid run on that segment's dense output
@@ -74,7 +92,7 @@ fn record_run(
 /// Integrates and records whatever model the scene builds.
 struct Integrate<'p, 's> {
     progress: Option<&'p dyn Fn(f64)>,
-    sink: RowSink<'s>,
+    sink: RowsSink<'s>,
     dense: bool,
 }
 
@@ -90,23 +108,31 @@ impl Visit for Integrate<'_, '_> {
             .sample
             .filter(|_| !scene.record.contains(&Quantity::NormalForce))
             .map(|dt| ContactWatch::new(model, 0.0, &y0, dt));
-        let mut recorder = Recorder::new(model, scene, &y0, self.sink, watch.as_ref());
+        let recorder = RefCell::new(Recorder::new(model, scene, &y0, self.sink, watch.as_ref()));
         let mut scratch = Vec::new();
         let mut step_end = |t: f64, y: &State<N>| {
             if let Some(w) = &watch {
                 w.step_end(model, t, y, &mut scratch);
             }
         };
-        let mut take = |t: f64, y: &State<N>| recorder.take(t, y);
+        let mut take_batch = |batch: &Batch<N>| recorder.borrow_mut().take_batch(batch);
+        let mut take = |t: f64, y: &State<N>| recorder.borrow_mut().take(t, y);
         let mut p = problem(model, scene, y0, scene.stop.time);
         p.progress = self.progress;
         p.sample = scene.sample;
         p.dense_samples = self.dense;
         if scene.sample.is_some() {
-            p.on_sample = Some(&mut take);
+            // A model that makes a batch's rows one at a time takes each sample as it comes,
+            // with no batch to gather it from.
+            if model.rows_together(&scene.record) {
+                p.on_batch = Some(&mut take_batch);
+            } else {
+                p.on_sample = Some(&mut take);
+            }
             p.on_step = Some(&mut step_end);
         }
         let sol = solve(p, &scene.settings)?;
+        let mut recorder = recorder.into_inner();
         let rows = sol.t.len() as u64;
         if scene.sample.is_none() && rows > budget::MAX_ROWS {
             return Err(SettingsError::Rows {
@@ -141,7 +167,9 @@ struct Recorder<'m, 's, M, const N: usize> {
     watch: Option<&'m ContactWatch<N>>,
     recorded: u64,
     row: Vec<f64>,
-    sink: RowSink<'s>,
+    /// The rows of a batch, one after another.
+    rows: Vec<f64>,
+    sink: RowsSink<'s>,
 }
 
 impl<'m, 's, M: Model<N>, const N: usize> Recorder<'m, 's, M, N> {
@@ -149,7 +177,7 @@ impl<'m, 's, M: Model<N>, const N: usize> Recorder<'m, 's, M, N> {
         model: &'m M,
         scene: &'m Scene,
         y0: &State<N>,
-        sink: RowSink<'s>,
+        sink: RowsSink<'s>,
         watch: Option<&'m ContactWatch<N>>,
     ) -> Self {
         let columns = columns(scene);
@@ -157,6 +185,7 @@ impl<'m, 's, M: Model<N>, const N: usize> Recorder<'m, 's, M, N> {
             model,
             scene,
             row: Vec::with_capacity(columns.len()),
+            rows: Vec::with_capacity(BATCH * columns.len()),
             columns,
             e0: model.energy(y0),
             energy_change: 0.0,
@@ -191,6 +220,31 @@ impl<'m, 's, M: Model<N>, const N: usize> Recorder<'m, 's, M, N> {
         self.recorded += 1;
         let energy = shared.energy;
         self.energy_change = self.energy_change.max(((energy - self.e0) / self.e0).abs());
+    }
+
+    /// Records the rows of a batch of samples, all of one step: as [`Recorder::take`] records
+    /// each, but with each column computed over the batch ([`Model::record_rows`]) where no
+    /// row of it is looked at for a loss of contact.
+    fn take_batch(&mut self, batch: &Batch<N>) {
+        let looks = self.contact_lost.is_none()
+            && self.checks_contact
+            && self.watch.is_none_or(ContactWatch::armed);
+        if looks {
+            for (j, &t) in batch.times().iter().enumerate() {
+                self.take(t, &batch.state(j));
+            }
+            return;
+        }
+        let n = batch.len();
+        let mut energy = [0.0; BATCH];
+        self.rows.clear();
+        self.model
+            .record_rows(batch, &self.scene.record, &mut self.rows, &mut energy);
+        (self.sink)(&self.rows);
+        self.recorded += n as u64;
+        for &e in &energy[..n] {
+            self.energy_change = self.energy_change.max(((e - self.e0) / self.e0).abs());
+        }
     }
 
     fn finish(self, sol: &Solution<N>) -> Run {

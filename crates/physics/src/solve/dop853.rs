@@ -21,6 +21,7 @@
 //! $h / \max(1/6, \min(1/0.333, \mathrm{err}^{1/8} / 0.9))$; after a rejection the step may not
 //! grow. The first step is Hairer's guess from $f(y_0)$ and one explicit Euler step.
 
+use super::batch::{Batch, BATCH};
 use super::tableau::*;
 use super::{Dynamics, State, Stats};
 
@@ -105,6 +106,34 @@ impl<const N: usize> Dense<N> {
         p = r[2] + p * s;
         p = r[1] + p * s1;
         r[0] + p * s
+    }
+
+    /// The interpolated states at `times` (at most [`BATCH`], within the step) written into
+    /// `batch`, each to the bit the state [`Dense::at`] gives: the same Horner scheme, one
+    /// component at a time over all the rows, so that the rows are evaluated side by side.
+    pub(super) fn fill(&self, times: &[f64], batch: &mut Batch<N>) {
+        let n = times.len();
+        let mut s = [0.0; BATCH];
+        for (s, t) in s.iter_mut().zip(times) {
+            *s = (t - self.t_old) / self.h;
+        }
+        batch.set_times(times);
+        let r = &self.r;
+        for (i, out) in batch.components_mut().iter_mut().enumerate() {
+            let c = [
+                r[0][i], r[1][i], r[2][i], r[3][i], r[4][i], r[5][i], r[6][i], r[7][i],
+            ];
+            for (y, &s) in out[..n].iter_mut().zip(&s[..n]) {
+                let s1 = 1.0 - s;
+                let mut p = c[6] + c[7] * s;
+                p = c[5] + p * s1;
+                p = c[4] + p * s;
+                p = c[3] + p * s1;
+                p = c[2] + p * s;
+                p = c[1] + p * s1;
+                *y = c[0] + p * s;
+            }
+        }
     }
 }
 

@@ -13,7 +13,8 @@
 use super::dop853::{Dense, Dop853, Outcome};
 use super::settings::RTOL_LEAST;
 use super::{
-    Dynamics, Ending, Event, Problem, Settings, Sink, Solution, State, EVENT_TIME_TOLERANCE,
+    Batch, BatchSink, Dynamics, Ending, Event, Problem, Settings, Sink, Solution, State, BATCH,
+    EVENT_TIME_TOLERANCE,
 };
 use crate::budget::Deadline;
 
@@ -27,6 +28,10 @@ struct Sampler<'s, const N: usize> {
     y: Vec<State<N>>,
     /// Takes the samples as they are made (then `t` and `y` stay empty).
     sink: Option<Sink<'s, N>>,
+    /// Takes them a step's worth at a time instead (then `sink` is not used).
+    batch_sink: Option<BatchSink<'s, N>>,
+    /// The batch being filled.
+    batch: Box<Batch<N>>,
     /// Samples from the dense output; otherwise each is re-integrated from its step's start.
     dense: bool,
 }
@@ -34,7 +39,13 @@ struct Sampler<'s, const N: usize> {
 impl<'s, const N: usize> Sampler<'s, N> {
     /// A sampler on the grid `origin + n dt` whose first sample is the first grid time at or
     /// after `t0`.
-    fn new(origin: f64, dt: f64, t0: f64, sink: Option<Sink<'s, N>>, dense: bool) -> Self {
+    fn new(
+        origin: f64,
+        dt: f64,
+        t0: f64,
+        (sink, batch_sink): (Option<Sink<'s, N>>, Option<BatchSink<'s, N>>),
+        dense: bool,
+    ) -> Self {
         let mut s = Self {
             origin,
             dt,
@@ -42,6 +53,8 @@ impl<'s, const N: usize> Sampler<'s, N> {
             t: Vec::new(),
             y: Vec::new(),
             sink,
+            batch_sink,
+            batch: Box::default(),
             dense,
         };
         while s.time(s.next) < t0 {
@@ -51,7 +64,7 @@ impl<'s, const N: usize> Sampler<'s, N> {
     }
 
     fn time(&self, n: u64) -> f64 {
-        self.origin + self.dt * n as f64
+        grid_time(self.origin, self.dt, n)
     }
 
     /// The time before which samples are written in a run that ends at `t_stop`: `t_stop` less
@@ -75,9 +88,10 @@ impl<'s, const N: usize> Sampler<'s, N> {
                 return;
             }
             let y = state_at(t);
-            match self.sink.as_mut() {
-                Some(sink) => sink(t, &y),
-                None => {
+            match (self.batch_sink.as_mut(), self.sink.as_mut()) {
+                (Some(sink), _) => sink(&Batch::one(t, &y)),
+                (None, Some(sink)) => sink(t, &y),
+                (None, None) => {
                     self.t.push(t);
                     self.y.push(y);
                 }
@@ -85,6 +99,44 @@ impl<'s, const N: usize> Sampler<'s, N> {
             self.next += 1;
         }
     }
+
+    /// [`Sampler::fill`] from the step's dense output `d`: with a batch sink, the samples
+    /// evaluated [`BATCH`] at a time ([`Dense::fill`], the same states to the bit).
+    fn fill_dense(&mut self, t_b: f64, t_stop: f64, d: &Dense<N>) {
+        let guard = self.guard(t_stop);
+        let Some(sink) = self.batch_sink.as_mut() else {
+            return self.fill(t_b, t_stop, |t| d.at(t));
+        };
+        let mut times = [0.0; BATCH];
+        loop {
+            let mut n = 0;
+            while n < BATCH {
+                let t = grid_time(self.origin, self.dt, self.next);
+                if t > t_b || t >= guard {
+                    break;
+                }
+                times[n] = t;
+                n += 1;
+                self.next += 1;
+            }
+            if n == 0 {
+                return;
+            }
+            d.fill(&times[..n], &mut self.batch);
+            sink(&self.batch);
+            if n < BATCH {
+                return;
+            }
+        }
+    }
+}
+
+/// The time $t_g + n\,\Delta t$ of sample `n` of the grid. A run has fewer than $2^{53}$
+/// samples, so `n` converts exactly through a signed integer (one instruction, where an
+/// unsigned one takes several).
+#[inline]
+fn grid_time(origin: f64, dt: f64, n: u64) -> f64 {
+    origin + dt * (n as i64) as f64
 }
 
 /// The tolerances at which a run that samples on its dense output integrates, so that its
@@ -155,11 +207,12 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
     };
     let mut s = Dop853::new(problem.dynamics, rtol, atol, t0, y0, t_end - t0);
     let origin = problem.sample_origin.unwrap_or(t0);
-    let mut sink = problem.on_sample;
+    let mut sinks = Some((problem.on_sample, problem.on_batch));
     let mut on_step = problem.on_step.filter(|_| problem.sample.is_some());
-    let mut sampler = problem
-        .sample
-        .map(|dt| Sampler::new(origin, dt, t0, sink.take(), problem.dense_samples));
+    let mut sampler = problem.sample.map(|dt| {
+        let sinks = sinks.take().unwrap_or_default();
+        Sampler::new(origin, dt, t0, sinks, problem.dense_samples)
+    });
     let (mut ts, mut ys) = (vec![t0], vec![y0]);
     // The last point reached where the state is finite (and no event has fired before).
     let mut last = (t0, y0);
@@ -197,7 +250,7 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
             if let Some(sm) = sampler.as_mut() {
                 let mut extra = 0;
                 if sm.dense {
-                    sm.fill(t_e, t_e, |t| d.at(t));
+                    sm.fill_dense(t_e, t_e, &d);
                 } else {
                     sm.fill(t_e, t_e, |t| {
                         advance(problem.dynamics, settings, t_a, y_a, t - t_a, &mut extra)
@@ -220,7 +273,7 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
                 let mut extra = 0;
                 if sm.dense {
                     let d = s.dense();
-                    sm.fill(t_b, t_end, |t| d.at(t));
+                    sm.fill_dense(t_b, t_end, &d);
                 } else {
                     sm.fill(t_b, t_end, |t| {
                         advance(problem.dynamics, settings, t_a, y_a, t - t_a, &mut extra)

@@ -20,6 +20,7 @@
 //! carries it as a state ([`WithTime`] does that for you).
 
 pub mod arenstorf;
+mod batch;
 #[cfg(test)]
 mod dense_error;
 mod dop853;
@@ -30,6 +31,7 @@ mod settings;
 mod tableau;
 mod upstream;
 
+pub use batch::{Batch, BatchSink, BATCH};
 pub use outcome::{Ending, Solution, Stats};
 pub use projection::{onto_level, Projection};
 pub use settings::{Method, Settings, SettingsError};
@@ -103,6 +105,11 @@ pub struct Problem<'a, D, const N: usize> {
     /// look closer only in the steps where it changes sign. A run stopped by an event passes
     /// the located event's time and state as the end of its last step.
     pub on_step: Option<Sink<'a, N>>,
+    /// Takes the samples of a sampled run a step's worth at a time (at most [`BATCH`] in one
+    /// call), in place of [`Problem::on_sample`] when both are given: the samples of DOP853's
+    /// dense output are then evaluated side by side. Each [`Problem::on_step`] call comes
+    /// before the batches of its step's samples.
+    pub on_batch: Option<BatchSink<'a, N>>,
     /// Take DOP853's samples from its dense output (a polynomial evaluation each; the default)
     /// instead of re-integrating each from the step before it. Such a run integrates at the
     /// tightened tolerances of [`driver::dense_tolerances`], so that its samples are as
@@ -129,6 +136,7 @@ impl<'a, D: Dynamics<N>, const N: usize> Problem<'a, D, N> {
             sample_origin: None,
             on_sample: None,
             on_step: None,
+            on_batch: None,
             dense_samples: true,
             progress: None,
             project: None,
@@ -187,7 +195,7 @@ pub fn solve_with<D: Dynamics<N>, const N: usize>(
         if !(dt.is_finite() && dt > 0.0) {
             return Err(SettingsError::Sample(dt));
         }
-        if problem.on_sample.is_none() {
+        if problem.on_sample.is_none() && problem.on_batch.is_none() {
             held_samples(span, dt)?;
         }
     }

@@ -6,7 +6,9 @@
 //! the start of the step that crossed it, and samples are re-integrated from the step before.
 
 use super::dop853::{StepControl, CONTROL};
-use super::{Dynamics, Ending, Event, Method, Problem, Settings, Sink, Solution, State, Stats};
+use super::{
+    Batch, Dynamics, Ending, Event, Method, Problem, Settings, Sink, Solution, State, Stats,
+};
 use crate::budget::Deadline;
 use ode_solvers::dop_shared::IntegrationError;
 use ode_solvers::{Dop853, Dopri5, OutputType, Rk4, System};
@@ -300,6 +302,19 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
         p(*ts.last().unwrap_or(&t0));
     }
 
+    // A batch sink takes each re-integrated sample as a batch of one.
+    let batched = problem.on_batch.is_some();
+    let mut on_batch = problem.on_batch;
+    let mut one = |t: f64, y: &State<N>| {
+        if let Some(sink) = on_batch.as_mut() {
+            sink(&Batch::one(t, y));
+        }
+    };
+    let on_sample: Option<Sink<'_, N>> = if batched {
+        Some(&mut one)
+    } else {
+        problem.on_sample.map(|sink| sink as Sink<'_, N>)
+    };
     let (t, y) = match problem.sample {
         None => (ts, ys),
         Some(dt) => {
@@ -312,7 +327,7 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
                 dt,
                 &deadline,
                 &mut stats,
-                problem.on_sample,
+                on_sample,
                 problem.on_step,
             );
             if !complete && ending.is_complete() {
