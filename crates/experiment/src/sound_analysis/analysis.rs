@@ -18,12 +18,12 @@
 
 use crate::error::ExperimentError;
 use crate::fit::band::Row;
-use crate::formats::decimate::to_band;
 use crate::fit::eq84_85::{start84, FixedBeta};
 use crate::fit::law_choice::{compare, Comparison};
 use crate::fit::law_fit::LawFit;
 use crate::fit::least_squares::{solve, FitError, Problem, Scale};
 use crate::fit::plausibility::{Evidence, Plausibility, Points, Verdict, SOUND_MIN_FRAMES};
+use crate::formats::decimate::to_band;
 use crate::sound_analysis::phase_blocks::{BlockSettings, Samples};
 use crate::sound_analysis::phase_fit::{fit_phase, PhaseFit};
 use crate::sound_analysis::refusal::{what_was_heard, SoundRefusal};
