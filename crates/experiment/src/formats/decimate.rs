@@ -136,13 +136,13 @@ impl Decimator {
     }
 }
 
-/// A sound trace brought to the band the analysis uses, with its sample interval (s):
-/// low-passed and decimated by [`factor`] of its rate, sample $k$ at the input's time
-/// $t_0 + kq/f_s$, so that a stage run on it costs in proportion to the band, not the
-/// recording's rate (a 48 kS/s recording read at 8 kS/s, a sixth of the samples). `None` where
-/// the factor is 1 (a rate below $2 f_b / 0.45$, 15.6 kS/s) or the trace is not sampled at a
-/// whole rate in S/s (a scope trace).
-pub fn to_band(trace: &Trace) -> Option<(Trace, f64)> {
+/// A sound trace brought to the band the analysis uses: low-passed and decimated by
+/// [`factor`] of its rate, sample $k$ at the input's time $t_0 + kq/f_s$, so that the
+/// analysis's every later stage costs in proportion to the band, not the recording's rate
+/// (a 48 kS/s recording is analysed at 8 kS/s, a sixth of the samples). `None` where the
+/// factor is 1 (a rate below $2 f_b / 0.45$, 15.6 kS/s) or the trace is not sampled at a whole
+/// rate in S/s (a scope trace), which is analysed as it is.
+pub fn to_band(trace: &Trace) -> Option<Trace> {
     let n = trace.v.len();
     let (first, last) = (*trace.t.first()?, *trace.t.last()?);
     if n < 2 {
@@ -162,15 +162,12 @@ pub fn to_band(trace: &Trace) -> Option<(Trace, f64)> {
     trace.v.iter().for_each(|&x| d.push(x));
     let v = d.finish().ok()?;
     let dt = q as f64 / f64::from(rate);
-    Some((
-        Trace {
-            source: trace.source.clone(),
-            t: (0..v.len()).map(|k| first + k as f64 * dt).collect(),
-            v,
-            truth: trace.truth.clone(),
-        },
-        dt,
-    ))
+    Some(Trace {
+        source: trace.source.clone(),
+        t: (0..v.len()).map(|k| first + k as f64 * dt).collect(),
+        v,
+        truth: trace.truth.clone(),
+    })
 }
 
 #[cfg(test)]
@@ -242,8 +239,7 @@ mod tests {
             }
         };
         let full = trace(48_000.0, 0.25);
-        let (band, dt) = to_band(&full).expect("decimated");
-        assert_eq!(dt, 6.0 / 48_000.0);
+        let band = to_band(&full).expect("decimated");
         assert_eq!(band.v.len(), full.v.len() / 6);
         assert_eq!(band.t[0], 0.25);
         assert!((band.t[1] - band.t[0] - 1.0 / 8000.0).abs() < 1e-12);

@@ -13,9 +13,8 @@
 //! $\chi^2$ ([`least_squares`](crate::fit::least_squares), [`Scale::Unknown`]), so a
 //! common misstatement of the $\sigma_k$ is measured by the residuals.
 //!
-//! The pitch is followed at the recording's rate; the phase, where a recording is sampled faster
-//! than the band the analysis uses needs, at the band's rate ([`to_band`]: 8 kS/s from
-//! 48 kS/s), its hum removal and blocks at a fraction of the samples.
+//! A recording sampled faster than the band the analysis uses needs is analysed at the band's
+//! rate ([`to_band`]: 8 kS/s from 48 kS/s), every stage at a fraction of the samples.
 
 use crate::error::ExperimentError;
 use crate::fit::band::Row;
@@ -155,6 +154,8 @@ pub fn analyze_sound_keeping_track(
     work: &Work<'_>,
 ) -> Result<SoundAnalysis, Box<SoundRefusal>> {
     let early = |e: ExperimentError| Box::new(SoundRefusal::before_track(e));
+    let band = to_band(trace);
+    let trace = band.as_ref().unwrap_or(trace);
     work.stage("following the pitch")
         .map_err(|e| early(e.into()))?;
     let track = track_of(trace, settings).map_err(early)?;
@@ -324,16 +325,10 @@ fn phase_of(
     fit: &TrackFit,
     cov: &SMatrix<f64, 3, 3>,
 ) -> (Option<PhaseFit>, Option<String>, Option<TurnCount>) {
-    // The phase is read at the band's rate (the track's rate where it is not decimated).
-    let band = to_band(trace);
-    let (trace, dt) = match &band {
-        Some((b, dt)) => (b, *dt),
-        None => (trace, 1.0 / track.sample_rate),
-    };
     let samples = Samples {
         x: &trace.v,
         t_start: trace.t[0],
-        dt,
+        dt: 1.0 / track.sample_rate,
     };
     let law = |beta: f64, t0: f64, ln_c: f64| SVector::<f64, 3>::new(beta, t0, ln_c);
     match fit_phase(
