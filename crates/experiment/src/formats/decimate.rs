@@ -24,7 +24,6 @@
 
 use crate::error::ExperimentError;
 use crate::sound_analysis::spectrum::MAX_HARMONIC_HZ;
-use crate::trace::Trace;
 use std::f64::consts::PI;
 
 /// The highest frequency kept (Hz): the highest harmonic the analysis uses.
@@ -136,40 +135,6 @@ impl Decimator {
     }
 }
 
-/// A sound trace brought to the band the analysis uses: low-passed and decimated by
-/// [`factor`] of its rate, sample $k$ at the input's time $t_0 + kq/f_s$, so that the
-/// analysis's every later stage costs in proportion to the band, not the recording's rate
-/// (a 48 kS/s recording is analysed at 8 kS/s, a sixth of the samples). `None` where the
-/// factor is 1 (a rate below $2 f_b / 0.45$, 15.6 kS/s) or the trace is not sampled at a whole
-/// rate in S/s (a scope trace), which is analysed as it is.
-pub fn to_band(trace: &Trace) -> Option<Trace> {
-    let n = trace.v.len();
-    let (first, last) = (*trace.t.first()?, *trace.t.last()?);
-    if n < 2 {
-        return None;
-    }
-    let fs = (n - 1) as f64 / (last - first);
-    let rate = fs.round();
-    if !(rate >= 1.0 && rate <= f64::from(u32::MAX) && (fs - rate).abs() <= 1e-6 * rate) {
-        return None;
-    }
-    let rate = rate as u32;
-    let q = factor(rate);
-    if q == 1 {
-        return None;
-    }
-    let mut d = Decimator::new(rate, n.div_ceil(q)).ok()?;
-    trace.v.iter().for_each(|&x| d.push(x));
-    let v = d.finish().ok()?;
-    let dt = q as f64 / f64::from(rate);
-    Some(Trace {
-        source: trace.source.clone(),
-        t: (0..v.len()).map(|k| first + k as f64 * dt).collect(),
-        v,
-        truth: trace.truth.clone(),
-    })
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -220,34 +185,5 @@ mod tests {
         }
         assert_eq!(factor(8000), 1);
         assert_eq!(decimate(&[0.5, 0.25, 0.125], 8000), vec![0.5, 0.25, 0.125]);
-    }
-
-    /// A sound trace at 48 kS/s is brought to 8 kS/s with its times and its band kept (a
-    /// 1 kHz line starting 0.25 s into the record); one at 8 kS/s, or a scope trace sampled at
-    /// no whole rate, is left as it is.
-    #[test]
-    fn a_trace_is_brought_to_the_band_with_its_times() {
-        let trace = |rate: f64, t_start: f64| {
-            let n = (2.0 * rate) as usize;
-            let t: Vec<f64> = (0..n).map(|j| t_start + j as f64 / rate).collect();
-            let v = t.iter().map(|t| (TAU * 1000.0 * t).sin()).collect();
-            Trace {
-                source: "x".into(),
-                t,
-                v,
-                truth: None,
-            }
-        };
-        let full = trace(48_000.0, 0.25);
-        let band = to_band(&full).expect("decimated");
-        assert_eq!(band.v.len(), full.v.len() / 6);
-        assert_eq!(band.t[0], 0.25);
-        assert!((band.t[1] - band.t[0] - 1.0 / 8000.0).abs() < 1e-12);
-        let err = (800..band.v.len() - 800)
-            .map(|k| (band.v[k] - (TAU * 1000.0 * band.t[k]).sin()).abs())
-            .fold(0.0, f64::max);
-        assert!(err < 2e-3, "{err}");
-        assert!(to_band(&trace(8000.0, 0.0)).is_none());
-        assert!(to_band(&trace(48_000.5, 0.0)).is_none());
     }
 }

@@ -12,9 +12,6 @@
 //! covariance is $s^2 (J^{\mathsf T}J)^{-1}$ of the whitened problem with $s^2$ the reduced
 //! $\chi^2$ ([`least_squares`](crate::fit::least_squares), [`Scale::Unknown`]), so a
 //! common misstatement of the $\sigma_k$ is measured by the residuals.
-//!
-//! A recording sampled faster than the band the analysis uses needs is analysed at the band's
-//! rate ([`to_band`]: 8 kS/s from 48 kS/s), every stage at a fraction of the samples.
 
 use crate::error::ExperimentError;
 use crate::fit::band::Row;
@@ -23,7 +20,6 @@ use crate::fit::law_choice::{compare, Comparison};
 use crate::fit::law_fit::LawFit;
 use crate::fit::least_squares::{solve, FitError, Problem, Scale};
 use crate::fit::plausibility::{Evidence, Plausibility, Points, Verdict, SOUND_MIN_FRAMES};
-use crate::formats::decimate::to_band;
 use crate::sound_analysis::phase_blocks::{BlockSettings, Samples};
 use crate::sound_analysis::phase_fit::{fit_phase, PhaseFit};
 use crate::sound_analysis::refusal::{what_was_heard, SoundRefusal};
@@ -154,8 +150,6 @@ pub fn analyze_sound_keeping_track(
     work: &Work<'_>,
 ) -> Result<SoundAnalysis, Box<SoundRefusal>> {
     let early = |e: ExperimentError| Box::new(SoundRefusal::before_track(e));
-    let band = to_band(trace);
-    let trace = band.as_ref().unwrap_or(trace);
     work.stage("following the pitch")
         .map_err(|e| early(e.into()))?;
     let track = track_of(trace, settings).map_err(early)?;
