@@ -39,6 +39,7 @@ use crate::sound_analysis::phase_blocks::{blocks, Block, BlockSettings, Samples}
 use crate::sound_analysis::residual_structure::Structure;
 use nalgebra::SVector;
 use serde::Serialize;
+use std::borrow::Cow;
 use std::f64::consts::TAU;
 
 /// Rounds of blocks and fit.
@@ -252,11 +253,12 @@ impl PhaseFit {
 pub const HUM_GUARD: f64 = 5.0;
 
 /// The record with the mains lines `hum` subtracted where the disk, by `p`, keeps clear of them.
-fn without_hum(rec: &Samples<'_>, hum: &[f64], p: &SVector<f64, 3>) -> Vec<f64> {
-    let mut x = rec.x.to_vec();
+/// The record itself, uncopied, where there is no hum.
+fn without_hum<'a>(rec: &Samples<'a>, hum: &[f64], p: &SVector<f64, 3>) -> Cow<'a, [f64]> {
     if hum.is_empty() {
-        return x;
+        return Cow::Borrowed(rec.x);
     }
+    let mut x = rec.x.to_vec();
     // The pitch by chunks of 1 ms (NaN past t0, where the disk is silent).
     let chunk = ((1e-3 / rec.dt) as usize).max(1);
     let pitch: Vec<f64> = (0..x.len().div_ceil(chunk))
@@ -274,7 +276,7 @@ fn without_hum(rec: &Samples<'_>, hum: &[f64], p: &SVector<f64, 3>) -> Vec<f64> 
         !(1..=8).any(|h| (f64::from(h) * f - line).abs() < HUM_GUARD)
     };
     remove_hum_clear(&mut x, 1.0 / rec.dt, hum, &clear);
-    x
+    Cow::Owned(x)
 }
 
 /// Fits the heading to blocks demodulated against `p` plus `shift`, each block's datum less

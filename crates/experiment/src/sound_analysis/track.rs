@@ -43,10 +43,11 @@
 //! (the disk may settle inside it), as smeared.
 
 use crate::error::ExperimentError;
-use crate::sound_analysis::mains::hum::remove_hum;
+use crate::sound_analysis::mains::hum::{hum_lines, subtract_hum};
 use crate::sound_analysis::spectrum::{Analyser, Estimate};
 use crate::trace::Trace;
 use serde::{Deserialize, Serialize};
+use std::borrow::Cow;
 use std::f64::consts::PI;
 
 /// How the track is made.
@@ -168,8 +169,15 @@ pub fn frequency_track(
             ),
         });
     }
-    let mut v = trace.v.clone();
-    let hum = remove_hum(&mut v, fs);
+    // The record is copied only where it has hum to subtract.
+    let hum = hum_lines(&trace.v, fs);
+    let v: Cow<'_, [f64]> = if hum.is_empty() {
+        Cow::Borrowed(&trace.v)
+    } else {
+        let mut v = trace.v.clone();
+        subtract_hum(&mut v, fs, &hum);
+        Cow::Owned(v)
+    };
     let (frames, smeared_end) = march(&v, trace.t[0], fs, s, &hum);
     let lens: Vec<f64> = frames.iter().map(|f| f.b - f.a).collect();
     let frame_span = (

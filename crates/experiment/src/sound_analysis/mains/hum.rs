@@ -32,13 +32,29 @@ pub const BLOCK_S: f64 = 2.0;
 /// the record (which would make an hour's search 900 times a minute's, not 60).
 pub const SEARCH_S: f64 = 120.0;
 
-/// Subtracts mains hum from `v` (sampled at `fs`); returns the frequencies removed (Hz).
+/// Subtracts mains hum from `v` (sampled at `fs`); returns the frequencies removed (Hz): the
+/// lines [`hum_lines`] finds, subtracted by [`subtract_hum`].
+pub fn remove_hum(v: &mut [f64], fs: f64) -> Vec<f64> {
+    let lines = hum_lines(v, fs);
+    subtract_hum(v, fs, &lines);
+    lines
+}
+
+/// Subtracts each of the mains lines `lines` (Hz) from `v` (sampled at `fs`), in turn, as the
+/// least-squares sinusoid of its frequency in blocks of [`BLOCK_S`] seconds.
+pub fn subtract_hum(v: &mut [f64], fs: f64, lines: &[f64]) {
+    for &f in lines {
+        subtract(v, fs, f);
+    }
+}
+
+/// The mains hum lines in `v` (sampled at `fs`), Hz: the 50 Hz grid's, then the 60 Hz grid's.
 ///
 /// The search runs on the record averaged over blocks of $\lfloor f_s/2000\rfloor$ samples
 /// (a 2 kS/s copy, ample for lines up to 600 Hz), over the whole record up to [`SEARCH_S`]
-/// and on the summed powers of its pieces of [`SEARCH_S`] beyond; the subtraction on the
-/// record itself.
-pub fn remove_hum(v: &mut [f64], fs: f64) -> Vec<f64> {
+/// and on the summed powers of its pieces of [`SEARCH_S`] beyond; each line is judged on that
+/// copy of the record as it was given, so that the lines are found before any is subtracted.
+pub fn hum_lines(v: &[f64], fs: f64) -> Vec<f64> {
     let span = v.len() as f64 / fs;
     if span < 2.0 {
         return Vec::new();
@@ -100,7 +116,6 @@ pub fn remove_hum(v: &mut [f64], fs: f64) -> Vec<f64> {
                 break;
             }
             if stands_out(&low, fs_low, f) {
-                subtract(v, fs, f);
                 removed.push(f);
             }
         }
