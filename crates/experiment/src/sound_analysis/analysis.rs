@@ -265,7 +265,7 @@ pub fn analyze_sound_keeping_track(
     work.stage("following the phase")
         .map_err(|e| keep(e.into()))?;
     let (phase, phase_refused, turn_count) = phase_of(trace, &track, a[0], &fit, &s.cov);
-    let mut analysis = SoundAnalysis {
+    let analysis = SoundAnalysis {
         source: trace.source.clone(),
         recording: None,
         phase,
@@ -278,25 +278,7 @@ pub fn analyze_sound_keeping_track(
         rise_on_phase: None,
         truth: trace.truth.clone(),
     };
-    if rise_alone {
-        match analysis.phase_rise().filter(|r| *r >= checks.min_rise) {
-            Some(r) => analysis.rise_on_phase = Some(r),
-            None => {
-                return Err(Box::new(SoundRefusal {
-                    error: ExperimentError::Refused {
-                        file,
-                        reason: format!(
-                            "{}; {}; {heard}",
-                            analysis.verdict.refusals.join("; "),
-                            analysis.phase_rise_refused()
-                        ),
-                    },
-                    track: Some(analysis.track),
-                }))
-            }
-        }
-    }
-    Ok(analysis)
+    analysis.judged_on_phase(rise_alone, checks, file, &heard)
 }
 
 /// The pitch track of `trace`: with `settings`, and where that holds fewer than

@@ -17,8 +17,11 @@
 //! with the track's ([`turn_count`](crate::sound_analysis::turn_count)); otherwise the refusal
 //! stands.
 
+use crate::error::ExperimentError;
 use crate::fit::eq84_85::phase;
+use crate::fit::plausibility::Plausibility;
 use crate::sound_analysis::analysis::SoundAnalysis;
+use crate::sound_analysis::refusal::SoundRefusal;
 use nalgebra::SVector;
 
 impl SoundAnalysis {
@@ -38,6 +41,39 @@ impl SoundAnalysis {
 }
 
 impl SoundAnalysis {
+    /// The analysis, or its refusal, once its spin-down is judged: where the track's frames
+    /// passed every check but the rise (`rise_alone`), on the phase's rise, else as it stands.
+    /// `file` and `heard` ([`what_was_heard`](crate::sound_analysis::refusal::what_was_heard))
+    /// word the refusal.
+    pub fn judged_on_phase(
+        mut self,
+        rise_alone: bool,
+        checks: &Plausibility,
+        file: String,
+        heard: &str,
+    ) -> Result<Self, Box<SoundRefusal>> {
+        if !rise_alone {
+            return Ok(self);
+        }
+        match self.phase_rise().filter(|r| *r >= checks.min_rise) {
+            Some(r) => {
+                self.rise_on_phase = Some(r);
+                Ok(self)
+            }
+            None => Err(Box::new(SoundRefusal {
+                error: ExperimentError::Refused {
+                    file,
+                    reason: format!(
+                        "{}; {}; {heard}",
+                        self.verdict.refusals.join("; "),
+                        self.phase_rise_refused()
+                    ),
+                },
+                track: Some(self.track),
+            })),
+        }
+    }
+
     /// Why the phase did not show the rise the track's frames lack, for the refusal: the
     /// phase's own refusal, why its fit is not the result, or the rise its blocks hold.
     pub fn phase_rise_refused(&self) -> String {
