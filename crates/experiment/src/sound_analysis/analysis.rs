@@ -118,6 +118,9 @@ pub struct SoundAnalysis {
     pub models: Comparison,
     /// The spin-down checks.
     pub verdict: Verdict,
+    /// The rate's rise over the phase's blocks, where the track's frames rose too little and the
+    /// spin-down was judged on the phase instead ([`rise`](crate::sound_analysis::rise)).
+    pub rise_on_phase: Option<f64>,
     /// The truth, for synthetic recordings.
     pub truth: Option<Truth>,
 }
@@ -220,7 +223,10 @@ pub fn analyze_sound_keeping_track(
         },
         Points::Frames(SOUND_MIN_FRAMES),
     );
-    if !verdict.refusals.is_empty() {
+    // A track whose frames rise too little, all else passing, is judged again on the rise of the
+    // phase it holds ([`rise`](crate::sound_analysis::rise)).
+    let rise_alone = verdict.refusals.len() == 1 && verdict.rise < checks.min_rise;
+    if !verdict.refusals.is_empty() && !rise_alone {
         return Err(refuse(verdict.refusals.join("; ")));
     }
     let mut candidates = vec![(
@@ -259,7 +265,7 @@ pub fn analyze_sound_keeping_track(
     work.stage("following the phase")
         .map_err(|e| keep(e.into()))?;
     let (phase, phase_refused, turn_count) = phase_of(trace, &track, a[0], &fit, &s.cov);
-    Ok(SoundAnalysis {
+    let analysis = SoundAnalysis {
         source: trace.source.clone(),
         recording: None,
         phase,
@@ -269,8 +275,10 @@ pub fn analyze_sound_keeping_track(
         track,
         fit,
         verdict,
+        rise_on_phase: None,
         truth: trace.truth.clone(),
-    })
+    };
+    analysis.judged_on_phase(rise_alone, checks, file, &heard)
 }
 
 /// The pitch track of `trace`: with `settings`, and where that holds fewer than
@@ -449,6 +457,13 @@ impl fmt::Display for SoundAnalysis {
             })?,
             (None, Some(why)) => writeln!(f, "  phase not used: {why}")?,
             (None, None) => {}
+        }
+        if let Some(r) = self.rise_on_phase {
+            writeln!(
+                f,
+                "  rise: Omega rises by a factor {:.2} over the track's frames, {r:.2} over the phase's blocks, on which the spin-down is judged (the track ends before the phase does)",
+                self.verdict.rise
+            )?;
         }
         writeln!(f, "  model choice: {}", self.models.summary)?;
         for c in &self.models.candidates {
