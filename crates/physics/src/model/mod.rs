@@ -238,12 +238,24 @@ pub trait Model<const N: usize>: Dynamics<N> {
         out: &mut Vec<f64>,
         energy: &mut [f64],
     ) {
-        for (j, (&t, e)) in batch.times().iter().zip(energy).enumerate() {
-            out.push(t);
-            *e = self
-                .record_row(&batch.state(j), quantities, false, out)
-                .energy;
-        }
+        rows_one_at_a_time(self, batch, quantities, out, energy);
+    }
+}
+
+/// [`Model::record_rows`] made row by row through [`Model::record_row`]: the trait's default,
+/// and what a model that overrides it falls back to for the rows it cannot make together.
+pub(crate) fn rows_one_at_a_time<M: Model<N> + ?Sized, const N: usize>(
+    model: &M,
+    batch: &Batch<N>,
+    quantities: &[Quantity],
+    out: &mut Vec<f64>,
+    energy: &mut [f64],
+) {
+    for (j, (&t, e)) in batch.times().iter().zip(energy).enumerate() {
+        out.push(t);
+        *e = model
+            .record_row(&batch.state(j), quantities, false, out)
+            .energy;
     }
 }
 

@@ -12,7 +12,9 @@
 use crate::disk::Disk;
 use crate::model::dissipation::{Placement, PowerLaw};
 use crate::model::mechanism::Mechanism;
-use crate::model::{leading_state, Extras, Layout, Model, Motion, Quantity, RowShared};
+use crate::model::{
+    leading_state, rows_one_at_a_time, Extras, Layout, Model, Motion, Quantity, RowShared,
+};
 use crate::solve::{Batch, Dynamics, State, BATCH};
 use num_dual::DualNum;
 use numerics::trig::{sin_cos, sin_cos_each};
@@ -331,12 +333,7 @@ impl<const N: usize> Model<N> for Rolling<N> {
         energy: &mut [f64],
     ) {
         if !self.rows_together(quantities) {
-            for (j, (&t, e)) in batch.times().iter().zip(energy).enumerate() {
-                out.push(t);
-                *e = self
-                    .record_row(&batch.state(j), quantities, false, out)
-                    .energy;
-            }
+            rows_one_at_a_time(self, batch, quantities, out, energy);
             return;
         }
         let n = batch.len();
