@@ -7,13 +7,19 @@
 //! cut into **blocks of a whole, even number $N \ge 2$ of reference turns** (as many as fit in
 //! 0.1 s), from $\Phi_a$ to $\Phi_a + 2\pi N$, and each harmonic is demodulated with the samples
 //! weighted by the heading they span, $d\Phi = \Omega\,dt$:
-//! $$z_h = \sum_j \Omega(t_j)\,x_j\,e^{-ih\Phi(t_j)}\,\Delta t \approx
-//!   \int_{\Phi_a}^{\Phi_a + 2\pi N} x\,e^{-ih\Phi}\,d\Phi.$$
+//! $$z_h = \sum_j \Omega(t_j)\,x_j\,e^{-ih\Phi(t_j)}\,\Delta t_j \approx
+//!   \int_{\Phi_a}^{\Phi_a + 2\pi N} x\,e^{-ih\Phi}\,d\Phi,$$
+//! $\Delta t_j$ the part of sample $j$'s interval $[t_j - \Delta t/2,\, t_j + \Delta t/2]$ that
+//! lies within the block $[t_a, t_b]$: $\Delta t$ inside, less at the two ends, so that the sum
+//! spans the $N$ turns to a fraction of a sample at any rate.
 //! In the heading the sound is a sum of lines at whole numbers of cycles per turn, and the
 //! transform of a window of $N$ whole turns vanishes at every whole offset, so the other
 //! harmonics and the negative-frequency images leak nothing into $z_h$ however fast the pitch
-//! rises. $\arg z_h = h(\psi - \Phi) + $ const, averaged over the block, is referred to its
-//! weighted centroid time $\bar t$; as the reference converges to the heading
+//! rises. (A window cut at whole samples instead would be up to a sample short of the turns,
+//! through which a harmonic leaks in proportion to $\Delta t/(t_b - t_a)$: behind a phone's
+//! high-pass, where the fundamental is 40 dB below its harmonics, enough at 8 kS/s to lower the
+//! fundamental's signal-to-noise by a tenth.) $\arg z_h = h(\psi - \Phi) + $ const, averaged
+//! over the block, is referred to its weighted centroid time $\bar t$; as the reference converges to the heading
 //! ([`phase_fit`](crate::sound_analysis::phase_fit)), $\psi - \Phi$ tends to a constant and the centroid's
 //! approximation to exact.
 //!
@@ -123,8 +129,9 @@ fn sums(
     (ta, tb): (f64, f64),
     harmonics: usize,
 ) -> Sums {
-    let j0 = ((ta - t_start) / dt).ceil().max(0.0) as usize;
-    let j1 = (((tb - t_start) / dt).floor().max(0.0) as usize).min(x.len().saturating_sub(1));
+    // The samples whose intervals reach into the block.
+    let j0 = ((ta - t_start) / dt).round().max(0.0) as usize;
+    let j1 = (((tb - t_start) / dt).round().max(0.0) as usize).min(x.len().saturating_sub(1));
     let mut z = [Complex::new(0.0, 0.0); HARMONICS];
     let mut probe = [0.0f64; HARMONICS];
     let mut lo = [Complex::new(0.0, 0.0); HARMONICS];
@@ -134,8 +141,9 @@ fn sums(
     let mut heading = Hermite::new(p, t_start, dt, j0, j1);
     for (j, &xj) in x.iter().enumerate().take(j1 + 1).skip(j0) {
         let t = t_start + j as f64 * dt;
-        // dPhi = Omega dt: each sample weighs as the heading it spans.
-        let (phi, w) = heading.at(j);
+        // dPhi = Omega dt: each sample weighs as the heading it spans within the block.
+        let (phi, omega) = heading.at(j);
+        let w = omega * (((t + 0.5 * dt).min(tb) - (t - 0.5 * dt).max(ta)) / dt).clamp(0.0, 1.0);
         let (s, c) = (-0.5 * phi).sin_cos();
         // e[k] = exp(-i k phi / 2)
         e[0] = Complex::new(1.0, 0.0);
@@ -384,4 +392,61 @@ fn combine(
             }
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{blocks, BlockSettings, Samples};
+    use crate::fit::eq84_85::phase;
+    use nalgebra::SVector;
+
+    /// A disk's sound behind a phone's high-pass, its fundamental 40 dB below the second and
+    /// third harmonics, with no noise: the blocks' noise probes at the half-way lines hold only
+    /// what leaks into them, so the fundamental's signal-to-noise measures the leak. At 8 kS/s,
+    /// as at 48 kS/s, it stays above 10^5 in every block (a window cut at whole samples leaks
+    /// enough to bring it to a median of 150, and 11 in the worst block, at 8 kS/s), and the
+    /// blocks' offsets agree to 10^-4 rad.
+    #[test]
+    fn blocks_span_their_turns_at_any_rate() {
+        // Eq 79 with beta = 2, Omega = 100 rad/s seven seconds before t0 = 10 s.
+        let p = SVector::<f64, 3>::new(2.0, 10.0, (100f64.powi(4) * 7.0).ln());
+        let record = |fs: f64| -> Vec<f64> {
+            (0..(9.0 * fs) as usize)
+                .map(|j| {
+                    let phi = phase(&p, j as f64 / fs).0;
+                    0.01 * phi.sin() + (2.0 * phi + 0.3).sin() + 0.5 * (3.0 * phi + 1.0).sin()
+                })
+                .collect()
+        };
+        let settings = BlockSettings {
+            min_snr: 0.0,
+            ..BlockSettings::default()
+        };
+        let at = |x: &[f64], fs: f64| {
+            let rec = Samples {
+                x,
+                t_start: 0.0,
+                dt: 1.0 / fs,
+            };
+            blocks(&rec, &p, 0.0, (1.0, 8.0), false, &settings)
+        };
+        let (x8, x48) = (record(8000.0), record(48_000.0));
+        let (b8, b48) = (at(&x8, 8000.0), at(&x48, 48_000.0));
+        assert!(
+            b8.len() > 40 && b8.len() == b48.len(),
+            "{} {}",
+            b8.len(),
+            b48.len()
+        );
+        for (a, b) in b8.iter().zip(&b48) {
+            assert!(
+                a.snr > 1e5 && b.snr > 1e5,
+                "{:.3} s: {} and {}",
+                a.a,
+                a.snr,
+                b.snr
+            );
+            assert!((a.offset - b.offset).abs() < 1e-4, "{:.3} s", a.a);
+        }
+    }
 }
