@@ -135,6 +135,25 @@ impl Decimator {
     }
 }
 
+/// Samples `x` at `fs` S/s brought to the band the analysis uses: low-passed and decimated by
+/// [`factor`], output $k$ the low-passed signal at input sample $kq$, with $q$. `None` where
+/// the factor is 1 (a rate below $2 f_b/0.45$, 15.6 kS/s) or `fs` is not a whole rate in S/s,
+/// which is used as it is.
+pub fn to_band(x: &[f64], fs: f64) -> Option<(Vec<f64>, usize)> {
+    let rate = fs.round();
+    if !(rate >= 1.0 && rate <= f64::from(u32::MAX) && (fs - rate).abs() <= 1e-6 * rate) {
+        return None;
+    }
+    let rate = rate as u32;
+    let q = factor(rate);
+    if q == 1 {
+        return None;
+    }
+    let mut d = Decimator::new(rate, x.len().div_ceil(q)).ok()?;
+    x.iter().for_each(|&v| d.push(v));
+    Some((d.finish().ok()?, q))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -185,5 +204,18 @@ mod tests {
         }
         assert_eq!(factor(8000), 1);
         assert_eq!(decimate(&[0.5, 0.25, 0.125], 8000), vec![0.5, 0.25, 0.125]);
+    }
+
+    /// A record is brought to the band with its factor (the decimator's own output); one at
+    /// 8 kS/s, or at no whole rate (a scope's), is left as it is.
+    #[test]
+    fn a_record_is_brought_to_the_band_or_left() {
+        let v: Vec<f64> = (0..96_000)
+            .map(|j| (TAU * 440.0 * f64::from(j) / 48_000.0).sin())
+            .collect();
+        let (band, q) = to_band(&v, 48_000.0).expect("decimated");
+        assert_eq!((q, band), (6, decimate(&v, 48_000)));
+        assert!(to_band(&v, 8000.0).is_none());
+        assert!(to_band(&v, 48_000.5).is_none());
     }
 }

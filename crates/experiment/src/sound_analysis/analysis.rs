@@ -20,6 +20,7 @@ use crate::fit::law_choice::{compare, Comparison};
 use crate::fit::law_fit::LawFit;
 use crate::fit::least_squares::{solve, FitError, Problem, Scale};
 use crate::fit::plausibility::{Evidence, Plausibility, Points, Verdict, SOUND_MIN_FRAMES};
+use crate::formats::decimate::to_band;
 use crate::sound_analysis::phase_blocks::{BlockSettings, Samples};
 use crate::sound_analysis::phase_fit::{fit_phase, PhaseFit};
 use crate::sound_analysis::refusal::{what_was_heard, SoundRefusal};
@@ -319,7 +320,9 @@ fn track_of(trace: &Trace, settings: &TrackSettings) -> Result<FrequencyTrack, E
 const WEAK_LINE: f64 = 3.0;
 
 /// Eq 79's heading fitted to the phase of `trace` from `first` (s), started from the track's fit
-/// `fit` (covariance `cov`); the phase, or why it is not used, and the turns counted.
+/// `fit` (covariance `cov`); the phase, or why it is not used, and the turns counted. A record
+/// sampled faster than the band the phase uses needs is read decimated to the band's rate
+/// ([`to_band`]), its hum removal and blocks at a fraction of the samples.
 fn phase_of(
     trace: &Trace,
     track: &FrequencyTrack,
@@ -327,10 +330,19 @@ fn phase_of(
     fit: &TrackFit,
     cov: &SMatrix<f64, 3, 3>,
 ) -> (Option<PhaseFit>, Option<String>, Option<TurnCount>) {
-    let samples = Samples {
-        x: &trace.v,
-        t_start: trace.t[0],
-        dt: 1.0 / track.sample_rate,
+    // Read at the band's rate where the record is sampled faster (8 kS/s from 48 kS/s).
+    let band = to_band(&trace.v, track.sample_rate);
+    let samples = match &band {
+        Some((x, q)) => Samples {
+            x,
+            t_start: trace.t[0],
+            dt: *q as f64 / track.sample_rate,
+        },
+        None => Samples {
+            x: &trace.v,
+            t_start: trace.t[0],
+            dt: 1.0 / track.sample_rate,
+        },
     };
     let law = |beta: f64, t0: f64, ln_c: f64| SVector::<f64, 3>::new(beta, t0, ln_c);
     match fit_phase(
