@@ -16,6 +16,7 @@ pub mod refusal;
 pub mod residual_structure;
 pub mod result;
 pub mod rise;
+pub mod short_spin;
 pub mod spectrogram;
 pub mod spectrum;
 pub mod track;
