@@ -21,7 +21,8 @@
 //! | "samples per channel" (over two hours) | 2 h 1 s at 1 kS/s | the `ffmpeg -sseof` cut | the cut is read (and refused for its noise only) |
 //! | "does not rise steadily" (Kendall's tau) | phone-room seed 200 (its track joins a mains residue to the disk's harmonics) | record closer, away from other sounds | does not work yet: recorded louder or without the hum, the recording is still refused (for other causes); open |
 //! | "lie off the disk's line (stray)" | phone-room seeds 15 (its track follows 3 Omega in places) and 200 | record closer, away from other sounds | does not work yet: (as above) |
-//! | "fewer than the 8 a fit of eq 79 is judged on" | a disk heard for its last 0.7 s | record the spin from earlier | the spin from its first seconds: analysed |
+//! | "fewer than the 8 a fit of eq 79 is judged on" | phone-room seed 194 (4.67 s of sound, 6 frames, its phase rising too little) | record the spin from earlier | a disk's spin from its first seconds: analysed (one heard for its last 0.7 s is analysed as a short spin) |
+//! | "nor can it be analysed as a short spin" (a track of fewer than 8 frames whose phase cannot stand in for it: fewer than 2 frames, a line that does not rise, too few phase blocks, a fit that misses the track's frames, beta out of range, residuals with structure, too little rise, a line run to the recording's end) | phone-room seeds 87, 47, 58, 194, 1074, and seed 75 with a frame moved, beta's range narrowed or its last frame run to the end (`sound_analysis::short_spin`'s tests) | the track's own (record the whole spin, closer to the disk, until it is silent) | a short spin the phase follows (seed 75, 1.98 s of sound): analysed from its phase, both intervals holding the truth |
 
 use crate::common::{cli_in, temp_dir, write_wav_i16};
 use rand::SeedableRng;
@@ -152,20 +153,38 @@ fn a_spin_heard_too_briefly_is_refused_with_record_the_whole_spin_and_that_works
     assert_analysed(&disk(0.3, 0.003, 1.0));
 }
 
-/// A disk first heard 7.75 s into the record, 0.7 s before its end: its line holds 6 frames of
-/// the pitch track, fewer than the 8 a fit of eq 79 is judged on, and the refusal says to record
-/// the spin from earlier; recorded from its first seconds, it is analysed.
+/// A phone's recording of 4.67 s of sound (phone-room seed 194) whose pitch track holds 6 frames
+/// of the line, fewer than the 8 a fit of eq 79 is judged on, and whose phase, followed as a short
+/// spin's, rises too little to stand in: the refusal says to record the spin from earlier. A
+/// disk first heard 0.7 s before its end, whose track holds as few frames, is analysed from its
+/// phase as a short spin, and recorded from its first seconds it is analysed too.
 #[test]
 fn a_line_of_too_few_frames_is_refused_with_record_from_earlier_and_that_works() {
-    let e = analysed(&disk(0.3, 0.003, 7.75)).expect_err("six frames are too few to judge");
+    use experiment::formats::channel::Channels;
+    use experiment::formats::recording::parse_recording;
+    use experiment::synthetic::phone_room::PhoneRoom;
+    let rec = PhoneRoom::draw(194).record().expect("a recording");
+    let r = parse_recording(
+        rec.wav().expect("WAV bytes"),
+        "phone-194.wav",
+        Channels::Mix,
+    )
+    .expect("a readable recording");
+    let e = analysed(&r.trace).expect_err("six frames and a phase that rises too little");
     assert!(
         e.contains("fewer than the 8 a fit of eq 79 is judged on"),
         "the refusal names its cause: {e}"
     );
     assert!(e.contains("record the spin from earlier"), "{e}");
+    assert!(e.contains("nor can it be analysed as a short spin"), "{e}");
     for word in ["pulse", "light", "peak", "cycles"] {
         assert!(!e.contains(word), "a sound's refusal speaks of {word}: {e}");
     }
+    let short = analysed(&disk(0.3, 0.003, 7.75)).expect("a short spin analysed from its phase");
+    let l = short.law();
+    assert!(short.short_spin.is_some() && l.from_phase, "{short}");
+    assert!((l.beta - 2.0).abs() <= 1.96 * l.beta_sigma, "{short}");
+    assert!((l.t0 - 8.5).abs() <= 1.96 * l.t0_sigma, "{short}");
     assert_analysed(&disk(0.3, 0.003, 1.0));
 }
 

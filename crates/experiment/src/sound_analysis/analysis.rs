@@ -24,6 +24,7 @@ use crate::formats::decimate::to_band;
 use crate::sound_analysis::phase_blocks::{BlockSettings, Samples};
 use crate::sound_analysis::phase_fit::{fit_phase, PhaseFit};
 use crate::sound_analysis::refusal::{what_was_heard, SoundRefusal};
+use crate::sound_analysis::short_spin;
 use crate::sound_analysis::track::{frequency_track, FrequencyTrack, TrackSettings};
 use crate::sound_analysis::turn_count::TurnCount;
 use crate::trace::{Trace, Truth};
@@ -37,10 +38,13 @@ use std::fmt;
 const MIDPOINTS: usize = 32;
 
 /// Eq 79's frame means weighted by the Hann window's square.
-struct TrackLaw<'a> {
-    a: &'a [f64],
-    b: &'a [f64],
-    y: &'a [f64],
+pub(crate) struct TrackLaw<'a> {
+    /// Frame starts and ends (s), and the frames' rates (rad/s).
+    pub a: &'a [f64],
+    /// (see `a`)
+    pub b: &'a [f64],
+    /// (see `a`)
+    pub y: &'a [f64],
 }
 
 impl Problem<3> for TrackLaw<'_> {
@@ -122,6 +126,11 @@ pub struct SoundAnalysis {
     /// The rate's rise over the phase's blocks, where the track's frames rose too little and the
     /// spin-down was judged on the phase instead ([`rise`](crate::sound_analysis::rise)).
     pub rise_on_phase: Option<f64>,
+    /// Where the track held too few frames of the line for its own fit and the phase's fit of a
+    /// short spin is the result ([`short_spin`](crate::sound_analysis::short_spin)): the track's
+    /// refusal it stands in for.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub short_spin: Option<String>,
     /// The truth, for synthetic recordings.
     pub truth: Option<Truth>,
 }
@@ -166,22 +175,31 @@ pub fn analyze_sound_keeping_track(
     work.stage("fitting eq 79").map_err(|e| keep(e.into()))?;
     let file = trace.source.clone();
     let heard = what_was_heard(&track, trace.t.last().copied().unwrap_or(0.0));
-    let refuse = |reason: String| {
-        keep(ExperimentError::Refused {
+    // A track of fewer frames than its fit is judged on is analysed as a short spin, from its
+    // phase, before it is refused.
+    let refuse = |reason: String| match track.points.len() < SOUND_MIN_FRAMES {
+        true => match short_spin::analysed(trace, &track, checks, &reason) {
+            Ok(a) => Ok(a),
+            Err(why) => Err(keep(ExperimentError::Refused {
+                file: file.clone(),
+                reason: format!("{reason}; {heard}; nor can it be analysed as a short spin: {why}"),
+            })),
+        },
+        false => Err(keep(ExperimentError::Refused {
             file: file.clone(),
             reason: format!("{reason}; {heard}"),
-        })
+        })),
     };
     let pts = &track.points;
     if pts.len() < 6 {
-        return Err(refuse(format!(
+        return refuse(format!(
             "{} frames hold a tone ({} silent, {} stray, {} smeared, {} outside the line): no rising line to follow",
             pts.len(),
             track.silent,
             track.stray,
             track.smeared,
             track.outside
-        )));
+        ));
     }
     let a: Vec<f64> = pts.iter().map(|p| p.a).collect();
     let b: Vec<f64> = pts.iter().map(|p| p.b).collect();
@@ -200,7 +218,7 @@ pub fn analyze_sound_keeping_track(
         .and_then(|p0| solve(&law, &w, p0, Scale::Unknown));
     let s = match fitted {
         Ok(s) => s,
-        Err(m) => return Err(refuse(format!("eq 79 cannot be fitted to the track ({m})"))),
+        Err(m) => return refuse(format!("eq 79 cannot be fitted to the track ({m})")),
     };
     let fit = TrackFit {
         parameters: LawFit::of(&s),
@@ -228,7 +246,7 @@ pub fn analyze_sound_keeping_track(
     // phase it holds ([`rise`](crate::sound_analysis::rise)).
     let rise_alone = verdict.refusals.len() == 1 && verdict.rise < checks.min_rise;
     if !verdict.refusals.is_empty() && !rise_alone {
-        return Err(refuse(verdict.refusals.join("; ")));
+        return refuse(verdict.refusals.join("; "));
     }
     let mut candidates = vec![(
         "beta free".to_string(),
@@ -277,6 +295,7 @@ pub fn analyze_sound_keeping_track(
         fit,
         verdict,
         rise_on_phase: None,
+        short_spin: None,
         truth: trace.truth.clone(),
     };
     analysis.judged_on_phase(rise_alone, checks, file, &heard)
@@ -469,6 +488,12 @@ impl fmt::Display for SoundAnalysis {
             })?,
             (None, Some(why)) => writeln!(f, "  phase not used: {why}")?,
             (None, None) => {}
+        }
+        if let Some(why) = &self.short_spin {
+            writeln!(
+                f,
+                "  a short spin: the track alone is refused ({why}); the phase's fit, seeded by a search over beta and t0 on the track's frames, is the result"
+            )?;
         }
         if let Some(r) = self.rise_on_phase {
             writeln!(

@@ -4,8 +4,9 @@
 //! fitted to it ([`phase_fit`]), its residuals tested for structure ([`residual_structure`]),
 //! with a phone's high-pass read from the harmonics ([`high_pass`]), the turns it counts checked
 //! against the track's ([`turn_count`]), which fit is the result and what uncertainty it states
-//! ([`result`]), the rise a spin-down is judged on ([`rise`]), and the whole analysis
-//! ([`analysis`]) or its refusal with the track it had made ([`refusal`]).
+//! ([`result`]), the rise a spin-down is judged on ([`rise`]), a short spin's fit from its phase
+//! where the track holds too few frames ([`short_spin`]), and the whole analysis ([`analysis`])
+//! or its refusal with the track it had made ([`refusal`]).
 
 pub mod analysis;
 pub mod high_pass;
@@ -16,6 +17,7 @@ pub mod refusal;
 pub mod residual_structure;
 pub mod result;
 pub mod rise;
+pub mod short_spin;
 pub mod spectrogram;
 pub mod spectrum;
 pub mod track;

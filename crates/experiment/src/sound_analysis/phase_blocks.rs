@@ -82,6 +82,8 @@ pub struct BlockSettings {
     pub max_block: f64,
     /// A block is kept when its fundamental's power stands this many times above the noise's.
     pub min_snr: f64,
+    /// The fewest blocks the heading is fitted to.
+    pub min_blocks: usize,
 }
 
 impl Default for BlockSettings {
@@ -89,6 +91,7 @@ impl Default for BlockSettings {
         Self {
             max_block: 0.1,
             min_snr: 20.0,
+            min_blocks: 12,
         }
     }
 }

@@ -169,7 +169,7 @@ pub fn fit_phase(
         let end =
             (p[1] - (5.0 * sigma_t0).max(1e-3)).min(rec.t_start + rec.x.len() as f64 * rec.dt);
         let bl = blocks(rec, &p, shift, (first, end), round == 0, settings);
-        FitError::at_least("phase blocks", bl.len(), 12, "")?;
+        FitError::at_least("phase blocks", bl.len(), settings.min_blocks, "")?;
         let omega = rates(&bl, &p);
         let leads = |wc: f64| block_leads(&bl, &omega, wc);
         let read = fit_corner(&bl, &omega);

@@ -15,7 +15,7 @@ const SHORT_LINE_S: f64 = 2.0;
 /// The least rise of the line's pitch, last over first, that a disk's spin-down is taken to
 /// have: 5 %, far below any spin-down's fitted (the plausibility check asks for 50 %), so that
 /// only a line that holds its pitch or falls is called another sound.
-const RISES: f64 = 1.05;
+pub const RISES: f64 = 1.05;
 
 /// What the pitch track heard, for a refusal's message: where it followed a line (the disk's, or
 /// another sound it took for the disk's, such as a mains line the hum's removal left; or that no

@@ -1,0 +1,560 @@
+//! A short spin: one whose pitch track holds fewer frames of the disk's line than a fit of eq 79
+//! to the track is judged on ([`SOUND_MIN_FRAMES`]), analysed from its phase.
+//!
+//! A spin of 1-3 s of sound from 4-30 Hz holds 5-100 turns but only a few frames of a quarter of
+//! a second: too few for the track's own fit, enough for the heading. The track's frames
+//! $(t_k, \Omega_k, \sigma_k)$ still fix eq 79,
+//! $$\ln\Omega = \frac{\ln C - \ln(t_0 - t)}{\beta + 2} \quad (79),$$
+//! up to the trade between $\beta$ and $t_0$ that so few frames leave open. So the law is
+//! **seeded by a search**: for each $(\beta, t_0)$ on a grid ($\beta$ by [`BETA_STEP`], $t_0$
+//! after the last frame by ratios of [`T0_RATIO`] of its distance from the last frame's middle)
+//! $\ln C$ is the frames' weighted mean, the grid points whose frames' $\chi^2$ is within
+//! [`CHI2_MARGIN`] of the least are kept, and of these the law under which the recording's
+//! phase blocks ([`phase_blocks`](crate::sound_analysis::phase_blocks)) hold most of the
+//! fundamental, $\sum_k \ln \mathrm{snr}_k$ (a block off the disk's line, or past its end, holds
+//! noise, $\ln\mathrm{snr} \lesssim 0$), is the seed; the search is repeated on a grid a fifth
+//! as coarse about it. The heading is then fitted to the phase from that seed as for a long spin
+//! ([`phase_fit`](crate::sound_analysis::phase_fit)), to at least [`MIN_SHORT_BLOCKS`] blocks,
+//! with its interval from its residuals.
+//!
+//! **Its interval.** The residuals of $n$ blocks measure the sigmas' common scale with
+//! $n - 4$ degrees of freedom, few for a short spin, so the fit's sigmas are widened by
+//! Student's $t_{0.975}(n-4)/z_{0.975}$ ([`student_975`]), and the 95 % interval
+//! $\pm 1.96\,\sigma$ is Student's. Where the harmonics' phases read a high-pass's corner
+//! that the fit does not take out (the record does not show it clear of no high-pass,
+//! [`Corner::why_not_used`](crate::sound_analysis::high_pass::Corner::why_not_used)), the
+//! shift its lead would make ([`unused_lead_shift`], to first order) is added to each
+//! parameter's sigma in quadrature: a short spin's heading is followed over few turns at rates
+//! far below a phone's corner, where the lead it leaves in moves $t_0$ by milliseconds.
+//!
+//! **When it is the result.** The phase's fit stands in for the track's only where it holds on
+//! its own evidence: it is plausible ([`SoundAnalysis::phase_implausible`]: $t_0$ after the
+//! last frame, $\beta$ determined, residuals without structure), every frame of the track lies
+//! within [`FRAME_SIGMAS`] of its own sigma, beyond half a turn's worth of its rate, of the law's
+//! mean over the frame,
+//! $$|\bar\Omega_k - \Omega_k| \le 5\,\sigma_k + \frac{\Omega_k}{2N},$$
+//! $N$ the turns fitted (the track and the phase follow the same line: a fit that slipped by a
+//! turn moves the rate by about $\Omega/N$, one locked onto another line by far more, while a
+//! frame that holds the spin's faded-in start or a nuisance may be off by more than its sigma),
+//! its $\beta$ lies in the checks' range, and the rate rises by the checks' `min_rise` across
+//! its blocks. Otherwise the track's refusal stands, with why the phase did
+//! not stand in.
+
+use crate::fit::eq84_85::phase;
+use crate::fit::law_choice::compare;
+use crate::fit::law_fit::LawFit;
+use crate::fit::least_squares::Problem;
+use crate::fit::plausibility::{Evidence, Plausibility, Points, SOUND_MIN_FRAMES};
+use crate::sound_analysis::analysis::{SoundAnalysis, TrackFit, TrackLaw};
+use crate::sound_analysis::high_pass::{block_leads, rates};
+use crate::sound_analysis::phase_blocks::{blocks, BlockSettings, Samples};
+use crate::sound_analysis::phase_fit::{fit_phase, PhaseFit};
+use crate::sound_analysis::refusal::RISES;
+use crate::sound_analysis::track::FrequencyTrack;
+use crate::trace::Trace;
+use nalgebra::{SMatrix, SVector};
+use std::f64::consts::TAU;
+
+/// The grid's step in $\beta$.
+pub const BETA_STEP: f64 = 0.25;
+
+/// The grid's ratio between successive distances of $t_0$ from the last frame's middle.
+pub const T0_RATIO: f64 = 1.12;
+
+/// Grid points whose frames' $\chi^2$ exceeds the least by more than this are not searched.
+pub const CHI2_MARGIN: f64 = 9.0;
+
+/// How many of the frames' sigmas a frame may lie from the law the phase states.
+pub const FRAME_SIGMAS: f64 = 5.0;
+
+/// The fewest blocks a short spin's heading is fitted to: twice the heading's four parameters.
+pub const MIN_SHORT_BLOCKS: usize = 8;
+
+/// The normal distribution's 97.5 % quantile.
+const NORMAL_975: f64 = 1.959_963_984_540_054;
+
+/// Student's $t$ distribution's 97.5 % quantile for $\nu$ degrees of freedom, by the
+/// Cornish-Fisher expansion about the normal's $z$ (Abramowitz & Stegun 26.7.5),
+/// $$t \approx z + \frac{z^3 + z}{4\nu} + \frac{5z^5 + 16z^3 + 3z}{96\nu^2} +
+///   \frac{3z^7 + 19z^5 + 17z^3 - 15z}{384\nu^3},$$
+/// within 0.15 % of the tabulated value from $\nu = 5$ (2.5678 against 2.5706 at $\nu = 5$,
+/// 2.2280 against 2.2281 at $\nu = 10$).
+pub fn student_975(nu: f64) -> f64 {
+    let z = NORMAL_975;
+    let (z3, z5, z7) = (z.powi(3), z.powi(5), z.powi(7));
+    z + (z3 + z) / (4.0 * nu)
+        + (5.0 * z5 + 16.0 * z3 + 3.0 * z) / (96.0 * nu * nu)
+        + (3.0 * z7 + 19.0 * z5 + 17.0 * z3 - 15.0 * z) / (384.0 * nu.powi(3))
+}
+
+/// The frames of the track: middles (s), $\ln\Omega$ and its sigma.
+struct Frames {
+    t: Vec<f64>,
+    ln_omega: Vec<f64>,
+    sigma: Vec<f64>,
+}
+
+impl Frames {
+    fn of(track: &FrequencyTrack) -> Self {
+        let pts = &track.points;
+        Self {
+            t: pts.iter().map(|p| 0.5 * (p.a + p.b)).collect(),
+            ln_omega: pts.iter().map(|p| p.omega.ln()).collect(),
+            sigma: pts.iter().map(|p| p.sigma / p.omega).collect(),
+        }
+    }
+
+    /// $\ln C$ for $(\beta, t_0)$, the frames' weighted mean, and the frames' $\chi^2$.
+    fn ln_c(&self, beta: f64, t0: f64) -> (f64, f64) {
+        let (mut num, mut den) = (0.0, 0.0);
+        let each: Vec<(f64, f64)> = self
+            .t
+            .iter()
+            .zip(&self.ln_omega)
+            .zip(&self.sigma)
+            .map(|((t, l), s)| ((beta + 2.0) * l + (t0 - t).ln(), (beta + 2.0) * s))
+            .collect();
+        for (v, s) in &each {
+            num += v / (s * s);
+            den += 1.0 / (s * s);
+        }
+        let ln_c = num / den;
+        let chi2 = each.iter().map(|(v, s)| ((v - ln_c) / s).powi(2)).sum();
+        (ln_c, chi2)
+    }
+}
+
+/// The seed of eq 79 for a short spin (see the module's documentation): $(\beta, t_0, \ln C)$
+/// and the $t_0$ grid's step there (s); `None` where fewer than two frames hold the line or the
+/// line runs to the recording's end (no end time after it is left to search).
+pub fn seed(
+    rec: &Samples<'_>,
+    track: &FrequencyTrack,
+    first: f64,
+) -> Option<(SVector<f64, 3>, f64)> {
+    let fr = Frames::of(track);
+    if fr.t.len() < 2 {
+        return None;
+    }
+    let end = rec.t_start + rec.x.len() as f64 * rec.dt;
+    let last = *fr.t.last()?;
+    let t_last_b = track.points.last()?.b;
+    let score = |p: &SVector<f64, 3>| -> f64 {
+        let s = BlockSettings {
+            min_snr: 0.0,
+            ..BlockSettings::default()
+        };
+        let stop = (p[1] - 1e-3).min(end);
+        blocks(rec, p, 0.0, (first, stop), false, &s)
+            .iter()
+            .map(|b| b.snr.max(1e-3).ln())
+            .sum()
+    };
+    let search = |betas: Vec<f64>, t0s: Vec<f64>| -> Option<(SVector<f64, 3>, f64)> {
+        let mut grid: Vec<(f64, SVector<f64, 3>)> = Vec::new();
+        for &beta in &betas {
+            for &t0 in t0s.iter().filter(|&&t0| t0 > t_last_b) {
+                let (ln_c, chi2) = fr.ln_c(beta, t0);
+                if chi2.is_finite() && ln_c.is_finite() {
+                    grid.push((chi2, SVector::<f64, 3>::new(beta, t0, ln_c)));
+                }
+            }
+        }
+        let least = grid.iter().map(|g| g.0).fold(f64::INFINITY, f64::min);
+        grid.into_iter()
+            .filter(|g| g.0 <= least + CHI2_MARGIN)
+            .map(|g| (g.1, score(&g.1)))
+            .filter(|g| g.1.is_finite())
+            .max_by(|a, b| a.1.total_cmp(&b.1))
+    };
+    let distances = |from: f64, to: f64, ratio: f64| -> Vec<f64> {
+        let mut d = Vec::new();
+        let mut x = from;
+        while x <= to {
+            d.push(x);
+            x *= ratio;
+        }
+        d
+    };
+    let coarse_t0: Vec<f64> = distances(0.005, (end - last).max(0.01), T0_RATIO)
+        .into_iter()
+        .map(|d| last + d)
+        .collect();
+    let coarse_beta: Vec<f64> = (0..=18).map(|k| 0.5 + BETA_STEP * f64::from(k)).collect();
+    let (c, _) = search(coarse_beta, coarse_t0)?;
+    let d0 = c[1] - last;
+    let fine_ratio = T0_RATIO.powf(0.2);
+    let fine_t0: Vec<f64> = (-5..=5).map(|k| last + d0 * fine_ratio.powi(k)).collect();
+    let fine_beta: Vec<f64> = (-5..=5)
+        .map(|k| c[0] + 0.2 * BETA_STEP * f64::from(k))
+        .collect();
+    let (p, _) = search(fine_beta, fine_t0)?;
+    Some((p, (p[1] - last) * (fine_ratio - 1.0)))
+}
+
+/// What taking out the lead of a high-pass at `wc` (rad/s) would move eq 79's parameters by, to
+/// first order: with the blocks $k$ of the fitted law `ph` (from `first`), their heading's
+/// gradient $J_k = (\partial\Phi/\partial\beta, \partial\Phi/\partial t_0,
+/// \partial\Phi/\partial\ln C, 1)$, weights $W_k = 1/\sigma_k^2$ and leads $\ell_k$
+/// ([`block_leads`]),
+/// $$\Delta p = (J^{\mathsf T}WJ)^{-1} J^{\mathsf T}W\,\ell;$$
+/// its first three components' magnitudes, `None` where the blocks do not determine it.
+fn unused_lead_shift(
+    rec: &Samples<'_>,
+    ph: &PhaseFit,
+    first: f64,
+    wc: f64,
+) -> Option<SVector<f64, 3>> {
+    let law = SVector::<f64, 3>::new(ph.beta, ph.t0, ph.ln_c);
+    let end = ph.t0 - (5.0 * ph.t0_sigma).max(1e-3);
+    let bl = blocks(
+        rec,
+        &law,
+        0.0,
+        (first, end),
+        false,
+        &BlockSettings::default(),
+    );
+    if bl.len() < 4 {
+        return None;
+    }
+    let lead = block_leads(&bl, &rates(&bl, &law), wc);
+    let (mut a, mut r) = (SMatrix::<f64, 4, 4>::zeros(), SVector::<f64, 4>::zeros());
+    for (b, l) in bl.iter().zip(&lead) {
+        let g = phase(&law, b.t).2;
+        let j = SVector::<f64, 4>::new(g[0], g[1], g[2], 1.0);
+        let w = 1.0 / (b.sigma * b.sigma);
+        a += w * j * j.transpose();
+        r += w * l * j;
+    }
+    let d = a.try_inverse()? * r;
+    let out = SVector::<f64, 3>::new(d[0].abs(), d[1].abs(), d[2].abs());
+    out.iter().all(|v| v.is_finite()).then_some(out)
+}
+
+/// The heading fitted to the phase of `rec` from `first` (s), seeded at `p0` with $t_0$'s grid
+/// step `step` (s), to at least [`MIN_SHORT_BLOCKS`] blocks, its sigmas widened by Student's
+/// $t$ and by the shift a corner's lead left in would make (see the module's documentation).
+fn short_phase(
+    rec: &Samples<'_>,
+    track: &FrequencyTrack,
+    first: f64,
+    p0: SVector<f64, 3>,
+    step: f64,
+) -> Result<PhaseFit, String> {
+    let settings = BlockSettings {
+        min_blocks: MIN_SHORT_BLOCKS,
+        ..BlockSettings::default()
+    };
+    let mut ph = fit_phase(
+        rec,
+        &track.hum,
+        first,
+        p0,
+        (step / 3.0).max(1e-3),
+        &settings,
+    )
+    .map_err(|e| format!("the phase of the short spin could not be fitted ({e})"))?;
+    // The residuals measure the sigmas' scale with n - 4 degrees of freedom.
+    let widen = student_975(ph.n as f64 - 4.0) / NORMAL_975;
+    for v in [
+        &mut ph.parameters.beta_sigma,
+        &mut ph.parameters.t0_sigma,
+        &mut ph.parameters.ln_c_sigma,
+    ] {
+        *v *= widen;
+    }
+    // A corner read but not taken out: what its lead would move is part of the uncertainty.
+    if let (Some((f, _)), Some(_)) = (ph.corner, &ph.corner_not_used) {
+        if let Some(d) = unused_lead_shift(rec, &ph, first, TAU * f) {
+            ph.parameters.beta_sigma = ph.beta_sigma.hypot(d[0]);
+            ph.parameters.t0_sigma = ph.t0_sigma.hypot(d[1]);
+            ph.parameters.ln_c_sigma = ph.ln_c_sigma.hypot(d[2]);
+        }
+    }
+    Ok(ph)
+}
+
+/// The analysis of a short spin from its phase, seeded by [`seed`], where it stands on its own
+/// evidence (see the module's documentation); else why not, for the refusal.
+pub fn analysed(
+    trace: &Trace,
+    track: &FrequencyTrack,
+    checks: &Plausibility,
+    track_refusal: &str,
+) -> Result<SoundAnalysis, String> {
+    let rec = Samples {
+        x: &trace.v,
+        t_start: trace.t[0],
+        dt: 1.0 / track.sample_rate,
+    };
+    let pts = &track.points;
+    if pts.len() < 2 {
+        return Err(format!(
+            "{} frame of the track holds the line, fewer than the 2 the phase of a short spin is \
+             seeded from",
+            pts.len()
+        ));
+    }
+    let (lo_f, hi_f) = (pts[0].omega, pts[pts.len() - 1].omega);
+    if hi_f < RISES * lo_f {
+        return Err(format!(
+            "the line the track followed does not rise ({:.1} Hz to {:.1} Hz), so it is not a \
+             settling disk's",
+            lo_f / TAU,
+            hi_f / TAU
+        ));
+    }
+    let first = pts[0].a;
+    let Some((p0, step)) = seed(&rec, track, first) else {
+        return Err(
+            "the line runs to the recording's end, so no end time after it is left to search: \
+             record until the disk is silent"
+                .into(),
+        );
+    };
+    let ph = short_phase(&rec, track, first, p0, step)?;
+    let law = SVector::<f64, 3>::new(ph.beta, ph.t0, ph.ln_c);
+    // The track's frames against the phase's law, each as the law's mean over its frame.
+    let (fa, fb, fy): (Vec<f64>, Vec<f64>, Vec<f64>) = (
+        pts.iter().map(|p| p.a).collect(),
+        pts.iter().map(|p| p.b).collect(),
+        pts.iter().map(|p| p.omega).collect(),
+    );
+    let frames = TrackLaw {
+        a: &fa,
+        b: &fb,
+        y: &fy,
+    };
+    let slip = 0.5 / ph.turns.max(1.0);
+    let off = pts
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let d = (frames.model(&law, i).0 - p.omega).abs();
+            (d - slip * p.omega).max(0.0) / p.sigma
+        })
+        .fold(0.0, f64::max);
+    let fr = Frames::of(track);
+    if off.is_nan() || off > FRAME_SIGMAS {
+        return Err(format!(
+            "the phase's fit of the short spin (beta = {:.3}, t0 = {:.4} s) misses a frame of the \
+             track by {off:.1} of its sigmas beyond half a turn's worth of its rate over the \
+             {:.1} turns fitted, more than {FRAME_SIGMAS}: the two do not follow one line",
+            ph.beta, ph.t0, ph.turns
+        ));
+    }
+    let (lo, hi) = checks.beta_range;
+    if !(lo..=hi).contains(&ph.beta) {
+        return Err(format!(
+            "the phase's fit of the short spin gives beta = {:.3}, outside {lo} .. {hi}",
+            ph.beta
+        ));
+    }
+    let y: Vec<f64> = pts.iter().map(|p| p.omega).collect();
+    let model: Vec<f64> = (0..pts.len()).map(|i| frames.model(&p0, i).0).collect();
+    let residual: Vec<f64> = y.iter().zip(&model).map(|(a, b)| a - b).collect();
+    let (_, chi2) = fr.ln_c(p0[0], p0[1]);
+    let fit = TrackFit {
+        parameters: LawFit {
+            beta: p0[0],
+            beta_sigma: BETA_STEP,
+            t0: p0[1],
+            t0_sigma: p0[1] - fr.t[fr.t.len() - 1],
+            ln_c: p0[2],
+            ln_c_sigma: f64::NAN,
+        },
+        rms: (residual.iter().map(|r| r * r).sum::<f64>() / y.len() as f64).sqrt(),
+        chi2_dof: chi2 / (y.len() as f64 - 2.0).max(1.0),
+        n: y.len(),
+        model,
+    };
+    let last_b = pts[pts.len() - 1].b;
+    let verdict = checks.judge_points(
+        &Evidence {
+            t: &fr.t,
+            omega: &y,
+            anomalous: track.stray,
+            y: &y,
+            residual: &residual,
+            crossover_residual_ss: None,
+            beta: p0[0],
+            t0: p0[1],
+            t_first: first,
+            t_last: last_b,
+        },
+        Points::Frames(SOUND_MIN_FRAMES),
+    );
+    let mut a = SoundAnalysis {
+        source: trace.source.clone(),
+        recording: None,
+        track: track.clone(),
+        fit,
+        phase: Some(ph),
+        phase_refused: None,
+        turn_count: None,
+        models: compare(y.len(), Vec::new()),
+        verdict,
+        rise_on_phase: None,
+        short_spin: Some(track_refusal.to_string()),
+        truth: trace.truth.clone(),
+    };
+    if let Some(why) = a.phase_implausible() {
+        return Err(format!(
+            "the phase's fit of the short spin is not the result: {why}"
+        ));
+    }
+    match a.phase_rise() {
+        Some(r) if r >= checks.min_rise => {
+            a.rise_on_phase = Some(r);
+            Ok(a)
+        }
+        r => Err(format!(
+            "the phase's fit of the short spin rises by a factor {:.2} over its blocks, less than \
+             the {} a spin-down is judged on",
+            r.unwrap_or(f64::NAN),
+            checks.min_rise
+        )),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::formats::channel::Channels;
+    use crate::formats::recording::parse_recording;
+    use crate::sound_analysis::analysis::analyze_sound;
+    use crate::sound_analysis::track::TrackSettings;
+    use crate::synthetic::phone_room::PhoneRoom;
+
+    #[test]
+    fn students_quantile_matches_the_table() {
+        // Two-sided 95 % points of Student's t (Abramowitz & Stegun, table 26.10).
+        for (nu, t) in [
+            (5.0, 2.5706),
+            (6.0, 2.4469),
+            (10.0, 2.2281),
+            (20.0, 2.0860),
+            (60.0, 2.0003),
+        ] {
+            let got = student_975(nu);
+            assert!(
+                (got / t - 1.0).abs() < 1.5e-3,
+                "nu = {nu}: {got} against {t}"
+            );
+        }
+    }
+
+    /// The phone study's recording of `seed` ([`PhoneRoom::draw`]) as the tool reads it.
+    fn recording(seed: u64) -> Trace {
+        let rec = PhoneRoom::draw(seed).record().unwrap();
+        let mut trace = parse_recording(rec.wav().unwrap(), "phone.wav", Channels::Mix)
+            .unwrap()
+            .trace;
+        trace.truth = Some(rec.truth);
+        trace
+    }
+
+    /// The refusal of `seed`'s recording.
+    fn refusal(seed: u64) -> String {
+        let a = analyze_sound(
+            &recording(seed),
+            &TrackSettings::default(),
+            &Plausibility::default(),
+        );
+        a.map(|a| a.to_string()).expect_err("refused").to_string()
+    }
+
+    #[test]
+    fn a_spin_of_two_seconds_is_analysed_from_its_phase_and_its_interval_holds() {
+        // 1.98 s of sound from 19.9 Hz at 44.1 kS/s, hum, AGC and a high-pass at 62 Hz: the
+        // track holds 7 frames of the line, fewer than the 8 its own fit is judged on.
+        let trace = recording(75);
+        let a = analyze_sound(&trace, &TrackSettings::default(), &Plausibility::default())
+            .expect("analysed as a short spin");
+        assert!(a.track.points.len() < SOUND_MIN_FRAMES, "{a}");
+        assert!(
+            a.short_spin
+                .as_deref()
+                .is_some_and(|w| w.contains("fewer than the 8")),
+            "{a}"
+        );
+        let (l, truth) = (a.law(), trace.truth.unwrap());
+        assert!(l.from_phase, "{a}");
+        assert!((l.beta - truth.beta).abs() <= 1.96 * l.beta_sigma, "{a}");
+        assert!((l.t0 - truth.t0).abs() <= 1.96 * l.t0_sigma, "{a}");
+        assert!(l.beta_sigma < 0.05 && l.t0_sigma < 0.005, "{a}");
+        assert!(
+            a.to_string()
+                .contains("a short spin: the track alone is refused"),
+            "{a}"
+        );
+    }
+
+    #[test]
+    fn a_short_spin_whose_phase_misses_the_tracks_frames_or_beta_range_is_refused() {
+        let trace = recording(75);
+        let track = analyze_sound(&trace, &TrackSettings::default(), &Plausibility::default())
+            .unwrap()
+            .track;
+        let checks = Plausibility::default();
+        // One frame moved 10 % off the line the phase follows.
+        let mut moved = track.clone();
+        moved.points[2].omega *= 1.1;
+        let why = analysed(&trace, &moved, &checks, "x").expect_err("refused");
+        assert!(
+            why.contains("misses a frame of the track by")
+                && why.contains("do not follow one line"),
+            "{why}"
+        );
+        // Beta outside a range that leaves out every beta of the set (1.5-3).
+        let narrow = Plausibility {
+            beta_range: (0.0, 1.0),
+            ..Plausibility::default()
+        };
+        let why = analysed(&trace, &track, &narrow, "x").expect_err("refused");
+        assert!(why.contains("outside 0 .. 1"), "{why}");
+        // A line that runs to the recording's end leaves no end time to search.
+        let mut late = track.clone();
+        let end = trace.t[0] + trace.v.len() as f64 / track.sample_rate;
+        let last = late.points.len() - 1;
+        late.points[last].b = end;
+        let why = analysed(&trace, &late, &checks, "x").expect_err("refused");
+        assert!(why.contains("runs to the recording's end"), "{why}");
+    }
+
+    #[test]
+    fn short_spins_the_phase_cannot_stand_in_for_are_refused_saying_why() {
+        let cases: [(u64, &str); 5] = [
+            (87, "1 frame of the track holds the line, fewer than the 2"),
+            (
+                47,
+                "the line the track followed does not rise (1499.5 Hz to 1499.8 Hz)",
+            ),
+            (
+                58,
+                "the phase of the short spin could not be fitted (2 phase blocks",
+            ),
+            (
+                194,
+                "rises by a factor 1.44 over its blocks, less than the 1.5",
+            ),
+            (
+                1074,
+                "the phase's fit of the short spin is not the result: its residuals show structure",
+            ),
+        ];
+        for (seed, what) in cases {
+            let r = refusal(seed);
+            assert!(
+                r.contains("nor can it be analysed as a short spin: "),
+                "seed {seed}: {r}"
+            );
+            assert!(r.contains(what), "seed {seed}: {r}");
+            assert!(
+                !r.contains("pulse") && !r.contains("light"),
+                "seed {seed}: {r}"
+            );
+        }
+    }
+}
