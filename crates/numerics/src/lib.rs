@@ -10,3 +10,4 @@ pub mod minimize;
 pub mod oscillation;
 pub mod rng;
 pub mod trig;
+pub mod wider;
