@@ -22,6 +22,47 @@ use wide::f64x2;
 /// The largest $|x|$ taken by the plain-double path: $2|x|/\pi$ stays below $2^{52}$.
 const PLAIN_LIMIT: f64 = 1e15;
 
+/// True for an angle the plain path takes ($|x| \le$ [`PLAIN_LIMIT`]); false for larger ones,
+/// the infinities and `NaN`.
+#[inline(always)]
+fn on_plain_path(x: f64) -> bool {
+    x.abs() <= PLAIN_LIMIT
+}
+
+/// The polynomials' coefficients, $c_0 .. c_5$ (Agner Fog's, as `wide` has them): the sine's
+/// of $x^3$ and the cosine's of $x^4$ in $x^2$. The digits are the published ones, more than a
+/// double holds; each rounds to the double `wide` uses.
+#[allow(clippy::excessive_precision)]
+const SIN: [f64; 6] = [
+    -1.666_666_666_666_663_072_95E-1,
+    8.333_333_333_322_118_588_78E-3,
+    -1.984_126_982_958_953_859_96E-4,
+    2.755_731_362_138_572_452_13E-6,
+    -2.505_074_776_285_780_728_66E-8,
+    1.589_623_015_765_465_680_60E-10,
+];
+#[allow(clippy::excessive_precision)]
+const COS: [f64; 6] = [
+    4.166_666_666_666_659_292_18E-2,
+    -1.388_888_888_887_305_641_16E-3,
+    2.480_158_728_885_170_453_48E-5,
+    -2.755_731_417_929_673_881_12E-7,
+    2.087_570_084_197_473_167_78E-9,
+    -1.135_853_652_138_768_173_00E-11,
+];
+/// $\pi/2$ in three parts (Cody and Waite), with the published digits as well.
+#[allow(clippy::excessive_precision)]
+const DP1: f64 = 7.853_981_554_508_209_228_515_625E-1 * 2.;
+#[allow(clippy::excessive_precision)]
+const DP2: f64 = 7.946_627_356_147_928_367_14E-9 * 2.;
+#[allow(clippy::excessive_precision)]
+const DP3: f64 = 3.061_616_997_868_382_943_07E-17 * 2.;
+const TWO_OVER_PI: f64 = 2.0 / core::f64::consts::PI;
+/// $2^{52}$: adding it rounds a non-negative double below $2^{52}$ to an integer, held in the
+/// low bits of the sum's mantissa.
+const MAGIC: f64 = 4_503_599_627_370_496.0;
+const SIGN: u64 = 1 << 63;
+
 /// $(\sin x, \cos x)$.
 #[inline]
 pub fn sin_cos(x: f64) -> (f64, f64) {
@@ -42,27 +83,6 @@ fn by_wide(x: f64) -> (f64, f64) {
 /// operations in the same order (`wide` without `fma` multiplies, then adds).
 #[inline(always)]
 fn plain(x: f64) -> (f64, f64) {
-    const P0S: f64 = -1.666_666_666_666_663_072_95E-1;
-    const P1S: f64 = 8.333_333_333_322_118_588_78E-3;
-    const P2S: f64 = -1.984_126_982_958_953_859_96E-4;
-    const P3S: f64 = 2.755_731_362_138_572_452_13E-6;
-    const P4S: f64 = -2.505_074_776_285_780_728_66E-8;
-    const P5S: f64 = 1.589_623_015_765_465_680_60E-10;
-    const P0C: f64 = 4.166_666_666_666_659_292_18E-2;
-    const P1C: f64 = -1.388_888_888_887_305_641_16E-3;
-    const P2C: f64 = 2.480_158_728_885_170_453_48E-5;
-    const P3C: f64 = -2.755_731_417_929_673_881_12E-7;
-    const P4C: f64 = 2.087_570_084_197_473_167_78E-9;
-    const P5C: f64 = -1.135_853_652_138_768_173_00E-11;
-    const DP1: f64 = 7.853_981_554_508_209_228_515_625E-1 * 2.;
-    const DP2: f64 = 7.946_627_356_147_928_367_14E-9 * 2.;
-    const DP3: f64 = 3.061_616_997_868_382_943_07E-17 * 2.;
-    const TWO_OVER_PI: f64 = 2.0 / core::f64::consts::PI;
-    // 2^52: adding it rounds a non-negative double below 2^52 to an integer, held in the low
-    // bits of the sum's mantissa.
-    const MAGIC: f64 = 4_503_599_627_370_496.0;
-    const SIGN: u64 = 1 << 63;
-
     let xa = x.abs();
     let shifted = xa * TWO_OVER_PI + MAGIC;
     let y = shifted - MAGIC;
@@ -75,8 +95,8 @@ fn plain(x: f64) -> (f64, f64) {
         let (z2, z4) = (r2 * r2, (r2 * r2) * (r2 * r2));
         (c[3] * r2 + c[2]) * z2 + ((c[5] * r2 + c[4]) * z4 + (c[1] * r2 + c[0]))
     };
-    let s = (r * r2) * poly([P0S, P1S, P2S, P3S, P4S, P5S]) + r;
-    let c = (r2 * r2) * poly([P0C, P1C, P2C, P3C, P4C, P5C]) + (1.0 - r2 * 0.5);
+    let s = (r * r2) * poly(SIN) + r;
+    let c = (r2 * r2) * poly(COS) + (1.0 - r2 * 0.5);
     // All ones when the quadrant is odd: sine and cosine trade places.
     let swap = 0u64.wrapping_sub(q & 1);
     let (sb, cb) = (s.to_bits(), c.to_bits());
@@ -102,11 +122,67 @@ pub fn sin_cos_each(x: &[f64], sin: &mut [f64], cos: &mut [f64]) {
     each(x, sin, cos);
 }
 
-/// [`sin_cos_each`] compiled for AVX2.
+/// [`sin_cos_each`] in AVX2 registers, four angles at a time: [`plain`]'s operations one for
+/// one, each on four lanes; the last angles (fewer than four) and those beyond the plain path
+/// as [`each`] takes them.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 fn each_avx2(x: &[f64], sin: &mut [f64], cos: &mut [f64]) {
-    each(x, sin, cos);
+    use core::arch::x86_64::*;
+    let n = x.len();
+    let (sin, cos) = (&mut sin[..n], &mut cos[..n]);
+    let quads = n - n % 4;
+    let f = _mm256_set1_pd;
+    let i = _mm256_set1_epi64x;
+    let magic = f(4_503_599_627_370_496.0);
+    let mut plain_only = _mm256_castsi256_pd(i(-1));
+    for k in (0..quads).step_by(4) {
+        let xv = _mm256_set_pd(x[k + 3], x[k + 2], x[k + 1], x[k]);
+        let xa = _mm256_and_pd(xv, _mm256_castsi256_pd(i(i64::MAX)));
+        plain_only = _mm256_and_pd(plain_only, _mm256_cmp_pd::<_CMP_LE_OQ>(xa, f(PLAIN_LIMIT)));
+        let shifted = _mm256_add_pd(_mm256_mul_pd(xa, f(TWO_OVER_PI)), magic);
+        let y = _mm256_sub_pd(shifted, magic);
+        let q = _mm256_sub_epi64(_mm256_castpd_si256(shifted), _mm256_castpd_si256(magic));
+        let r = _mm256_sub_pd(xa, _mm256_mul_pd(y, f(DP1)));
+        let r = _mm256_sub_pd(r, _mm256_mul_pd(y, f(DP2)));
+        let r = _mm256_sub_pd(r, _mm256_mul_pd(y, f(DP3)));
+        let r2 = _mm256_mul_pd(r, r);
+        let z2 = _mm256_mul_pd(r2, r2);
+        let z4 = _mm256_mul_pd(z2, z2);
+        let term = |a: f64, b: f64| _mm256_add_pd(_mm256_mul_pd(f(a), r2), f(b));
+        let poly = |c: [f64; 6]| {
+            let low = _mm256_add_pd(_mm256_mul_pd(term(c[5], c[4]), z4), term(c[1], c[0]));
+            _mm256_add_pd(_mm256_mul_pd(term(c[3], c[2]), z2), low)
+        };
+        let s = _mm256_add_pd(_mm256_mul_pd(_mm256_mul_pd(r, r2), poly(SIN)), r);
+        let one_less = _mm256_sub_pd(f(1.0), _mm256_mul_pd(r2, f(0.5)));
+        let c = _mm256_add_pd(_mm256_mul_pd(z2, poly(COS)), one_less);
+        let swap = _mm256_castsi256_pd(_mm256_sub_epi64(
+            _mm256_setzero_si256(),
+            _mm256_and_si256(q, i(1)),
+        ));
+        let sv = _mm256_or_pd(_mm256_and_pd(c, swap), _mm256_andnot_pd(swap, s));
+        let cv = _mm256_or_pd(_mm256_and_pd(s, swap), _mm256_andnot_pd(swap, c));
+        let sin_sign = _mm256_and_si256(
+            _mm256_xor_si256(_mm256_slli_epi64::<62>(q), _mm256_castpd_si256(xv)),
+            i(i64::MIN),
+        );
+        let cos_sign = _mm256_slli_epi64::<62>(_mm256_and_si256(_mm256_add_epi64(q, i(1)), i(2)));
+        let sv = _mm256_xor_pd(sv, _mm256_castsi256_pd(sin_sign));
+        let cv = _mm256_xor_pd(cv, _mm256_castsi256_pd(cos_sign));
+        // SAFETY: k + 3 < quads <= n, the length of `sin` and `cos`; unaligned stores.
+        unsafe {
+            _mm256_storeu_pd(sin[k..k + 4].as_mut_ptr(), sv);
+            _mm256_storeu_pd(cos[k..k + 4].as_mut_ptr(), cv);
+        }
+    }
+    let all_plain = _mm256_movemask_pd(plain_only) == 0b1111;
+    for k in quads..n {
+        (sin[k], cos[k]) = plain(x[k]);
+    }
+    if !all_plain || x[quads..].iter().any(|&x| !on_plain_path(x)) {
+        beyond_plain(x, sin, cos);
+    }
 }
 
 /// [`sin_cos_each`]'s loop: every angle by the plain path, four at a time and then the rest,
@@ -133,10 +209,16 @@ fn each(x: &[f64], sin: &mut [f64], cos: &mut [f64]) {
         plain_only[0] &= x[i].abs() <= PLAIN_LIMIT;
     }
     if plain_only != [true; LANES] {
-        for ((&x, s), c) in x.iter().zip(sin.iter_mut()).zip(cos.iter_mut()) {
-            if !(x.abs() <= PLAIN_LIMIT) {
-                (*s, *c) = by_wide(x);
-            }
+        beyond_plain(x, sin, cos);
+    }
+}
+
+/// The angles of `x` beyond the plain path, by `wide`.
+#[cold]
+fn beyond_plain(x: &[f64], sin: &mut [f64], cos: &mut [f64]) {
+    for ((&x, s), c) in x.iter().zip(sin.iter_mut()).zip(cos.iter_mut()) {
+        if !on_plain_path(x) {
+            (*s, *c) = by_wide(x);
         }
     }
 }
@@ -205,8 +287,7 @@ mod tests {
                 2 => rng.random_range(-1e6..1e6),
                 3 => {
                     let k: f64 = rng.random_range(-1000i32..1000).into();
-                    let near = f64::from_bits((k * FRAC_PI_4).to_bits() ^ rng.random_range(0..8));
-                    near
+                    f64::from_bits((k * FRAC_PI_4).to_bits() ^ rng.random_range(0..8))
                 }
                 4 => rng.random_range(-1e15..1e15),
                 _ => f64::from_bits(rng.random::<u64>() >> rng.random_range(1..12)),
