@@ -21,6 +21,7 @@
 
 pub mod arenstorf;
 mod batch;
+mod dense;
 #[cfg(test)]
 mod dense_error;
 mod dop853;
