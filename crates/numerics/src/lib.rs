@@ -1,6 +1,7 @@
 //! Small numerical tools shared by the checks: a seeded random source, fits, linearization,
 //! oscillation frequencies measured on trajectories, bisection, references computed once per
-//! process, a sine and cosine taken two at a time.
+//! process, a sine and cosine over many angles at once, and the run-time choice of the wider
+//! vector build that computes it.
 
 pub mod autocorrelation;
 pub mod fit;
@@ -10,3 +11,4 @@ pub mod minimize;
 pub mod oscillation;
 pub mod rng;
 pub mod trig;
+pub mod wider;

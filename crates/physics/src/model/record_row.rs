@@ -1,6 +1,7 @@
 //! A row recorded at once ([`Model::record_row`], what shares its work between columns) is the
 //! row recorded column by column ([`Model::record`]), and rows recorded a batch at a time
-//! ([`Model::record_rows`]) are those rows, to the bit, in every model a scene can build.
+//! ([`Model::record_rows`]) are those rows, to the bit, in every model a scene can build, in the
+//! AVX2 build of the batch's loops where the processor has it and in the baseline one.
 
 use crate::dispatch::{dispatch, problem, Visit};
 use crate::model::{Model, Quantity};
@@ -73,6 +74,14 @@ impl Visit for SameRow {
                 let mut energy = [0.0; BATCH];
                 model.record_rows(&batch, asked, &mut rows, &mut energy);
                 let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+                // The baseline build of the same loops (the one above is AVX2's where the
+                // processor has it).
+                let (mut baseline, mut baseline_energy) = (vec![-1.0], [0.0; BATCH]);
+                numerics::wider::baseline_only(|| {
+                    model.record_rows(&batch, asked, &mut baseline, &mut baseline_energy)
+                });
+                assert_eq!(bits(&baseline), bits(&rows), "{}: baseline", scene.name);
+                assert_eq!(bits(&baseline_energy), bits(&energy), "{}", scene.name);
                 assert_eq!(rows[0], -1.0, "{}: the rows are appended to", scene.name);
                 assert_eq!(
                     bits(&rows[1..]),

@@ -322,8 +322,9 @@ impl<const N: usize> Model<N> for Rolling<N> {
             .any(|q| matches!(q, Quantity::NormalForce | Quantity::Friction))
     }
 
-    /// The rows column by column over the batch: the tilt's sines and cosines two at a time
-    /// ([`sin_cos_each`], the bits of [`sin_cos`]), then each column over every row. Rows that
+    /// The rows column by column over the batch: the tilt's sines and cosines over the batch
+    /// ([`sin_cos_each`], the bits of [`sin_cos`]), then each column over every row, in the
+    /// AVX2 build where the processor has it (the same operations, so the same bits). Rows that
     /// record the contact force go through [`Model::record_row`] one at a time.
     fn record_rows(
         &self,
@@ -336,67 +337,133 @@ impl<const N: usize> Model<N> for Rolling<N> {
             rows_one_at_a_time(self, batch, quantities, out, energy);
             return;
         }
-        let n = batch.len();
+        #[cfg(target_arch = "x86_64")]
+        if numerics::wider::avx2() {
+            // SAFETY: the processor has AVX2, checked just above.
+            unsafe { self.rows_avx2(batch, quantities, out, energy) };
+            return;
+        }
+        self.rows(batch, quantities, out, energy);
+    }
+}
+
+impl<const N: usize> Rolling<N> {
+    /// [`Model::record_rows`] compiled for AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    fn rows_avx2(
+        &self,
+        batch: &Batch<N>,
+        quantities: &[Quantity],
+        out: &mut Vec<f64>,
+        energy: &mut [f64],
+    ) {
+        self.rows(batch, quantities, out, energy);
+    }
+
+    /// [`Model::record_rows`]'s loops for rows without the contact force, in the build this is
+    /// inlined into: the sines, cosines, energies (and $L_z$) four rows at a time over the
+    /// batch's [`Batch::lanes`], then every row written from its columns.
+    #[inline(always)]
+    fn rows(
+        &self,
+        batch: &Batch<N>,
+        quantities: &[Quantity],
+        out: &mut Vec<f64>,
+        energy: &mut [f64],
+    ) {
+        let (n, m) = (batch.len(), batch.lanes());
+        let width = 1 + quantities.iter().map(|q| q.columns().len()).sum::<usize>();
+        if width > MAX_COLUMNS {
+            rows_one_at_a_time(self, batch, quantities, out, energy);
+            return;
+        }
         let (mut sin, mut cos) = ([0.0; BATCH], [0.0; BATCH]);
-        sin_cos_each(batch.component(0), &mut sin, &mut cos);
-        let (alpha, alpha_dot) = (batch.component(0), batch.component(1));
-        let (precession, spin) = (batch.component(2), batch.component(3));
+        sin_cos_each(&batch.component_rows(0)[..m], &mut sin, &mut cos);
+        let y = |i: usize| batch.component_rows(i);
         let at = |j: usize| Motion {
-            alpha: alpha[j],
-            alpha_dot: alpha_dot[j],
-            precession: precession[j],
-            spin: spin[j],
+            alpha: y(0)[j],
+            alpha_dot: y(1)[j],
+            precession: y(2)[j],
+            spin: y(3)[j],
         };
-        for (j, e) in energy[..n].iter_mut().enumerate() {
+        let mut e = [0.0; BATCH];
+        for (j, e) in e[..m].iter_mut().enumerate() {
             *e = energy_at_tilt(&self.disk, &at(j), sin[j]);
         }
-        let width = 1 + quantities.iter().map(|q| q.columns().len()).sum::<usize>();
-        let start = out.len();
-        out.resize(start + n * width, 0.0);
-        let rows = &mut out[start..];
-        let state = |i: Option<usize>| i.map(|i| batch.component(i));
-        put(rows, width, 0, batch.times());
+        energy[..n].copy_from_slice(&e[..n]);
         let mut lz = [0.0; BATCH];
+        if quantities.contains(&Quantity::Lz) {
+            for (j, l) in lz[..m].iter_mut().enumerate() {
+                *l = lz_at_tilt(&self.disk, &at(j), (sin[j], cos[j]));
+            }
+        }
+        let mut columns = [batch.time_rows(); MAX_COLUMNS];
         let mut c = 1;
         for &q in quantities {
-            let values = match q {
-                Quantity::Alpha => Some(alpha),
-                Quantity::AlphaDot => Some(alpha_dot),
-                Quantity::Precession => Some(precession),
-                Quantity::Spin => Some(spin),
-                Quantity::Energy => Some(&energy[..n]),
-                Quantity::Heading => state(self.layout.heading),
-                Quantity::Face => state(self.layout.face),
-                _ => None,
-            };
-            match (q, values) {
-                (_, Some(v)) => put(rows, width, c, v),
-                (Quantity::Lz, _) => {
-                    for (j, l) in lz[..n].iter_mut().enumerate() {
-                        *l = lz_at_tilt(&self.disk, &at(j), (sin[j], cos[j]));
-                    }
-                    put(rows, width, c, &lz[..n]);
-                }
-                (Quantity::Path, _) => {
-                    let p = self.layout.path.expect("validated: the path is a state");
-                    put(rows, width, c, batch.component(p));
-                    put(rows, width, c + 1, batch.component(p + 1));
-                }
-                _ => debug_assert!(
-                    false,
-                    "validated scenes only record what the model provides"
+            let state = |i: Option<usize>| i.map(y);
+            let (first, second) = match q {
+                Quantity::Alpha => (Some(y(0)), None),
+                Quantity::AlphaDot => (Some(y(1)), None),
+                Quantity::Precession => (Some(y(2)), None),
+                Quantity::Spin => (Some(y(3)), None),
+                Quantity::Energy => (Some(&e), None),
+                Quantity::Lz => (Some(&lz), None),
+                Quantity::Heading => (state(self.layout.heading), None),
+                Quantity::Face => (state(self.layout.face), None),
+                Quantity::Path => (
+                    state(self.layout.path),
+                    state(self.layout.path.map(|p| p + 1)),
                 ),
+                _ => (None, None),
+            };
+            debug_assert!(
+                first.is_some(),
+                "validated scenes only record what the model provides"
+            );
+            for column in [first, second].into_iter().flatten() {
+                columns[c] = column;
+                c += 1;
             }
-            c += q.columns().len();
+        }
+        write_rows(&columns[..c], n, out);
+    }
+}
+
+/// The most columns [`Rolling`]'s rows made a batch at a time have (the time and every
+/// quantity it records, once each, is 11).
+const MAX_COLUMNS: usize = 16;
+
+/// Appends rows `0..n` of `columns` to `out`, row after row: row `j` is `columns[c][j]` for
+/// each `c`. The usual widths are written with the width known to the compiler.
+#[inline(always)]
+fn write_rows(columns: &[&[f64; BATCH]], n: usize, out: &mut Vec<f64>) {
+    match columns {
+        [a, b] => write_fixed(&[*a, *b], n, out),
+        [a, b, c] => write_fixed(&[*a, *b, *c], n, out),
+        [a, b, c, d] => write_fixed(&[*a, *b, *c, *d], n, out),
+        [a, b, c, d, e] => write_fixed(&[*a, *b, *c, *d, *e], n, out),
+        [a, b, c, d, e, f] => write_fixed(&[*a, *b, *c, *d, *e, *f], n, out),
+        [a, b, c, d, e, f, g] => write_fixed(&[*a, *b, *c, *d, *e, *f, *g], n, out),
+        [a, b, c, d, e, f, g, h] => write_fixed(&[*a, *b, *c, *d, *e, *f, *g, *h], n, out),
+        _ => {
+            for j in 0..n {
+                out.extend(columns.iter().map(|c| c[j]));
+            }
         }
     }
 }
 
-/// Writes `values[j]` into column `c` of each row `j` of `rows` (rows of `width` numbers).
-#[inline]
-pub(crate) fn put(rows: &mut [f64], width: usize, c: usize, values: &[f64]) {
-    for (row, v) in rows.chunks_exact_mut(width).zip(values) {
-        row[c] = *v;
+/// [`write_rows`] for `W` columns.
+#[inline(always)]
+fn write_fixed<const W: usize>(columns: &[&[f64; BATCH]; W], n: usize, out: &mut Vec<f64>) {
+    let start = out.len();
+    out.resize(start + n * W, 0.0);
+    let (rows, _) = out[start..].as_chunks_mut::<W>();
+    for (row, j) in rows.iter_mut().zip(0..BATCH) {
+        for (v, c) in row.iter_mut().zip(columns) {
+            *v = c[j];
+        }
     }
 }
 

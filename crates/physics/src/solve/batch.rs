@@ -7,6 +7,10 @@ use super::State;
 /// The most samples in one batch.
 pub const BATCH: usize = 32;
 
+/// The rows a loop over a batch takes together ([`Batch::lanes`]): four doubles fill an AVX2
+/// register, two SSE2 registers.
+pub const LANES: usize = 4;
+
 /// Samples of a run, in time order, all from one step.
 #[derive(Debug, Clone)]
 pub struct Batch<const N: usize> {
@@ -70,6 +74,24 @@ impl<const N: usize> Batch<N> {
         &self.y[i][..self.len]
     }
 
+    /// The number of rows a loop over the batch four at a time covers: [`Batch::len`] rounded
+    /// up to a multiple of 4 (at most [`BATCH`]). The rows past the samples hold numbers left
+    /// from earlier batches (or zeros): a loop may compute over them, so as to run without a
+    /// remainder, and must not hand them on.
+    pub fn lanes(&self) -> usize {
+        self.len.next_multiple_of(LANES)
+    }
+
+    /// Component `i` of every row of the batch, the [`Batch::lanes`] past the samples too.
+    pub fn component_rows(&self, i: usize) -> &[f64; BATCH] {
+        &self.y[i]
+    }
+
+    /// The times of every row, as [`Batch::component_rows`].
+    pub fn time_rows(&self) -> &[f64; BATCH] {
+        &self.t
+    }
+
     /// The state of sample `j`.
     pub fn state(&self, j: usize) -> State<N> {
         State::<N>::from_fn(|i, _| self.y[i][j])
@@ -96,7 +118,8 @@ mod tests {
 
     /// Every step of an orbit, its dense output at up to a full batch of times (and at fewer,
     /// so that a partial batch is seen): each state of the batch is the one `Dense::at` gives,
-    /// to the bit.
+    /// to the bit, in the build `Dense::fill` chooses (AVX2 where the processor has it) and in
+    /// the baseline one.
     #[test]
     fn a_batch_from_the_dense_output_is_each_sample_alone_to_the_bit() {
         let mut s = Dop853::new(&Arenstorf, 1e-9, 1e-9, 0.0, start(), PERIOD);
@@ -111,12 +134,16 @@ mod tests {
                 .collect();
             let mut b = Batch::default();
             d.fill(&times, &mut b);
+            // The baseline build's loops, whichever build `fill` chose on this processor.
+            let mut baseline = Batch::default();
+            d.fill_rows(&times, &mut baseline);
             assert_eq!(b.len(), n);
             for (j, &t) in times.iter().enumerate() {
                 assert_eq!(b.times()[j], t);
                 let alone = d.at(t);
                 for i in 0..4 {
                     assert_eq!(b.component(i)[j].to_bits(), alone[i].to_bits());
+                    assert_eq!(baseline.component(i)[j].to_bits(), alone[i].to_bits());
                 }
                 assert_eq!(b.state(j), alone);
             }

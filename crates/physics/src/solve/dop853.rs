@@ -21,7 +21,7 @@
 //! $h / \max(1/6, \min(1/0.333, \mathrm{err}^{1/8} / 0.9))$; after a rejection the step may not
 //! grow. The first step is Hairer's guess from $f(y_0)$ and one explicit Euler step.
 
-use super::batch::{Batch, BATCH};
+pub(super) use super::dense::Dense;
 use super::tableau::*;
 use super::{Dynamics, State, Stats};
 
@@ -80,61 +80,6 @@ fn combine<const N: usize, const M: usize>(
         out[i] += h * s;
     }
     out
-}
-
-/// The dense output of one accepted step: a polynomial of degree 7 in
-/// $\theta = (t - t_{\mathrm{old}})/h$ (Hairer's `contd8`).
-#[derive(Debug, Clone)]
-pub(super) struct Dense<const N: usize> {
-    t_old: f64,
-    h: f64,
-    r: [State<N>; 8],
-}
-
-impl<const N: usize> Dense<N> {
-    /// The interpolated state at `t` (meant for `t` within the step).
-    pub(super) fn at(&self, t: f64) -> State<N> {
-        let s = (t - self.t_old) / self.h;
-        let s1 = 1.0 - s;
-        let r = &self.r;
-        // Horner's scheme in s and 1 - s alternately (Hairer's `contd8`), on whole states so
-        // that the components are evaluated side by side.
-        let mut p = r[6] + r[7] * s;
-        p = r[5] + p * s1;
-        p = r[4] + p * s;
-        p = r[3] + p * s1;
-        p = r[2] + p * s;
-        p = r[1] + p * s1;
-        r[0] + p * s
-    }
-
-    /// The interpolated states at `times` (at most [`BATCH`], within the step) written into
-    /// `batch`, each to the bit the state [`Dense::at`] gives: the same Horner scheme, one
-    /// component at a time over all the rows, so that the rows are evaluated side by side.
-    pub(super) fn fill(&self, times: &[f64], batch: &mut Batch<N>) {
-        let n = times.len();
-        let mut s = [0.0; BATCH];
-        for (s, t) in s.iter_mut().zip(times) {
-            *s = (t - self.t_old) / self.h;
-        }
-        batch.set_times(times);
-        let r = &self.r;
-        for (i, out) in batch.components_mut().iter_mut().enumerate() {
-            let c = [
-                r[0][i], r[1][i], r[2][i], r[3][i], r[4][i], r[5][i], r[6][i], r[7][i],
-            ];
-            for (y, &s) in out[..n].iter_mut().zip(&s[..n]) {
-                let s1 = 1.0 - s;
-                let mut p = c[6] + c[7] * s;
-                p = c[5] + p * s1;
-                p = c[4] + p * s;
-                p = c[3] + p * s1;
-                p = c[2] + p * s;
-                p = c[1] + p * s1;
-                *y = c[0] + p * s;
-            }
-        }
-    }
 }
 
 /// The DOP853 integrator's state between steps.

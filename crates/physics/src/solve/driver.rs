@@ -109,16 +109,18 @@ impl<'s, const N: usize> Sampler<'s, N> {
         };
         let mut times = [0.0; BATCH];
         loop {
-            let mut n = 0;
-            while n < BATCH {
-                let t = grid_time(self.origin, self.dt, self.next);
-                if t > t_b || t >= guard {
-                    break;
-                }
-                times[n] = t;
-                n += 1;
-                self.next += 1;
+            // The next BATCH times of the grid at once, then those of this step, which come
+            // first: the grid's times rise with their index and the test is monotone.
+            let base = (self.next as i64) as f64;
+            for (k, t) in times.iter_mut().enumerate() {
+                // (next + k) as a double, exactly: both are integers below 2^53.
+                *t = self.origin + self.dt * (base + k as f64);
             }
+            let n = times
+                .iter()
+                .map(|&t| usize::from(!(t > t_b || t >= guard)))
+                .sum::<usize>();
+            self.next += n as u64;
             if n == 0 {
                 return;
             }

@@ -21,6 +21,7 @@
 
 pub mod arenstorf;
 mod batch;
+mod dense;
 #[cfg(test)]
 mod dense_error;
 mod dop853;
@@ -31,7 +32,7 @@ mod settings;
 mod tableau;
 mod upstream;
 
-pub use batch::{Batch, BatchSink, BATCH};
+pub use batch::{Batch, BatchSink, BATCH, LANES};
 pub use outcome::{Ending, Solution, Stats};
 pub use projection::{onto_level, Projection};
 pub use settings::{Method, Settings, SettingsError};
