@@ -6,25 +6,22 @@
 //! reference heading $\Phi(t)$ (eq 79 integrated, [`fit::phase`](crate::fit::eq84_85::phase)), the record is
 //! cut into **blocks of a whole, even number $N \ge 2$ of reference turns** (as many as fit in
 //! 0.1 s), from $\Phi_a$ to $\Phi_a + 2\pi N$, and each harmonic is demodulated with the samples
-//! weighted by the heading they span, $d\Phi = \Omega\,dt$, and by the block's window $\tau$
-//! ([`block_window`](crate::sound_analysis::block_window)):
-//! $$z_h = \sum_j \tau(\Phi(t_j) - \Phi_a)\,\Omega(t_j)\,x_j\,e^{-ih\Phi(t_j)}\,\Delta t \approx
-//!   \int_{\Phi_a}^{\Phi_a + 2\pi N} \tau\,x\,e^{-ih\Phi}\,d\Phi.$$
+//! weighted by the heading they span, $d\Phi = \Omega\,dt$:
+//! $$z_h = \sum_j \Omega(t_j)\,x_j\,e^{-ih\Phi(t_j)}\,\Delta t \approx
+//!   \int_{\Phi_a}^{\Phi_a + 2\pi N} x\,e^{-ih\Phi}\,d\Phi.$$
 //! In the heading the sound is a sum of lines at whole numbers of cycles per turn, and the
-//! window's transform, and its first moment's, vanish at every whole offset, so the other
+//! transform of a window of $N$ whole turns vanishes at every whole offset, so the other
 //! harmonics and the negative-frequency images leak nothing into $z_h$ however fast the pitch
-//! rises, nor where the level changes linearly across the block. $\arg z_h = h(\psi - \Phi) + $
-//! const, averaged over the block, is referred to its window-weighted centroid time $\bar t$; as
-//! the reference converges to the heading
+//! rises. $\arg z_h = h(\psi - \Phi) + $ const, averaged over the block, is referred to its
+//! weighted centroid time $\bar t$; as the reference converges to the heading
 //! ([`phase_fit`](crate::sound_analysis::phase_fit)), $\psi - \Phi$ tends to a constant and the centroid's
 //! approximation to exact.
 //!
-//! **Noise.** The same sums with a flat window at the half-way lines $(h \pm \tfrac12)$ cycles
-//! per turn fall between the harmonics ($N/2$ bins from each, a whole number, so again nothing
-//! leaks): they hold only noise. Their mean power per unit $\sum_j w_j^2$ ($w_j = \Omega(t_j)$),
-//! pooled over the block and its two neighbours on each side, times $\sum_j (\tau_j w_j)^2$ gives
-//! the noise's power $\nu_h$ in $z_h$, and $\mathrm{Var}(\arg z_h) = \nu_h / (2|z_h|^2)$ (high
-//! signal-to-noise). A block's signal-to-noise is its fundamental's through a flat window.
+//! **Noise.** The same sums at the half-way lines $(h \pm \tfrac12)$ cycles per turn fall
+//! between the harmonics ($N/2$ bins from each, a whole number, so again nothing leaks): they hold
+//! only noise. Their mean power per unit $\sum_j w_j^2$ ($w_j = \Omega(t_j)$), pooled over the
+//! block and its two neighbours on each side, gives the noise's power $\nu_h$ in $z_h$, and
+//! $\mathrm{Var}(\arg z_h) = \nu_h / (2|z_h|^2)$ (high signal-to-noise).
 //!
 //! **Harmonics combined.** Each harmonic gives the heading's offset $(\arg z_h - c_h)/h$, $c_h$
 //! its constant phase (the circular mean over the record of $\arg z_h - h\arg z_1$); the block's
@@ -32,7 +29,6 @@
 //! whose fundamental stands less than `min_snr` times above its noise are left out.
 
 use crate::fit::eq84_85::phase;
-use crate::sound_analysis::block_window::weight as window;
 use nalgebra::SVector;
 use rayon::prelude::*;
 use rustfft::num_complex::Complex;
@@ -108,27 +104,23 @@ pub struct Samples<'a> {
     pub dt: f64,
 }
 
-/// One block's sums: the harmonics' $z_h$ through the block's window, the fundamental's through
-/// a flat one (its signal-to-noise), the noise probes' mean power per $\sum w^2$ (flat), the
-/// windowed centroid, $\sum w^2$ and the windowed $\sum (\tau w)^2$.
+/// One block's sums: the harmonics' $z_h$, the noise probes' mean power per $\sum w^2$, the
+/// centroid and $\sum w^2$.
 struct Sums {
     z: [Complex<f64>; HARMONICS],
-    z1_flat: Complex<f64>,
     noise: [f64; HARMONICS],
     t: f64,
     w2: f64,
-    tw2: f64,
 }
 
 /// Demodulates samples `x` (the first at `t_start`, interval `dt`) over the block
-/// $[t_a, t_b]$ of `turns` whole reference turns, which starts at the reference heading
-/// `phi_a`.
+/// $[t_a, t_b]$ of whole reference turns.
 fn sums(
     x: &[f64],
     t_start: f64,
     dt: f64,
     p: &SVector<f64, 3>,
-    (ta, tb, phi_a, turns): (f64, f64, f64, usize),
+    (ta, tb): (f64, f64),
     harmonics: usize,
 ) -> Sums {
     let j0 = ((ta - t_start) / dt).ceil().max(0.0) as usize;
@@ -137,8 +129,7 @@ fn sums(
     let mut probe = [0.0f64; HARMONICS];
     let mut lo = [Complex::new(0.0, 0.0); HARMONICS];
     let mut hi = [Complex::new(0.0, 0.0); HARMONICS];
-    let mut z1_flat = Complex::new(0.0, 0.0);
-    let (mut sw, mut swt, mut w2, mut tw2) = (0.0, 0.0, 0.0, 0.0);
+    let (mut sw, mut swt, mut w2) = (0.0, 0.0, 0.0);
     let mut e = [Complex::new(0.0, 0.0); 2 * HARMONICS + 2];
     let mut heading = Hermite::new(p, t_start, dt, j0, j1);
     for (j, &xj) in x.iter().enumerate().take(j1 + 1).skip(j0) {
@@ -152,29 +143,24 @@ fn sums(
         for k in 2..=2 * harmonics + 1 {
             e[k] = e[k - 1] * e[1];
         }
-        let tw = window(phi - phi_a, turns) * w;
-        let (wx, twx) = (w * xj, tw * xj);
+        let wx = w * xj;
         for h in 0..harmonics {
-            z[h] += e[2 * (h + 1)] * twx;
+            z[h] += e[2 * (h + 1)] * wx;
             lo[h] += e[2 * h + 1] * wx;
             hi[h] += e[2 * h + 3] * wx;
         }
-        z1_flat += e[2] * wx;
-        sw += tw;
-        swt += tw * t;
+        sw += w;
+        swt += w * t;
         w2 += w * w;
-        tw2 += tw * tw;
     }
     for h in 0..harmonics {
         probe[h] = 0.5 * (lo[h].norm_sqr() + hi[h].norm_sqr()) / w2.max(f64::MIN_POSITIVE);
     }
     Sums {
         z,
-        z1_flat,
         noise: probe,
         t: if sw > 0.0 { swt / sw } else { 0.5 * (ta + tb) },
         w2,
-        tw2,
     }
 }
 
@@ -272,7 +258,7 @@ pub fn blocks(
     let fs = 1.0 / dt;
     // Each block's start, end, turns and harmonics; then their sums, independent of each other,
     // on rayon's threads (the order kept, so the result does not depend on them).
-    let mut cuts: Vec<(f64, f64, f64, usize, usize)> = Vec::new();
+    let mut cuts: Vec<(f64, f64, usize, usize)> = Vec::new();
     let mut ta = first;
     while ta < last {
         let (phi_a, omega, _) = phase(p, ta);
@@ -292,13 +278,13 @@ pub fn blocks(
         if harmonics == 0 {
             break;
         }
-        cuts.push((ta, tb, phi_a, turns, harmonics));
+        cuts.push((ta, tb, turns, harmonics));
         ta = tb;
     }
     let raw: Vec<(f64, f64, usize, Sums, usize)> = cuts
         .into_par_iter()
-        .map(|(ta, tb, phi_a, turns, harmonics)| {
-            let sm = sums(x, t_start, dt, p, (ta, tb, phi_a, turns), harmonics);
+        .map(|(ta, tb, turns, harmonics)| {
+            let sm = sums(x, t_start, dt, p, (ta, tb), harmonics);
             (ta, tb, turns, sm, harmonics)
         })
         .collect();
@@ -333,11 +319,11 @@ fn combine(
         let mut v = Vec::with_capacity(r.4);
         for h in 0..r.4 {
             let zh = r.3.z[h] * rot.powu(h as u32 + 1);
-            let nu = pooled(k, h) * r.3.tw2;
+            let nu = pooled(k, h) * r.3.w2;
             let var = nu / (2.0 * zh.norm_sqr()).max(f64::MIN_POSITIVE);
             v.push((zh.arg(), var));
         }
-        let snr = r.3.z1_flat.norm_sqr() / (pooled(k, 0) * r.3.w2).max(f64::MIN_POSITIVE);
+        let snr = r.3.z[0].norm_sqr() / (pooled(k, 0) * r.3.w2).max(f64::MIN_POSITIVE);
         keep.push(snr);
         per.push(v);
     }
