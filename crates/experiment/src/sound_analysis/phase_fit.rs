@@ -21,7 +21,12 @@
 //! $t_0$'s ([`high_pass`](crate::sound_analysis::high_pass)). The lead is taken out only where
 //! the record shows a high-pass and the correction keeps the turns counted (the rule and its
 //! reason: [`high_pass::CORNER_SIGMAS`](crate::sound_analysis::high_pass::CORNER_SIGMAS) and
-//! [`high_pass::MAX_TURN_CHANGE`](crate::sound_analysis::high_pass::MAX_TURN_CHANGE)).
+//! [`high_pass::MAX_TURN_CHANGE`](crate::sound_analysis::high_pass::MAX_TURN_CHANGE)). A corner
+//! read but not shown is not shown absent either: the heading is fitted as heard, and the
+//! largest shift of $\beta$ and of $t_0$ that taking out the lead of $\omega_c$ or of $\omega_c
+//! \pm \sigma_{\omega_c}$ would make (where it keeps the turns counted) is stated as the
+//! high-pass's uncertainty, so that the interval holds the truth whether the phone filtered the
+//! sound or not.
 //!
 //! **The law's own error.** The heading is refitted on the later half of the blocks; where
 //! $\beta$ or $t_0$ moves by more than [`DRIFT_SIGMAS`](crate::fit::law_stability::DRIFT_SIGMAS) of the half's uncertainty, the shift is
@@ -106,8 +111,10 @@ pub struct PhaseFit {
     /// Why the corner read is not taken out of the heading (`None` when it is, or when no
     /// corner was read).
     pub corner_not_used: Option<String>,
-    /// What the corner's uncertainty makes of $\beta$'s and $t_0$'s (s): half the difference of
-    /// the fits at $\omega_c \pm \sigma_{\omega_c}$; 0 without a corner.
+    /// What the corner's uncertainty makes of $\beta$'s and $t_0$'s (s): where its lead is taken
+    /// out, half the difference of the fits at $\omega_c \pm \sigma_{\omega_c}$; where a corner is
+    /// read but the record does not show it, the largest shift its lead would make (the
+    /// module's documentation); 0 without a corner.
     pub beta_high_pass: f64,
     /// (s)
     pub t0_high_pass: f64,
@@ -200,6 +207,13 @@ pub fn fit_phase(
                 let (lo, _) = fit_blocks(&bl, &p, shift, &leads(c.omega_c - c.sigma))?;
                 fit.beta_high_pass = 0.5 * (hi.beta - lo.beta).abs();
                 fit.t0_high_pass = 0.5 * (hi.t0 - lo.t0).abs();
+            } else if let Some(c) = read.filter(|c| c.why_not_used().is_some()) {
+                (fit.beta_high_pass, fit.t0_high_pass) = unshown_lead(&bl, &p, shift, &fit, c);
+                if let Some(why) = fit.corner_not_used.as_mut() {
+                    why.push_str(
+                        "; the shift its lead would make is stated as the corner's uncertainty",
+                    );
+                }
             }
             fit.law = later_half(&bl, &p, shift, &lead, &fit);
         }
@@ -209,6 +223,31 @@ pub fn fit_phase(
         result = Some(fit);
     }
     result.ok_or_else(|| FitError::Numerics("no round".into()))
+}
+
+/// What the lead of corner `c`, read from the harmonics but not shown by the record
+/// ([`Corner::why_not_used`]), would move the fit `plain` (fitted without it) by: the largest
+/// shift of $\beta$ and of $t_0$ (s) among the fits with the lead of $\omega_c$ and of
+/// $\omega_c \pm \sigma_{\omega_c}$ (those above zero) taken out, each kept only where it keeps
+/// the turns counted ([`MAX_TURN_CHANGE`]). A corner not shown is not shown absent either: the
+/// record cannot tell a high-pass whose lead moves the heading by this much from none, so the
+/// shift is stated as an uncertainty of the fit, which holds the truth whichever it is.
+fn unshown_lead(
+    bl: &[Block],
+    p: &SVector<f64, 3>,
+    shift: f64,
+    plain: &PhaseFit,
+    c: Corner,
+) -> (f64, f64) {
+    let omega = rates(bl, p);
+    [c.omega_c - c.sigma, c.omega_c, c.omega_c + c.sigma]
+        .into_iter()
+        .filter(|wc| wc.is_finite() && *wc > 0.0)
+        .filter_map(|wc| fit_blocks(bl, p, shift, &block_leads(bl, &omega, wc)).ok())
+        .filter(|(f, _)| (f.turns - plain.turns).abs() < MAX_TURN_CHANGE)
+        .map(|(f, _)| ((f.beta - plain.beta).abs(), (f.t0 - plain.t0).abs()))
+        .filter(|(b, t)| b.is_finite() && t.is_finite())
+        .fold((0.0, 0.0), |(b, t), (fb, ft)| (b.max(fb), t.max(ft)))
 }
 
 /// The heading refitted on the later half of the blocks `bl` (demodulated against `p` plus

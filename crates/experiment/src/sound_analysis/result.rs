@@ -50,8 +50,10 @@ use serde::Serialize;
 pub struct Terms {
     /// The fit's own standard uncertainty.
     pub fit: f64,
-    /// What the uncertainty of the high-pass's corner, whose lead the fit takes out, makes of
-    /// the parameter: half the difference of the fits at the corner $\pm$ its sigma.
+    /// What the uncertainty of the high-pass's corner makes of the parameter: where the fit
+    /// takes out its lead, half the difference of the fits at the corner $\pm$ its sigma; where
+    /// a corner is read but the record does not show it, the largest shift its lead would make
+    /// ([`PhaseFit::beta_high_pass`]).
     pub high_pass: f64,
     /// The law's drift over the record: the later half's shift where it exceeds
     /// [`DRIFT_SIGMAS`] of the half's own uncertainty, else 0.
