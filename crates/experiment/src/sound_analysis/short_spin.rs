@@ -21,11 +21,11 @@
 //! $n - 4$ degrees of freedom, few for a short spin, so the fit's sigmas are widened by
 //! Student's $t_{0.975}(n-4)/z_{0.975}$ ([`student_975`]), and the 95 % interval
 //! $\pm 1.96\,\sigma$ is Student's. Where the harmonics' phases read a high-pass's corner
-//! that the fit does not take out (the record does not show it clear of no high-pass,
-//! [`Corner::why_not_used`](crate::sound_analysis::high_pass::Corner::why_not_used)), the
-//! shift its lead would make ([`unused_lead_shift`], to first order) is added to each
-//! parameter's sigma in quadrature: a short spin's heading is followed over few turns at rates
-//! far below a phone's corner, where the lead it leaves in moves $t_0$ by milliseconds.
+//! that the fit does not take out, the shift its lead would make is stated as the corner's
+//! uncertainty by the phase fit itself, as for a long spin
+//! ([`PhaseFit::t0_high_pass`](crate::sound_analysis::phase_fit::PhaseFit::t0_high_pass)): a
+//! short spin's heading is followed over few turns at rates far below a phone's corner, where
+//! the lead it leaves in moves $t_0$ by milliseconds.
 //!
 //! **When it is the result.** The phase's fit stands in for the track's only where it holds on
 //! its own evidence: it is plausible ([`SoundAnalysis::phase_implausible`]: $t_0$ after the
@@ -40,19 +40,17 @@
 //! its blocks. Otherwise the track's refusal stands, with why the phase did
 //! not stand in.
 
-use crate::fit::eq84_85::phase;
 use crate::fit::law_choice::compare;
 use crate::fit::law_fit::LawFit;
 use crate::fit::least_squares::Problem;
 use crate::fit::plausibility::{Evidence, Plausibility, Points, SOUND_MIN_FRAMES};
 use crate::sound_analysis::analysis::{SoundAnalysis, TrackFit, TrackLaw};
-use crate::sound_analysis::high_pass::{block_leads, rates};
 use crate::sound_analysis::phase_blocks::{blocks, BlockSettings, Samples};
 use crate::sound_analysis::phase_fit::{fit_phase, PhaseFit};
 use crate::sound_analysis::refusal::RISES;
 use crate::sound_analysis::track::FrequencyTrack;
 use crate::trace::Trace;
-use nalgebra::{SMatrix, SVector};
+use nalgebra::SVector;
 use std::f64::consts::TAU;
 
 /// The grid's step in $\beta$.
@@ -192,49 +190,9 @@ pub fn seed(
     Some((p, (p[1] - last) * (fine_ratio - 1.0)))
 }
 
-/// What taking out the lead of a high-pass at `wc` (rad/s) would move eq 79's parameters by, to
-/// first order: with the blocks $k$ of the fitted law `ph` (from `first`), their heading's
-/// gradient $J_k = (\partial\Phi/\partial\beta, \partial\Phi/\partial t_0,
-/// \partial\Phi/\partial\ln C, 1)$, weights $W_k = 1/\sigma_k^2$ and leads $\ell_k$
-/// ([`block_leads`]),
-/// $$\Delta p = (J^{\mathsf T}WJ)^{-1} J^{\mathsf T}W\,\ell;$$
-/// its first three components' magnitudes, `None` where the blocks do not determine it.
-fn unused_lead_shift(
-    rec: &Samples<'_>,
-    ph: &PhaseFit,
-    first: f64,
-    wc: f64,
-) -> Option<SVector<f64, 3>> {
-    let law = SVector::<f64, 3>::new(ph.beta, ph.t0, ph.ln_c);
-    let end = ph.t0 - (5.0 * ph.t0_sigma).max(1e-3);
-    let bl = blocks(
-        rec,
-        &law,
-        0.0,
-        (first, end),
-        false,
-        &BlockSettings::default(),
-    );
-    if bl.len() < 4 {
-        return None;
-    }
-    let lead = block_leads(&bl, &rates(&bl, &law), wc);
-    let (mut a, mut r) = (SMatrix::<f64, 4, 4>::zeros(), SVector::<f64, 4>::zeros());
-    for (b, l) in bl.iter().zip(&lead) {
-        let g = phase(&law, b.t).2;
-        let j = SVector::<f64, 4>::new(g[0], g[1], g[2], 1.0);
-        let w = 1.0 / (b.sigma * b.sigma);
-        a += w * j * j.transpose();
-        r += w * l * j;
-    }
-    let d = a.try_inverse()? * r;
-    let out = SVector::<f64, 3>::new(d[0].abs(), d[1].abs(), d[2].abs());
-    out.iter().all(|v| v.is_finite()).then_some(out)
-}
-
 /// The heading fitted to the phase of `rec` from `first` (s), seeded at `p0` with $t_0$'s grid
 /// step `step` (s), to at least [`MIN_SHORT_BLOCKS`] blocks, its sigmas widened by Student's
-/// $t$ and by the shift a corner's lead left in would make (see the module's documentation).
+/// $t$ (see the module's documentation).
 fn short_phase(
     rec: &Samples<'_>,
     track: &FrequencyTrack,
@@ -263,14 +221,6 @@ fn short_phase(
         &mut ph.parameters.ln_c_sigma,
     ] {
         *v *= widen;
-    }
-    // A corner read but not taken out: what its lead would move is part of the uncertainty.
-    if let (Some((f, _)), Some(_)) = (ph.corner, &ph.corner_not_used) {
-        if let Some(d) = unused_lead_shift(rec, &ph, first, TAU * f) {
-            ph.parameters.beta_sigma = ph.beta_sigma.hypot(d[0]);
-            ph.parameters.t0_sigma = ph.t0_sigma.hypot(d[1]);
-            ph.parameters.ln_c_sigma = ph.ln_c_sigma.hypot(d[2]);
-        }
     }
     Ok(ph)
 }
