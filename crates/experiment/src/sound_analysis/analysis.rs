@@ -1,139 +1,30 @@
 //! The analysis of a sound recording: its pitch track ([`track`](crate::sound_analysis::track)),
 //! eq 79 fitted to it, the model choice and the spin-down checks.
 //!
-//! Each frame $[a_k, b_k]$ gives $\Omega_k$, the mean of the rate over the frame weighted by the
-//! window's energy $w^2$, $w$ the Hann window (a spectrum's centroid is the instantaneous
-//! frequency's mean weighted by the windowed signal's energy); the law's own weighted mean
-//! $$\bar\Omega_k = \frac{\int_{a_k}^{b_k} w^2(t)\,\Omega(t)\,dt}{\int_{a_k}^{b_k} w^2(t)\,dt}, \qquad
-//!   \Omega(t) = \left(\frac{C}{t_0 - t}\right)^{1/(\beta+2)} \quad (79),$$
-//! (32 midpoints) is fitted to it, so the rate's change within a frame costs no bias.
-//! Frames do not overlap and their errors are taken as independent, each with its own
-//! variance $\sigma_k^2$ from the track (noise and the pitch's motion) as the weight; the
-//! covariance is $s^2 (J^{\mathsf T}J)^{-1}$ of the whitened problem with $s^2$ the reduced
-//! $\chi^2$ ([`least_squares`](crate::fit::least_squares), [`Scale::Unknown`]), so a
-//! common misstatement of the $\sigma_k$ is measured by the residuals.
+//! Eq 79 is fitted to the track as [`track_law`](crate::sound_analysis::track_law) states;
+//! what the analysis holds is [`SoundAnalysis`](crate::sound_analysis::analysed::SoundAnalysis).
 
 use crate::error::ExperimentError;
-use crate::fit::band::Row;
 use crate::fit::eq84_85::{start84, FixedBeta};
-use crate::fit::law_choice::{compare, Comparison};
+use crate::fit::law_choice::compare;
 use crate::fit::law_fit::LawFit;
-use crate::fit::least_squares::{solve, FitError, Problem, Scale};
-use crate::fit::plausibility::{Evidence, Plausibility, Points, Verdict, SOUND_MIN_FRAMES};
+use crate::fit::least_squares::{solve, FitError, Scale};
+use crate::fit::plausibility::{Evidence, Plausibility, Points, SOUND_MIN_FRAMES};
 use crate::formats::decimate::to_band;
+pub use crate::sound_analysis::analysed::SoundAnalysis;
 use crate::sound_analysis::phase_blocks::{BlockSettings, Samples};
 use crate::sound_analysis::phase_fit::{fit_phase, PhaseFit};
 use crate::sound_analysis::refusal::{what_was_heard, SoundRefusal};
 use crate::sound_analysis::short_spin;
 use crate::sound_analysis::track::{frequency_track, FrequencyTrack, TrackSettings};
+pub use crate::sound_analysis::track_law::TrackFit;
+pub(crate) use crate::sound_analysis::track_law::TrackLaw;
 use crate::sound_analysis::turn_count::TurnCount;
-use crate::trace::{Trace, Truth};
+use crate::trace::Trace;
 use nalgebra::{SMatrix, SVector};
 use physics::budget::Work;
-use serde::Serialize;
 use std::f64::consts::PI;
 use std::fmt;
-
-/// Midpoints per frame of the law's weighted mean.
-const MIDPOINTS: usize = 32;
-
-/// Eq 79's frame means weighted by the Hann window's square.
-pub(crate) struct TrackLaw<'a> {
-    /// Frame starts and ends (s), and the frames' rates (rad/s).
-    pub a: &'a [f64],
-    /// (see `a`)
-    pub b: &'a [f64],
-    /// (see `a`)
-    pub y: &'a [f64],
-}
-
-impl Problem<3> for TrackLaw<'_> {
-    fn y(&self) -> &[f64] {
-        self.y
-    }
-    fn model(&self, p: &SVector<f64, 3>, i: usize) -> (f64, SVector<f64, 3>) {
-        let q = 1.0 / (p[0] + 2.0);
-        let (mut sw, mut m) = (0.0, 0.0);
-        let mut g = SVector::<f64, 3>::zeros();
-        for j in 0..MIDPOINTS {
-            let u = (j as f64 + 0.5) / MIDPOINTS as f64;
-            let w = (PI * u).sin().powi(4);
-            let t = self.a[i] + u * (self.b[i] - self.a[i]);
-            let ln_tau = (p[1] - t).ln();
-            let om = (q * (p[2] - ln_tau)).exp();
-            sw += w;
-            m += w * om;
-            g += w * SVector::<f64, 3>::new(
-                -q * q * om * (p[2] - ln_tau),
-                -q * om / (p[1] - t),
-                q * om,
-            );
-        }
-        (m / sw, g / sw)
-    }
-    fn rows(&self, _p: &SVector<f64, 3>) -> Vec<Row> {
-        (0..self.y.len())
-            .map(|i| Row {
-                start: i,
-                coef: vec![1.0],
-            })
-            .collect()
-    }
-    fn admissible(&self, p: &SVector<f64, 3>) -> bool {
-        let bmax = self.b.iter().copied().fold(f64::MIN, f64::max);
-        p.iter().all(|v| v.is_finite()) && p[0] > -0.9 && p[0] < 50.0 && p[1] > bmax
-    }
-}
-
-/// Eq 79 fitted to a frequency track.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct TrackFit {
-    /// Eq 79's $\beta$, $t_0$ and $\ln C$ with their uncertainties, read as this fit's own
-    /// fields.
-    #[serde(flatten)]
-    pub parameters: LawFit,
-    /// The rms residual (rad/s).
-    pub rms: f64,
-    /// The reduced $\chi^2$ of the weighted residuals.
-    pub chi2_dof: f64,
-    /// Frames fitted.
-    pub n: usize,
-    /// The law's frame means (rad/s), one per track point.
-    pub model: Vec<f64>,
-}
-
-/// A sound recording analysed.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct SoundAnalysis {
-    /// The recording.
-    pub source: String,
-    /// What the file is (format, rate, channels, length), when it was read from a file.
-    pub recording: Option<crate::formats::channel::RecordingInfo>,
-    /// The track.
-    pub track: FrequencyTrack,
-    /// Eq 79 fitted to the pitch track.
-    pub fit: TrackFit,
-    /// Eq 79's heading fitted to the sound's phase, started from `fit` (the analysis's result).
-    pub phase: Option<PhaseFit>,
-    /// Why the phase was not fitted, when it was not.
-    pub phase_refused: Option<String>,
-    /// The turns the phase's fit counts against the pitch track's, when the phase was fitted.
-    pub turn_count: Option<TurnCount>,
-    /// Model choice.
-    pub models: Comparison,
-    /// The spin-down checks.
-    pub verdict: Verdict,
-    /// The rate's rise over the phase's blocks, where the track's frames rose too little and the
-    /// spin-down was judged on the phase instead ([`rise`](crate::sound_analysis::rise)).
-    pub rise_on_phase: Option<f64>,
-    /// Where the track held too few frames of the line for its own fit and the phase's fit of a
-    /// short spin is the result ([`short_spin`](crate::sound_analysis::short_spin)): the track's
-    /// refusal it stands in for.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub short_spin: Option<String>,
-    /// The truth, for synthetic recordings.
-    pub truth: Option<Truth>,
-}
 
 /// Analyses a sound recording.
 pub fn analyze_sound(
@@ -565,5 +456,3 @@ pub fn write_sound_analysis(
     }
     Ok(out)
 }
-
-crate::fit::law_fit::reads_law_fit!(TrackFit);

@@ -5,9 +5,11 @@
 //! with a phone's high-pass read from the harmonics ([`high_pass`]), the turns it counts checked
 //! against the track's ([`turn_count`]), which fit is the result and what uncertainty it states
 //! ([`result`]), the rise a spin-down is judged on ([`rise`]), a short spin's fit from its phase
-//! where the track holds too few frames ([`short_spin`]), and the whole analysis ([`analysis`])
+//! where the track holds too few frames ([`short_spin`]), eq 79 fitted to the track's frames
+//! ([`track_law`]), and the whole analysis ([`analysis`], what it holds [`analysed`])
 //! or its refusal with the track it had made ([`refusal`]).
 
+pub mod analysed;
 pub mod analysis;
 pub mod high_pass;
 pub mod mains;
@@ -21,4 +23,5 @@ pub mod short_spin;
 pub mod spectrogram;
 pub mod spectrum;
 pub mod track;
+pub mod track_law;
 pub mod turn_count;

@@ -41,7 +41,7 @@
 //! with 2 % hum, beta right to 2e-4 with a sigma of 1.2e-4 would be stated as +- 0.0095).
 
 use crate::fit::law_stability::DRIFT_SIGMAS;
-use crate::sound_analysis::analysis::SoundAnalysis;
+use crate::sound_analysis::analysed::SoundAnalysis;
 use crate::sound_analysis::phase_fit::PhaseFit;
 use serde::Serialize;
 

@@ -20,7 +20,7 @@
 use crate::error::ExperimentError;
 use crate::fit::eq84_85::phase;
 use crate::fit::plausibility::Plausibility;
-use crate::sound_analysis::analysis::SoundAnalysis;
+use crate::sound_analysis::analysed::SoundAnalysis;
 use crate::sound_analysis::refusal::SoundRefusal;
 use nalgebra::SVector;
 
