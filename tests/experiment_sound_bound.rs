@@ -1,27 +1,15 @@
 //! The Cramér-Rao bound on beta from a simulated sound, computed from the simulator's own
-//! signal and noise, independently of the analysis; against the analysis's sigma.
-//!
-//! The sound is $x_j = A g(t_j) \sum_h a_h \sin(h\psi(t_j) + \phi_h) + n_j$ with eq 79's heading
-//! $\psi = -C^q\tau^{1-q}/(1-q)$, $q = 1/(\beta+2)$, $\tau = t_0 - t$. Each harmonic is a
-//! narrow line at $h\Omega/2\pi$, so locally the noise is white with the variance per sample
-//! $\sigma^2_{eff}(f, t) = \sigma^2 + \sigma_r^2(t) + S_{room}(f)$: the microphone's white noise,
-//! the rattle's (white, $\sigma_r = r A e^{-\tau/30\,ms}$ in the last 0.2 s) and the room's
-//! one-pole low-passed noise at the line's frequency, $S_{room}(f) = b^2/|1 - \rho e^{-2\pi i f
-//! \Delta t}|^2$. The Fisher information of $\theta = (\beta, t_0, \ln C, \phi_1..\phi_4)$ is
-//! $$F_{ab} = \sum_j \sum_h \frac{(A g a_h)^2}{2\sigma^2_{eff}} \,
-//!   \frac{\partial(h\psi + \phi_h)}{\partial\theta_a}\frac{\partial(h\psi + \phi_h)}{\partial\theta_b},
-//!   \qquad \frac{\partial\psi}{\partial\theta} = \psi\,\frac{\partial E}{\partial\theta},\
-//!   E = q\ln C + (1-q)\ln\tau - \ln(1-q),$$
-//! (the amplitudes' parameters are orthogonal to the phases' for lines many cycles long), and
-//! the bound is $\sigma_\beta \ge \sqrt{(F^{-1})_{\beta\beta}}$.
+//! signal and noise, independently of the analysis
+//! (`experiment::synthetic::bound::SoundInformation`, whose documentation states the model and
+//! what it leaves out); against the analysis's sigma.
 
 use experiment::plausibility::Plausibility;
 use experiment::sound::Voice;
+use experiment::synthetic::bound::{cramer_rao, SoundInformation};
 use experiment::{
     analyze, analyze_sound, law_sound, law_trace, AnalysisSettings, Artifacts, Law, LightModel,
     Microphone, TrackSettings,
 };
-use nalgebra::SMatrix;
 use physics::Disk;
 use std::f64::consts::TAU;
 
@@ -45,77 +33,13 @@ fn mic(noise: f64, seed: u64) -> Microphone {
     }
 }
 
-/// The Cramér-Rao bound on beta for the sound of `law` recorded by `m` (see the module's
-/// documentation), from the samples up to `before` seconds before $t_0$.
+/// The Cramér-Rao bound on beta for the sound of `law` recorded by `m`, from the samples up
+/// to `before` seconds before $t_0$.
 fn bound_beta(law: &Law, m: &Microphone, before: f64) -> f64 {
-    let fs = f64::from(m.sample_rate);
-    let dt = 1.0 / fs;
-    let t0 = m.end_at;
-    let v = &m.voice;
-    let heading = |j: usize| {
-        let tau = t0 - j as f64 * dt;
-        if tau > 0.0 {
-            law.heading(tau)
-        } else {
-            f64::NAN
-        }
-    };
-    // The level's reference, as the simulator takes it: the largest rate by central differences.
-    let top = (1..m.samples - 1)
-        .map(|j| (heading(j + 1) - heading(j - 1)) / (2.0 * dt))
-        .filter(|w| w.is_finite())
-        .map(f64::abs)
-        .fold(0.0, f64::max);
-    let lp = 1.0 - (-TAU * 300.0 * dt).exp();
-    let b = lp * v.room * ((2.0 - lp) / lp).sqrt();
-    let rho = 1.0 - lp;
-    let room = |f: f64| {
-        let w = TAU * f * dt;
-        b * b / (1.0 - 2.0 * rho * w.cos() + rho * rho)
-    };
-    let q = 1.0 / (law.beta + 2.0);
-    let ln_c = law.c.ln();
-    let mut fisher = SMatrix::<f64, 7, 7>::zeros();
-    for j in 0..m.samples {
-        let t = j as f64 * dt;
-        let tau = t0 - t;
-        if t < v.lead || tau <= before {
-            continue;
-        }
-        let psi = law.heading(tau);
-        let omega = (law.c / tau).powf(q);
-        let g = (omega / top).powf(v.level_exponent);
-        // dpsi/d(beta, t0, ln C): psi dE/dtheta, dq/dbeta = -q^2.
-        let de_dq = ln_c - tau.ln() + 1.0 / (1.0 - q);
-        let d = [psi * de_dq * (-q * q), psi * (1.0 - q) / tau, psi * q];
-        let rattle = if v.rattle > 0.0 && tau < 0.2 {
-            (v.rattle * m.amplitude * (-tau / 0.03).exp()).powi(2)
-        } else {
-            0.0
-        };
-        for h in 0..4 {
-            let f = (h + 1) as f64 * omega / TAU;
-            if f >= 0.5 * fs {
-                continue;
-            }
-            let a = m.amplitude * g * v.harmonics[h];
-            let w = a * a / (2.0 * (m.noise * m.noise + rattle + room(f)));
-            let mut grad = [0.0; 7];
-            for k in 0..3 {
-                grad[k] = (h + 1) as f64 * d[k];
-            }
-            grad[3 + h] = 1.0;
-            for r in 0..7 {
-                for c in 0..7 {
-                    fisher[(r, c)] += w * grad[r] * grad[c];
-                }
-            }
-        }
-    }
-    let cov = fisher
-        .try_inverse()
-        .expect("the Fisher information is invertible");
-    cov[(0, 0)].sqrt()
+    SoundInformation::of_microphone(law, m, before)
+        .bound()
+        .expect("the sound holds lines within the span")
+        .beta_sigma
 }
 
 /// How long before $t_0$ the disk of `law` leaves the plane (s): eq 79's premise holds while
@@ -148,6 +72,16 @@ fn beta_from_sound_against_its_cramer_rao_bound() {
     let light_last = mic(0.003, 1).end_at - light.window.t_last;
     let light = light.eq84.beta_sigma;
     let bound = bound_beta(&l, &mic(0.003, 1), 0.0);
+    // The bound sums the Fisher information on a grid of cells; summed sample by sample, the
+    // same to 1e-4.
+    let whole = SoundInformation::of_microphone(&l, &mic(0.003, 1), 0.0);
+    let each = cramer_rao(&whole.fisher_per_sample().unwrap())
+        .unwrap()
+        .beta_sigma;
+    assert!(
+        (bound / each - 1.0).abs() < 1e-4,
+        "grid {bound}, per sample {each}"
+    );
     // The phase fit's blocks stop at least 1 ms before its t0.
     let analysed = bound_beta(&l, &mic(0.003, 1), 1e-3);
     let mut sigmas = Vec::new();

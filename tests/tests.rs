@@ -25,6 +25,7 @@ mod experiment_inputs;
 mod experiment_long;
 mod experiment_models;
 mod experiment_phone;
+mod experiment_phone_bound;
 mod experiment_refused;
 mod experiment_scope_csv;
 mod experiment_sound_bound;

@@ -14,6 +14,7 @@
 //! - the Monte Carlo studies of the experiment's analysis, over many simulated records:
 //!   [`coverage`] (do the light's stated intervals hold?), [`sound_coverage`] (the sound's),
 //!   [`phone_coverage`] (the sound's on phones' recordings of real rooms, the realistic set),
+//!   [`phone_bound`] (what those recordings can tell at best, their Cramér-Rao bounds),
 //!   [`coverage_record`] (both as stored for the report), [`law_choice_study`] (how often the
 //!   law choice takes one mechanism for two; stored as the calibration the choice states).
 
@@ -26,6 +27,7 @@ pub mod frequency;
 pub mod lab_frame;
 pub mod law_choice_study;
 pub mod peer;
+pub mod phone_bound;
 pub mod phone_coverage;
 pub mod precision;
 pub mod runs;

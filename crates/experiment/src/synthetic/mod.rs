@@ -3,9 +3,11 @@
 //! side by side in [`mechanisms`]; or eq 79 exactly in [`law`]) seen through the light model
 //! ([`light`], with its [`scope`]) or heard by a microphone ([`sound`]), with what a real
 //! recording adds ([`artifacts`]); a phone's recording of a spin in a room, stereo, with
-//! its filters, made apart from the analysis ([`phone_room`], with [`room_filters`]).
+//! its filters, made apart from the analysis ([`phone_room`], with [`room_filters`]); and what
+//! such a sound can tell at best, its Cramér-Rao bound ([`bound`]).
 
 pub mod artifacts;
+pub mod bound;
 pub mod law;
 pub mod light;
 pub mod mechanism_record;

@@ -9,18 +9,39 @@ use std::f64::consts::TAU;
 /// bilinear-transformed at `rate` S/s. Below the corner a line of frequency $f$ is attenuated
 /// about $(f/f_c)^2$: a phone's microphone passes little of a disk's lowest lines.
 pub fn high_pass(x: &mut [f64], corner: f64, rate: f64) {
-    let w0 = TAU * corner / rate;
-    let alpha = w0.sin() / std::f64::consts::SQRT_2;
-    let c = w0.cos();
-    let a0 = 1.0 + alpha;
-    let (b0, b1, b2) = ((1.0 + c) / 2.0 / a0, -(1.0 + c) / a0, (1.0 + c) / 2.0 / a0);
-    let (a1, a2) = (-2.0 * c / a0, (1.0 - alpha) / a0);
+    let ([b0, b1, b2], [a1, a2]) = high_pass_coefficients(corner, rate);
     let (mut x1, mut x2, mut y1, mut y2) = (0.0, 0.0, 0.0, 0.0);
     for v in x.iter_mut() {
         let y = b0 * *v + b1 * x1 + b2 * x2 - a1 * y1 - a2 * y2;
         (x2, x1, y2, y1) = (x1, *v, y1, y);
         *v = y;
     }
+}
+
+/// The [`high_pass`]'s coefficients $(b_0, b_1, b_2)$ and $(a_1, a_2)$, normalised by $a_0$.
+fn high_pass_coefficients(corner: f64, rate: f64) -> ([f64; 3], [f64; 2]) {
+    let w0 = TAU * corner / rate;
+    let alpha = w0.sin() / std::f64::consts::SQRT_2;
+    let c = w0.cos();
+    let a0 = 1.0 + alpha;
+    (
+        [(1.0 + c) / 2.0 / a0, -(1.0 + c) / a0, (1.0 + c) / 2.0 / a0],
+        [-2.0 * c / a0, (1.0 - alpha) / a0],
+    )
+}
+
+/// The [`high_pass`]'s amplitude response at `f` Hz, $|H(e^{i\omega})|$ with
+/// $\omega = 2\pi f/\mathrm{rate}$: what it leaves of a steady line at $f$.
+pub fn high_pass_gain(corner: f64, rate: f64, f: f64) -> f64 {
+    let ([b0, b1, b2], [a1, a2]) = high_pass_coefficients(corner, rate);
+    let w = TAU * f / rate;
+    // The modulus of c0 + c1 e^{-iw} + c2 e^{-2iw}: the numerator, then the denominator.
+    let mag = |c0: f64, c1: f64, c2: f64| {
+        let re = c0 + c1 * w.cos() + c2 * (2.0 * w).cos();
+        let im = -c1 * w.sin() - c2 * (2.0 * w).sin();
+        re.hypot(im)
+    };
+    mag(b0, b1, b2) / mag(1.0, a1, a2)
 }
 
 /// Schroeder's reverberator: four parallel feedback combs (29.7, 37.1, 41.1 and 43.7 ms) and
@@ -102,6 +123,22 @@ mod tests {
         let high = rms(&high[40_000..]) * 2f64.sqrt();
         assert!((low / 0.01 - 1.0).abs() < 0.02, "gain at f_c/10: {low}");
         assert!((high - 1.0).abs() < 0.01, "gain at 10 f_c: {high}");
+    }
+
+    #[test]
+    fn the_high_pass_gain_is_what_the_filter_does_to_a_steady_line() {
+        let rate = 8000.0;
+        for f in [10.0, 70.0, 100.0, 1000.0] {
+            let mut x = sine(f, rate, 80_000);
+            high_pass(&mut x, 100.0, rate);
+            let measured = rms(&x[40_000..]) * 2f64.sqrt();
+            let gain = high_pass_gain(100.0, rate, f);
+            assert!(
+                (measured / gain - 1.0).abs() < 2e-3,
+                "{f} Hz: {measured} {gain}"
+            );
+        }
+        assert!((high_pass_gain(100.0, rate, 100.0) - 0.5f64.sqrt()).abs() < 1e-3);
     }
 
     #[test]
