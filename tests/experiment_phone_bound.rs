@@ -163,6 +163,12 @@ fn the_docs_state_the_stored_bound() {
     let count = |st: Standing| c.iter().filter(|x| x.standing == st).count();
     let refused = c.iter().filter(|x| x.outcome.refused.is_some()).count();
     let eff: Vec<f64> = c.iter().filter_map(|x| x.beta_efficiency).collect();
+    let by_fit = |phase: bool| -> Vec<f64> {
+        c.iter()
+            .filter(|x| x.outcome.from_phase == Some(phase))
+            .filter_map(|x| x.beta_efficiency)
+            .collect()
+    };
     let mut lines: Vec<String> = s.sets.iter().map(BoundSet::summary).collect();
     lines.extend([
         format!(
@@ -184,7 +190,34 @@ fn the_docs_state_the_stored_bound() {
             "below the bound on {}",
             eff.iter().filter(|e| **e < 1.0).count()
         ),
+        format!(
+            "{:.1} times by the phase's fit and {:.1} times by the pitch track's",
+            median(by_fit(true)),
+            median(by_fit(false))
+        ),
+        format!(
+            "the phase's fit comes within {:.2} of it at best",
+            by_fit(true).into_iter().fold(f64::MAX, f64::min)
+        ),
+        format!(
+            "the missed ones' bound is at most {:.4}",
+            c.iter()
+                .filter(|x| x.standing == Standing::Missed)
+                .map(|x| x.bound.beta_sigma)
+                .fold(0.0, f64::max)
+        ),
     ]);
+    for set in &s.sets {
+        let top = set
+            .recordings
+            .iter()
+            .max_by(|a, b| a.beta_sigma.total_cmp(&b.beta_sigma))
+            .unwrap();
+        lines.push(format!(
+            "from seed {} is {:.4} (seed {}, {:.2} s of sound from {:.1} Hz, {:.0} turns)",
+            set.seed0, top.beta_sigma, top.seed, top.sound, top.start_hz, top.turns
+        ));
+    }
     for line in lines {
         assert!(
             doc.contains(&line),

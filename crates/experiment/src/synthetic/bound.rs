@@ -130,6 +130,16 @@ pub struct CramerRao {
     pub ln_c_sigma: f64,
 }
 
+/// $\partial\psi/\partial(\beta, t_0, \ln C)$ at $\tau = t_0 - t$ for eq 79's heading
+/// $\psi = -e^E$, $E = q\ln C + (1-q)\ln\tau - \ln(1-q)$, $q = 1/(\beta+2)$:
+/// $(-q^2\psi\,\partial E/\partial q,\ -\Omega,\ q\psi)$.
+fn heading_gradient(law: &Law, tau: f64) -> [f64; 3] {
+    let q = 1.0 / (law.beta + 2.0);
+    let psi = law.heading(tau);
+    let de_dq = law.c.ln() - tau.ln() + 1.0 / (1.0 - q);
+    [psi * de_dq * (-q * q), -law.precession(tau), psi * q]
+}
+
 /// The first index in `lo..hi` at which `pred`, false and then true, holds (or `hi`).
 fn first_where(mut lo: usize, mut hi: usize, pred: impl Fn(usize) -> bool) -> usize {
     while lo < hi {
@@ -293,8 +303,6 @@ impl SoundInformation {
     fn add_summand(&self, t: f64, weight: f64, fisher: &mut DMatrix<f64>) {
         let law = &self.law;
         let tau = self.t0 - t;
-        let q = 1.0 / (law.beta + 2.0);
-        let psi = law.heading(tau);
         let omega = law.precession(tau);
         let fade = if self.fade_in > 0.0 {
             ((t - self.start) / self.fade_in).min(1.0)
@@ -311,8 +319,7 @@ impl SoundInformation {
             0.0
         };
         let gains: f64 = self.gains.iter().map(|g| g * g).sum();
-        let de_dq = law.c.ln() - tau.ln() + 1.0 / (1.0 - q);
-        let d = [psi * de_dq * (-q * q), -omega, psi * q];
+        let d = heading_gradient(law, tau);
         let nyquist = 0.5 * self.sample_rate;
         for (h, a_h) in self.harmonics.iter().enumerate() {
             let order = (h + 1) as f64;
@@ -446,6 +453,47 @@ mod tests {
         room.sound = sound;
         room.law.c = (TAU * f_start).powf(room.law.beta + 2.0) * sound;
         room
+    }
+
+    #[test]
+    fn the_heading_gradient_is_the_headings_own_by_differences() {
+        let law = Law {
+            beta: 2.3,
+            c: (TAU * 12.0f64).powf(4.3) * 5.0,
+        };
+        for tau in [4.0, 0.3, 2e-3] {
+            let d = heading_gradient(&law, tau);
+            let central = |f: &dyn Fn(f64) -> f64, h: f64| (f(h) - f(-h)) / (2.0 * h);
+            let numeric = [
+                central(
+                    &|h| {
+                        Law {
+                            beta: law.beta + h,
+                            ..law
+                        }
+                        .heading(tau)
+                    },
+                    1e-6,
+                ),
+                central(&|h| law.heading(tau + h), 1e-4 * tau),
+                central(
+                    &|h| {
+                        Law {
+                            c: law.c * h.exp(),
+                            ..law
+                        }
+                        .heading(tau)
+                    },
+                    1e-6,
+                ),
+            ];
+            for (a, n) in d.iter().zip(numeric) {
+                assert!(
+                    (a / n - 1.0).abs() < 1e-6,
+                    "tau {tau}: {d:?} against {numeric:?}"
+                );
+            }
+        }
     }
 
     #[test]
