@@ -57,6 +57,21 @@ fn contact_lost(law: &Law, disk: &Disk) -> f64 {
     0.5 * (lo + hi)
 }
 
+/// The bound sums the Fisher information on a grid of cells; summed sample by sample over the
+/// whole sound of `beta_from_sound_against_its_cramer_rao_bound`, the same to 1e-4.
+#[test]
+fn the_grid_bound_is_the_per_sample_sum() {
+    let whole = SoundInformation::of_microphone(&law(2.0), &mic(0.003, 1), 0.0);
+    let grid = whole.bound().unwrap().beta_sigma;
+    let each = cramer_rao(&whole.fisher_per_sample().unwrap())
+        .unwrap()
+        .beta_sigma;
+    assert!(
+        (grid / each - 1.0).abs() < 1e-4,
+        "grid {grid}, per sample {each}"
+    );
+}
+
 /// The bound against the analysis's sigma and the light signal's, on the sounds of
 /// `beta_from_sound_is_about_as_precise_as_from_light` (noise 0.003, the phone's room; four
 /// seeds): no fit's own sigma lies below the bound, the bound itself lies within 2x of the light's
@@ -72,16 +87,6 @@ fn beta_from_sound_against_its_cramer_rao_bound() {
     let light_last = mic(0.003, 1).end_at - light.window.t_last;
     let light = light.eq84.beta_sigma;
     let bound = bound_beta(&l, &mic(0.003, 1), 0.0);
-    // The bound sums the Fisher information on a grid of cells; summed sample by sample, the
-    // same to 1e-4.
-    let whole = SoundInformation::of_microphone(&l, &mic(0.003, 1), 0.0);
-    let each = cramer_rao(&whole.fisher_per_sample().unwrap())
-        .unwrap()
-        .beta_sigma;
-    assert!(
-        (bound / each - 1.0).abs() < 1e-4,
-        "grid {bound}, per sample {each}"
-    );
     // The phase fit's blocks stop at least 1 ms before its t0.
     let analysed = bound_beta(&l, &mic(0.003, 1), 1e-3);
     let mut sigmas = Vec::new();
