@@ -14,7 +14,7 @@ use experiment::sound_analysis::analysed::SoundAnalysis;
 use experiment::sound_analysis::analysis::analyze_sound;
 use experiment::sound_analysis::high_pass::Corner;
 use experiment::sound_analysis::phase_blocks::{Block, BlockSettings, Samples};
-use experiment::sound_analysis::phase_fit::{fit_phase_reading, PhaseFit};
+use experiment::sound_analysis::phase_fit::{fit_phase_reading, PhaseFit, ReadCorner};
 use experiment::sound_analysis::track::TrackSettings;
 use experiment::synthetic::phone_room::PhoneRoom;
 use experiment::trace::Trace;
@@ -43,11 +43,7 @@ fn analysed(room: &PhoneRoom) -> Result<(SoundAnalysis, Trace), String> {
 }
 
 /// The analysis's phase fit done again with the corner read by `read`, from the same start.
-fn refit(
-    a: &SoundAnalysis,
-    trace: &Trace,
-    read: &dyn Fn(&[Block], &[f64]) -> Option<Corner>,
-) -> Option<PhaseFit> {
+fn refit(a: &SoundAnalysis, trace: &Trace, read: ReadCorner<'_>) -> Option<PhaseFit> {
     let band = to_band(&trace.v, a.track.sample_rate);
     let samples = match &band {
         Some((x, q)) => Samples {
