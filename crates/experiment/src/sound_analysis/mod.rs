@@ -2,6 +2,7 @@
 //! ([`spectrum`]) followed into a pitch track ([`track`]), the spectrogram for the eye
 //! ([`spectrogram`]), the phase followed turn by turn ([`phase_blocks`]) and eq 79's heading
 //! fitted to it ([`phase_fit`]), its residuals tested for structure ([`residual_structure`]),
+//! the harmonics fitted alone and their disagreement ([`harmonic_agreement`]),
 //! with a phone's high-pass read from the harmonics ([`high_pass`]), the turns it counts checked
 //! against the track's ([`turn_count`]), which fit is the result and what uncertainty it states
 //! ([`result`]), the rise a spin-down is judged on ([`rise`]), a short spin's fit from its phase
@@ -11,6 +12,7 @@
 
 pub mod analysed;
 pub mod analysis;
+pub mod harmonic_agreement;
 pub mod high_pass;
 pub mod mains;
 pub mod phase_blocks;

@@ -70,6 +70,12 @@ pub struct Block {
     pub split: [f64; HARMONICS],
     /// Its variance $\mathrm{Var}(\arg z_h) + h^2\,\mathrm{Var}(u_1)$ (rad²).
     pub split_var: [f64; HARMONICS],
+    /// Per harmonic $h \ge 1$ (index $h - 1$; NaN where absent): $\arg z_h$ against $h$ times
+    /// the reference heading plus the shift (rad), and its variance (rad²), for the harmonic
+    /// fitted alone ([`harmonic_agreement`](crate::sound_analysis::harmonic_agreement)).
+    pub phase: [f64; HARMONICS],
+    /// (see `phase`)
+    pub phase_var: [f64; HARMONICS],
     /// The weight of harmonic $h$ in `offset`, $\mathrm{offset} = u_1 + \sum_{h \ge 2}
     /// W_h\,\mathrm{split}_h / h$ (index $h - 1$; 0 where absent).
     pub weight: [f64; HARMONICS],
@@ -380,6 +386,10 @@ fn combine(
             for w in weight.iter_mut() {
                 *w /= den;
             }
+            let (mut phase, mut phase_var) = ([f64::NAN; HARMONICS], [f64::NAN; HARMONICS]);
+            for (h, &(ph, var)) in per[k].iter().enumerate() {
+                (phase[h], phase_var[h]) = (ph, var);
+            }
             let r = &raw[k];
             Block {
                 a: r.0,
@@ -391,6 +401,8 @@ fn combine(
                 snr: keep[k],
                 split,
                 split_var,
+                phase,
+                phase_var,
                 weight,
             }
         })

@@ -28,6 +28,12 @@
 //! high-pass's uncertainty, so that the interval holds the truth whether the phone filtered the
 //! sound or not.
 //!
+//! **What the lines' phases disagree on.** Each harmonic is fitted alone, with the lead taken
+//! out of the heading taken out of it; where their $\beta$s or $t_0$s disagree beyond their
+//! noise (a room's reverberation, a corner read wrong), what that disagreement moves the combined
+//! fit by is stated as its uncertainty
+//! ([`harmonic_agreement`](crate::sound_analysis::harmonic_agreement)).
+//!
 //! **The law's own error.** The heading is refitted on the later half of the blocks; where
 //! $\beta$ or $t_0$ moves by more than [`DRIFT_SIGMAS`](crate::fit::law_stability::DRIFT_SIGMAS) of the half's uncertainty, the shift is
 //! stated as the law's systematic uncertainty, as for the light signal
@@ -38,6 +44,7 @@ use crate::fit::eq84_85::phase;
 use crate::fit::law_fit::LawFit;
 use crate::fit::law_stability::LawStability;
 use crate::fit::least_squares::{solve, FitError, Problem, Scale};
+use crate::sound_analysis::harmonic_agreement::{agreement, HarmonicAgreement};
 use crate::sound_analysis::high_pass::{block_leads, fit_corner, rates, Corner, MAX_TURN_CHANGE};
 use crate::sound_analysis::mains::hum::remove_hum_clear;
 use crate::sound_analysis::phase_blocks::{blocks, Block, BlockSettings, Samples};
@@ -130,24 +137,43 @@ pub struct PhaseFit {
     pub points: Vec<PhasePoint>,
     /// The later half's fit against this one: whether eq 79 drifts over the record.
     pub law: Option<LawStability>,
+    /// The harmonics fitted alone and what their disagreement moves this fit by (`None` where
+    /// fewer than two could be fitted).
+    pub harmonics: Option<HarmonicAgreement>,
     /// The tests of the blocks' whitened residuals for structure (`None` below
     /// [`MIN_BLOCKS`](crate::sound_analysis::residual_structure::MIN_BLOCKS)).
     pub structure: Option<Structure>,
 }
 
 impl PhaseFit {
-    /// $\beta$'s standard uncertainty from the fit, the high-pass's corner and the law, in
-    /// quadrature.
+    /// $\beta$'s standard uncertainty from the fit, the high-pass's corner, the harmonics'
+    /// disagreement and the law, in quadrature.
     pub fn beta_total(&self) -> f64 {
         let law = self.law.as_ref().map_or(0.0, LawStability::beta_systematic);
-        self.beta_sigma.hypot(self.beta_high_pass).hypot(law)
+        self.beta_sigma
+            .hypot(self.beta_high_pass)
+            .hypot(self.beta_harmonics())
+            .hypot(law)
     }
 
-    /// $t_0$'s standard uncertainty (s) from the fit, the high-pass's corner and the law, in
-    /// quadrature.
+    /// $t_0$'s standard uncertainty (s) from the fit, the high-pass's corner, the harmonics'
+    /// disagreement and the law, in quadrature.
     pub fn t0_total(&self) -> f64 {
         let law = self.law.as_ref().map_or(0.0, LawStability::t0_systematic);
-        self.t0_sigma.hypot(self.t0_high_pass).hypot(law)
+        self.t0_sigma
+            .hypot(self.t0_high_pass)
+            .hypot(self.t0_harmonics())
+            .hypot(law)
+    }
+
+    /// What the harmonics' disagreement beyond their noise moves $\beta$ by (0 without it).
+    pub fn beta_harmonics(&self) -> f64 {
+        self.harmonics.as_ref().map_or(0.0, |a| a.beta)
+    }
+
+    /// What it moves $t_0$ by (s).
+    pub fn t0_harmonics(&self) -> f64 {
+        self.harmonics.as_ref().map_or(0.0, |a| a.t0)
     }
 }
 
@@ -162,6 +188,23 @@ pub fn fit_phase(
     start: SVector<f64, 3>,
     t0_sigma: f64,
     settings: &BlockSettings,
+) -> Result<PhaseFit, FitError> {
+    fit_phase_reading(rec, hum, first, start, t0_sigma, settings, &fit_corner)
+}
+
+/// How a fit reads the high-pass's corner from its blocks and their rates (rad/s):
+/// [`fit_corner`] from the splits, or a corner known otherwise (a diagnosis with the truth).
+pub type ReadCorner<'a> = &'a dyn Fn(&[Block], &[f64]) -> Option<Corner>;
+
+/// [`fit_phase`] with the corner read by `read_corner`.
+pub fn fit_phase_reading(
+    rec: &Samples<'_>,
+    hum: &[f64],
+    first: f64,
+    start: SVector<f64, 3>,
+    t0_sigma: f64,
+    settings: &BlockSettings,
+    read_corner: ReadCorner<'_>,
 ) -> Result<PhaseFit, FitError> {
     let x = without_hum(rec, hum, &start);
     let rec = &Samples {
@@ -179,7 +222,7 @@ pub fn fit_phase(
         FitError::at_least("phase blocks", bl.len(), settings.min_blocks, "")?;
         let omega = rates(&bl, &p);
         let leads = |wc: f64| block_leads(&bl, &omega, wc);
-        let read = fit_corner(&bl, &omega);
+        let read = read_corner(&bl, &omega);
         let plain = fit_blocks(&bl, &p, shift, &vec![0.0; bl.len()])?;
         let (corner, not_used, lead, (mut fit, p4)) = match read.map(|c| (c, c.why_not_used())) {
             Some((c, None)) => {
@@ -216,6 +259,12 @@ pub fn fit_phase(
                 }
             }
             fit.law = later_half(&bl, &p, shift, &lead, &fit);
+            let wc = corner.map_or(0.0, |c| c.omega_c);
+            let alone = |hb: &[Block]| {
+                let (f, _) = fit_blocks(hb, &p, shift, &vec![0.0; hb.len()]).ok()?;
+                Some([f.beta, f.beta_sigma, f.t0, f.t0_sigma])
+            };
+            fit.harmonics = agreement(&bl, &omega, &lead, wc, settings, &alone);
         }
         p = SVector::<f64, 3>::new(p4[0], p4[1], p4[2]);
         shift = p4[3];
@@ -378,6 +427,7 @@ fn fit_blocks(
             })
             .collect(),
         law: None,
+        harmonics: None,
     };
     Ok((fit, s.p))
 }

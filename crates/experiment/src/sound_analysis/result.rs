@@ -10,7 +10,8 @@
 //! The stated standard uncertainty of the phase's fit is, in quadrature, the sum of
 //! ([`Terms`]): the fit's own (the sandwich with the residuals' stationary covariance); the
 //! phone's high-pass, whose corner the harmonics' phases measure
-//! ([`high_pass`](crate::sound_analysis::high_pass)); the law's drift over the record
+//! ([`high_pass`](crate::sound_analysis::high_pass)); the harmonics' disagreement, each fitted
+//! alone ([`harmonic_agreement`](crate::sound_analysis::harmonic_agreement)); the law's drift over the record
 //! ([`law_stability`](crate::fit::law_stability)); and the two fits' disagreement where it
 //! exceeds their noise and the phase's fit is in doubt ([`SoundAnalysis::phase_in_doubt`]).
 //!
@@ -55,6 +56,9 @@ pub struct Terms {
     /// a corner is read but the record does not show it, the largest shift its lead would make
     /// ([`PhaseFit::beta_high_pass`]).
     pub high_pass: f64,
+    /// What the harmonics, each fitted alone, disagree by beyond their noise, as it moves the
+    /// combined fit ([`PhaseFit::beta_harmonics`]).
+    pub harmonics: f64,
     /// The law's drift over the record: the later half's shift where it exceeds
     /// [`DRIFT_SIGMAS`] of the half's own uncertainty, else 0.
     pub law: f64,
@@ -75,6 +79,7 @@ impl Terms {
     pub fn total(&self) -> f64 {
         self.fit
             .hypot(self.high_pass)
+            .hypot(self.harmonics)
             .hypot(self.law)
             .hypot(self.disagreement)
     }
@@ -141,12 +146,14 @@ impl SoundAnalysis {
                 let beta_terms = Terms {
                     fit: p.beta_sigma,
                     high_pass: p.beta_high_pass,
+                    harmonics: p.beta_harmonics(),
                     law: law.map_or(0.0, |l| l.beta_systematic()),
                     disagreement: doubt * disagreement(p.beta, p.beta_sigma, x.beta, x.beta_sigma),
                 };
                 let t0_terms = Terms {
                     fit: p.t0_sigma,
                     high_pass: p.t0_high_pass,
+                    harmonics: p.t0_harmonics(),
                     law: law.map_or(0.0, |l| l.t0_systematic()),
                     disagreement: doubt * disagreement(p.t0, p.t0_sigma, x.t0, x.t0_sigma),
                 };
@@ -298,6 +305,12 @@ impl SoundLaw {
             let mut s = format!("{name} = {v:.6} +- {:.6}{unit} (fit", t.fit);
             if t.high_pass > 0.0 {
                 s.push_str(&format!(", +- {:.6} the high-pass's corner", t.high_pass));
+            }
+            if t.harmonics > 0.0 {
+                s.push_str(&format!(
+                    ", +- {:.6} the harmonics' disagreement",
+                    t.harmonics
+                ));
             }
             if t.law > 0.0 {
                 s.push_str(&format!(", +- {:.6} the law's drift", t.law));
