@@ -223,23 +223,33 @@ impl<'m, 's, M: Model<N>, const N: usize> Recorder<'m, 's, M, N> {
     }
 
     /// Records the rows of a batch of samples, all of one step: as [`Recorder::take`] records
-    /// each, but with each column computed over the batch ([`Model::record_rows`]) where no
-    /// row of it is looked at for a loss of contact.
+    /// each, but with each column computed over the batch ([`Model::record_rows`]), the
+    /// normal force too where the rows are looked at for a loss of contact (the first row of
+    /// the batch with $F_z < 0$ is the one [`Recorder::take`] row after row finds).
     fn take_batch(&mut self, batch: &Batch<N>) {
         let looks = self.contact_lost.is_none()
             && self.checks_contact
             && self.watch.is_none_or(ContactWatch::armed);
-        if looks {
-            for (j, &t) in batch.times().iter().enumerate() {
-                self.take(t, &batch.state(j));
-            }
-            return;
-        }
         let n = batch.len();
-        let mut energy = [0.0; BATCH];
+        let (mut energy, mut force) = ([0.0; BATCH], [f64::NAN; BATCH]);
         self.rows.clear();
-        self.model
-            .record_rows(batch, &self.scene.record, &mut self.rows, &mut energy);
+        self.model.record_rows(
+            batch,
+            &self.scene.record,
+            &mut self.rows,
+            &mut energy,
+            looks.then_some(&mut force),
+        );
+        let lost = looks.then(|| force[..n].iter().position(|&f| f < 0.0));
+        if let Some(j) = lost.flatten() {
+            self.contact_lost = Some(ContactLost {
+                t: batch.times()[j],
+                normal_force: force[j],
+            });
+            if let Some(w) = self.watch {
+                w.mark_found();
+            }
+        }
         (self.sink)(&self.rows);
         self.recorded += n as u64;
         self.energy_change = self
