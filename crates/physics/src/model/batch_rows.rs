@@ -60,12 +60,81 @@ fn write_fixed<const W: usize>(columns: &[&[f64; BATCH]; W], n: usize, out: &mut
     }
 }
 
-/// [`write_rows`] in AVX2 registers: each block of four rows (the last one's rows past `n`
+/// [`write_rows`] in AVX2 registers, the usual widths with the width known to the compiler.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn write_rows_avx2(columns: &[&[f64; BATCH]], n: usize, out: &mut Vec<f64>) {
+    match columns {
+        [a, b] => write_fixed_avx2(&[*a, *b], n, out),
+        [a, b, c] => write_fixed_avx2(&[*a, *b, *c], n, out),
+        [a, b, c, d] => write_fixed_avx2(&[*a, *b, *c, *d], n, out),
+        [a, b, c, d, e] => write_fixed_avx2(&[*a, *b, *c, *d, *e], n, out),
+        [a, b, c, d, e, f] => write_fixed_avx2(&[*a, *b, *c, *d, *e, *f], n, out),
+        [a, b, c, d, e, f, g] => write_fixed_avx2(&[*a, *b, *c, *d, *e, *f, *g], n, out),
+        [a, b, c, d, e, f, g, h] => write_fixed_avx2(&[*a, *b, *c, *d, *e, *f, *g, *h], n, out),
+        _ => write_any_avx2(columns, n, out),
+    }
+}
+
+/// [`write_rows_avx2`] for `W` columns: each block of four rows (the last one's rows past `n`
 /// written into the reserved space and left out of the length), four columns at a time by a
 /// 4x4 transpose, then two, then one.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-fn write_rows_avx2(columns: &[&[f64; BATCH]], n: usize, out: &mut Vec<f64>) {
+#[inline]
+fn write_fixed_avx2<const W: usize>(columns: &[&[f64; BATCH]; W], n: usize, out: &mut Vec<f64>) {
+    use core::arch::x86_64::*;
+    let n = n.min(BATCH);
+    let blocks = n.div_ceil(LANES);
+    out.reserve(blocks * LANES * W);
+    let start = out.len();
+    let cols: [*const f64; W] = std::array::from_fn(|c| columns[c].as_ptr());
+    // SAFETY: as in `write_any_avx2`; the loads read numbers `j .. j + 4` of arrays of
+    // `BATCH`, with `j + 4 <= blocks * LANES <= BATCH`.
+    unsafe {
+        let base = out.as_mut_ptr().add(start);
+        for b in 0..blocks {
+            let j = b * LANES;
+            let row = base.add(j * W);
+            let at = |r: usize, c: usize| row.add(r * W + c);
+            let load = |c: usize| _mm256_loadu_pd(cols[c].add(j));
+            let mut c = 0;
+            while c + 4 <= W {
+                let (a0, a1, a2, a3) = (load(c), load(c + 1), load(c + 2), load(c + 3));
+                let t0 = _mm256_unpacklo_pd(a0, a1);
+                let t1 = _mm256_unpackhi_pd(a0, a1);
+                let t2 = _mm256_unpacklo_pd(a2, a3);
+                let t3 = _mm256_unpackhi_pd(a2, a3);
+                _mm256_storeu_pd(at(0, c), _mm256_permute2f128_pd::<0x20>(t0, t2));
+                _mm256_storeu_pd(at(1, c), _mm256_permute2f128_pd::<0x20>(t1, t3));
+                _mm256_storeu_pd(at(2, c), _mm256_permute2f128_pd::<0x31>(t0, t2));
+                _mm256_storeu_pd(at(3, c), _mm256_permute2f128_pd::<0x31>(t1, t3));
+                c += 4;
+            }
+            if c + 2 <= W {
+                let (a0, a1) = (load(c), load(c + 1));
+                let t0 = _mm256_unpacklo_pd(a0, a1);
+                let t1 = _mm256_unpackhi_pd(a0, a1);
+                _mm_storeu_pd(at(0, c), _mm256_castpd256_pd128(t0));
+                _mm_storeu_pd(at(1, c), _mm256_castpd256_pd128(t1));
+                _mm_storeu_pd(at(2, c), _mm256_extractf128_pd::<1>(t0));
+                _mm_storeu_pd(at(3, c), _mm256_extractf128_pd::<1>(t1));
+                c += 2;
+            }
+            if c < W {
+                for r in 0..LANES {
+                    at(r, c).write(*cols[c].add(j + r));
+                }
+            }
+        }
+        out.set_len(start + n * W);
+    }
+}
+
+/// [`write_rows_avx2`] for any width, as [`write_fixed_avx2`] does it.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn write_any_avx2(columns: &[&[f64; BATCH]], n: usize, out: &mut Vec<f64>) {
     use core::arch::x86_64::*;
     let n = n.min(BATCH);
     let w = columns.len();

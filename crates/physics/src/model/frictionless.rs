@@ -13,7 +13,7 @@ use crate::model::rolling::{extras_rhs, lz, lz_at_tilt, record_common};
 use crate::model::{
     leading_state, rows_one_at_a_time, Extras, Layout, Model, Motion, Quantity, RowShared,
 };
-use crate::solve::{Batch, Dynamics, State, BATCH};
+use crate::solve::{Batch, Dynamics, State, BATCH, LANES};
 use num_dual::DualNum;
 
 /// Eqs 61-62 solved for $(\ddot\alpha, \dot\Omega)$ at spin $\omega_1$.
@@ -206,11 +206,6 @@ impl<const N: usize> Model<N> for Frictionless<N> {
         }
     }
 
-    /// Every row is made a batch at a time.
-    fn rows_together(&self, _quantities: &[Quantity]) -> bool {
-        true
-    }
-
     /// The rows column by column over the batch: the tilt's sine and cosine of each row (the C
     /// library's, as [`Model::record_row`] takes them), then the energy, $L_z$ and the normal
     /// force over the rows with the same operations as a row alone, then every row written
@@ -225,7 +220,8 @@ impl<const N: usize> Model<N> for Frictionless<N> {
     ) {
         let n = batch.len();
         let width = 1 + quantities.iter().map(|q| q.columns().len()).sum::<usize>();
-        if width > MAX_COLUMNS {
+        // Fewer rows than a register holds go one by one: the same bits, for less work.
+        if width > MAX_COLUMNS || n < LANES {
             rows_one_at_a_time(self, batch, quantities, out, energy, normal_force);
             return;
         }

@@ -221,13 +221,6 @@ pub trait Model<const N: usize>: Dynamics<N> {
         }
     }
 
-    /// Whether [`Model::record_rows`] computes the columns of `quantities` over a batch at
-    /// once (rather than one row at a time, as by default).
-    fn rows_together(&self, quantities: &[Quantity]) -> bool {
-        let _ = quantities;
-        false
-    }
-
     /// Appends one row per sample of `batch` to `out`, row after row: the sample's time, then
     /// the columns of `quantities` as [`Model::record_row`] writes them for its state; writes
     /// each row's energy to `energy` and, when `normal_force` is given, each row's normal force

@@ -316,11 +316,6 @@ impl<const N: usize> Model<N> for Rolling<N> {
         }
     }
 
-    /// Every row is made a batch at a time, the contact force too.
-    fn rows_together(&self, _quantities: &[Quantity]) -> bool {
-        true
-    }
-
     /// The rows column by column over the batch: the tilt's sines (and cosines, where a column
     /// needs them) over the batch ([`sin_each`], [`sin_cos_each`], the bits of [`sin_cos`]),
     /// then each column over every row, in the AVX2 build where the processor has it (the same
@@ -333,6 +328,12 @@ impl<const N: usize> Model<N> for Rolling<N> {
         energy: &mut [f64; BATCH],
         normal_force: Option<&mut [f64; BATCH]>,
     ) {
+        // Fewer rows than a register holds go one by one: the same bits, for less work than
+        // the batch's loops.
+        if batch.len() < LANES {
+            rows_one_at_a_time(self, batch, quantities, out, energy, normal_force);
+            return;
+        }
         #[cfg(target_arch = "x86_64")]
         if numerics::wider::avx2() {
             // SAFETY: the processor has AVX2, checked just above.
@@ -382,12 +383,18 @@ impl<const N: usize> Rolling<N> {
             .any(|q| matches!(q, Quantity::NormalForce | Quantity::Friction));
         let needs_force = records_force || normal_force.is_some();
         let needs_cos = needs_force || quantities.contains(&Quantity::Lz);
-        let (mut sin, mut cos) = ([0.0; BATCH], [0.0; BATCH]);
-        if needs_cos {
-            sin_cos_each(&batch.component_rows(0)[..m], &mut sin, &mut cos);
+        let tilt = &batch.component_rows(0)[..m];
+        let mut sin = [0.0; BATCH];
+        let cos_rows;
+        let cos: &[f64; BATCH] = if needs_cos {
+            let mut c = [0.0; BATCH];
+            sin_cos_each(tilt, &mut sin, &mut c);
+            cos_rows = c;
+            &cos_rows
         } else {
-            sin_each(&batch.component_rows(0)[..m], &mut sin);
-        }
+            sin_each(tilt, &mut sin);
+            &[0.0; BATCH]
+        };
         let y = |i: usize| batch.component_rows(i);
         let at = |j: usize| Motion {
             alpha: y(0)[j],
@@ -402,24 +409,35 @@ impl<const N: usize> Rolling<N> {
                 *e = energy_at_tilt(&self.disk, &at(j), sin[j]);
             }
         }
-        let mut lz = [0.0; BATCH];
-        if quantities.contains(&Quantity::Lz) {
+        // The columns not asked for are left as zeros, and not written.
+        let lz_rows;
+        let lz: &[f64; BATCH] = if quantities.contains(&Quantity::Lz) {
+            let mut lz = [0.0; BATCH];
             for (k, l) in lz[..m].chunks_exact_mut(LANES).enumerate() {
                 for (i, l) in l.iter_mut().enumerate() {
                     let j = k * LANES + i;
                     *l = lz_at_tilt(&self.disk, &at(j), (sin[j], cos[j]));
                 }
             }
-        }
-        let mut force = [[0.0; BATCH]; 3];
-        if needs_force {
+            lz_rows = lz;
+            &lz_rows
+        } else {
+            &[0.0; BATCH]
+        };
+        let force_rows;
+        let force: &[[f64; BATCH]; 3] = if needs_force {
+            let mut force = [[0.0; BATCH]; 3];
             for j in 0..n {
                 let (motion, sc) = (at(j), (sin[j], cos[j]));
                 let r = rates_at_tilt(&self.disk, &motion, sc, self.torque(&motion));
                 let f = contact_force_at_tilt(&self.disk, &motion, sc, &r);
                 (force[0][j], force[1][j], force[2][j]) = (f[0], f[1], f[2]);
             }
-        }
+            force_rows = force;
+            &force_rows
+        } else {
+            &[[0.0; BATCH]; 3]
+        };
         if let Some(f) = normal_force {
             f[..n].copy_from_slice(&force[0][..n]);
         }
@@ -433,7 +451,7 @@ impl<const N: usize> Rolling<N> {
                 Quantity::Precession => (Some(y(2)), None),
                 Quantity::Spin => (Some(y(3)), None),
                 Quantity::Energy => (Some(&*energy), None),
-                Quantity::Lz => (Some(&lz), None),
+                Quantity::Lz => (Some(lz), None),
                 Quantity::NormalForce => (Some(&force[0]), None),
                 Quantity::Friction => (Some(&force[1]), Some(&force[2])),
                 Quantity::Heading => (state(self.layout.heading), None),

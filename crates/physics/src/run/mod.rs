@@ -116,19 +116,14 @@ impl Visit for Integrate<'_, '_> {
             }
         };
         let mut take_batch = |batch: &Batch<N>| recorder.borrow_mut().take_batch(batch);
-        let mut take = |t: f64, y: &State<N>| recorder.borrow_mut().take(t, y);
         let mut p = problem(model, scene, y0, scene.stop.time);
         p.progress = self.progress;
         p.sample = scene.sample;
         p.dense_samples = self.dense;
         if scene.sample.is_some() {
-            // A model that makes a batch's rows one at a time takes each sample as it comes,
-            // with no batch to gather it from.
-            if model.rows_together(&scene.record) {
-                p.on_batch = Some(&mut take_batch);
-            } else {
-                p.on_sample = Some(&mut take);
-            }
+            // Each step's samples come together, from one evaluation of its dense output over
+            // all of them, and go on as one call of rows.
+            p.on_batch = Some(&mut take_batch);
             p.on_step = Some(&mut step_end);
         }
         let sol = solve(p, &scene.settings)?;
