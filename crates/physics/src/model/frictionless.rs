@@ -8,9 +8,12 @@
 //! mass moves only vertically (eq 59), so its horizontal position is a constant too.
 
 use crate::disk::Disk;
+use crate::model::batch_rows::{write_rows, MAX_COLUMNS};
 use crate::model::rolling::{extras_rhs, lz, lz_at_tilt, record_common};
-use crate::model::{leading_state, Extras, Layout, Model, Motion, Quantity, RowShared};
-use crate::solve::{Dynamics, State};
+use crate::model::{
+    leading_state, rows_one_at_a_time, Extras, Layout, Model, Motion, Quantity, RowShared,
+};
+use crate::solve::{Batch, Dynamics, State, BATCH, LANES};
 use num_dual::DualNum;
 
 /// Eqs 61-62 solved for $(\ddot\alpha, \dot\Omega)$ at spin $\omega_1$.
@@ -201,5 +204,84 @@ impl<const N: usize> Model<N> for Frictionless<N> {
             energy,
             normal_force: force.filter(|_| normal_force),
         }
+    }
+
+    /// The rows column by column over the batch: the tilt's sine and cosine of each row (the C
+    /// library's, as [`Model::record_row`] takes them), then the energy, $L_z$ and the normal
+    /// force over the rows with the same operations as a row alone, then every row written
+    /// from its columns.
+    fn record_rows(
+        &self,
+        batch: &Batch<N>,
+        quantities: &[Quantity],
+        out: &mut Vec<f64>,
+        energy: &mut [f64; BATCH],
+        normal_force: Option<&mut [f64; BATCH]>,
+    ) {
+        let n = batch.len();
+        let width = 1 + quantities.iter().map(|q| q.columns().len()).sum::<usize>();
+        // Fewer rows than a register holds go one by one: the same bits, for less work.
+        if width > MAX_COLUMNS || n < LANES {
+            rows_one_at_a_time(self, batch, quantities, out, energy, normal_force);
+            return;
+        }
+        let y = |i: usize| batch.component_rows(i);
+        let at = |j: usize| Motion {
+            alpha: y(0)[j],
+            alpha_dot: y(1)[j],
+            precession: y(2)[j],
+            spin: self.spin,
+        };
+        let mut sc = [(0.0, 0.0); BATCH];
+        for (sc, &alpha) in sc.iter_mut().zip(&y(0)[..n]) {
+            *sc = alpha.sin_cos();
+        }
+        for (j, e) in energy[..n].iter_mut().enumerate() {
+            *e = energy_at_tilt(&self.disk, &at(j), sc[j]);
+        }
+        let mut lz = [0.0; BATCH];
+        if quantities.contains(&Quantity::Lz) {
+            for (j, l) in lz[..n].iter_mut().enumerate() {
+                *l = lz_at_tilt(&self.disk, &at(j), sc[j]);
+            }
+        }
+        let mut force = [0.0; BATCH];
+        if normal_force.is_some() || quantities.contains(&Quantity::NormalForce) {
+            for (j, f) in force[..n].iter_mut().enumerate() {
+                let (alpha_ddot, _) = accelerations_at_tilt(&self.disk, &at(j), sc[j]);
+                *f = normal_force_at_tilt(&self.disk, &at(j), sc[j], alpha_ddot);
+            }
+        }
+        if let Some(f) = normal_force {
+            f[..n].copy_from_slice(&force[..n]);
+        }
+        let (spin, zero) = ([self.spin; BATCH], [0.0; BATCH]);
+        let mut columns = [batch.time_rows(); MAX_COLUMNS];
+        let mut c = 1;
+        for &q in quantities {
+            let state = |i: Option<usize>| i.map(y);
+            let (first, second) = match q {
+                Quantity::Alpha => (Some(y(0)), None),
+                Quantity::AlphaDot => (Some(y(1)), None),
+                Quantity::Precession => (Some(y(2)), None),
+                Quantity::Spin => (Some(&spin), None),
+                Quantity::Energy => (Some(&*energy), None),
+                Quantity::Lz => (Some(&lz), None),
+                Quantity::NormalForce => (Some(&force), None),
+                Quantity::Friction | Quantity::Path => (Some(&zero), Some(&zero)),
+                Quantity::Heading => (state(self.layout.heading), None),
+                Quantity::Face => (state(self.layout.face), None),
+                _ => (None, None),
+            };
+            debug_assert!(
+                first.is_some(),
+                "validated scenes only record what the model provides"
+            );
+            for column in [first, second].into_iter().flatten() {
+                columns[c] = column;
+                c += 1;
+            }
+        }
+        write_rows(&columns[..c], n, out);
     }
 }

@@ -7,6 +7,7 @@
 
 pub mod adiabatic;
 pub mod air_film;
+mod batch_rows;
 pub mod dissipation;
 pub mod film_bound;
 pub mod frictionless;
@@ -22,7 +23,7 @@ pub mod steady_solid;
 
 pub use layout::{Extras, Layout};
 
-use crate::solve::{Batch, Dynamics, State};
+use crate::solve::{Batch, Dynamics, State, BATCH};
 use serde::{Deserialize, Serialize};
 
 /// The paper's four variables of motion at one instant. The scalar is `f64`, or a dual number
@@ -220,25 +221,21 @@ pub trait Model<const N: usize>: Dynamics<N> {
         }
     }
 
-    /// Whether [`Model::record_rows`] computes the columns of `quantities` over a batch at
-    /// once (rather than one row at a time, as by default).
-    fn rows_together(&self, quantities: &[Quantity]) -> bool {
-        let _ = quantities;
-        false
-    }
-
     /// Appends one row per sample of `batch` to `out`, row after row: the sample's time, then
     /// the columns of `quantities` as [`Model::record_row`] writes them for its state; writes
-    /// each row's energy to `energy` (at least as long as the batch). A model that overrides
-    /// this computes a column over all the rows at once, to the same bits.
+    /// each row's energy to `energy` and, when `normal_force` is given, each row's normal force
+    /// $F_z$ to it (`NaN` for a model without one), as [`Model::record_row`] returns them (the
+    /// entries past the batch's samples are left unspecified). A model that overrides this
+    /// computes a column over all the rows at once, to the same bits.
     fn record_rows(
         &self,
         batch: &Batch<N>,
         quantities: &[Quantity],
         out: &mut Vec<f64>,
-        energy: &mut [f64],
+        energy: &mut [f64; BATCH],
+        normal_force: Option<&mut [f64; BATCH]>,
     ) {
-        rows_one_at_a_time(self, batch, quantities, out, energy);
+        rows_one_at_a_time(self, batch, quantities, out, energy, normal_force);
     }
 }
 
@@ -249,13 +246,17 @@ pub(crate) fn rows_one_at_a_time<M: Model<N> + ?Sized, const N: usize>(
     batch: &Batch<N>,
     quantities: &[Quantity],
     out: &mut Vec<f64>,
-    energy: &mut [f64],
+    energy: &mut [f64; BATCH],
+    mut normal_force: Option<&mut [f64; BATCH]>,
 ) {
-    for (j, (&t, e)) in batch.times().iter().zip(energy).enumerate() {
+    let asked = normal_force.is_some();
+    for (j, &t) in batch.times().iter().enumerate() {
         out.push(t);
-        *e = model
-            .record_row(&batch.state(j), quantities, false, out)
-            .energy;
+        let shared = model.record_row(&batch.state(j), quantities, asked, out);
+        energy[j] = shared.energy;
+        if let Some(f) = normal_force.as_deref_mut() {
+            f[j] = shared.normal_force.unwrap_or(f64::NAN);
+        }
     }
 }
 

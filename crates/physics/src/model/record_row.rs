@@ -52,49 +52,60 @@ impl Visit for SameRow {
                 );
             }
         }
-        // Rows in batches (with and without the contact force, which a model may record one
-        // row at a time) against the rows one by one.
+        // Rows in batches (with and without the contact force recorded, with and without the
+        // normal force asked) against the rows one by one.
         let no_force: Vec<Quantity> = quantities
             .iter()
             .copied()
             .filter(|q| !matches!(q, Quantity::NormalForce | Quantity::Friction))
             .collect();
+        let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
         for asked in [&quantities, &no_force] {
-            for chunk in states.chunks(BATCH - 3) {
-                let mut batch = Batch::default();
-                let mut one_by_one = Vec::new();
-                let mut energies = Vec::new();
-                for (j, y) in chunk.iter().enumerate() {
-                    let t = 0.01 * j as f64;
-                    assert!(batch.push(t, y));
-                    one_by_one.push(t);
-                    energies.push(model.record_row(y, asked, false, &mut one_by_one).energy);
+            for force_asked in [false, true] {
+                for chunk in states.chunks(BATCH - 3) {
+                    let mut batch = Batch::default();
+                    let mut one_by_one = Vec::new();
+                    let (mut energies, mut forces) = (Vec::new(), Vec::new());
+                    for (j, y) in chunk.iter().enumerate() {
+                        let t = 0.01 * j as f64;
+                        assert!(batch.push(t, y));
+                        one_by_one.push(t);
+                        let shared = model.record_row(y, asked, force_asked, &mut one_by_one);
+                        energies.push(shared.energy);
+                        forces.push(shared.normal_force.unwrap_or(f64::NAN));
+                    }
+                    let record = |rows: &mut Vec<f64>| {
+                        let (mut energy, mut force) = ([0.0; BATCH], [-7.0; BATCH]);
+                        model.record_rows(
+                            &batch,
+                            asked,
+                            rows,
+                            &mut energy,
+                            force_asked.then_some(&mut force),
+                        );
+                        (energy, force)
+                    };
+                    let mut rows = vec![-1.0];
+                    let (energy, force) = record(&mut rows);
+                    // The baseline build of the same loops (the one above is AVX2's where
+                    // the processor has it).
+                    let mut baseline = vec![-1.0];
+                    let (baseline_energy, baseline_force) =
+                        numerics::wider::baseline_only(|| record(&mut baseline));
+                    let k = chunk.len();
+                    let name = &scene.name;
+                    assert_eq!(bits(&baseline), bits(&rows), "{name}: baseline");
+                    assert_eq!(bits(&baseline_energy[..k]), bits(&energy[..k]), "{name}");
+                    assert_eq!(bits(&baseline_force[..k]), bits(&force[..k]), "{name}");
+                    assert_eq!(rows[0], -1.0, "{name}: the rows are appended to");
+                    assert_eq!(bits(&rows[1..]), bits(&one_by_one), "{name}: {asked:?}");
+                    assert_eq!(bits(&energy[..k]), bits(&energies), "{name}");
+                    if force_asked {
+                        assert_eq!(bits(&force[..k]), bits(&forces), "{name}: F_z");
+                    } else {
+                        assert!(force.iter().all(|&f| f == -7.0), "{name}: F_z not asked");
+                    }
                 }
-                let mut rows = vec![-1.0];
-                let mut energy = [0.0; BATCH];
-                model.record_rows(&batch, asked, &mut rows, &mut energy);
-                let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
-                // The baseline build of the same loops (the one above is AVX2's where the
-                // processor has it).
-                let (mut baseline, mut baseline_energy) = (vec![-1.0], [0.0; BATCH]);
-                numerics::wider::baseline_only(|| {
-                    model.record_rows(&batch, asked, &mut baseline, &mut baseline_energy)
-                });
-                assert_eq!(bits(&baseline), bits(&rows), "{}: baseline", scene.name);
-                assert_eq!(bits(&baseline_energy), bits(&energy), "{}", scene.name);
-                assert_eq!(rows[0], -1.0, "{}: the rows are appended to", scene.name);
-                assert_eq!(
-                    bits(&rows[1..]),
-                    bits(&one_by_one),
-                    "{}: {asked:?}",
-                    scene.name
-                );
-                assert_eq!(
-                    bits(&energy[..chunk.len()]),
-                    bits(&energies),
-                    "{}",
-                    scene.name
-                );
             }
         }
         states.len()

@@ -10,14 +10,15 @@
 //! eq 25 multiplied by $-k$).
 
 use crate::disk::Disk;
+use crate::model::batch_rows::{write_rows, MAX_COLUMNS};
 use crate::model::dissipation::{Placement, PowerLaw};
 use crate::model::mechanism::Mechanism;
 use crate::model::{
     leading_state, rows_one_at_a_time, Extras, Layout, Model, Motion, Quantity, RowShared,
 };
-use crate::solve::{Batch, Dynamics, State, BATCH};
+use crate::solve::{Batch, Dynamics, State, BATCH, LANES};
 use num_dual::DualNum;
-use numerics::trig::{sin_cos, sin_cos_each};
+use numerics::trig::{sin_cos, sin_cos_each, sin_each};
 
 /// Time derivatives of the paper's variables.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -315,35 +316,31 @@ impl<const N: usize> Model<N> for Rolling<N> {
         }
     }
 
-    /// True unless the contact force is recorded.
-    fn rows_together(&self, quantities: &[Quantity]) -> bool {
-        !quantities
-            .iter()
-            .any(|q| matches!(q, Quantity::NormalForce | Quantity::Friction))
-    }
-
-    /// The rows column by column over the batch: the tilt's sines and cosines over the batch
-    /// ([`sin_cos_each`], the bits of [`sin_cos`]), then each column over every row, in the
-    /// AVX2 build where the processor has it (the same operations, so the same bits). Rows that
-    /// record the contact force go through [`Model::record_row`] one at a time.
+    /// The rows column by column over the batch: the tilt's sines (and cosines, where a column
+    /// needs them) over the batch ([`sin_each`], [`sin_cos_each`], the bits of [`sin_cos`]),
+    /// then each column over every row, in the AVX2 build where the processor has it (the same
+    /// operations, so the same bits).
     fn record_rows(
         &self,
         batch: &Batch<N>,
         quantities: &[Quantity],
         out: &mut Vec<f64>,
-        energy: &mut [f64],
+        energy: &mut [f64; BATCH],
+        normal_force: Option<&mut [f64; BATCH]>,
     ) {
-        if !self.rows_together(quantities) {
-            rows_one_at_a_time(self, batch, quantities, out, energy);
+        // Fewer rows than a register holds go one by one: the same bits, for less work than
+        // the batch's loops.
+        if batch.len() < LANES {
+            rows_one_at_a_time(self, batch, quantities, out, energy, normal_force);
             return;
         }
         #[cfg(target_arch = "x86_64")]
         if numerics::wider::avx2() {
             // SAFETY: the processor has AVX2, checked just above.
-            unsafe { self.rows_avx2(batch, quantities, out, energy) };
+            unsafe { self.rows_avx2(batch, quantities, out, energy, normal_force) };
             return;
         }
-        self.rows(batch, quantities, out, energy);
+        self.rows(batch, quantities, out, energy, normal_force);
     }
 }
 
@@ -356,30 +353,48 @@ impl<const N: usize> Rolling<N> {
         batch: &Batch<N>,
         quantities: &[Quantity],
         out: &mut Vec<f64>,
-        energy: &mut [f64],
+        energy: &mut [f64; BATCH],
+        normal_force: Option<&mut [f64; BATCH]>,
     ) {
-        self.rows(batch, quantities, out, energy);
+        self.rows(batch, quantities, out, energy, normal_force);
     }
 
-    /// [`Model::record_rows`]'s loops for rows without the contact force, in the build this is
-    /// inlined into: the sines, cosines, energies (and $L_z$) four rows at a time over the
-    /// batch's [`Batch::lanes`], then every row written from its columns.
+    /// [`Model::record_rows`]'s loops, in the build this is inlined into: the sines (and
+    /// cosines), energies (and $L_z$) four rows at a time over the batch's [`Batch::lanes`],
+    /// the contact force row by row where it is recorded or asked, then every row written from
+    /// its columns.
     #[inline(always)]
     fn rows(
         &self,
         batch: &Batch<N>,
         quantities: &[Quantity],
         out: &mut Vec<f64>,
-        energy: &mut [f64],
+        energy: &mut [f64; BATCH],
+        normal_force: Option<&mut [f64; BATCH]>,
     ) {
         let (n, m) = (batch.len(), batch.lanes());
         let width = 1 + quantities.iter().map(|q| q.columns().len()).sum::<usize>();
         if width > MAX_COLUMNS {
-            rows_one_at_a_time(self, batch, quantities, out, energy);
+            rows_one_at_a_time(self, batch, quantities, out, energy, normal_force);
             return;
         }
-        let (mut sin, mut cos) = ([0.0; BATCH], [0.0; BATCH]);
-        sin_cos_each(&batch.component_rows(0)[..m], &mut sin, &mut cos);
+        let records_force = quantities
+            .iter()
+            .any(|q| matches!(q, Quantity::NormalForce | Quantity::Friction));
+        let needs_force = records_force || normal_force.is_some();
+        let needs_cos = needs_force || quantities.contains(&Quantity::Lz);
+        let tilt = &batch.component_rows(0)[..m];
+        let mut sin = [0.0; BATCH];
+        let cos_rows;
+        let cos: &[f64; BATCH] = if needs_cos {
+            let mut c = [0.0; BATCH];
+            sin_cos_each(tilt, &mut sin, &mut c);
+            cos_rows = c;
+            &cos_rows
+        } else {
+            sin_each(tilt, &mut sin);
+            &[0.0; BATCH]
+        };
         let y = |i: usize| batch.component_rows(i);
         let at = |j: usize| Motion {
             alpha: y(0)[j],
@@ -387,16 +402,44 @@ impl<const N: usize> Rolling<N> {
             precession: y(2)[j],
             spin: y(3)[j],
         };
-        let mut e = [0.0; BATCH];
-        for (j, e) in e[..m].iter_mut().enumerate() {
-            *e = energy_at_tilt(&self.disk, &at(j), sin[j]);
-        }
-        energy[..n].copy_from_slice(&e[..n]);
-        let mut lz = [0.0; BATCH];
-        if quantities.contains(&Quantity::Lz) {
-            for (j, l) in lz[..m].iter_mut().enumerate() {
-                *l = lz_at_tilt(&self.disk, &at(j), (sin[j], cos[j]));
+        // Four rows at a time with no remainder: the rows past the samples are computed too.
+        for (k, e) in energy[..m].chunks_exact_mut(LANES).enumerate() {
+            for (l, e) in e.iter_mut().enumerate() {
+                let j = k * LANES + l;
+                *e = energy_at_tilt(&self.disk, &at(j), sin[j]);
             }
+        }
+        // The columns not asked for are left as zeros, and not written.
+        let lz_rows;
+        let lz: &[f64; BATCH] = if quantities.contains(&Quantity::Lz) {
+            let mut lz = [0.0; BATCH];
+            for (k, l) in lz[..m].chunks_exact_mut(LANES).enumerate() {
+                for (i, l) in l.iter_mut().enumerate() {
+                    let j = k * LANES + i;
+                    *l = lz_at_tilt(&self.disk, &at(j), (sin[j], cos[j]));
+                }
+            }
+            lz_rows = lz;
+            &lz_rows
+        } else {
+            &[0.0; BATCH]
+        };
+        let force_rows;
+        let force: &[[f64; BATCH]; 3] = if needs_force {
+            let mut force = [[0.0; BATCH]; 3];
+            for j in 0..n {
+                let (motion, sc) = (at(j), (sin[j], cos[j]));
+                let r = rates_at_tilt(&self.disk, &motion, sc, self.torque(&motion));
+                let f = contact_force_at_tilt(&self.disk, &motion, sc, &r);
+                (force[0][j], force[1][j], force[2][j]) = (f[0], f[1], f[2]);
+            }
+            force_rows = force;
+            &force_rows
+        } else {
+            &[[0.0; BATCH]; 3]
+        };
+        if let Some(f) = normal_force {
+            f[..n].copy_from_slice(&force[0][..n]);
         }
         let mut columns = [batch.time_rows(); MAX_COLUMNS];
         let mut c = 1;
@@ -407,8 +450,10 @@ impl<const N: usize> Rolling<N> {
                 Quantity::AlphaDot => (Some(y(1)), None),
                 Quantity::Precession => (Some(y(2)), None),
                 Quantity::Spin => (Some(y(3)), None),
-                Quantity::Energy => (Some(&e), None),
-                Quantity::Lz => (Some(&lz), None),
+                Quantity::Energy => (Some(&*energy), None),
+                Quantity::Lz => (Some(lz), None),
+                Quantity::NormalForce => (Some(&force[0]), None),
+                Quantity::Friction => (Some(&force[1]), Some(&force[2])),
                 Quantity::Heading => (state(self.layout.heading), None),
                 Quantity::Face => (state(self.layout.face), None),
                 Quantity::Path => (
@@ -427,43 +472,6 @@ impl<const N: usize> Rolling<N> {
             }
         }
         write_rows(&columns[..c], n, out);
-    }
-}
-
-/// The most columns [`Rolling`]'s rows made a batch at a time have (the time and every
-/// quantity it records, once each, is 11).
-const MAX_COLUMNS: usize = 16;
-
-/// Appends rows `0..n` of `columns` to `out`, row after row: row `j` is `columns[c][j]` for
-/// each `c`. The usual widths are written with the width known to the compiler.
-#[inline(always)]
-fn write_rows(columns: &[&[f64; BATCH]], n: usize, out: &mut Vec<f64>) {
-    match columns {
-        [a, b] => write_fixed(&[*a, *b], n, out),
-        [a, b, c] => write_fixed(&[*a, *b, *c], n, out),
-        [a, b, c, d] => write_fixed(&[*a, *b, *c, *d], n, out),
-        [a, b, c, d, e] => write_fixed(&[*a, *b, *c, *d, *e], n, out),
-        [a, b, c, d, e, f] => write_fixed(&[*a, *b, *c, *d, *e, *f], n, out),
-        [a, b, c, d, e, f, g] => write_fixed(&[*a, *b, *c, *d, *e, *f, *g], n, out),
-        [a, b, c, d, e, f, g, h] => write_fixed(&[*a, *b, *c, *d, *e, *f, *g, *h], n, out),
-        _ => {
-            for j in 0..n {
-                out.extend(columns.iter().map(|c| c[j]));
-            }
-        }
-    }
-}
-
-/// [`write_rows`] for `W` columns.
-#[inline(always)]
-fn write_fixed<const W: usize>(columns: &[&[f64; BATCH]; W], n: usize, out: &mut Vec<f64>) {
-    let start = out.len();
-    out.resize(start + n * W, 0.0);
-    let (rows, _) = out[start..].as_chunks_mut::<W>();
-    for (row, j) in rows.iter_mut().zip(0..BATCH) {
-        for (v, c) in row.iter_mut().zip(columns) {
-            *v = c[j];
-        }
     }
 }
 

@@ -116,19 +116,14 @@ impl Visit for Integrate<'_, '_> {
             }
         };
         let mut take_batch = |batch: &Batch<N>| recorder.borrow_mut().take_batch(batch);
-        let mut take = |t: f64, y: &State<N>| recorder.borrow_mut().take(t, y);
         let mut p = problem(model, scene, y0, scene.stop.time);
         p.progress = self.progress;
         p.sample = scene.sample;
         p.dense_samples = self.dense;
         if scene.sample.is_some() {
-            // A model that makes a batch's rows one at a time takes each sample as it comes,
-            // with no batch to gather it from.
-            if model.rows_together(&scene.record) {
-                p.on_batch = Some(&mut take_batch);
-            } else {
-                p.on_sample = Some(&mut take);
-            }
+            // Each step's samples come together, from one evaluation of its dense output over
+            // all of them, and go on as one call of rows.
+            p.on_batch = Some(&mut take_batch);
             p.on_step = Some(&mut step_end);
         }
         let sol = solve(p, &scene.settings)?;
@@ -223,23 +218,33 @@ impl<'m, 's, M: Model<N>, const N: usize> Recorder<'m, 's, M, N> {
     }
 
     /// Records the rows of a batch of samples, all of one step: as [`Recorder::take`] records
-    /// each, but with each column computed over the batch ([`Model::record_rows`]) where no
-    /// row of it is looked at for a loss of contact.
+    /// each, but with each column computed over the batch ([`Model::record_rows`]), the
+    /// normal force too where the rows are looked at for a loss of contact (the first row of
+    /// the batch with $F_z < 0$ is the one [`Recorder::take`] row after row finds).
     fn take_batch(&mut self, batch: &Batch<N>) {
         let looks = self.contact_lost.is_none()
             && self.checks_contact
             && self.watch.is_none_or(ContactWatch::armed);
-        if looks {
-            for (j, &t) in batch.times().iter().enumerate() {
-                self.take(t, &batch.state(j));
-            }
-            return;
-        }
         let n = batch.len();
-        let mut energy = [0.0; BATCH];
+        let (mut energy, mut force) = ([0.0; BATCH], [f64::NAN; BATCH]);
         self.rows.clear();
-        self.model
-            .record_rows(batch, &self.scene.record, &mut self.rows, &mut energy);
+        self.model.record_rows(
+            batch,
+            &self.scene.record,
+            &mut self.rows,
+            &mut energy,
+            looks.then_some(&mut force),
+        );
+        let lost = looks.then(|| force[..n].iter().position(|&f| f < 0.0));
+        if let Some(j) = lost.flatten() {
+            self.contact_lost = Some(ContactLost {
+                t: batch.times()[j],
+                normal_force: force[j],
+            });
+            if let Some(w) = self.watch {
+                w.mark_found();
+            }
+        }
         (self.sink)(&self.rows);
         self.recorded += n as u64;
         self.energy_change = self
