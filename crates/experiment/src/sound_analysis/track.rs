@@ -23,7 +23,8 @@
 //! its motion allows them; and the search narrows to
 //! $\pm 20\,\%$ about the predicted pitch. A frame so searched that lies more than [`JUMP`]
 //! off the predicted pitch, and more than twice the predicted motion (a bump, a hum line's
-//! subharmonic), is stray and left out of the prediction, one frame at a time. The track ends where $T$ would hold fewer than
+//! subharmonic), is stray and left out of the prediction; after [`LOST_AFTER`] such frames in
+//! a row the line is lost and searched for anew. The track ends where $T$ would hold fewer than
 //! `cycles` periods (the line smears near $t_0$) after four frames in a row held the line;
 //! that end counts as one smeared frame.
 //!
@@ -381,16 +382,20 @@ fn march(v: &[f64], t0: f64, fs: f64, s: &TrackSettings, hum: &[f64]) -> (Vec<Fr
         let band = (lo.max(5.0).max(2.5 / len_s), hi.min(2000.0));
         let searched = lo == 0.0;
         let est = an.fundamental(&v[pos..pos + len], band, s.min_snr, searched);
-        // One frame at a time may jump off the predicted pitch (a bump, a hum line's
-        // subharmonic): it is left out, and the line is looked for again about the prediction.
-        let after_jump = frames.last().is_some_and(|f: &Frame| f.jumped);
+        // A frame that jumps off the predicted pitch (a bump, a hum line's subharmonic) is
+        // left out, and the line is looked for again about the prediction; after
+        // [`LOST_AFTER`] in a row the line is lost, and searched for anew over the whole band.
         let jumped = match (predicted, est) {
             (Some((f, moved)), Some(e)) => {
                 let off = (e.f - f).abs();
-                !after_jump && off > JUMP * f && off > 2.0 * moved
+                off > JUMP * f && off > 2.0 * moved
             }
             _ => false,
         };
+        let in_a_row = frames.iter().rev().take_while(|f| f.jumped).count();
+        if jumped && in_a_row + 1 >= LOST_AFTER {
+            held.clear();
+        }
         let frame = Frame {
             a: t0 + pos as f64 / fs,
             b: t0 + (pos + len) as f64 / fs,
@@ -454,6 +459,9 @@ pub const STEP: f64 = 1.25;
 /// further off, and off by more than twice the motion predicted since the last frame held (near
 /// $t_0$ the prediction lags a pitch that runs away), heard something else.
 pub const JUMP: f64 = 0.1;
+
+/// Frames in a row off the predicted pitch (see [`JUMP`]) after which the line is lost.
+pub const LOST_AFTER: usize = 3;
 
 /// Longest frame (s) that follows a line too low for `cycles` periods in the longest frame
 /// (down to 3 Hz at the defaults): such a line moves slowly, and is followed, not cut.
