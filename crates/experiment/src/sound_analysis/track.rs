@@ -19,9 +19,12 @@
 //! to the singularity that $\dot f \propto f^q$ (fitted to the last three frames) predicts, so
 //! that no frame runs past the disk's end; a line too low for `cycles` periods in that frame
 //! (below 12 Hz at the defaults, or where a noisy $q$ predicts the end too near) is followed in
-//! frames of `cycles` periods, up to `search` seconds, where its motion allows them; and the
-//! search narrows to
-//! $\pm 20\,\%$ about the predicted pitch. The track ends where $T$ would hold fewer than
+//! frames of `cycles` periods, up to [`LOW_FRAME`] (a 4 Hz line is followed, not cut), where
+//! its motion allows them; and the search narrows to
+//! $\pm 20\,\%$ about the predicted pitch. A frame so searched that lies more than [`JUMP`]
+//! off the predicted pitch, and more than twice the predicted motion (a bump, a hum line's
+//! subharmonic), is stray and left out of the prediction; after [`LOST_AFTER`] such frames in
+//! a row the line is lost and searched for anew. The track ends where $T$ would hold fewer than
 //! `cycles` periods (the line smears near $t_0$) after four frames in a row held the line;
 //! that end counts as one smeared frame.
 //!
@@ -135,12 +138,16 @@ impl FrequencyTrack {
 }
 
 /// A frame as analysed: its span and what it held.
+#[derive(Clone, Copy)]
 struct Frame {
     a: f64,
     b: f64,
     est: Option<Estimate>,
     /// Searched over the whole band (no line held before it).
     searched: bool,
+    /// Searched about the line's predicted pitch but found more than [`JUMP`] off it: not on
+    /// the line, and not used to predict the next frame.
+    jumped: bool,
 }
 
 /// The pitch track of a uniformly sampled sound recording.
@@ -257,7 +264,9 @@ fn the_line(frames: &[Frame]) -> Vec<bool> {
     let mut run = vec![usize::MAX; frames.len()];
     let (mut id, mut last): (usize, Option<f64>) = (0, None);
     for (k, fr) in frames.iter().enumerate() {
-        let Some(e) = fr.est else { continue };
+        let Some(e) = fr.est.filter(|_| !fr.jumped) else {
+            continue;
+        };
         if let Some(p) = last {
             if fr.searched && (e.f / p).max(p / e.f) > STEP {
                 id += 1;
@@ -275,7 +284,9 @@ fn the_line(frames: &[Frame]) -> Vec<bool> {
 
 /// Ends `line` where the pitch stops rising: eq 79's rate rises ever faster toward $t_0$, so
 /// after two frames of the line $(t_1, f_1)$, $(t_2, f_2)$ whose pitch rose by more than three
-/// of their sigmas, the pitch at a later $t$ is at least
+/// of their sigmas, $t_1$ the latest frame at least half the line's span so far before $t_2$ (a
+/// long chord, so that one frame pulled a few per cent off, by a bump or a hum line it
+/// crosses, does not steepen it), the pitch at a later $t$ is at least
 /// $$f_2 + \tfrac12\,\frac{f_2 - f_1}{t_2 - t_1}\,(t - t_2)$$
 /// (half the chord's slope, a margin for the slope's noise). A frame more than three sigmas
 /// below that, after which no frame of the line comes back above it, is where the disk's line
@@ -291,8 +302,16 @@ fn end_at_stall(frames: &[Frame], line: &mut [bool]) {
                 .map(|e| (k, 0.5 * (frames[k].a + frames[k].b), e))
         })
         .collect();
+    let Some(&(_, t_first, _)) = held.first() else {
+        return;
+    };
     for i in 2..held.len() {
-        let ((_, t1, e1), (_, t2, e2)) = (held[i - 2], held[i - 1]);
+        let (_, t2, e2) = held[i - 1];
+        let j = (0..i - 1)
+            .rev()
+            .find(|&j| t2 - held[j].1 >= 0.5 * (t2 - t_first))
+            .unwrap_or(0);
+        let (_, t1, e1) = held[j];
         let rise = e2.f - e1.f;
         if rise <= 3.0 * e1.sigma.hypot(e2.sigma) {
             continue;
@@ -318,8 +337,11 @@ fn march(v: &[f64], t0: f64, fs: f64, s: &TrackSettings, hum: &[f64]) -> (Vec<Fr
     let mut frames: Vec<Frame> = Vec::new();
     let mut pos = 0usize;
     let mut smeared = 0;
+    // The frames the line's motion is predicted from: all but those that jumped off it.
+    let mut held: Vec<Frame> = Vec::new();
     loop {
-        let (len_s, lo, hi) = match predict(&frames) {
+        let mut predicted = None;
+        let (len_s, lo, hi) = match predict(&held, t0 + pos as f64 / fs) {
             Some(motion) => {
                 // T and the pitch at the frame's middle, each from the other (two rounds).
                 let mut t = s.max_frame;
@@ -332,18 +354,19 @@ fn march(v: &[f64], t0: f64, fs: f64, s: &TrackSettings, hum: &[f64]) -> (Vec<Fr
                     allowed = (s.kappa / fdot.max(f64::MIN_POSITIVE)).sqrt();
                     t = allowed.min(limit);
                 }
-                let n = frames.len();
+                let n = held.len();
                 // A line too low for `cycles` periods in the longest frame, or whose end three
                 // frames predict too near, but slow enough for a frame that holds them, is
                 // followed in that frame: only its motion ends the track.
                 let need = s.cycles / f_mid;
                 let mut holds = t * f_mid >= s.cycles;
-                if !holds && need <= allowed && need <= s.search {
+                if !holds && need <= allowed && need <= LOW_FRAME.max(s.search) {
                     (t, holds) = (need, true);
                 }
                 if holds {
+                    predicted = Some((f_mid, (f_mid - motion.f).abs()));
                     (t, 0.8 * f_mid, 1.2 * f_mid)
-                } else if n >= 4 && one_line(&frames[n - 4..]) {
+                } else if n >= 4 && one_line(&held[n - 4..]) {
                     smeared = 1;
                     break;
                 } else {
@@ -359,12 +382,31 @@ fn march(v: &[f64], t0: f64, fs: f64, s: &TrackSettings, hum: &[f64]) -> (Vec<Fr
         let band = (lo.max(5.0).max(2.5 / len_s), hi.min(2000.0));
         let searched = lo == 0.0;
         let est = an.fundamental(&v[pos..pos + len], band, s.min_snr, searched);
-        frames.push(Frame {
+        // A frame that jumps off the predicted pitch (a bump, a hum line's subharmonic) is
+        // left out, and the line is looked for again about the prediction; after
+        // [`LOST_AFTER`] in a row the line is lost, and searched for anew over the whole band.
+        let jumped = match (predicted, est) {
+            (Some((f, moved)), Some(e)) => {
+                let off = (e.f - f).abs();
+                off > JUMP * f && off > 2.0 * moved
+            }
+            _ => false,
+        };
+        let in_a_row = frames.iter().rev().take_while(|f| f.jumped).count();
+        if jumped && in_a_row + 1 >= LOST_AFTER {
+            held.clear();
+        }
+        let frame = Frame {
             a: t0 + pos as f64 / fs,
             b: t0 + (pos + len) as f64 / fs,
             est,
             searched,
-        });
+            jumped,
+        };
+        if !jumped {
+            held.push(frame);
+        }
+        frames.push(frame);
         pos += len;
     }
     (frames, smeared)
@@ -411,6 +453,20 @@ impl Motion {
 /// Largest ratio of consecutive frames' fundamentals on one line.
 pub const STEP: f64 = 1.25;
 
+/// Largest relative distance of a frame searched about the line's predicted pitch from that
+/// prediction: a frame moves the pitch by at most `kappa / cycles` (a sixth at the defaults) of
+/// itself, which the prediction from the last three frames follows to a few per cent; a frame
+/// further off, and off by more than twice the motion predicted since the last frame held (near
+/// $t_0$ the prediction lags a pitch that runs away), heard something else.
+pub const JUMP: f64 = 0.1;
+
+/// Frames in a row off the predicted pitch (see [`JUMP`]) after which the line is lost.
+pub const LOST_AFTER: usize = 3;
+
+/// Longest frame (s) that follows a line too low for `cycles` periods in the longest frame
+/// (down to 3 Hz at the defaults): such a line moves slowly, and is followed, not cut.
+pub const LOW_FRAME: f64 = 1.0;
+
 /// Whether `frames` all hold a fundamental on one line: each frame searched over the whole band
 /// within [`STEP`] of the one before (a frame searched about the line's predicted pitch is on
 /// it by its band).
@@ -422,8 +478,9 @@ fn one_line(frames: &[Frame]) -> bool {
         })
 }
 
-/// The line's motion from the last frames when the last three held it.
-fn predict(frames: &[Frame]) -> Option<Motion> {
+/// The line's motion from the last frames when the last three held it, for a frame that
+/// starts at `start` (s).
+fn predict(frames: &[Frame], start: f64) -> Option<Motion> {
     let mid = |f: &Frame| 0.5 * (f.a + f.b);
     let n = frames.len();
     if n < 3 || !one_line(&frames[n - 3..]) {
@@ -449,7 +506,7 @@ fn predict(frames: &[Frame]) -> Option<Motion> {
         t: mid(q),
         fdot,
         q: exponent,
-        end: q.b,
+        end: start,
     })
 }
 
@@ -478,3 +535,6 @@ fn add_motion(points: &mut [TrackPoint]) {
         p.sigma = p.sigma.hypot(motion);
     }
 }
+
+#[cfg(test)]
+mod diagnosis;
