@@ -1,5 +1,8 @@
 //! A short spin: one whose pitch track holds fewer frames of the disk's line than a fit of eq 79
-//! to the track is judged on ([`SOUND_MIN_FRAMES`]), analysed from its phase.
+//! to the track is judged on ([`SOUND_MIN_FRAMES`]), analysed from its phase. A track of enough
+//! frames whose own fit its checks refuse (frames off the line, a fit that cannot start or
+//! explains too little, a rise too small) is analysed from its phase the same way, on its frames
+//! that hold the line (the stray ones left out), and stands or is refused by the same rules.
 //!
 //! A spin of 1-3 s of sound from 4-30 Hz holds 5-100 turns but only a few frames of a quarter of
 //! a second: too few for the track's own fit, enough for the heading. The track's frames
@@ -80,6 +83,17 @@ const NORMAL_975: f64 = 1.959_963_984_540_054;
 /// normal's $z_{0.975}$ where $\nu$ is not a positive number.
 pub fn student_975(nu: f64) -> f64 {
     StudentsT::new(0.0, 1.0, nu).map_or(NORMAL_975, |t| t.inverse_cdf(0.975))
+}
+
+/// How the analysis from the phase is named for a track of `frames` frames of the line: "as a
+/// short spin" where they are fewer than [`SOUND_MIN_FRAMES`], else "from its phase alone" (a
+/// track of enough frames whose own fit its checks refuse).
+pub fn named(frames: usize) -> &'static str {
+    if frames < SOUND_MIN_FRAMES {
+        "as a short spin"
+    } else {
+        "from its phase alone"
+    }
 }
 
 /// The frames of the track: middles (s), $\ln\Omega$ and its sigma.
