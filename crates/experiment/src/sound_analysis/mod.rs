@@ -14,6 +14,7 @@ pub mod analysed;
 pub mod analysis;
 pub mod harmonic_agreement;
 pub mod high_pass;
+mod law_change;
 pub mod mains;
 pub mod phase_blocks;
 pub mod phase_fit;

@@ -511,4 +511,44 @@ mod tests {
             );
         }
     }
+
+    #[test]
+    fn a_track_whose_own_fit_is_refused_is_analysed_from_its_phase_alone() {
+        // 6.2 s of sound at 44.1 kS/s, hum, AGC, clipping: 16 frames of the line, whose own fit
+        // is refused, and the phase seeded from them stands.
+        let trace = recording(175);
+        let a = analyze_sound(&trace, &TrackSettings::default(), &Plausibility::default())
+            .expect("analysed from its phase alone");
+        assert!(a.track.points.len() >= SOUND_MIN_FRAMES, "{a}");
+        assert!(a.short_spin.is_some(), "{a}");
+        let (l, truth) = (a.law(), trace.truth.unwrap());
+        assert!(l.from_phase, "{a}");
+        assert!((l.beta - truth.beta).abs() <= 1.96 * l.beta_sigma, "{a}");
+        assert!((l.t0 - truth.t0).abs() <= 1.96 * l.t0_sigma, "{a}");
+        assert!(
+            a.to_string()
+                .contains("analysed from its phase alone: the track alone is refused"),
+            "{a}"
+        );
+    }
+
+    #[test]
+    fn tracks_of_enough_frames_the_phase_cannot_stand_in_for_are_refused_saying_why() {
+        let cases: [(u64, &str); 3] = [
+            (6, "misses a frame of the track by"),
+            (15, "could not be fitted (0 phase blocks"),
+            (
+                64,
+                "the line the track followed does not rise (60.1 Hz to 60.0 Hz)",
+            ),
+        ];
+        for (seed, what) in cases {
+            let r = refusal(seed);
+            assert!(
+                r.contains("nor can it be analysed from its phase alone: "),
+                "seed {seed}: {r}"
+            );
+            assert!(r.contains(what), "seed {seed}: {r}");
+        }
+    }
 }
