@@ -13,8 +13,9 @@
 pub mod analysed;
 pub mod analysis;
 pub mod harmonic_agreement;
+#[cfg(test)]
+mod heading_departure;
 pub mod high_pass;
-mod law_change;
 pub mod mains;
 pub mod phase_blocks;
 pub mod phase_fit;
