@@ -34,9 +34,9 @@ pub struct SoundAnalysis {
     /// The rate's rise over the phase's blocks, where the track's frames rose too little and the
     /// spin-down was judged on the phase instead ([`rise`](crate::sound_analysis::rise)).
     pub rise_on_phase: Option<f64>,
-    /// Where the track held too few frames of the line for its own fit and the phase's fit of a
-    /// short spin is the result ([`short_spin`](crate::sound_analysis::short_spin)): the track's
-    /// refusal it stands in for.
+    /// Where the track's own fit is refused (too few frames of the line for it, or frames its
+    /// checks refuse) and the phase's fit seeded from the track's frames is the result
+    /// ([`short_spin`](crate::sound_analysis::short_spin)): the track's refusal it stands in for.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub short_spin: Option<String>,
     /// The truth, for synthetic recordings.

@@ -66,19 +66,16 @@ pub fn analyze_sound_keeping_track(
     work.stage("fitting eq 79").map_err(|e| keep(e.into()))?;
     let file = trace.source.clone();
     let heard = what_was_heard(&track, trace.t.last().copied().unwrap_or(0.0));
-    // A track of fewer frames than its fit is judged on is analysed as a short spin, from its
-    // phase, before it is refused.
-    let refuse = |reason: String| match track.points.len() < SOUND_MIN_FRAMES {
-        true => match short_spin::analysed(trace, &track, checks, &reason) {
-            Ok(a) => Ok(a),
-            Err(why) => Err(keep(ExperimentError::Refused {
-                file: file.clone(),
-                reason: format!("{reason}; {heard}; nor can it be analysed as a short spin: {why}"),
-            })),
-        },
-        false => Err(keep(ExperimentError::Refused {
+    // A track whose own fit is refused (too few frames for it, or frames its checks refuse) is
+    // analysed from its phase, seeded by the track's frames on the line, before it is refused.
+    let refuse = |reason: String| match short_spin::analysed(trace, &track, checks, &reason) {
+        Ok(a) => Ok(a),
+        Err(why) => Err(keep(ExperimentError::Refused {
             file: file.clone(),
-            reason: format!("{reason}; {heard}"),
+            reason: format!(
+                "{reason}; {heard}; nor can it be analysed {}: {why}",
+                short_spin::named(track.points.len())
+            ),
         })),
     };
     let pts = &track.points;
@@ -381,9 +378,13 @@ impl fmt::Display for SoundAnalysis {
             (None, None) => {}
         }
         if let Some(why) = &self.short_spin {
+            let what = match self.track.points.len() < SOUND_MIN_FRAMES {
+                true => "a short spin",
+                false => "analysed from its phase alone",
+            };
             writeln!(
                 f,
-                "  a short spin: the track alone is refused ({why}); the phase's fit, seeded by a search over beta and t0 on the track's frames, is the result"
+                "  {what}: the track alone is refused ({why}); the phase's fit, seeded by a search over beta and t0 on the track's frames, is the result"
             )?;
         }
         if let Some(r) = self.rise_on_phase {

@@ -13,6 +13,8 @@
 pub mod analysed;
 pub mod analysis;
 pub mod harmonic_agreement;
+#[cfg(test)]
+mod heading_departure;
 pub mod high_pass;
 pub mod mains;
 pub mod phase_blocks;

@@ -1,5 +1,8 @@
 //! A short spin: one whose pitch track holds fewer frames of the disk's line than a fit of eq 79
-//! to the track is judged on ([`SOUND_MIN_FRAMES`]), analysed from its phase.
+//! to the track is judged on ([`SOUND_MIN_FRAMES`]), analysed from its phase. A track of enough
+//! frames whose own fit its checks refuse (frames off the line, a fit that cannot start or
+//! explains too little, a rise too small) is analysed from its phase the same way, on its frames
+//! that hold the line (the stray ones left out), and stands or is refused by the same rules.
 //!
 //! A spin of 1-3 s of sound from 4-30 Hz holds 5-100 turns but only a few frames of a quarter of
 //! a second: too few for the track's own fit, enough for the heading. The track's frames
@@ -80,6 +83,17 @@ const NORMAL_975: f64 = 1.959_963_984_540_054;
 /// normal's $z_{0.975}$ where $\nu$ is not a positive number.
 pub fn student_975(nu: f64) -> f64 {
     StudentsT::new(0.0, 1.0, nu).map_or(NORMAL_975, |t| t.inverse_cdf(0.975))
+}
+
+/// How the analysis from the phase is named for a track of `frames` frames of the line: "as a
+/// short spin" where they are fewer than [`SOUND_MIN_FRAMES`], else "from its phase alone" (a
+/// track of enough frames whose own fit its checks refuse).
+pub fn named(frames: usize) -> &'static str {
+    if frames < SOUND_MIN_FRAMES {
+        "as a short spin"
+    } else {
+        "from its phase alone"
+    }
 }
 
 /// The frames of the track: middles (s), $\ln\Omega$ and its sigma.
@@ -495,6 +509,46 @@ mod tests {
                 !r.contains("pulse") && !r.contains("light"),
                 "seed {seed}: {r}"
             );
+        }
+    }
+
+    #[test]
+    fn a_track_whose_own_fit_is_refused_is_analysed_from_its_phase_alone() {
+        // 6.2 s of sound at 44.1 kS/s, hum, AGC, clipping: 16 frames of the line, whose own fit
+        // is refused, and the phase seeded from them stands.
+        let trace = recording(175);
+        let a = analyze_sound(&trace, &TrackSettings::default(), &Plausibility::default())
+            .expect("analysed from its phase alone");
+        assert!(a.track.points.len() >= SOUND_MIN_FRAMES, "{a}");
+        assert!(a.short_spin.is_some(), "{a}");
+        let (l, truth) = (a.law(), trace.truth.unwrap());
+        assert!(l.from_phase, "{a}");
+        assert!((l.beta - truth.beta).abs() <= 1.96 * l.beta_sigma, "{a}");
+        assert!((l.t0 - truth.t0).abs() <= 1.96 * l.t0_sigma, "{a}");
+        assert!(
+            a.to_string()
+                .contains("analysed from its phase alone: the track alone is refused"),
+            "{a}"
+        );
+    }
+
+    #[test]
+    fn tracks_of_enough_frames_the_phase_cannot_stand_in_for_are_refused_saying_why() {
+        let cases: [(u64, &str); 3] = [
+            (6, "misses a frame of the track by"),
+            (15, "could not be fitted (0 phase blocks"),
+            (
+                64,
+                "the line the track followed does not rise (60.1 Hz to 60.0 Hz)",
+            ),
+        ];
+        for (seed, what) in cases {
+            let r = refusal(seed);
+            assert!(
+                r.contains("nor can it be analysed from its phase alone: "),
+                "seed {seed}: {r}"
+            );
+            assert!(r.contains(what), "seed {seed}: {r}");
         }
     }
 }
