@@ -19,6 +19,9 @@
 
 use wide::f64x2;
 
+#[cfg(target_arch = "x86_64")]
+mod avx512;
+
 /// The largest $|x|$ taken by the plain-double path: $2|x|/\pi$ stays below $2^{52}$.
 const PLAIN_LIMIT: f64 = 1e15;
 
@@ -190,6 +193,12 @@ fn each_avx2(x: &[f64], sin: &mut [f64], cos: &mut [f64]) {
 /// cosine's in an odd one, where they trade places) with the same operations as [`plain`]
 /// makes for it, so half the polynomial work. `sin` must be at least as long as `x`.
 pub fn sin_each(x: &[f64], sin: &mut [f64]) {
+    #[cfg(target_arch = "x86_64")]
+    if crate::wider::avx512() {
+        // SAFETY: the processor has AVX-512F, checked just above.
+        unsafe { avx512::sin_each_avx512(x, sin) };
+        return;
+    }
     #[cfg(target_arch = "x86_64")]
     if crate::wider::avx2() {
         // SAFETY: the processor has AVX2, checked just above.
@@ -478,6 +487,13 @@ mod tests {
             // SAFETY: the processor has AVX2, checked just above.
             unsafe { sin_each_avx2(&x, &mut s) };
             builds.push(("avx2", s));
+        }
+        #[cfg(target_arch = "x86_64")]
+        if crate::wider::avx512() {
+            let mut s = vec![0.0; n];
+            // SAFETY: the processor has AVX-512F, checked just above.
+            unsafe { avx512::sin_each_avx512(&x, &mut s) };
+            builds.push(("avx512", s));
         }
         for (i, &x) in x.iter().enumerate() {
             let expected = sin_cos(x).0;

@@ -118,8 +118,8 @@ mod tests {
 
     /// Every step of an orbit, its dense output at up to a full batch of times (and at fewer,
     /// so that a partial batch is seen): each state of the batch is the one `Dense::at` gives,
-    /// to the bit, in the build `Dense::fill` chooses (AVX2 where the processor has it) and in
-    /// the baseline one.
+    /// to the bit, in the build `Dense::fill` chooses (AVX-512 or AVX2 where the processor has
+    /// it), in the AVX2 one and in the baseline one.
     #[test]
     fn a_batch_from_the_dense_output_is_each_sample_alone_to_the_bit() {
         let mut s = Dop853::new(&Arenstorf, 1e-9, 1e-9, 0.0, start(), PERIOD);
@@ -137,13 +137,24 @@ mod tests {
             // The baseline build's loops, whichever build `fill` chose on this processor.
             let mut baseline = Batch::default();
             d.fill_rows(&times, &mut baseline);
+            // The AVX2 build too where `fill` chose the AVX-512 one.
+            let mut builds = vec![baseline];
+            #[cfg(target_arch = "x86_64")]
+            if numerics::wider::avx2() {
+                let mut avx2 = Batch::default();
+                // SAFETY: the processor has AVX2, checked just above.
+                unsafe { d.fill_avx2(&times, &mut avx2) };
+                builds.push(avx2);
+            }
             assert_eq!(b.len(), n);
             for (j, &t) in times.iter().enumerate() {
                 assert_eq!(b.times()[j], t);
                 let alone = d.at(t);
                 for i in 0..4 {
                     assert_eq!(b.component(i)[j].to_bits(), alone[i].to_bits());
-                    assert_eq!(baseline.component(i)[j].to_bits(), alone[i].to_bits());
+                    for other in &builds {
+                        assert_eq!(other.component(i)[j].to_bits(), alone[i].to_bits());
+                    }
                 }
                 assert_eq!(b.state(j), alone);
             }

@@ -39,6 +39,12 @@ impl<const N: usize> Dense<N> {
     /// component at a time over all the rows, so that the rows are evaluated side by side.
     pub(super) fn fill(&self, times: &[f64], batch: &mut Batch<N>) {
         #[cfg(target_arch = "x86_64")]
+        if numerics::wider::avx512() {
+            // SAFETY: the processor has AVX-512F, checked just above.
+            unsafe { self.fill_avx512(times, batch) };
+            return;
+        }
+        #[cfg(target_arch = "x86_64")]
         if numerics::wider::avx2() {
             // SAFETY: the processor has AVX2, checked just above.
             unsafe { self.fill_avx2(times, batch) };
@@ -51,7 +57,7 @@ impl<const N: usize> Dense<N> {
     /// four rows at a time.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
-    fn fill_avx2(&self, times: &[f64], batch: &mut Batch<N>) {
+    pub(super) fn fill_avx2(&self, times: &[f64], batch: &mut Batch<N>) {
         use core::arch::x86_64::*;
         let mut s = [0.0; BATCH];
         for (s, t) in s.iter_mut().zip(times) {
@@ -78,6 +84,60 @@ impl<const N: usize> Dense<N> {
                 p = add(c[0], mul(p, s));
                 // SAFETY: `y` holds four doubles; an unaligned store.
                 unsafe { _mm256_storeu_pd(y.as_mut_ptr(), p) };
+            }
+        }
+    }
+
+    /// [`Dense::fill`] in AVX-512 registers: [`Dense::fill_rows`]'s operations one for one, on
+    /// eight rows at a time, and on the last four in AVX2 registers where the batch's rows
+    /// are not a multiple of eight.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx512f")]
+    pub(super) fn fill_avx512(&self, times: &[f64], batch: &mut Batch<N>) {
+        use core::arch::x86_64::*;
+        let mut s = [0.0; BATCH];
+        for (s, t) in s.iter_mut().zip(times) {
+            *s = (t - self.t_old) / self.h;
+        }
+        batch.set_times(times);
+        let m = batch.lanes();
+        let octets = m - m % 8;
+        let r = &self.r;
+        let (add, mul) = (_mm512_add_pd, _mm512_mul_pd);
+        for (i, out) in batch.components_mut().iter_mut().enumerate() {
+            let c: [__m512d; 8] = std::array::from_fn(|k| _mm512_set1_pd(r[k][i]));
+            for (y, s) in out[..octets]
+                .chunks_exact_mut(8)
+                .zip(s[..octets].chunks_exact(8))
+            {
+                // SAFETY: `s` holds eight doubles; an unaligned load.
+                let s = unsafe { _mm512_loadu_pd(s.as_ptr()) };
+                let s1 = _mm512_sub_pd(_mm512_set1_pd(1.0), s);
+                let mut p = add(c[6], mul(c[7], s));
+                p = add(c[5], mul(p, s1));
+                p = add(c[4], mul(p, s));
+                p = add(c[3], mul(p, s1));
+                p = add(c[2], mul(p, s));
+                p = add(c[1], mul(p, s1));
+                p = add(c[0], mul(p, s));
+                // SAFETY: `y` holds eight doubles; an unaligned store.
+                unsafe { _mm512_storeu_pd(y.as_mut_ptr(), p) };
+            }
+            if octets < m {
+                let (add, mul) = (_mm256_add_pd, _mm256_mul_pd);
+                let c: [__m256d; 8] = std::array::from_fn(|k| _mm256_set1_pd(r[k][i]));
+                // SAFETY: rows `octets..m` are four; an unaligned load.
+                let s = unsafe { _mm256_loadu_pd(s[octets..m].as_ptr()) };
+                let s1 = _mm256_sub_pd(_mm256_set1_pd(1.0), s);
+                let mut p = add(c[6], mul(c[7], s));
+                p = add(c[5], mul(p, s1));
+                p = add(c[4], mul(p, s));
+                p = add(c[3], mul(p, s1));
+                p = add(c[2], mul(p, s));
+                p = add(c[1], mul(p, s1));
+                p = add(c[0], mul(p, s));
+                // SAFETY: rows `octets..m` are four; an unaligned store.
+                unsafe { _mm256_storeu_pd(out[octets..m].as_mut_ptr(), p) };
             }
         }
     }

@@ -420,8 +420,29 @@ impl<'a, D: Dynamics<N>, const N: usize> Dop853<'a, D, N> {
 
     /// The dense output of the last accepted step: three more evaluations (counted as extra),
     /// made only for a step that needs it (an event or a sample inside it). Valid until the
-    /// next call to [`Dop853::step`].
+    /// next call to [`Dop853::step`]. In the AVX2 build where the processor has it
+    /// ([`numerics::wider`]): the same IEEE operations in the same order (no fused multiply-add),
+    /// so the same bits, four components to a register.
     pub(super) fn dense(&mut self) -> Dense<N> {
+        #[cfg(target_arch = "x86_64")]
+        if numerics::wider::avx2() {
+            // SAFETY: the processor has AVX2, checked just above.
+            return unsafe { self.dense_avx2() };
+        }
+        self.dense_rows()
+    }
+
+    /// [`Dop853::dense`] compiled for AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    fn dense_avx2(&mut self) -> Dense<N> {
+        self.dense_rows()
+    }
+
+    /// [`Dop853::dense`]'s stages and coefficients, in the build this is inlined into (the
+    /// baseline one when called directly).
+    #[inline(always)]
+    fn dense_rows(&mut self) -> Dense<N> {
         let (y, h, f) = (self.y_old, self.h_old, self.f);
         let k = &self.k;
         let mut k14 = State::<N>::zeros();

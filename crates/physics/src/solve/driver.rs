@@ -11,6 +11,7 @@
 //! invariant before the next step starts from it (one more evaluation per step, counted).
 
 use super::dop853::{Dense, Dop853, Outcome};
+use super::grid::grid_times;
 use super::settings::RTOL_LEAST;
 use super::{
     Batch, BatchSink, Dynamics, Ending, Event, Problem, Settings, Sink, Solution, State, BATCH,
@@ -111,15 +112,9 @@ impl<'s, const N: usize> Sampler<'s, N> {
         loop {
             // The next BATCH times of the grid at once, then those of this step, which come
             // first: the grid's times rise with their index and the test is monotone.
+            // (next + k) as a double, exactly: both are integers below 2^53.
             let base = (self.next as i64) as f64;
-            for (k, t) in times.iter_mut().enumerate() {
-                // (next + k) as a double, exactly: both are integers below 2^53.
-                *t = self.origin + self.dt * (base + k as f64);
-            }
-            let n = times
-                .iter()
-                .map(|&t| usize::from(!(t > t_b || t >= guard)))
-                .sum::<usize>();
+            let n = grid_times(self.origin, self.dt, base, t_b, guard, &mut times);
             self.next += n as u64;
             if n == 0 {
                 return;

@@ -26,6 +26,7 @@ mod dense;
 mod dense_error;
 mod dop853;
 mod driver;
+mod grid;
 mod outcome;
 mod projection;
 mod settings;
