@@ -16,7 +16,8 @@ use crate::sound_analysis::phase_blocks::{BlockSettings, Samples};
 use crate::sound_analysis::phase_fit::{fit_phase, PhaseFit};
 use crate::sound_analysis::refusal::{what_was_heard, SoundRefusal};
 use crate::sound_analysis::short_spin;
-use crate::sound_analysis::track::{frequency_track, FrequencyTrack, TrackSettings};
+use crate::sound_analysis::track::rising::{rises, LineEnd};
+use crate::sound_analysis::track::{frequency_track, FrequencyTrack, TrackPoint, TrackSettings};
 pub use crate::sound_analysis::track_law::TrackFit;
 pub(crate) use crate::sound_analysis::track_law::TrackLaw;
 use crate::sound_analysis::turn_count::TurnCount;
@@ -190,16 +191,22 @@ pub fn analyze_sound_keeping_track(
 }
 
 /// The pitch track of `trace`: with `settings`, and where that holds fewer than
-/// [`SOUND_MIN_FRAMES`] frames of the line (a spin of a few seconds of sound holds only a few
-/// search frames of the default length), with search frames halved down to 0.125 s, and where
-/// none holds that many, the same lengths again at a signal-to-noise threshold [`WEAK_LINE`]
-/// times lower; the track of most frames kept (the first error when none could be made).
+/// [`SOUND_MIN_FRAMES`] frames of a line that rises as a disk's does ([`rises`]; a spin of a
+/// few seconds of sound holds only a few search frames of the default length), with search
+/// frames halved down to 0.125 s, and where none holds that many, the same lengths again at a
+/// signal-to-noise threshold [`WEAK_LINE`] times lower; of the tracks whose line rises, else of
+/// all, the track of most frames kept (the first error when none could be made).
 fn track_of(trace: &Trace, settings: &TrackSettings) -> Result<FrequencyTrack, ExperimentError> {
     let mut best = frequency_track(trace, settings);
     let mut s = *settings;
-    let held =
-        |t: &Result<FrequencyTrack, ExperimentError>| t.as_ref().map_or(0, |t| t.points.len());
-    while held(&best) < SOUND_MIN_FRAMES && s.search > 0.125 + 1e-9 {
+    let span = trace.t.last().copied().unwrap_or(0.0) - trace.t.first().copied().unwrap_or(0.0);
+    // A track whose line rises as a disk's does ranks above one whose line holds still.
+    let held = |t: &Result<FrequencyTrack, ExperimentError>| {
+        t.as_ref()
+            .map_or((false, 0), |t| (track_rises(t, span), t.points.len()))
+    };
+    let enough = |k: (bool, usize)| k.0 && k.1 >= SOUND_MIN_FRAMES;
+    while !enough(held(&best)) && s.search > 0.125 + 1e-9 {
         s.search = (0.5 * s.search).max(0.125);
         s.max_frame = s.max_frame.min(s.search);
         let shorter = frequency_track(trace, &s);
@@ -211,7 +218,7 @@ fn track_of(trace: &Trace, settings: &TrackSettings) -> Result<FrequencyTrack, E
     // high-pass, a quiet spin in room noise) is looked for again at a third of it.
     let mut weak = *settings;
     weak.min_snr = settings.min_snr / WEAK_LINE;
-    while held(&best) < SOUND_MIN_FRAMES && weak.search > 0.125 - 1e-9 {
+    while !enough(held(&best)) && weak.search > 0.125 - 1e-9 {
         let again = frequency_track(trace, &weak);
         if held(&again) > held(&best) {
             best = again;
@@ -220,6 +227,20 @@ fn track_of(trace: &Trace, settings: &TrackSettings) -> Result<FrequencyTrack, E
         weak.max_frame = weak.max_frame.min(weak.search);
     }
     best
+}
+
+/// Whether the line `track` holds, from its first point to its last, rises as a disk's does in
+/// a recording of `span` seconds ([`rises`]).
+fn track_rises(track: &FrequencyTrack, span: f64) -> bool {
+    let end = |p: &TrackPoint| LineEnd {
+        t: 0.5 * (p.a + p.b),
+        f: p.omega,
+        sigma: p.sigma,
+    };
+    match (track.points.first(), track.points.last()) {
+        (Some(a), Some(b)) => rises(end(a), end(b), span),
+        _ => false,
+    }
 }
 
 /// How much lower the signal-to-noise threshold is where no frame length holds a line at the

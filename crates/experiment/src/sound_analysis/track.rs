@@ -37,7 +37,8 @@
 //! from the neighbouring points).
 //!
 //! **Left out.** Frames off the line the track follows (cut where a searched frame's
-//! fundamental jumps by more than [`STEP`] from the last one held; the longest run is the line):
+//! fundamental jumps by more than [`STEP`] from the last one held; the longest run is the line,
+//! the longest of those that rise as eq 79 does where any does, see [`rising`]):
 //! before the line's first frame or after its last, as outside (skipped: the disk is not yet
 //! followed there, or no longer heard; the line ends where its pitch stops rising, see
 //! `end_at_stall`), and between them as stray; frames whose two estimators disagree by more than 5 of their sigmas plus a
@@ -49,6 +50,7 @@ use crate::error::ExperimentError;
 use crate::sound_analysis::mains::hum::{hum_lines, subtract_hum};
 use crate::sound_analysis::spectrum::{Analyser, Estimate};
 use crate::trace::Trace;
+use rising::{rises, LineEnd};
 use serde::{Deserialize, Serialize};
 use std::borrow::Cow;
 use std::f64::consts::PI;
@@ -259,7 +261,8 @@ pub fn frequency_track(
 /// Which frames lie on the line the track follows: the frames holding a fundamental are cut into
 /// runs wherever a searched frame's fundamental lies more than [`STEP`] from the last one held
 /// (silent frames between do not cut a run); the run of most frames is the line (the earliest
-/// of equal runs).
+/// of equal runs), of those that rise as a disk's does ([`rising`]) where any does: a line that
+/// holds still (a ring after $t_0$, a mains line) is not the disk's.
 fn the_line(frames: &[Frame]) -> Vec<bool> {
     let mut run = vec![usize::MAX; frames.len()];
     let (mut id, mut last): (usize, Option<f64>) = (0, None);
@@ -276,7 +279,27 @@ fn the_line(frames: &[Frame]) -> Vec<bool> {
         run[k] = id;
     }
     let count = |i: usize| run.iter().filter(|&&r| r == i).count();
-    let best = (0..=id).rev().max_by_key(|&i| count(i)).unwrap_or(0);
+    let span = frames.last().map_or(0.0, |l| l.b) - frames.first().map_or(0.0, |f| f.a);
+    let end = |k: Option<usize>| {
+        let fr = &frames[k?];
+        fr.est.map(|e| LineEnd {
+            t: 0.5 * (fr.a + fr.b),
+            f: e.f,
+            sigma: e.sigma,
+        })
+    };
+    let rising = |i: usize| {
+        let first = end(run.iter().position(|&r| r == i));
+        let last = end(run.iter().rposition(|&r| r == i));
+        first.zip(last).is_some_and(|(a, b)| rises(a, b, span))
+    };
+    // The longest run that rises as a disk's does, else the longest.
+    let any_rising = (0..=id).any(rising);
+    let best = (0..=id)
+        .rev()
+        .filter(|&i| !any_rising || rising(i))
+        .max_by_key(|&i| count(i))
+        .unwrap_or(0);
     let mut line: Vec<bool> = run.iter().map(|&r| r == best).collect();
     end_at_stall(frames, &mut line);
     line
@@ -538,3 +561,4 @@ fn add_motion(points: &mut [TrackPoint]) {
 
 #[cfg(test)]
 mod diagnosis;
+pub mod rising;

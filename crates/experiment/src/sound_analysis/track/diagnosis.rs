@@ -43,9 +43,13 @@ fn print_the_frames_against_the_truth() {
             room.hum.lines.len(), room.hum.mains, room.hum.lines, room.bumps, room.agc, room.shudder
         );
         let s = TrackSettings::default();
-        for search in [0.5, 0.25, 0.125] {
+        for (search, min_snr) in [0.5, 0.25, 0.125]
+            .into_iter()
+            .flat_map(|x| [(x, s.min_snr), (x, s.min_snr / 3.0)])
+        {
             let mut s = s;
             s.search = search;
+            s.min_snr = min_snr;
             s.max_frame = s.max_frame.min(search);
             let hum = hum_lines(&trace.v, fs);
             let mut v = trace.v.clone();
@@ -53,7 +57,7 @@ fn print_the_frames_against_the_truth() {
             let (frames, smeared) = march(&v, trace.t[0], fs, &s, &hum);
             let line = the_line(&frames);
             println!(
-                "  search {search} s: hum {hum:.1?}, {} frames, smeared end {smeared}",
+                "  search {search} s, min_snr {min_snr}: hum {hum:.1?}, {} frames, smeared end {smeared}",
                 frames.len()
             );
             for (fr, on) in frames.iter().zip(&line) {
