@@ -538,8 +538,8 @@ mod tests {
             (6, "misses a frame of the track by"),
             (15, "could not be fitted (0 phase blocks"),
             (
-                64,
-                "the line the track followed does not rise (60.1 Hz to 60.0 Hz)",
+                101,
+                "the line the track followed does not rise (49.4 Hz to 49.6 Hz)",
             ),
         ];
         for (seed, what) in cases {
