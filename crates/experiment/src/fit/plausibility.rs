@@ -46,6 +46,10 @@ pub struct Plausibility {
     pub beta_range: (f64, f64),
 }
 
+/// The top of the default range of physical dissipation laws' $\beta$
+/// ([`Plausibility::beta_range`]).
+pub const BETA_MAX: f64 = 8.0;
+
 impl Default for Plausibility {
     fn default() -> Self {
         Self {
@@ -55,7 +59,7 @@ impl Default for Plausibility {
             min_rise: 1.5,
             min_r2: 0.99,
             max_gap: 0.25,
-            beta_range: (-0.5, 8.0),
+            beta_range: (-0.5, BETA_MAX),
         }
     }
 }

@@ -13,8 +13,8 @@
 //! taken for the disk's while a track that rises is made.
 
 /// The top of the range of $\beta$ a line's least rise is reckoned with (see the module's
-/// documentation).
-pub const BETA_MAX: f64 = 8.0;
+/// documentation): the default range's.
+pub use crate::fit::plausibility::BETA_MAX;
 
 /// One end of a line: its middle time (s), pitch and the pitch's standard uncertainty (any one
 /// unit of frequency).
