@@ -27,7 +27,7 @@ tool's scene records (the scene run as `simulate` runs it, against `t_eval` foll
 energy, its largest change and the normal force in numpy); each side's largest error in alpha
 over the rows against the same reference, the ratio of times at equal alpha error.
 
-Usage: compare.py [--quick] [--sampled-only] [--out DIR] [--repeats N]
+Usage: compare.py [--quick] [--sampled-only] [--out DIR] [--repeats N] [--processes N]
 """
 
 import argparse
@@ -68,13 +68,26 @@ def machine():
     }
 
 
-def rust_side(quick):
+def rust_side(quick, processes):
+    """The Rust side's JSON, run in `processes` separate processes (one with --quick): a
+    process's own layout in memory moves its timings by up to a third from one process to the
+    next, so each timed point's wall seconds are the median over the processes (each already
+    the median of its runs); everything else is the first process's, the same in all."""
     cmd = ["cargo", "bench", "--quiet", "--bench", "benches", "--", "--scipy-reference"]
     if quick:
         cmd.append("--quick")
-    print("running:", " ".join(cmd), file=sys.stderr)
-    out = subprocess.run(cmd, cwd=ROOT, check=True, stdout=subprocess.PIPE, text=True)
-    return json.loads(out.stdout)
+        processes = 1
+    print("running:", " ".join(cmd), f"({processes} processes)", file=sys.stderr)
+    runs = [json.loads(subprocess.run(cmd, cwd=ROOT, check=True, stdout=subprocess.PIPE,
+                                      text=True).stdout) for _ in range(max(1, processes))]
+    data = runs[0]
+    for i, p in enumerate(data["rust"]):
+        p["wall_seconds"] = statistics.median(r["rust"][i]["wall_seconds"] for r in runs)
+    for i, p in enumerate(data["sampled"]["rust"]):
+        for key in ("wall_seconds", "states_wall_seconds"):
+            p[key] = statistics.median(r["sampled"]["rust"][i][key] for r in runs)
+    data["processes"] = len(runs)
+    return data
 
 
 def plain_rhs(disk, counter):
@@ -308,13 +321,15 @@ def main():
     ap.add_argument("--quick", action="store_true", help="time each point once")
     ap.add_argument("--out", default=os.path.join(ROOT, "target", "compare"))
     ap.add_argument("--repeats", type=int, default=15, help="most timed runs per Python point")
+    ap.add_argument("--processes", type=int, default=5,
+                    help="separate processes of the Rust side, whose timings' median is used")
     ap.add_argument("--sampled-only", action="store_true",
                     help="only the sampled comparison (no unsampled runs on the Python side)")
     args = ap.parse_args()
     repeats, budget = (1, 0.0) if args.quick else (args.repeats, 2.0)
 
     info = machine()
-    data = rust_side(args.quick)
+    data = rust_side(args.quick, args.processes)
     ref = data["reference"]
     print(f"{info['date']}; {info['cpu']} ({info['cores']} cores), {info['system']}; "
           f"Python {info['python']}, SciPy {info['scipy']}")
