@@ -237,6 +237,15 @@ pub trait Model<const N: usize>: Dynamics<N> {
     ) {
         rows_one_at_a_time(self, batch, quantities, out, energy, normal_force);
     }
+
+    /// The normal force $F_z$ (N) in state `y` from the state's time derivative `dy` (the
+    /// right-hand side there, which an integrator has at each step's end), and the largest
+    /// amount by which it may differ from the $F_z$ of [`Model::record_row`] (round-off: the
+    /// two take the tilt's sine from different functions); `None` for a model that computes its
+    /// force otherwise or has none.
+    fn normal_force_from_rates(&self, _y: &State<N>, _dy: &State<N>) -> Option<(f64, f64)> {
+        None
+    }
 }
 
 /// [`Model::record_rows`] made row by row through [`Model::record_row`]: the trait's default,

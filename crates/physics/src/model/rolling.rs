@@ -274,6 +274,29 @@ impl<const N: usize> Model<N> for Rolling<N> {
         leading_state(&[m.alpha, m.alpha_dot, m.precession, m.spin])
     }
 
+    /// Eq 20's $F_z$ with $\ddot\alpha$, $\dot\Omega$ and $\dot\omega_1$ read from `dy` (the
+    /// right-hand side, torque included) instead of solved from eqs 23-25 again. The
+    /// right-hand side took the C library's sine and cosine and the row takes
+    /// [`sin_cos`]'s, within 2 ulp of them, so the two differ by a few ulp of the largest term
+    /// ($m g$ or $m a$ times an acceleration); the bound returned is $10^{-12}$ of their sum.
+    fn normal_force_from_rates(&self, y: &State<N>, dy: &State<N>) -> Option<(f64, f64)> {
+        let m = self.motion(y);
+        let r = Rates {
+            alpha_ddot: dy[1],
+            precession_dot: dy[2],
+            spin_dot: dy[3],
+        };
+        let fz = contact_force_at_tilt(&self.disk, &m, sin_cos(m.alpha), &r)[0];
+        let d = &self.disk;
+        let accelerations = d.a
+            * (r.alpha_ddot.abs()
+                + (m.spin * m.precession).abs()
+                + m.alpha_dot * m.alpha_dot
+                + (m.alpha_dot * m.precession).abs()
+                + r.spin_dot.abs());
+        Some((fz, 1e-12 * d.m * (d.g + accelerations)))
+    }
+
     /// The row with the tilt's sine and cosine taken once, and the accelerations (for the
     /// contact force) only when the normal force or the friction is asked.
     fn record_row(

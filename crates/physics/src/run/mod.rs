@@ -110,9 +110,9 @@ impl Visit for Integrate<'_, '_> {
             .map(|dt| ContactWatch::new(model, 0.0, &y0, dt));
         let recorder = RefCell::new(Recorder::new(model, scene, &y0, self.sink, watch.as_ref()));
         let mut scratch = Vec::new();
-        let mut step_end = |t: f64, y: &State<N>| {
+        let mut step_end = |t: f64, y: &State<N>, dy: Option<&State<N>>| {
             if let Some(w) = &watch {
-                w.step_end(model, t, y, &mut scratch);
+                w.step_end(model, t, y, dy, &mut scratch);
             }
         };
         let mut take_batch = |batch: &Batch<N>| recorder.borrow_mut().take_batch(batch);

@@ -257,6 +257,12 @@ impl<'a, D: Dynamics<N>, const N: usize> Dop853<'a, D, N> {
         }
     }
 
+    /// The right-hand side at the end of the last accepted step, $f(t, y)$ (its stage 13,
+    /// which the next step takes as its stage 1).
+    pub(super) fn end_rate(&self) -> &State<N> {
+        &self.k[12]
+    }
+
     /// Replaces the state reached by the last accepted step (a projection moved it) and
     /// evaluates the first stage of the next step there (1 evaluation).
     pub(super) fn restart_from(&mut self, y: State<N>) {

@@ -242,7 +242,7 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
             let d = s.dense();
             let (index, t_e, y_e) = locate(&problem.events, &d, t_a, t_b, y_b);
             if let Some(on_step) = on_step.as_mut() {
-                on_step(t_e, &y_e);
+                on_step(t_e, &y_e, None);
             }
             if let Some(sm) = sampler.as_mut() {
                 let mut extra = 0;
@@ -263,7 +263,7 @@ pub(super) fn run<D: Dynamics<N>, const N: usize>(
             };
         }
         if let Some(on_step) = on_step.as_mut() {
-            on_step(t_b, &y_b);
+            on_step(t_b, &y_b, Some(s.end_rate()));
         }
         if let Some(sm) = sampler.as_mut() {
             if sm.due(t_b, t_end) {

@@ -73,6 +73,10 @@ impl<'a, const N: usize> Event<'a, N> {
 /// Takes each sample of a sampled run as it is made ([`Problem::on_sample`]).
 pub type Sink<'a, const N: usize> = &'a mut dyn FnMut(f64, &State<N>);
 
+/// Takes the end of each accepted step of a sampled run ([`Problem::on_step`]): its time, its
+/// state and, where the engine has it, the right-hand side there.
+pub type StepSink<'a, const N: usize> = &'a mut dyn FnMut(f64, &State<N>, Option<&State<N>>);
+
 /// Moves a state back onto an invariant ([`Problem::project`]).
 pub type Projector<'a, const N: usize> = Box<dyn Fn(&mut State<N>) + 'a>;
 
@@ -104,9 +108,11 @@ pub struct Problem<'a, D, const N: usize> {
     /// Takes the end of every accepted step of a sampled run, each before the samples that
     /// lie in that step go to [`Problem::on_sample`] (a step's samples are those after its
     /// start and up to its end), so that a recorder can watch a quantity at the steps and
-    /// look closer only in the steps where it changes sign. A run stopped by an event passes
-    /// the located event's time and state as the end of its last step.
-    pub on_step: Option<Sink<'a, N>>,
+    /// look closer only in the steps where it changes sign. The tool's own DOP853 hands on the
+    /// right-hand side at the step's end too (its last stage, which the next step starts
+    /// from); re-integrated samples and a located event do not. A run stopped by an event
+    /// passes the located event's time and state as the end of its last step.
+    pub on_step: Option<StepSink<'a, N>>,
     /// Takes the samples of a sampled run a step's worth at a time (at most [`BATCH`] in one
     /// call), in place of [`Problem::on_sample`] when both are given: the samples of DOP853's
     /// dense output are then evaluated side by side. Each [`Problem::on_step`] call comes

@@ -381,7 +381,7 @@ fn resample<const N: usize, D: Dynamics<N>>(
     deadline: &Deadline,
     stats: &mut Stats,
     mut sink: Option<Sink<'_, N>>,
-    mut on_step: Option<Sink<'_, N>>,
+    mut on_step: Option<super::StepSink<'_, N>>,
 ) -> (Vec<f64>, Vec<State<N>>, bool) {
     let Some((&t_last, &y_last)) = ts.last().zip(ys.last()) else {
         return (Vec::new(), Vec::new(), true);
@@ -412,7 +412,7 @@ fn resample<const N: usize, D: Dynamics<N>>(
         // The steps up to the one that holds t: the first, and each that starts before t.
         if let Some(on_step) = on_step.as_mut() {
             while reported < ts.len() && (reported == 1 || ts[reported - 1] < t) {
-                on_step(ts[reported], &ys[reported]);
+                on_step(ts[reported], &ys[reported], None);
                 reported += 1;
             }
         }
@@ -428,7 +428,7 @@ fn resample<const N: usize, D: Dynamics<N>>(
     }
     if let Some(on_step) = on_step.as_mut() {
         for (t, y) in ts.iter().zip(ys).skip(reported) {
-            on_step(*t, y);
+            on_step(*t, y, None);
         }
     }
     out_t.push(t_last);
