@@ -7,11 +7,41 @@
 //! writes into the rows' reserved space without zeroing it first. The numbers are only moved,
 //! never computed, so both builds write the same bits.
 
+use crate::model::Quantity;
 use crate::solve::{BATCH, LANES};
 
 /// The most columns a batch's rows have here (the time and every quantity a model records,
 /// once each, is 11).
 pub(crate) const MAX_COLUMNS: usize = 16;
+
+/// One or two columns of a quantity over a batch's rows: `None` for a quantity the model does
+/// not record (a validated scene never asks for one).
+pub(crate) type QuantityColumns<'a> = (Option<&'a [f64; BATCH]>, Option<&'a [f64; BATCH]>);
+
+/// The columns of a batch's rows as [`write_rows`] takes them: `time` first, then the one or
+/// two columns `columns_of` gives for each of `quantities` in turn; with how many there are.
+/// The batch's width must be at most [`MAX_COLUMNS`].
+#[inline(always)]
+pub(crate) fn gather_columns<'a>(
+    time: &'a [f64; BATCH],
+    quantities: &[Quantity],
+    mut columns_of: impl FnMut(Quantity) -> QuantityColumns<'a>,
+) -> ([&'a [f64; BATCH]; MAX_COLUMNS], usize) {
+    let mut columns = [time; MAX_COLUMNS];
+    let mut c = 1;
+    for &q in quantities {
+        let (first, second) = columns_of(q);
+        debug_assert!(
+            first.is_some(),
+            "validated scenes only record what the model provides"
+        );
+        for column in [first, second].into_iter().flatten() {
+            columns[c] = column;
+            c += 1;
+        }
+    }
+    (columns, c)
+}
 
 /// Appends rows `0..n` (`n` at most [`BATCH`]) of `columns` to `out`, row after row: row `j` is
 /// `columns[c][j]` for each `c`.

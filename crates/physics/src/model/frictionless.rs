@@ -8,7 +8,7 @@
 //! mass moves only vertically (eq 59), so its horizontal position is a constant too.
 
 use crate::disk::Disk;
-use crate::model::batch_rows::{write_rows, MAX_COLUMNS};
+use crate::model::batch_rows::{gather_columns, write_rows, MAX_COLUMNS};
 use crate::model::rolling::{extras_rhs, lz, lz_at_tilt, record_common};
 use crate::model::{
     leading_state, rows_one_at_a_time, Extras, Layout, Model, Motion, Quantity, RowShared,
@@ -256,32 +256,21 @@ impl<const N: usize> Model<N> for Frictionless<N> {
             f[..n].copy_from_slice(&force[..n]);
         }
         let (spin, zero) = ([self.spin; BATCH], [0.0; BATCH]);
-        let mut columns = [batch.time_rows(); MAX_COLUMNS];
-        let mut c = 1;
-        for &q in quantities {
-            let state = |i: Option<usize>| i.map(y);
-            let (first, second) = match q {
-                Quantity::Alpha => (Some(y(0)), None),
-                Quantity::AlphaDot => (Some(y(1)), None),
-                Quantity::Precession => (Some(y(2)), None),
-                Quantity::Spin => (Some(&spin), None),
-                Quantity::Energy => (Some(&*energy), None),
-                Quantity::Lz => (Some(&lz), None),
-                Quantity::NormalForce => (Some(&force), None),
-                Quantity::Friction | Quantity::Path => (Some(&zero), Some(&zero)),
-                Quantity::Heading => (state(self.layout.heading), None),
-                Quantity::Face => (state(self.layout.face), None),
-                _ => (None, None),
-            };
-            debug_assert!(
-                first.is_some(),
-                "validated scenes only record what the model provides"
-            );
-            for column in [first, second].into_iter().flatten() {
-                columns[c] = column;
-                c += 1;
-            }
-        }
+        let energy = &*energy;
+        let state = |i: Option<usize>| i.map(y);
+        let (columns, c) = gather_columns(batch.time_rows(), quantities, |q| match q {
+            Quantity::Alpha => (Some(y(0)), None),
+            Quantity::AlphaDot => (Some(y(1)), None),
+            Quantity::Precession => (Some(y(2)), None),
+            Quantity::Spin => (Some(&spin), None),
+            Quantity::Energy => (Some(energy), None),
+            Quantity::Lz => (Some(&lz), None),
+            Quantity::NormalForce => (Some(&force), None),
+            Quantity::Friction | Quantity::Path => (Some(&zero), Some(&zero)),
+            Quantity::Heading => (state(self.layout.heading), None),
+            Quantity::Face => (state(self.layout.face), None),
+            _ => (None, None),
+        });
         write_rows(&columns[..c], n, out);
     }
 }

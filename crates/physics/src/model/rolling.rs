@@ -10,7 +10,7 @@
 //! eq 25 multiplied by $-k$).
 
 use crate::disk::Disk;
-use crate::model::batch_rows::{write_rows, MAX_COLUMNS};
+use crate::model::batch_rows::{gather_columns, write_rows, MAX_COLUMNS};
 use crate::model::dissipation::{Placement, PowerLaw};
 use crate::model::mechanism::Mechanism;
 use crate::model::{
@@ -226,7 +226,12 @@ impl<const N: usize> Rolling<N> {
 impl<const N: usize> Dynamics<N> for Rolling<N> {
     fn rhs(&self, y: &State<N>, dy: &mut State<N>) {
         let m = self.motion(y);
-        let r = rates(&self.disk, &m, self.torque(&m));
+        let r = rates_at_tilt(
+            &self.disk,
+            &m,
+            numerics::libm::sin_cos(m.alpha),
+            self.torque(&m),
+        );
         dy[0] = m.alpha_dot;
         dy[1] = r.alpha_ddot;
         dy[2] = r.precession_dot;
@@ -464,36 +469,25 @@ impl<const N: usize> Rolling<N> {
         if let Some(f) = normal_force {
             f[..n].copy_from_slice(&force[0][..n]);
         }
-        let mut columns = [batch.time_rows(); MAX_COLUMNS];
-        let mut c = 1;
-        for &q in quantities {
-            let state = |i: Option<usize>| i.map(y);
-            let (first, second) = match q {
-                Quantity::Alpha => (Some(y(0)), None),
-                Quantity::AlphaDot => (Some(y(1)), None),
-                Quantity::Precession => (Some(y(2)), None),
-                Quantity::Spin => (Some(y(3)), None),
-                Quantity::Energy => (Some(&*energy), None),
-                Quantity::Lz => (Some(lz), None),
-                Quantity::NormalForce => (Some(&force[0]), None),
-                Quantity::Friction => (Some(&force[1]), Some(&force[2])),
-                Quantity::Heading => (state(self.layout.heading), None),
-                Quantity::Face => (state(self.layout.face), None),
-                Quantity::Path => (
-                    state(self.layout.path),
-                    state(self.layout.path.map(|p| p + 1)),
-                ),
-                _ => (None, None),
-            };
-            debug_assert!(
-                first.is_some(),
-                "validated scenes only record what the model provides"
-            );
-            for column in [first, second].into_iter().flatten() {
-                columns[c] = column;
-                c += 1;
-            }
-        }
+        let energy = &*energy;
+        let state = |i: Option<usize>| i.map(y);
+        let (columns, c) = gather_columns(batch.time_rows(), quantities, |q| match q {
+            Quantity::Alpha => (Some(y(0)), None),
+            Quantity::AlphaDot => (Some(y(1)), None),
+            Quantity::Precession => (Some(y(2)), None),
+            Quantity::Spin => (Some(y(3)), None),
+            Quantity::Energy => (Some(energy), None),
+            Quantity::Lz => (Some(lz), None),
+            Quantity::NormalForce => (Some(&force[0]), None),
+            Quantity::Friction => (Some(&force[1]), Some(&force[2])),
+            Quantity::Heading => (state(self.layout.heading), None),
+            Quantity::Face => (state(self.layout.face), None),
+            Quantity::Path => (
+                state(self.layout.path),
+                state(self.layout.path.map(|p| p + 1)),
+            ),
+            _ => (None, None),
+        });
         write_rows(&columns[..c], n, out);
     }
 }
