@@ -7,8 +7,8 @@
 //! writes into the rows' reserved space without zeroing it first. The numbers are only moved,
 //! never computed, so both builds write the same bits.
 
-use crate::model::Quantity;
-use crate::solve::{BATCH, LANES};
+use crate::model::{Layout, Quantity};
+use crate::solve::{Batch, BATCH, LANES};
 
 /// The most columns a batch's rows have here (the time and every quantity a model records,
 /// once each, is 11).
@@ -17,6 +17,43 @@ pub(crate) const MAX_COLUMNS: usize = 16;
 /// One or two columns of a quantity over a batch's rows: `None` for a quantity the model does
 /// not record (a validated scene never asks for one).
 pub(crate) type QuantityColumns<'a> = (Option<&'a [f64; BATCH]>, Option<&'a [f64; BATCH]>);
+
+/// The columns that every model's batch holds alike: $\alpha$, $\dot\alpha$ and $\Omega$ (the
+/// state's first three components), the heading and the face angle where the layout has them,
+/// and the energy, $L_z$ and the normal force as the model computed them over the rows.
+pub(crate) struct SharedColumns<'a, const N: usize> {
+    /// The batch's states.
+    pub batch: &'a Batch<N>,
+    /// Where its optional states sit.
+    pub layout: &'a Layout,
+    /// The rows' energies.
+    pub energy: &'a [f64; BATCH],
+    /// The rows' $L_z$ (unspecified where not recorded).
+    pub lz: &'a [f64; BATCH],
+    /// The rows' normal forces (unspecified where not recorded).
+    pub normal_force: &'a [f64; BATCH],
+}
+
+impl<'a, const N: usize> SharedColumns<'a, N> {
+    /// The columns of `q` when it is one of these; `None` for a quantity the model makes its
+    /// own way (the spin, the friction, the path).
+    #[inline(always)]
+    pub(crate) fn of(&self, q: Quantity) -> Option<QuantityColumns<'a>> {
+        let y = |i: usize| self.batch.component_rows(i);
+        let state = |i: Option<usize>| i.map(y);
+        Some(match q {
+            Quantity::Alpha => (Some(y(0)), None),
+            Quantity::AlphaDot => (Some(y(1)), None),
+            Quantity::Precession => (Some(y(2)), None),
+            Quantity::Energy => (Some(self.energy), None),
+            Quantity::Lz => (Some(self.lz), None),
+            Quantity::NormalForce => (Some(self.normal_force), None),
+            Quantity::Heading => (state(self.layout.heading), None),
+            Quantity::Face => (state(self.layout.face), None),
+            _ => return None,
+        })
+    }
+}
 
 /// The columns of a batch's rows as [`write_rows`] takes them: `time` first, then the one or
 /// two columns `columns_of` gives for each of `quantities` in turn; with how many there are.

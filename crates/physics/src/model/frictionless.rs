@@ -8,7 +8,7 @@
 //! mass moves only vertically (eq 59), so its horizontal position is a constant too.
 
 use crate::disk::Disk;
-use crate::model::batch_rows::{gather_columns, write_rows, MAX_COLUMNS};
+use crate::model::batch_rows::{gather_columns, write_rows, SharedColumns, MAX_COLUMNS};
 use crate::model::rolling::{extras_rhs, lz, lz_at_tilt, record_common};
 use crate::model::{
     leading_state, rows_one_at_a_time, Extras, Layout, Model, Motion, Quantity, RowShared,
@@ -256,20 +256,19 @@ impl<const N: usize> Model<N> for Frictionless<N> {
             f[..n].copy_from_slice(&force[..n]);
         }
         let (spin, zero) = ([self.spin; BATCH], [0.0; BATCH]);
-        let energy = &*energy;
-        let state = |i: Option<usize>| i.map(y);
-        let (columns, c) = gather_columns(batch.time_rows(), quantities, |q| match q {
-            Quantity::Alpha => (Some(y(0)), None),
-            Quantity::AlphaDot => (Some(y(1)), None),
-            Quantity::Precession => (Some(y(2)), None),
-            Quantity::Spin => (Some(&spin), None),
-            Quantity::Energy => (Some(energy), None),
-            Quantity::Lz => (Some(&lz), None),
-            Quantity::NormalForce => (Some(&force), None),
-            Quantity::Friction | Quantity::Path => (Some(&zero), Some(&zero)),
-            Quantity::Heading => (state(self.layout.heading), None),
-            Quantity::Face => (state(self.layout.face), None),
-            _ => (None, None),
+        let shared = SharedColumns {
+            batch,
+            layout: &self.layout,
+            energy,
+            lz: &lz,
+            normal_force: &force,
+        };
+        let (columns, c) = gather_columns(batch.time_rows(), quantities, |q| {
+            shared.of(q).unwrap_or(match q {
+                Quantity::Spin => (Some(&spin), None),
+                Quantity::Friction | Quantity::Path => (Some(&zero), Some(&zero)),
+                _ => (None, None),
+            })
         });
         write_rows(&columns[..c], n, out);
     }

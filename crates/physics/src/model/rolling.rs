@@ -10,7 +10,7 @@
 //! eq 25 multiplied by $-k$).
 
 use crate::disk::Disk;
-use crate::model::batch_rows::{gather_columns, write_rows, MAX_COLUMNS};
+use crate::model::batch_rows::{gather_columns, write_rows, SharedColumns, MAX_COLUMNS};
 use crate::model::dissipation::{Placement, PowerLaw};
 use crate::model::mechanism::Mechanism;
 use crate::model::{
@@ -469,24 +469,24 @@ impl<const N: usize> Rolling<N> {
         if let Some(f) = normal_force {
             f[..n].copy_from_slice(&force[0][..n]);
         }
-        let energy = &*energy;
+        let shared = SharedColumns {
+            batch,
+            layout: &self.layout,
+            energy,
+            lz,
+            normal_force: &force[0],
+        };
         let state = |i: Option<usize>| i.map(y);
-        let (columns, c) = gather_columns(batch.time_rows(), quantities, |q| match q {
-            Quantity::Alpha => (Some(y(0)), None),
-            Quantity::AlphaDot => (Some(y(1)), None),
-            Quantity::Precession => (Some(y(2)), None),
-            Quantity::Spin => (Some(y(3)), None),
-            Quantity::Energy => (Some(energy), None),
-            Quantity::Lz => (Some(lz), None),
-            Quantity::NormalForce => (Some(&force[0]), None),
-            Quantity::Friction => (Some(&force[1]), Some(&force[2])),
-            Quantity::Heading => (state(self.layout.heading), None),
-            Quantity::Face => (state(self.layout.face), None),
-            Quantity::Path => (
-                state(self.layout.path),
-                state(self.layout.path.map(|p| p + 1)),
-            ),
-            _ => (None, None),
+        let (columns, c) = gather_columns(batch.time_rows(), quantities, |q| {
+            shared.of(q).unwrap_or(match q {
+                Quantity::Spin => (Some(y(3)), None),
+                Quantity::Friction => (Some(&force[1]), Some(&force[2])),
+                Quantity::Path => (
+                    state(self.layout.path),
+                    state(self.layout.path.map(|p| p + 1)),
+                ),
+                _ => (None, None),
+            })
         });
         write_rows(&columns[..c], n, out);
     }
