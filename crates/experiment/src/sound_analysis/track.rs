@@ -50,7 +50,7 @@ use crate::error::ExperimentError;
 use crate::sound_analysis::mains::hum::{hum_lines, subtract_hum};
 use crate::sound_analysis::spectrum::{Analyser, Estimate};
 use crate::trace::Trace;
-use rising::{rises, LineEnd};
+use rising::{holds_still, rises, LineEnd};
 use serde::{Deserialize, Serialize};
 use std::borrow::Cow;
 use std::f64::consts::PI;
@@ -150,6 +150,9 @@ struct Frame {
     /// Searched about the line's predicted pitch but found more than [`JUMP`] off it: not on
     /// the line, and not used to predict the next frame.
     jumped: bool,
+    /// One of three frames in a row that held a line still ([`holds_still`]): not the disk's
+    /// line, and not on any.
+    still: bool,
 }
 
 /// The pitch track of a uniformly sampled sound recording.
@@ -267,7 +270,7 @@ fn the_line(frames: &[Frame]) -> Vec<bool> {
     let mut run = vec![usize::MAX; frames.len()];
     let (mut id, mut last): (usize, Option<f64>) = (0, None);
     for (k, fr) in frames.iter().enumerate() {
-        let Some(e) = fr.est.filter(|_| !fr.jumped) else {
+        let Some(e) = fr.est.filter(|_| !fr.jumped && !fr.still) else {
             continue;
         };
         if let Some(p) = last {
@@ -357,12 +360,25 @@ fn end_at_stall(frames: &[Frame], line: &mut [bool]) {
 fn march(v: &[f64], t0: f64, fs: f64, s: &TrackSettings, hum: &[f64]) -> (Vec<Frame>, usize) {
     let mut an = Analyser::new(fs);
     an.mask(hum);
+    let span = v.len() as f64 / fs;
+    let mut masked = hum.to_vec();
     let mut frames: Vec<Frame> = Vec::new();
     let mut pos = 0usize;
     let mut smeared = 0;
     // The frames the line's motion is predicted from: all but those that jumped off it.
     let mut held: Vec<Frame> = Vec::new();
     loop {
+        // Three frames that hold a line still are not the disk's: the line is masked as the
+        // hum is, and searched for anew.
+        if let Some(f) = still_line(&held, span) {
+            let last: Vec<f64> = held[held.len() - 3..].iter().map(|h| h.a).collect();
+            for fr in frames.iter_mut().filter(|fr| last.contains(&fr.a)) {
+                fr.still = true;
+            }
+            masked.push(f);
+            an.mask(&masked);
+            held.clear();
+        }
         let mut predicted = None;
         let (len_s, lo, hi) = match predict(&held, t0 + pos as f64 / fs) {
             Some(motion) => {
@@ -425,6 +441,7 @@ fn march(v: &[f64], t0: f64, fs: f64, s: &TrackSettings, hum: &[f64]) -> (Vec<Fr
             est,
             searched,
             jumped,
+            still: false,
         };
         if !jumped {
             held.push(frame);
@@ -499,6 +516,29 @@ fn one_line(frames: &[Frame]) -> bool {
             (Some(p), Some(q)) => !w[1].searched || (q.f / p.f).max(p.f / q.f) <= STEP,
             _ => false,
         })
+}
+
+/// The pitch of the line the last three frames `held` hold still in a recording of `span`
+/// seconds ([`holds_still`] from the first to the last of them, all three on one line), if they
+/// do: a mains line the hum's removal did not find (heard in the lead-in before the disk, and
+/// followed, it would hold the search's band where the disk's line is not, until a harmonic of
+/// the disk crossed it), the shudder's ring after $t_0$. A disk's line rises by more than
+/// [`least_rise`](rising::least_rise) over any stretch, so only a line whose frames measure
+/// their pitch to a fraction of that rise can be found still.
+fn still_line(held: &[Frame], span: f64) -> Option<f64> {
+    let n = held.len();
+    if n < 3 || !one_line(&held[n - 3..]) {
+        return None;
+    }
+    let end = |fr: &Frame| {
+        fr.est.map(|e| LineEnd {
+            t: 0.5 * (fr.a + fr.b),
+            f: e.f,
+            sigma: e.sigma,
+        })
+    };
+    let (first, last) = (end(&held[n - 3])?, end(&held[n - 1])?);
+    holds_still(first, last, span).then_some(last.f)
 }
 
 /// The line's motion from the last frames when the last three held it, for a frame that

@@ -59,12 +59,7 @@ pub fn hum_lines(v: &[f64], fs: f64) -> Vec<f64> {
     if span < 2.0 {
         return Vec::new();
     }
-    let q = ((fs / 2000.0).floor() as usize).max(1);
-    let low: Vec<f64> = v
-        .chunks_exact(q)
-        .map(|c| c.iter().sum::<f64>() / q as f64)
-        .collect();
-    let fs_low = fs / q as f64;
+    let (low, fs_low) = low_copy(v, fs);
     // The whole record, or pieces of SEARCH_S seconds where it is longer.
     let (piece, res) = if span > SEARCH_S {
         let n = (SEARCH_S * fs_low) as usize;
@@ -123,6 +118,17 @@ pub fn hum_lines(v: &[f64], fs: f64) -> Vec<f64> {
     removed
 }
 
+/// The record `v` (sampled at `fs`) averaged over blocks of $\lfloor f_s/2000\rfloor$ samples,
+/// and its rate: the copy on which [`hum_lines`] searches and judges the lines.
+pub(crate) fn low_copy(v: &[f64], fs: f64) -> (Vec<f64>, f64) {
+    let q = ((fs / 2000.0).floor() as usize).max(1);
+    let low = v
+        .chunks_exact(q)
+        .map(|c| c.iter().sum::<f64>() / q as f64)
+        .collect();
+    (low, fs / q as f64)
+}
+
 /// The score at the grid points $i = -s..s$ (steps of a quarter resolution) that the search
 /// visits: every fourth (one resolution apart, so that a line's main lobe, two resolutions wide
 /// each side under the Hann window, holds at least three), then every point within a resolution
@@ -177,24 +183,69 @@ fn coarse_to_fine(s: i64, score: &(dyn Fn(i64) -> f64 + Sync)) -> Vec<Option<f64
     }
 }
 
-/// Whether a line at `f` stands [`HUM_RATIO`] times above its neighbours at $\pm 2..20$
-/// resolutions in most blocks of [`BLOCK_S`] seconds (the median block): a sweeping line fills
-/// one block's neighbourhood, hum every block's line.
+/// Whether a line at `f` stands out as hum in `v` (sampled at `fs`), at either of two block
+/// lengths ([`stands_out_in`]): blocks of [`BLOCK_S`] seconds, in which a hum that wanders by
+/// tenths of a hertz over a long record stays within a resolution, and the whole record (up to
+/// [`SEARCH_S`]), over whose length a steady hum gathers its power into one resolution while
+/// what covers its neighbours in every short block of a recording of a few seconds (a handling
+/// bump's damped thump of 20-80 Hz, the disk's line sweeping past, the shudder after $t_0$)
+/// spreads its own over many.
 fn stands_out(v: &[f64], fs: f64, f: f64) -> bool {
-    let block = ((BLOCK_S * fs) as usize).max(1);
+    let whole = v.len().min((SEARCH_S * fs) as usize);
+    stands_out_in(v, fs, f, ((BLOCK_S * fs) as usize).max(1)) || stands_out_in(v, fs, f, whole)
+}
+
+/// Whether a line at `f` stands [`HUM_RATIO`] times above its neighbours at $\pm 2 .. 20$
+/// resolutions in the quieter half of the blocks of `block` samples ([`block_ratios`]): the
+/// blocks whose neighbours' median power is lowest, and there in the median block. Hum is in
+/// every block at the same power; what raises a block's neighbours is broad or moves, and in a
+/// recording of a few seconds it covers most blocks about the mains fundamental, so that the
+/// median of all the blocks would miss the hum there. A line of the disk's held in one block
+/// stands out in that block only, not in the median of the quieter half of a recording of more
+/// than two blocks; room noise alone stands out at that ratio in about one block in a thousand
+/// ($2^{-10}$: an exponential variate's median is $\ln 2$ of its mean).
+fn stands_out_in(v: &[f64], fs: f64, f: f64, block: usize) -> bool {
+    let mut blocks = block_ratios(v, fs, f, block);
+    if blocks.is_empty() {
+        return false;
+    }
+    blocks.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut quiet: Vec<f64> = blocks[..blocks.len().div_ceil(2)]
+        .iter()
+        .map(|b| b.1)
+        .collect();
+    let m = quiet.len() / 2;
+    *quiet.select_nth_unstable_by(m, f64::total_cmp).1 > HUM_RATIO
+}
+
+/// Each block's neighbours' median power and the line's power over it, for a line at `f` in
+/// `v` (sampled at `fs`): blocks of `block` samples, Hann-windowed, starting every half block,
+/// and one more ending at the record's end, so that the record's last second (the tail after
+/// $t_0$) is judged too; the neighbours are the powers at $\pm 2 .. 20$ resolutions (the
+/// block's $f_s/$`block`) of `f`. None where the record is shorter than a block or a block
+/// too short for the neighbours.
+pub(crate) fn block_ratios(v: &[f64], fs: f64, f: f64, block: usize) -> Vec<(f64, f64)> {
+    if v.len() < block || block < 41 {
+        return Vec::new();
+    }
+    let mut starts: Vec<usize> = (0..=v.len() - block).step_by(block / 2).collect();
+    if starts.last() != Some(&(v.len() - block)) {
+        starts.push(v.len() - block);
+    }
     let w = hann(block);
     let fft = rustfft::FftPlanner::<f64>::new().plan_fft_forward(block);
-    // One resolution, 1/BLOCK_S, is one bin of the block's transform: shifted down by f, the
-    // block's bins k and block - k are the powers at f + k res and f - k res.
-    let mut ratios: Vec<f64> = v
-        .par_chunks_exact(block)
-        .map(|b| {
+    // One resolution is one bin of the block's transform: shifted down by f, the block's bins
+    // k and block - k are the powers at f + k res and f - k res.
+    starts
+        .par_iter()
+        .map(|&s| {
+            let b = &v[s..s + block];
             let mut buf = vec![Complex::new(0.0, 0.0); block];
-            for (z, ((x, w), [c, s])) in buf
+            for (z, ((x, w), [c, sn])) in buf
                 .iter_mut()
                 .zip(b.iter().zip(&w).zip(steady(block, fs, f)))
             {
-                *z = Complex::new(c, -s) * (x * w);
+                *z = Complex::new(c, -sn) * (x * w);
             }
             fft.process(&mut buf);
             let power = |k: usize| buf[k % block].norm_sqr();
@@ -203,14 +254,9 @@ fn stands_out(v: &[f64], fs: f64, f: f64) -> bool {
                 .collect();
             let m = around.len() / 2;
             let floor = *around.select_nth_unstable_by(m, f64::total_cmp).1;
-            power(0) / floor.max(f64::MIN_POSITIVE)
+            (floor, power(0) / floor.max(f64::MIN_POSITIVE))
         })
-        .collect();
-    if ratios.is_empty() {
-        return false;
-    }
-    let m = ratios.len() / 2;
-    *ratios.select_nth_unstable_by(m, f64::total_cmp).1 > HUM_RATIO
+        .collect()
 }
 
 /// Subtracts the mains lines `lines` (Hz) from `v` (sampled at `fs`), grid by grid
