@@ -150,8 +150,8 @@ struct Frame {
     /// Searched about the line's predicted pitch but found more than [`JUMP`] off it: not on
     /// the line, and not used to predict the next frame.
     jumped: bool,
-    /// One of three frames in a row that held a line still ([`holds_still`]): not the disk's
-    /// line, and not on any.
+    /// One of the frames of a line held still ([`still_line`]): not the disk's line, and not
+    /// on any.
     still: bool,
 }
 
@@ -368,10 +368,10 @@ fn march(v: &[f64], t0: f64, fs: f64, s: &TrackSettings, hum: &[f64]) -> (Vec<Fr
     // The frames the line's motion is predicted from: all but those that jumped off it.
     let mut held: Vec<Frame> = Vec::new();
     loop {
-        // Three frames that hold a line still are not the disk's: the line is masked as the
-        // hum is, and searched for anew.
-        if let Some(f) = still_line(&held, span) {
-            let last: Vec<f64> = held[held.len() - 3..].iter().map(|h| h.a).collect();
+        // A line held still is not the disk's: it is masked as the hum is, and the disk's line
+        // searched for anew.
+        if let Some((from, f)) = still_line(&held, span) {
+            let last: Vec<f64> = held[from..].iter().map(|h| h.a).collect();
             for fr in frames.iter_mut().filter(|fr| last.contains(&fr.a)) {
                 fr.still = true;
             }
@@ -518,16 +518,23 @@ fn one_line(frames: &[Frame]) -> bool {
         })
 }
 
-/// The pitch of the line the last three frames `held` hold still in a recording of `span`
-/// seconds ([`holds_still`] from the first to the last of them, all three on one line), if they
-/// do: a mains line the hum's removal did not find (heard in the lead-in before the disk, and
-/// followed, it would hold the search's band where the disk's line is not, until a harmonic of
-/// the disk crossed it), the shudder's ring after $t_0$. A disk's line rises by more than
-/// [`least_rise`](rising::least_rise) over any stretch, so only a line whose frames measure
-/// their pitch to a fraction of that rise can be found still.
-fn still_line(held: &[Frame], span: f64) -> Option<f64> {
+/// The line the last frames `held` hold: its first frame's index in `held` and its pitch,
+/// where it holds still in a recording of `span` seconds ([`holds_still`] from its first frame
+/// to its last, over three frames or more). The line is the frames at the end of `held` that
+/// are one line ([`one_line`]), from where it was first held: a mains line the hum's removal
+/// did not find, heard in the lead-in before the disk (followed, it would hold the search's
+/// band where the disk's line is not, until a harmonic of the disk crossed it), or the
+/// shudder's ring after $t_0$. A disk's line rises by more than
+/// [`least_rise`](rising::least_rise) over any stretch, and over the whole of it since it was
+/// first held, so a stretch of it held near a mains line it crosses is not taken for one; and
+/// only frames that measure their pitch to a fraction of that rise can show a line still.
+fn still_line(held: &[Frame], span: f64) -> Option<(usize, f64)> {
     let n = held.len();
-    if n < 3 || !one_line(&held[n - 3..]) {
+    let mut from = n.checked_sub(1)?;
+    while from > 0 && one_line(&held[from - 1..=from]) {
+        from -= 1;
+    }
+    if n - from < 3 || !one_line(&held[from..]) {
         return None;
     }
     let end = |fr: &Frame| {
@@ -537,8 +544,8 @@ fn still_line(held: &[Frame], span: f64) -> Option<f64> {
             sigma: e.sigma,
         })
     };
-    let (first, last) = (end(&held[n - 3])?, end(&held[n - 1])?);
-    holds_still(first, last, span).then_some(last.f)
+    let (first, last) = (end(&held[from])?, end(&held[n - 1])?);
+    holds_still(first, last, span).then_some((from, last.f))
 }
 
 /// The line's motion from the last frames when the last three held it, for a frame that

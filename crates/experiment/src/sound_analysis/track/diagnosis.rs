@@ -66,7 +66,7 @@ fn print_the_frames_against_the_truth() {
                 match fr.est {
                     Some(e) => println!(
                         "    {:7.3}-{:7.3} {} {} f {:8.2} +- {:6.2} check {:8.2} snr {:8.1} | truth {:8.2} ratio {:6.3}",
-                        fr.a, fr.b, if fr.searched { "S" } else { "." }, if fr.jumped { "J" } else if *on { "L" } else { "-" },
+                        fr.a, fr.b, if fr.searched { "S" } else { "." }, if fr.jumped { "J" } else if fr.still { "H" } else if *on { "L" } else { "-" },
                         e.f, e.sigma, e.check, e.snr, f0, e.f / f0
                     ),
                     None => println!(
