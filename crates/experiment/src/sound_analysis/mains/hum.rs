@@ -5,11 +5,12 @@
 //! the disk's line sweeps. The mains frequency is the
 //! maximum of the whole record's power $|\sum_j x_j e^{-2\pi i f t_j}|^2$ summed over the first
 //! three harmonics, searched within $\pm 0.3$ Hz of 50 and of 60 Hz (steps of a quarter of
-//! $1/T_{rec}$, then a parabola). A harmonic counts as hum when, in the median block of
-//! [`BLOCK_S`] seconds (Hann-windowed), its power stands [`HUM_RATIO`] times above the median of its
-//! neighbours at $\pm 2 .. 20$ resolutions (the disk's sweeping line crosses a mains line in one
-//! block or two, hum is in all); each such line is then fitted by least squares (a cosine and a
-//! sine) in blocks of [`BLOCK_S`] seconds and subtracted. Once the disk's pitch is known, the
+//! $1/T_{rec}$, then a parabola). A harmonic counts as hum when its power stands
+//! [`HUM_RATIO`] times above the median of its neighbours at $\pm 2 .. 20$ resolutions in the
+//! quieter half of the Hann-windowed blocks of [`BLOCK_S`] seconds (the disk's sweeping line,
+//! a handling bump or the shudder covers a mains line's neighbours in some blocks, hum is in
+//! all; see `stands_out_in`); each such line is then fitted by least
+//! squares (a cosine and a sine) in blocks of [`BLOCK_S`] seconds and subtracted. Once the disk's pitch is known, the
 //! lines are fitted again where the disk keeps clear of them, their phase followed as the grid's
 //! frequency wanders ([`remove_hum_clear`]).
 
@@ -183,16 +184,10 @@ fn coarse_to_fine(s: i64, score: &(dyn Fn(i64) -> f64 + Sync)) -> Vec<Option<f64
     }
 }
 
-/// Whether a line at `f` stands out as hum in `v` (sampled at `fs`), at either of two block
-/// lengths ([`stands_out_in`]): blocks of [`BLOCK_S`] seconds, in which a hum that wanders by
-/// tenths of a hertz over a long record stays within a resolution, and the whole record (up to
-/// [`SEARCH_S`]), over whose length a steady hum gathers its power into one resolution while
-/// what covers its neighbours in every short block of a recording of a few seconds (a handling
-/// bump's damped thump of 20-80 Hz, the disk's line sweeping past, the shudder after $t_0$)
-/// spreads its own over many.
+/// Whether a line at `f` stands out as hum in `v` (sampled at `fs`) in its blocks of
+/// [`BLOCK_S`] seconds ([`stands_out_in`]).
 fn stands_out(v: &[f64], fs: f64, f: f64) -> bool {
-    let whole = v.len().min((SEARCH_S * fs) as usize);
-    stands_out_in(v, fs, f, ((BLOCK_S * fs) as usize).max(1)) || stands_out_in(v, fs, f, whole)
+    stands_out_in(v, fs, f, ((BLOCK_S * fs) as usize).max(1))
 }
 
 /// Whether a line at `f` stands [`HUM_RATIO`] times above its neighbours at $\pm 2 .. 20$

@@ -128,9 +128,7 @@ fn print_the_hum_blocks() {
                 .iter()
                 .map(|(floor, r)| format!("{floor:.1e}:{r:.1}"))
                 .collect();
-            let whole = block_ratios(&low, fs_low, f, low.len().min((120.0 * fs_low) as usize));
-            let w: Vec<String> = whole.iter().map(|(_, r)| format!("{r:.1}")).collect();
-            println!("  {f:6.1} Hz: whole {} | {}", w.join(" "), cells.join(" "));
+            println!("  {f:6.1} Hz: {}", cells.join(" "));
         }
     }
 }
