@@ -34,9 +34,8 @@
 //! recording of a few seconds, its mains fundamental covered in every block by bumps, the
 //! disk's sweep and the shudder) or the shudder's ring: followed, it would hold the search's
 //! band where the disk's line is not, until a harmonic of the disk crossed it and was taken for
-//! the line. Its frames are left off every line, its pitch and its harmonics are masked in the
-//! frames searched over the whole band as the hum's lines are, and the line is searched for
-//! anew.
+//! the line. Its frames are left off every line, its pitch is masked in the frames searched
+//! over the whole band as the hum's lines are, and the line is searched for anew.
 //!
 //! **Each point's uncertainty** is the noise's (from the frame's own power over its noise, see
 //! [`spectrum`](crate::sound_analysis::spectrum)) and the pitch's motion within the frame, in
@@ -58,7 +57,7 @@
 
 use crate::error::ExperimentError;
 use crate::sound_analysis::mains::hum::{hum_lines, subtract_hum};
-use crate::sound_analysis::spectrum::{Analyser, Estimate, MAX_HARMONIC_HZ};
+use crate::sound_analysis::spectrum::{Analyser, Estimate};
 use crate::trace::Trace;
 use rising::{holds_still, rises, LineEnd};
 use serde::{Deserialize, Serialize};
@@ -389,18 +388,14 @@ fn march(v: &[f64], t0: f64, fs: f64, s: &TrackSettings, hum: &[f64]) -> (Vec<Fr
     // The frames the line's motion is predicted from: all but those that jumped off it.
     let mut held: Vec<Frame> = Vec::new();
     loop {
-        // A line held still is not the disk's: it is masked with its harmonics as the hum is,
-        // and the disk's line searched for anew.
+        // A line held still is not the disk's: it is masked as the hum is, and the disk's line
+        // searched for anew.
         if let Some((from, f)) = still_line(&held, span) {
             let last: Vec<f64> = held[from..].iter().map(|h| h.a).collect();
             for fr in frames.iter_mut().filter(|fr| last.contains(&fr.a)) {
                 fr.still = true;
             }
-            masked.extend(
-                (1..)
-                    .map(|h| f64::from(h) * f)
-                    .take_while(|&g| g <= MAX_HARMONIC_HZ),
-            );
+            masked.push(f);
             an.mask(&masked);
             held.clear();
         }
