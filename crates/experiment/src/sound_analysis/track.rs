@@ -28,14 +28,8 @@
 //! `cycles` periods (the line smears near $t_0$) after four frames in a row held the line;
 //! that end counts as one smeared frame.
 //!
-//! **A line held still is not followed.** A line whose frames, from the first that held it,
-//! move by less than any disk's line rises over that time ([`still_line`],
-//! [`holds_still`](rising::holds_still)) is a mains line the hum's removal did not find (a
-//! recording of a few seconds, its mains fundamental covered in every block by bumps, the
-//! disk's sweep and the shudder) or the shudder's ring: followed, it would hold the search's
-//! band where the disk's line is not, until a harmonic of the disk crossed it and was taken for
-//! the line. Its frames are left off every line, its pitch is masked in the frames searched
-//! over the whole band as the hum's lines are, and the line is searched for anew.
+//! **A line held still is not followed** ([`still`]): its frames are left off every line, its
+//! pitch is masked in the frames searched over the whole band as the hum's lines are.
 //!
 //! **Each point's uncertainty** is the noise's (from the frame's own power over its noise, see
 //! [`spectrum`](crate::sound_analysis::spectrum)) and the pitch's motion within the frame, in
@@ -59,10 +53,11 @@ use crate::error::ExperimentError;
 use crate::sound_analysis::mains::hum::{hum_lines, subtract_hum};
 use crate::sound_analysis::spectrum::{Analyser, Estimate};
 use crate::trace::Trace;
-use rising::{holds_still, rises, LineEnd};
+use rising::{rises, LineEnd};
 use serde::{Deserialize, Serialize};
 use std::borrow::Cow;
 use std::f64::consts::PI;
+use still::still_line;
 
 /// How the track is made.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -538,36 +533,6 @@ fn one_line(frames: &[Frame]) -> bool {
         })
 }
 
-/// The line the last frames `held` hold: its first frame's index in `held` and its pitch,
-/// where it holds still in a recording of `span` seconds ([`holds_still`] from its first frame
-/// to its last, over three frames or more). The line is the frames at the end of `held` that
-/// are one line ([`one_line`]), from where it was first held: a mains line the hum's removal
-/// did not find, heard in the lead-in before the disk (followed, it would hold the search's
-/// band where the disk's line is not, until a harmonic of the disk crossed it), or the
-/// shudder's ring after $t_0$. A disk's line rises by more than
-/// [`least_rise`](rising::least_rise) over any stretch, and over the whole of it since it was
-/// first held, so a stretch of it held near a mains line it crosses is not taken for one; and
-/// only frames that measure their pitch to a fraction of that rise can show a line still.
-fn still_line(held: &[Frame], span: f64) -> Option<(usize, f64)> {
-    let n = held.len();
-    let mut from = n.checked_sub(1)?;
-    while from > 0 && one_line(&held[from - 1..=from]) {
-        from -= 1;
-    }
-    if n - from < 3 || !one_line(&held[from..]) {
-        return None;
-    }
-    let end = |fr: &Frame| {
-        fr.est.map(|e| LineEnd {
-            t: 0.5 * (fr.a + fr.b),
-            f: e.f,
-            sigma: e.sigma,
-        })
-    };
-    let (first, last) = (end(&held[from])?, end(&held[n - 1])?);
-    holds_still(first, last, span).then_some((from, last.f))
-}
-
 /// The line's motion from the last frames when the last three held it, for a frame that
 /// starts at `start` (s).
 fn predict(frames: &[Frame], start: f64) -> Option<Motion> {
@@ -629,3 +594,4 @@ fn add_motion(points: &mut [TrackPoint]) {
 #[cfg(test)]
 mod diagnosis;
 pub mod rising;
+mod still;

@@ -9,7 +9,7 @@
 //! [`HUM_RATIO`] times above the median of its neighbours at $\pm 2 .. 20$ resolutions in the
 //! quieter half of the Hann-windowed blocks of [`BLOCK_S`] seconds (the disk's sweeping line,
 //! a handling bump or the shudder covers a mains line's neighbours in some blocks, hum is in
-//! all; see `stands_out_in`); each such line is then fitted by least
+//! all; see [`stands_out`]); each such line is then fitted by least
 //! squares (a cosine and a sine) in blocks of [`BLOCK_S`] seconds and subtracted. Once the disk's pitch is known, the
 //! lines are fitted again where the disk keeps clear of them, their phase followed as the grid's
 //! frequency wanders ([`remove_hum_clear`]).
@@ -17,6 +17,7 @@
 use crate::sound_analysis::mains::drift::{phasors, reach, HOP_S};
 use crate::sound_analysis::mains::line_power::{hann, power};
 use crate::sound_analysis::mains::phase::mains_phase;
+use crate::sound_analysis::mains::stands_out::stands_out;
 use rayon::prelude::*;
 use rustfft::num_complex::Complex;
 use std::f64::consts::TAU;
@@ -184,76 +185,6 @@ fn coarse_to_fine(s: i64, score: &(dyn Fn(i64) -> f64 + Sync)) -> Vec<Option<f64
     }
 }
 
-/// Whether a line at `f` stands out as hum in `v` (sampled at `fs`) in its blocks of
-/// [`BLOCK_S`] seconds ([`stands_out_in`]).
-fn stands_out(v: &[f64], fs: f64, f: f64) -> bool {
-    stands_out_in(v, fs, f, ((BLOCK_S * fs) as usize).max(1))
-}
-
-/// Whether a line at `f` stands [`HUM_RATIO`] times above its neighbours at $\pm 2 .. 20$
-/// resolutions in the quieter half of the blocks of `block` samples ([`block_ratios`]): the
-/// blocks whose neighbours' median power is lowest, and there in the median block. Hum is in
-/// every block at the same power; what raises a block's neighbours is broad or moves, and in a
-/// recording of a few seconds it covers most blocks about the mains fundamental, so that the
-/// median of all the blocks would miss the hum there. A line of the disk's held in one block
-/// stands out in that block only, not in the median of the quieter half of a recording of more
-/// than two blocks; room noise alone stands out at that ratio in about one block in a thousand
-/// ($2^{-10}$: an exponential variate's median is $\ln 2$ of its mean).
-fn stands_out_in(v: &[f64], fs: f64, f: f64, block: usize) -> bool {
-    let mut blocks = block_ratios(v, fs, f, block);
-    if blocks.is_empty() {
-        return false;
-    }
-    blocks.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let mut quiet: Vec<f64> = blocks[..blocks.len().div_ceil(2)]
-        .iter()
-        .map(|b| b.1)
-        .collect();
-    let m = quiet.len() / 2;
-    *quiet.select_nth_unstable_by(m, f64::total_cmp).1 > HUM_RATIO
-}
-
-/// Each block's neighbours' median power and the line's power over it, for a line at `f` in
-/// `v` (sampled at `fs`): blocks of `block` samples, Hann-windowed, starting every half block,
-/// and one more ending at the record's end, so that the record's last second (the tail after
-/// $t_0$) is judged too; the neighbours are the powers at $\pm 2 .. 20$ resolutions (the
-/// block's $f_s/$`block`) of `f`. None where the record is shorter than a block or a block
-/// too short for the neighbours.
-pub(crate) fn block_ratios(v: &[f64], fs: f64, f: f64, block: usize) -> Vec<(f64, f64)> {
-    if v.len() < block || block < 41 {
-        return Vec::new();
-    }
-    let mut starts: Vec<usize> = (0..=v.len() - block).step_by(block / 2).collect();
-    if starts.last() != Some(&(v.len() - block)) {
-        starts.push(v.len() - block);
-    }
-    let w = hann(block);
-    let fft = rustfft::FftPlanner::<f64>::new().plan_fft_forward(block);
-    // One resolution is one bin of the block's transform: shifted down by f, the block's bins
-    // k and block - k are the powers at f + k res and f - k res.
-    starts
-        .par_iter()
-        .map(|&s| {
-            let b = &v[s..s + block];
-            let mut buf = vec![Complex::new(0.0, 0.0); block];
-            for (z, ((x, w), [c, sn])) in buf
-                .iter_mut()
-                .zip(b.iter().zip(&w).zip(steady(block, fs, f)))
-            {
-                *z = Complex::new(c, -sn) * (x * w);
-            }
-            fft.process(&mut buf);
-            let power = |k: usize| buf[k % block].norm_sqr();
-            let mut around: Vec<f64> = (2..=20)
-                .flat_map(|i| [power(i), power(block - i)])
-                .collect();
-            let m = around.len() / 2;
-            let floor = *around.select_nth_unstable_by(m, f64::total_cmp).1;
-            (floor, power(0) / floor.max(f64::MIN_POSITIVE))
-        })
-        .collect()
-}
-
 /// Subtracts the mains lines `lines` (Hz) from `v` (sampled at `fs`), grid by grid
 /// ([`families`]). Each line $k$ of a grid is fitted over the whole record as
 /// $(a + a'\tau)\cos\Phi_k + (b + b'\tau)\sin\Phi_k$ ($\tau$ the time from the record's middle
@@ -380,7 +311,7 @@ pub const FREQUENCY_STEPS: usize = 2;
 /// The phasors of the steady phase $2\pi f j/f_s$ at `n` samples of rate `fs`, each the last
 /// turned by $2\pi f/f_s$ and set afresh from the phase every [`RESYNC`] samples, so that the
 /// rounding of the product cannot build up (a sine saved per sample, line and pass).
-fn steady(n: usize, fs: f64, f: f64) -> impl Iterator<Item = [f64; 2]> {
+pub(crate) fn steady(n: usize, fs: f64, f: f64) -> impl Iterator<Item = [f64; 2]> {
     let (ws, wc) = (TAU * f / fs).sin_cos();
     let mut p = [1.0, 0.0];
     (0..n).map(move |j| {

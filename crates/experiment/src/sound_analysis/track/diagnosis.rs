@@ -97,7 +97,8 @@ fn print_the_frames_against_the_truth() {
 #[test]
 #[ignore = "a diagnostic: prints each seed's hum lines block by block"]
 fn print_the_hum_blocks() {
-    use crate::sound_analysis::mains::hum::{block_ratios, low_copy};
+    use crate::sound_analysis::mains::hum::low_copy;
+    use crate::sound_analysis::mains::stands_out::block_ratios;
     let seeds = std::env::var("ROLLING_DISK_SEEDS").unwrap_or_else(|_| "78".into());
     for seed in seeds
         .split(',')
