@@ -20,8 +20,10 @@
 //! a harmonic $hk$ that lies within the window's main lobe ($\pm 2/T$) of a mains line the
 //! analysis subtracted ([`Analyser::mask`]) is left out of the sum (the sum of the others
 //! scaled by the harmonics' count over theirs) and of the estimate: what is left of the hum
-//! there is not the disk's, and a fundamental whose every harmonic is on the hum is no
-//! fundamental of the disk. A frame that follows a line already held, searched within a narrow
+//! there is not the disk's, and a fundamental whose every harmonic but one is on the hum is
+//! no fundamental of the disk (a family is named by two lines at least: one line left clear
+//! may be a mains line the hum's removal did not find, and scaled up it would outweigh the
+//! disk's family). A frame that follows a line already held, searched within a narrow
 //! band about its predicted pitch, is not masked: its short frames' lobes ($2/T$ grows as $T$
 //! shrinks near $t_0$) would cover most of the band below a few hundred hertz, and leave the
 //! disk's line read from its weakest harmonics or not at all.
@@ -188,8 +190,8 @@ impl Analyser {
                         }
                     },
                 );
-                let s = if used > 0 {
-                    s * terms as f64 / used as f64
+                let s = if used == terms || used >= 2 {
+                    s * terms as f64 / used.max(1) as f64
                 } else {
                     0.0
                 };

@@ -28,6 +28,9 @@
 //! `cycles` periods (the line smears near $t_0$) after four frames in a row held the line;
 //! that end counts as one smeared frame.
 //!
+//! **A line held still is not followed** ([`still`]): its frames are left off every line, its
+//! pitch is masked in the frames searched over the whole band as the hum's lines are.
+//!
 //! **Each point's uncertainty** is the noise's (from the frame's own power over its noise, see
 //! [`spectrum`](crate::sound_analysis::spectrum)) and the pitch's motion within the frame, in
 //! quadrature. The fit takes the rate's mean over the frame weighted by the window's energy
@@ -54,6 +57,7 @@ use rising::{rises, LineEnd};
 use serde::{Deserialize, Serialize};
 use std::borrow::Cow;
 use std::f64::consts::PI;
+use still::still_line;
 
 /// How the track is made.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -150,6 +154,9 @@ struct Frame {
     /// Searched about the line's predicted pitch but found more than [`JUMP`] off it: not on
     /// the line, and not used to predict the next frame.
     jumped: bool,
+    /// One of the frames of a line held still ([`still_line`]): not the disk's line, and on
+    /// none where a line of the others rises.
+    still: bool,
 }
 
 /// The pitch track of a uniformly sampled sound recording.
@@ -262,12 +269,25 @@ pub fn frequency_track(
 /// runs wherever a searched frame's fundamental lies more than [`STEP`] from the last one held
 /// (silent frames between do not cut a run); the run of most frames is the line (the earliest
 /// of equal runs), of those that rise as a disk's does ([`rising`]) where any does: a line that
-/// holds still (a ring after $t_0$, a mains line) is not the disk's.
+/// holds still (a ring after $t_0$, a mains line) is not the disk's. The frames of a line the
+/// march held still ([`still_line`]) are on no run, unless no run of the others rises: the
+/// track then holds the longest run of all, and its refusal says what it heard.
 fn the_line(frames: &[Frame]) -> Vec<bool> {
+    let mut line = match longest_run(frames, false) {
+        (line, true) => line,
+        _ => longest_run(frames, true).0,
+    };
+    end_at_stall(frames, &mut line);
+    line
+}
+
+/// The frames of [`the_line`]'s longest run (of those that rise, where any does), the frames of
+/// lines held still among them when `with_still`, and whether it rises.
+fn longest_run(frames: &[Frame], with_still: bool) -> (Vec<bool>, bool) {
     let mut run = vec![usize::MAX; frames.len()];
     let (mut id, mut last): (usize, Option<f64>) = (0, None);
     for (k, fr) in frames.iter().enumerate() {
-        let Some(e) = fr.est.filter(|_| !fr.jumped) else {
+        let Some(e) = fr.est.filter(|_| !fr.jumped && (with_still || !fr.still)) else {
             continue;
         };
         if let Some(p) = last {
@@ -300,9 +320,7 @@ fn the_line(frames: &[Frame]) -> Vec<bool> {
         .filter(|&i| !any_rising || rising(i))
         .max_by_key(|&i| count(i))
         .unwrap_or(0);
-    let mut line: Vec<bool> = run.iter().map(|&r| r == best).collect();
-    end_at_stall(frames, &mut line);
-    line
+    (run.iter().map(|&r| r == best).collect(), any_rising)
 }
 
 /// Ends `line` where the pitch stops rising: eq 79's rate rises ever faster toward $t_0$, so
@@ -357,12 +375,25 @@ fn end_at_stall(frames: &[Frame], line: &mut [bool]) {
 fn march(v: &[f64], t0: f64, fs: f64, s: &TrackSettings, hum: &[f64]) -> (Vec<Frame>, usize) {
     let mut an = Analyser::new(fs);
     an.mask(hum);
+    let span = v.len() as f64 / fs;
+    let mut masked = hum.to_vec();
     let mut frames: Vec<Frame> = Vec::new();
     let mut pos = 0usize;
     let mut smeared = 0;
     // The frames the line's motion is predicted from: all but those that jumped off it.
     let mut held: Vec<Frame> = Vec::new();
     loop {
+        // A line held still is not the disk's: it is masked as the hum is, and the disk's line
+        // searched for anew.
+        if let Some((from, f)) = still_line(&held, span) {
+            let last: Vec<f64> = held[from..].iter().map(|h| h.a).collect();
+            for fr in frames.iter_mut().filter(|fr| last.contains(&fr.a)) {
+                fr.still = true;
+            }
+            masked.push(f);
+            an.mask(&masked);
+            held.clear();
+        }
         let mut predicted = None;
         let (len_s, lo, hi) = match predict(&held, t0 + pos as f64 / fs) {
             Some(motion) => {
@@ -425,6 +456,7 @@ fn march(v: &[f64], t0: f64, fs: f64, s: &TrackSettings, hum: &[f64]) -> (Vec<Fr
             est,
             searched,
             jumped,
+            still: false,
         };
         if !jumped {
             held.push(frame);
@@ -562,3 +594,4 @@ fn add_motion(points: &mut [TrackPoint]) {
 #[cfg(test)]
 mod diagnosis;
 pub mod rising;
+mod still;

@@ -5,17 +5,19 @@
 //! the disk's line sweeps. The mains frequency is the
 //! maximum of the whole record's power $|\sum_j x_j e^{-2\pi i f t_j}|^2$ summed over the first
 //! three harmonics, searched within $\pm 0.3$ Hz of 50 and of 60 Hz (steps of a quarter of
-//! $1/T_{rec}$, then a parabola). A harmonic counts as hum when, in the median block of
-//! [`BLOCK_S`] seconds (Hann-windowed), its power stands [`HUM_RATIO`] times above the median of its
-//! neighbours at $\pm 2 .. 20$ resolutions (the disk's sweeping line crosses a mains line in one
-//! block or two, hum is in all); each such line is then fitted by least squares (a cosine and a
-//! sine) in blocks of [`BLOCK_S`] seconds and subtracted. Once the disk's pitch is known, the
+//! $1/T_{rec}$, then a parabola). A harmonic counts as hum when its power stands
+//! [`HUM_RATIO`] times above the median of its neighbours at $\pm 2 .. 20$ resolutions in the
+//! quieter half of the Hann-windowed blocks of [`BLOCK_S`] seconds (the disk's sweeping line,
+//! a handling bump or the shudder covers a mains line's neighbours in some blocks, hum is in
+//! all; see [`stands_out`]); each such line is then fitted by least
+//! squares (a cosine and a sine) in blocks of [`BLOCK_S`] seconds and subtracted. Once the disk's pitch is known, the
 //! lines are fitted again where the disk keeps clear of them, their phase followed as the grid's
 //! frequency wanders ([`remove_hum_clear`]).
 
 use crate::sound_analysis::mains::drift::{phasors, reach, HOP_S};
 use crate::sound_analysis::mains::line_power::{hann, power};
 use crate::sound_analysis::mains::phase::mains_phase;
+use crate::sound_analysis::mains::stands_out::stands_out;
 use rayon::prelude::*;
 use rustfft::num_complex::Complex;
 use std::f64::consts::TAU;
@@ -59,12 +61,7 @@ pub fn hum_lines(v: &[f64], fs: f64) -> Vec<f64> {
     if span < 2.0 {
         return Vec::new();
     }
-    let q = ((fs / 2000.0).floor() as usize).max(1);
-    let low: Vec<f64> = v
-        .chunks_exact(q)
-        .map(|c| c.iter().sum::<f64>() / q as f64)
-        .collect();
-    let fs_low = fs / q as f64;
+    let (low, fs_low) = low_copy(v, fs);
     // The whole record, or pieces of SEARCH_S seconds where it is longer.
     let (piece, res) = if span > SEARCH_S {
         let n = (SEARCH_S * fs_low) as usize;
@@ -123,6 +120,17 @@ pub fn hum_lines(v: &[f64], fs: f64) -> Vec<f64> {
     removed
 }
 
+/// The record `v` (sampled at `fs`) averaged over blocks of $\lfloor f_s/2000\rfloor$ samples,
+/// and its rate: the copy on which [`hum_lines`] searches and judges the lines.
+pub(crate) fn low_copy(v: &[f64], fs: f64) -> (Vec<f64>, f64) {
+    let q = ((fs / 2000.0).floor() as usize).max(1);
+    let low = v
+        .chunks_exact(q)
+        .map(|c| c.iter().sum::<f64>() / q as f64)
+        .collect();
+    (low, fs / q as f64)
+}
+
 /// The score at the grid points $i = -s..s$ (steps of a quarter resolution) that the search
 /// visits: every fourth (one resolution apart, so that a line's main lobe, two resolutions wide
 /// each side under the Hann window, holds at least three), then every point within a resolution
@@ -175,42 +183,6 @@ fn coarse_to_fine(s: i64, score: &(dyn Fn(i64) -> f64 + Sync)) -> Vec<Option<f64
         }
         visit(&mut grid, missing);
     }
-}
-
-/// Whether a line at `f` stands [`HUM_RATIO`] times above its neighbours at $\pm 2..20$
-/// resolutions in most blocks of [`BLOCK_S`] seconds (the median block): a sweeping line fills
-/// one block's neighbourhood, hum every block's line.
-fn stands_out(v: &[f64], fs: f64, f: f64) -> bool {
-    let block = ((BLOCK_S * fs) as usize).max(1);
-    let w = hann(block);
-    let fft = rustfft::FftPlanner::<f64>::new().plan_fft_forward(block);
-    // One resolution, 1/BLOCK_S, is one bin of the block's transform: shifted down by f, the
-    // block's bins k and block - k are the powers at f + k res and f - k res.
-    let mut ratios: Vec<f64> = v
-        .par_chunks_exact(block)
-        .map(|b| {
-            let mut buf = vec![Complex::new(0.0, 0.0); block];
-            for (z, ((x, w), [c, s])) in buf
-                .iter_mut()
-                .zip(b.iter().zip(&w).zip(steady(block, fs, f)))
-            {
-                *z = Complex::new(c, -s) * (x * w);
-            }
-            fft.process(&mut buf);
-            let power = |k: usize| buf[k % block].norm_sqr();
-            let mut around: Vec<f64> = (2..=20)
-                .flat_map(|i| [power(i), power(block - i)])
-                .collect();
-            let m = around.len() / 2;
-            let floor = *around.select_nth_unstable_by(m, f64::total_cmp).1;
-            power(0) / floor.max(f64::MIN_POSITIVE)
-        })
-        .collect();
-    if ratios.is_empty() {
-        return false;
-    }
-    let m = ratios.len() / 2;
-    *ratios.select_nth_unstable_by(m, f64::total_cmp).1 > HUM_RATIO
 }
 
 /// Subtracts the mains lines `lines` (Hz) from `v` (sampled at `fs`), grid by grid
@@ -339,7 +311,7 @@ pub const FREQUENCY_STEPS: usize = 2;
 /// The phasors of the steady phase $2\pi f j/f_s$ at `n` samples of rate `fs`, each the last
 /// turned by $2\pi f/f_s$ and set afresh from the phase every [`RESYNC`] samples, so that the
 /// rounding of the product cannot build up (a sine saved per sample, line and pass).
-fn steady(n: usize, fs: f64, f: f64) -> impl Iterator<Item = [f64; 2]> {
+pub(crate) fn steady(n: usize, fs: f64, f: f64) -> impl Iterator<Item = [f64; 2]> {
     let (ws, wc) = (TAU * f / fs).sin_cos();
     let mut p = [1.0, 0.0];
     (0..n).map(move |j| {

@@ -1,4 +1,5 @@
-//! Mains hum in a sound recording: found and subtracted ([`hum`]), a line's power under a window
+//! Mains hum in a sound recording: found and subtracted ([`hum`]), a line judged hum
+//! ([`stands_out`]), a line's power under a window
 //! ([`line_power`]), and the mains phase followed as the grid's frequency wanders ([`drift`]) on
 //! all the lines of one grid at once ([`phase`]).
 
@@ -6,3 +7,4 @@ pub mod drift;
 pub mod hum;
 pub mod line_power;
 pub mod phase;
+pub mod stands_out;

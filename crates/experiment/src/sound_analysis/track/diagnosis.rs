@@ -66,7 +66,7 @@ fn print_the_frames_against_the_truth() {
                 match fr.est {
                     Some(e) => println!(
                         "    {:7.3}-{:7.3} {} {} f {:8.2} +- {:6.2} check {:8.2} snr {:8.1} | truth {:8.2} ratio {:6.3}",
-                        fr.a, fr.b, if fr.searched { "S" } else { "." }, if fr.jumped { "J" } else if *on { "L" } else { "-" },
+                        fr.a, fr.b, if fr.searched { "S" } else { "." }, if fr.jumped { "J" } else if fr.still { "H" } else if *on { "L" } else { "-" },
                         e.f, e.sigma, e.check, e.snr, f0, e.f / f0
                     ),
                     None => println!(
@@ -85,6 +85,51 @@ fn print_the_frames_against_the_truth() {
                 );
             }
             Err(e) => println!("  refused: {e}"),
+        }
+    }
+}
+
+/// A diagnostic, not a test of a claim: for each phone recording of `ROLLING_DISK_SEEDS`, the
+/// room's mains lines and, at each harmonic of the grid, every block's neighbours' median power
+/// and the line's power over it ([`block_ratios`]) and whether the line was found as hum. Run
+/// with `ROLLING_DISK_SEEDS=78,101 cargo test --release -p experiment --lib
+/// track::diagnosis::print_the_hum_blocks -- --ignored --nocapture`.
+#[test]
+#[ignore = "a diagnostic: prints each seed's hum lines block by block"]
+fn print_the_hum_blocks() {
+    use crate::sound_analysis::mains::hum::low_copy;
+    use crate::sound_analysis::mains::stands_out::block_ratios;
+    let seeds = std::env::var("ROLLING_DISK_SEEDS").unwrap_or_else(|_| "78".into());
+    for seed in seeds
+        .split(',')
+        .filter_map(|s| s.trim().parse::<u64>().ok())
+    {
+        let room = PhoneRoom::draw(seed);
+        let rec = room.record().unwrap();
+        let trace = parse_recording(rec.wav().unwrap(), "phone.wav", Channels::Mix)
+            .unwrap()
+            .trace;
+        let fs = 1.0 / trace.sample_interval();
+        let found = hum_lines(&trace.v, fs);
+        println!(
+            "seed {seed}: lead {:.2} s, t0 {:.2} s, span {:.2} s, mains {} Hz (wander {:.3}), lines {:.4?}, bumps {:?}; found {found:.2?}",
+            room.lead,
+            room.t0(),
+            trace.v.len() as f64 / fs,
+            room.hum.mains,
+            room.hum.wander,
+            room.hum.lines,
+            room.bumps
+        );
+        let (low, fs_low) = low_copy(&trace.v, fs);
+        for k in 1..=room.hum.lines.len().max(3) {
+            let f = k as f64 * room.hum.mains;
+            let b = block_ratios(&low, fs_low, f, (2.0 * fs_low) as usize);
+            let cells: Vec<String> = b
+                .iter()
+                .map(|(floor, r)| format!("{floor:.1e}:{r:.1}"))
+                .collect();
+            println!("  {f:6.1} Hz: {}", cells.join(" "));
         }
     }
 }

@@ -43,6 +43,18 @@ pub fn rises(first: LineEnd, last: LineEnd, span: f64) -> bool {
         && last.f >= least_rise(last.t - first.t, span) * first.f
 }
 
+/// Whether the line from `first` to `last` holds still in a recording of `span` seconds: its
+/// pitch moves, up or down, by less than the least rise a disk's line makes over the time
+/// between them ([`least_rise`], $\rho$), by more than three of the two ends' sigmas,
+/// $$\left|\ln\frac{f_{last}}{f_{first}}\right| < \ln\rho - 3\,\frac{\sqrt{\sigma_{first}^2 + \sigma_{last}^2}}{f_{first}}.$$
+/// A disk's line never does (it rises by at least $\rho$); frames whose pitch is uncertain by
+/// more than a third of that rise cannot show it.
+pub fn holds_still(first: LineEnd, last: LineEnd, span: f64) -> bool {
+    let margin = 3.0 * first.sigma.hypot(last.sigma) / first.f;
+    last.t > first.t
+        && (last.f / first.f).ln().abs() < least_rise(last.t - first.t, span).ln() - margin
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
