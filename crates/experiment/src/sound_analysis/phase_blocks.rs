@@ -29,10 +29,16 @@
 //! block and its two neighbours on each side, gives the noise's power $\nu_h$ in $z_h$, and
 //! $\mathrm{Var}(\arg z_h) = \nu_h / (2|z_h|^2)$ (high signal-to-noise).
 //!
-//! **Harmonics combined.** Each harmonic gives the heading's offset $(\arg z_h - c_h)/h$, $c_h$
-//! its constant phase (the circular mean over the record of $\arg z_h - h\arg z_1$); the block's
-//! datum is their inverse-variance mean, its variance the inverse of the summed inverses. Blocks
-//! whose fundamental stands less than `min_snr` times above its noise are left out.
+//! **Harmonics combined.** The heading's offset is read first from one line, the **base**
+//! harmonic $b$: $u_b = \arg z_b / b$ (unwrapped from block to block as $\arg z_b$, where the
+//! reference may drift by turns). The base is the harmonic that stands `min_snr` times above its
+//! noise in the most blocks (the fundamental where it ties): behind a phone's high-pass far above
+//! a short spin's fundamental, only harmonics 2-6 are heard, and the fundamental's phase is noise
+//! while the second harmonic's holds the heading. Each other harmonic gives the offset
+//! $u_b + \mathrm{wrap}(\arg z_h - c_h - h u_b)/h$, $c_h$ its constant phase (the circular mean
+//! over the record of $\arg z_h - h u_b$); the block's datum is their inverse-variance mean, its
+//! variance the inverse of the summed inverses. Blocks whose base harmonic stands less than
+//! `min_snr` times above its noise are left out.
 
 use crate::fit::eq84_85::phase;
 use nalgebra::SVector;
@@ -61,14 +67,20 @@ pub struct Block {
     pub offset: f64,
     /// Its standard uncertainty (rad).
     pub sigma: f64,
-    /// The fundamental's power over the noise's in $z_1$.
+    /// The base harmonic's power over the noise's in $z_b$.
     pub snr: f64,
-    /// Per harmonic $h \ge 2$ (index $h - 1$; NaN where the block has no such harmonic): its
-    /// phase against $h$ times the fundamental's, $\mathrm{wrap}(\arg z_h - c_h - h u_1)$ (rad),
-    /// which the heading does not move and a filter's phase $\varphi$ moves by
-    /// $\varphi(h\Omega) - h\varphi(\Omega)$ less its mean over the record.
+    /// The base harmonic $b$ the offset is read from (see the module's documentation): 1, the
+    /// fundamental, unless another line stands above its noise in more blocks.
+    pub base: usize,
+    /// Each harmonic's power over the noise's in $z_h$ (index $h - 1$; NaN where absent).
+    pub snrs: [f64; HARMONICS],
+    /// Per harmonic $h \ne b$ (index $h - 1$; NaN where the block has no such harmonic, and at
+    /// the base): its phase against $h$ times the base's offset,
+    /// $\mathrm{wrap}(\arg z_h - c_h - h u_b)$ (rad), which the heading does not move and a
+    /// filter's phase $\varphi$ moves by $\varphi(h\Omega) - (h/b)\varphi(b\Omega)$ less its
+    /// mean over the record.
     pub split: [f64; HARMONICS],
-    /// Its variance $\mathrm{Var}(\arg z_h) + h^2\,\mathrm{Var}(u_1)$ (rad²).
+    /// Its variance $\mathrm{Var}(\arg z_h) + h^2\,\mathrm{Var}(u_b)$ (rad²).
     pub split_var: [f64; HARMONICS],
     /// Per harmonic $h \ge 1$ (index $h - 1$; NaN where absent): $\arg z_h$ against $h$ times
     /// the reference heading plus the shift (rad), and its variance (rad²), for the harmonic
@@ -76,8 +88,8 @@ pub struct Block {
     pub phase: [f64; HARMONICS],
     /// (see `phase`)
     pub phase_var: [f64; HARMONICS],
-    /// The weight of harmonic $h$ in `offset`, $\mathrm{offset} = u_1 + \sum_{h \ge 2}
-    /// W_h\,\mathrm{split}_h / h$ (index $h - 1$; 0 where absent).
+    /// The weight of harmonic $h$ in `offset`, $\mathrm{offset} = u_b + \sum_{h \ne b}
+    /// W_h\,\mathrm{split}_h / h$ (index $h - 1$; 0 where absent and at the base).
     pub weight: [f64; HARMONICS],
 }
 
@@ -86,7 +98,8 @@ pub struct Block {
 pub struct BlockSettings {
     /// Longest block (s), unless two turns take longer.
     pub max_block: f64,
-    /// A block is kept when its fundamental's power stands this many times above the noise's.
+    /// A block is kept when its base harmonic's power stands this many times above the noise's
+    /// (see the module's documentation).
     pub min_snr: f64,
     /// The fewest blocks the heading is fitted to.
     pub min_blocks: usize,
@@ -331,7 +344,7 @@ fn combine(
     // Per block and harmonic: the phase (rad) and its variance.
     let rot = Complex::from_polar(1.0, -shift);
     let mut per: Vec<Vec<(f64, f64)>> = Vec::with_capacity(n);
-    let mut keep = Vec::with_capacity(n);
+    let mut snrs: Vec<[f64; HARMONICS]> = Vec::with_capacity(n);
     for (k, r) in raw.iter().enumerate() {
         let mut v = Vec::with_capacity(r.4);
         for h in 0..r.4 {
@@ -340,27 +353,36 @@ fn combine(
             let var = nu / (2.0 * zh.norm_sqr()).max(f64::MIN_POSITIVE);
             v.push((zh.arg(), var));
         }
-        let snr = r.3.z[0].norm_sqr() / (pooled(k, 0) * r.3.w2).max(f64::MIN_POSITIVE);
-        keep.push(snr);
+        let mut snr = [f64::NAN; HARMONICS];
+        for (h, x) in snr.iter_mut().enumerate().take(r.4) {
+            *x = r.3.z[h].norm_sqr() / (pooled(k, h) * r.3.w2).max(f64::MIN_POSITIVE);
+        }
+        snrs.push(snr);
         per.push(v);
     }
-    let kept: Vec<usize> = (0..n).filter(|&k| keep[k] >= s.min_snr).collect();
-    // The fundamental's offsets, wrapped or unwrapped.
-    let mut u1: Vec<f64> = kept.iter().map(|&k| per[k][0].0).collect();
+    // The base: the harmonic above `min_snr` in the most blocks, the lowest of equal counts.
+    let above = |h: usize| (0..n).filter(|&k| snrs[k][h] >= s.min_snr).count();
+    let b = (0..HARMONICS).rev().max_by_key(|&h| above(h)).unwrap_or(0);
+    let bb = (b + 1) as f64;
+    let kept: Vec<usize> = (0..n).filter(|&k| snrs[k][b] >= s.min_snr).collect();
+    // The base's offsets, wrapped or unwrapped (as its phase), and their variances.
+    let mut ub: Vec<f64> = kept.iter().map(|&k| per[k][b].0).collect();
     if unwrap {
-        for i in 1..u1.len() {
-            u1[i] = u1[i - 1] + wrap(u1[i] - u1[i - 1]);
+        for i in 1..ub.len() {
+            ub[i] = ub[i - 1] + wrap(ub[i] - ub[i - 1]);
         }
     }
-    // Each harmonic's constant phase c_h.
+    let u: Vec<f64> = ub.iter().map(|v| v / bb).collect();
+    let u_var: Vec<f64> = kept.iter().map(|&k| per[k][b].1 / (bb * bb)).collect();
+    // Each other harmonic's constant phase c_h.
     let mut c = [0.0f64; HARMONICS];
-    for (h, ch) in c.iter_mut().enumerate().skip(1) {
+    for (h, ch) in c.iter_mut().enumerate().filter(|(h, _)| *h != b) {
         let mut acc = Complex::new(0.0, 0.0);
         for (i, &k) in kept.iter().enumerate() {
             if let Some(&(ph, var)) = per[k].get(h) {
                 let hh = (h + 1) as f64;
-                let wgt = 1.0 / (var + hh * hh * per[k][0].1);
-                acc += Complex::from_polar(wgt, ph - hh * u1[i]);
+                let wgt = 1.0 / (var + hh * hh * u_var[i]);
+                acc += Complex::from_polar(wgt, ph - hh * u[i]);
             }
         }
         *ch = acc.arg();
@@ -368,17 +390,17 @@ fn combine(
     kept.iter()
         .enumerate()
         .map(|(i, &k)| {
-            let (mut num, mut den) = (u1[i] / per[k][0].1, 1.0 / per[k][0].1);
+            let (mut num, mut den) = (u[i] / u_var[i], 1.0 / u_var[i]);
             let (mut split, mut split_var, mut weight) = (
                 [f64::NAN; HARMONICS],
                 [f64::NAN; HARMONICS],
                 [0.0; HARMONICS],
             );
-            for (h, &(ph, var)) in per[k].iter().enumerate().skip(1) {
+            for (h, &(ph, var)) in per[k].iter().enumerate().filter(|(h, _)| *h != b) {
                 let hh = (h + 1) as f64;
-                split[h] = wrap(ph - c[h] - hh * u1[i]);
-                split_var[h] = var + hh * hh * per[k][0].1;
-                let est = u1[i] + split[h] / hh;
+                split[h] = wrap(ph - c[h] - hh * u[i]);
+                split_var[h] = var + hh * hh * u_var[i];
+                let est = u[i] + split[h] / hh;
                 num += est * hh * hh / var;
                 den += hh * hh / var;
                 weight[h] = hh * hh / var;
@@ -398,7 +420,9 @@ fn combine(
                 turns: r.2,
                 offset: num / den,
                 sigma: den.recip().sqrt(),
-                snr: keep[k],
+                snr: snrs[k][b],
+                base: b + 1,
+                snrs: snrs[k],
                 split,
                 split_var,
                 phase,
