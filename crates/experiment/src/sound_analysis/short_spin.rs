@@ -53,6 +53,7 @@ use crate::fit::law_fit::LawFit;
 use crate::fit::least_squares::Problem;
 use crate::fit::plausibility::{Evidence, Plausibility, Points, SOUND_MIN_FRAMES};
 use crate::sound_analysis::analysed::SoundAnalysis;
+use crate::sound_analysis::mains::hum::subtract_hum;
 use crate::sound_analysis::phase_blocks::{blocks, BlockSettings, Samples};
 use crate::sound_analysis::phase_fit::{fit_phase, PhaseFit};
 use crate::sound_analysis::refusal::RISES;
@@ -61,6 +62,7 @@ use crate::sound_analysis::track_law::{TrackFit, TrackLaw};
 use crate::trace::Trace;
 use nalgebra::SVector;
 use statrs::distribution::{ContinuousCDF, StudentsT};
+use std::borrow::Cow;
 use std::f64::consts::TAU;
 
 /// The grid's step in $\beta$.
@@ -276,7 +278,22 @@ pub fn analysed(
         ));
     }
     let first = pts[0].a;
-    let Some((p0, step)) = seed(&rec, track, first) else {
+    // The seed is scored on the record with the mains lines the track found subtracted (a hum
+    // line's window sidelobes would otherwise reach the blocks' lines and noise probes); the
+    // heading's fit subtracts them itself, where the disk keeps clear of them.
+    let clean: Cow<'_, [f64]> = if track.hum.is_empty() {
+        Cow::Borrowed(&trace.v)
+    } else {
+        let mut v = trace.v.clone();
+        subtract_hum(&mut v, track.sample_rate, &track.hum);
+        Cow::Owned(v)
+    };
+    let heard = Samples {
+        x: &clean,
+        t_start: rec.t_start,
+        dt: rec.dt,
+    };
+    let Some((p0, step)) = seed(&heard, track, first) else {
         return Err(
             "the line runs to the recording's end, so no end time after it is left to search: \
              record until the disk is silent"
@@ -443,8 +460,10 @@ mod tests {
                     room.law.precession(room.t0() - 0.5 * (p.a + p.b)) / TAU
                 );
             }
+            let mut v = trace.v.clone();
+            subtract_hum(&mut v, track.sample_rate, &track.hum);
             let rec = Samples {
-                x: &trace.v,
+                x: &v,
                 t_start: trace.t[0],
                 dt: 1.0 / track.sample_rate,
             };
