@@ -488,4 +488,43 @@ mod tests {
             assert!((a.offset - b.offset).abs() < 1e-4, "{:.3} s", a.a);
         }
     }
+
+    /// The same law behind a phone's high-pass that leaves no fundamental at all, its second
+    /// and third harmonics over white noise: the fundamental's phase is noise in every block,
+    /// so the heading is read from the second harmonic, the line above the noise in most
+    /// blocks, and the blocks' offsets from the law scatter about zero as their sigmas say.
+    #[test]
+    fn without_a_fundamental_the_heading_is_read_from_the_line_heard() {
+        use rand::SeedableRng;
+        use rand_distr::{Distribution, Normal};
+        let p = SVector::<f64, 3>::new(2.0, 10.0, (100f64.powi(4) * 7.0).ln());
+        let fs = 8000.0;
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(9);
+        let noise = Normal::new(0.0, 0.05).unwrap();
+        let x: Vec<f64> = (0..(9.0 * fs) as usize)
+            .map(|j| {
+                let phi = phase(&p, j as f64 / fs).0;
+                (2.0 * phi + 0.3).sin() + 0.5 * (3.0 * phi + 1.0).sin() + noise.sample(&mut rng)
+            })
+            .collect();
+        let rec = Samples {
+            x: &x,
+            t_start: 0.0,
+            dt: 1.0 / fs,
+        };
+        let bl = blocks(&rec, &p, 0.0, (1.0, 8.0), false, &BlockSettings::default());
+        assert!(bl.len() > 40, "{} blocks", bl.len());
+        // The constant phase of the second harmonic, 0.3 - pi/2, halved, is the offset.
+        let c = super::wrap(0.3 - 0.5 * std::f64::consts::PI) / 2.0;
+        let z: Vec<f64> = bl
+            .iter()
+            .map(|b| super::wrap(b.offset - c) / b.sigma)
+            .collect();
+        assert!(bl.iter().all(|b| b.base == 2), "{bl:?}");
+        let n = z.len() as f64;
+        let mean = z.iter().sum::<f64>() / n;
+        let rms = (z.iter().map(|v| v * v).sum::<f64>() / n).sqrt();
+        assert!(mean.abs() < 3.0 / n.sqrt(), "mean offset {mean} sigmas");
+        assert!((0.7..1.5).contains(&rms), "rms offset {rms} sigmas");
+    }
 }
