@@ -22,7 +22,7 @@
 //! | "does not rise steadily" (Kendall's tau) | phone-room seed 200 (its track joins a mains residue to the disk's harmonics) | record closer, away from other sounds | does not work yet: recorded louder or without the hum, the recording is still refused (for other causes); open |
 //! | "lie off the disk's line (stray)" | phone-room seeds 126 (its track joins a 50 Hz line to the disk's) and 200 | record closer, away from other sounds | does not work yet: (as above) |
 //! | "fewer than the 8 a fit of eq 79 is judged on" | phone-room seed 1039 (6.80 s of sound from 6.4 Hz, 6 frames, its phase under its noise) | record the spin from earlier | a disk's spin from its first seconds: analysed (one heard for its last 0.7 s is analysed as a short spin) |
-//! | "nor can it be analysed as a short spin" / "from its phase alone" (a track of fewer than 8 frames whose phase cannot stand in for it: fewer than 2 frames, a line that does not rise, too few phase blocks, a fit that misses the track's frames, beta out of range, residuals with structure, too little rise, a line run to the recording's end) | phone-room seeds 1046, 47, 72, 1031, 6, 200, 101, and seed 75 with a frame moved, beta's range narrowed or its last frame run to the end (`sound_analysis::short_spin`'s tests); residuals with structure: an eq 79 spin whose heading carries a 0.1 rad, 0.8 s oscillation (`sound_analysis::heading_departure`) | the track's own (record the whole spin, closer to the disk, until it is silent) | a short spin the phase follows (seed 75, 1.98 s of sound): analysed from its phase, both intervals holding the truth |
+//! | "nor can it be analysed as a short spin" / "from its phase alone" (a track of fewer than 8 frames whose phase cannot stand in for it: fewer than 2 frames, a line that does not rise, too few phase blocks, a fit that misses the track's frames, beta out of range, residuals with structure, too little rise, a line run to the recording's end) | phone-room seeds 1046, 47, 72, 6, 200, 101, and seed 75 with a frame moved, beta's range narrowed, the rise asked for raised to 10 or its last frame run to the end (`sound_analysis::short_spin`'s tests); residuals with structure: an eq 79 spin whose heading carries a 0.1 rad, 0.8 s oscillation (`sound_analysis::heading_departure`) | the track's own (record the whole spin, closer to the disk, until it is silent) | a short spin the phase follows (seed 75, 1.98 s of sound): analysed from its phase, both intervals holding the truth |
 
 use crate::common::{cli_in, temp_dir, write_wav_i16};
 use rand::SeedableRng;
@@ -394,7 +394,10 @@ fn a_track_that_leaves_eq_79_no_start_is_refused_saying_so() {
     let why = analysed(&step).expect_err("not a spin-down");
     assert!(why.contains("outside the law's domain"), "{why}");
     for word in ["pulse", "light", "peak", "1/Omega"] {
-        assert!(!why.contains(word), "a sound's refusal speaks of {word}: {why}");
+        assert!(
+            !why.contains(word),
+            "a sound's refusal speaks of {word}: {why}"
+        );
     }
     assert_analysed(&disk(0.3, 0.003, 1.0));
 }

@@ -12,7 +12,7 @@
 //! **The harmonics measure it apart from the law.** The heading moves harmonic $h$'s phase by $h$
 //! times the fundamental's; the filter moves it by $\varphi(h\Omega)$. So each block's
 //! $\mathrm{split}_h = \arg z_h - c_h - h u_b$, against the offset $u_b$ read from the base
-//! harmonic $b$ ([`Block::base`], the fundamental unless another line is heard in more blocks),
+//! harmonic $b$ ([`Block::base`], the fundamental unless it is heard in too few blocks),
 //! does not depend on the heading at all and holds
 //! $$g_h(\Omega) + \kappa_h, \qquad g_h = \varphi(h\Omega) - \frac{h}{b}\,\varphi(b\Omega),$$
 //! a constant $\kappa_h$ (what $c_h$ left) aside, **to a whole turn**: the splits are phases,

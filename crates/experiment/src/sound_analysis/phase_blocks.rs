@@ -31,10 +31,13 @@
 //!
 //! **Harmonics combined.** The heading's offset is read first from one line, the **base**
 //! harmonic $b$: $u_b = \arg z_b / b$ (unwrapped from block to block as $\arg z_b$, where the
-//! reference may drift by turns). The base is the harmonic that stands `min_snr` times above its
-//! noise in the most blocks (the fundamental where it ties): behind a phone's high-pass far above
-//! a short spin's fundamental, only harmonics 2-6 are heard, and the fundamental's phase is noise
-//! while the second harmonic's holds the heading. Each other harmonic gives the offset
+//! reference may drift by turns). The base is the fundamental where it stands `min_snr` times
+//! above its noise in as many blocks as the fit needs (`min_blocks`): its phase counts the turns
+//! themselves, and the high-pass's corner is read against it
+//! ([`high_pass`](crate::sound_analysis::high_pass)). Otherwise it is the harmonic that stands
+//! `min_snr` above its noise in the most blocks (the lowest of equal counts): behind a phone's
+//! high-pass far above a short spin's fundamental, only harmonics 2-6 are heard, and the
+//! fundamental's phase is noise while the second harmonic's holds the heading. Each other harmonic gives the offset
 //! $u_b + \mathrm{wrap}(\arg z_h - c_h - h u_b)/h$, $c_h$ its constant phase (the circular mean
 //! over the record of $\arg z_h - h u_b$); the block's datum is their inverse-variance mean, its
 //! variance the inverse of the summed inverses. Blocks whose base harmonic stands less than
@@ -70,7 +73,7 @@ pub struct Block {
     /// The base harmonic's power over the noise's in $z_b$.
     pub snr: f64,
     /// The base harmonic $b$ the offset is read from (see the module's documentation): 1, the
-    /// fundamental, unless another line stands above its noise in more blocks.
+    /// fundamental, unless it stands above its noise in fewer blocks than the fit needs.
     pub base: usize,
     /// Each harmonic's power over the noise's in $z_h$ (index $h - 1$; NaN where absent).
     pub snrs: [f64; HARMONICS],
@@ -360,9 +363,14 @@ fn combine(
         snrs.push(snr);
         per.push(v);
     }
-    // The base: the harmonic above `min_snr` in the most blocks, the lowest of equal counts.
+    // The base: the fundamental where it stands above `min_snr` in the blocks a fit needs,
+    // else the harmonic above it in the most blocks, the lowest of equal counts.
     let above = |h: usize| (0..n).filter(|&k| snrs[k][h] >= s.min_snr).count();
-    let b = (0..HARMONICS).rev().max_by_key(|&h| above(h)).unwrap_or(0);
+    let b = if above(0) >= s.min_blocks {
+        0
+    } else {
+        (0..HARMONICS).rev().max_by_key(|&h| above(h)).unwrap_or(0)
+    };
     let bb = (b + 1) as f64;
     let kept: Vec<usize> = (0..n).filter(|&k| snrs[k][b] >= s.min_snr).collect();
     // The base's offsets, wrapped or unwrapped (as its phase), and their variances.
