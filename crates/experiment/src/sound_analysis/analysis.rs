@@ -196,6 +196,15 @@ pub fn analyze_sound_keeping_track(
 /// frames halved down to 0.125 s, and where none holds that many, the same lengths again at a
 /// signal-to-noise threshold [`WEAK_LINE`] times lower; of the tracks whose line rises, else of
 /// all, the track of most frames kept (the first error when none could be made).
+///
+/// **The frame length is chosen for the lowest line.** A search frame of $T$ seconds holds
+/// `cycles` periods of a line at $f$ only where $fT \ge$ `cycles` (and the search band starts at
+/// $2.5/T$): a frame shorter than that cannot hold the disk's fundamental, and a track made of
+/// such frames follows a harmonic or a stray tone, in more frames than the longer frames held
+/// the line in. So once a track whose line rises is held, a shorter search frame is tried only
+/// where it still holds `cycles` periods of that line's lowest pitch ([`holds_line`]); a short
+/// spin's few frames of its fundamental are then kept, and analysed from its phase
+/// ([`short_spin`]).
 fn track_of(trace: &Trace, settings: &TrackSettings) -> Result<FrequencyTrack, ExperimentError> {
     let mut best = frequency_track(trace, settings);
     let mut s = *settings;
@@ -206,7 +215,12 @@ fn track_of(trace: &Trace, settings: &TrackSettings) -> Result<FrequencyTrack, E
             .map_or((false, 0), |t| (track_rises(t, span), t.points.len()))
     };
     let enough = |k: (bool, usize)| k.0 && k.1 >= SOUND_MIN_FRAMES;
-    while !enough(held(&best)) && s.search > 0.125 + 1e-9 {
+    let room = |best: &Result<FrequencyTrack, ExperimentError>, search: f64| {
+        best.as_ref().map_or(true, |t| {
+            !track_rises(t, span) || holds_line(t, search, settings.cycles)
+        })
+    };
+    while !enough(held(&best)) && s.search > 0.125 + 1e-9 && room(&best, 0.5 * s.search) {
         s.search = (0.5 * s.search).max(0.125);
         s.max_frame = s.max_frame.min(s.search);
         let shorter = frequency_track(trace, &s);
@@ -218,7 +232,7 @@ fn track_of(trace: &Trace, settings: &TrackSettings) -> Result<FrequencyTrack, E
     // high-pass, a quiet spin in room noise) is looked for again at a third of it.
     let mut weak = *settings;
     weak.min_snr = settings.min_snr / WEAK_LINE;
-    while !enough(held(&best)) && weak.search > 0.125 - 1e-9 {
+    while !enough(held(&best)) && weak.search > 0.125 - 1e-9 && room(&best, weak.search) {
         let again = frequency_track(trace, &weak);
         if held(&again) > held(&best) {
             best = again;
@@ -227,6 +241,17 @@ fn track_of(trace: &Trace, settings: &TrackSettings) -> Result<FrequencyTrack, E
         weak.max_frame = weak.max_frame.min(weak.search);
     }
     best
+}
+
+/// Whether search frames of `search` seconds hold `cycles` periods of the lowest pitch of the
+/// line `track` follows (see [`track_of`]).
+fn holds_line(track: &FrequencyTrack, search: f64, cycles: f64) -> bool {
+    let lowest = track
+        .points
+        .iter()
+        .map(|p| p.omega / (2.0 * PI))
+        .fold(f64::INFINITY, f64::min);
+    lowest * search >= cycles
 }
 
 /// Whether the line `track` holds, from its first point to its last, rises as a disk's does in

@@ -11,8 +11,10 @@
 //!
 //! **The harmonics measure it apart from the law.** The heading moves harmonic $h$'s phase by $h$
 //! times the fundamental's; the filter moves it by $\varphi(h\Omega)$. So each block's
-//! $\mathrm{split}_h = \arg z_h - c_h - h u_1$ does not depend on the heading at all and holds
-//! $$g_h(\Omega) + \kappa_h, \qquad g_h = \varphi(h\Omega) - h\,\varphi(\Omega),$$
+//! $\mathrm{split}_h = \arg z_h - c_h - h u_b$, against the offset $u_b$ read from the base
+//! harmonic $b$ ([`Block::base`], the fundamental unless it is heard in too few blocks),
+//! does not depend on the heading at all and holds
+//! $$g_h(\Omega) + \kappa_h, \qquad g_h = \varphi(h\Omega) - \frac{h}{b}\,\varphi(b\Omega),$$
 //! a constant $\kappa_h$ (what $c_h$ left) aside, **to a whole turn**: the splits are phases,
 //! wrapped to $(-\pi, \pi]$, and where the fundamental lies below the corner $g_h$ runs over more
 //! than a turn across the record (at a tenth of the corner $g_3 \approx -2\pi$). $\omega_c$ is
@@ -20,7 +22,7 @@
 //! residual the wrapped difference $\mathrm{wrap}(\mathrm{split}_h - g_h - \kappa_h)$ and
 //! $\kappa_h$ the splits' circular mean about $g_h$ at that corner ([`Splits::constant`]); the
 //! blocks' headings are corrected by the lead their data hold,
-//! $$\varphi(\Omega) + \sum_{h \ge 2} W_h\,\frac{g_h(\Omega) + \kappa_h}{h},$$
+//! $$\frac{\varphi(b\Omega)}{b} + \sum_{h \ne b} W_h\,\frac{g_h(\Omega) + \kappa_h}{h},$$
 //! each harmonic's term taken to the turn of the block's own split, and $\omega_c$'s uncertainty
 //! is carried into $\beta$'s and $t_0$'s by refitting at $\omega_c \pm \sigma_{\omega_c}$.
 //!
@@ -59,12 +61,14 @@ pub fn lead(wc: f64, w: f64) -> (f64, f64) {
     (u.atan2(v), (v * SQRT_2 * w + u * 2.0 * wc) / d)
 }
 
-/// $g_h(\Omega) = \varphi(h\Omega) - h\varphi(\Omega)$ and its derivative by $\omega_c$.
-fn g(h: usize, wc: f64, w: f64) -> (f64, f64) {
-    let hh = h as f64;
+/// $g_h(\Omega) = \varphi(h\Omega) - (h/b)\,\varphi(b\Omega)$ for the base harmonic `base` $= b$
+/// and its derivative by $\omega_c$.
+fn g(h: usize, base: usize, wc: f64, w: f64) -> (f64, f64) {
+    let (hh, bb) = (h as f64, base as f64);
     let (a, da) = lead(wc, hh * w);
-    let (b, db) = lead(wc, w);
-    (a - hh * b, da - hh * db)
+    let (b, db) = lead(wc, bb * w);
+    let r = hh / bb;
+    (a - r * b, da - r * db)
 }
 
 /// The splits of blocks `bl` with rates `omega` (rad/s): data (block, harmonic) pairs.
@@ -86,9 +90,9 @@ type Constants = [(f64, f64); HARMONICS];
 impl<'a> Splits<'a> {
     fn new(bl: &'a [Block], omega: &'a [f64]) -> (Self, Vec<f64>) {
         let (mut at, mut y, mut var) = (Vec::new(), Vec::new(), Vec::new());
-        for h in 2..=HARMONICS {
+        for h in 1..=HARMONICS {
             for (k, b) in bl.iter().enumerate() {
-                if b.split[h - 1].is_finite() && b.split_var[h - 1] > 0.0 {
+                if h != b.base && b.split[h - 1].is_finite() && b.split_var[h - 1] > 0.0 {
                     at.push((k, h));
                     y.push(b.split[h - 1]);
                     var.push(b.split_var[h - 1]);
@@ -116,7 +120,7 @@ impl<'a> Splits<'a> {
             Some((c, m)) if c.to_bits() == wc.to_bits() => m[h - 1],
             _ => {
                 let mut m = [(f64::NAN, f64::NAN); HARMONICS];
-                for (j, mj) in m.iter_mut().enumerate().skip(1) {
+                for (j, mj) in m.iter_mut().enumerate() {
                     *mj = self.constant(j + 1, wc);
                 }
                 *kept = Some((wc, m));
@@ -141,7 +145,7 @@ impl<'a> Splits<'a> {
         let (mut sin, mut cos) = (0.0, 0.0);
         for k in 0..self.bl.len() {
             if let Some((y, w)) = held(k) {
-                let (sk, ck) = (y - g(h, wc, self.omega[k]).0).sin_cos();
+                let (sk, ck) = (y - g(h, self.bl[k].base, wc, self.omega[k]).0).sin_cos();
                 sin += w * sk;
                 cos += w * ck;
             }
@@ -150,7 +154,7 @@ impl<'a> Splits<'a> {
         let (mut num, mut den) = (0.0, 0.0);
         for k in 0..self.bl.len() {
             if let Some((y, w)) = held(k) {
-                let (gv, dg) = g(h, wc, self.omega[k]);
+                let (gv, dg) = g(h, self.bl[k].base, wc, self.omega[k]);
                 let c = (y - gv - kappa).cos();
                 num += w * c * dg;
                 den += w * c;
@@ -159,11 +163,11 @@ impl<'a> Splits<'a> {
         (kappa, -num / den)
     }
 
-    /// The model of datum `y` of harmonic `h` at rate `w` and corner `wc`, $g_h + \kappa_h$
-    /// taken to the turn nearest `y` (the splits are phases, known to a whole turn), and its
-    /// derivative by `wc`.
-    fn near(&self, y: f64, h: usize, wc: f64, w: f64) -> (f64, f64) {
-        let (gv, dg) = g(h, wc, w);
+    /// The model of datum `y` of harmonic `h` against the base harmonic `base` at rate `w` and
+    /// corner `wc`, $g_h + \kappa_h$ taken to the turn nearest `y` (the splits are phases, known
+    /// to a whole turn), and its derivative by `wc`.
+    fn near(&self, y: f64, h: usize, base: usize, wc: f64, w: f64) -> (f64, f64) {
+        let (gv, dg) = g(h, base, wc, w);
         let (kappa, dk) = self.constant_at(h, wc);
         (y - wrap(y - gv - kappa), dg + dk)
     }
@@ -175,7 +179,7 @@ impl Problem<1> for Splits<'_> {
     }
     fn model(&self, p: &SVector<f64, 1>, i: usize) -> (f64, SVector<f64, 1>) {
         let (k, h) = self.at[i];
-        let (m, dm) = self.near(self.y[i], h, p[0], self.omega[k]);
+        let (m, dm) = self.near(self.y[i], h, self.bl[k].base, p[0], self.omega[k]);
         (m, SVector::<f64, 1>::new(dm))
     }
     fn rows(&self, _p: &SVector<f64, 1>) -> Vec<Row> {
@@ -238,8 +242,8 @@ pub fn rates(bl: &[Block], p: &SVector<f64, 3>) -> Vec<f64> {
 }
 
 /// Fits the corner to the splits of blocks `bl` at rates `omega`: started from the best of
-/// corners 2-2000 Hz on a logarithmic grid; `None` where no block holds a harmonic above the
-/// fundamental, or the fit fails.
+/// corners 2-2000 Hz on a logarithmic grid; `None` where no block holds a harmonic besides the
+/// base, or the fit fails.
 pub fn fit_corner(bl: &[Block], omega: &[f64]) -> Option<Corner> {
     let (sp, var) = Splits::new(bl, omega);
     if sp.y.len() < 4 {
@@ -265,18 +269,19 @@ pub fn fit_corner(bl: &[Block], omega: &[f64]) -> Option<Corner> {
 }
 
 /// The lead (rad) each block's datum holds for a corner `wc` (rad/s), at rates `omega`: the
-/// fundamental's $\varphi(\Omega)$ and each harmonic's split model ([`Splits::near`]) by its
-/// weight in the datum.
+/// base harmonic's $\varphi(b\Omega)/b$ and each other harmonic's split model
+/// ([`Splits::near`]) by its weight in the datum.
 pub fn block_leads(bl: &[Block], omega: &[f64], wc: f64) -> Vec<f64> {
     let (sp, _) = Splits::new(bl, omega);
     bl.iter()
         .zip(omega)
         .map(|(b, &w)| {
-            let mut l = lead(wc, w).0;
-            for h in 2..=HARMONICS {
+            let base = b.base as f64;
+            let mut l = lead(wc, base * w).0 / base;
+            for h in (1..=HARMONICS).filter(|&h| h != b.base) {
                 let y = b.split[h - 1];
                 if b.weight[h - 1] > 0.0 && y.is_finite() {
-                    let m = sp.near(y, h, wc, w).0;
+                    let m = sp.near(y, h, b.base, wc, w).0;
                     if m.is_finite() {
                         l += b.weight[h - 1] * m / h as f64;
                     }

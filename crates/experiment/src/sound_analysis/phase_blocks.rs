@@ -29,10 +29,19 @@
 //! block and its two neighbours on each side, gives the noise's power $\nu_h$ in $z_h$, and
 //! $\mathrm{Var}(\arg z_h) = \nu_h / (2|z_h|^2)$ (high signal-to-noise).
 //!
-//! **Harmonics combined.** Each harmonic gives the heading's offset $(\arg z_h - c_h)/h$, $c_h$
-//! its constant phase (the circular mean over the record of $\arg z_h - h\arg z_1$); the block's
-//! datum is their inverse-variance mean, its variance the inverse of the summed inverses. Blocks
-//! whose fundamental stands less than `min_snr` times above its noise are left out.
+//! **Harmonics combined.** The heading's offset is read first from one line, the **base**
+//! harmonic $b$: $u_b = \arg z_b / b$ (unwrapped from block to block as $\arg z_b$, where the
+//! reference may drift by turns). The base is the fundamental where it stands `min_snr` times
+//! above its noise in as many blocks as the fit needs (`min_blocks`): its phase counts the turns
+//! themselves, and the high-pass's corner is read against it
+//! ([`high_pass`](crate::sound_analysis::high_pass)). Otherwise it is the harmonic that stands
+//! `min_snr` above its noise in the most blocks (the lowest of equal counts): behind a phone's
+//! high-pass far above a short spin's fundamental, only harmonics 2-6 are heard, and the
+//! fundamental's phase is noise while the second harmonic's holds the heading. Each other harmonic gives the offset
+//! $u_b + \mathrm{wrap}(\arg z_h - c_h - h u_b)/h$, $c_h$ its constant phase (the circular mean
+//! over the record of $\arg z_h - h u_b$); the block's datum is their inverse-variance mean, its
+//! variance the inverse of the summed inverses. Blocks whose base harmonic stands less than
+//! `min_snr` times above its noise are left out.
 
 use crate::fit::eq84_85::phase;
 use nalgebra::SVector;
@@ -61,14 +70,20 @@ pub struct Block {
     pub offset: f64,
     /// Its standard uncertainty (rad).
     pub sigma: f64,
-    /// The fundamental's power over the noise's in $z_1$.
+    /// The base harmonic's power over the noise's in $z_b$.
     pub snr: f64,
-    /// Per harmonic $h \ge 2$ (index $h - 1$; NaN where the block has no such harmonic): its
-    /// phase against $h$ times the fundamental's, $\mathrm{wrap}(\arg z_h - c_h - h u_1)$ (rad),
-    /// which the heading does not move and a filter's phase $\varphi$ moves by
-    /// $\varphi(h\Omega) - h\varphi(\Omega)$ less its mean over the record.
+    /// The base harmonic $b$ the offset is read from (see the module's documentation): 1, the
+    /// fundamental, unless it stands above its noise in fewer blocks than the fit needs.
+    pub base: usize,
+    /// Each harmonic's power over the noise's in $z_h$ (index $h - 1$; NaN where absent).
+    pub snrs: [f64; HARMONICS],
+    /// Per harmonic $h \ne b$ (index $h - 1$; NaN where the block has no such harmonic, and at
+    /// the base): its phase against $h$ times the base's offset,
+    /// $\mathrm{wrap}(\arg z_h - c_h - h u_b)$ (rad), which the heading does not move and a
+    /// filter's phase $\varphi$ moves by $\varphi(h\Omega) - (h/b)\varphi(b\Omega)$ less its
+    /// mean over the record.
     pub split: [f64; HARMONICS],
-    /// Its variance $\mathrm{Var}(\arg z_h) + h^2\,\mathrm{Var}(u_1)$ (rad²).
+    /// Its variance $\mathrm{Var}(\arg z_h) + h^2\,\mathrm{Var}(u_b)$ (rad²).
     pub split_var: [f64; HARMONICS],
     /// Per harmonic $h \ge 1$ (index $h - 1$; NaN where absent): $\arg z_h$ against $h$ times
     /// the reference heading plus the shift (rad), and its variance (rad²), for the harmonic
@@ -76,8 +91,8 @@ pub struct Block {
     pub phase: [f64; HARMONICS],
     /// (see `phase`)
     pub phase_var: [f64; HARMONICS],
-    /// The weight of harmonic $h$ in `offset`, $\mathrm{offset} = u_1 + \sum_{h \ge 2}
-    /// W_h\,\mathrm{split}_h / h$ (index $h - 1$; 0 where absent).
+    /// The weight of harmonic $h$ in `offset`, $\mathrm{offset} = u_b + \sum_{h \ne b}
+    /// W_h\,\mathrm{split}_h / h$ (index $h - 1$; 0 where absent and at the base).
     pub weight: [f64; HARMONICS],
 }
 
@@ -86,7 +101,8 @@ pub struct Block {
 pub struct BlockSettings {
     /// Longest block (s), unless two turns take longer.
     pub max_block: f64,
-    /// A block is kept when its fundamental's power stands this many times above the noise's.
+    /// A block is kept when its base harmonic's power stands this many times above the noise's
+    /// (see the module's documentation).
     pub min_snr: f64,
     /// The fewest blocks the heading is fitted to.
     pub min_blocks: usize,
@@ -331,7 +347,7 @@ fn combine(
     // Per block and harmonic: the phase (rad) and its variance.
     let rot = Complex::from_polar(1.0, -shift);
     let mut per: Vec<Vec<(f64, f64)>> = Vec::with_capacity(n);
-    let mut keep = Vec::with_capacity(n);
+    let mut snrs: Vec<[f64; HARMONICS]> = Vec::with_capacity(n);
     for (k, r) in raw.iter().enumerate() {
         let mut v = Vec::with_capacity(r.4);
         for h in 0..r.4 {
@@ -340,27 +356,41 @@ fn combine(
             let var = nu / (2.0 * zh.norm_sqr()).max(f64::MIN_POSITIVE);
             v.push((zh.arg(), var));
         }
-        let snr = r.3.z[0].norm_sqr() / (pooled(k, 0) * r.3.w2).max(f64::MIN_POSITIVE);
-        keep.push(snr);
+        let mut snr = [f64::NAN; HARMONICS];
+        for (h, x) in snr.iter_mut().enumerate().take(r.4) {
+            *x = r.3.z[h].norm_sqr() / (pooled(k, h) * r.3.w2).max(f64::MIN_POSITIVE);
+        }
+        snrs.push(snr);
         per.push(v);
     }
-    let kept: Vec<usize> = (0..n).filter(|&k| keep[k] >= s.min_snr).collect();
-    // The fundamental's offsets, wrapped or unwrapped.
-    let mut u1: Vec<f64> = kept.iter().map(|&k| per[k][0].0).collect();
+    // The base: the fundamental where it stands above `min_snr` in the blocks a fit needs,
+    // else the harmonic above it in the most blocks, the lowest of equal counts.
+    let above = |h: usize| (0..n).filter(|&k| snrs[k][h] >= s.min_snr).count();
+    let b = if above(0) >= s.min_blocks {
+        0
+    } else {
+        (0..HARMONICS).rev().max_by_key(|&h| above(h)).unwrap_or(0)
+    };
+    let bb = (b + 1) as f64;
+    let kept: Vec<usize> = (0..n).filter(|&k| snrs[k][b] >= s.min_snr).collect();
+    // The base's offsets, wrapped or unwrapped (as its phase), and their variances.
+    let mut ub: Vec<f64> = kept.iter().map(|&k| per[k][b].0).collect();
     if unwrap {
-        for i in 1..u1.len() {
-            u1[i] = u1[i - 1] + wrap(u1[i] - u1[i - 1]);
+        for i in 1..ub.len() {
+            ub[i] = ub[i - 1] + wrap(ub[i] - ub[i - 1]);
         }
     }
-    // Each harmonic's constant phase c_h.
+    let u: Vec<f64> = ub.iter().map(|v| v / bb).collect();
+    let u_var: Vec<f64> = kept.iter().map(|&k| per[k][b].1 / (bb * bb)).collect();
+    // Each other harmonic's constant phase c_h.
     let mut c = [0.0f64; HARMONICS];
-    for (h, ch) in c.iter_mut().enumerate().skip(1) {
+    for (h, ch) in c.iter_mut().enumerate().filter(|(h, _)| *h != b) {
         let mut acc = Complex::new(0.0, 0.0);
         for (i, &k) in kept.iter().enumerate() {
             if let Some(&(ph, var)) = per[k].get(h) {
                 let hh = (h + 1) as f64;
-                let wgt = 1.0 / (var + hh * hh * per[k][0].1);
-                acc += Complex::from_polar(wgt, ph - hh * u1[i]);
+                let wgt = 1.0 / (var + hh * hh * u_var[i]);
+                acc += Complex::from_polar(wgt, ph - hh * u[i]);
             }
         }
         *ch = acc.arg();
@@ -368,17 +398,17 @@ fn combine(
     kept.iter()
         .enumerate()
         .map(|(i, &k)| {
-            let (mut num, mut den) = (u1[i] / per[k][0].1, 1.0 / per[k][0].1);
+            let (mut num, mut den) = (u[i] / u_var[i], 1.0 / u_var[i]);
             let (mut split, mut split_var, mut weight) = (
                 [f64::NAN; HARMONICS],
                 [f64::NAN; HARMONICS],
                 [0.0; HARMONICS],
             );
-            for (h, &(ph, var)) in per[k].iter().enumerate().skip(1) {
+            for (h, &(ph, var)) in per[k].iter().enumerate().filter(|(h, _)| *h != b) {
                 let hh = (h + 1) as f64;
-                split[h] = wrap(ph - c[h] - hh * u1[i]);
-                split_var[h] = var + hh * hh * per[k][0].1;
-                let est = u1[i] + split[h] / hh;
+                split[h] = wrap(ph - c[h] - hh * u[i]);
+                split_var[h] = var + hh * hh * u_var[i];
+                let est = u[i] + split[h] / hh;
                 num += est * hh * hh / var;
                 den += hh * hh / var;
                 weight[h] = hh * hh / var;
@@ -398,7 +428,9 @@ fn combine(
                 turns: r.2,
                 offset: num / den,
                 sigma: den.recip().sqrt(),
-                snr: keep[k],
+                snr: snrs[k][b],
+                base: b + 1,
+                snrs: snrs[k],
                 split,
                 split_var,
                 phase,
@@ -463,5 +495,44 @@ mod tests {
             );
             assert!((a.offset - b.offset).abs() < 1e-4, "{:.3} s", a.a);
         }
+    }
+
+    /// The same law behind a phone's high-pass that leaves no fundamental at all, its second
+    /// and third harmonics over white noise: the fundamental's phase is noise in every block,
+    /// so the heading is read from the second harmonic, the line above the noise in most
+    /// blocks, and the blocks' offsets from the law scatter about zero as their sigmas say.
+    #[test]
+    fn without_a_fundamental_the_heading_is_read_from_the_line_heard() {
+        use rand::SeedableRng;
+        use rand_distr::{Distribution, Normal};
+        let p = SVector::<f64, 3>::new(2.0, 10.0, (100f64.powi(4) * 7.0).ln());
+        let fs = 8000.0;
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(9);
+        let noise = Normal::new(0.0, 0.05).unwrap();
+        let x: Vec<f64> = (0..(9.0 * fs) as usize)
+            .map(|j| {
+                let phi = phase(&p, j as f64 / fs).0;
+                (2.0 * phi + 0.3).sin() + 0.5 * (3.0 * phi + 1.0).sin() + noise.sample(&mut rng)
+            })
+            .collect();
+        let rec = Samples {
+            x: &x,
+            t_start: 0.0,
+            dt: 1.0 / fs,
+        };
+        let bl = blocks(&rec, &p, 0.0, (1.0, 8.0), false, &BlockSettings::default());
+        assert!(bl.len() > 40, "{} blocks", bl.len());
+        // The constant phase of the second harmonic, 0.3 - pi/2, halved, is the offset.
+        let c = super::wrap(0.3 - 0.5 * std::f64::consts::PI) / 2.0;
+        let z: Vec<f64> = bl
+            .iter()
+            .map(|b| super::wrap(b.offset - c) / b.sigma)
+            .collect();
+        assert!(bl.iter().all(|b| b.base == 2), "{bl:?}");
+        let n = z.len() as f64;
+        let mean = z.iter().sum::<f64>() / n;
+        let rms = (z.iter().map(|v| v * v).sum::<f64>() / n).sqrt();
+        assert!(mean.abs() < 3.0 / n.sqrt(), "mean offset {mean} sigmas");
+        assert!((0.7..1.5).contains(&rms), "rms offset {rms} sigmas");
     }
 }

@@ -101,7 +101,8 @@ pub struct PhasePoint {
     pub residual: f64,
     /// Its standard uncertainty from the noise (rad).
     pub sigma: f64,
-    /// The fundamental's power over the noise's.
+    /// The base harmonic's power over the noise's
+    /// ([`Block::base`](crate::sound_analysis::phase_blocks::Block::base)).
     pub snr: f64,
 }
 
@@ -323,7 +324,7 @@ fn later_half(
 
 impl PhaseFit {
     /// The blocks as CSV: start, end and centroid time (s), turns, the heading's residual from
-    /// the fitted law and its standard uncertainty (rad), the fundamental's signal-to-noise.
+    /// the fitted law and its standard uncertainty (rad), the base harmonic's signal-to-noise.
     pub fn csv(&self) -> String {
         let mut s = String::from("t_start_s,t_end_s,t_mean_s,turns,residual_rad,sigma_rad,snr\n");
         for p in &self.points {

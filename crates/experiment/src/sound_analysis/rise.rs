@@ -8,7 +8,8 @@
 //! spin-down's last second holds its fastest rise, in frames that the rising pitch smears, a bump
 //! or the rim's rattle covers), while the phase is followed turn by turn from the track's first
 //! frame to a few of $t_0$'s sigmas before it ([`phase_fit`](crate::sound_analysis::phase_fit)):
-//! each of its blocks holds the fundamental at least `min_snr` times above its noise at the
+//! each of its blocks holds the disk's base harmonic (the fundamental, or behind a phone's
+//! high-pass the line heard in most blocks) at least `min_snr` times above its noise at the
 //! heading eq 79 states there, a line the blocks would not find where the pitch did not follow
 //! the law. So where the track's frames alone rise too little and every other check passed, the
 //! rise is judged again over the phase's blocks,

@@ -12,11 +12,16 @@
 //! **seeded by a search**: for each $(\beta, t_0)$ on a grid ($\beta$ by [`BETA_STEP`], $t_0$
 //! after the last frame by ratios of [`T0_RATIO`] of its distance from the last frame's middle)
 //! $\ln C$ is the frames' weighted mean, the grid points whose frames' $\chi^2$ is within
-//! [`CHI2_MARGIN`] of the least are kept, and of these the law under which the recording's
+//! [`CHI2_MARGIN`] of the least are kept (the $\chi^2$ scaled by the least's per degree of
+//! freedom, $\chi^2_{min}/(n - 3)$, where that exceeds 1: a frame that holds the spin's
+//! faded-in start or a nuisance lies off the line by more than its sigma, and the frames'
+//! scatter, not their sigmas, then says which laws they allow), and of these the law under which the recording's
 //! phase blocks ([`phase_blocks`](crate::sound_analysis::phase_blocks)) hold most of the
-//! fundamental, $\sum_k \ln \mathrm{snr}_k$ (a block off the disk's line, or past its end, holds
-//! noise, $\ln\mathrm{snr} \lesssim 0$), is the seed; the search is repeated on a grid a fifth
-//! as coarse about it. The heading is then fitted to the phase from that seed as for a long spin
+//! disk's lines, $\sum_k \sum_h \ln \mathrm{snr}_{h,k}$ over the harmonics $h$ each block
+//! demodulates (a line off the disk's, or past its end, holds noise, whose
+//! $\ln\mathrm{snr}$ averages $-\gamma \approx -0.58$; behind a phone's high-pass far above the
+//! fundamental the harmonics, not the fundamental, hold the heading), is the seed; the search is
+//! repeated on a grid a fifth as coarse about it. The heading is then fitted to the phase from that seed as for a long spin
 //! ([`phase_fit`](crate::sound_analysis::phase_fit)), to at least [`MIN_SHORT_BLOCKS`] blocks,
 //! with its interval from its residuals.
 //!
@@ -48,6 +53,7 @@ use crate::fit::law_fit::LawFit;
 use crate::fit::least_squares::Problem;
 use crate::fit::plausibility::{Evidence, Plausibility, Points, SOUND_MIN_FRAMES};
 use crate::sound_analysis::analysed::SoundAnalysis;
+use crate::sound_analysis::mains::hum::subtract_hum;
 use crate::sound_analysis::phase_blocks::{blocks, BlockSettings, Samples};
 use crate::sound_analysis::phase_fit::{fit_phase, PhaseFit};
 use crate::sound_analysis::refusal::RISES;
@@ -56,6 +62,7 @@ use crate::sound_analysis::track_law::{TrackFit, TrackLaw};
 use crate::trace::Trace;
 use nalgebra::SVector;
 use statrs::distribution::{ContinuousCDF, StudentsT};
+use std::borrow::Cow;
 use std::f64::consts::TAU;
 
 /// The grid's step in $\beta$.
@@ -156,7 +163,9 @@ pub fn seed(
         let stop = (p[1] - 1e-3).min(end);
         blocks(rec, p, 0.0, (first, stop), false, &s)
             .iter()
-            .map(|b| b.snr.max(1e-3).ln())
+            .flat_map(|b| b.snrs)
+            .filter(|x| x.is_finite())
+            .map(|x| x.max(1e-3).ln())
             .sum()
     };
     let search = |betas: Vec<f64>, t0s: Vec<f64>| -> Option<(SVector<f64, 3>, f64)> {
@@ -170,8 +179,10 @@ pub fn seed(
             }
         }
         let least = grid.iter().map(|g| g.0).fold(f64::INFINITY, f64::min);
+        let dof = fr.t.len().saturating_sub(3).max(1) as f64;
+        let scale = (least / dof).max(1.0);
         grid.into_iter()
-            .filter(|g| g.0 <= least + CHI2_MARGIN)
+            .filter(|g| g.0 <= least + CHI2_MARGIN * scale)
             .map(|g| (g.1, score(&g.1)))
             .filter(|g| g.1.is_finite())
             .max_by(|a, b| a.1.total_cmp(&b.1))
@@ -267,7 +278,22 @@ pub fn analysed(
         ));
     }
     let first = pts[0].a;
-    let Some((p0, step)) = seed(&rec, track, first) else {
+    // The seed is scored on the record with the mains lines the track found subtracted (a hum
+    // line's window sidelobes would otherwise reach the blocks' lines and noise probes); the
+    // heading's fit subtracts them itself, where the disk keeps clear of them.
+    let clean: Cow<'_, [f64]> = if track.hum.is_empty() {
+        Cow::Borrowed(&trace.v)
+    } else {
+        let mut v = trace.v.clone();
+        subtract_hum(&mut v, track.sample_rate, &track.hum);
+        Cow::Owned(v)
+    };
+    let heard = Samples {
+        x: &clean,
+        t_start: rec.t_start,
+        dt: rec.dt,
+    };
+    let Some((p0, step)) = seed(&heard, track, first) else {
         return Err(
             "the line runs to the recording's end, so no end time after it is left to search: \
              record until the disk is silent"
@@ -388,6 +414,90 @@ mod tests {
     use crate::sound_analysis::track::TrackSettings;
     use crate::synthetic::phone_room::PhoneRoom;
 
+    /// A diagnostic, not a test of a claim: for each phone recording of `ROLLING_DISK_SEEDS`,
+    /// the track's frames, the short spin's seed against the truth, and the blocks it holds.
+    #[test]
+    #[ignore = "a diagnostic: prints each seed's short-spin seed and blocks"]
+    fn print_the_seeds_and_blocks() {
+        let seeds = std::env::var("ROLLING_DISK_SEEDS").unwrap_or_else(|_| "75".into());
+        for n in seeds
+            .split(',')
+            .filter_map(|s| s.trim().parse::<u64>().ok())
+        {
+            let room = PhoneRoom::draw(n);
+            let trace = recording(n);
+            let a = analyze_sound(&trace, &TrackSettings::default(), &Plausibility::default());
+            let track = match &a {
+                Ok(a) => a.track.clone(),
+                Err(_) => {
+                    let w = physics::budget::Work::start("the diagnostic".to_string());
+                    match crate::sound_analysis::analysis::analyze_sound_keeping_track(
+                        &trace,
+                        &TrackSettings::default(),
+                        &Plausibility::default(),
+                        &w,
+                    ) {
+                        Ok(a) => a.track,
+                        Err(r) => match r.track {
+                            Some(t) => t,
+                            None => continue,
+                        },
+                    }
+                }
+            };
+            let truth = SVector::<f64, 3>::new(room.law.beta, room.t0(), room.law.c.ln());
+            println!(
+                "seed {n}: truth beta {:.3} t0 {:.4} ln C {:.3}, lead {:.2}, high-pass {:.0}",
+                truth[0], truth[1], truth[2], room.lead, room.high_pass
+            );
+            for p in &track.points {
+                println!(
+                    "  frame {:.3}-{:.3} f {:.2} +- {:.2} Hz (true {:.2})",
+                    p.a,
+                    p.b,
+                    p.omega / TAU,
+                    p.sigma / TAU,
+                    room.law.precession(room.t0() - 0.5 * (p.a + p.b)) / TAU
+                );
+            }
+            let mut v = trace.v.clone();
+            subtract_hum(&mut v, track.sample_rate, &track.hum);
+            let rec = Samples {
+                x: &v,
+                t_start: trace.t[0],
+                dt: 1.0 / track.sample_rate,
+            };
+            let Some(first) = track.points.first().map(|p| p.a) else {
+                continue;
+            };
+            let seeded = seed(&rec, &track, first);
+            println!("  seed {seeded:?}");
+            for (name, law) in [("truth", Some(truth)), ("seed", seeded.map(|s| s.0))] {
+                let Some(law) = law else { continue };
+                let s = BlockSettings {
+                    min_snr: 0.0,
+                    ..BlockSettings::default()
+                };
+                let bl = blocks(&rec, &law, 0.0, (first, law[1] - 1e-3), false, &s);
+                println!("  blocks by the {name}: {}", bl.len());
+                for b in &bl {
+                    println!(
+                        "    {:.3}-{:.3} turns {} base {} snrs {:?}",
+                        b.a,
+                        b.b,
+                        b.turns,
+                        b.base,
+                        b.snrs.map(|x| x.round())
+                    );
+                }
+            }
+            match a {
+                Ok(a) => println!("  analysed: {}", a.law().beta - room.law.beta),
+                Err(e) => println!("  refused: {e}"),
+            }
+        }
+    }
+
     #[test]
     fn students_quantile_matches_the_table() {
         // Two-sided 95 % points of Student's t (Abramowitz & Stegun, table 26.10).
@@ -473,6 +583,33 @@ mod tests {
         );
     }
 
+    /// Seed 169 (3.44 s of sound from 8.4 Hz behind a 171 Hz high-pass): search frames of
+    /// 0.125 s hold one period of its fundamental, and a track made of them follows a tone near
+    /// three times it; the 0.5 s frames hold the fundamental, so the track keeps them, every
+    /// frame within 1 % of the truth, and the short spin's phase, read from the third harmonic
+    /// (the line heard in most blocks), holds the truth in its intervals.
+    #[test]
+    fn a_short_spin_keeps_frames_that_hold_its_fundamental_and_reads_the_line_heard() {
+        let room = PhoneRoom::draw(169);
+        let trace = recording(169);
+        let a = analyze_sound(&trace, &TrackSettings::default(), &Plausibility::default())
+            .expect("analysed as a short spin");
+        assert!(a.short_spin.is_some(), "{a}");
+        for p in &a.track.points {
+            let truth = room.law.precession(room.t0() - 0.5 * (p.a + p.b));
+            assert!(
+                (p.omega / truth - 1.0).abs() < 0.01,
+                "{p:?} against {truth}"
+            );
+        }
+        let ph = a.phase.as_ref().expect("the phase's fit");
+        assert!(ph.points.len() >= MIN_SHORT_BLOCKS, "{a}");
+        let (l, truth) = (a.law(), trace.truth.clone().unwrap());
+        assert!(l.from_phase, "{a}");
+        assert!((l.beta - truth.beta).abs() <= 1.96 * l.beta_sigma, "{a}");
+        assert!((l.t0 - truth.t0).abs() <= 1.96 * l.t0_sigma, "{a}");
+    }
+
     #[test]
     fn a_short_spin_whose_phase_misses_the_tracks_frames_or_beta_range_is_refused() {
         let trace = recording(75);
@@ -496,6 +633,13 @@ mod tests {
         };
         let why = analysed(&trace, &track, &narrow, "x").expect_err("refused");
         assert!(why.contains("outside 0 .. 1"), "{why}");
+        // A rise asked for beyond what the blocks, 1.98 s from 19.9 Hz to t0, can hold.
+        let steep = Plausibility {
+            min_rise: 10.0,
+            ..Plausibility::default()
+        };
+        let why = analysed(&trace, &track, &steep, "x").expect_err("refused");
+        assert!(why.contains("over its blocks, less than the 10"), "{why}");
         // A line that runs to the recording's end leaves no end time to search.
         let mut late = track.clone();
         let end = trace.t[0] + trace.v.len() as f64 / track.sample_rate;
@@ -515,18 +659,21 @@ mod tests {
 
     #[test]
     fn short_spins_the_phase_cannot_stand_in_for_are_refused_saying_why() {
+        // 1046: 1.26 s of sound, one frame on a line; 47: the shudder's ring after t0, the
+        // disk under the noise in every frame; 72: 1.01 s of sound from 11 Hz, 14 turns, too
+        // few for 8 blocks of two.
         let cases: [(u64, &str); 3] = [
+            (
+                1046,
+                "1 frame of the track holds the line, fewer than the 2",
+            ),
             (
                 47,
                 "the line the track followed does not rise (1499.5 Hz to 1499.8 Hz)",
             ),
             (
-                58,
-                "the phase of the short spin could not be fitted (6 phase blocks",
-            ),
-            (
-                194,
-                "rises by a factor 1.44 over its blocks, less than the 1.5",
+                72,
+                "the phase of the short spin could not be fitted (5 phase blocks",
             ),
         ];
         for (seed, what) in cases {
@@ -565,10 +712,9 @@ mod tests {
 
     #[test]
     fn tracks_of_enough_frames_the_phase_cannot_stand_in_for_are_refused_saying_why() {
-        let cases: [(u64, &str); 2] = [
-            (6, "misses a frame of the track by"),
-            (15, "could not be fitted (0 phase blocks"),
-        ];
+        // The phase fit that cannot be made at all ("could not be fitted") is provoked on the
+        // short-spin path (seed 72, above); no recording of the study provokes it here.
+        let cases: [(u64, &str); 1] = [(6, "misses a frame of the track by")];
         let falling = analyze_sound(
             &falling_tone(),
             &TrackSettings::default(),

@@ -46,7 +46,9 @@
 //! followed there, or no longer heard; the line ends where its pitch stops rising, see
 //! `end_at_stall`), and between them as stray; frames whose two estimators disagree by more than 5 of their sigmas plus a
 //! hundredth of the resolution $1/T$, and frames found by the wide search that lie more than
-//! 10 % off the median of their four neighbours, as stray; frames without a line, as silent; the last frame before a silence
+//! 10 % off the median of their four neighbours and out of the order of a rising line among them
+//! (above a neighbour after it or below one before it: a short spin's pitch rises by more than
+//! a tenth from one frame to the next), as stray; frames without a line, as silent; the last frame before a silence
 //! (the disk may settle inside it), as smeared.
 
 use crate::error::ExperimentError;
@@ -242,9 +244,15 @@ pub fn frequency_track(
             .map(|j| kept[j].0.omega)
             .collect();
         if *searched && nb.len() >= 2 {
+            let before = kept[k.saturating_sub(2)..k].iter().map(|q| q.0.omega);
+            let after = kept[k + 1..(k + 3).min(kept.len())]
+                .iter()
+                .map(|q| q.0.omega);
+            let in_order = before.fold(f64::MIN, f64::max) <= p.omega
+                && p.omega <= after.fold(f64::MAX, f64::min);
             let m = nb.len() / 2;
             let med = *nb.select_nth_unstable_by(m, f64::total_cmp).1;
-            if (p.omega / med - 1.0).abs() > 0.1 {
+            if (p.omega / med - 1.0).abs() > 0.1 && !in_order {
                 stray += 1;
                 continue;
             }
