@@ -55,6 +55,7 @@ use crate::error::ExperimentError;
 use crate::sound_analysis::mains::hum::{hum_lines, subtract_hum};
 use crate::sound_analysis::spectrum::{Analyser, Estimate};
 use crate::trace::Trace;
+use motion::add_motion;
 use rising::{rises, LineEnd};
 use serde::{Deserialize, Serialize};
 use std::borrow::Cow;
@@ -573,33 +574,8 @@ fn predict(frames: &[Frame], start: f64) -> Option<Motion> {
     })
 }
 
-/// Adds the pitch's motion within each frame to its uncertainty (see the module's
-/// documentation).
-fn add_motion(points: &mut [TrackPoint]) {
-    let n = points.len();
-    if n < 3 {
-        return;
-    }
-    let mid = |p: &TrackPoint| 0.5 * (p.a + p.b);
-    let curv: Vec<f64> = (0..n)
-        .map(|k| {
-            let j = k.clamp(1, n - 2);
-            let (p, q, r) = (&points[j - 1], &points[j], &points[j + 1]);
-            let (t0, t1, t2) = (mid(p), mid(q), mid(r));
-            let d1 = (q.omega - p.omega) / (t1 - t0);
-            let d2 = (r.omega - q.omega) / (t2 - t1);
-            2.0 * (d2 - d1) / (t2 - t0)
-        })
-        .collect();
-    let var_w = (0.25 - 15.0 / (8.0 * PI * PI)) / 3.0;
-    for (p, c) in points.iter_mut().zip(curv) {
-        let t = p.b - p.a;
-        let motion = 0.5 * c.abs() * var_w * t * t;
-        p.sigma = p.sigma.hypot(motion);
-    }
-}
-
 #[cfg(test)]
 mod diagnosis;
+mod motion;
 pub mod rising;
 mod still;
