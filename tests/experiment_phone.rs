@@ -229,17 +229,11 @@ fn record_the_held_out_phone_study() {
 #[test]
 fn a_corner_read_but_not_shown_is_stated_in_t0s_interval() {
     use experiment::fit::plausibility::Plausibility;
-    use experiment::formats::channel::Channels;
-    use experiment::formats::recording::parse_recording;
     use experiment::sound_analysis::analysis::analyze_sound;
     use experiment::sound_analysis::track::TrackSettings;
     use experiment::synthetic::phone_room::PhoneRoom;
     let room = PhoneRoom::draw(69);
-    let rec = room.record().unwrap();
-    let mut trace = parse_recording(rec.wav().unwrap(), "x.wav", Channels::Mix)
-        .unwrap()
-        .trace;
-    trace.truth = Some(rec.truth.clone());
+    let trace = room.record().unwrap().read_back("x.wav").unwrap();
     let a = analyze_sound(&trace, &TrackSettings::default(), &Plausibility::default()).unwrap();
     let p = a.phase.as_ref().unwrap();
     let why = p.corner_not_used.as_deref().unwrap_or_default();

@@ -195,10 +195,10 @@ impl SetWriter {
             .map_err(io_err(target, "listing the parent"))?;
         for left in found {
             match left {
-                LeftOver::Temporary(path) => std::fs::remove_dir_all(&path)
+                LeftOver::Temporary(path) => crate::temporary::remove(&path)
                     .map_err(io_err(target, "removing a temporary"))?,
                 LeftOver::Aside(path) if std::fs::symlink_metadata(target).is_ok() => {
-                    std::fs::remove_dir_all(&path)
+                    crate::temporary::remove(&path)
                         .map_err(io_err(target, "removing a previous set"))?
                 }
                 LeftOver::Aside(path) => std::fs::rename(&path, target)
@@ -254,7 +254,7 @@ impl SetWriter {
                 RenameFlags::EXCHANGE,
             ) {
                 // The old set now sits at the temporary's name.
-                Ok(()) => return std::fs::remove_dir_all(&self.tmp),
+                Ok(()) => return crate::temporary::remove(&self.tmp),
                 // A filesystem without the exchange: fall back to two renames.
                 Err(e) if e == rustix::io::Errno::INVAL || e == rustix::io::Errno::NOSYS => {}
                 Err(e) => return Err(e.into()),
@@ -281,14 +281,14 @@ impl SetWriter {
         let old = crate::temporary::aside(parent, &name);
         std::fs::rename(&self.target, &old)?;
         std::fs::rename(&self.tmp, &self.target)?;
-        std::fs::remove_dir_all(&old)
+        crate::temporary::remove(&old)
     }
 }
 
 impl Drop for SetWriter {
     fn drop(&mut self) {
         if !self.committed {
-            let _ = std::fs::remove_dir_all(&self.tmp);
+            let _ = crate::temporary::remove(&self.tmp);
         }
     }
 }

@@ -11,8 +11,6 @@
 
 use experiment::error::ExperimentError;
 use experiment::fit::plausibility::Plausibility;
-use experiment::formats::channel::Channels;
-use experiment::formats::recording::parse_recording;
 use experiment::sound_analysis::analysis::analyze_sound;
 use experiment::sound_analysis::track::TrackSettings;
 use experiment::synthetic::phone_room::PhoneRoom;
@@ -114,9 +112,7 @@ pub fn phone_outcome_of(room: &PhoneRoom) -> Result<PhoneOutcome, ExperimentErro
         refused: None,
     };
     let file = format!("phone-{seed}.wav");
-    let analysed = parse_recording(rec.wav()?, &file, Channels::Mix).and_then(|r| {
-        let mut trace = r.trace;
-        trace.truth = Some(rec.truth.clone());
+    let analysed = rec.read_back(&file).and_then(|trace| {
         analyze_sound(&trace, &TrackSettings::default(), &Plausibility::default())
     });
     match analysed {
@@ -257,10 +253,7 @@ mod tests {
                 if let Some(w) = &what {
                     room = without(room, w);
                 }
-                let rec = room.record().unwrap();
-                let r = parse_recording(rec.wav().unwrap(), "x.wav", Channels::Mix).unwrap();
-                let mut trace = r.trace;
-                trace.truth = Some(rec.truth.clone());
+                let trace = room.record().unwrap().read_back("x.wav").unwrap();
                 let (b, t0) = (room.law.beta, room.t0());
                 match analyze_sound(&trace, &TrackSettings::default(), &Plausibility::default()) {
                     Ok(a) => {
@@ -311,10 +304,7 @@ mod tests {
         let seeds = std::env::var("ROLLING_DISK_SEEDS").unwrap_or_default();
         for seed in seeds.split(',').filter_map(|s| s.parse::<u64>().ok()) {
             let room = PhoneRoom::draw(seed);
-            let rec = room.record().unwrap();
-            let r = parse_recording(rec.wav().unwrap(), "x.wav", Channels::Mix).unwrap();
-            let mut trace = r.trace;
-            trace.truth = Some(rec.truth.clone());
+            let trace = room.record().unwrap().read_back("x.wav").unwrap();
             match analyze_sound(&trace, &TrackSettings::default(), &Plausibility::default()) {
                 Ok(a) => println!("seed {seed}, high-pass {:.0} Hz\n{a}", room.high_pass),
                 Err(e) => println!("seed {seed}: {e}"),
@@ -334,10 +324,9 @@ mod tests {
                 "seed {seed}: {} S/s, sound {:.2} s from {f0:.1} Hz, lead {:.2}, high-pass {:.0} Hz, hum {:?} at {}, agc {:.2}, clip {:.2}, bumps {:?}, reverb {:?}, harmonics {:?}",
                 room.sample_rate, room.sound, room.lead, room.high_pass, room.hum.lines, room.hum.mains, room.agc, room.clip, room.bumps, room.reverb, room.harmonics
             );
-            let rec = room.record().unwrap();
-            let r = parse_recording(rec.wav().unwrap(), "x.wav", Channels::Mix).unwrap();
+            let trace = room.record().unwrap().read_back("x.wav").unwrap();
             match experiment::sound_analysis::track::frequency_track(
-                &r.trace,
+                &trace,
                 &TrackSettings::default(),
             ) {
                 Ok(t) => {

@@ -194,17 +194,11 @@ mod tests {
     #[test]
     fn reverberation_shows_in_the_harmonics_disagreement() {
         use crate::fit::plausibility::Plausibility;
-        use crate::formats::channel::Channels;
-        use crate::formats::recording::parse_recording;
         use crate::sound_analysis::analysis::analyze_sound;
         use crate::sound_analysis::track::TrackSettings;
         use crate::synthetic::phone_room::PhoneRoom;
         let analysed = |room: &PhoneRoom| {
-            let rec = room.record().unwrap();
-            let mut trace = parse_recording(rec.wav().unwrap(), "x.wav", Channels::Mix)
-                .unwrap()
-                .trace;
-            trace.truth = Some(rec.truth.clone());
+            let trace = room.record().unwrap().read_back("x.wav").unwrap();
             analyze_sound(&trace, &TrackSettings::default(), &Plausibility::default()).unwrap()
         };
         let room = PhoneRoom::draw(31);

@@ -100,8 +100,6 @@ impl SoundAnalysis {
 #[cfg(test)]
 mod tests {
     use crate::fit::plausibility::Plausibility;
-    use crate::formats::channel::Channels;
-    use crate::formats::recording::parse_recording;
     use crate::sound_analysis::analysis::{analyze_sound, SoundAnalysis};
     use crate::sound_analysis::track::TrackSettings;
     use crate::synthetic::phone_room::PhoneRoom;
@@ -110,14 +108,9 @@ mod tests {
     /// `experiment analyze` does, with its truth ($\beta$, $t_0$).
     fn room(seed: u64) -> (Result<SoundAnalysis, String>, f64, f64) {
         let room = PhoneRoom::draw(seed);
-        let rec = room.record().unwrap();
-        let r = parse_recording(rec.wav().unwrap(), "phone.wav", Channels::Mix).unwrap();
-        let a = analyze_sound(
-            &r.trace,
-            &TrackSettings::default(),
-            &Plausibility::default(),
-        )
-        .map_err(|e| e.to_string());
+        let trace = room.record().unwrap().read_back("phone.wav").unwrap();
+        let a = analyze_sound(&trace, &TrackSettings::default(), &Plausibility::default())
+            .map_err(|e| e.to_string());
         (a, room.law.beta, room.t0())
     }
 

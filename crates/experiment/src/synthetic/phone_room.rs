@@ -23,10 +23,12 @@
 //! - 16- or 24-bit integer or float WAV at 16-96 kS/s ([`PhoneRecording::wav`]).
 
 use crate::error::ExperimentError;
+use crate::formats::channel::Channels;
+use crate::formats::recording::parse_recording;
 use crate::formats::wav::{encode_wav_channels, WavCoding};
 use crate::synthetic::law::Law;
 use crate::synthetic::room_filters::{agc, high_pass, reverb};
-use crate::trace::Truth;
+use crate::trace::{Trace, Truth};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rand_distr::{Distribution, StandardNormal};
@@ -122,6 +124,15 @@ impl PhoneRecording {
         let [l, r] = &self.channels;
         encode_wav_channels(&[l, r], self.sample_rate, coding)
             .map_err(|e| ExperimentError::Setting(format!("the WAV cannot be encoded ({e})")))
+    }
+
+    /// The recording as the tool reads it: its WAV file's bytes, named `file`, read back
+    /// through the tool's reader with the channels mixed as `experiment analyze` mixes them,
+    /// with the disk's truth attached.
+    pub fn read_back(&self, file: &str) -> Result<Trace, ExperimentError> {
+        let mut trace = parse_recording(self.wav()?, file, Channels::Mix)?.trace;
+        trace.truth = Some(self.truth.clone());
+        Ok(trace)
     }
 }
 

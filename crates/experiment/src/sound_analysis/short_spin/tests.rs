@@ -2,8 +2,6 @@
 //! and each of its refusals provoked.
 
 use super::*;
-use crate::formats::channel::Channels;
-use crate::formats::recording::parse_recording;
 use crate::sound_analysis::analysis::analyze_sound;
 use crate::sound_analysis::track::TrackSettings;
 use crate::synthetic::phone_room::PhoneRoom;
@@ -109,12 +107,11 @@ fn students_quantile_matches_the_table() {
 
 /// The phone study's recording of `seed` ([`PhoneRoom::draw`]) as the tool reads it.
 fn recording(seed: u64) -> Trace {
-    let rec = PhoneRoom::draw(seed).record().unwrap();
-    let mut trace = parse_recording(rec.wav().unwrap(), "phone.wav", Channels::Mix)
+    PhoneRoom::draw(seed)
+        .record()
         .unwrap()
-        .trace;
-    trace.truth = Some(rec.truth);
-    trace
+        .read_back("phone.wav")
+        .unwrap()
 }
 
 /// 8 s at 8 kS/s of a tone falling from 40 Hz by 2 % a second, with its second harmonic,

@@ -6,8 +6,6 @@
 
 use super::*;
 use crate::fit::plausibility::Plausibility;
-use crate::formats::channel::Channels;
-use crate::formats::recording::parse_recording;
 use crate::sound_analysis::analysis::analyze_sound;
 use crate::synthetic::phone_room::PhoneRoom;
 
@@ -20,14 +18,11 @@ fn print_the_frames_against_the_truth() {
         .filter_map(|s| s.trim().parse::<u64>().ok())
     {
         let room = PhoneRoom::draw(seed);
-        let rec = room.record().unwrap();
-        let trace = parse_recording(
-            rec.wav().unwrap(),
-            &format!("phone-{seed}.wav"),
-            Channels::Mix,
-        )
-        .unwrap()
-        .trace;
+        let trace = room
+            .record()
+            .unwrap()
+            .read_back(&format!("phone-{seed}.wav"))
+            .unwrap();
         let fs = 1.0 / trace.sample_interval();
         let (lead, t0) = (room.lead, room.t0());
         let truth = |t: f64| {
@@ -105,10 +100,7 @@ fn print_the_hum_blocks() {
         .filter_map(|s| s.trim().parse::<u64>().ok())
     {
         let room = PhoneRoom::draw(seed);
-        let rec = room.record().unwrap();
-        let trace = parse_recording(rec.wav().unwrap(), "phone.wav", Channels::Mix)
-            .unwrap()
-            .trace;
+        let trace = room.record().unwrap().read_back("phone.wav").unwrap();
         let fs = 1.0 / trace.sample_interval();
         let found = hum_lines(&trace.v, fs);
         println!(

@@ -102,17 +102,12 @@ mod tests {
     #[test]
     fn a_ring_after_t0_held_over_more_frames_than_the_disk_is_not_followed() {
         use crate::fit::plausibility::Plausibility;
-        use crate::formats::channel::Channels;
-        use crate::formats::recording::parse_recording;
         use crate::sound_analysis::analysis::analyze_sound;
         use crate::sound_analysis::track::TrackSettings;
         use crate::synthetic::phone_room::PhoneRoom;
         use std::f64::consts::TAU;
         let room = PhoneRoom::draw(40);
-        let rec = room.record().unwrap();
-        let trace = parse_recording(rec.wav().unwrap(), "phone.wav", Channels::Mix)
-            .unwrap()
-            .trace;
+        let trace = room.record().unwrap().read_back("phone.wav").unwrap();
         let a = analyze_sound(&trace, &TrackSettings::default(), &Plausibility::default())
             .expect("analysed");
         let t0 = room.t0();
