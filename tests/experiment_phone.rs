@@ -88,40 +88,36 @@ fn the_held_out_phone_study_is_this_codes() {
     is_this_codes(HELD_OUT, HELD_OUT_SEED0, HELD_OUT_RUNS);
 }
 
-/// docs/experiment.md states the stored study's summary, word for word.
-#[test]
-fn the_docs_state_the_stored_phone_study() {
-    let doc = std::fs::read_to_string(
-        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/experiment.md"),
-    )
-    .unwrap()
-    .replace('\n', " ");
-    let line = stored().study.summary();
+/// docs/experiment.md, its lines joined.
+fn doc() -> String {
+    std::fs::read_to_string(path("docs/experiment.md"))
+        .unwrap()
+        .replace('\n', " ")
+}
+
+/// docs/experiment.md states the study stored in `file`'s summary, word for word.
+fn the_docs_state(file: &str) {
+    let line = stored_in(file).study.summary();
     assert!(
-        doc.contains(&line),
+        doc().contains(&line),
         "docs/experiment.md should state: {line}"
     );
 }
 
-/// docs/experiment.md states the held-out study's summary, word for word.
+#[test]
+fn the_docs_state_the_stored_phone_study() {
+    the_docs_state(WORKED_OUT);
+}
+
 #[test]
 fn the_docs_state_the_held_out_phone_study() {
-    let doc = std::fs::read_to_string(path("docs/experiment.md"))
-        .unwrap()
-        .replace('\n', " ");
-    let line = stored_in(HELD_OUT).study.summary();
-    assert!(
-        doc.contains(&line),
-        "docs/experiment.md should state: {line}"
-    );
+    the_docs_state(HELD_OUT);
 }
 
 /// The held-out refusals' causes that docs/experiment.md states are the stored file's.
 #[test]
 fn the_docs_causes_are_the_held_out_studys() {
-    let doc = std::fs::read_to_string(path("docs/experiment.md"))
-        .unwrap()
-        .replace('\n', " ");
+    let doc = doc();
     let s = stored_in(HELD_OUT).study;
     let refused: Vec<(&str, f64)> = s
         .outcomes
@@ -160,11 +156,7 @@ fn the_docs_causes_are_the_held_out_studys() {
 /// The refusals and the late t0 that docs/experiment.md states are the stored file's.
 #[test]
 fn the_docs_causes_are_the_stored_studys() {
-    let doc = std::fs::read_to_string(
-        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/experiment.md"),
-    )
-    .unwrap()
-    .replace('\n', " ");
+    let doc = doc();
     let s = stored().study;
     let refused: Vec<&str> = s
         .outcomes

@@ -188,14 +188,21 @@ fn process_is_gone(pid: u32) -> bool {
 mod tests {
     use super::*;
 
-    #[test]
-    fn only_marked_directories_of_dead_runs_are_left_overs() {
-        let root =
-            std::env::temp_dir().join(format!("rolling-disk-tmpnames-{}", std::process::id()));
+    /// A new empty folder for the test `name`.
+    fn scratch(name: &str) -> PathBuf {
+        let root = std::env::temp_dir().join(format!("rolling-disk-{name}-{}", std::process::id()));
         let _ = std::fs::remove_dir_all(&root);
         std::fs::create_dir_all(&root).ok();
-        // A pid that no process has: above the kernel's largest (2^22).
-        let dead = 4_194_304 + 17;
+        root
+    }
+
+    /// A pid that no process has: above the kernel's largest (2^22).
+    const DEAD: u32 = 4_194_304 + 17;
+
+    #[test]
+    fn only_marked_directories_of_dead_runs_are_left_overs() {
+        let root = scratch("tmpnames");
+        let dead = DEAD;
         let ours = root.join(format!(".r1.rolling-disk-{dead}-0"));
         std::fs::create_dir_all(&ours).ok();
         std::fs::write(ours.join(MARKER), marker_text(dead)).ok();
@@ -260,11 +267,8 @@ mod tests {
     /// directory whose other files are gone but whose proof is still there is still the tool's.
     #[test]
     fn a_temporary_is_removed_with_its_proof_last() {
-        let root =
-            std::env::temp_dir().join(format!("rolling-disk-tmpremove-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&root);
-        std::fs::create_dir_all(&root).ok();
-        let dead = 4_194_304 + 18;
+        let root = scratch("tmpremove");
+        let dead = DEAD;
         let dir = root.join(format!(".r2.rolling-disk-{dead}-0"));
         std::fs::create_dir_all(dir.join("figures")).ok();
         std::fs::write(dir.join("figures/a.png"), "png").ok();
