@@ -137,15 +137,20 @@ fn the_docs_causes_are_the_held_out_studys() {
         why("the line the track followed does not rise"),
     );
     assert_eq!(blocks + one + still, no_line.len(), "{no_line:#?}");
+    // The example: seed 1012's turns from its sound's start to 1 ms before t0.
+    let room = experiment::synthetic::phone_room::PhoneRoom::draw(1012);
+    let turns = (room.law.heading(1e-3) - room.law.heading(room.sound)) / std::f64::consts::TAU;
+    let f0 = room.law.precession(room.sound) / std::f64::consts::TAU;
     let written = format!(
         "Of the {} held-out recordings refused, {} are \"no rising line to follow\" and {short} \
          are spins of under 3.5 s of sound; of the {}, {blocks} could not be analysed as a short \
          spin because the phase holds fewer than the 8 blocks of at least two turns the heading \
-         is fitted to (a spin of 1.3 s from 7 Hz makes about 13 turns), {one} because the track \
-         holds one frame of the line, and {still} because",
+         is fitted to (seed 1012: {:.2} s of sound from {f0:.1} Hz, {turns:.0} turns), {one} \
+         because the track holds one frame of the line, and {still} because",
         refused.len(),
         no_line.len(),
-        no_line.len()
+        no_line.len(),
+        room.sound
     );
     assert!(
         doc.contains(&written),
