@@ -112,7 +112,8 @@ pub fn phone_outcome_of(room: &PhoneRoom) -> Result<PhoneOutcome, ExperimentErro
         refused: None,
     };
     let file = format!("phone-{seed}.wav");
-    let analysed = rec.read_back(&file).and_then(|trace| {
+    // The generator's WAV failing is not a refusal of the analysis; the reader's is.
+    let analysed = rec.read_wav(rec.wav()?, &file).and_then(|trace| {
         analyze_sound(&trace, &TrackSettings::default(), &Plausibility::default())
     });
     match analysed {

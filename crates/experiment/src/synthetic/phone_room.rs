@@ -130,7 +130,14 @@ impl PhoneRecording {
     /// through the tool's reader with the channels mixed as `experiment analyze` mixes them,
     /// with the disk's truth attached.
     pub fn read_back(&self, file: &str) -> Result<Trace, ExperimentError> {
-        let mut trace = parse_recording(self.wav()?, file, Channels::Mix)?.trace;
+        self.read_wav(self.wav()?, file)
+    }
+
+    /// [`PhoneRecording::read_back`] of `wav`, this recording's bytes already made
+    /// ([`PhoneRecording::wav`]), so that a caller can tell an encoding's failure from a
+    /// reading's.
+    pub fn read_wav(&self, wav: Vec<u8>, file: &str) -> Result<Trace, ExperimentError> {
+        let mut trace = parse_recording(wav, file, Channels::Mix)?.trace;
         trace.truth = Some(self.truth.clone());
         Ok(trace)
     }
